@@ -128,12 +128,21 @@ class Crossing(SceneModel):
     width: Positive = 3.0
 
 
+class PavedArea(SceneModel):
+    """Drivable paving that is not a lane: an intersection box, a parking lot, a drop-off."""
+
+    id: str
+    kind: Literal["intersection", "parking", "plaza", "driveway"]
+    polygon: list[Vec2] = Field(min_length=3)
+
+
 class RoadNetwork(SceneModel):
-    """Lanes, sidewalks and crossings of a world."""
+    """Lanes, sidewalks, crossings and other paved areas of a world."""
 
     lanes: list[Lane] = Field(default_factory=list)
     sidewalks: list[Sidewalk] = Field(default_factory=list)
     crossings: list[Crossing] = Field(default_factory=list)
+    paved: list[PavedArea] = Field(default_factory=list)
 
     def lane(self, lane_id: str) -> Lane | None:
         return next((lane for lane in self.lanes if lane.id == lane_id), None)

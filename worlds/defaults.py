@@ -1,0 +1,57 @@
+"""Worlds that can be loaded by name: the shipped ones and any in the user's world folders."""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+from drivetwin.worlds.scene import Scene
+
+SHIPPED = Path(__file__).with_name("data")
+# Extra folders of `NAME.json` worlds, separated like PATH (os.pathsep).
+WORLD_PATH_ENV = "DRIVETWIN_WORLDS"
+
+
+@dataclass(frozen=True)
+class WorldEntry:
+    """A loadable world: its name, where it lives and its one-line description."""
+
+    name: str
+    path: Path
+    description: str
+
+
+def _folders() -> list[Path]:
+    extra = [Path(p) for p in os.environ.get(WORLD_PATH_ENV, "").split(os.pathsep) if p]
+    return [SHIPPED, *extra]
+
+
+def list_worlds() -> list[WorldEntry]:
+    """Every world found, shipped first; a later folder's world of the same name wins."""
+    found: dict[str, WorldEntry] = {}
+    for folder in _folders():
+        for path in sorted(folder.glob("*.json")):
+            try:
+                scene = Scene.load(path)
+            except ValueError:
+                continue  # a damaged user file must not hide the other worlds
+            first_line = scene.description.split(". ")[0]
+            found[path.stem] = WorldEntry(path.stem, path, first_line)
+    return list(found.values())
+
+
+def load_world(name: str) -> Scene:
+    """The world called `name` (a shipped name, a user world, or a path to a JSON file)."""
+    as_path = Path(name)
+    if as_path.suffix == ".json" and as_path.exists():
+        return Scene.load(as_path)
+    for entry in reversed(list_worlds()):
+        if entry.name == name:
+            return Scene.load(entry.path)
+    known = ", ".join(e.name for e in list_worlds()) or "none"
+    raise UnknownWorldError(f"unknown world {name!r}; known worlds: {known}")
+
+
+class UnknownWorldError(LookupError):
+    """A world name that no world folder has."""

@@ -1,0 +1,135 @@
+"""What lies under a point of a world: a building, a lane, paving, a sidewalk or plain ground.
+
+Workers use these queries for their placement rules ("a car goes on something drivable",
+"nothing inside a building") and for positions relative to lanes and sidewalks.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Literal
+
+from drivetwin.worlds.scene import Lane, Scene
+
+Point = tuple[float, float]
+SurfaceKind = Literal["building", "lane", "crossing", "paved", "sidewalk", "ground"]
+
+
+def point_in_polygon(x: float, y: float, polygon: Sequence[Point]) -> bool:
+    """Even-odd rule; points on an edge may fall either way."""
+    inside = False
+    n = len(polygon)
+    for i in range(n):
+        x1, y1 = polygon[i]
+        x2, y2 = polygon[(i + 1) % n]
+        if (y1 > y) != (y2 > y):
+            x_cross = x1 + (y - y1) * (x2 - x1) / (y2 - y1)
+            if x < x_cross:
+                inside = not inside
+    return inside
+
+
+@dataclass(frozen=True)
+class PolylinePoint:
+    """The point of a polyline nearest to a query point."""
+
+    x: float
+    y: float
+    distance: float  # from the query point, metres
+    heading: float  # of the segment there, radians
+    arc_length: float  # from the polyline's start, metres
+    # Which side of the polyline the query point lies on: +1 left, -1 right (facing along it).
+    side: int
+
+
+def nearest_on_polyline(x: float, y: float, polyline: Sequence[Point]) -> PolylinePoint:
+    """The point of `polyline` nearest to (x, y)."""
+    best: PolylinePoint | None = None
+    travelled = 0.0
+    for (x1, y1), (x2, y2) in zip(polyline, polyline[1:], strict=False):
+        dx, dy = x2 - x1, y2 - y1
+        seg = math.hypot(dx, dy)
+        if seg == 0.0:
+            continue
+        t = max(0.0, min(1.0, ((x - x1) * dx + (y - y1) * dy) / (seg * seg)))
+        px, py = x1 + t * dx, y1 + t * dy
+        dist = math.hypot(x - px, y - py)
+        if best is None or dist < best.distance:
+            cross = dx * (y - y1) - dy * (x - x1)
+            best = PolylinePoint(
+                px, py, dist, math.atan2(dy, dx), travelled + t * seg, 1 if cross >= 0 else -1
+            )
+        travelled += seg
+    if best is None:
+        raise ValueError("a polyline needs two distinct points")
+    return best
+
+
+def polyline_length(polyline: Sequence[Point]) -> float:
+    return sum(
+        math.hypot(x2 - x1, y2 - y1) for (x1, y1), (x2, y2) in zip(polyline, polyline[1:], strict=False)
+    )
+
+
+def point_along(polyline: Sequence[Point], arc_length: float) -> tuple[float, float, float]:
+    """(x, y, heading) at `arc_length` metres along the polyline, clamped to its ends."""
+    remaining = max(0.0, arc_length)
+    last_heading = 0.0
+    for (x1, y1), (x2, y2) in zip(polyline, polyline[1:], strict=False):
+        seg = math.hypot(x2 - x1, y2 - y1)
+        if seg == 0.0:
+            continue
+        last_heading = math.atan2(y2 - y1, x2 - x1)
+        if remaining <= seg:
+            t = remaining / seg
+            return (x1 + t * (x2 - x1), y1 + t * (y2 - y1), last_heading)
+        remaining -= seg
+    x_end, y_end = polyline[-1]
+    return (x_end, y_end, last_heading)
+
+
+def _on_strip(x: float, y: float, polyline: Sequence[Point], half_width: float) -> bool:
+    return nearest_on_polyline(x, y, polyline).distance <= half_width
+
+
+def lane_at(scene: Scene, x: float, y: float) -> Lane | None:
+    """The lane whose strip contains (x, y), the nearest centreline winning."""
+    best: tuple[float, Lane] | None = None
+    for lane in scene.roads.lanes:
+        near = nearest_on_polyline(x, y, lane.centreline)
+        if near.distance <= lane.width / 2 and (best is None or near.distance < best[0]):
+            best = (near.distance, lane)
+    return best[1] if best else None
+
+
+def building_at(scene: Scene, x: float, y: float, margin: float = 0.0) -> str | None:
+    """The name of the building whose footprint (grown by `margin`) contains (x, y)."""
+    for building in scene.buildings:
+        if point_in_polygon(x, y, building.footprint):
+            return building.name
+        if margin > 0.0:
+            ring = [*building.footprint, building.footprint[0]]
+            if nearest_on_polyline(x, y, ring).distance < margin:
+                return building.name
+    return None
+
+
+def surface_at(scene: Scene, x: float, y: float) -> SurfaceKind:
+    """What the ground at (x, y) is, the most restrictive kind winning."""
+    if building_at(scene, x, y):
+        return "building"
+    for crossing in scene.roads.crossings:
+        if _on_strip(x, y, [crossing.start, crossing.end], crossing.width / 2):
+            return "crossing"
+    if lane_at(scene, x, y) is not None:
+        return "lane"
+    if any(point_in_polygon(x, y, area.polygon) for area in scene.roads.paved):
+        return "paved"
+    if any(_on_strip(x, y, walk.polyline, walk.width / 2) for walk in scene.roads.sidewalks):
+        return "sidewalk"
+    return "ground"
+
+
+DRIVABLE: frozenset[SurfaceKind] = frozenset({"lane", "crossing", "paved"})
