@@ -1,0 +1,252 @@
+"""Numba-compiled stages of the CPU splat rasterizer: EWA projection, tile binning, compositing.
+
+All kernels take their thresholds as arguments (not module globals) so the on-disk cache
+(``cache=True``: compiled once per machine) can never hold stale constants. Arithmetic is
+float64 so the kernel agrees with the float64 reference to rounding error, thresholds
+included.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+import numpy.typing as npt
+
+__all__ = ["bin_tiles", "composite", "project"]
+
+# Columns of the packed per-splat feature rows the compositor reads.
+U, V, CONIC_A, CONIC_B, CONIC_C, OPACITY, MIN_POWER, DEPTH, RED, GREEN, BLUE = range(11)
+N_FEATURES = 11
+# Slack (pixels) on each splat's pixel box so rounding never drops a pixel the exact
+# alpha test would keep; extra pixels are harmless because that test still runs.
+BOX_SLACK = 1e-3
+# Slack on the per-splat "power below which alpha < alpha_min" shortcut, for the same reason.
+POWER_SLACK = 1e-9
+
+
+@numba.njit(parallel=True, cache=True)
+def project(
+    means: npt.NDArray[np.float32],
+    quats: npt.NDArray[np.float32],
+    log_scales: npt.NDArray[np.float32],
+    opacity_logits: npt.NDArray[np.float32],
+    viewmat: npt.NDArray[np.float64],
+    intrinsics: npt.NDArray[np.float64],
+    image_size: npt.NDArray[np.int64],
+    near: float,
+    far: float,
+    low_pass: float,
+    alpha_min: float,
+    fov_clamp: float,
+    feats: npt.NDArray[np.float64],
+    boxes: npt.NDArray[np.int32],
+) -> npt.NDArray[np.bool_]:
+    """EWA-project every splat; fill feats [N,11] and pixel boxes [N,4]; return visibility.
+
+    A splat is visible when its mean lies strictly between the near and far planes, its 2D
+    covariance is positive definite, its opacity can reach ``alpha_min`` and the box of the
+    ellipse where it can reach ``alpha_min`` overlaps the image. Boxes are inclusive pixel
+    ranges x0, x1, y0, y1.
+    """
+    n = means.shape[0]
+    fx, fy, cx, cy = intrinsics[0], intrinsics[1], intrinsics[2], intrinsics[3]
+    width, height = image_size[0], image_size[1]
+    tan_x, tan_y = 0.5 * width / fx, 0.5 * height / fy
+    lim_x_pos = (width - cx) / fx + fov_clamp * tan_x
+    lim_x_neg = cx / fx + fov_clamp * tan_x
+    lim_y_pos = (height - cy) / fy + fov_clamp * tan_y
+    lim_y_neg = cy / fy + fov_clamp * tan_y
+    visible = np.zeros(n, dtype=np.bool_)
+    w = viewmat
+    for i in numba.prange(n):
+        mx, my, mz = float(means[i, 0]), float(means[i, 1]), float(means[i, 2])
+        x = w[0, 0] * mx + w[0, 1] * my + w[0, 2] * mz + w[0, 3]
+        y = w[1, 0] * mx + w[1, 1] * my + w[1, 2] * mz + w[1, 3]
+        z = w[2, 0] * mx + w[2, 1] * my + w[2, 2] * mz + w[2, 3]
+        if z <= near or z >= far:
+            continue
+        opacity = 1.0 / (1.0 + math.exp(-float(opacity_logits[i])))
+        if opacity < alpha_min:
+            continue
+        qw, qx, qy, qz = (
+            float(quats[i, 0]),
+            float(quats[i, 1]),
+            float(quats[i, 2]),
+            float(quats[i, 3]),
+        )
+        qn = math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz)
+        qw, qx, qy, qz = qw / qn, qx / qn, qy / qn, qz / qn
+        rot = np.empty((3, 3))
+        rot[0, 0] = 1 - 2 * (qy * qy + qz * qz)
+        rot[0, 1] = 2 * (qx * qy - qw * qz)
+        rot[0, 2] = 2 * (qx * qz + qw * qy)
+        rot[1, 0] = 2 * (qx * qy + qw * qz)
+        rot[1, 1] = 1 - 2 * (qx * qx + qz * qz)
+        rot[1, 2] = 2 * (qy * qz - qw * qx)
+        rot[2, 0] = 2 * (qx * qz - qw * qy)
+        rot[2, 1] = 2 * (qy * qz + qw * qx)
+        rot[2, 2] = 1 - 2 * (qx * qx + qy * qy)
+        # T = J W R S, so the 2D covariance is T T^T; J is the pinhole Jacobian at the mean
+        # with x/z, y/z clamped to just outside the view as 3DGS/gsplat do.
+        tx = min(lim_x_pos, max(-lim_x_neg, x / z)) * z
+        ty = min(lim_y_pos, max(-lim_y_neg, y / z)) * z
+        j00, j02 = fx / z, -fx * tx / (z * z)
+        j11, j12 = fy / z, -fy * ty / (z * z)
+        t0 = np.zeros(3)
+        t1 = np.zeros(3)
+        for c in range(3):
+            s = math.exp(float(log_scales[i, c]))
+            wr0 = w[0, 0] * rot[0, c] + w[0, 1] * rot[1, c] + w[0, 2] * rot[2, c]
+            wr1 = w[1, 0] * rot[0, c] + w[1, 1] * rot[1, c] + w[1, 2] * rot[2, c]
+            wr2 = w[2, 0] * rot[0, c] + w[2, 1] * rot[1, c] + w[2, 2] * rot[2, c]
+            t0[c] = (j00 * wr0 + j02 * wr2) * s
+            t1[c] = (j11 * wr1 + j12 * wr2) * s
+        cov_xx = t0[0] * t0[0] + t0[1] * t0[1] + t0[2] * t0[2] + low_pass
+        cov_xy = t0[0] * t1[0] + t0[1] * t1[1] + t0[2] * t1[2]
+        cov_yy = t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2] + low_pass
+        det = cov_xx * cov_yy - cov_xy * cov_xy
+        if det <= 0.0:
+            continue
+        u = fx * x / z + cx
+        v = fy * y / z + cy
+        # opacity * exp(-q/2) >= alpha_min  <=>  q <= 2 ln(opacity / alpha_min): the support.
+        q_max = 2.0 * math.log(opacity / alpha_min)
+        rx = math.sqrt(q_max * cov_xx) + BOX_SLACK
+        ry = math.sqrt(q_max * cov_yy) + BOX_SLACK
+        x0 = max(0.0, math.ceil(u - rx - 0.5))
+        x1 = min(width - 1.0, math.floor(u + rx - 0.5))
+        y0 = max(0.0, math.ceil(v - ry - 0.5))
+        y1 = min(height - 1.0, math.floor(v + ry - 0.5))
+        if x0 > x1 or y0 > y1:
+            continue
+        visible[i] = True
+        feats[i, U] = u
+        feats[i, V] = v
+        feats[i, CONIC_A] = cov_yy / det
+        feats[i, CONIC_B] = -cov_xy / det
+        feats[i, CONIC_C] = cov_xx / det
+        feats[i, OPACITY] = opacity
+        feats[i, MIN_POWER] = math.log(alpha_min / opacity) - POWER_SLACK
+        feats[i, DEPTH] = z
+        boxes[i, 0], boxes[i, 1], boxes[i, 2], boxes[i, 3] = x0, x1, y0, y1
+    return visible
+
+
+@numba.njit(cache=True)
+def bin_tiles(
+    order: npt.NDArray[np.int64],
+    boxes: npt.NDArray[np.int32],
+    tile: int,
+    tiles_x: int,
+    n_tiles: int,
+) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int32]]:
+    """Sort (tile, splat) pairs by (tile, depth): returns tile offsets [T+1] and splat ids.
+
+    ``order`` lists splats front to back; a stable counting sort by tile on top of it is
+    the second digit of an LSD radix sort, i.e. one sort by the key (tile, depth).
+    """
+    counts = np.zeros(n_tiles + 1, dtype=np.int64)
+    for g in order:
+        for ty in range(boxes[g, 2] // tile, boxes[g, 3] // tile + 1):
+            for tx in range(boxes[g, 0] // tile, boxes[g, 1] // tile + 1):
+                counts[ty * tiles_x + tx + 1] += 1
+    offsets = np.cumsum(counts)
+    cursor = offsets[:-1].copy()
+    ids = np.empty(offsets[-1], dtype=np.int32)
+    for g in order:
+        for ty in range(boxes[g, 2] // tile, boxes[g, 3] // tile + 1):
+            for tx in range(boxes[g, 0] // tile, boxes[g, 1] // tile + 1):
+                t = ty * tiles_x + tx
+                ids[cursor[t]] = g
+                cursor[t] += 1
+    return offsets, ids
+
+
+@numba.njit(parallel=True, cache=True, boundscheck=False)
+def composite(
+    offsets: npt.NDArray[np.int64],
+    ids: npt.NDArray[np.int32],
+    tile_order: npt.NDArray[np.int64],
+    feats: npt.NDArray[np.float64],
+    boxes: npt.NDArray[np.int32],
+    splat_index: npt.NDArray[np.int64],
+    depth_limit: npt.NDArray[np.float64],
+    tile: int,
+    tiles_x: int,
+    thresholds: npt.NDArray[np.float64],
+    out_rgb: npt.NDArray[np.float32],
+    out_alpha: npt.NDArray[np.float32],
+    out_depth: npt.NDArray[np.float32],
+    out_index: npt.NDArray[np.int32],
+) -> None:
+    """Front-to-back alpha compositing, tile by tile, splat-major within a tile.
+
+    Per pixel the splats arrive in depth order, so this equals the per-pixel loop of 3DGS:
+    alpha = min(alpha_max, o * exp(power)); skip alpha < alpha_min; stop (excluding the
+    splat) once transmittance would fall below t_min. Visiting only each splat's pixel box
+    inside the tile is what makes the CPU fast: most splats cover a few pixels.
+    ``thresholds`` = (alpha_min, alpha_max, t_min, index_min_alpha).
+    """
+    alpha_min, alpha_max, t_min, index_min_alpha = (
+        thresholds[0],
+        thresholds[1],
+        thresholds[2],
+        thresholds[3],
+    )
+    height, width = depth_limit.shape
+    for k in numba.prange(tile_order.shape[0]):
+        t = tile_order[k]
+        px0, py0 = (t % tiles_x) * tile, (t // tiles_x) * tile
+        px1, py1 = min(px0 + tile, width), min(py0 + tile, height)
+        tw = px1 - px0
+        n_pix = tw * (py1 - py0)
+        trans = np.ones(n_pix)
+        acc = np.zeros((n_pix, 4))  # r, g, b, depth
+        first = np.full(n_pix, -1, dtype=np.int64)
+        done = np.zeros(n_pix, dtype=np.bool_)
+        n_done = 0
+        for s in range(offsets[t], offsets[t + 1]):
+            g = ids[s]
+            u, v = feats[g, U], feats[g, V]
+            ca, cb, cc = feats[g, CONIC_A], feats[g, CONIC_B], feats[g, CONIC_C]
+            opacity, min_power, z = feats[g, OPACITY], feats[g, MIN_POWER], feats[g, DEPTH]
+            for py in range(max(boxes[g, 2], py0), min(boxes[g, 3], py1 - 1) + 1):
+                dy = py + 0.5 - v
+                row = (py - py0) * tw - px0
+                for px in range(max(boxes[g, 0], px0), min(boxes[g, 1], px1 - 1) + 1):
+                    p = row + px
+                    if done[p] or z >= depth_limit[py, px]:
+                        continue
+                    dx = px + 0.5 - u
+                    power = -0.5 * (ca * dx * dx + cc * dy * dy) - cb * dx * dy
+                    if power < min_power:
+                        continue
+                    alpha = min(alpha_max, opacity * math.exp(power))
+                    if alpha < alpha_min:
+                        continue
+                    next_t = trans[p] * (1.0 - alpha)
+                    if next_t < t_min:
+                        done[p] = True
+                        n_done += 1
+                        continue
+                    weight = alpha * trans[p]
+                    acc[p, 0] += weight * feats[g, RED]
+                    acc[p, 1] += weight * feats[g, GREEN]
+                    acc[p, 2] += weight * feats[g, BLUE]
+                    acc[p, 3] += weight * z
+                    if first[p] < 0 and alpha >= index_min_alpha:
+                        first[p] = splat_index[g]
+                    trans[p] = next_t
+            if n_done == n_pix:
+                break
+        for p in range(n_pix):
+            py, px = py0 + p // tw, px0 + p % tw
+            alpha_sum = 1.0 - trans[p]
+            out_rgb[py, px, 0] = acc[p, 0]
+            out_rgb[py, px, 1] = acc[p, 1]
+            out_rgb[py, px, 2] = acc[p, 2]
+            out_alpha[py, px] = alpha_sum
+            out_depth[py, px] = acc[p, 3] / alpha_sum if alpha_sum > 0.0 else 0.0
+            out_index[py, px] = first[p]
