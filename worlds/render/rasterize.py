@@ -70,7 +70,7 @@ class RasterizeError(ValueError):
 
 @dataclass
 class RasterOutput:
-    """What ``rasterize`` returns; all images are [H, W(, 3)] float32 row-major, camera z in metres."""
+    """What ``rasterize`` returns: [H, W(, 3)] float32 images, depth as camera z in metres."""
 
     rgb: npt.NDArray[np.float32]
     alpha: npt.NDArray[np.float32]

@@ -89,7 +89,7 @@ def eval_sh_colors(sh: npt.NDArray[Any], directions: npt.NDArray[Any]) -> F64:
 
     The colour is ``0.5 + sum_k basis_k(d) * sh_k`` clamped below at 0, as 3DGS does.
     """
-    degree = int(round(np.sqrt(sh.shape[1]))) - 1
+    degree = {1: 0, 4: 1, 9: 2, 16: 3}[sh.shape[1]]
     d = np.asarray(directions, dtype=np.float64)
     basis = np.stack(sh_basis(d[:, 0], d[:, 1], d[:, 2], degree), axis=1)  # [N, K]
     rgb = np.einsum("nk,nkc->nc", basis, sh.astype(np.float64)) + 0.5
@@ -202,7 +202,7 @@ class Splats:
     @property
     def sh_degree(self) -> int:
         """Degree (0..3) of the spherical harmonics."""
-        return int(round(np.sqrt(self.sh.shape[1]))) - 1
+        return {1: 0, 4: 1, 9: 2, 16: 3}[self.sh.shape[1]]
 
     @property
     def opacities(self) -> F32:
