@@ -1,0 +1,150 @@
+"""Arrange Worker: lay out several new assets as a line, a ring, a grid or along a lane edge."""
+
+from __future__ import annotations
+
+import math
+from typing import Literal
+
+from pydantic import Field
+
+from drivetwin.tools.add import new_asset
+from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
+from drivetwin.tools.errors import RuleViolation
+from drivetwin.tools.locate import Location, resolve_anchor, resolve_target
+from drivetwin.tools.rules import check_placement
+from drivetwin.worlds.catalog import category, placeable_categories
+from drivetwin.worlds.edits import AddAsset, WorldEdit
+from drivetwin.worlds.scene import AssetInstance, Pose, Scene
+from drivetwin.worlds.surface import nearest_on_polyline, point_along
+
+Shape = Literal["line", "ring", "grid", "lane_edge"]
+# Free space kept around a ring's target (added to the target's own half-length).
+RING_CLEARANCE_M = 1.5
+MAX_ARRANGED = 100
+
+
+class ArrangeArgs(ToolArgs):
+    categories: list[CategoryName] = Field(
+        min_length=1, max_length=4,
+        description="one category (homogeneous) or several used in turn (mixed)",
+    )
+    shape: Shape
+    count: int | None = Field(None, ge=1, le=MAX_ARRANGED, description="how many in all")
+    location: Location = Field(description="the target to ring around, or where the layout starts")
+    radius: float | None = Field(None, gt=0.5, le=60.0, description="ring radius, metres")
+    spacing: float | None = Field(None, gt=0.1, le=30.0, description="gap between centres, metres")
+    heading_deg: float | None = Field(None, ge=-360.0, le=360.0, description="line direction")
+    columns: int | None = Field(None, ge=1, le=20, description="grid columns")
+    label: str = Field("", max_length=80)
+
+
+
+def _ring(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
+    anchor = resolve_anchor(scene, Location(relation="at", target=args.location.target)
+                            if args.location.target else args.location, 0.0)
+    target_half = 0.0
+    if args.location.target:
+        t = resolve_target(scene, args.location.target)
+        target_half = t.half_length
+        # A ring around an asset encloses the asset and its neighbours added with it.
+        if t.kind == "asset":
+            anchor_xy = (t.x, t.y)
+        else:
+            anchor_xy = (anchor.x, anchor.y)
+    else:
+        anchor_xy = (anchor.x, anchor.y)
+    largest = max(sizes)
+    radius = args.radius or max(target_half + RING_CLEARANCE_M + largest / 2, 2.0)
+    count = args.count or max(4, int(2 * math.pi * radius / (largest + (args.spacing or 1.0))))
+    step = 2 * math.pi / count
+    return [
+        Pose(x=anchor_xy[0] + radius * math.cos(k * step), y=anchor_xy[1] + radius * math.sin(k * step),
+             yaw=k * step + math.pi / 2)
+        for k in range(count)
+    ]
+
+
+def _line(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
+    anchor = resolve_anchor(scene, args.location, max(sizes) / 2)
+    across = args.location.relation in ("in_front_of", "behind")
+    # A line in front of something runs across its path (a cordon), elsewhere along it.
+    default = anchor.heading + (math.pi / 2 if across else 0.0)
+    heading = math.radians(args.heading_deg) if args.heading_deg is not None else default
+    spacing = args.spacing or max(sizes) + 0.5
+    count = args.count or 5
+    start = -(count - 1) / 2 * spacing
+    c, s = math.cos(heading), math.sin(heading)
+    return [Pose(x=anchor.x + (start + k * spacing) * c, y=anchor.y + (start + k * spacing) * s, yaw=heading)
+            for k in range(count)]
+
+
+def _grid(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
+    anchor = resolve_anchor(scene, args.location, max(sizes) / 2)
+    count = args.count or 9
+    cols = args.columns or max(1, round(math.sqrt(count)))
+    rows = math.ceil(count / cols)
+    spacing = args.spacing or max(sizes) + 1.0
+    heading = math.radians(args.heading_deg) if args.heading_deg is not None else anchor.heading
+    c, s = math.cos(heading), math.sin(heading)
+    poses = []
+    for k in range(count):
+        i, j = k % cols, k // cols
+        u, v = (i - (cols - 1) / 2) * spacing, (j - (rows - 1) / 2) * spacing
+        poses.append(Pose(x=anchor.x + u * c - v * s, y=anchor.y + u * s + v * c, yaw=heading))
+    return poses
+
+
+def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
+    anchor = resolve_anchor(scene, Location(relation="in_lane", target=args.location.target,
+                                            distance=args.location.distance), max(sizes) / 2)
+    lane = min(scene.roads.lanes,
+               key=lambda ln: nearest_on_polyline(anchor.x, anchor.y, ln.centreline).distance)
+    near = nearest_on_polyline(anchor.x, anchor.y, lane.centreline)
+    spacing = args.spacing or 3.0
+    count = args.count or 8
+    # On the lane's right edge (the kerb side for right-hand traffic), just inside the lane.
+    offset = lane.width / 2 - max(sizes) / 2 - 0.2
+    poses = []
+    for k in range(count):
+        x, y, heading = point_along(lane.centreline, near.arc_length + k * spacing)
+        poses.append(Pose(x=x + offset * math.sin(heading), y=y - offset * math.cos(heading), yaw=heading))
+    return poses
+
+
+LAYOUTS = {"ring": _ring, "line": _line, "grid": _grid, "lane_edge": _lane_edge}
+
+
+class ArrangeAssets(Tool[ArrangeArgs]):
+    name = "arrange_assets"
+    description = (
+        "Add several assets laid out as a line, a ring around a target, a grid, or along a "
+        "lane's edge; one category or a mix used in turn."
+    )
+    family = "arrange"
+    Args = ArrangeArgs
+
+    def propose(self, args: ArrangeArgs, scene: Scene) -> ToolResult:
+        for name in args.categories:
+            if name not in placeable_categories():
+                raise RuleViolation("protected", f"{name} cannot be arranged")
+        cats = [category(c) for c in args.categories]
+        sizes = [c.length for c in cats]
+        poses = LAYOUTS[args.shape](args, scene, sizes)
+        placed: list[AssetInstance] = []
+        others = scene.all_assets()
+        for k, pose in enumerate(poses):
+            template = new_asset(scene, cats[k % len(cats)].name, {a.id for a in placed}, args.label)
+            asset = template.model_copy(update={"pose": pose})
+            try:
+                check_placement(scene, asset, [*others, *placed])
+            except RuleViolation as exc:
+                raise RuleViolation(
+                    exc.rule, f"{args.shape} position {k + 1} of {len(poses)}: {exc}"
+                ) from exc
+            placed.append(asset)
+        edit = WorldEdit(ops=tuple(AddAsset(asset=a) for a in placed))
+        cx = sum(p.x for p in poses) / len(poses)
+        cy = sum(p.y for p in poses) / len(poses)
+        kinds = "/".join(c.name for c in cats)
+        return ToolResult(edit, f"arranged {len(placed)} {kinds} as a {args.shape} at ({cx:.1f}, {cy:.1f})",
+                          (cx, cy), {"ids": [a.id for a in placed]})

@@ -1,0 +1,261 @@
+"""Move Workers: shift or turn an asset, and give it a behaviour (drive, circle, cross, jaywalk).
+
+`BehaviourSpec` is what a planner says ("circle at radius 5 m", "jaywalk in front of the ego");
+`resolve_behaviour` turns it into a Scene behaviour with concrete geometry, and where the
+behaviour decides where the asset starts (a jaywalker at the kerb), that start pose.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from typing import Literal
+
+from pydantic import Field
+
+from drivetwin.tools.base import Tool, ToolArgs, ToolResult
+from drivetwin.tools.errors import NotFoundError, RuleViolation
+from drivetwin.tools.locate import resolve_target
+from drivetwin.tools.rules import check_placement
+from drivetwin.worlds.catalog import category
+from drivetwin.worlds.edits import UpdateAsset, WorldEdit
+from drivetwin.worlds.scene import (
+    BEHAVIOUR_KINDS,
+    AssetInstance,
+    Behaviour,
+    Circle,
+    CrossRoad,
+    DriveLane,
+    FollowPath,
+    Jaywalk,
+    Lane,
+    Parked,
+    Pose,
+    Scene,
+)
+from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, point_along, surface_at
+
+BehaviourKind = Literal["parked", "drive_lane", "follow_path", "circle", "cross_road", "jaywalk"]
+# A jaywalker steps out this far ahead of the ego unless told otherwise.
+JAYWALK_AHEAD_M = 30.0
+# ...and reaches the ego's lane when the ego is still this far away (a hard but fair test).
+JAYWALK_GAP_M = 12.0
+# Crossings count as "not jaywalking": keep this far from any marked crossing.
+CROSSING_KEEP_OUT_M = 4.0
+# Points checked around a skidpad circle for a clear, drivable path.
+CIRCLE_SAMPLES = 36
+DEFAULT_SKIDPAD_RADIUS_M = 5.0
+
+
+class BehaviourSpec(ToolArgs):
+    """A behaviour as a planner names it; unset fields take sensible defaults."""
+
+    kind: BehaviourKind
+    speed: float | None = Field(None, gt=0.0, le=40.0, description="metres per second")
+    lane: str | None = Field(None, description="lane id for drive_lane (default: nearest lane)")
+    radius: float | None = Field(None, gt=0.5, le=200.0, description="circle radius, metres")
+    clockwise: bool = False
+    centre: str | None = Field(None, description="landmark or asset to circle around")
+    waypoints: list[tuple[float, float]] | None = Field(None, description="[[x, y], ...] metres")
+    start_time: float | None = Field(None, ge=0.0, le=3600.0, description="seconds from now")
+    ahead: float | None = Field(
+        None, gt=2.0, le=150.0, description="jaywalk: metres ahead of the ego to cross"
+    )
+
+
+def _lane_of(scene: Scene, x: float, y: float) -> Lane:
+    if not scene.roads.lanes:
+        raise NotFoundError("this world has no lanes")
+    return min(scene.roads.lanes, key=lambda ln: nearest_on_polyline(x, y, ln.centreline).distance)
+
+
+def _kerb(scene: Scene, x: float, y: float, direction: float) -> tuple[float, float]:
+    """The first point off the carriageway walking from (x, y) along `direction`."""
+    for i in range(1, 60):
+        d = i * 0.5
+        px, py = x + d * math.cos(direction), y + d * math.sin(direction)
+        if surface_at(scene, px, py) not in DRIVABLE:
+            return (px + 0.5 * math.cos(direction), py + 0.5 * math.sin(direction))
+    raise RuleViolation("surface", f"no kerb within 30 m of ({x:.1f}, {y:.1f})")
+
+
+def _jaywalk(scene: Scene, spec: BehaviourSpec) -> tuple[Jaywalk, Pose]:
+    ego = scene.ego
+    lane = _lane_of(scene, ego.pose.x, ego.pose.y)
+    here = nearest_on_polyline(ego.pose.x, ego.pose.y, lane.centreline)
+    ahead = spec.ahead or JAYWALK_AHEAD_M
+    for _ in range(20):
+        cx, cy, heading = point_along(lane.centreline, here.arc_length + ahead)
+        near_crossing = any(
+            nearest_on_polyline(cx, cy, [c.start, c.end]).distance < c.width / 2 + CROSSING_KEEP_OUT_M
+            for c in scene.roads.crossings
+        )
+        if not near_crossing and surface_at(scene, cx, cy) == "lane":
+            break
+        ahead += 3.0
+    else:
+        raise RuleViolation("surface", "no stretch of the ego's lane ahead is clear of crossings")
+    right, left = heading - math.pi / 2, heading + math.pi / 2
+    start, end = _kerb(scene, cx, cy, right), _kerb(scene, cx, cy, left)
+    speed = spec.speed or 1.8
+    walk_to_lane = math.hypot(start[0] - cx, start[1] - cy)
+    ego_speed = ego.behaviour.speed if isinstance(ego.behaviour, DriveLane) else 5.0
+    trigger = ego_speed * walk_to_lane / speed + JAYWALK_GAP_M
+    behaviour = Jaywalk(start=start, end=end, speed=speed, trigger_distance=min(trigger, 200.0))
+    return behaviour, Pose(x=start[0], y=start[1], yaw=left)
+
+
+def _cross_road(scene: Scene, spec: BehaviourSpec, near: tuple[float, float]) -> tuple[CrossRoad, Pose]:
+    if not scene.roads.crossings:
+        raise NotFoundError("this world has no pedestrian crossings")
+    crossing = min(
+        scene.roads.crossings,
+        key=lambda c: math.hypot((c.start[0] + c.end[0]) / 2 - near[0], (c.start[1] + c.end[1]) / 2 - near[1]),
+    )
+    heading = math.atan2(crossing.end[1] - crossing.start[1], crossing.end[0] - crossing.start[0])
+    behaviour = CrossRoad(start=crossing.start, end=crossing.end, speed=spec.speed or 1.4,
+                          start_time=spec.start_time or 0.0)
+    return behaviour, Pose(x=crossing.start[0], y=crossing.start[1], yaw=heading)
+
+
+def circle_path_clear(scene: Scene, asset: AssetInstance, centre: tuple[float, float], radius: float) -> bool:
+    """Whether an asset can drive the whole circle: every sample drivable and free."""
+    others = [a for a in scene.all_assets() if a.id != asset.id]
+    for k in range(CIRCLE_SAMPLES):
+        angle = 2 * math.pi * k / CIRCLE_SAMPLES
+        x, y = centre[0] + radius * math.cos(angle), centre[1] + radius * math.sin(angle)
+        if not scene.bounds.contains(x, y) or surface_at(scene, x, y) not in DRIVABLE:
+            return False
+        probe = asset.model_copy(update={"pose": Pose(x=x, y=y, yaw=angle + math.pi / 2)})
+        try:
+            check_placement(scene, probe, others)
+        except RuleViolation:
+            return False
+    return True
+
+
+def _circle(scene: Scene, asset: AssetInstance, spec: BehaviourSpec,
+            anchor: tuple[float, float] | None) -> tuple[Circle, Pose]:
+    radius = spec.radius or DEFAULT_SKIDPAD_RADIUS_M
+    candidates: list[tuple[float, float]] = []
+    if spec.centre is not None:
+        target = resolve_target(scene, spec.centre)
+        candidates.append((target.x, target.y))
+    elif anchor is not None:
+        candidates.append(anchor)
+    else:
+        # Open paving first: parking lots and plazas, scanned on a 2 m grid.
+        for area in scene.roads.paved:
+            if area.kind not in ("parking", "plaza"):
+                continue
+            xs = [p[0] for p in area.polygon]
+            ys = [p[1] for p in area.polygon]
+            cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
+            grid = [(cx + dx, cy + dy) for dx in range(-12, 13, 2) for dy in range(-12, 13, 2)]
+            candidates += sorted(grid, key=lambda p: math.hypot(p[0] - cx, p[1] - cy))
+    for cx, cy in candidates:
+        if circle_path_clear(scene, asset, (cx, cy), radius):
+            behaviour = Circle(centre=(cx, cy), radius=radius, speed=spec.speed or 2.0,
+                               clockwise=spec.clockwise)
+            yaw = -math.pi / 2 if spec.clockwise else math.pi / 2
+            return behaviour, Pose(x=cx + radius, y=cy, yaw=yaw)
+    raise RuleViolation(
+        "no_space", f"no clear, drivable circle of radius {radius:g} m for {asset.id}; "
+        "try a smaller radius or another centre",
+    )
+
+
+def resolve_behaviour(
+    scene: Scene, asset: AssetInstance, spec: BehaviourSpec, anchor: tuple[float, float] | None = None
+) -> tuple[Behaviour, Pose | None]:
+    """The Scene behaviour for `spec` and, where the behaviour fixes it, the asset's start pose."""
+    cat = category(asset.category)
+    if spec.kind in ("drive_lane", "circle") and cat.motion != "vehicle":
+        raise RuleViolation("behaviour", f"a {cat.name} cannot {spec.kind}; only vehicles and robots drive")
+    if spec.kind in ("cross_road", "jaywalk") and cat.motion != "walker":
+        raise RuleViolation("behaviour", f"a {cat.name} cannot {spec.kind}; only pedestrians and riders walk")
+    if spec.kind == "parked":
+        return Parked(), None
+    if spec.kind == "drive_lane":
+        lane = scene.roads.lane(spec.lane) if spec.lane else _lane_of(scene, asset.pose.x, asset.pose.y)
+        if lane is None:
+            names = ", ".join(ln.id for ln in scene.roads.lanes)
+            raise NotFoundError(f"no lane {spec.lane!r}; lanes: {names}")
+        near = nearest_on_polyline(asset.pose.x, asset.pose.y, lane.centreline)
+        pose = None if near.distance < lane.width / 2 else Pose(x=near.x, y=near.y, yaw=near.heading)
+        if pose is None and abs(math.remainder(asset.pose.yaw - near.heading, 2 * math.pi)) > 0.3:
+            pose = Pose(x=asset.pose.x, y=asset.pose.y, yaw=near.heading)
+        return DriveLane(lane=lane.id, speed=spec.speed or min(5.0, lane.speed_limit)), pose
+    if spec.kind == "follow_path":
+        if not spec.waypoints or len(spec.waypoints) < 2:
+            raise RuleViolation("behaviour", "follow_path needs at least two waypoints [[x, y], ...]")
+        default = 1.4 if cat.motion == "walker" else 4.0
+        return FollowPath(waypoints=spec.waypoints, speed=spec.speed or default,
+                          start_time=spec.start_time or 0.0), None
+    if spec.kind == "circle":
+        return _circle(scene, asset, spec, anchor)
+    if spec.kind == "cross_road":
+        return _cross_road(scene, spec, anchor or (asset.pose.x, asset.pose.y))
+    return _jaywalk(scene, spec)
+
+
+def find_asset(scene: Scene, asset_id: str) -> AssetInstance:
+    """The asset with this id, or NotFoundError naming the nearest ids."""
+    found = scene.asset(asset_id.strip())
+    if found is None:
+        ids = [a.id for a in scene.all_assets()]
+        near = difflib.get_close_matches(asset_id, ids, n=3, cutoff=0.3)
+        hint = f"; nearest: {', '.join(near)}" if near else f"; assets: {', '.join(ids[:8])}"
+        raise NotFoundError(f"no asset {asset_id!r}{hint}")
+    return found
+
+
+class MoveArgs(ToolArgs):
+    asset: str = Field(description="id of the asset to move, e.g. passenger_car_2 or ego")
+    forward: float = Field(0.0, ge=-100.0, le=100.0, description="metres along its heading")
+    left: float = Field(0.0, ge=-100.0, le=100.0, description="metres to its left")
+    turn_deg: float = Field(0.0, ge=-360.0, le=360.0, description="degrees anticlockwise")
+
+
+class MoveAsset(Tool[MoveArgs]):
+    name = "move_asset"
+    description = "Shift an existing asset forward/back/left/right by metres and/or turn it."
+    family = "move"
+    Args = MoveArgs
+
+    def propose(self, args: MoveArgs, scene: Scene) -> ToolResult:
+        asset = find_asset(scene, args.asset)
+        p = asset.pose
+        c, s = math.cos(p.yaw), math.sin(p.yaw)
+        pose = Pose(x=p.x + c * args.forward - s * args.left, y=p.y + s * args.forward + c * args.left,
+                    yaw=p.yaw + math.radians(args.turn_deg))
+        after = asset.model_copy(update={"pose": pose})
+        edit = WorldEdit(ops=(UpdateAsset(before=asset, after=after),))
+        return ToolResult(edit, f"moved {asset.id} to ({pose.x:.1f}, {pose.y:.1f})", (pose.x, pose.y))
+
+
+class BehaviourArgs(ToolArgs):
+    asset: str = Field(description="id of the asset, e.g. pedestrian_1 or ego")
+    behaviour: BehaviourSpec
+
+
+class SetBehaviour(Tool[BehaviourArgs]):
+    name = "set_behaviour"
+    description = (
+        "Give an asset a behaviour: parked, drive_lane, follow_path, circle (skidpad), "
+        "cross_road (at a crossing) or jaywalk (cross in front of the ego vehicle)."
+    )
+    family = "move"
+    Args = BehaviourArgs
+
+    def propose(self, args: BehaviourArgs, scene: Scene) -> ToolResult:
+        asset = find_asset(scene, args.asset)
+        behaviour, pose = resolve_behaviour(scene, asset, args.behaviour)
+        after = asset.model_copy(update={"behaviour": behaviour, "pose": pose or asset.pose})
+        edit = WorldEdit(ops=(UpdateAsset(before=asset, after=after),))
+        focus = (after.pose.x, after.pose.y)
+        return ToolResult(edit, f"{asset.id} now does {behaviour.kind}", focus)
+
+
+__all__ = ["BEHAVIOUR_KINDS", "BehaviourSpec", "MoveAsset", "SetBehaviour",
+           "find_asset", "resolve_behaviour"]

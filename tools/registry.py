@@ -1,0 +1,140 @@
+"""The Worker registry: built-in tools plus plugins found through the `drivetwin.tools` entry points.
+
+A plugin's entry point names a Tool subclass (or an instance, or a function returning a list
+of them). A plugin that fails to import or to build is reported and skipped, never fatal.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+from dataclasses import dataclass
+from importlib.metadata import entry_points
+from typing import Any
+
+from drivetwin.tools.add import AddAssetTool
+from drivetwin.tools.appearance import SetAssetAppearance, SetLighting, SetTimeOfDay, SetWeather
+from drivetwin.tools.arrange import ArrangeAssets
+from drivetwin.tools.base import FAMILIES, Family, Tool, ToolCall, ToolResult
+from drivetwin.tools.errors import ToolError, UnknownToolError
+from drivetwin.tools.move import MoveAsset, SetBehaviour
+from drivetwin.tools.position import PlaceAsset
+from drivetwin.tools.remove import RemoveAssets
+from drivetwin.tools.search import AssetProperties, FindAssets, FindLandmarks, FindLanes
+from drivetwin.worlds.catalog import UnknownCategoryError
+from drivetwin.worlds.scene import Scene
+
+ENTRY_POINT_GROUP = "drivetwin.tools"
+
+
+def builtin_tools() -> list[Tool[Any]]:
+    """One instance of every built-in Worker, in family order."""
+    return [
+        FindAssets(), FindLandmarks(), FindLanes(), AssetProperties(),
+        AddAssetTool(),
+        RemoveAssets(),
+        PlaceAsset(),
+        MoveAsset(), SetBehaviour(),
+        ArrangeAssets(),
+        SetTimeOfDay(), SetWeather(), SetLighting(), SetAssetAppearance(),
+    ]
+
+
+@dataclass(frozen=True)
+class PluginProblem:
+    """A plugin that could not be loaded, and why."""
+
+    entry_point: str
+    error: str
+
+
+class ToolRegistry:
+    """Tools by name; validates and runs calls, turning every refusal into a ToolError."""
+
+    def __init__(self, tools: Iterable[Tool[Any]] = ()) -> None:
+        self._tools: dict[str, Tool[Any]] = {}
+        self.problems: list[PluginProblem] = []
+        self.sources: dict[str, str] = {}
+        for tool in tools:
+            self.register(tool)
+
+    @classmethod
+    def default(cls, plugins: bool = True) -> ToolRegistry:
+        """The built-in tools, plus installed plugins unless `plugins` is False."""
+        registry = cls(builtin_tools())
+        for name in registry._tools:
+            registry.sources[name] = "built-in"
+        if plugins:
+            registry.load_plugins()
+        return registry
+
+    def register(self, tool: Tool[Any], source: str = "built-in") -> None:
+        _validate_tool(tool)
+        if tool.name in self._tools:
+            raise ValueError(f"a tool named {tool.name!r} is already registered")
+        self._tools[tool.name] = tool
+        self.sources[tool.name] = source
+
+    def load_plugins(self) -> None:
+        """Register every tool the `drivetwin.tools` entry points provide; report failures."""
+        for ep in entry_points(group=ENTRY_POINT_GROUP):
+            try:
+                loaded = ep.load()
+                made = loaded() if callable(loaded) else loaded
+                tools = made if isinstance(made, list | tuple) else [made]
+                for tool in tools:
+                    self.register(tool, source=f"plugin {ep.value}")
+            except Exception as exc:  # a broken plugin must never take the session down
+                self.problems.append(PluginProblem(f"{ep.name} = {ep.value}", f"{type(exc).__name__}: {exc}"))
+
+    # Queries ---------------------------------------------------------------------------
+    def names(self) -> list[str]:
+        return list(self._tools)
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._tools
+
+    def get(self, name: str) -> Tool[Any]:
+        tool = self._tools.get(name)
+        if tool is None:
+            near = difflib.get_close_matches(name, self._tools, n=3, cutoff=0.3)
+            raise UnknownToolError(
+                f"unknown tool {name!r}; nearest: {', '.join(near) or 'none'}. "
+                f"Available: {', '.join(self._tools)}"
+            )
+        return tool
+
+    def family(self, family: Family) -> list[Tool[Any]]:
+        return [t for t in self._tools.values() if t.family == family]
+
+    def schemas(self, families: Iterable[Family] = FAMILIES) -> list[dict[str, Any]]:
+        """JSON Schemas of the tools of the given families, as an LLM sees them."""
+        wanted = set(families)
+        return [t.json_schema() for t in self._tools.values() if t.family in wanted]
+
+    # Running ---------------------------------------------------------------------------
+    def check(self, call: ToolCall, scene: Scene) -> None:
+        """Raise a ToolError if `call` cannot be applied to `scene`."""
+        self.run(call, scene)
+
+    def run(self, call: ToolCall, scene: Scene) -> ToolResult:
+        """Validate and apply one call against `scene` (which is not changed)."""
+        tool = self.get(call.tool)
+        args = tool.parse(call.args)
+        try:
+            return tool.apply(args, scene)
+        except ToolError:
+            raise
+        except UnknownCategoryError as exc:
+            raise ToolError(str(exc)) from exc
+        except ValueError as exc:
+            # A pydantic model built inside a tool refused a value (an out-of-range pose...).
+            raise ToolError(f"{call.tool}: {exc}") from exc
+
+
+def _validate_tool(tool: Tool[Any]) -> None:
+    for attr in ("name", "description", "family", "Args"):
+        if not hasattr(tool, attr):
+            raise TypeError(f"{type(tool).__name__} is not a Worker tool: it has no {attr!r}")
+    if tool.family not in FAMILIES:
+        raise TypeError(f"tool {tool.name!r} has unknown family {tool.family!r}; allowed: {FAMILIES}")

@@ -1,0 +1,146 @@
+"""Pre-execution rules every edit must pass: bounds, buildings, overlap, surface and limits.
+
+Rules look only at what an edit adds or moves, so an edit is never refused for a conflict
+that was already in the scene (a recolour of an asset that touches another is fine).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+
+from drivetwin.tools.errors import RuleViolation
+from drivetwin.worlds.catalog import Category, category
+from drivetwin.worlds.edits import AddAsset, EditConflict, RemoveAsset, UpdateAsset, WorldEdit
+from drivetwin.worlds.scene import EGO_ID, MAX_ASSETS, AssetInstance, Scene
+from drivetwin.worlds.surface import DRIVABLE, building_at, surface_at
+
+# Footprints may touch: cones in a tight ring or cars in adjacent bays are fine.
+OVERLAP_TOLERANCE_M = 0.05
+# Walkers and riders are kinematic and step around furniture; they only must not stand
+# inside a building or off the world.
+NON_COLLIDING_MOTION = frozenset({"walker"})
+
+
+def footprint(asset: AssetInstance) -> list[tuple[float, float]]:
+    """The four corners of an asset's footprint rectangle, in world metres."""
+    cat = category(asset.category)
+    hl, hw = cat.length * asset.scale / 2, cat.width * asset.scale / 2
+    c, s = math.cos(asset.pose.yaw), math.sin(asset.pose.yaw)
+    return [
+        (asset.pose.x + c * dx - s * dy, asset.pose.y + s * dx + c * dy)
+        for dx, dy in ((hl, hw), (-hl, hw), (-hl, -hw), (hl, -hw))
+    ]
+
+
+def footprints_overlap(a: AssetInstance, b: AssetInstance, tolerance: float = OVERLAP_TOLERANCE_M) -> bool:
+    """Separating-axis test of two footprint rectangles, each shrunk by `tolerance`."""
+    pa, pb = footprint(a), footprint(b)
+    ra = category(a.category).footprint_radius * a.scale
+    rb = category(b.category).footprint_radius * b.scale
+    if math.hypot(a.pose.x - b.pose.x, a.pose.y - b.pose.y) > ra + rb:
+        return False
+    for poly in (pa, pb):
+        for i in range(2):
+            (x1, y1), (x2, y2) = poly[i], poly[i + 1]
+            ax, ay = x2 - x1, y2 - y1
+            norm = math.hypot(ax, ay)
+            ax, ay = ax / norm, ay / norm
+            proj_a = [x * ax + y * ay for x, y in pa]
+            proj_b = [x * ax + y * ay for x, y in pb]
+            if max(proj_a) - tolerance <= min(proj_b) or max(proj_b) - tolerance <= min(proj_a):
+                return False
+    return True
+
+
+def _placed(edit: WorldEdit) -> list[AssetInstance]:
+    """Assets the edit adds or moves (a pose, scale or category change)."""
+    out = []
+    for op in edit.ops:
+        if isinstance(op, AddAsset):
+            out.append(op.asset)
+        elif isinstance(op, UpdateAsset) and (
+            op.before.pose != op.after.pose or op.before.scale != op.after.scale
+        ):
+            out.append(op.after)
+    return out
+
+
+def check_placement(scene: Scene, asset: AssetInstance, others: Iterable[AssetInstance]) -> None:
+    """Raise RuleViolation if `asset` may not stand where it is, among `others`."""
+    cat = category(asset.category)
+    corners = footprint(asset)
+    x, y = asset.pose.x, asset.pose.y
+    b = scene.bounds
+    if not all(b.contains(cx, cy) for cx, cy in corners):
+        raise RuleViolation(
+            "bounds",
+            f"{asset.id} at ({x:.1f}, {y:.1f}) is outside the world; allowed: "
+            f"x in [{b.xmin:g}, {b.xmax:g}], y in [{b.ymin:g}, {b.ymax:g}] m",
+        )
+    for cx, cy in [*corners, (x, y)]:
+        inside = building_at(scene, cx, cy)
+        if inside:
+            raise RuleViolation(
+                "building",
+                f"{asset.id} at ({x:.1f}, {y:.1f}) would be inside {inside}; "
+                "place it outside the building's footprint",
+            )
+    _check_surface(scene, asset, cat)
+    if cat.motion in NON_COLLIDING_MOTION:
+        return
+    for other in others:
+        if other.id == asset.id or category(other.category).motion in NON_COLLIDING_MOTION:
+            continue
+        if footprints_overlap(asset, other):
+            raise RuleViolation(
+                "overlap",
+                f"{asset.id} at ({x:.1f}, {y:.1f}) would overlap {other.id}; "
+                "choose a free spot or a larger spacing",
+            )
+
+
+def _check_surface(scene: Scene, asset: AssetInstance, cat: Category) -> None:
+    x, y = asset.pose.x, asset.pose.y
+    ground = surface_at(scene, x, y)
+    if cat.placement == "drivable" and ground not in DRIVABLE:
+        raise RuleViolation(
+            "surface",
+            f"a {cat.name} must stand on a road, crossing or paved area; ({x:.1f}, {y:.1f}) "
+            f"is {ground}",
+        )
+    if cat.placement == "sidewalk" and ground not in ("sidewalk", "ground"):
+        raise RuleViolation(
+            "surface",
+            f"a {cat.name} belongs on a sidewalk or verge, not on the {ground} at "
+            f"({x:.1f}, {y:.1f})",
+        )
+
+
+def check_edit(scene: Scene, edit: WorldEdit) -> None:
+    """Raise a RuleViolation if `edit` may not be applied to `scene`; change nothing."""
+    for op in edit.ops:
+        if isinstance(op, RemoveAsset) and op.before.id == EGO_ID:
+            raise RuleViolation("protected", "the ego vehicle cannot be removed; move it instead")
+        if isinstance(op, UpdateAsset) and op.before.category != op.after.category:
+            raise RuleViolation(
+                "protected", f"{op.before.id} cannot change category; remove it and add another"
+            )
+    try:
+        after = edit.apply(scene)
+    except EditConflict as exc:
+        raise RuleViolation("conflict", str(exc)) from exc
+    except ValueError as exc:  # pydantic: e.g. more than MAX_ASSETS
+        raise RuleViolation("limits", f"the scene would be invalid: {exc}") from exc
+    if len(after.assets) > MAX_ASSETS:
+        raise RuleViolation("limits", f"a scene holds at most {MAX_ASSETS} assets")
+    for name in {op.asset.category for op in edit.ops if isinstance(op, AddAsset)}:
+        limit = category(name).max_count
+        if after.count(name) > limit:
+            raise RuleViolation(
+                "limits", f"at most {limit} {name} assets fit a scene; it would have {after.count(name)}"
+            )
+    everyone = after.all_assets()
+    for asset in _placed(edit):
+        check_placement(after, asset, everyone)
+
