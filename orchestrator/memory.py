@@ -51,9 +51,13 @@ class Memory(BaseModel):
         self.summary = self.summary[-20:]
 
     def mark_last(self, status: TurnStatus) -> None:
-        """Change the status of the newest applied turn (after undo, reject, accept)."""
+        """Follow an undo, redo, accept or reject in the turns it concerns."""
+        if status == "applied":  # redo: the newest undone turn is back
+            wanted: tuple[TurnStatus, ...] = ("undone",)
+        else:
+            wanted = ("applied", "accepted")
         for turn in reversed(self.turns):
-            if turn.status in ("applied", "accepted", "undone"):
+            if turn.status in wanted:
                 turn.status = status
                 return
 

@@ -1,0 +1,233 @@
+"""The Session: one person editing one live world, prompt by prompt.
+
+A prompt goes to the planner; its calls run as one transaction; a refusal leaves the scene
+exactly as it was. Every change is journaled before it is reported, and every change is
+handed to the views (the MuJoCo simulation, the renderer) through `on_change`.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from drivetwin.orchestrator.journal import Entry, History, Journal
+from drivetwin.orchestrator.memory import Memory, Turn
+from drivetwin.orchestrator.planning import MAX_PROMPT_CHARS, Plan, PlanContext, Planner, PlanningError
+from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute, first_refusal
+from drivetwin.tools.registry import ToolRegistry
+from drivetwin.worlds.edits import WorldEdit
+from drivetwin.worlds.scene import Scene
+
+
+class SessionError(Exception):
+    """A session command that cannot be done now (nothing to undo, bad file...)."""
+
+
+@dataclass
+class TurnReport:
+    """What one prompt did: the plan, each call's result, the scene diff or the error."""
+
+    prompt: str
+    ok: bool
+    plan: Plan | None = None
+    results: list[str] = field(default_factory=list)
+    diff: list[str] = field(default_factory=list)
+    error: str | None = None
+    seconds: float = 0.0
+    answer: str | None = None
+
+
+class Session:
+    """A live editing session over a Scene, with a planner, history and a journal."""
+
+    def __init__(
+        self,
+        scene: Scene,
+        planner: Planner,
+        registry: ToolRegistry | None = None,
+        journal_path: str | Path | None = None,
+        on_change: Callable[[Scene], None] | None = None,
+    ) -> None:
+        self._scene = scene
+        self.planner = planner
+        self.registry = registry or ToolRegistry.default()
+        self.history = History()
+        self.memory = Memory()
+        self.on_change = on_change
+        self.journal = Journal(journal_path) if journal_path else None
+        if self.journal is not None:
+            self.journal.start(scene)
+
+    @classmethod
+    def resume(
+        cls,
+        journal_path: str | Path,
+        planner: Planner,
+        registry: ToolRegistry | None = None,
+        on_change: Callable[[Scene], None] | None = None,
+    ) -> Session:
+        """The session a journal describes, as it was when the journal was last written."""
+        journal = Journal(journal_path)
+        restored = journal.replay()
+        session = cls(restored.scene, planner, registry, None, on_change)
+        session.history = restored.history
+        session.memory = restored.memory
+        session.journal = journal
+        return session
+
+    @property
+    def scene(self) -> Scene:
+        return self._scene
+
+    def context(self) -> PlanContext:
+        return PlanContext(
+            scene=self._scene,
+            registry=self.registry,
+            memory=self.memory,
+            dry_run=lambda calls: first_refusal(self.registry, self._scene, calls),
+        )
+
+    # Prompts -----------------------------------------------------------------------------
+    def submit(self, prompt: str) -> TurnReport:
+        """Plan and apply one prompt; on any refusal the scene stays exactly as it was."""
+        started = time.perf_counter()
+        text = prompt.strip()
+        if not text:
+            return self._failed(prompt, "the prompt is empty; say what to change", started)
+        if len(text) > MAX_PROMPT_CHARS:
+            return self._failed(
+                prompt[:80] + "…",
+                f"the prompt is {len(text)} characters; at most {MAX_PROMPT_CHARS} are accepted",
+                started,
+            )
+        try:
+            plan = self.planner.plan(text, self.context())
+        except PlanningError as exc:
+            return self._failed(text, str(exc), started)
+        try:
+            outcome = execute(self.registry, self._scene, plan.calls)
+        except TransactionError as exc:
+            return self._failed(text, str(exc), started, plan)
+        results = [r.text for r in outcome.results]
+        if outcome.edit.empty:
+            self._remember(text, plan, outcome, "answered")
+            answer = plan.answer or ("; ".join(results) if results else None)
+            return TurnReport(text, True, plan, results, [], None, time.perf_counter() - started, answer)
+        self._commit(text, outcome.edit, outcome.after)
+        self._remember(text, plan, outcome, "applied")
+        return TurnReport(
+            text, True, plan, results, outcome.edit.summary(), None,
+            time.perf_counter() - started, plan.answer,
+        )
+
+    def _failed(self, prompt: str, error: str, started: float, plan: Plan | None = None) -> TurnReport:
+        turn = Turn(prompt=prompt[:500], status="failed", results=[error[:300]])
+        self.memory.record(turn)
+        if self.journal is not None:
+            self.journal.append("turn", turn=turn.model_dump(mode="json"))
+        return TurnReport(prompt, False, plan, [], [], error, time.perf_counter() - started)
+
+    def _remember(self, prompt: str, plan: Plan, outcome: Outcome, status: str) -> None:
+        edit = outcome.edit
+        added = [op.asset.id for op in edit.ops if op.op == "add"]
+        removed = [op.before.id for op in edit.ops if op.op == "remove"]
+        focus = next((r.focus for r in reversed(outcome.results) if r.focus is not None), None)
+        turn = Turn(
+            prompt=prompt[:500],
+            status="applied" if status == "applied" else "answered",
+            calls=[str(c) for c in plan.calls],
+            results=[r.text for r in outcome.results],
+            focus=focus,
+            added=added,
+            removed=removed,
+            touched=sorted(edit.touched_ids()),
+        )
+        self.memory.record(turn)
+        if self.journal is not None:
+            self.journal.append("turn", turn=turn.model_dump(mode="json"))
+
+    def _commit(self, prompt: str, edit: WorldEdit, after: Scene) -> None:
+        entry = Entry(self.history.next_txn, prompt, edit)
+        if self.journal is not None:
+            self.journal.commit(entry)  # durable before anything reports success
+        self.history.next_txn += 1
+        self.history.done.append(entry)
+        self.history.undone.clear()
+        self._set_scene(after)
+
+    def _set_scene(self, scene: Scene) -> None:
+        self._scene = scene
+        if self.on_change is not None:
+            self.on_change(scene)
+
+    # History -----------------------------------------------------------------------------
+    def undo(self) -> list[str]:
+        """Undo the newest change still applied; returns the diff."""
+        if not self.history.done:
+            raise SessionError("nothing to undo")
+        entry = self.history.done[-1]
+        inverse = entry.edit.inverse()
+        after = inverse.apply(self._scene)
+        if self.journal is not None:
+            self.journal.append("undo", txn=entry.txn)
+        self.history.done.pop()
+        self.history.undone.append(entry)
+        self.memory.mark_last("undone")
+        self._set_scene(after)
+        return inverse.summary()
+
+    def redo(self) -> list[str]:
+        """Re-apply the newest undone change; returns the diff."""
+        if not self.history.undone:
+            raise SessionError("nothing to redo")
+        entry = self.history.undone[-1]
+        after = entry.edit.apply(self._scene)
+        if self.journal is not None:
+            self.journal.append("redo", txn=entry.txn)
+        self.history.undone.pop()
+        self.history.done.append(entry)
+        self.memory.mark_last("applied")
+        self._set_scene(after)
+        return entry.edit.summary()
+
+    def accept(self) -> str:
+        """Confirm the newest change: it can still be undone, but no longer rejected."""
+        if not self.history.done or self.history.done[-1].accepted:
+            raise SessionError("no pending change to accept")
+        entry = self.history.done[-1]
+        if self.journal is not None:
+            self.journal.append("accept", txn=entry.txn)
+        entry.accepted = True
+        self.memory.mark_last("accepted")
+        return f"accepted change {entry.txn}: {entry.prompt}"
+
+    def reject(self) -> list[str]:
+        """Throw the newest pending change away for good (it cannot be redone)."""
+        if not self.history.done or self.history.done[-1].accepted:
+            raise SessionError("no pending change to reject")
+        entry = self.history.done[-1]
+        inverse = entry.edit.inverse()
+        after = inverse.apply(self._scene)
+        if self.journal is not None:
+            self.journal.append("reject", txn=entry.txn)
+        self.history.done.pop()
+        self.memory.mark_last("rejected")
+        self._set_scene(after)
+        return inverse.summary()
+
+    # Files -------------------------------------------------------------------------------
+    def save(self, path: str | Path) -> Path:
+        """Write the scene as JSON (atomically)."""
+        target = Path(path)
+        self._scene.save(target)
+        return target
+
+    def load(self, path: str | Path) -> None:
+        """Replace the scene by a saved one; a bad file changes nothing."""
+        scene = Scene.load(path)  # raises SceneFileError before anything changes
+        if self.journal is not None:
+            self.journal.append("load", scene=scene.model_dump(mode="json"))
+        self.history = History(next_txn=self.history.next_txn)
+        self._set_scene(scene)
