@@ -1,0 +1,258 @@
+"""Behaviour runners: the data-only behaviours of scene assets, run in the simulation loop.
+
+One runner per moving asset. Vehicles are driven through their servos (pure pursuit on a
+route, PI on speed); walkers are kinematic mocap bodies placed along their route each
+control tick. Props ignore behaviours (they only move when something pushes them).
+
+| behaviour   | route                          | starts                         | at the end      |
+| parked      | none                           | -                              | brakes          |
+| drive_lane  | the lane centreline            | now                            | back to start   |
+| follow_path | the waypoints (closed if loop) | at start_time                  | loops or stops  |
+| circle      | the circle                     | now                            | keeps circling  |
+| cross_road  | start → end                    | at start_time                  | stops           |
+| jaywalk     | start → end                    | ego within trigger_distance of | stops           |
+|             |                                | where it crosses the ego lane  |                 |
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Literal
+
+from drivetwin.worlds.mujoco_adapter import MujocoWorld
+from drivetwin.worlds.mujoco_bodies import body_kind
+from drivetwin.worlds.routes import (
+    CircleRoute,
+    PolylineRoute,
+    Route,
+    segment_polyline_intersection,
+)
+from drivetwin.worlds.scene import EGO_ID, AssetInstance, DriveLane, Scene
+from drivetwin.worlds.vehicles import AckermannGeometry, VehicleController, pure_pursuit_curvature
+
+__all__ = [
+    "BehaviourRunner",
+    "UnknownLaneError",
+    "VehicleParkedRunner",
+    "VehicleRouteRunner",
+    "WalkerRouteRunner",
+    "jaywalk_crossing_point",
+    "runner_for",
+]
+
+# Pure-pursuit lookahead: this many seconds of travel, but at least this many wheelbases
+# (short lookaheads oscillate) and at most the circle radius (longer ones cut the circle).
+LOOKAHEAD_S = 0.8
+LOOKAHEAD_MIN_WHEELBASES = 1.5
+# A vehicle within this distance of the end of an open route has arrived.
+ARRIVAL_M = 1.0
+
+AtEnd = Literal["loop", "stop"]
+StartCondition = Callable[[MujocoWorld, float], bool]
+
+
+class UnknownLaneError(LookupError):
+    """A drive_lane behaviour that names a lane the scene does not have."""
+
+    def __init__(self, asset_id: str, lane: str, known: list[str]) -> None:
+        self.asset_id, self.lane, self.known = asset_id, lane, known
+        super().__init__(lane)
+
+    def __str__(self) -> str:
+        return (
+            f"{self.asset_id}: unknown lane {self.lane!r}; lanes: {', '.join(self.known) or 'none'}"
+        )
+
+
+class BehaviourRunner:
+    """Runs one asset's behaviour: `bind` after every recompile, `control` every tick."""
+
+    asset_id: str
+
+    def bind(self, world: MujocoWorld) -> None:
+        raise NotImplementedError
+
+    def control(self, world: MujocoWorld, time: float, dt: float) -> None:
+        raise NotImplementedError
+
+
+@dataclass
+class _Start:
+    """Latches a start condition and remembers when it first held."""
+
+    condition: StartCondition
+    started_at: float | None = None
+
+    def elapsed(self, world: MujocoWorld, time: float) -> float | None:
+        if self.started_at is None and self.condition(world, time):
+            self.started_at = time
+        return None if self.started_at is None else time - self.started_at
+
+
+def _at_time(start_time: float) -> StartCondition:
+    return lambda _world, time: time >= start_time
+
+
+def _ego_within(point: tuple[float, float], distance: float) -> StartCondition:
+    def near(world: MujocoWorld, _time: float) -> bool:
+        ego = world.body_pose(EGO_ID)
+        return math.hypot(ego.x - point[0], ego.y - point[1]) <= distance
+
+    return near
+
+
+class VehicleParkedRunner(BehaviourRunner):
+    """Holds a vehicle's wheels and steering (so a vehicle told to park stops driving)."""
+
+    def __init__(self, asset: AssetInstance) -> None:
+        self.asset_id = asset.id
+        self.vehicle = VehicleController(asset.id, AckermannGeometry.of(asset))
+
+    def bind(self, world: MujocoWorld) -> None:
+        self.vehicle.bind(world)
+
+    def control(self, world: MujocoWorld, time: float, dt: float) -> None:
+        self.vehicle.brake(world.data)
+
+
+class VehicleRouteRunner(BehaviourRunner):
+    """Drives a vehicle along a route at a speed with pure pursuit, once started."""
+
+    def __init__(
+        self, asset: AssetInstance, route: Route, speed: float, start: StartCondition, at_end: AtEnd
+    ) -> None:
+        self.asset_id = asset.id
+        self.vehicle = VehicleController(asset.id, AckermannGeometry.of(asset))
+        self.route, self.speed, self.at_end = route, speed, at_end
+        self.start = _Start(start)
+
+    def bind(self, world: MujocoWorld) -> None:
+        self.vehicle.bind(world)
+
+    def lookahead(self) -> float:
+        distance = max(
+            LOOKAHEAD_S * self.speed, LOOKAHEAD_MIN_WHEELBASES * self.vehicle.geometry.wheelbase
+        )
+        if isinstance(self.route, CircleRoute):
+            distance = min(distance, self.route.radius)
+        return float(distance)
+
+    def control(self, world: MujocoWorld, time: float, dt: float) -> None:
+        data = world.data
+        if self.start.elapsed(world, time) is None:
+            self.vehicle.brake(data)
+            return
+        state = self.vehicle.state(data)
+        s = self.route.project(state.x, state.y)
+        if not self.route.closed and s >= self.route.length - ARRIVAL_M:
+            if self.at_end == "stop":
+                self.vehicle.brake(data)
+                return
+            # An open lane loops by putting the vehicle back at its start, speed kept.
+            x0, y0 = self.route.point(0.0)
+            yaw = self.route.heading(0.0)
+            half = self.vehicle.geometry.wheelbase / 2
+            self.vehicle.teleport(data, x0 + half * math.cos(yaw), y0 + half * math.sin(yaw), yaw)
+            return
+        tx, ty = self.route.point(s + self.lookahead())
+        curvature = pure_pursuit_curvature(state.x, state.y, state.yaw, tx, ty)
+        self.vehicle.drive(data, self.speed, curvature, dt)
+
+
+class WalkerRouteRunner(BehaviourRunner):
+    """Moves a kinematic (mocap) walker along a route at a speed, once started."""
+
+    def __init__(
+        self,
+        asset: AssetInstance,
+        route: Route,
+        speed: float,
+        start: StartCondition,
+        at_end: AtEnd,
+        s0: float = 0.0,
+    ) -> None:
+        self.asset_id = asset.id
+        self.route, self.speed, self.at_end, self.s0 = route, speed, at_end, s0
+        self.z = asset.pose.z
+        self.start = _Start(start)
+        self._mocap = -1
+        self._generation = -1
+
+    def bind(self, world: MujocoWorld) -> None:
+        if self._generation != world.generation:
+            self._mocap = int(world.model.body_mocapid[world.body_id(self.asset_id)])
+            self._generation = world.generation
+
+    def arc_length(self, world: MujocoWorld, time: float) -> float:
+        """How far along the route the walker is at `time`."""
+        elapsed = self.start.elapsed(world, time)
+        s = self.s0 + self.speed * (elapsed or 0.0)
+        if self.at_end == "loop":
+            return float(s % self.route.length)
+        return float(min(s, self.route.length))
+
+    def control(self, world: MujocoWorld, time: float, dt: float) -> None:
+        s = self.arc_length(world, time)
+        x, y = self.route.point(s)
+        yaw = self.route.heading(s)
+        world.data.mocap_pos[self._mocap] = (x, y, self.z)
+        world.data.mocap_quat[self._mocap] = (math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2))
+
+
+def jaywalk_crossing_point(
+    scene: Scene, start: tuple[float, float], end: tuple[float, float]
+) -> tuple[float, float]:
+    """Where a start→end walk crosses the ego's lane centreline; its midpoint if it does not."""
+    behaviour = scene.ego.behaviour
+    if isinstance(behaviour, DriveLane):
+        lane = scene.roads.lane(behaviour.lane)
+        if lane is not None:
+            hit = segment_polyline_intersection(start, end, lane.centreline)
+            if hit is not None:
+                return (float(hit[0]), float(hit[1]))
+    return ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2)
+
+
+def _lane_route(scene: Scene, asset: AssetInstance, lane_id: str) -> PolylineRoute:
+    lane = scene.roads.lane(lane_id)
+    if lane is None:
+        raise UnknownLaneError(asset.id, lane_id, [lane.id for lane in scene.roads.lanes])
+    points = lane.centreline
+    closed = len(points) > 2 and math.dist(points[0], points[-1]) < 1e-6
+    return PolylineRoute(points, closed=closed)
+
+
+def runner_for(asset: AssetInstance, scene: Scene) -> BehaviourRunner | None:
+    """The runner for `asset`'s behaviour, or None when nothing needs running.
+
+    Raises UnknownLaneError for a drive_lane behaviour on a lane the scene does not have.
+    """
+    kind = body_kind(asset)
+    if kind not in ("vehicle", "mocap"):
+        return None
+    b = asset.behaviour
+    now: StartCondition = _at_time(0.0)
+    route: Route
+    at_end: AtEnd = "stop"
+    start = now
+    if b.kind == "parked":
+        return VehicleParkedRunner(asset) if kind == "vehicle" else None
+    if b.kind == "drive_lane":
+        route, at_end = _lane_route(scene, asset, b.lane), "loop"
+    elif b.kind == "follow_path":
+        route = PolylineRoute(b.waypoints, closed=b.loop)
+        at_end, start = ("loop" if b.loop else "stop"), _at_time(b.start_time)
+    elif b.kind == "circle":
+        route, at_end = CircleRoute(b.centre, b.radius, b.clockwise), "loop"
+    elif b.kind == "cross_road":
+        route, start = PolylineRoute([b.start, b.end]), _at_time(b.start_time)
+    else:
+        point = jaywalk_crossing_point(scene, b.start, b.end)
+        route, start = PolylineRoute([b.start, b.end]), _ego_within(point, b.trigger_distance)
+    if kind == "vehicle":
+        return VehicleRouteRunner(asset, route, b.speed, start, at_end)
+    # Walkers on lanes and circles join their route where they were put; others at its start.
+    s0 = route.project(asset.pose.x, asset.pose.y) if b.kind in ("drive_lane", "circle") else 0.0
+    return WalkerRouteRunner(asset, route, b.speed, start, at_end, s0)

@@ -1,0 +1,243 @@
+"""MjSpec bodies for scene assets: one body named by the asset id, geoms from catalog parts.
+
+How an asset takes part in the physics follows its category's `motion`:
+- vehicle: a free chassis with four hinged wheel bodies (front ones also steer), a velocity
+  actuator on each rear wheel (drive and brake) and a position actuator on each front steer;
+- walker: a kinematic mocap body moved along its path by its behaviour (it still collides);
+- prop / static: a free body when `physics.dynamic`, otherwise welded to the world.
+Element names derive from the asset id (`ID/wheel_fl`, `ID/drive_rl`, ...) so that state
+and controls can be found again after every recompile.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+import mujoco
+from drivetwin.worlds.catalog import Category, Part, category
+from drivetwin.worlds.scene import AssetInstance
+
+__all__ = [
+    "WHEEL_CORNERS",
+    "BodyKind",
+    "add_asset_body",
+    "body_kind",
+    "geom_size",
+    "part_volume",
+    "remove_asset_body",
+    "wheel_corner",
+]
+
+BodyKind = Literal["vehicle", "mocap", "free", "welded"]
+WHEEL_CORNERS = ("fl", "fr", "rl", "rr")
+# Share of a vehicle's mass in each wheel (a car wheel and tyre is 1-3 % of the car).
+WHEEL_MASS_FRACTION = 0.025
+# Drive servo stiffness as a time constant: a speed error is halved in about this long.
+DRIVE_TIME_CONSTANT_S = 0.3
+# Rear-axle torque limit as a multiple of the weight the driven wheels carry (μ ≈ 1 tyres).
+DRIVE_TORQUE_WEIGHT_FACTOR = 1.2
+# Steer servo: stiff enough to turn a loaded tyre against its scrub torque within a
+# hundredth of a radian, damped critically.
+STEER_KP_PER_KG = 40.0
+STEER_DAMPRATIO = 1.0
+# Steer rotor inertia sets the servo's bandwidth (rad/s): kp / armature = bandwidth².
+# 60 rad/s settles in ~0.05 s yet stays well inside the explicit-step stability limit.
+STEER_BANDWIDTH = 60.0
+# Rotor inertia added to wheel joints, as a multiple of the wheel's own; keeps the stiff
+# drive and steer servos stable at a few-millisecond timestep.
+WHEEL_ARMATURE_FACTOR = 2.0
+STANDARD_GRAVITY = 9.81
+
+_Y_AXIS_QUAT = (math.cos(math.pi / 4), math.sin(math.pi / 4), 0.0, 0.0)
+_X_AXIS_QUAT = (math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0)
+
+
+def body_kind(asset: AssetInstance, cat: Category | None = None) -> BodyKind:
+    """How `asset` is modelled in MuJoCo (see the module docstring)."""
+    cat = cat or category(asset.category)
+    if cat.motion == "vehicle":
+        return "vehicle"
+    if cat.motion == "walker":
+        return "mocap"
+    if cat.motion == "prop" and asset.physics.dynamic:
+        return "free"
+    return "welded"
+
+
+def part_volume(part: Part) -> float:
+    """The volume of an unscaled part in cubic metres (used to share mass among parts)."""
+    size = [float(s) for s in part.size]
+    if part.shape == "box":
+        return 8.0 * size[0] * size[1] * size[2]
+    if part.shape == "cylinder":
+        return math.pi * size[0] ** 2 * 2.0 * size[1]
+    return 4.0 / 3.0 * math.pi * size[0] ** 3
+
+
+def geom_size(part: Part, scale: float) -> list[float]:
+    """MuJoCo's size triple for a part scaled by `scale` (same half-size conventions)."""
+    sizes = [s * scale for s in part.size]
+    return [*sizes, 0.0, 0.0, 0.0][:3]
+
+
+def _geom_type(part: Part) -> mujoco.mjtGeom:
+    return {
+        "box": mujoco.mjtGeom.mjGEOM_BOX,
+        "cylinder": mujoco.mjtGeom.mjGEOM_CYLINDER,
+        "sphere": mujoco.mjtGeom.mjGEOM_SPHERE,
+    }[part.shape]
+
+
+def _add_part_geom(
+    body: mujoco.MjsBody,
+    name: str,
+    part: Part,
+    asset: AssetInstance,
+    mass: float,
+    pos: tuple[float, float, float],
+) -> None:
+    rgba = part.rgba
+    if part.role == "body" and asset.appearance.rgba is not None:
+        rgba = asset.appearance.rgba
+    quat = (1.0, 0.0, 0.0, 0.0)
+    if part.shape == "cylinder" and part.axis == "y":
+        quat = _Y_AXIS_QUAT
+    elif part.shape == "cylinder" and part.axis == "x":
+        quat = _X_AXIS_QUAT
+    body.add_geom(
+        name=name,
+        type=_geom_type(part),
+        size=geom_size(part, asset.scale),
+        pos=list(pos),
+        quat=list(quat),
+        rgba=list(rgba),
+        mass=mass,
+        friction=[asset.physics.friction, 0.005, 0.0001],
+    )
+
+
+def _body_quat(yaw: float) -> list[float]:
+    return [math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)]
+
+
+def _scaled(pos: tuple[float, float, float], scale: float) -> tuple[float, float, float]:
+    return (pos[0] * scale, pos[1] * scale, pos[2] * scale)
+
+
+def add_asset_body(spec: mujoco.MjSpec, asset: AssetInstance) -> mujoco.MjsBody:
+    """Add `asset` to `spec` as one top-level body named by its id, at its authored pose."""
+    cat = category(asset.category)
+    kind = body_kind(asset, cat)
+    pose = asset.pose
+    body = spec.worldbody.add_body(
+        name=asset.id,
+        pos=[pose.x, pose.y, pose.z],
+        quat=_body_quat(pose.yaw),
+        mocap=kind == "mocap",
+    )
+    body_parts = [p for p in cat.parts if not (kind == "vehicle" and p.role == "wheel")]
+    wheel_parts = [p for p in cat.parts if kind == "vehicle" and p.role == "wheel"]
+    mass = asset.physics.mass
+    wheel_mass = mass * WHEEL_MASS_FRACTION
+    chassis_mass = mass - wheel_mass * len(wheel_parts)
+    volumes = [part_volume(p) for p in body_parts]
+    total = sum(volumes)
+    for index, (part, volume) in enumerate(zip(body_parts, volumes, strict=True)):
+        share = chassis_mass * volume / total
+        _add_part_geom(
+            body, f"{asset.id}/part{index}", part, asset, share, _scaled(part.pos, asset.scale)
+        )
+    if kind in ("vehicle", "free"):
+        body.add_freejoint(name=f"{asset.id}/free")
+    if kind == "vehicle":
+        _add_wheels(spec, body, asset, cat, wheel_parts, wheel_mass)
+    return body
+
+
+def wheel_corner(part: Part) -> str:
+    """Which corner a wheel part sits at: f/r by the sign of x, l/r by the sign of y."""
+    return ("f" if part.pos[0] > 0 else "r") + ("l" if part.pos[1] > 0 else "r")
+
+
+@dataclass(frozen=True)
+class _WheelDims:
+    radius: float
+    mass: float
+
+    @property
+    def spin_inertia(self) -> float:
+        return 0.5 * self.mass * self.radius**2
+
+
+def _add_wheels(
+    spec: mujoco.MjSpec,
+    chassis: mujoco.MjsBody,
+    asset: AssetInstance,
+    cat: Category,
+    wheel_parts: list[Part],
+    wheel_mass: float,
+) -> None:
+    max_steer = cat.max_steer or 0.6
+    drive_weight = asset.physics.mass * STANDARD_GRAVITY / 2.0
+    for part in wheel_parts:
+        corner = wheel_corner(part)
+        dims = _WheelDims(part.size[0] * asset.scale, wheel_mass)
+        wheel = chassis.add_body(
+            name=f"{asset.id}/wheel_{corner}", pos=list(_scaled(part.pos, asset.scale))
+        )
+        armature = WHEEL_ARMATURE_FACTOR * dims.spin_inertia
+        steer_kp = STEER_KP_PER_KG * asset.physics.mass
+        if corner.startswith("f"):
+            wheel.add_joint(
+                name=f"{asset.id}/steer_{corner}",
+                type=mujoco.mjtJoint.mjJNT_HINGE,
+                axis=[0.0, 0.0, 1.0],
+                range=[-max_steer, max_steer],
+                limited=mujoco.mjtLimited.mjLIMITED_TRUE,
+                armature=steer_kp / STEER_BANDWIDTH**2,
+            )
+        wheel.add_joint(
+            name=f"{asset.id}/spin_{corner}",
+            type=mujoco.mjtJoint.mjJNT_HINGE,
+            axis=[0.0, 1.0, 0.0],
+            armature=armature,
+        )
+        _add_part_geom(
+            wheel, f"{asset.id}/wheel_{corner}", part, asset, wheel_mass, (0.0, 0.0, 0.0)
+        )
+        if corner.startswith("f"):
+            steer = spec.add_actuator(
+                name=f"{asset.id}/steer_{corner}",
+                target=f"{asset.id}/steer_{corner}",
+                trntype=mujoco.mjtTrn.mjTRN_JOINT,
+            )
+            steer.set_to_position(kp=steer_kp, dampratio=STEER_DAMPRATIO)
+            steer.ctrlrange = [-max_steer, max_steer]
+            steer.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+        else:
+            drive = spec.add_actuator(
+                name=f"{asset.id}/drive_{corner}",
+                target=f"{asset.id}/spin_{corner}",
+                trntype=mujoco.mjtTrn.mjTRN_JOINT,
+            )
+            # Force at the contact per unit speed error: m / (2 wheels · τ), as a joint gain.
+            kv = asset.physics.mass * dims.radius**2 / (2.0 * DRIVE_TIME_CONSTANT_S)
+            drive.set_to_velocity(kv=kv)
+            torque = DRIVE_TORQUE_WEIGHT_FACTOR * drive_weight * dims.radius / 2.0
+            drive.forcerange = [-torque, torque]
+            drive.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
+
+
+def remove_asset_body(spec: mujoco.MjSpec, asset_id: str) -> bool:
+    """Delete the asset's body, its subtree and its actuators from `spec`; False if absent."""
+    body = spec.body(asset_id)
+    if body is None:
+        return False
+    prefix = f"{asset_id}/"
+    for actuator in list(spec.actuators):
+        if actuator.name.startswith(prefix):
+            spec.delete(actuator)
+    spec.delete(body)
+    return True

@@ -1,0 +1,248 @@
+"""The static part of a MuJoCo world: ground, buildings, road paint, lights and the view camera.
+
+Buildings collide; roads, sidewalks, crossings and paved areas are thin visual-only geoms
+(contype = conaffinity = 0) so a mesh render shows the road layout while vehicles roll on
+the ground plane. Every static geom's name starts with one of STATIC_PREFIXES so an update
+can remove and rebuild them without touching asset bodies.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import mujoco
+import numpy as np
+from drivetwin.worlds.scene import Building, Scene
+
+__all__ = [
+    "OFFSCREEN_HEIGHT",
+    "OFFSCREEN_WIDTH",
+    "STATIC_PREFIXES",
+    "VIEW_CAMERA",
+    "add_static_geoms",
+    "configure_spec",
+    "static_signature",
+]
+
+VIEW_CAMERA = "drivetwin_view"
+OFFSCREEN_WIDTH = 1920
+OFFSCREEN_HEIGHT = 1080
+STATIC_PREFIXES = ("ground", "building/", "lane/", "sidewalk/", "crossing/", "paved/")
+# Ground plane reaches this far past the scene bounds so the horizon is not a cliff edge.
+GROUND_MARGIN_M = 50.0
+# Visual layers stacked a few millimetres apart so they do not z-fight; tops in metres.
+PAVED_TOP_M = 0.003
+LANE_TOP_M = 0.004
+LINE_TOP_M = 0.005
+CROSSING_TOP_M = 0.006
+SIDEWALK_TOP_M = 0.008
+LINE_HALF_WIDTH_M = 0.06
+ZEBRA_STRIPE_HALF_M = 0.25
+ZEBRA_PITCH_M = 1.0
+# Near clip 5 cm (close-up views of cones); far clip twice the scene diagonal.
+NEAR_CLIP_M = 0.05
+FAR_CLIP_DIAGONALS = 2.0
+RIGHT_ANGLE_TOLERANCE = 1e-6
+
+ASPHALT = (0.22, 0.22, 0.24, 1.0)
+PAVING = (0.3, 0.3, 0.32, 1.0)
+PAINT = (0.95, 0.95, 0.95, 1.0)
+CONCRETE = (0.68, 0.68, 0.65, 1.0)
+
+_VISUAL_ONLY = {"contype": 0, "conaffinity": 0, "group": 1}
+
+
+def static_signature(scene: Scene) -> tuple[object, ...]:
+    """The scene parts the static geoms are built from; equal signatures need no rebuild."""
+    return (scene.bounds, scene.ground, scene.roads, tuple(scene.buildings))
+
+
+def _look_at_quat(eye: Sequence[float], target: Sequence[float]) -> list[float]:
+    """A camera quaternion looking from `eye` at `target` with z up (camera looks along -z)."""
+    forward = np.asarray(target, float) - np.asarray(eye, float)
+    forward /= np.linalg.norm(forward)
+    right = np.cross(forward, (0.0, 0.0, 1.0))
+    right /= np.linalg.norm(right)
+    up = np.cross(right, forward)
+    rotation = np.stack([right, up, -forward], axis=1)
+    quat = np.zeros(4)
+    mujoco.mju_mat2Quat(quat, rotation.flatten())
+    return [float(q) for q in quat]
+
+
+def configure_spec(spec: mujoco.MjSpec, scene: Scene) -> None:
+    """Options and visuals that do not depend on edits: buffer, clip, lights, view camera."""
+    bounds = scene.bounds
+    diagonal = math.hypot(bounds.xmax - bounds.xmin, bounds.ymax - bounds.ymin)
+    spec.stat.extent = diagonal
+    spec.stat.center = [*bounds.centre, 0.0]
+    spec.visual.global_.offwidth = OFFSCREEN_WIDTH
+    spec.visual.global_.offheight = OFFSCREEN_HEIGHT
+    spec.visual.map.znear = NEAR_CLIP_M / diagonal
+    spec.visual.map.zfar = FAR_CLIP_DIAGONALS
+    spec.visual.headlight.ambient = [0.25, 0.25, 0.25]
+    spec.visual.headlight.diffuse = [0.35, 0.35, 0.35]
+    spec.worldbody.add_light(
+        name="sun",
+        type=mujoco.mjtLightType.mjLIGHT_DIRECTIONAL,
+        pos=[*bounds.centre, 100.0],
+        dir=[0.3, 0.2, -1.0],
+        diffuse=[0.7, 0.7, 0.68],
+        castshadow=True,
+    )
+    ego = scene.ego.pose
+    heading = (math.cos(ego.yaw), math.sin(ego.yaw))
+    eye = (ego.x - 8.0 * heading[0], ego.y - 8.0 * heading[1], 4.0)
+    target = (ego.x + 10.0 * heading[0], ego.y + 10.0 * heading[1], 0.5)
+    spec.worldbody.add_camera(
+        name=VIEW_CAMERA, pos=list(eye), quat=_look_at_quat(eye, target), fovy=60.0
+    )
+
+
+def add_static_geoms(spec: mujoco.MjSpec, scene: Scene) -> None:
+    """Add the ground, buildings and road paint of `scene` to the world body."""
+    world = spec.worldbody
+    bounds = scene.bounds
+    half = (
+        (bounds.xmax - bounds.xmin) / 2 + GROUND_MARGIN_M,
+        (bounds.ymax - bounds.ymin) / 2 + GROUND_MARGIN_M,
+    )
+    world.add_geom(
+        name="ground",
+        type=mujoco.mjtGeom.mjGEOM_PLANE,
+        pos=[*bounds.centre, 0.0],
+        size=[half[0], half[1], 1.0],
+        rgba=list(scene.ground.rgba),
+        friction=[scene.ground.friction, 0.005, 0.0001],
+        # The ground's friction governs every contact with it (tyres on ice slip).
+        priority=1,
+    )
+    for building in scene.buildings:
+        _add_building(spec, building)
+    roads = scene.roads
+    for paved in roads.paved:
+        _add_prism(spec, f"paved/{paved.id}", paved.polygon, 0.0, PAVED_TOP_M, PAVING, _VISUAL_ONLY)
+    for lane in roads.lanes:
+        for k, (a, b) in enumerate(zip(lane.centreline, lane.centreline[1:], strict=False)):
+            _strip(world, f"lane/{lane.id}/{k}", a, b, lane.width / 2, LANE_TOP_M, ASPHALT)
+            for side in (-1.0, 1.0):
+                offset = side * lane.width / 2
+                name = f"lane/{lane.id}/{k}/line{int(side):+d}"
+                _strip(world, name, a, b, LINE_HALF_WIDTH_M, LINE_TOP_M, PAINT, offset)
+    for walk in roads.sidewalks:
+        for k, (a, b) in enumerate(zip(walk.polyline, walk.polyline[1:], strict=False)):
+            _strip(world, f"sidewalk/{walk.id}/{k}", a, b, walk.width / 2, SIDEWALK_TOP_M, CONCRETE)
+    for crossing in roads.crossings:
+        _add_zebra(world, crossing.id, crossing.start, crossing.end, crossing.width)
+
+
+def _strip(
+    world: mujoco.MjsBody,
+    name: str,
+    a: Sequence[float],
+    b: Sequence[float],
+    half_width: float,
+    top: float,
+    rgba: Sequence[float],
+    offset: float = 0.0,
+) -> None:
+    """A thin visual box from a to b, `offset` metres to the left of the a→b line."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    length = math.hypot(dx, dy)
+    if length <= 0.0:
+        return
+    yaw = math.atan2(dy, dx)
+    nx, ny = -dy / length, dx / length
+    world.add_geom(
+        name=name,
+        type=mujoco.mjtGeom.mjGEOM_BOX,
+        pos=[(a[0] + b[0]) / 2 + nx * offset, (a[1] + b[1]) / 2 + ny * offset, top / 2],
+        quat=[math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)],
+        size=[length / 2, half_width, top / 2],
+        rgba=list(rgba),
+        **_VISUAL_ONLY,
+    )
+
+
+def _add_zebra(
+    world: mujoco.MjsBody,
+    crossing_id: str,
+    start: Sequence[float],
+    end: Sequence[float],
+    width: float,
+) -> None:
+    dx, dy = end[0] - start[0], end[1] - start[1]
+    length = math.hypot(dx, dy)
+    if length <= 0.0:
+        return
+    ux, uy = dx / length, dy / length
+    count = max(1, int(length / ZEBRA_PITCH_M))
+    for k in range(count):
+        along = (k + 0.5) * length / count
+        centre = (start[0] + ux * along, start[1] + uy * along)
+        a = (centre[0] - ux * ZEBRA_STRIPE_HALF_M, centre[1] - uy * ZEBRA_STRIPE_HALF_M)
+        b = (centre[0] + ux * ZEBRA_STRIPE_HALF_M, centre[1] + uy * ZEBRA_STRIPE_HALF_M)
+        _strip(world, f"crossing/{crossing_id}/{k}", a, b, width / 2, CROSSING_TOP_M, PAINT)
+
+
+def _rectangle(
+    footprint: Sequence[Sequence[float]],
+) -> tuple[float, float, float, float, float] | None:
+    """(cx, cy, yaw, half_length, half_width) when the footprint is a rectangle, else None."""
+    points = [tuple(p) for p in footprint]
+    if len(points) == 5 and points[0] == points[-1]:
+        points = points[:-1]
+    if len(points) != 4:
+        return None
+    edges = [np.subtract(points[(i + 1) % 4], points[i]) for i in range(4)]
+    lengths = [float(np.linalg.norm(e)) for e in edges]
+    if min(lengths) <= 0.0:
+        return None
+    for i in range(4):
+        cosine = float(np.dot(edges[i], edges[(i + 1) % 4])) / (lengths[i] * lengths[(i + 1) % 4])
+        if abs(cosine) > RIGHT_ANGLE_TOLERANCE:
+            return None
+    cx, cy = np.mean(points, axis=0)
+    yaw = math.atan2(edges[0][1], edges[0][0])
+    return float(cx), float(cy), yaw, lengths[0] / 2, lengths[1] / 2
+
+
+def _add_building(spec: mujoco.MjSpec, building: Building) -> None:
+    rgba = list(building.rgba)
+    box = _rectangle(building.footprint)
+    if box is None:
+        # Collision meshes are convex hulls: a concave footprint collides as its hull.
+        _add_prism(
+            spec, f"building/{building.id}", building.footprint, 0.0, building.height, rgba, {}
+        )
+        return
+    cx, cy, yaw, half_length, half_width = box
+    spec.worldbody.add_geom(
+        name=f"building/{building.id}",
+        type=mujoco.mjtGeom.mjGEOM_BOX,
+        pos=[cx, cy, building.height / 2],
+        quat=[math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)],
+        size=[half_length, half_width, building.height / 2],
+        rgba=rgba,
+    )
+
+
+def _add_prism(
+    spec: mujoco.MjSpec,
+    name: str,
+    polygon: Sequence[Sequence[float]],
+    bottom: float,
+    top: float,
+    rgba: Sequence[float],
+    flags: dict[str, int],
+) -> None:
+    """A vertical prism over `polygon` as a mesh geom (MuJoCo uses its convex hull)."""
+    vertices: list[float] = []
+    for z in (bottom, top):
+        for x, y in polygon:
+            vertices.extend((x, y, z))
+    spec.add_mesh(name=name, uservert=vertices)
+    spec.worldbody.add_geom(
+        name=name, type=mujoco.mjtGeom.mjGEOM_MESH, meshname=name, rgba=list(rgba), **flags
+    )
