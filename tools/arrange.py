@@ -21,6 +21,10 @@ Shape = Literal["line", "ring", "grid", "lane_edge"]
 # Free space kept around a ring's target (added to the target's own half-length).
 RING_CLEARANCE_M = 1.5
 MAX_ARRANGED = 100
+# A ring encloses what already stands this close to its centre (the rubble and its cones).
+ENCLOSE_WITHIN_M = 6.0
+# Gap between a ring and the outermost thing it encloses.
+RING_GAP_M = 0.5
 
 
 class ArrangeArgs(ToolArgs):
@@ -39,7 +43,18 @@ class ArrangeArgs(ToolArgs):
 
 
 
-def _ring(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
+def _enclosing_radius(scene: Scene, centre: tuple[float, float], widths: list[float]) -> float:
+    """A ring radius that clears everything already standing near `centre`."""
+    radius = 0.0
+    for asset in scene.assets:
+        distance = math.hypot(asset.pose.x - centre[0], asset.pose.y - centre[1])
+        if distance <= ENCLOSE_WITHIN_M:
+            reach = distance + category(asset.category).footprint_radius * asset.scale
+            radius = max(radius, reach + RING_GAP_M + max(widths) / 2)
+    return radius
+
+
+def _ring(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[float]) -> list[Pose]:
     anchor = resolve_anchor(scene, Location(relation="at", target=args.location.target)
                             if args.location.target else args.location, 0.0)
     target_half = 0.0
@@ -54,7 +69,9 @@ def _ring(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
     else:
         anchor_xy = (anchor.x, anchor.y)
     largest = max(sizes)
-    radius = args.radius or max(target_half + RING_CLEARANCE_M + largest / 2, 2.0)
+    radius = args.radius or max(
+        target_half + RING_CLEARANCE_M + largest / 2, _enclosing_radius(scene, anchor_xy, widths), 2.0
+    )
     count = args.count or max(4, int(2 * math.pi * radius / (largest + (args.spacing or 1.0))))
     step = 2 * math.pi / count
     return [
@@ -64,7 +81,7 @@ def _ring(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
     ]
 
 
-def _line(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
+def _line(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[float]) -> list[Pose]:
     anchor = resolve_anchor(scene, args.location, max(sizes) / 2)
     across = args.location.relation in ("in_front_of", "behind")
     # A line in front of something runs across its path (a cordon), elsewhere along it.
@@ -78,7 +95,7 @@ def _line(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
             for k in range(count)]
 
 
-def _grid(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
+def _grid(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[float]) -> list[Pose]:
     anchor = resolve_anchor(scene, args.location, max(sizes) / 2)
     count = args.count or 9
     cols = args.columns or max(1, round(math.sqrt(count)))
@@ -94,7 +111,7 @@ def _grid(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
     return poses
 
 
-def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float]) -> list[Pose]:
+def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[float]) -> list[Pose]:
     anchor = resolve_anchor(scene, Location(relation="in_lane", target=args.location.target,
                                             distance=args.location.distance), max(sizes) / 2)
     lane = min(scene.roads.lanes,
@@ -129,7 +146,7 @@ class ArrangeAssets(Tool[ArrangeArgs]):
                 raise RuleViolation("protected", f"{name} cannot be arranged")
         cats = [category(c) for c in args.categories]
         sizes = [c.length for c in cats]
-        poses = LAYOUTS[args.shape](args, scene, sizes)
+        poses = LAYOUTS[args.shape](args, scene, sizes, [c.width for c in cats])
         placed: list[AssetInstance] = []
         others = scene.all_assets()
         for k, pose in enumerate(poses):

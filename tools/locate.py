@@ -18,7 +18,7 @@ from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.rules import check_placement
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.scene import AssetInstance, Finite, Pose, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon, surface_at
+from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, surface_at
 
 Relation = Literal[
     "at", "in_front_of", "behind", "left_of", "right_of", "next_to",
@@ -33,6 +33,8 @@ CLEARANCE_M = 1.0
 # Free-spot search: rings every SEARCH_STEP_M out to SEARCH_RADIUS_M around the anchor.
 SEARCH_STEP_M = 0.5
 SEARCH_RADIUS_M = 12.0
+# Along a named lane the search may go further: lanes are long and narrow.
+LANE_SEARCH_M = 80.0
 
 
 class Location(BaseModel):
@@ -81,6 +83,8 @@ class Anchor:
     area: list[tuple[float, float]] | None = None
     exact: bool = False
     near: Target | None = None
+    # Placement in a named lane searches along that lane only.
+    lane_id: str | None = None
 
 
 def target_names(scene: Scene) -> list[str]:
@@ -185,7 +189,7 @@ def _lane_anchor(scene: Scene, target: Target, distance: float | None) -> Anchor
     ahead = distance if distance is not None else 0.0
     x = near.x + ahead * math.cos(near.heading)
     y = near.y + ahead * math.sin(near.heading)
-    return Anchor(x, y, near.heading, surface="lane", near=target)
+    return Anchor(x, y, near.heading, surface="lane", near=target, lane_id=lane.id)
 
 
 def _sidewalk_anchor(scene: Scene, target: Target) -> Anchor:
@@ -229,6 +233,8 @@ def find_free_pose(
 
     Exact anchors (absolute coordinates) are not moved: they pass or raise.
     """
+    if anchor.lane_id is not None:
+        return _free_pose_in_lane(scene, template, anchor, anchor.lane_id, others, yaw)
     last: RuleViolation | None = None
     steps = 1 if anchor.exact else int(SEARCH_RADIUS_M / SEARCH_STEP_M) + 1
     if anchor.area is not None:
@@ -260,4 +266,31 @@ def find_free_pose(
     raise RuleViolation(
         "no_space",
         f"no free spot for a {template.category} within {SEARCH_RADIUS_M:g} m of {where}{reason}",
+    )
+
+
+def _free_pose_in_lane(
+    scene: Scene, template: AssetInstance, anchor: Anchor, lane_id: str,
+    others: list[AssetInstance], yaw: float | None,
+) -> Pose:
+    """The free pose on the lane's centreline nearest the anchor, searching both ways along it."""
+    lane = scene.roads.lane(lane_id)
+    if lane is None:
+        raise NotFoundError(f"no lane {lane_id!r}")
+    start = nearest_on_polyline(anchor.x, anchor.y, lane.centreline).arc_length
+    last: RuleViolation | None = None
+    for k in range(int(LANE_SEARCH_M / SEARCH_STEP_M) + 1):
+        for sign in (1, -1):
+            x, y, heading = point_along(lane.centreline, start + sign * k * SEARCH_STEP_M)
+            candidate = template.model_copy(
+                update={"pose": Pose(x=x, y=y, yaw=heading if yaw is None else yaw)}
+            )
+            try:
+                check_placement(scene, candidate, others)
+            except RuleViolation as exc:
+                last = exc
+                continue
+            return candidate.pose
+    raise RuleViolation(
+        "no_space", f"no free stretch of lane {lane_id} for a {template.category} ({last})"
     )

@@ -1,0 +1,192 @@
+"""The rule planner's lexicon: finding categories, counts, places and references in words.
+
+Everything here is plain text matching against what the world and catalog actually contain
+(category synonyms, landmark names and aliases, lane ids, asset ids), so it never invents a
+name that does not exist.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from drivetwin.worlds.catalog import catalog
+from drivetwin.worlds.scene import EGO_ID, Scene
+
+NUMBER_WORDS = {
+    "a": 1, "an": 1, "one": 1, "single": 1, "two": 2, "pair": 2, "couple": 2, "three": 3,
+    "few": 3, "some": 3, "four": 4, "several": 4, "five": 5, "six": 6, "seven": 7,
+    "eight": 8, "nine": 9, "ten": 10, "dozen": 12, "twelve": 12, "fifteen": 15, "twenty": 20,
+}
+_TOKEN = re.compile(r"[a-z0-9_#.\-']+")
+EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle")
+
+
+def tokens(text: str) -> list[str]:
+    return _TOKEN.findall(text.lower())
+
+
+def normalise(text: str) -> str:
+    """Lower case, single spaces, British/American spellings folded, punctuation eased."""
+    out = " " + re.sub(r"\s+", " ", text.lower()) + " "
+    for us, uk in (("center", "centre"), ("color", "colour"), ("gray", "grey"), ("meter", "metre")):
+        out = out.replace(us, uk)
+    return out.replace("’", "'").replace(",", " , ")
+
+
+def _singular(word: str) -> str:
+    for suffix, repl in (("ies", "y"), ("ches", "ch"), ("shes", "sh"), ("sses", "ss"), ("es", "e"), ("s", "")):
+        if word.endswith(suffix) and len(word) > len(suffix) + 2:
+            return word[: -len(suffix)] + repl
+    return word
+
+
+@dataclass(frozen=True)
+class Mention:
+    """A category named in the text, where, and whether the noun was plural."""
+
+    category: str
+    start: int
+    end: int
+    plural: bool
+
+
+def _category_phrases() -> list[tuple[str, str]]:
+    phrases = []
+    for cat in catalog().values():
+        if "ego" in cat.tags:
+            continue
+        for word in cat.words:
+            phrases.append((word.lower(), cat.name))
+    # Longest phrase first, so "traffic light" wins over "light" and "stop sign" over "stop".
+    return sorted(set(phrases), key=lambda p: -len(p[0]))
+
+
+def find_categories(text: str) -> list[Mention]:
+    """Every category named in `text`, in order, longest phrases first, no overlaps."""
+    low = normalise(text)
+    taken: list[tuple[int, int]] = []
+    found: list[Mention] = []
+    for phrase, name in _category_phrases():
+        for plural in (False, True):
+            words = phrase.split()
+            variants = [phrase]
+            if plural:
+                last = words[-1]
+                variants = [" ".join([*words[:-1], last + s]) for s in ("s", "es")]
+                if last.endswith("y"):
+                    variants.append(" ".join([*words[:-1], last[:-1] + "ies"]))
+                if last == "person":
+                    variants.append(" ".join([*words[:-1], "people"]))
+            for variant in variants:
+                for m in re.finditer(rf"(?<![a-z0-9_]){re.escape(variant)}(?![a-z0-9_])", low):
+                    span = (m.start(), m.end())
+                    if any(not (span[1] <= a or span[0] >= b) for a, b in taken):
+                        continue
+                    taken.append(span)
+                    found.append(Mention(name, span[0], span[1], plural or phrase == "people"))
+    return sorted(found, key=lambda m: m.start)
+
+
+def find_count(text: str, before: int | None = None) -> int | None:
+    """The number that quantifies a noun (digits or words), looking just before `before`."""
+    low = normalise(text)
+    window = low[: before] if before is not None else low
+    words = tokens(window)[-4:]
+    for word in reversed(words):
+        if word.isdigit():
+            return int(word)
+        if word in NUMBER_WORDS:
+            return NUMBER_WORDS[word]
+    return None
+
+
+def find_landmark(scene: Scene, text: str) -> tuple[str, int] | None:
+    """The landmark whose name or alias appears in `text` (longest match), and where."""
+    low = normalise(text)
+    best: tuple[int, str, int] | None = None
+    for landmark in scene.landmarks:
+        for name in landmark.names():
+            key = normalise(name).strip()
+            pos = low.find(" " + key)
+            if pos >= 0 and (best is None or len(key) > best[0]):
+                best = (len(key), landmark.name, pos)
+    return (best[1], best[2]) if best else None
+
+
+def find_asset_ids(scene: Scene, text: str) -> list[str]:
+    """Asset ids written out literally in `text` (e.g. passenger_car_2)."""
+    words = set(tokens(text))
+    return [a.id for a in scene.all_assets() if a.id in words and a.id != EGO_ID]
+
+
+def mentions_ego(text: str) -> bool:
+    low = normalise(text)
+    return any(f" {w}" in low for w in EGO_WORDS)
+
+
+def find_lane(scene: Scene, text: str) -> str | None:
+    """A lane named by id ("main_eastbound") or by road and direction ("eastbound lane")."""
+    low = normalise(text)
+    for lane in scene.roads.lanes:
+        if lane.id in low:
+            return lane.id
+    for lane in scene.roads.lanes:
+        direction = lane.id.rsplit("_", 1)[-1]
+        road = lane.road.lower()
+        if f"{direction} lane" in low or (direction in low and road in low):
+            return lane.id
+    return None
+
+
+_COORDS = re.compile(r"\(?\s*(?:x\s*=\s*)?(-?\d+(?:\.\d+)?)\s*[, ]\s*(?:y\s*=\s*)?(-?\d+(?:\.\d+)?)\s*\)?")
+
+
+def find_coordinates(text: str) -> tuple[float, float] | None:
+    """Coordinates written as (x, y), 'x=3 y=4' or 'at 3, 4' — after 'at' or in brackets."""
+    low = text.lower()
+    m = re.search(r"(?:\bat\b|\bto\b|\()\s*" + _COORDS.pattern, low)
+    if m is None:
+        m = re.search(r"x\s*=\s*(-?\d+(?:\.\d+)?)\s*,?\s*y\s*=\s*(-?\d+(?:\.\d+)?)", low)
+    if m is None:
+        return None
+    return (float(m.group(1)), float(m.group(2)))
+
+
+def find_distance(text: str) -> float | None:
+    """A distance in metres ('5 m', '10 metres', '3 meters')."""
+    m = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:m\b|metres?\b|meters?\b)", text.lower())
+    return float(m.group(1)) if m else None
+
+
+def find_speed(text: str) -> float | None:
+    """A speed: 'at 3 m/s' or 'at 20 km/h' (converted to m/s)."""
+    low = text.lower()
+    m = re.search(r"(\d+(?:\.\d+)?)\s*(m/s|km/h|kph|mph)", low)
+    if m is None:
+        return None
+    value = float(m.group(1))
+    return value / 3.6 if m.group(2) in ("km/h", "kph") else value * 0.447 if m.group(2) == "mph" else value
+
+
+def has_any(text: str, words: tuple[str, ...]) -> bool:
+    """Whether any of `words` (whole words or phrases) occurs in `text`."""
+    low = normalise(text)
+    return any(re.search(rf"(?<![a-z]){re.escape(w)}(?![a-z])", low) for w in words)
+
+
+def known_words(scene: Scene) -> set[str]:
+    """Every word the rule planner understands, for judging how much of a prompt it read."""
+    words = set(NUMBER_WORDS)
+    for cat in catalog().values():
+        for w in cat.words:
+            words.update(tokens(w))
+            words.update(_singular(t) for t in tokens(w))
+    for landmark in scene.landmarks:
+        for n in landmark.names():
+            words.update(tokens(n))
+    return words
+
+
+def singular(word: str) -> str:
+    return _singular(word)
