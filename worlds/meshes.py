@@ -35,6 +35,7 @@ def _axis_rotation(axis: str) -> np.ndarray:
 
 def part_mesh(part: Part) -> trimesh.Trimesh:
     """One primitive part as a mesh in the asset frame, coloured with the part's rgba."""
+    mesh: trimesh.Trimesh
     if part.shape == "box":
         mesh = trimesh.creation.box(extents=[2.0 * s for s in part.size[:3]])
     elif part.shape == "cylinder":
@@ -47,7 +48,9 @@ def part_mesh(part: Part) -> trimesh.Trimesh:
         mesh = trimesh.creation.icosphere(subdivisions=SPHERE_SUBDIVISIONS, radius=part.size[0])
     mesh.apply_translation(part.pos)
     colour = np.clip(np.round(np.asarray(part.rgba) * 255.0), 0, 255).astype(np.uint8)
-    mesh.visual.face_colors = np.tile(colour, (len(mesh.faces), 1))
+    mesh.visual = trimesh.visual.ColorVisuals(
+        mesh, face_colors=np.tile(colour, (len(mesh.faces), 1))
+    )
     return mesh
 
 

@@ -180,8 +180,19 @@ class MujocoWorld:
     def body_pose(self, asset_id: str) -> Pose:
         """The current simulated planar pose of an asset's body."""
         body = self.body_id(asset_id)
-        x, y, z = (float(v) for v in self.data.xpos[body])
-        return Pose(x=x, y=y, z=z, yaw=yaw_of_quat(self.data.xquat[body]))
+        model, data = self.model, self.data
+        # Read the state itself, not xpos: xpos lags one step behind after mj_step.
+        joint = int(model.body_jntadr[body])
+        mocap = int(model.body_mocapid[body])
+        if joint >= 0 and model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:
+            q = data.qpos[model.jnt_qposadr[joint] : model.jnt_qposadr[joint] + 7]
+            position, quat = q[:3], q[3:]
+        elif mocap >= 0:
+            position, quat = data.mocap_pos[mocap], data.mocap_quat[mocap]
+        else:
+            position, quat = data.xpos[body], data.xquat[body]
+        x, y, z = (float(v) for v in position)
+        return Pose(x=x, y=y, z=z, yaw=yaw_of_quat(quat))
 
     def joint_id(self, name: str) -> int:
         """The id of a joint by its full name, or -1."""
