@@ -1,0 +1,229 @@
+"""The `drivetwin` command line: chat, demo, worlds, tools, backends, eval, enhance, bench."""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+from importlib.resources import files
+from pathlib import Path
+from typing import Any
+
+import click
+
+from drivetwin.orchestrator.planners import UnknownPlannerError, make_planner
+from drivetwin.orchestrator.planning import Planner
+from drivetwin.orchestrator.repl import ChatOptions, dump_tools, interactive, run_lines
+from drivetwin.orchestrator.session import Session
+from drivetwin.tools.registry import ToolRegistry
+from drivetwin.worlds.defaults import UnknownWorldError, list_worlds, load_world
+from drivetwin.worlds.scene import SceneFileError, scene_json_schema
+
+DEFAULT_PLANNER = os.environ.get("DRIVETWIN_PLANNER", "hybrid")
+STATE_DIR = Path(os.environ.get("DRIVETWIN_STATE", Path.home() / ".local" / "state" / "drivetwin"))
+# Simulated seconds between scripted prompts, so each frame shows the world moving on.
+SCRIPT_SECONDS_PER_STEP = 1.0
+
+
+def _planner(name: str, backend: str | None, model: str | None) -> Planner:
+    options: dict[str, Any] = {}
+    if backend:
+        options["backend"] = backend
+    if model:
+        options["model"] = model
+    try:
+        return make_planner(name, **options)
+    except UnknownPlannerError as exc:
+        raise click.UsageError(str(exc)) from exc
+    except Exception as exc:  # a backend that cannot start: say so in one line
+        raise click.ClickException(f"planner {name!r} cannot start: {exc}") from exc
+
+
+def _fallback_planner(name: str, backend: str | None, model: str | None) -> Planner:
+    """The asked planner, or the rule planner with a one-line note when it cannot start."""
+    try:
+        return _planner(name, backend, model)
+    except click.ClickException as exc:
+        if name == "rules":
+            raise
+        click.echo(f"note: {exc.message}; using the rule-based planner", err=True)
+        return make_planner("rules")
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(package_name="drivetwin")
+def main() -> None:
+    """Author driving scenarios in a live digital twin by talking to it.
+
+    Example: drivetwin chat --world campus
+    """
+
+
+@main.command()
+@click.option("--world", default="campus", show_default=True, help="world name or JSON file")
+@click.option("--planner", "planner_name", default=DEFAULT_PLANNER, show_default=True,
+              help="rules, llm or hybrid (or a plugin's name)")
+@click.option("--backend", default=None, help="LLM backend: embedded, ollama, openai")
+@click.option("--model", default=None, help="model name, preset or GGUF path")
+@click.option("--script", type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              help="run the prompts and commands in FILE, then exit")
+@click.option("--fail-fast", is_flag=True, help="with --script: exit non-zero at the first failure")
+@click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
+              help="folder for frames and summaries")
+@click.option("--render-each", is_flag=True, help="write a frame and a scene summary after each prompt")
+@click.option("--resume", is_flag=True, help="restore the last session from its journal")
+@click.option("--journal", type=click.Path(dir_okay=False, path_type=Path), default=None,
+              help="journal file (default: under $DRIVETWIN_STATE)")
+@click.option("--explain", is_flag=True, help="show each planning level's input and output")
+@click.option("--no-sim", is_flag=True, help="edit the scene without running physics")
+@click.option("--enhance", "enhance_model", default=None, help="SDXL folder for enhanced frames")
+def chat(world: str, planner_name: str, backend: str | None, model: str | None, script: Path | None,
+         fail_fast: bool, out_dir: Path | None, render_each: bool, resume: bool, journal: Path | None,
+         explain: bool, no_sim: bool, enhance_model: str | None) -> None:
+    """Edit a live world by typing what you want.
+
+    Example: drivetwin chat --world campus --script demo.txt --fail-fast
+    """
+    from drivetwin.orchestrator.live import LiveWorld
+
+    planner = _fallback_planner(planner_name, backend, model)
+    journal_path = journal or STATE_DIR / "session.journal.jsonl"
+    registry = ToolRegistry.default()
+    for problem in registry.problems:
+        click.echo(f"warning: plugin {problem.entry_point} skipped: {problem.error}", err=True)
+    try:
+        if resume:
+            session = Session.resume(journal_path, planner, registry)
+        else:
+            session = Session(load_world(world), planner, registry, journal_path)
+    except (UnknownWorldError, SceneFileError, ValueError) as exc:
+        raise click.ClickException(str(exc)) from exc
+    live = LiveWorld(session, simulate=not no_sim, background=script is None,
+                     enhance_model=enhance_model)
+    options = ChatOptions(out_dir=out_dir, explain=explain, fail_fast=fail_fast,
+                          render_each=render_each, render=live.render)
+    if out_dir:
+        out_dir.mkdir(parents=True, exist_ok=True)
+    try:
+        if script is not None:
+            lines = script.read_text(encoding="utf-8").splitlines()
+            status = run_lines(session, live.paced(lines, SCRIPT_SECONDS_PER_STEP), options)
+        else:
+            status = interactive(session, options, STATE_DIR / "history.txt")
+    finally:
+        live.close()
+    sys.exit(status)
+
+
+@main.command()
+@click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path),
+              default=Path("demo_out"), show_default=True)
+@click.option("--planner", "planner_name", default="rules", show_default=True)
+@click.option("--no-render", is_flag=True, help="skip frames (faster)")
+def demo(out_dir: Path, planner_name: str, no_render: bool) -> None:
+    """Run the paper's edits on the campus: a frame and a scene summary per step.
+
+    Example: drivetwin demo --out demo_out
+    """
+    from drivetwin.orchestrator.live import LiveWorld
+
+    script = files("drivetwin.orchestrator").joinpath("demo_script.txt").read_text(encoding="utf-8")
+    out_dir.mkdir(parents=True, exist_ok=True)
+    session = Session(load_world("campus"), _fallback_planner(planner_name, None, None),
+                      journal_path=out_dir / "journal.jsonl")
+    live = LiveWorld(session, simulate=True, background=False)
+    options = ChatOptions(out_dir=out_dir, fail_fast=True, render_each=not no_render,
+                          render=None if no_render else live.render)
+    try:
+        status = run_lines(session, live.paced(script.splitlines(), SCRIPT_SECONDS_PER_STEP), options)
+    finally:
+        live.close()
+    session.save(out_dir / "scene.json")
+    click.echo(f"demo finished with status {status}; outputs in {out_dir}")
+    sys.exit(status)
+
+
+@main.group()
+def worlds() -> None:
+    """Worlds that can be loaded by name."""
+
+
+@worlds.command("list")
+def worlds_list() -> None:
+    """Show every world: shipped ones and those in $DRIVETWIN_WORLDS.
+
+    Example: drivetwin worlds list
+    """
+    for entry in list_worlds():
+        click.echo(f"{entry.name:16s} {entry.description}  ({entry.path})")
+
+
+@main.group()
+def tools() -> None:
+    """Worker tools, built in and from plugins."""
+
+
+@tools.command("list")
+@click.option("--json", "as_json", is_flag=True, help="print each tool's JSON Schema")
+def tools_list(as_json: bool) -> None:
+    """Show the Worker tools with their family, source and (with --json) schema.
+
+    Example: drivetwin tools list --json
+    """
+    registry = ToolRegistry.default()
+    if as_json:
+        session = Session(load_world("campus"), make_planner("rules"), registry)
+        click.echo(dump_tools(session))
+    else:
+        for name in registry.names():
+            tool = registry.get(name)
+            click.echo(f"{name:22s} {tool.family:11s} {registry.sources[name]:12s} {tool.description}")
+    for problem in registry.problems:
+        click.echo(f"broken plugin skipped: {problem.entry_point}: {problem.error}", err=True)
+
+
+@main.group()
+def backends() -> None:
+    """LLM backends."""
+
+
+@backends.command("list")
+def backends_list() -> None:
+    """Show each backend, whether it is usable now, and the command that fixes it if not.
+
+    Example: drivetwin backends list
+    """
+    from drivetwin.orchestrator.backends import backends_table
+
+    click.echo(backends_table())
+
+
+@main.command()
+@click.argument("what", type=click.Choice(["scene"]))
+def schema(what: str) -> None:
+    """Print a published JSON Schema.
+
+    Example: drivetwin schema scene > scene.schema.json
+    """
+    click.echo(json.dumps(scene_json_schema(), indent=2))
+
+
+@main.command(context_settings={"ignore_unknown_options": True, "allow_extra_args": True})
+@click.argument("which", type=click.Choice(["edits", "physics", "splats", "hybrid", "planners"]))
+@click.pass_context
+def bench(ctx: click.Context, which: str) -> None:
+    """Run a benchmark; it prints figures and writes JSON (--out FILE).
+
+    Example: drivetwin bench edits --assets 200 --out bench_edits.json
+    """
+    import runpy
+
+    module = {
+        "edits": "drivetwin.orchestrator.bench_edits",
+        "physics": "drivetwin.worlds.bench_physics",
+        "splats": "drivetwin.worlds.render.bench_splats",
+        "hybrid": "drivetwin.worlds.render.bench_hybrid",
+        "planners": "drivetwin.orchestrator.bench_planners",
+    }[which]
+    sys.argv = [module, *ctx.args]
+    runpy.run_module(module, run_name="__main__")

@@ -1,0 +1,188 @@
+"""The chat loop: prompts and commands in, plans, diffs and plain-words errors out.
+
+The same loop serves a person at a terminal (prompt_toolkit line editing and history) and a
+script (`--script FILE`), so a scripted demo exercises exactly what a user types.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from drivetwin.orchestrator.session import Session, SessionError, TurnReport
+from drivetwin.worlds.scene import SceneFileError
+
+HELP = """\
+Type what you want changed, e.g.
+  make it rain | add a parked car at the JTEKT building entrance | remove the cones you added
+Commands (with or without a leading slash):
+  undo, redo          step back / forward through changes
+  accept, reject      confirm the last change, or throw it away for good
+  save PATH, load PATH  write / read the scene as JSON
+  scene               summary of the scene          tools   list the Worker tools
+  render [PATH]       write a frame (PNG, depth and LIDAR beside it)
+  explain on|off      show each planning level's input and output
+  help, quit
+"""
+
+
+@dataclass
+class ChatOptions:
+    """How a chat runs: where frames go, whether to explain, whether to stop on failure."""
+
+    out_dir: Path | None = None
+    explain: bool = False
+    fail_fast: bool = False
+    render_each: bool = False
+    echo: Callable[[str], None] = print
+    render: Callable[[Session, Path], list[Path]] | None = None
+    frames: list[Path] = field(default_factory=list)
+
+
+def scene_summary(session: Session) -> str:
+    """A few lines: what the world holds now and its environment."""
+    scene = session.scene
+    counts: dict[str, int] = {}
+    for asset in scene.assets:
+        counts[asset.category] = counts.get(asset.category, 0) + 1
+    env = scene.environment
+    lines = [
+        f"world {scene.name}: {len(scene.assets)} assets + ego at "
+        f"({scene.ego.pose.x:.1f}, {scene.ego.pose.y:.1f}) doing {scene.ego.behaviour.kind}",
+        f"time {env.time_of_day}, weather {env.weather.kind} ({env.weather.intensity:.1f}), "
+        f"street lights {env.lighting.street_lights}",
+        "assets: " + ", ".join(f"{n} {c}" for c, n in sorted(counts.items())),
+    ]
+    moving = [a for a in scene.assets if a.behaviour.kind != "parked"]
+    if moving:
+        lines.append("moving: " + ", ".join(f"{a.id} ({a.behaviour.kind})" for a in moving))
+    return "\n".join(lines)
+
+
+def format_report(report: TurnReport, explain: bool) -> str:
+    """A turn in plain words: plan, diff, answer or error."""
+    lines = []
+    if report.plan is not None:
+        if explain:
+            for step in report.plan.trace:
+                lines.append(f"  [{step.level}] {step.seconds * 1000:.0f} ms, retries {step.retries}")
+                lines.append(f"      in:  {step.input[:300]}")
+                lines.append(f"      out: {step.output[:300]}")
+        for call in report.plan.calls:
+            lines.append(f"  plan: {call}")
+    if report.ok:
+        lines += [f"  {d}" for d in report.diff] or [f"  {r}" for r in report.results]
+        if report.answer and not report.diff:
+            lines.append(f"  answer: {report.answer}")
+        lines.append(f"  ok ({report.seconds * 1000:.0f} ms)")
+    else:
+        lines.append(f"  error: {report.error}")
+    return "\n".join(lines)
+
+
+def run_command(session: Session, line: str, options: ChatOptions) -> bool | None:
+    """Run a REPL command; None if `line` is not a command, else whether it succeeded."""
+    word, _, rest = line.strip().lstrip("/").partition(" ")
+    word, rest = word.lower(), rest.strip()
+    echo = options.echo
+    try:
+        if word == "undo":
+            echo("\n".join(f"  {d}" for d in session.undo()) or "  undone")
+        elif word == "redo":
+            echo("\n".join(f"  {d}" for d in session.redo()) or "  redone")
+        elif word == "accept":
+            echo(f"  {session.accept()}")
+        elif word == "reject":
+            echo("\n".join(f"  {d}" for d in session.reject()) or "  rejected")
+        elif word == "save" and rest:
+            echo(f"  saved {session.save(rest)}")
+        elif word == "load" and rest:
+            session.load(rest)
+            echo(f"  loaded {rest}\n{scene_summary(session)}")
+        elif word == "scene" and not rest:
+            echo(scene_summary(session))
+        elif word == "tools" and not rest:
+            for name in session.registry.names():
+                tool = session.registry.get(name)
+                echo(f"  {name:22s} [{tool.family}] {tool.description}")
+        elif word == "render":
+            if options.render is None:
+                raise SessionError("rendering is not available in this session")
+            target = Path(rest) if rest else (options.out_dir or Path(".")) / "frame.png"
+            for path in options.render(session, target):
+                echo(f"  wrote {path}")
+        elif word == "explain" and rest in ("on", "off"):
+            options.explain = rest == "on"
+            echo(f"  explain {rest}")
+        elif word in ("help", "?") and not rest:
+            echo(HELP)
+        else:
+            return None
+    except (SessionError, SceneFileError, OSError) as exc:
+        echo(f"  error: {exc}")
+        return False
+    return True
+
+
+def run_lines(session: Session, lines: Iterable[str], options: ChatOptions) -> int:
+    """Run prompts and commands in order; the exit status (1 if a line failed and fail_fast)."""
+    failures = 0
+    step = 0
+    for raw in lines:
+        line = raw.rstrip("\n")
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        if line.strip().lower() in ("quit", "exit", "/quit", "/exit"):
+            break
+        options.echo(f"> {line}")
+        done = run_command(session, line, options)
+        if done is None:
+            report = session.submit(line)
+            options.echo(format_report(report, options.explain))
+            done = report.ok
+            if report.ok and options.render_each and options.render and options.out_dir:
+                step += 1
+                stem = options.out_dir / f"step_{step:02d}"
+                for path in options.render(session, stem.with_suffix(".png")):
+                    options.echo(f"  wrote {path}")
+                summary = stem.with_suffix(".txt")
+                summary.write_text(f"> {line}\n{scene_summary(session)}\n", encoding="utf-8")
+                options.frames.append(summary)
+        if not done:
+            failures += 1
+            if options.fail_fast:
+                options.echo("stopping at the first failure (--fail-fast)")
+                return 1
+    return 1 if failures and options.fail_fast else 0
+
+
+def interactive(session: Session, options: ChatOptions, history_file: Path) -> int:
+    """The terminal loop with line editing and a persistent history."""
+    from prompt_toolkit import PromptSession
+    from prompt_toolkit.history import FileHistory
+
+    history_file.parent.mkdir(parents=True, exist_ok=True)
+    prompt: PromptSession[str] = PromptSession(history=FileHistory(str(history_file)))
+    options.echo(f"drivetwin on {session.scene.name}: type 'help' for commands, Ctrl-D to quit")
+
+    def lines() -> Iterable[str]:
+        while True:
+            try:
+                yield prompt.prompt("drivetwin> ")
+            except KeyboardInterrupt:
+                continue
+            except EOFError:
+                return
+
+    return run_lines(session, lines(), options)
+
+
+def dump_tools(session: Session) -> str:
+    """Every tool with its source and JSON Schema, as JSON."""
+    return json.dumps(
+        [{**session.registry.get(n).json_schema(), "source": session.registry.sources.get(n, "?")}
+         for n in session.registry.names()],
+        indent=2,
+    )
