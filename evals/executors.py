@@ -1,0 +1,145 @@
+"""Where trials run: in this process, in local worker processes, or on a Ray cluster.
+
+Every executor takes the same jobs (a case as JSON and a trial number) and hands each
+finished record to a callback as soon as it exists, in whatever order trials finish. A
+worker builds its planner once and reuses it for all its trials (a model loads once).
+"""
+
+from __future__ import annotations
+
+import importlib
+import multiprocessing
+import signal
+from collections.abc import Callable, Iterable
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from typing import Any, Literal
+
+from drivetwin.evals.case import Case
+from drivetwin.evals.records import ModelFacts, TrialRecord
+from drivetwin.evals.trial import REFERENCE_PLANNER, run_trial
+from drivetwin.orchestrator.planners import make_planner
+from drivetwin.orchestrator.planning import Plan, PlanContext, Planner, PlanningError
+from drivetwin.tools.registry import ToolRegistry
+
+ExecutorName = Literal["local", "ray"]
+EXECUTORS: tuple[str, ...] = ("local", "ray")
+Job = tuple[str, int]  # (case as JSON, trial number)
+OnRecord = Callable[[TrialRecord], None]
+
+
+class _ReferenceStub:
+    """Stands for the reference planner until a trial swaps in the case's own one."""
+
+    name = REFERENCE_PLANNER
+
+    def plan(self, prompt: str, context: PlanContext) -> Plan:
+        raise PlanningError("the reference planner plans from a case; run it through run_trial")
+
+
+class PlannerLoadError(RuntimeError):
+    """A planner that cannot be built from its name and options."""
+
+
+def build_planner(name: str, options: dict[str, Any]) -> Planner:
+    """A planner by registered name, 'reference', or 'package.module:factory'."""
+    if name == REFERENCE_PLANNER:
+        return _ReferenceStub()
+    if ":" in name:
+        module_name, _, attr = name.partition(":")
+        try:
+            factory = getattr(importlib.import_module(module_name), attr)
+        except (ImportError, AttributeError) as exc:
+            raise PlannerLoadError(f"cannot import planner factory {name!r}: {exc}") from exc
+        planner: Planner = factory(**options)
+        return planner
+    return make_planner(name, **options)
+
+
+def planner_facts(planner: Planner) -> ModelFacts | None:
+    """Model name, size on disk and parameter count, if the planner offers `model_facts()`."""
+    facts = getattr(planner, "model_facts", None)
+    if not callable(facts):
+        return None
+    try:
+        return ModelFacts.model_validate(facts())
+    except Exception:  # facts are a nicety; a planner that cannot give them still runs
+        return None
+
+
+class TrialWorker:
+    """Builds a planner once and runs trials with it."""
+
+    def __init__(self, planner_name: str, options: dict[str, Any]) -> None:
+        self.planner = build_planner(planner_name, options)
+        self.registry = ToolRegistry.default()
+        self.facts = planner_facts(self.planner)
+
+    def run(self, case_json: str, trial: int) -> str:
+        case = Case.model_validate_json(case_json)
+        record = run_trial(case, self.planner, trial, self.registry)
+        record.model = self.facts
+        text: str = record.model_dump_json()
+        return text
+
+
+_WORKER: TrialWorker | None = None
+
+
+def _init_process(planner_name: str, options: dict[str, Any]) -> None:
+    global _WORKER
+    # Ctrl-C is the parent's to handle: it stops handing out jobs and keeps what finished.
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _WORKER = TrialWorker(planner_name, options)
+
+
+def _run_in_process(case_json: str, trial: int) -> str:
+    if _WORKER is None:  # pragma: no cover - the initializer always ran
+        raise RuntimeError("worker used before it was initialised")
+    return _WORKER.run(case_json, trial)
+
+
+def run_inline(
+    jobs: Iterable[Job], planner_name: str, options: dict[str, Any], on_record: OnRecord
+) -> None:
+    """Run every job here, one after another (one worker: no process start-up cost)."""
+    worker = TrialWorker(planner_name, options)
+    for case_json, trial in jobs:
+        on_record(TrialRecord.model_validate_json(worker.run(case_json, trial)))
+
+
+def run_local(
+    jobs: list[Job], planner_name: str, options: dict[str, Any], workers: int, on_record: OnRecord
+) -> None:
+    """Run jobs in `workers` spawned processes; a Ctrl-C stops them and keeps what finished."""
+    if workers <= 1:
+        run_inline(jobs, planner_name, options, on_record)
+        return
+    # Spawn, not fork: a planner may hold threads (llama.cpp, torch) that fork would break.
+    context = multiprocessing.get_context("spawn")
+    pool = ProcessPoolExecutor(
+        max_workers=workers,
+        mp_context=context,
+        initializer=_init_process,
+        initargs=(planner_name, options),
+    )
+    pending: set[Future[str]] = set()
+    queue = iter(jobs)
+    try:
+        # Keep a few jobs per worker in flight, so an interrupt leaves little half done.
+        for case_json, trial in queue:
+            pending.add(pool.submit(_run_in_process, case_json, trial))
+            if len(pending) >= 2 * workers:
+                break
+        while pending:
+            finished, pending = wait(pending, return_when=FIRST_COMPLETED)
+            for future in finished:
+                on_record(TrialRecord.model_validate_json(future.result()))
+                nxt = next(queue, None)
+                if nxt is not None:
+                    pending.add(pool.submit(_run_in_process, *nxt))
+    except BaseException:
+        pool.shutdown(wait=False, cancel_futures=True)
+        for child in multiprocessing.active_children():
+            child.terminate()
+        raise
+    pool.shutdown(wait=True)

@@ -1,0 +1,216 @@
+"""Run a suite against a planner: every case × trial, in parallel, resumable, with progress.
+
+`run_suite` is what `drivetwin eval run` calls. Records are appended to `out_path` as
+trials finish; run the same command again after an interruption and it does only what is
+missing.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import platform
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+from typing import Any, TextIO
+
+from drivetwin.evals.case import load_suite
+from drivetwin.evals.executors import EXECUTORS, Job, run_local
+from drivetwin.evals.records import RecordWriter, RunHeader, TrialRecord
+
+
+@dataclass(frozen=True)
+class RunSummary:
+    """What a call of `run_suite` did: where the records are, how many ran, and how they went."""
+
+    out_path: Path
+    total: int  # case × trial pairs the run asks for
+    already_done: int  # found in the records file when the call started
+    ran: int  # finished by this call
+    passed: int  # over every record in the file
+    failed: int
+    errors: int
+    interrupted: bool
+    seconds: float
+
+    @property
+    def complete(self) -> bool:
+        return not self.interrupted and self.already_done + self.ran >= self.total
+
+    @property
+    def success_rate(self) -> float:
+        judged = self.passed + self.failed + self.errors
+        return self.passed / judged if judged else 0.0
+
+
+class RunError(ValueError):
+    """Run settings that cannot work (no trials, unknown executor...)."""
+
+
+def git_commit(start: Path | None = None) -> str | None:
+    """The commit of the checkout that holds this code, with '-dirty' if it has edits; or None."""
+    where = start or Path(__file__).resolve().parent
+    try:
+        sha = subprocess.run(
+            ["git", "rev-parse", "--short=12", "HEAD"],
+            cwd=where,
+            capture_output=True,
+            text=True,
+            timeout=10,
+            check=True,
+        ).stdout.strip()
+        dirty = subprocess.run(
+            ["git", "status", "--porcelain", "--untracked-files=no"],
+            cwd=where,
+            capture_output=True,
+            text=True,
+            timeout=10,
+            check=True,
+        ).stdout.strip()
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return sha + ("-dirty" if dirty else "")
+
+
+def _version() -> str | None:
+    try:
+        return version("drivetwin")
+    except PackageNotFoundError:
+        return None
+
+
+class _Progress:
+    """A tqdm bar when tqdm is installed, else a plain counter on stderr."""
+
+    def __init__(self, total: int, initial: int, enabled: bool, stream: TextIO) -> None:
+        self.total, self.count, self.enabled, self.stream = total, initial, enabled, stream
+        self.passed = 0
+        self._bar: Any = None
+        if enabled:
+            try:
+                from tqdm import tqdm
+
+                self._bar = tqdm(
+                    total=total, initial=initial, unit="trial", file=stream, dynamic_ncols=True
+                )
+            except ImportError:
+                self._bar = None
+
+    def update(self, record: TrialRecord) -> None:
+        self.count += 1
+        self.passed += record.outcome == "pass"
+        if not self.enabled:
+            return
+        if self._bar is not None:
+            self._bar.set_postfix_str(f"pass {self.passed}", refresh=False)
+            self._bar.update(1)
+        else:
+            print(
+                f"[{self.count}/{self.total}] {record.case_id}#{record.trial} {record.outcome}",
+                file=self.stream,
+                flush=True,
+            )
+
+    def close(self) -> None:
+        if self._bar is not None:
+            self._bar.close()
+
+
+def run_suite(
+    suite_path: str | Path,
+    planner_name: str,
+    *,
+    planner_options: dict[str, Any] | None = None,
+    trials: int = 1,
+    out_path: str | Path,
+    executor: str = "local",
+    workers: int = 1,
+    progress: bool = True,
+    label: str = "",
+    stream: TextIO | None = None,
+) -> RunSummary:
+    """Run every case of a suite `trials` times with a planner, appending records to `out_path`.
+
+    `planner_name` is a registered planner ('rules', 'llm', 'hybrid'), 'reference' (each
+    case's own reference calls: checks the suite itself), or 'package.module:factory'.
+    A Ctrl-C stops the run cleanly: the summary says `interrupted` and the records written
+    so far stay; calling again with the same arguments resumes.
+    """
+    if trials < 1:
+        raise RunError(f"trials must be at least 1, got {trials}")
+    if executor not in EXECUTORS:
+        raise RunError(f"unknown executor {executor!r}; choose one of: {', '.join(EXECUTORS)}")
+    options = dict(planner_options or {})
+    suite = load_suite(suite_path)
+    header = RunHeader(
+        suite=suite.name,
+        suite_path=suite.path,
+        suite_digest=suite.digest,
+        cases=len(suite.cases),
+        planner=planner_name,
+        planner_options=options,
+        label=label,
+        trials=trials,
+        started=dt.datetime.now(dt.UTC).isoformat(timespec="seconds"),
+        git_commit=git_commit(),
+        drivetwin_version=_version(),
+        executor=executor,
+        workers=workers,
+        host={
+            "python": platform.python_version(),
+            "machine": platform.machine(),
+            "system": platform.system(),
+        },
+    )
+    writer = RecordWriter(out_path, header)
+    already = len(writer.done)
+    # Trial-major order: an interrupted run has covered many cases once, not few cases often.
+    jobs: list[Job] = [
+        (case.model_dump_json(), trial)
+        for trial in range(trials)
+        for case in suite.cases
+        if (case.id, trial) not in writer.done
+    ]
+    total = len(suite.cases) * trials
+    bar = _Progress(total, total - len(jobs), progress, stream or sys.stderr)
+    counts = {"pass": 0, "fail": 0, "error": 0}
+    ran = 0
+
+    def keep(record: TrialRecord) -> None:
+        nonlocal ran
+        writer.append(record)
+        ran += 1
+        bar.update(record)
+
+    started = time.perf_counter()
+    interrupted = False
+    try:
+        if executor == "ray":
+            from drivetwin.evals.ray_executor import run_ray
+
+            run_ray(jobs, planner_name, options, workers, keep)
+        else:
+            run_local(jobs, planner_name, options, workers, keep)
+    except KeyboardInterrupt:
+        interrupted = True
+    finally:
+        bar.close()
+        writer.close()
+    from drivetwin.evals.records import read_run
+
+    for record in read_run(out_path).records:
+        counts[record.outcome] += 1
+    return RunSummary(
+        Path(out_path),
+        total,
+        already,
+        ran,
+        counts["pass"],
+        counts["fail"],
+        counts["error"],
+        interrupted,
+        time.perf_counter() - started,
+    )
