@@ -1,0 +1,267 @@
+"""The hybrid renderer: MuJoCo meshes and Gaussian splats in one frame, depth-correct.
+
+Per frame: (1) the mesh pass draws the world's geoms (RGB + camera-z depth); (2) splat
+assets are posed on their MuJoCo bodies (T_body applied to body-frame splats) and joined
+with the splat background; (3) splats are rasterized with the mesh depth as a limit, so a
+splat behind the mesh surface at a pixel is dropped there; (4) the mesh colour (or the sky
+where no mesh is) is blended under the splats with the transmittance they leave:
+rgb = rgb_splat + T * rgb_mesh; (5) the environment's weather and exposure are applied.
+A splat asset's own MuJoCo geoms (its collision proxy) are not drawn.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+import time
+from collections.abc import Mapping
+from contextlib import AbstractContextManager, nullcontext
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+from drivetwin.worlds.catalog import category
+from drivetwin.worlds.mujoco_adapter import MujocoWorld, UnknownBodyError
+from drivetwin.worlds.scene import EGO_ID, Environment, Scene
+
+from .appearance import (
+    HEADLAMP_RGB,
+    LAMP_RGB,
+    Lamp,
+    Look,
+    finish,
+    lamp_irradiance,
+    light_hook,
+    look_of,
+    sky_image,
+)
+from .appearance import world_points as _world_points
+from .camera import Camera
+from .mesh_pass import MeshPass
+from .rasterize import BackendName, rasterize
+from .splats import Splats
+
+__all__ = ["Frame", "HybridRenderer", "chase_camera", "default_camera", "lamps_of",
+           "save_frame"]  # fmt: skip
+
+STREET_LIGHT = "street_light"
+# A pixel's depth is the splats' when they cover at least this much of it, else the mesh's.
+SPLAT_DEPTH_ALPHA = 0.5
+# Vehicle lamps sit this far up the body and this far in from its sides (fractions).
+HEADLAMP_HEIGHT, HEADLAMP_INSET = 0.4, 0.3
+HEADLAMP_PITCH = -0.12  # radians: dipped beams point a little down
+# Default overview: look at the main landmark from this far back and this high up.
+OVERVIEW_DISTANCE_M, OVERVIEW_HEIGHT_M, OVERVIEW_FOVY_DEG = 45.0, 22.0, 60.0
+OVERVIEW_LANDMARK = "main intersection"
+CHASE_BACK_M, CHASE_UP_M, CHASE_AHEAD_M = 8.0, 3.5, 10.0
+DEPTH_PNG_MAX_MM = 65_535  # 16-bit depth PNGs saturate at 65.5 m
+
+
+@dataclass
+class Frame:
+    """A rendered frame: rgb uint8 [H,W,3], depth float32 [H,W] camera z in metres
+    (inf where only sky), and per-stage timings in milliseconds."""
+
+    rgb: npt.NDArray[np.uint8]
+    depth: npt.NDArray[np.float32]
+    timings: dict[str, float] = field(default_factory=dict)
+
+
+def _body_transform(xpos: npt.ArrayLike, xmat: npt.ArrayLike) -> npt.NDArray[np.float64]:
+    transform = np.eye(4)
+    transform[:3, :3] = np.asarray(xmat, dtype=np.float64).reshape(3, 3)
+    transform[:3, 3] = np.asarray(xpos, dtype=np.float64)
+    return transform
+
+
+def lamps_of(world: MujocoWorld, look: Look) -> list[Lamp]:
+    """The lamps that are on: street-light heads and vehicle headlamps at their live poses.
+
+    Reads ``world.data``: call it under the simulation's lock when another thread steps it.
+    """
+    lamps: list[Lamp] = []
+    data = world.data
+    for asset in world.scene.all_assets():
+        cat = category(asset.category)
+        street = asset.category == STREET_LIGHT and look.street_lights
+        vehicle = cat.motion == "vehicle" and look.vehicle_lights
+        if not (street or vehicle):
+            continue
+        try:
+            body = world.body_id(asset.id)
+        except UnknownBodyError:
+            continue
+        transform = _body_transform(data.xpos[body], data.xmat[body])
+        if street:
+            # The lamp head is the catalog part with the brightest colour.
+            head = max(cat.parts, key=lambda part: sum(part.rgba[:3]))
+            local = np.array([*head.pos, 1.0])
+            local[:3] *= asset.scale
+            lamps.append(Lamp(_point(transform @ local), (0.0, 0.0, -1.0), LAMP_RGB, "street"))
+            continue
+        ahead = np.array([math.cos(HEADLAMP_PITCH), 0.0, math.sin(HEADLAMP_PITCH)])
+        direction = transform[:3, :3] @ ahead
+        for side in (-1.0, 1.0):
+            local = np.array([cat.length / 2, side * cat.width * (0.5 - HEADLAMP_INSET),
+                              cat.height * HEADLAMP_HEIGHT]) * asset.scale  # fmt: skip
+            position = _point(transform @ np.append(local, 1.0))
+            lamps.append(Lamp(position, _point(direction), HEADLAMP_RGB, "vehicle"))
+    return lamps
+
+
+def _point(values: npt.ArrayLike) -> tuple[float, float, float]:
+    x, y, z = (float(v) for v in np.asarray(values).reshape(-1)[:3])
+    return (x, y, z)
+
+
+class HybridRenderer:
+    """Draws a MujocoWorld's meshes together with splat background and splat assets.
+
+    Args:
+        world: the MuJoCo world (its model/data are read each frame, so recompiles are fine).
+        background: splats in the world frame (a reconstructed scene), or None.
+        attachments: asset id -> splats in that asset's body frame; they follow the body and
+            the body's own geoms are not drawn (they remain its collision proxy).
+        lock: the simulation's lock when another thread steps the world.
+        shadows: draw mesh shadows (about 3x the mesh-pass time in software GL).
+        backend: the splat rasterizer backend (see `rasterize`).
+        seed: seed of the weather particles (same seed and sim time, same frame).
+    """
+
+    def __init__(
+        self,
+        world: MujocoWorld,
+        *,
+        background: Splats | None = None,
+        attachments: Mapping[str, Splats] | None = None,
+        lock: threading.Lock | AbstractContextManager[Any] | None = None,
+        shadows: bool = False,
+        backend: BackendName = "auto",
+        seed: int = 0,
+    ) -> None:
+        self.world = world
+        self.background = background
+        self.attachments: dict[str, Splats] = dict(attachments or {})
+        for asset_id in self.attachments:
+            world.body_id(asset_id)  # raises UnknownBodyError naming the known assets
+        self.lock = lock
+        self.backend: BackendName = backend
+        self.seed = seed
+        self.mesh_pass = MeshPass(shadows=shadows)
+
+    def close(self) -> None:
+        """Free the GL resources."""
+        self.mesh_pass.close()
+
+    def render(
+        self, camera: Camera, environment: Environment | None = None, *, time_s: float | None = None
+    ) -> Frame:
+        """Draw one frame through ``camera`` under ``environment`` (default: the scene's).
+
+        ``time_s`` animates rain and snow; it defaults to the simulation time.
+        """
+        t0 = time.perf_counter()
+        world = self.world
+        env = environment if environment is not None else world.scene.environment
+        look = look_of(env)
+        with self.lock if self.lock is not None else nullcontext():
+            model, data = world.model, world.data
+            sim_time = float(data.time)
+            bodies = {asset_id: world.body_id(asset_id) for asset_id in self.attachments}
+            poses = {a: _body_transform(data.xpos[b], data.xmat[b]) for a, b in bodies.items()}
+            lamps = lamps_of(world, look)
+        splats = self._posed_splats(poses)
+        t1 = time.perf_counter()
+        hook = light_hook(look, lamps, _point(camera.position))
+        mesh = self.mesh_pass.render(
+            model,
+            data,
+            camera,
+            lock=self.lock,
+            hidden_bodies=list(bodies.values()),
+            scene_hook=hook,
+        )
+        t2 = time.perf_counter()
+        timings = {"pose": 1e3 * (t1 - t0), **mesh.timings}
+        layer = np.where(mesh.hit[..., None], mesh.rgb, sky_image(camera, look))
+        if splats is not None and len(splats):
+            raster = rasterize(splats, camera, background=None, depth_limit=mesh.depth,
+                               backend=self.backend)  # fmt: skip
+            timings.update({f"splat_{k}": v for k, v in raster.timings.items()})
+            t3 = time.perf_counter()
+            lit = raster.rgb * np.asarray(look.splat_gain, np.float32)
+            covered = raster.alpha > 1.0 / 255.0
+            if lamps and covered.any():
+                points = _world_points(np.where(covered, raster.depth, 0.0), camera)
+                lit += raster.rgb * lamp_irradiance(points, lamps, covered)
+            rgb = lit + raster.transmittance[..., None] * layer
+            depth = np.where(raster.alpha >= SPLAT_DEPTH_ALPHA, raster.depth, mesh.depth)
+        else:
+            t3 = time.perf_counter()
+            rgb, depth = layer, mesh.depth
+        depth = depth.astype(np.float32)
+        t4 = time.perf_counter()
+        out = finish(rgb.astype(np.float32), depth, camera, look, lamps, seed=self.seed,
+                     time_s=sim_time if time_s is None else time_s)  # fmt: skip
+        t5 = time.perf_counter()
+        timings.update({"splats": 1e3 * (t3 - t2), "blend": 1e3 * (t4 - t3),
+                        "appearance": 1e3 * (t5 - t4), "total": 1e3 * (t5 - t0)})  # fmt: skip
+        return Frame(rgb=out, depth=depth, timings=timings)
+
+    def _posed_splats(self, poses: Mapping[str, npt.NDArray[np.float64]]) -> Splats | None:
+        parts = [self.attachments[a].transformed(pose) for a, pose in poses.items()]
+        if self.background is not None:
+            parts.insert(0, self.background)
+        if not parts:
+            return None
+        return parts[0] if len(parts) == 1 else Splats.concat(parts)
+
+
+# Cameras ------------------------------------------------------------------------------------
+def default_camera(scene: Scene, width: int = 640, height: int = 360) -> Camera:
+    """An elevated overview of the campus centre (its main landmark, else the bounds' centre)."""
+    landmark = scene.landmark(OVERVIEW_LANDMARK)
+    cx, cy = landmark.position if landmark is not None else scene.bounds.centre
+    # Look from the south-west so the sun (south by day) lights the faces we see.
+    back = OVERVIEW_DISTANCE_M / math.sqrt(2)
+    eye = (cx - back, cy - back, OVERVIEW_HEIGHT_M)
+    return Camera.from_look_at(eye, (cx, cy, 0.0), width=width, height=height,
+                               fovy_deg=OVERVIEW_FOVY_DEG)  # fmt: skip
+
+
+def chase_camera(
+    world: MujocoWorld, asset_id: str = EGO_ID, *, width: int = 640, height: int = 360
+) -> Camera:
+    """A camera behind and above an asset's live pose, looking past it along its heading."""
+    pose = world.body_pose(asset_id)
+    heading = (math.cos(pose.yaw), math.sin(pose.yaw))
+    eye = (pose.x - CHASE_BACK_M * heading[0], pose.y - CHASE_BACK_M * heading[1],
+           pose.z + CHASE_UP_M)  # fmt: skip
+    target = (
+        pose.x + CHASE_AHEAD_M * heading[0],
+        pose.y + CHASE_AHEAD_M * heading[1],
+        pose.z + 0.5,
+    )
+    return Camera.from_look_at(eye, target, width=width, height=height, fovy_deg=OVERVIEW_FOVY_DEG)
+
+
+# Saving -------------------------------------------------------------------------------------
+def save_frame(frame: Frame, path_png: str | Path) -> dict[str, Path]:
+    """Write ``frame`` as PATH.png, its depth as PATH_depth.npy (float32 metres, inf = sky)
+    and PATH_depth.png (16-bit millimetres, 0 = no return, saturating at 65.535 m)."""
+    from PIL import Image
+
+    path = Path(path_png)
+    if path.suffix.lower() != ".png":
+        raise ValueError(f"save_frame writes PNG; give a path ending in .png, got {path.name!r}")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    Image.fromarray(frame.rgb).save(path)
+    npy = path.with_name(path.stem + "_depth.npy")
+    np.save(npy, frame.depth)
+    millimetres = np.where(np.isfinite(frame.depth), frame.depth * 1000.0, 0.0)
+    depth16 = np.clip(np.round(millimetres), 0, DEPTH_PNG_MAX_MM).astype(np.uint16)
+    depth_png = path.with_name(path.stem + "_depth.png")
+    Image.fromarray(depth16).save(depth_png)
+    return {"rgb": path, "depth_npy": npy, "depth_png": depth_png}
