@@ -54,7 +54,7 @@ ARRANGE_WORDS = ("around", "surround", "ring", "circle of", "encircle", "mark", 
                  "line of", "row of", "in a line", "in a row", "grid", "along the")
 BEHAVIOUR_WORDS = {
     "jaywalk": ("jaywalk", "jaywalking", "jaywalker", "cut across", "cuts across", "cutting across",
-                "run across", "runs across", "darts across", "in front of the ego", "ego's path"),
+                "run across", "runs across", "darts across", "ego's path", "ego vehicle's path"),
     "circle": ("skidpad", "skid pad", "circle", "circles", "circling", "donut", "donuts",
                "doughnut", "loop around", "round and round"),
     "cross_road": ("cross the road", "crossing the road", "cross the street", "crossing the street",
@@ -466,6 +466,11 @@ def _add(clause: str, scene: Scene, memory: Memory, mentions: list[ph.Mention]) 
     # The count is passed as said: the Worker refuses what is too many, in words.
     args: dict[str, Any] = {"category": mention.category, "count": count}
     kind = _behaviour_kind(clause)
+    motion = catalog()[mention.category].motion
+    if (kind in ("jaywalk", "cross_road") and motion != "walker") or (
+        kind in ("circle", "drive_lane") and motion != "vehicle"
+    ):
+        kind = None  # "cones in front of the ego's path" describe a place, not a behaviour
     if kind is not None:
         args["behaviour"] = _behaviour_spec(kind, clause, scene)
     location = _location(clause, scene, memory)

@@ -10,7 +10,7 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from drivetwin.worlds.scene import EGO_ID, AssetInstance, Environment, Scene
+from drivetwin.worlds.scene import EGO_ID, AssetInstance, Environment, Scene, asset_order
 
 
 class _Op(BaseModel):
@@ -121,7 +121,11 @@ class WorldEdit(BaseModel):
                     raise EditConflict("the environment is not as this edit expects")
                 environment = op.after
         return scene.model_copy(
-            update={"assets": list(assets.values()), "ego": ego, "environment": environment}
+            update={
+                "assets": sorted(assets.values(), key=asset_order),
+                "ego": ego,
+                "environment": environment,
+            }
         )
 
     def summary(self) -> list[str]:

@@ -289,6 +289,12 @@ class AssetInstance(SceneModel):
 
 EGO_ID = "ego"
 
+
+def asset_order(asset: AssetInstance) -> tuple[str, int, str]:
+    """Sort key of assets: by category-like prefix, then the number (cone_2 before cone_10)."""
+    prefix, _, number = asset.id.rpartition("_")
+    return (prefix, int(number), asset.id) if number.isdigit() else (asset.id, -1, asset.id)
+
 WeatherKind = Literal["clear", "cloudy", "rain", "fog", "snow"]
 WEATHER_KINDS: tuple[str, ...] = ("clear", "cloudy", "rain", "fog", "snow")
 _CLOCK = re.compile(r"^([01]\d|2[0-3]):([0-5]\d)$")
@@ -364,6 +370,8 @@ class Scene(SceneModel):
             raise ValueError("asset ids must be unique and differ from the ego's")
         if len(self.assets) > MAX_ASSETS:
             raise ValueError(f"a scene holds at most {MAX_ASSETS} assets")
+        # One canonical order, so that equal scenes compare equal whatever edits built them.
+        self.__dict__["assets"] = sorted(self.assets, key=asset_order)
         return self
 
     # Lookups ----------------------------------------------------------------------------
