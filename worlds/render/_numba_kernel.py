@@ -14,7 +14,7 @@ import numba
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["bin_tiles", "composite", "project"]
+__all__ = ["bin_tiles", "compact", "composite", "project"]
 
 # Columns of the packed per-splat feature rows the compositor reads.
 U, V, CONIC_A, CONIC_B, CONIC_C, OPACITY, MIN_POWER, DEPTH, RED, GREEN, BLUE = range(11)
@@ -24,6 +24,8 @@ N_FEATURES = 11
 BOX_SLACK = 1e-3
 # Slack on the per-splat "power below which alpha < alpha_min" shortcut, for the same reason.
 POWER_SLACK = 1e-9
+# Fast-math without the no-NaN/no-inf promises: depth limits are legitimately infinite.
+_SAFE_FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
 
 
 @numba.njit(parallel=True, cache=True)
@@ -78,34 +80,42 @@ def project(
         )
         qn = math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz)
         qw, qx, qy, qz = qw / qn, qx / qn, qy / qn, qz / qn
-        rot = np.empty((3, 3))
-        rot[0, 0] = 1 - 2 * (qy * qy + qz * qz)
-        rot[0, 1] = 2 * (qx * qy - qw * qz)
-        rot[0, 2] = 2 * (qx * qz + qw * qy)
-        rot[1, 0] = 2 * (qx * qy + qw * qz)
-        rot[1, 1] = 1 - 2 * (qx * qx + qz * qz)
-        rot[1, 2] = 2 * (qy * qz - qw * qx)
-        rot[2, 0] = 2 * (qx * qz - qw * qy)
-        rot[2, 1] = 2 * (qy * qz + qw * qx)
-        rot[2, 2] = 1 - 2 * (qx * qx + qy * qy)
+        # Rows of R (quaternion rotation); R S columns are R[:, c] * scale_c.
+        r00, r01, r02 = (
+            1 - 2 * (qy * qy + qz * qz),
+            2 * (qx * qy - qw * qz),
+            2 * (qx * qz + qw * qy),
+        )
+        r10, r11, r12 = (
+            2 * (qx * qy + qw * qz),
+            1 - 2 * (qx * qx + qz * qz),
+            2 * (qy * qz - qw * qx),
+        )
+        r20, r21, r22 = (
+            2 * (qx * qz - qw * qy),
+            2 * (qy * qz + qw * qx),
+            1 - 2 * (qx * qx + qy * qy),
+        )
         # T = J W R S, so the 2D covariance is T T^T; J is the pinhole Jacobian at the mean
         # with x/z, y/z clamped to just outside the view as 3DGS/gsplat do.
         tx = min(lim_x_pos, max(-lim_x_neg, x / z)) * z
         ty = min(lim_y_pos, max(-lim_y_neg, y / z)) * z
         j00, j02 = fx / z, -fx * tx / (z * z)
         j11, j12 = fy / z, -fy * ty / (z * z)
-        t0 = np.zeros(3)
-        t1 = np.zeros(3)
+        cov_xx, cov_xy, cov_yy = low_pass, 0.0, low_pass
         for c in range(3):
             s = math.exp(float(log_scales[i, c]))
-            wr0 = w[0, 0] * rot[0, c] + w[0, 1] * rot[1, c] + w[0, 2] * rot[2, c]
-            wr1 = w[1, 0] * rot[0, c] + w[1, 1] * rot[1, c] + w[1, 2] * rot[2, c]
-            wr2 = w[2, 0] * rot[0, c] + w[2, 1] * rot[1, c] + w[2, 2] * rot[2, c]
-            t0[c] = (j00 * wr0 + j02 * wr2) * s
-            t1[c] = (j11 * wr1 + j12 * wr2) * s
-        cov_xx = t0[0] * t0[0] + t0[1] * t0[1] + t0[2] * t0[2] + low_pass
-        cov_xy = t0[0] * t1[0] + t0[1] * t1[1] + t0[2] * t1[2]
-        cov_yy = t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2] + low_pass
+            rc0 = r00 if c == 0 else (r01 if c == 1 else r02)
+            rc1 = r10 if c == 0 else (r11 if c == 1 else r12)
+            rc2 = r20 if c == 0 else (r21 if c == 1 else r22)
+            wr0 = w[0, 0] * rc0 + w[0, 1] * rc1 + w[0, 2] * rc2
+            wr1 = w[1, 0] * rc0 + w[1, 1] * rc1 + w[1, 2] * rc2
+            wr2 = w[2, 0] * rc0 + w[2, 1] * rc1 + w[2, 2] * rc2
+            t0 = (j00 * wr0 + j02 * wr2) * s
+            t1 = (j11 * wr1 + j12 * wr2) * s
+            cov_xx += t0 * t0
+            cov_xy += t0 * t1
+            cov_yy += t1 * t1
         det = cov_xx * cov_yy - cov_xy * cov_xy
         if det <= 0.0:
             continue
@@ -132,6 +142,22 @@ def project(
         feats[i, DEPTH] = z
         boxes[i, 0], boxes[i, 1], boxes[i, 2], boxes[i, 3] = x0, x1, y0, y1
     return visible
+
+
+@numba.njit(cache=True)
+def compact(
+    visible: npt.NDArray[np.bool_],
+    feats: npt.NDArray[np.float64],
+    boxes: npt.NDArray[np.int32],
+) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int32]]:
+    """Keep the visible rows: returns their ids, features and boxes."""
+    index = np.flatnonzero(visible)
+    out_feats = np.empty((index.shape[0], feats.shape[1]))
+    out_boxes = np.empty((index.shape[0], 4), dtype=np.int32)
+    for k in range(index.shape[0]):
+        out_feats[k] = feats[index[k]]
+        out_boxes[k] = boxes[index[k]]
+    return index, out_feats, out_boxes
 
 
 @numba.njit(cache=True)
@@ -164,7 +190,7 @@ def bin_tiles(
     return offsets, ids
 
 
-@numba.njit(parallel=True, cache=True, boundscheck=False)
+@numba.njit(parallel=True, cache=True, boundscheck=False, fastmath=_SAFE_FASTMATH)
 def composite(
     offsets: npt.NDArray[np.int64],
     ids: npt.NDArray[np.int32],
@@ -203,7 +229,8 @@ def composite(
         tw = px1 - px0
         n_pix = tw * (py1 - py0)
         trans = np.ones(n_pix)
-        acc = np.zeros((n_pix, 4))  # r, g, b, depth
+        acc_r, acc_g = np.zeros(n_pix), np.zeros(n_pix)
+        acc_b, acc_z = np.zeros(n_pix), np.zeros(n_pix)
         first = np.full(n_pix, -1, dtype=np.int64)
         done = np.zeros(n_pix, dtype=np.bool_)
         n_done = 0
@@ -211,20 +238,37 @@ def composite(
             g = ids[s]
             u, v = feats[g, U], feats[g, V]
             ca, cb, cc = feats[g, CONIC_A], feats[g, CONIC_B], feats[g, CONIC_C]
-            opacity, min_power, z = feats[g, OPACITY], feats[g, MIN_POWER], feats[g, DEPTH]
+            opacity, z = feats[g, OPACITY], feats[g, DEPTH]
+            red, green, blue = feats[g, RED], feats[g, GREEN], feats[g, BLUE]
+            q_max = -2.0 * feats[g, MIN_POWER]
+            x_lo, x_hi = max(boxes[g, 0], px0), min(boxes[g, 1], px1 - 1)
+            # Along a row the Gaussian is exp of a quadratic, so successive values follow
+            # e[k+1] = e[k] * r[k], r[k+1] = r[k] * exp(-ca): one exp per row, not per pixel.
+            # The conic's entries are at most 1/LOW_PASS, so none of these can overflow.
+            step_decay = math.exp(-ca)
             for py in range(max(boxes[g, 2], py0), min(boxes[g, 3], py1 - 1) + 1):
                 dy = py + 0.5 - v
+                # Only the span of this row inside the ellipse power >= min_power can pass
+                # the alpha test: solve ca dx^2 + 2 cb dy dx + cc dy^2 - q_max <= 0 for dx.
+                disc = (cb * cb - ca * cc) * dy * dy + ca * q_max
+                if disc < 0.0:
+                    continue
+                root = math.sqrt(disc) / ca
+                centre = u - cb * dy / ca - 0.5
+                span_lo = max(x_lo, math.ceil(centre - root - BOX_SLACK))
+                span_hi = min(x_hi, math.floor(centre + root + BOX_SLACK))
+                if span_lo > span_hi:
+                    continue
+                dx = span_lo + 0.5 - u
+                value = opacity * math.exp(-0.5 * (ca * dx * dx + cc * dy * dy) - cb * dx * dy)
+                ratio = math.exp(-ca * (dx + 0.5) - cb * dy)
                 row = (py - py0) * tw - px0
-                for px in range(max(boxes[g, 0], px0), min(boxes[g, 1], px1 - 1) + 1):
+                for px in range(span_lo, span_hi + 1):
                     p = row + px
-                    if done[p] or z >= depth_limit[py, px]:
-                        continue
-                    dx = px + 0.5 - u
-                    power = -0.5 * (ca * dx * dx + cc * dy * dy) - cb * dx * dy
-                    if power < min_power:
-                        continue
-                    alpha = min(alpha_max, opacity * math.exp(power))
-                    if alpha < alpha_min:
+                    alpha = min(alpha_max, value)
+                    value *= ratio
+                    ratio *= step_decay
+                    if alpha < alpha_min or done[p] or z >= depth_limit[py, px]:
                         continue
                     next_t = trans[p] * (1.0 - alpha)
                     if next_t < t_min:
@@ -232,10 +276,10 @@ def composite(
                         n_done += 1
                         continue
                     weight = alpha * trans[p]
-                    acc[p, 0] += weight * feats[g, RED]
-                    acc[p, 1] += weight * feats[g, GREEN]
-                    acc[p, 2] += weight * feats[g, BLUE]
-                    acc[p, 3] += weight * z
+                    acc_r[p] += weight * red
+                    acc_g[p] += weight * green
+                    acc_b[p] += weight * blue
+                    acc_z[p] += weight * z
                     if first[p] < 0 and alpha >= index_min_alpha:
                         first[p] = splat_index[g]
                     trans[p] = next_t
@@ -244,9 +288,9 @@ def composite(
         for p in range(n_pix):
             py, px = py0 + p // tw, px0 + p % tw
             alpha_sum = 1.0 - trans[p]
-            out_rgb[py, px, 0] = acc[p, 0]
-            out_rgb[py, px, 1] = acc[p, 1]
-            out_rgb[py, px, 2] = acc[p, 2]
+            out_rgb[py, px, 0] = acc_r[p]
+            out_rgb[py, px, 1] = acc_g[p]
+            out_rgb[py, px, 2] = acc_b[p]
             out_alpha[py, px] = alpha_sum
-            out_depth[py, px] = acc[p, 3] / alpha_sum if alpha_sum > 0.0 else 0.0
+            out_depth[py, px] = acc_z[p] / alpha_sum if alpha_sum > 0.0 else 0.0
             out_index[py, px] = first[p]

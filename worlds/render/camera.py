@@ -122,7 +122,7 @@ class Camera:
             fy=focal,
             cx=width / 2,
             cy=height / 2,
-            world_to_camera=np.linalg.inv(camera_to_world),
+            world_to_camera=np.asarray(np.linalg.inv(camera_to_world), dtype=np.float64),
             near=near,
             far=far,
         )

@@ -232,8 +232,7 @@ def _rasterize_numba(
         feats,
         boxes,
     )
-    index = np.flatnonzero(visible)
-    feats, boxes = feats[index], boxes[index]
+    index, feats, boxes = kernel.compact(visible, feats, boxes)
     directions = splats.means[index].astype(np.float64) - camera.position
     directions /= np.linalg.norm(directions, axis=1, keepdims=True)
     feats[:, kernel.RED : kernel.BLUE + 1] = eval_sh_colors(splats.sh[index], directions)

@@ -51,6 +51,10 @@ class SplatsError(ValueError):
     """Splat parameters or a splat file are malformed."""
 
 
+def _f32(values: npt.ArrayLike) -> F32:
+    return np.ascontiguousarray(values, dtype=np.float32)
+
+
 def sh_coefficients(degree: int) -> int:
     """Number of SH coefficients per colour channel for ``degree`` (0..3)."""
     if not 0 <= degree <= MAX_SH_DEGREE:
@@ -91,8 +95,8 @@ def eval_sh_colors(sh: npt.NDArray[Any], directions: npt.NDArray[Any]) -> F64:
     """
     degree = {1: 0, 4: 1, 9: 2, 16: 3}[sh.shape[1]]
     d = np.asarray(directions, dtype=np.float64)
-    basis = np.stack(sh_basis(d[:, 0], d[:, 1], d[:, 2], degree), axis=1)  # [N, K]
-    rgb = np.einsum("nk,nkc->nc", basis, sh.astype(np.float64)) + 0.5
+    basis: F64 = np.stack(sh_basis(d[:, 0], d[:, 1], d[:, 2], degree), axis=1)  # [N, K]
+    rgb: F64 = np.einsum("nk,nkc->nc", basis, sh.astype(np.float64)) + 0.5
     return np.maximum(rgb, 0.0)
 
 
@@ -213,8 +217,8 @@ class Splats:
     def empty(cls, sh_degree: int = 0) -> Splats:
         """A set of zero splats."""
         k = sh_coefficients(sh_degree)
-        return cls(np.zeros((0, 3)), np.zeros((0, 4)), np.zeros((0, 3)), np.zeros(0),
-                   np.zeros((0, k, 3)))  # fmt: skip
+        return cls(_f32(np.zeros((0, 3))), _f32(np.zeros((0, 4))), _f32(np.zeros((0, 3))),
+                   _f32(np.zeros(0)), _f32(np.zeros((0, k, 3))))  # fmt: skip
 
     @classmethod
     def from_points(
@@ -254,11 +258,11 @@ class Splats:
         sh = np.zeros((n, sh_coefficients(sh_degree), 3))
         sh[:, 0] = (rgb - 0.5) / SH_C0
         return cls(
-            means=pts,
-            quats=np.tile([1.0, 0.0, 0.0, 0.0], (n, 1)),
-            log_scales=np.repeat(0.5 * np.log(dist2)[:, None], 3, axis=1),
-            opacity_logits=np.full(n, np.log(opacity / (1.0 - opacity))),
-            sh=sh,
+            means=_f32(pts),
+            quats=_f32(np.tile([1.0, 0.0, 0.0, 0.0], (n, 1))),
+            log_scales=_f32(np.repeat(0.5 * np.log(dist2)[:, None], 3, axis=1)),
+            opacity_logits=_f32(np.full(n, np.log(opacity / (1.0 - opacity)))),
+            sh=_f32(sh),
         )
 
     @classmethod
@@ -269,11 +273,11 @@ class Splats:
         k = max(p.sh.shape[1] for p in parts)
         shs = [np.pad(p.sh, ((0, 0), (0, k - p.sh.shape[1]), (0, 0))) for p in parts]
         return cls(
-            means=np.concatenate([p.means for p in parts]),
-            quats=np.concatenate([p.quats for p in parts]),
-            log_scales=np.concatenate([p.log_scales for p in parts]),
-            opacity_logits=np.concatenate([p.opacity_logits for p in parts]),
-            sh=np.concatenate(shs),
+            means=_f32(np.concatenate([p.means for p in parts])),
+            quats=_f32(np.concatenate([p.quats for p in parts])),
+            log_scales=_f32(np.concatenate([p.log_scales for p in parts])),
+            opacity_logits=_f32(np.concatenate([p.opacity_logits for p in parts])),
+            sh=_f32(np.concatenate(shs)),
         )
 
     def subset(self, index: npt.ArrayLike) -> Splats:
@@ -303,8 +307,8 @@ class Splats:
         for band, m in enumerate(_sh_band_rotations(rotation, self.sh_degree), start=1):
             cols = slice(band * band, (band + 1) ** 2)
             sh[:, cols] = np.einsum("ij,njc->nic", m, sh[:, cols])
-        return Splats(means, q, self.log_scales + np.float32(np.log(scale)),
-                      self.opacity_logits.copy(), sh)  # fmt: skip
+        return Splats(_f32(means), _f32(q), _f32(self.log_scales + np.float32(np.log(scale))),
+                      self.opacity_logits.copy(), _f32(sh))  # fmt: skip
 
     def write_ply(self, path: str | Path) -> None:
         """Write the standard 3DGS binary little-endian .ply (f_rest channel-major)."""
