@@ -7,6 +7,7 @@ on the base install; only loading a pipeline needs the extra `drivetwin[enhance]
 from __future__ import annotations
 
 import time
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -32,9 +33,9 @@ from PIL import Image
 # SDXL's UNet downsamples latents (already 1/8 of the image) up to 3 times, so image sides
 # must be multiples of 64 for every SDXL-family UNet.
 SIDE_MULTIPLE = 64
-# Disparity is normalised between these percentiles so one very near pixel cannot wash out
-# the rest of the control image.
-_DISPARITY_PERCENTILES = (2.0, 98.0)
+# Disparity is divided by this percentile, not the maximum, so one very near pixel cannot wash
+# out the rest of the control image (zero disparity stays zero: infinitely far, like the sky).
+_DISPARITY_PERCENTILE = 98.0
 EXTRA_HINT = "pip install 'drivetwin[enhance]'  (diffusers, transformers, accelerate, torch)"
 SDXL_HINT = (
     "hf download stabilityai/stable-diffusion-xl-base-1.0 --include '*.json' '*.txt' "
@@ -74,8 +75,10 @@ def _variant(source: str) -> str | None:
     folder = Path(source)
     if not folder.is_dir():
         return None
-    has_fp16 = any(folder.glob("unet/*.fp16.safetensors"))
-    has_full = any(folder.glob("unet/diffusion_pytorch_model.safetensors"))
+    # A pipeline keeps its UNet weights in unet/, a ControlNet at the top of its folder.
+    weights = folder / "unet" if (folder / "unet").is_dir() else folder
+    has_fp16 = any(weights.glob("*.fp16.safetensors"))
+    has_full = any(weights.glob("diffusion_pytorch_model.safetensors"))
     return "fp16" if has_fp16 and not has_full else None
 
 
@@ -101,18 +104,23 @@ def load_pipeline(settings: EnhanceSettings) -> Any:
     extra: dict[str, Any] = {}
     if settings.controlnet is not None:
         try:
-            extra["controlnet"] = diffusers.ControlNetModel.from_pretrained(
-                settings.controlnet, variant=_variant(settings.controlnet), **common
-            )
+            with warnings.catch_warnings():
+                warnings.filterwarnings("ignore", message=".*torch_dtype.*", category=FutureWarning)
+                extra["controlnet"] = diffusers.ControlNetModel.from_pretrained(
+                    settings.controlnet, variant=_variant(settings.controlnet), **common
+                )
         except (OSError, ValueError) as exc:
             raise _missing("depth ControlNet", settings.controlnet, CONTROLNET_HINT, exc) from exc
         cls = diffusers.StableDiffusionXLControlNetImg2ImgPipeline
     else:
         cls = diffusers.StableDiffusionXLImg2ImgPipeline
     try:
-        pipe = cls.from_pretrained(
-            settings.model, variant=_variant(settings.model), **common, **extra
-        )
+        with warnings.catch_warnings():
+            # Newer diffusers rename torch_dtype to dtype; older ones only know torch_dtype.
+            warnings.filterwarnings("ignore", message=".*torch_dtype.*", category=FutureWarning)
+            pipe = cls.from_pretrained(
+                settings.model, variant=_variant(settings.model), **common, **extra
+            )
     except (OSError, ValueError) as exc:
         raise _missing("SDXL", settings.model, SDXL_HINT, exc) from exc
     if dtype == torch.float32:
@@ -145,8 +153,8 @@ def depth_to_control(depth: NDArray[np.floating], size: tuple[int, int]) -> Imag
     disparity = np.zeros_like(d)
     disparity[valid] = 1.0 / d[valid]
     if valid.any():
-        lo, hi = np.percentile(disparity[valid], _DISPARITY_PERCENTILES)
-        disparity = np.where(valid, np.clip((disparity - lo) / max(hi - lo, 1e-9), 0.0, 1.0), 0.0)
+        top = float(np.percentile(disparity[valid], _DISPARITY_PERCENTILE))
+        disparity = np.clip(disparity / max(top, 1e-9), 0.0, 1.0)
     grey = Image.fromarray((disparity * 255.0).astype(np.uint8), mode="L")
     return grey.resize((size[1], size[0]), Image.Resampling.BILINEAR).convert("RGB")
 
@@ -205,6 +213,10 @@ class FrameEnhancer:
             "num_inference_steps": self.settings.steps,
             "guidance_scale": self.settings.guidance,
             "output_type": "np",
+            # Explicit micro-conditioning sizes (SDXL's "original" and "target" size); also
+            # avoids a diffusers ControlNet-img2img bug when they default to a torch.Size.
+            "original_size": size,
+            "target_size": size,
         }
         if self.settings.seed is not None:
             kwargs["generator"] = torch.Generator(device="cpu").manual_seed(self.settings.seed)

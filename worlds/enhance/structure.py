@@ -132,18 +132,22 @@ def edge_map(rgb: FloatImage) -> FloatImage:
     return np.clip((magnitude - _EDGE_FLOOR) / (1.0 - _EDGE_FLOOR), 0.0, 1.0).astype(np.float32)
 
 
+def tile_means(values: FloatImage, grid: int = TILE_GRID) -> list[float]:
+    """Means of a map [H, W] split into grid x grid tiles (empty tiles left out)."""
+    h, w = values.shape
+    rows = [(i * h // grid, (i + 1) * h // grid) for i in range(grid)]
+    cols = [(j * w // grid, (j + 1) * w // grid) for j in range(grid)]
+    return [
+        float(values[r0:r1, c0:c1].mean())
+        for r0, r1 in rows
+        for c0, c1 in cols
+        if r1 > r0 and c1 > c0
+    ]
+
+
 def worst_tile_mean(values: FloatImage, grid: int = TILE_GRID) -> float:
     """The smallest per-tile mean of a map [H, W] split into grid x grid tiles."""
-    h, w = values.shape
-    means = [
-        float(
-            values[i * h // grid : (i + 1) * h // grid, j * w // grid : (j + 1) * w // grid].mean()
-        )
-        for i in range(grid)
-        for j in range(grid)
-        if (i + 1) * h // grid > i * h // grid and (j + 1) * w // grid > j * w // grid
-    ]
-    return min(means)
+    return min(tile_means(values, grid))
 
 
 def normalised_depth(depth: NDArray[np.floating]) -> NDArray[np.float64]:
@@ -155,11 +159,15 @@ def normalised_depth(depth: NDArray[np.floating]) -> NDArray[np.float64]:
 
 
 def depth_disagreement(a: NDArray[np.floating], b: NDArray[np.floating]) -> float:
-    """Mean absolute difference of two normalised depth estimates (0 = same layout)."""
+    """Largest per-tile mean |difference| of two normalised depth estimates (0 = same layout).
+
+    Tiles, not the global mean, so one moved vehicle is not averaged away by the scene.
+    """
     if a.shape != b.shape:
         b_img = Image.fromarray(np.asarray(b, dtype=np.float32), mode="F")
         b = np.asarray(b_img.resize((a.shape[1], a.shape[0]), Image.Resampling.BILINEAR))
-    return float(np.mean(np.abs(normalised_depth(a) - normalised_depth(b))))
+    diff = np.abs(normalised_depth(a) - normalised_depth(b)).astype(np.float32)
+    return max(tile_means(diff))
 
 
 def structure_score(
