@@ -39,11 +39,11 @@ from .appearance import (
 )
 from .appearance import world_points as _world_points
 from .camera import Camera
-from .mesh_pass import MeshPass
-from .rasterize import BackendName, rasterize
+from .mesh_pass import MeshImage, MeshPass
+from .rasterize import BackendName, RasterOutput, rasterize
 from .splats import Splats
 
-__all__ = ["Frame", "HybridRenderer", "chase_camera", "default_camera", "lamps_of",
+__all__ = ["Composite", "Frame", "HybridRenderer", "chase_camera", "default_camera", "lamps_of",
            "save_frame"]  # fmt: skip
 
 STREET_LIGHT = "street_light"
@@ -66,6 +66,23 @@ class Frame:
 
     rgb: npt.NDArray[np.uint8]
     depth: npt.NDArray[np.float32]
+    timings: dict[str, float] = field(default_factory=dict)
+
+
+@dataclass
+class Composite:
+    """The layers of a frame before weather: float rgb [H,W,3] (0..1 nominal), depth,
+    the mesh image, the splat raster (None without splats), the layer under the splats
+    (mesh colour, else sky), and the Look and lamps the environment asked for."""
+
+    rgb: npt.NDArray[np.float32]
+    depth: npt.NDArray[np.float32]
+    mesh: MeshImage
+    raster: RasterOutput | None
+    layer: npt.NDArray[np.float32]
+    look: Look
+    lamps: list[Lamp]
+    sim_time: float
     timings: dict[str, float] = field(default_factory=dict)
 
 
@@ -155,13 +172,22 @@ class HybridRenderer:
         """Free the GL resources."""
         self.mesh_pass.close()
 
-    def render(
-        self, camera: Camera, environment: Environment | None = None, *, time_s: float | None = None
-    ) -> Frame:
+    def render(self, camera: Camera, environment: Environment | None = None, *, time_s: float | None = None) -> Frame:
         """Draw one frame through ``camera`` under ``environment`` (default: the scene's).
 
         ``time_s`` animates rain and snow; it defaults to the simulation time.
         """
+        t0 = time.perf_counter()
+        comp = self.compose(camera, environment)
+        t1 = time.perf_counter()
+        out = finish(comp.rgb, comp.depth, camera, comp.look, comp.lamps, seed=self.seed,
+                     time_s=comp.sim_time if time_s is None else time_s)  # fmt: skip
+        t2 = time.perf_counter()
+        timings = {**comp.timings, "appearance": 1e3 * (t2 - t1), "total": 1e3 * (t2 - t0)}
+        return Frame(rgb=out, depth=comp.depth, timings=timings)
+
+    def compose(self, camera: Camera, environment: Environment | None = None) -> Composite:
+        """Steps 1-4 of a frame (meshes, posed splats, depth test, blend), before weather."""
         t0 = time.perf_counter()
         world = self.world
         env = environment if environment is not None else world.scene.environment
@@ -175,22 +201,16 @@ class HybridRenderer:
         splats = self._posed_splats(poses)
         t1 = time.perf_counter()
         hook = light_hook(look, lamps, _point(camera.position))
-        mesh = self.mesh_pass.render(
-            model,
-            data,
-            camera,
-            lock=self.lock,
-            hidden_bodies=list(bodies.values()),
-            scene_hook=hook,
-        )
+        hidden = list(bodies.values())
+        mesh = self.mesh_pass.render(model, data, camera, lock=self.lock, hidden_bodies=hidden, scene_hook=hook)
         t2 = time.perf_counter()
-        timings = {"pose": 1e3 * (t1 - t0), **mesh.timings}
-        layer = np.where(mesh.hit[..., None], mesh.rgb, sky_image(camera, look))
+        raster = None
         if splats is not None and len(splats):
             raster = rasterize(splats, camera, background=None, depth_limit=mesh.depth,
                                backend=self.backend)  # fmt: skip
-            timings.update({f"splat_{k}": v for k, v in raster.timings.items()})
-            t3 = time.perf_counter()
+        t3 = time.perf_counter()
+        layer = np.where(mesh.hit[..., None], mesh.rgb, sky_image(camera, look))
+        if raster is not None:
             lit = raster.rgb * np.asarray(look.splat_gain, np.float32)
             covered = raster.alpha > 1.0 / 255.0
             if lamps and covered.any():
@@ -199,16 +219,15 @@ class HybridRenderer:
             rgb = lit + raster.transmittance[..., None] * layer
             depth = np.where(raster.alpha >= SPLAT_DEPTH_ALPHA, raster.depth, mesh.depth)
         else:
-            t3 = time.perf_counter()
             rgb, depth = layer, mesh.depth
-        depth = depth.astype(np.float32)
         t4 = time.perf_counter()
-        out = finish(rgb.astype(np.float32), depth, camera, look, lamps, seed=self.seed,
-                     time_s=sim_time if time_s is None else time_s)  # fmt: skip
-        t5 = time.perf_counter()
-        timings.update({"splats": 1e3 * (t3 - t2), "blend": 1e3 * (t4 - t3),
-                        "appearance": 1e3 * (t5 - t4), "total": 1e3 * (t5 - t0)})  # fmt: skip
-        return Frame(rgb=out, depth=depth, timings=timings)
+        timings = {"pose": 1e3 * (t1 - t0), **mesh.timings}
+        if raster is not None:
+            timings.update({f"splat_{k}": v for k, v in raster.timings.items()})
+        timings.update({"splats": 1e3 * (t3 - t2), "blend": 1e3 * (t4 - t3)})
+        return Composite(rgb=rgb.astype(np.float32), depth=depth.astype(np.float32), mesh=mesh,
+                         raster=raster, layer=layer.astype(np.float32), look=look, lamps=lamps,
+                         sim_time=sim_time, timings=timings)  # fmt: skip
 
     def _posed_splats(self, poses: Mapping[str, npt.NDArray[np.float64]]) -> Splats | None:
         parts = [self.attachments[a].transformed(pose) for a, pose in poses.items()]
@@ -231,9 +250,7 @@ def default_camera(scene: Scene, width: int = 640, height: int = 360) -> Camera:
                                fovy_deg=OVERVIEW_FOVY_DEG)  # fmt: skip
 
 
-def chase_camera(
-    world: MujocoWorld, asset_id: str = EGO_ID, *, width: int = 640, height: int = 360
-) -> Camera:
+def chase_camera(world: MujocoWorld, asset_id: str = EGO_ID, *, width: int = 640, height: int = 360) -> Camera:
     """A camera behind and above an asset's live pose, looking past it along its heading."""
     pose = world.body_pose(asset_id)
     heading = (math.cos(pose.yaw), math.sin(pose.yaw))
