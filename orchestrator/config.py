@@ -15,6 +15,8 @@ Config file (`~/.config/drivetwin/config.toml`, or the path in DRIVETWIN_CONFIG)
     base_url = "http://127.0.0.1:8080/v1"
     [ollama]
     host = "http://127.0.0.1:11434"
+    [embedded]
+    threads = 1   # llama.cpp threads; default: all CPUs (use fewer on a busy machine)
 """
 
 from __future__ import annotations
@@ -34,6 +36,7 @@ ENV_OLLAMA_HOST = "DRIVETWIN_OLLAMA_HOST"
 # Read from the environment only, so that keys stay out of config files and shell history.
 ENV_OPENAI_API_KEY = "DRIVETWIN_OPENAI_API_KEY"
 ENV_TIMEOUT = "DRIVETWIN_TIMEOUT_S"
+ENV_THREADS = "DRIVETWIN_THREADS"
 ENV_CONFIG = "DRIVETWIN_CONFIG"
 ENV_CACHE = "DRIVETWIN_CACHE"
 
@@ -73,6 +76,11 @@ class _OllamaSection(BaseModel):
     host: str | None = None
 
 
+class _EmbeddedSection(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    threads: int | None = Field(default=None, ge=1)
+
+
 class _ConfigFile(BaseModel):
     model_config = ConfigDict(extra="forbid")
     backend: str | None = None
@@ -80,6 +88,7 @@ class _ConfigFile(BaseModel):
     timeout_s: float | None = Field(default=None, gt=0)
     openai: _OpenAISection = _OpenAISection()
     ollama: _OllamaSection = _OllamaSection()
+    embedded: _EmbeddedSection = _EmbeddedSection()
 
 
 class BackendSettings(BaseModel):
@@ -94,6 +103,8 @@ class BackendSettings(BaseModel):
     # None lets the ollama client apply its own default and OLLAMA_HOST.
     ollama_host: str | None = None
     timeout_s: float | None = Field(default=None, gt=0)
+    # None: llama.cpp uses every CPU.
+    threads: int | None = Field(default=None, ge=1)
     sources: dict[str, str] = {}
 
     def options_for(self, backend: str) -> dict[str, Any]:
@@ -107,6 +118,8 @@ class BackendSettings(BaseModel):
                 options["api_key"] = self.openai_api_key
         if backend == "ollama" and self.ollama_host:
             options["host"] = self.ollama_host
+        if backend == "embedded" and self.threads is not None:
+            options["n_threads"] = self.threads
         return options
 
 
@@ -117,6 +130,7 @@ def load_settings(
     openai_base_url: str | None = None,
     ollama_host: str | None = None,
     timeout_s: float | None = None,
+    threads: int | None = None,
     environ: Mapping[str, str] | None = None,
     config_file: Path | None = None,
 ) -> BackendSettings:
@@ -133,6 +147,7 @@ def load_settings(
             "openai_base_url": openai_base_url,
             "ollama_host": ollama_host,
             "timeout_s": timeout_s,
+            "threads": threads,
         },
         "environment": {
             "backend": env.get(ENV_BACKEND) or None,
@@ -140,6 +155,7 @@ def load_settings(
             "openai_base_url": env.get(ENV_OPENAI_BASE_URL) or None,
             "ollama_host": env.get(ENV_OLLAMA_HOST) or None,
             "timeout_s": _env_float(env, ENV_TIMEOUT),
+            "threads": _env_int(env, ENV_THREADS),
         },
         "config file": {
             "backend": file.backend,
@@ -147,6 +163,7 @@ def load_settings(
             "openai_base_url": file.openai.base_url,
             "ollama_host": file.ollama.host,
             "timeout_s": file.timeout_s,
+            "threads": file.embedded.threads,
         },
     }
     values: dict[str, Any] = {}
@@ -161,7 +178,7 @@ def load_settings(
         # The model was chosen for another backend; let the chosen backend pick its default.
         del values["model"]
         del sources["model"]
-    for key in ("backend", "openai_base_url", "timeout_s", "model", "ollama_host"):
+    for key in ("backend", "openai_base_url", "timeout_s", "model", "ollama_host", "threads"):
         sources.setdefault(key, "default")
     api_key = env.get(ENV_OPENAI_API_KEY) or None
     try:
@@ -184,6 +201,16 @@ def _env_float(env: Mapping[str, str], name: str) -> float | None:
         raise ConfigError(f"{name}={raw!r} is not a number of seconds") from None
 
 
+def _env_int(env: Mapping[str, str], name: str) -> int | None:
+    raw = env.get(name)
+    if not raw:
+        return None
+    try:
+        return int(raw)
+    except ValueError:
+        raise ConfigError(f"{name}={raw!r} is not a whole number") from None
+
+
 def _read_config_file(path: Path) -> _ConfigFile:
     if not path.is_file():
         return _ConfigFile()
@@ -198,8 +225,6 @@ def _read_config_file(path: Path) -> _ConfigFile:
 
 
 def _describe(error: ValidationError, where: str) -> str:
-    allowed = "backend, model, timeout_s, [openai] base_url, [ollama] host"
-    problems = "; ".join(
-        f"{'.'.join(str(p) for p in e['loc']) or '(top)'}: {e['msg']}" for e in error.errors()
-    )
+    allowed = "backend, model, timeout_s, [openai] base_url, [ollama] host, [embedded] threads"
+    problems = "; ".join(f"{'.'.join(str(p) for p in e['loc']) or '(top)'}: {e['msg']}" for e in error.errors())
     return f"{where} is invalid ({problems}); allowed keys: {allowed}"

@@ -27,8 +27,9 @@ class BackendUnavailable(BackendError):
     def __init__(
         self, message: str, *, fix: str | None = None, backend: str = "", model: str = ""
     ) -> None:
-        full = f"{message}; fix: {fix}" if fix else message
-        super().__init__(full, backend=backend, model=model)
+        super().__init__(message, backend=backend, model=model)
+        # `message` stays the bare problem (for tables); str(error) adds the fix.
+        self.args = (f"{message}; fix: {fix}" if fix else message,)
         self.fix = fix
 
 

@@ -19,6 +19,8 @@ from .errors import BackendUnavailable, UnknownModel
 
 BACKEND_NAME = "embedded"
 GGUF_SUFFIX = ".gguf"
+# mkstemp creates files readable by the owner only; a cached model is ordinary data.
+CACHED_FILE_MODE = 0o644
 
 
 @dataclass(frozen=True)
@@ -79,6 +81,7 @@ def _assemble_atomically(gemma: object, target: Path) -> Path:
     try:
         # The package's own assemble() checks the sha256; it writes in place, hence the temp.
         gemma.assemble(output_path=temp, overwrite=True)  # type: ignore[attr-defined]
+        temp.chmod(CACHED_FILE_MODE)
         os.replace(temp, target)
     except (OSError, ValueError) as error:
         raise BackendUnavailable(

@@ -25,7 +25,8 @@ from .structured import check_schema, parse_answer
 
 NAME = "ollama"
 OLLAMA_INSTALL = "pip install 'ollama>=0.4'"
-SERVE_FIX = "ollama serve  (or set DRIVETWIN_OLLAMA_HOST to the server's address)"
+SERVE_FIX = "ollama serve"
+WHERE_HINT = "start one, or set DRIVETWIN_OLLAMA_HOST to where it runs"
 # `backends list` must stay snappy even when the host is a dead address.
 STATUS_TIMEOUT_S = 2.0
 HTTP_NOT_FOUND = 404
@@ -146,7 +147,7 @@ class OllamaBackend(Backend):
         except ConnectionError:
             # The client turns httpx.ConnectError into a bare ConnectionError.
             raise BackendUnavailable(
-                f"no Ollama server answers at {self.host}",
+                f"no Ollama server answers at {self.host} ({WHERE_HINT})",
                 fix=SERVE_FIX,
                 backend=NAME,
                 model=self.model,
@@ -207,13 +208,18 @@ class OllamaBackend(Backend):
             (int(m.size) for m in listed.models if m.model == _tag(self.model) and m.size), None
         )
         details = shown.details
+        info: Mapping[str, Any] = shown.modelinfo or {}
+        architecture = info.get("general.architecture", "")
+        parameters = info.get("general.parameter_count")
+        context = info.get(f"{architecture}.context_length")
         return BackendInfo(
             backend=NAME,
             model=self.model,
             path=None,
             size_bytes=size,
-            parameters=None,
+            parameters=int(parameters) if parameters else None,
             quantisation=details.quantization_level if details else None,
+            context_length=int(context) if context else None,
             detail=(
                 f"{details.family} {details.parameter_size} on {self.host}"
                 if details
@@ -230,10 +236,7 @@ class OllamaBackend(Backend):
                 listed = backend._call(client.list, STATUS_TIMEOUT_S)
         except BackendError as error:
             fix = error.fix if isinstance(error, BackendUnavailable) else SERVE_FIX
-            return [
-                BackendStatus(NAME, tag, False, fix, f"server unreachable: {error.message}")
-                for tag in PRESETS.values()
-            ]
+            return [BackendStatus(NAME, tag, False, fix, error.message) for tag in PRESETS.values()]
         pulled = [str(m.model) for m in listed.models if m.model]
         rows = [
             BackendStatus(NAME, tag, True, None, f"preset {name}")

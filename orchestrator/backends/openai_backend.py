@@ -24,16 +24,15 @@ from .structured import check_schema, parse_answer
 
 NAME = "openai"
 DEFAULT_BASE_URL = "http://127.0.0.1:8080/v1"
-SERVE_FIX = (
-    "python -m llama_cpp.server --model MODEL.gguf --port 8080  "
-    "(or set DRIVETWIN_OPENAI_BASE_URL to your server's /v1 address)"
-)
+SERVE_FIX = "python -m llama_cpp.server --model MODEL.gguf --port 8080"
+WHERE_HINT = "start one, or set DRIVETWIN_OPENAI_BASE_URL to your server's /v1 address"
 KEY_FIX = "set DRIVETWIN_OPENAI_API_KEY to the server's API key"
 STATUS_TIMEOUT_S = 2.0
 HTTP_UNAUTHORIZED = 401
 HTTP_NOT_FOUND = 404
-# Servers that reject `json_schema` answer with one of these, and a message naming the field.
-SCHEMA_REFUSAL_CODES = (400, 422)
+# Servers that reject `json_schema` answer with one of these and a message naming the field;
+# llama-cpp-python's server reports its request-validation errors as 500.
+SCHEMA_REFUSAL_CODES = (400, 422, 500)
 # How much of an HTTP error body to quote.
 BODY_QUOTE_CHARS = 300
 
@@ -180,7 +179,7 @@ class OpenAIBackend(Backend):
             )
         except httpx.ConnectError:
             raise BackendUnavailable(
-                f"no OpenAI-compatible server answers at {self._base_url}",
+                f"no OpenAI-compatible server answers at {self._base_url} ({WHERE_HINT})",
                 fix=SERVE_FIX,
                 backend=NAME,
                 model=self.model,
@@ -249,7 +248,7 @@ class OpenAIBackend(Backend):
             payload is not None
             and "response_format" in payload
             and status in SCHEMA_REFUSAL_CODES
-            and ("response_format" in text or "json_schema" in text)
+            and ("response_format" in response.text or "json_schema" in response.text)
         )
         if refused_schema:
             raise _Refused(error)
@@ -269,7 +268,7 @@ class OpenAIBackend(Backend):
             served = backend._served_models(STATUS_TIMEOUT_S)
         except BackendError as error:
             fix = error.fix if isinstance(error, BackendUnavailable) else SERVE_FIX
-            return [BackendStatus(NAME, "(server's model)", False, fix, error.message)]
+            return [BackendStatus(NAME, "(any served model)", False, fix, error.message)]
         return [BackendStatus(NAME, m, True, None, f"served by {base_url}") for m in served]
 
 
