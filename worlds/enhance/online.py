@@ -58,6 +58,7 @@ class OnlineStats:
     rejected: int
     errors: int
     pending: int
+    busy: bool
     last_error: str | None
 
 
@@ -81,6 +82,7 @@ class OnlineEnhancer:
         self._stopping = False
         self._submitted = self._processed = self._dropped = self._rejected = self._errors = 0
         self._last_error: str | None = None
+        self._busy = False
         self._thread = threading.Thread(target=self._run, name=name, daemon=True)
         self._thread.start()
 
@@ -126,6 +128,7 @@ class OnlineEnhancer:
                 rejected=self._rejected,
                 errors=self._errors,
                 pending=0 if self._slot is None else 1,
+                busy=self._busy,
                 last_error=self._last_error,
             )
 
@@ -158,6 +161,7 @@ class OnlineEnhancer:
                 if self._stopping:
                     return
                 job, self._slot = self._slot, None
+                self._busy = True
             assert job is not None
             try:
                 result = self._enhancer.enhance(job.frame, job.depth, job.env)
@@ -165,8 +169,10 @@ class OnlineEnhancer:
                 with self._cond:
                     self._errors += 1
                     self._last_error = f"{type(exc).__name__}: {exc}"
+                    self._busy = False
                 continue
             with self._cond:
+                self._busy = False
                 self._processed += 1
                 self._rejected += 0 if result.accepted else 1
                 self._latest = OnlineFrame(job.index, result)
