@@ -61,9 +61,7 @@ class UnknownLaneError(LookupError):
         super().__init__(lane)
 
     def __str__(self) -> str:
-        return (
-            f"{self.asset_id}: unknown lane {self.lane!r}; lanes: {', '.join(self.known) or 'none'}"
-        )
+        return f"{self.asset_id}: unknown lane {self.lane!r}; lanes: {', '.join(self.known) or 'none'}"
 
 
 class BehaviourRunner:
@@ -97,8 +95,8 @@ def _at_time(start_time: float) -> StartCondition:
 
 def _ego_within(point: tuple[float, float], distance: float) -> StartCondition:
     def near(world: MujocoWorld, _time: float) -> bool:
-        ego = world.body_pose(EGO_ID)
-        return math.hypot(ego.x - point[0], ego.y - point[1]) <= distance
+        x, y, _, _ = world.planar_pose(EGO_ID)
+        return math.hypot(x - point[0], y - point[1]) <= distance
 
     return near
 
@@ -120,9 +118,7 @@ class VehicleParkedRunner(BehaviourRunner):
 class VehicleRouteRunner(BehaviourRunner):
     """Drives a vehicle along a route at a speed with pure pursuit, once started."""
 
-    def __init__(
-        self, asset: AssetInstance, route: Route, speed: float, start: StartCondition, at_end: AtEnd
-    ) -> None:
+    def __init__(self, asset: AssetInstance, route: Route, speed: float, start: StartCondition, at_end: AtEnd) -> None:
         self.asset_id = asset.id
         self.vehicle = VehicleController(asset.id, AckermannGeometry.of(asset))
         self.route, self.speed, self.at_end = route, speed, at_end
@@ -132,9 +128,7 @@ class VehicleRouteRunner(BehaviourRunner):
         self.vehicle.bind(world)
 
     def lookahead(self) -> float:
-        distance = max(
-            LOOKAHEAD_S * self.speed, LOOKAHEAD_MIN_WHEELBASES * self.vehicle.geometry.wheelbase
-        )
+        distance = max(LOOKAHEAD_S * self.speed, LOOKAHEAD_MIN_WHEELBASES * self.vehicle.geometry.wheelbase)
         if isinstance(self.route, CircleRoute):
             distance = min(distance, self.route.radius)
         return float(distance)
@@ -201,9 +195,7 @@ class WalkerRouteRunner(BehaviourRunner):
         world.data.mocap_quat[self._mocap] = (math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2))
 
 
-def jaywalk_crossing_point(
-    scene: Scene, start: tuple[float, float], end: tuple[float, float]
-) -> tuple[float, float]:
+def jaywalk_crossing_point(scene: Scene, start: tuple[float, float], end: tuple[float, float]) -> tuple[float, float]:
     """Where a start→end walk crosses the ego's lane centreline; its midpoint if it does not."""
     behaviour = scene.ego.behaviour
     if isinstance(behaviour, DriveLane):

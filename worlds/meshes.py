@@ -40,17 +40,13 @@ def part_mesh(part: Part) -> trimesh.Trimesh:
         mesh = trimesh.creation.box(extents=[2.0 * s for s in part.size[:3]])
     elif part.shape == "cylinder":
         radius, half_height = part.size[0], part.size[1]
-        mesh = trimesh.creation.cylinder(
-            radius=radius, height=2.0 * half_height, sections=CYLINDER_SECTIONS
-        )
+        mesh = trimesh.creation.cylinder(radius=radius, height=2.0 * half_height, sections=CYLINDER_SECTIONS)
         mesh.apply_transform(_axis_rotation(part.axis))
     else:
         mesh = trimesh.creation.icosphere(subdivisions=SPHERE_SUBDIVISIONS, radius=part.size[0])
     mesh.apply_translation(part.pos)
     colour = np.clip(np.round(np.asarray(part.rgba) * 255.0), 0, 255).astype(np.uint8)
-    mesh.visual = trimesh.visual.ColorVisuals(
-        mesh, face_colors=np.tile(colour, (len(mesh.faces), 1))
-    )
+    mesh.visual = trimesh.visual.ColorVisuals(mesh, face_colors=np.tile(colour, (len(mesh.faces), 1)))
     return mesh
 
 

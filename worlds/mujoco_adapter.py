@@ -21,6 +21,8 @@ from drivetwin.worlds.mujoco_bodies import (
     body_kind,
     geom_size,
     remove_asset_body,
+    set_body_frame,
+    yaw_quat,
 )
 from drivetwin.worlds.mujoco_static import (
     STATIC_PREFIXES,
@@ -45,6 +47,9 @@ DEFAULT_TIMESTEP = 0.005
 MASS_TOLERANCE = 1e-6
 # Geom sizes are compared to the scaled parts to this many metres.
 SIZE_TOLERANCE_M = 1e-9
+
+# Where a body's pose lives: the qpos of its free joint, its mocap slot, or its xpos.
+_FREE, _MOCAP, _WELDED = 0, 1, 2
 
 # Asset fields that change the body; behaviour and label changes leave it alone.
 _BODY_FIELDS = ("category", "pose", "scale", "physics", "appearance")
@@ -80,6 +85,10 @@ def _body_differs(old: AssetInstance, new: AssetInstance) -> bool:
     return any(getattr(old, f) != getattr(new, f) for f in _BODY_FIELDS)
 
 
+def _only_pose_differs(old: AssetInstance, new: AssetInstance) -> bool:
+    return all(getattr(old, f) == getattr(new, f) for f in _BODY_FIELDS if f != "pose")
+
+
 def yaw_of_quat(quat: np.ndarray) -> float:
     """The heading (rotation about z) of a unit quaternion (w, x, y, z)."""
     w, x, y, z = (float(v) for v in quat)
@@ -94,15 +103,15 @@ class MujocoWorld:
     data: mujoco.MjData
     scene: Scene
 
-    def __init__(
-        self, spec: mujoco.MjSpec, model: mujoco.MjModel, data: mujoco.MjData, scene: Scene
-    ) -> None:
+    def __init__(self, spec: mujoco.MjSpec, model: mujoco.MjModel, data: mujoco.MjData, scene: Scene) -> None:
         self.spec = spec
         self.model = model
         self.data = data
         self.scene = scene
         # Bumped on every recompile: element ids change then, so cached ids must be redone.
         self.generation = 0
+        self._body_ids: dict[str, int] = {}
+        self._pose_sources: dict[str, tuple[int, int]] = {}
 
     @classmethod
     def from_scene(cls, scene: Scene, timestep: float = DEFAULT_TIMESTEP) -> MujocoWorld:
@@ -114,6 +123,10 @@ class MujocoWorld:
         spec.option.timestep = timestep
         # Implicit in velocity: the stiff wheel drive servos stay stable at a few ms.
         spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+        # Props at rest sleep (MuJoCo skips them) and wake when touched: a world of 200
+        # mostly resting assets steps several times faster. Actuated trees (vehicles) and
+        # mocap walkers never sleep; a recompile wakes everything.
+        spec.option.enableflags |= int(mujoco.mjtEnableBit.mjENBL_SLEEP)
         configure_spec(spec, scene)
         add_static_geoms(spec, scene)
         for asset in scene.all_assets():
@@ -125,13 +138,19 @@ class MujocoWorld:
 
     # Editing ------------------------------------------------------------------------------
     def update(self, scene: Scene) -> UpdateStats:
-        """Patch the world to match `scene`; unchanged assets keep their state (keep moving)."""
+        """Patch the world to match `scene`; unchanged assets keep their state (keep moving).
+
+        Added and changed assets start at their authored pose. A change of pose alone moves
+        the body in place (no rebuild); welded and mocap bodies then need no recompile.
+        """
         started = time.perf_counter()
         old = {a.id: a for a in self.scene.all_assets()}
         new = {a.id: a for a in scene.all_assets()}
         removed = [i for i in old if i not in new]
         added = [i for i in new if i not in old]
-        replaced = [i for i in new if i in old and _body_differs(old[i], new[i])]
+        changed = [i for i in new if i in old and _body_differs(old[i], new[i])]
+        moved = [i for i in changed if _only_pose_differs(old[i], new[i])]
+        replaced = [i for i in changed if i not in moved]
         static_changed = static_signature(self.scene) != static_signature(scene)
         for asset_id in removed + replaced:
             remove_asset_body(self.spec, asset_id)
@@ -140,19 +159,59 @@ class MujocoWorld:
         if static_changed:
             self._remove_static()
             add_static_geoms(self.spec, scene)
-        recompile = bool(removed or added or replaced or static_changed)
+        for asset_id in moved:
+            set_body_frame(self.spec.body(asset_id), new[asset_id].pose)
+        # Free bodies may be asleep; only a recompile wakes them reliably.
+        moved_free = [i for i in moved if body_kind(new[i]) in ("vehicle", "free")]
+        recompile = bool(removed or added or replaced or static_changed or moved_free)
         if recompile:
             self._recompile()
+        for asset_id in moved:
+            self._place(new[asset_id])
+        if moved and not recompile:
+            self._refresh_kinematics()
         self.scene = scene
         return UpdateStats(
             added=len(added),
             removed=len(removed),
-            replaced=len(replaced),
-            unchanged=len(new) - len(added) - len(replaced),
+            replaced=len(changed),
+            unchanged=len(new) - len(added) - len(changed),
             static_rebuilt=static_changed,
             recompiled=recompile,
             ms=(time.perf_counter() - started) * 1000.0,
         )
+
+    def _refresh_kinematics(self) -> None:
+        """Recompute every body's frame, static ones included (sleep caches those)."""
+        options = self.model.opt
+        flags = int(options.enableflags)
+        options.enableflags = flags & ~int(mujoco.mjtEnableBit.mjENBL_SLEEP)
+        try:
+            mujoco.mj_kinematics(self.model, self.data)
+        finally:
+            options.enableflags = flags
+
+    def _place(self, asset: AssetInstance) -> None:
+        """Put an existing body at the asset's authored pose, at rest."""
+        body = self.body_id(asset.id)
+        model, data = self.model, self.data
+        pose = asset.pose
+        position = [pose.x, pose.y, pose.z]
+        quat = yaw_quat(pose.yaw)
+        joint = int(model.body_jntadr[body])
+        mocap = int(model.body_mocapid[body])
+        if joint >= 0 and model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:
+            start = int(model.jnt_qposadr[joint])
+            data.qpos[start : start + 3] = position
+            data.qpos[start + 3 : start + 7] = quat
+            dof, count = int(model.body_dofadr[body]), int(model.body_dofnum[body])
+            data.qvel[dof : dof + count] = 0.0
+        elif mocap >= 0:
+            data.mocap_pos[mocap] = position
+            data.mocap_quat[mocap] = quat
+        else:
+            model.body_pos[body] = position
+            model.body_quat[body] = quat
 
     def _remove_static(self) -> None:
         for geom in list(self.spec.worldbody.geoms):
@@ -168,31 +227,52 @@ class MujocoWorld:
         # Positions of new bodies are only known after kinematics; renderers read them.
         mujoco.mj_kinematics(self.model, self.data)
         self.generation += 1
+        self._body_ids.clear()
+        self._pose_sources.clear()
 
     # Reading ------------------------------------------------------------------------------
     def body_id(self, asset_id: str) -> int:
         """The MuJoCo body id of an asset (valid until the next recompile)."""
-        body = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, asset_id)
-        if body < 0:
-            raise UnknownBodyError(asset_id, [a.id for a in self.scene.all_assets()])
-        return int(body)
+        body = self._body_ids.get(asset_id)
+        if body is None:
+            body = int(mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, asset_id))
+            if body < 0:
+                raise UnknownBodyError(asset_id, [a.id for a in self.scene.all_assets()])
+            self._body_ids[asset_id] = body
+        return body
 
     def body_pose(self, asset_id: str) -> Pose:
         """The current simulated planar pose of an asset's body."""
-        body = self.body_id(asset_id)
-        model, data = self.model, self.data
+        x, y, z, yaw = self.planar_pose(asset_id)
+        return Pose(x=x, y=y, z=z, yaw=yaw)
+
+    def planar_pose(self, asset_id: str) -> tuple[float, float, float, float]:
+        """(x, y, z, yaw) of an asset's body now; the fast path for control loops."""
+        source = self._pose_sources.get(asset_id)
+        if source is None:
+            source = self._pose_source(self.body_id(asset_id))
+            self._pose_sources[asset_id] = source
+        kind, index = source
+        data = self.data
         # Read the state itself, not xpos: xpos lags one step behind after mj_step.
-        joint = int(model.body_jntadr[body])
-        mocap = int(model.body_mocapid[body])
-        if joint >= 0 and model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:
-            q = data.qpos[model.jnt_qposadr[joint] : model.jnt_qposadr[joint] + 7]
-            position, quat = q[:3], q[3:]
-        elif mocap >= 0:
-            position, quat = data.mocap_pos[mocap], data.mocap_quat[mocap]
+        if kind == _FREE:
+            x, y, z, w, qx, qy, qz = data.qpos[index : index + 7].tolist()
+        elif kind == _MOCAP:
+            x, y, z = data.mocap_pos[index].tolist()
+            w, qx, qy, qz = data.mocap_quat[index].tolist()
         else:
-            position, quat = data.xpos[body], data.xquat[body]
-        x, y, z = (float(v) for v in position)
-        return Pose(x=x, y=y, z=z, yaw=yaw_of_quat(quat))
+            x, y, z = data.xpos[index].tolist()
+            w, qx, qy, qz = data.xquat[index].tolist()
+        return x, y, z, math.atan2(2.0 * (w * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz))
+
+    def _pose_source(self, body: int) -> tuple[int, int]:
+        model = self.model
+        joint = int(model.body_jntadr[body])
+        if joint >= 0 and model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:
+            return _FREE, int(model.jnt_qposadr[joint])
+        if model.body_mocapid[body] >= 0:
+            return _MOCAP, int(model.body_mocapid[body])
+        return _WELDED, body
 
     def joint_id(self, name: str) -> int:
         """The id of a joint by its full name, or -1."""

@@ -17,7 +17,7 @@ from typing import Literal
 
 import mujoco
 from drivetwin.worlds.catalog import Category, Part, category
-from drivetwin.worlds.scene import AssetInstance
+from drivetwin.worlds.scene import AssetInstance, Pose
 
 __all__ = [
     "WHEEL_CORNERS",
@@ -27,7 +27,9 @@ __all__ = [
     "geom_size",
     "part_volume",
     "remove_asset_body",
+    "set_body_frame",
     "wheel_corner",
+    "yaw_quat",
 ]
 
 BodyKind = Literal["vehicle", "mocap", "free", "welded"]
@@ -118,8 +120,15 @@ def _add_part_geom(
     )
 
 
-def _body_quat(yaw: float) -> list[float]:
+def yaw_quat(yaw: float) -> list[float]:
+    """The unit quaternion (w, x, y, z) of a rotation by `yaw` about z."""
     return [math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)]
+
+
+def set_body_frame(body: mujoco.MjsBody, pose: Pose) -> None:
+    """Set a spec body's authored position and heading (used when compiling it again)."""
+    body.pos = [pose.x, pose.y, pose.z]
+    body.quat = yaw_quat(pose.yaw)
 
 
 def _scaled(pos: tuple[float, float, float], scale: float) -> tuple[float, float, float]:
@@ -134,7 +143,7 @@ def add_asset_body(spec: mujoco.MjSpec, asset: AssetInstance) -> mujoco.MjsBody:
     body = spec.worldbody.add_body(
         name=asset.id,
         pos=[pose.x, pose.y, pose.z],
-        quat=_body_quat(pose.yaw),
+        quat=yaw_quat(pose.yaw),
         mocap=kind == "mocap",
     )
     body_parts = [p for p in cat.parts if not (kind == "vehicle" and p.role == "wheel")]
@@ -146,9 +155,7 @@ def add_asset_body(spec: mujoco.MjSpec, asset: AssetInstance) -> mujoco.MjsBody:
     total = sum(volumes)
     for index, (part, volume) in enumerate(zip(body_parts, volumes, strict=True)):
         share = chassis_mass * volume / total
-        _add_part_geom(
-            body, f"{asset.id}/part{index}", part, asset, share, _scaled(part.pos, asset.scale)
-        )
+        _add_part_geom(body, f"{asset.id}/part{index}", part, asset, share, _scaled(part.pos, asset.scale))
     if kind in ("vehicle", "free"):
         body.add_freejoint(name=f"{asset.id}/free")
     if kind == "vehicle":
@@ -184,9 +191,7 @@ def _add_wheels(
     for part in wheel_parts:
         corner = wheel_corner(part)
         dims = _WheelDims(part.size[0] * asset.scale, wheel_mass)
-        wheel = chassis.add_body(
-            name=f"{asset.id}/wheel_{corner}", pos=list(_scaled(part.pos, asset.scale))
-        )
+        wheel = chassis.add_body(name=f"{asset.id}/wheel_{corner}", pos=list(_scaled(part.pos, asset.scale)))
         armature = WHEEL_ARMATURE_FACTOR * dims.spin_inertia
         steer_kp = STEER_KP_PER_KG * asset.physics.mass
         if corner.startswith("f"):
@@ -204,9 +209,7 @@ def _add_wheels(
             axis=[0.0, 1.0, 0.0],
             armature=armature,
         )
-        _add_part_geom(
-            wheel, f"{asset.id}/wheel_{corner}", part, asset, wheel_mass, (0.0, 0.0, 0.0)
-        )
+        _add_part_geom(wheel, f"{asset.id}/wheel_{corner}", part, asset, wheel_mass, (0.0, 0.0, 0.0))
         if corner.startswith("f"):
             steer = spec.add_actuator(
                 name=f"{asset.id}/steer_{corner}",

@@ -95,9 +95,7 @@ def configure_spec(spec: mujoco.MjSpec, scene: Scene) -> None:
     heading = (math.cos(ego.yaw), math.sin(ego.yaw))
     eye = (ego.x - 8.0 * heading[0], ego.y - 8.0 * heading[1], 4.0)
     target = (ego.x + 10.0 * heading[0], ego.y + 10.0 * heading[1], 0.5)
-    spec.worldbody.add_camera(
-        name=VIEW_CAMERA, pos=list(eye), quat=_look_at_quat(eye, target), fovy=60.0
-    )
+    spec.worldbody.add_camera(name=VIEW_CAMERA, pos=list(eye), quat=_look_at_quat(eye, target), fovy=60.0)
 
 
 def add_static_geoms(spec: mujoco.MjSpec, scene: Scene) -> None:
@@ -213,9 +211,7 @@ def _add_building(spec: mujoco.MjSpec, building: Building) -> None:
     box = _rectangle(building.footprint)
     if box is None:
         # Collision meshes are convex hulls: a concave footprint collides as its hull.
-        _add_prism(
-            spec, f"building/{building.id}", building.footprint, 0.0, building.height, rgba, {}
-        )
+        _add_prism(spec, f"building/{building.id}", building.footprint, 0.0, building.height, rgba, {})
         return
     cx, cy, yaw, half_length, half_width = box
     spec.worldbody.add_geom(
@@ -243,6 +239,4 @@ def _add_prism(
         for x, y in polygon:
             vertices.extend((x, y, z))
     spec.add_mesh(name=name, uservert=vertices)
-    spec.worldbody.add_geom(
-        name=name, type=mujoco.mjtGeom.mjGEOM_MESH, meshname=name, rgba=list(rgba), **flags
-    )
+    spec.worldbody.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_MESH, meshname=name, rgba=list(rgba), **flags)

@@ -6,6 +6,7 @@ on it (pure pursuit); walkers are placed at the point `speed · elapsed` along i
 
 from __future__ import annotations
 
+import bisect
 import itertools
 import math
 from collections.abc import Sequence
@@ -46,50 +47,54 @@ class PolylineRoute(Route):
 
     waypoints: Sequence[Sequence[float]]
     closed: bool = False
-    _points: np.ndarray = field(init=False, repr=False)
-    _cumulative: np.ndarray = field(init=False, repr=False)
+    # Plain Python floats: a route is queried a few times per tick, where numpy's per-call
+    # overhead would dominate.
+    _points: list[tuple[float, float]] = field(init=False, repr=False)
+    _cumulative: list[float] = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        points = np.asarray(self.waypoints, dtype=float)
-        if self.closed and not np.allclose(points[0], points[-1]):
-            points = np.vstack([points, points[:1]])
-        steps = np.linalg.norm(np.diff(points, axis=0), axis=1)
-        keep = np.concatenate([[True], steps > 1e-9])
-        self._points = points[keep]
-        if len(self._points) < 2:
+        raw = [(float(p[0]), float(p[1])) for p in self.waypoints]
+        if self.closed and raw and math.dist(raw[0], raw[-1]) > 1e-9:
+            raw.append(raw[0])
+        points = raw[:1]
+        for point in raw[1:]:
+            if math.dist(point, points[-1]) > 1e-9:
+                points.append(point)
+        if len(points) < 2:
             raise ValueError("a route needs two distinct waypoints")
-        self._cumulative = np.concatenate(
-            [[0.0], np.cumsum(np.linalg.norm(np.diff(self._points, axis=0), axis=1))]
-        )
-        self.length = float(self._cumulative[-1])
+        self._points = points
+        self._cumulative = [0.0]
+        for a, b in itertools.pairwise(points):
+            self._cumulative.append(self._cumulative[-1] + math.dist(a, b))
+        self.length = self._cumulative[-1]
 
     def _segment(self, s: float) -> tuple[int, float]:
         s = self.wrap(s)
-        index = int(np.searchsorted(self._cumulative, s, side="right") - 1)
+        index = bisect.bisect_right(self._cumulative, s) - 1
         index = min(max(index, 0), len(self._points) - 2)
-        return index, s - float(self._cumulative[index])
+        return index, s - self._cumulative[index]
 
     def point(self, s: float) -> tuple[float, float]:
         index, along = self._segment(s)
-        a, b = self._points[index], self._points[index + 1]
-        t = along / float(np.linalg.norm(b - a))
-        p = a + t * (b - a)
-        return float(p[0]), float(p[1])
+        (ax, ay), (bx, by) = self._points[index], self._points[index + 1]
+        t = along / (self._cumulative[index + 1] - self._cumulative[index])
+        return ax + t * (bx - ax), ay + t * (by - ay)
 
     def heading(self, s: float) -> float:
         index, _ = self._segment(s)
-        d = self._points[index + 1] - self._points[index]
-        return math.atan2(float(d[1]), float(d[0]))
+        (ax, ay), (bx, by) = self._points[index], self._points[index + 1]
+        return math.atan2(by - ay, bx - ax)
 
     def project(self, x: float, y: float) -> float:
-        a, b = self._points[:-1], self._points[1:]
-        d = b - a
-        lengths2 = np.einsum("ij,ij->i", d, d)
-        t = np.clip(np.einsum("ij,ij->i", np.array([x, y]) - a, d) / lengths2, 0.0, 1.0)
-        nearest = a + t[:, None] * d
-        distances = np.linalg.norm(nearest - np.array([x, y]), axis=1)
-        best = int(np.argmin(distances))
-        return float(self._cumulative[best] + t[best] * math.sqrt(lengths2[best]))
+        best, best_s = math.inf, 0.0
+        for index, ((ax, ay), (bx, by)) in enumerate(itertools.pairwise(self._points)):
+            dx, dy = bx - ax, by - ay
+            length2 = dx * dx + dy * dy
+            t = min(1.0, max(0.0, ((x - ax) * dx + (y - ay) * dy) / length2))
+            distance2 = (ax + t * dx - x) ** 2 + (ay + t * dy - y) ** 2
+            if distance2 < best:
+                best, best_s = distance2, self._cumulative[index] + t * math.sqrt(length2)
+        return best_s
 
     def distance_to(self, x: float, y: float) -> float:
         """Distance from (x, y) to the nearest point of the route."""
@@ -98,7 +103,7 @@ class PolylineRoute(Route):
 
     @property
     def start(self) -> tuple[float, float]:
-        return float(self._points[0][0]), float(self._points[0][1])
+        return self._points[0]
 
 
 @dataclass

@@ -109,8 +109,8 @@ class Simulation:
         for runner in self._runners.values():
             runner.control(world, now, period)
         for asset_id in self._runners:
-            pose = world.body_pose(asset_id)
-            self._traces[asset_id].append((now, pose.x, pose.y, pose.yaw))
+            x, y, _, yaw = world.planar_pose(asset_id)
+            self._traces[asset_id].append((now, x, y, yaw))
 
     def _step_unlocked(self, n: int) -> None:
         model, data = self.world.model, self.world.data
@@ -137,9 +137,7 @@ class Simulation:
             return
         self._stop.clear()
         self._error = None
-        self._thread = threading.Thread(
-            target=self._loop, args=(realtime,), name="drivetwin-physics", daemon=True
-        )
+        self._thread = threading.Thread(target=self._loop, args=(realtime,), name="drivetwin-physics", daemon=True)
         self._thread.start()
 
     def stop(self) -> None:

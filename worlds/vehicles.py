@@ -48,9 +48,7 @@ def ackermann_angles(curvature: float, wheelbase: float, track: float) -> tuple[
     return left, right
 
 
-def pure_pursuit_curvature(
-    x: float, y: float, yaw: float, target_x: float, target_y: float
-) -> float:
+def pure_pursuit_curvature(x: float, y: float, yaw: float, target_x: float, target_y: float) -> float:
     """The curvature of the arc from the rear axle (x, y, heading yaw) through the target.
 
     κ = 2·sin(α) / ℓ, with α the target's bearing from the heading and ℓ its distance.

@@ -74,9 +74,7 @@ def test_jaywalker_crosses_the_ego_lane_ahead_of_the_ego_and_away_from_the_cross
         math.pi / 2,
         behaviour=Jaywalk(start=(0.0, -6.0), end=(0.0, 6.0), speed=1.8, trigger_distance=20.0),
     )
-    ego = make_asset(
-        "ego", "ego_vehicle", -30.0, -1.75, behaviour=DriveLane(lane="east", speed=5.0)
-    )
+    ego = make_asset("ego", "ego_vehicle", -30.0, -1.75, behaviour=DriveLane(lane="east", speed=5.0))
     scene = make_scene(walker, ego=ego)
     scene.roads.crossings.append(crossing)
     sim = Simulation(scene)
@@ -126,9 +124,7 @@ def _curved_lane() -> Lane:
 
 def test_drive_lane_car_stays_within_half_a_metre_of_the_centreline() -> None:
     lane = _curved_lane()
-    car = make_asset(
-        "car", "passenger_car", -40.0, -30.0, behaviour=DriveLane(lane="bend", speed=8.0)
-    )
+    car = make_asset("car", "passenger_car", -40.0, -30.0, behaviour=DriveLane(lane="bend", speed=8.0))
     scene = make_scene(car)
     scene.roads = RoadNetwork(lanes=[lane])
     sim = Simulation(scene)
@@ -141,9 +137,7 @@ def test_drive_lane_car_stays_within_half_a_metre_of_the_centreline() -> None:
 
 
 def test_drive_lane_loops_back_to_the_start_of_an_open_lane() -> None:
-    car = make_asset(
-        "car", "passenger_car", 90.0, -1.75, behaviour=DriveLane(lane="east", speed=6.0)
-    )
+    car = make_asset("car", "passenger_car", 90.0, -1.75, behaviour=DriveLane(lane="east", speed=6.0))
     sim = Simulation(make_scene(car))
     sim.run_for(3.0)
     pose = sim.pose("car")
@@ -160,14 +154,14 @@ def test_parked_car_drifts_less_than_five_centimetres_in_five_seconds() -> None:
 
 
 def test_a_parked_vehicle_stops_when_its_behaviour_becomes_parked() -> None:
-    car = make_asset(
-        "car", "passenger_car", -50.0, -1.75, behaviour=DriveLane(lane="east", speed=6.0)
-    )
+    car = make_asset("car", "passenger_car", -50.0, -1.75, behaviour=DriveLane(lane="east", speed=6.0))
     scene = make_scene(car)
     sim = Simulation(scene)
     sim.run_for(3.0)
     parked = scene.model_copy(deep=True)
-    parked.assets[0].behaviour = Parked()
+    car_asset = parked.asset("car")
+    assert car_asset is not None
+    car_asset.behaviour = Parked()
     sim.apply(parked)
     sim.run_for(4.0)
     before = sim.pose("car").x

@@ -12,6 +12,7 @@ from drivetwin.worlds.mujoco_adapter import MujocoWorld, UnknownBodyError, consi
 from drivetwin.worlds.mujoco_static import OFFSCREEN_HEIGHT, OFFSCREEN_WIDTH, VIEW_CAMERA
 from drivetwin.worlds.scene import (
     Appearance,
+    AssetInstance,
     Building,
     Environment,
     Ground,
@@ -26,6 +27,12 @@ def _free_qvel(world: MujocoWorld, asset_id: str) -> np.ndarray:
     joint = world.joint_id(f"{asset_id}/free")
     start = world.model.jnt_dofadr[joint]
     return np.array(world.data.qvel[start : start + 6])
+
+
+def _asset(scene: Scene, asset_id: str) -> AssetInstance:
+    found = scene.asset(asset_id)
+    assert found is not None
+    return found
 
 
 def _with(scene: Scene, **changes: object) -> Scene:
@@ -58,13 +65,9 @@ def test_world_has_the_view_camera_a_full_hd_buffer_and_a_sun() -> None:
 def test_buildings_collide_and_road_paint_does_not() -> None:
     scene = make_scene()
     scene.buildings.append(
-        Building(
-            id="hall", name="Hall", footprint=[(20, 20), (40, 20), (40, 30), (20, 30)], height=12.0
-        )
+        Building(id="hall", name="Hall", footprint=[(20, 20), (40, 20), (40, 30), (20, 30)], height=12.0)
     )
-    scene.buildings.append(
-        Building(id="tower", name="Tower", footprint=[(-40, 20), (-30, 20), (-35, 30)], height=30.0)
-    )
+    scene.buildings.append(Building(id="tower", name="Tower", footprint=[(-40, 20), (-30, 20), (-35, 30)], height=30.0))
     model = MujocoWorld.from_scene(scene).model
     hall = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "building/hall")
     tower = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "building/tower")
@@ -105,9 +108,7 @@ def test_update_keeps_a_rolling_body_rolling_and_places_the_new_asset_at_its_pos
     qpos_start = world.model.jnt_qposadr[joint]
     position = np.array(world.data.qpos[qpos_start : qpos_start + 7])
     assert before[0] > 1.0, "the bin should be sliding"
-    added = _with(
-        scene, assets=[*scene.assets, make_asset("cone_9", "traffic_cone", -30.0, 40.0, 1.0)]
-    )
+    added = _with(scene, assets=[*scene.assets, make_asset("cone_9", "traffic_cone", -30.0, 40.0, 1.0)])
     stats = world.update(added)
     assert stats.added == 1 and stats.unchanged == 2 and stats.recompiled
     np.testing.assert_array_equal(_free_qvel(world, "bin_1"), before)
@@ -119,9 +120,7 @@ def test_update_keeps_a_rolling_body_rolling_and_places_the_new_asset_at_its_pos
 
 
 def test_update_removes_the_body_of_a_removed_asset() -> None:
-    scene = make_scene(
-        make_asset("cone_1", "traffic_cone", 5.0, 5.0), make_asset("car", "suv", 0.0, 10.0)
-    )
+    scene = make_scene(make_asset("cone_1", "traffic_cone", 5.0, 5.0), make_asset("car", "suv", 0.0, 10.0))
     world = MujocoWorld.from_scene(scene)
     stats = world.update(_with(scene, assets=[]))
     assert stats.removed == 2
@@ -132,15 +131,13 @@ def test_update_removes_the_body_of_a_removed_asset() -> None:
 
 
 def test_a_moved_asset_restarts_at_its_new_pose_and_others_keep_state() -> None:
-    scene = make_scene(
-        make_asset("cone_1", "traffic_cone", 5.0, 5.0), make_asset("bin_1", "trash_bin", 0.0, 20.0)
-    )
+    scene = make_scene(make_asset("cone_1", "traffic_cone", 5.0, 5.0), make_asset("bin_1", "trash_bin", 0.0, 20.0))
     world = MujocoWorld.from_scene(scene)
     world.data.qvel[world.model.jnt_dofadr[world.joint_id("bin_1/free")]] = 2.0
     mujoco.mj_step(world.model, world.data)
     before = _free_qvel(world, "bin_1")
     moved = scene.model_copy(deep=True)
-    moved.assets[0].pose = Pose(x=7.0, y=-3.0, yaw=0.5)
+    _asset(moved, "cone_1").pose = Pose(x=7.0, y=-3.0, yaw=0.5)
     stats = world.update(moved)
     assert stats.replaced == 1
     assert world.body_pose("cone_1").x == pytest.approx(7.0)
@@ -179,12 +176,12 @@ def test_consistency_holds_after_a_series_of_edits() -> None:
         assets=[make_asset("cone_1", "traffic_cone", 5, 5), make_asset("car_1", "bus", 0, 20)],
     )
     s2 = s1.model_copy(deep=True)
-    s2.assets[0].physics = PhysicsProps(mass=9.0, dynamic=False)
-    s2.assets[1].scale = 0.5
-    s3 = _with(s2, assets=[*s2.assets[1:], make_asset("ped_1", "pedestrian", 3, 3)])
+    _asset(s2, "cone_1").physics = PhysicsProps(mass=9.0, dynamic=False)
+    _asset(s2, "car_1").scale = 0.5
+    s3 = _with(s2, assets=[_asset(s2, "car_1"), make_asset("ped_1", "pedestrian", 3, 3)])
     s4 = s3.model_copy(deep=True)
     s4.ego.appearance = Appearance(rgba=(0.0, 0.0, 1.0, 1.0))
-    s4.assets[1].category = "bicycle"
+    _asset(s4, "ped_1").category = "bicycle"
     edits += [s1, s2, s3, s4, scene]
     for edited in edits:
         world.update(edited)
@@ -197,9 +194,29 @@ def test_consistency_reports_a_stale_world() -> None:
     grown = _with(scene, assets=[*scene.assets, make_asset("cone_2", "traffic_cone", 6.0, 5.0)])
     assert any("cone_2" in p for p in consistency_problems(grown, world))
     heavier = scene.model_copy(deep=True)
-    heavier.assets[0].physics = PhysicsProps(mass=30.0)
+    _asset(heavier, "cone_1").physics = PhysicsProps(mass=30.0)
     assert any("mass" in p for p in consistency_problems(heavier, world))
     welded = scene.model_copy(deep=True)
-    welded.assets[0].physics = PhysicsProps(mass=3.0, dynamic=False)
+    _asset(welded, "cone_1").physics = PhysicsProps(mass=3.0, dynamic=False)
     assert any("joint" in p for p in consistency_problems(welded, world))
     assert any("not an asset" in p for p in consistency_problems(_with(scene, assets=[]), world))
+
+
+def test_moving_a_welded_or_walking_asset_needs_no_recompile_and_its_geoms_follow() -> None:
+    scene = make_scene(
+        make_asset("post", "bollard", 5.0, 5.0, physics=PhysicsProps(mass=40.0, dynamic=False)),
+        make_asset("ped", "pedestrian", 8.0, 5.0),
+    )
+    world = MujocoWorld.from_scene(scene)
+    model = world.model
+    moved = scene.model_copy(deep=True)
+    _asset(moved, "post").pose = Pose(x=-4.0, y=2.0)
+    _asset(moved, "ped").pose = Pose(x=1.0, y=1.0, yaw=1.0)
+    stats = world.update(moved)
+    assert not stats.recompiled and world.model is model and stats.replaced == 2
+    geom = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "post/part0")
+    np.testing.assert_allclose(world.data.geom_xpos[geom][:2], [-4.0, 2.0])
+    assert world.body_pose("ped").yaw == pytest.approx(1.0)
+    assert consistency_problems(moved, world) == []
+    world.update(_with(moved, assets=[*moved.assets, make_asset("cone", "traffic_cone", 0.0, 9.0)]))
+    assert world.body_pose("post").x == pytest.approx(-4.0), "a later recompile keeps the move"

@@ -13,11 +13,7 @@ from drivetwin.worlds.simulation import Simulation
 
 
 def test_background_loop_advances_time_while_another_thread_applies_edits() -> None:
-    scene = make_scene(
-        make_asset(
-            "car", "passenger_car", -50.0, -1.75, behaviour=DriveLane(lane="east", speed=6.0)
-        )
-    )
+    scene = make_scene(make_asset("car", "passenger_car", -50.0, -1.75, behaviour=DriveLane(lane="east", speed=6.0)))
     sim = Simulation(scene)
     times: list[float] = []
     errors: list[BaseException] = []
@@ -26,9 +22,7 @@ def test_background_loop_advances_time_while_another_thread_applies_edits() -> N
         try:
             current: Scene = scene
             for k in range(12):
-                cones = [
-                    make_asset(f"cone_{i}", "traffic_cone", 10.0 + i, 10.0) for i in range(k % 4)
-                ]
+                cones = [make_asset(f"cone_{i}", "traffic_cone", 10.0 + i, 10.0) for i in range(k % 4)]
                 current = current.model_copy(update={"assets": [scene.assets[0], *cones]})
                 sim.apply(current)
                 times.append(sim.time)
@@ -57,19 +51,11 @@ def test_realtime_loop_keeps_pace_with_the_wall_clock() -> None:
 
 
 def test_a_driving_car_keeps_moving_through_an_unrelated_edit() -> None:
-    scene = make_scene(
-        make_asset(
-            "car", "passenger_car", -50.0, -1.75, behaviour=DriveLane(lane="east", speed=6.0)
-        )
-    )
+    scene = make_scene(make_asset("car", "passenger_car", -50.0, -1.75, behaviour=DriveLane(lane="east", speed=6.0)))
     sim = Simulation(scene)
     sim.run_for(3.0)
     before = sim.pose("car").x
-    sim.apply(
-        scene.model_copy(
-            update={"assets": [*scene.assets, make_asset("cone_1", "traffic_cone", 0.0, 30.0)]}
-        )
-    )
+    sim.apply(scene.model_copy(update={"assets": [*scene.assets, make_asset("cone_1", "traffic_cone", 0.0, 30.0)]}))
     assert abs(sim.pose("car").x - before) < 1e-9, "an unrelated edit must not move the car"
     sim.run_for(1.0)
     assert sim.pose("car").x - before > 4.0, "it keeps driving at about 6 m/s"
