@@ -1,0 +1,38 @@
+"""The splat benchmark runs end to end and writes its JSON report."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+
+from drivetwin.worlds.render.bench_splats import main, psnr, street_camera, street_scene
+
+
+def test_benchmark_writes_fps_and_stage_timings_as_json(tmp_path):
+    out = tmp_path / "bench.json"
+    args = ["--width", "96", "--height", "64", "--counts", "500", "--frames", "2",
+            "--backends", "numba", "torch", "--out", str(out)]  # fmt: skip
+    assert main(args) == 0
+    report = json.loads(out.read_text())
+    assert report["resolution"] == [96, 64]
+    numba_run, torch_run = report["results"]
+    assert numba_run["backend"] == "numba" and numba_run["splats"] == 500
+    assert numba_run["fps"] > 0
+    assert {"project", "bin", "composite", "total"} <= numba_run["ms"].keys()
+    assert numba_run["coverage_alpha_gt_0.5"] > 0.5
+    assert torch_run["psnr_vs_numba_db"] > 60  # the same image up to rounding
+
+
+def test_street_scene_fills_the_view_below_the_skyline():
+    camera = street_camera(64, 48)
+    splats = street_scene(2000, camera, seed=1)
+    assert len(splats) == 2000
+    depth = (splats.means @ camera.world_to_camera[:3, :3].T + camera.world_to_camera[:3, 3])[:, 2]
+    assert depth.min() > 0
+
+
+def test_psnr_of_identical_images_is_infinite_and_falls_with_noise():
+    image = np.random.default_rng(0).random((8, 8, 3))
+    assert psnr(image, image) == float("inf")
+    assert psnr(image, image + 0.1) < psnr(image, image + 0.01)
