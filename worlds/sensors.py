@@ -217,7 +217,7 @@ class SensorRig:
         self.renderer = renderer
         self.lock = lock
         self.sensors: dict[str, Sensor] = {}
-        self._next_due: dict[str, float] = {}
+        self._schedule: dict[str, tuple[float, int]] = {}  # (first tick time, next index)
         for sensor in sensors:
             self.add(sensor)
 
@@ -233,11 +233,13 @@ class SensorRig:
         """Readings of every sensor due at ``sim_time`` (missed periods are skipped)."""
         readings: dict[str, Reading] = {}
         for name, sensor in self.sensors.items():
-            due = self._next_due.get(name, sim_time)
-            if sim_time + DUE_SLACK_S < due:
-                continue
+            start, due_index = self._schedule.setdefault(name, (sim_time, 0))
             period = 1.0 / sensor.rate_hz
-            self._next_due[name] = due + period * (math.floor((sim_time - due) / period) + 1)
+            # Times are start + k * period (no summed periods, so no drift or double fires).
+            if sim_time + DUE_SLACK_S < start + due_index * period:
+                continue
+            elapsed = math.floor((sim_time - start) / period + DUE_SLACK_S)
+            self._schedule[name] = (start, elapsed + 1)
             if isinstance(sensor, Lidar):
                 readings[name] = Reading(name, sim_time, points=sensor.scan(world, self.lock))
             else:
