@@ -12,6 +12,7 @@ import platform
 import statistics
 import time
 from pathlib import Path
+from typing import Any
 
 from drivetwin.orchestrator.planning import Plan, PlanContext
 from drivetwin.orchestrator.session import Session
@@ -55,7 +56,11 @@ def main() -> None:
     scene = crowded_campus(args.assets)
     sim = Simulation(scene)
     planner = _Replay()
-    session = Session(scene, planner, on_change=sim.apply)
+
+    def apply(changed: Scene) -> None:
+        sim.apply(changed)
+
+    session = Session(scene, planner, on_change=apply)
     timings: dict[str, list[float]] = {"add": [], "move": [], "remove": []}
     for _ in range(args.repeats):
         for kind, call in (
@@ -75,7 +80,7 @@ def main() -> None:
         started = time.perf_counter()
         sim.step(steps)
         rates.append(steps / (time.perf_counter() - started))
-    result = {
+    result: dict[str, Any] = {
         "assets": len(session.scene.assets),
         "edit_ms_median": {k: statistics.median(v) for k, v in timings.items()},
         "edit_ms_p95": {k: sorted(v)[int(0.95 * (len(v) - 1))] for k, v in timings.items()},

@@ -10,7 +10,6 @@ from pathlib import Path
 from typing import Any
 
 import click
-
 from drivetwin.orchestrator.planners import UnknownPlannerError, make_planner
 from drivetwin.orchestrator.planning import Planner
 from drivetwin.orchestrator.repl import ChatOptions, dump_tools, interactive, run_lines

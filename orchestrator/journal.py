@@ -14,11 +14,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
-from pydantic import ValidationError
-
 from drivetwin.orchestrator.memory import Memory, Turn
 from drivetwin.worlds.edits import WorldEdit
 from drivetwin.worlds.scene import Scene
+from pydantic import ValidationError
 
 EventKind = Literal["start", "commit", "undo", "redo", "accept", "reject", "load", "turn"]
 

@@ -60,7 +60,7 @@ class LiveWorld:
             camera = chase_camera(self.sim.world, "ego", width=FRAME_WIDTH, height=FRAME_HEIGHT)
             frame = self._renderer.render(camera, session.scene.environment)
             points = Lidar(mount="ego").scan(self.sim.world)
-        written = list(save_frame(frame, target))
+        written = list(save_frame(frame, target).values())
         cloud = target.with_name(target.stem + "_lidar.ply")
         save_pointcloud(points, cloud)
         written.append(cloud)
@@ -69,9 +69,16 @@ class LiveWorld:
         return written
 
     def _enhance(self, frame: Any, session: Session, target: Path) -> list[Path]:
-        from drivetwin.worlds.enhance import enhance_frame_file
+        """The frame repainted by SDXL, kept only if its structure held (else the baseline)."""
+        from drivetwin.worlds.enhance import EnhanceSettings, FrameEnhancer
+        from PIL import Image
 
-        return [enhance_frame_file(frame, session.scene.environment, self._enhance_model or "", target)]
+        if self._enhancer is None:
+            self._enhancer = FrameEnhancer(EnhanceSettings(model=self._enhance_model or ""))
+        result = self._enhancer.enhance(frame.rgb, frame.depth, session.scene.environment)
+        path = target.with_name(target.stem + "_enhanced.png")
+        Image.fromarray(result.image).save(path)
+        return [path]
 
     def close(self) -> None:
         if self.sim is not None:

@@ -10,13 +10,12 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
-from pydantic import BaseModel, ConfigDict, Field
-
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.transaction import first_refusal
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.scene import Scene
+from pydantic import BaseModel, ConfigDict, Field
 
 # Prompts longer than this are refused before any planner sees them.
 MAX_PROMPT_CHARS = 4000

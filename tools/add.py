@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import math
 
-from pydantic import Field
-
 from drivetwin.tools.appearance import resolve_colour
 from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import RuleViolation
@@ -15,6 +13,7 @@ from drivetwin.tools.rules import check_placement
 from drivetwin.worlds.catalog import category, placeable_categories
 from drivetwin.worlds.edits import AddAsset, WorldEdit
 from drivetwin.worlds.scene import Appearance, AssetInstance, PhysicsProps, Pose, Scene
+from pydantic import Field
 
 # One call adds at most this many; bigger layouts are several calls or an arrangement.
 MAX_PER_CALL = 50

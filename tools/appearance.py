@@ -5,13 +5,12 @@ from __future__ import annotations
 import re
 from typing import Literal
 
-from pydantic import Field
-
 from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.move import find_asset
 from drivetwin.worlds.edits import SetEnvironment, UpdateAsset, WorldEdit
 from drivetwin.worlds.scene import Lighting, Scene, Weather, WeatherKind
+from pydantic import Field
 
 COLOURS: dict[str, tuple[float, float, float, float]] = {
     "red": (0.8, 0.1, 0.1, 1.0), "green": (0.15, 0.6, 0.2, 1.0), "blue": (0.15, 0.3, 0.85, 1.0),

@@ -5,8 +5,6 @@ from __future__ import annotations
 import math
 from typing import Literal
 
-from pydantic import Field
-
 from drivetwin.tools.add import new_asset
 from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import RuleViolation
@@ -16,6 +14,7 @@ from drivetwin.worlds.catalog import category, placeable_categories
 from drivetwin.worlds.edits import AddAsset, WorldEdit
 from drivetwin.worlds.scene import AssetInstance, Pose, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along
+from pydantic import Field
 
 Shape = Literal["line", "ring", "grid", "lane_edge"]
 # Free space kept around a ring's target (added to the target's own half-length).
@@ -62,10 +61,7 @@ def _ring(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[floa
         t = resolve_target(scene, args.location.target)
         target_half = t.half_length
         # A ring around an asset encloses the asset and its neighbours added with it.
-        if t.kind == "asset":
-            anchor_xy = (t.x, t.y)
-        else:
-            anchor_xy = (anchor.x, anchor.y)
+        anchor_xy = (t.x, t.y) if t.kind == "asset" else (anchor.x, anchor.y)
     else:
         anchor_xy = (anchor.x, anchor.y)
     largest = max(sizes)

@@ -11,14 +11,12 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import Annotated, Any, ClassVar, Generic, Literal, TypeVar
 
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError
-
 from drivetwin.tools.errors import ToolArgumentError
 from drivetwin.tools.rules import check_edit
-
 from drivetwin.worlds.catalog import nearest_categories, placeable_categories, resolve_category
 from drivetwin.worlds.edits import WorldEdit
 from drivetwin.worlds.scene import Scene
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError
 
 Family = Literal["search", "add", "remove", "position", "move", "arrange", "appearance"]
 FAMILIES: tuple[Family, ...] = (

@@ -12,13 +12,12 @@ import math
 from dataclasses import dataclass
 from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Field
-
 from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.rules import check_placement
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.scene import AssetInstance, Finite, Pose, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, surface_at
+from pydantic import BaseModel, ConfigDict, Field
 
 Relation = Literal[
     "at", "in_front_of", "behind", "left_of", "right_of", "next_to",

@@ -11,8 +11,6 @@ import difflib
 import math
 from typing import Literal
 
-from pydantic import Field
-
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.locate import resolve_target
@@ -34,6 +32,7 @@ from drivetwin.worlds.scene import (
     Scene,
 )
 from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, point_along, surface_at
+from pydantic import Field
 
 BehaviourKind = Literal["parked", "drive_lane", "follow_path", "circle", "cross_road", "jaywalk"]
 # A jaywalker steps out this far ahead of the ego unless told otherwise.

@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import math
 
-from pydantic import Field
-
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.tools.locate import Location, find_free_pose, resolve_anchor
 from drivetwin.tools.move import find_asset
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.edits import UpdateAsset, WorldEdit
 from drivetwin.worlds.scene import Scene
+from pydantic import Field
 
 
 class PlaceArgs(ToolArgs):

@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import math
 
-from pydantic import Field
-
 from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.locate import resolve_target
 from drivetwin.tools.move import find_asset
 from drivetwin.worlds.edits import RemoveAsset, WorldEdit
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Scene
+from pydantic import Field
 
 
 class RemoveArgs(ToolArgs):

@@ -5,8 +5,6 @@ from __future__ import annotations
 import difflib
 import math
 
-from pydantic import Field
-
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError
 from drivetwin.tools.locate import resolve_target
@@ -14,6 +12,7 @@ from drivetwin.tools.move import find_asset
 from drivetwin.worlds.catalog import UnknownCategoryError, catalog, nearest_categories, resolve_category
 from drivetwin.worlds.edits import WorldEdit
 from drivetwin.worlds.scene import Scene
+from pydantic import Field
 
 MAX_LISTED = 20
 

@@ -475,10 +475,9 @@ def nearest_categories(text: str, limit: int = 3) -> list[str]:
 def resolve_category(text: str, allowed: Iterable[str] | None = None) -> str | None:
     """The category that `text` names exactly (name or synonym, any case), or None."""
     key = text.strip().lower().replace("_", " ")
+    candidates: tuple[str, ...] = (key,)
     if key.endswith("s") and key[:-1]:
         candidates = (key, key[:-1], key[:-2] if key.endswith("es") else key)
-    else:
-        candidates = (key,)
     pool = set(allowed) if allowed is not None else None
     for cat in catalog().values():
         if pool is not None and cat.name not in pool:

@@ -8,9 +8,8 @@ from __future__ import annotations
 
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field
-
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Environment, Scene, asset_order
+from pydantic import BaseModel, ConfigDict, Field
 
 
 class _Op(BaseModel):

@@ -23,7 +23,7 @@ from pydantic import (
     model_validator,
 )
 
-SCHEMA_VERSION = 1
+SCHEMA_VERSION: Literal[1] = 1
 
 # Limits on what a Scene may hold; Workers refuse edits that would exceed them.
 MAX_ASSETS = 500

@@ -6,6 +6,7 @@ Workers use these queries for their placement rules ("a car goes on something dr
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -48,7 +49,7 @@ def nearest_on_polyline(x: float, y: float, polyline: Sequence[Point]) -> Polyli
     """The point of `polyline` nearest to (x, y)."""
     best: PolylinePoint | None = None
     travelled = 0.0
-    for (x1, y1), (x2, y2) in zip(polyline, polyline[1:], strict=False):
+    for (x1, y1), (x2, y2) in itertools.pairwise(polyline):
         dx, dy = x2 - x1, y2 - y1
         seg = math.hypot(dx, dy)
         if seg == 0.0:
@@ -69,7 +70,7 @@ def nearest_on_polyline(x: float, y: float, polyline: Sequence[Point]) -> Polyli
 
 def polyline_length(polyline: Sequence[Point]) -> float:
     return sum(
-        math.hypot(x2 - x1, y2 - y1) for (x1, y1), (x2, y2) in zip(polyline, polyline[1:], strict=False)
+        math.hypot(x2 - x1, y2 - y1) for (x1, y1), (x2, y2) in itertools.pairwise(polyline)
     )
 
 
@@ -77,7 +78,7 @@ def point_along(polyline: Sequence[Point], arc_length: float) -> tuple[float, fl
     """(x, y, heading) at `arc_length` metres along the polyline, clamped to its ends."""
     remaining = max(0.0, arc_length)
     last_heading = 0.0
-    for (x1, y1), (x2, y2) in zip(polyline, polyline[1:], strict=False):
+    for (x1, y1), (x2, y2) in itertools.pairwise(polyline):
         seg = math.hypot(x2 - x1, y2 - y1)
         if seg == 0.0:
             continue

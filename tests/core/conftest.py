@@ -1,7 +1,6 @@
 from __future__ import annotations
 
 import pytest
-
 from drivetwin.orchestrator.rule_planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools import ToolRegistry

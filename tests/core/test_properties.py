@@ -1,14 +1,12 @@
 """Property-based: random tool-call sequences keep Scene and MuJoCo consistent; undo is exact."""
 
-from hypothesis import HealthCheck, given, settings
-from hypothesis import strategies as st
-
-from drivetwin.orchestrator.rule_planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.orchestrator.transaction import TransactionError, execute
 from drivetwin.tools import ToolCall, ToolRegistry
 from drivetwin.worlds.campus import build_campus
 from drivetwin.worlds.mujoco_adapter import MujocoWorld, consistency_problems
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 REGISTRY = ToolRegistry.default(plugins=False)
 CAMPUS = build_campus()

@@ -1,7 +1,6 @@
 import math
 
 import pytest
-
 from drivetwin.orchestrator.planning import PlanContext, PlanningError
 from drivetwin.orchestrator.rule_planner import RulePlanner
 

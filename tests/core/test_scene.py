@@ -4,13 +4,12 @@ from pathlib import Path
 
 import jsonschema
 import pytest
-from pydantic import ValidationError
-
 from drivetwin.worlds.campus import build_campus
 from drivetwin.worlds.catalog import catalog, nearest_categories, resolve_category
 from drivetwin.worlds.defaults import UnknownWorldError, list_worlds, load_world
 from drivetwin.worlds.scene import Pose, Scene, SceneFileError, scene_json_schema
 from drivetwin.worlds.surface import surface_at
+from pydantic import ValidationError
 
 
 def test_saved_scene_loads_back_identical(campus, tmp_path):

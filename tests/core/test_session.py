@@ -1,11 +1,9 @@
-import os
 import signal
 import subprocess
 import sys
 import textwrap
 
 import pytest
-
 from drivetwin.orchestrator.journal import Journal, JournalError
 from drivetwin.orchestrator.rule_planner import RulePlanner
 from drivetwin.orchestrator.session import Session, SessionError
@@ -54,7 +52,8 @@ def test_undo_restores_the_previous_scene_exactly_and_redo_reapplies(session):
     session.redo()
     assert session.scene == middle
     with pytest.raises(SessionError, match="nothing to redo"):
-        session.redo(); session.redo()
+        session.redo()
+        session.redo()
 
 
 def test_reject_throws_the_change_away_and_accept_keeps_it(session):

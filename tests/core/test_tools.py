@@ -1,7 +1,6 @@
 import math
 
 import pytest
-
 from drivetwin.tools import RuleViolation, ToolArgumentError, ToolCall, ToolError, UnknownToolError
 from drivetwin.tools.rules import footprints_overlap
 
@@ -141,7 +140,7 @@ def test_skidpad_robot_gets_a_clear_drivable_circle(registry, campus):
 def test_jaywalker_starts_at_the_kerb_ahead_of_the_ego(registry, campus):
     result, scene = run(registry, campus, "add_asset", category="pedestrian", behaviour={"kind": "jaywalk"})
     walker = scene.asset(result.data["ids"][0])
-    (sx, sy), (ex, ey) = walker.behaviour.start, walker.behaviour.end
+    (sx, sy), (_ex, ey) = walker.behaviour.start, walker.behaviour.end
     assert sx > campus.ego.pose.x + 10
     assert sy < campus.ego.pose.y < ey  # the walk crosses the ego's lane
 

@@ -9,14 +9,13 @@ from __future__ import annotations
 
 import math
 
-from pydantic import Field
-
 from drivetwin.tools import Tool, ToolArgs, ToolResult
 from drivetwin.tools.add import new_asset
 from drivetwin.tools.errors import NotFoundError
 from drivetwin.worlds.edits import AddAsset, WorldEdit
 from drivetwin.worlds.scene import Pose, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along
+from pydantic import Field
 
 # A taper of cones spaced like a real lane closure on a low-speed road.
 CONE_SPACING_M = 2.0

@@ -1,0 +1,201 @@
+"""Jr. managers: one per tool family, from one Requirement to one checked ToolCall.
+
+The requirement's free words are grounded first (catalog, landmarks, memory); strong
+matches narrow the schema's enums, all matches become hints in the prompt and lines in the
+trace. The answer is parsed by the tool's own pydantic model and dry-run against the scene
+after the calls planned before it; a refusal goes back to the model as a message.
+"""
+
+from __future__ import annotations
+
+import re
+import time
+from dataclasses import dataclass, field
+
+from drivetwin.orchestrator.backends import Backend, Message
+from drivetwin.orchestrator.grounding import Grounder, Match
+from drivetwin.orchestrator.jr_schema import WorldNames, call_schema, signature
+from drivetwin.orchestrator.managers import Answer, Requirement, ask
+from drivetwin.orchestrator.planning import PlanContext, PlanningError, TraceStep
+from drivetwin.prompts.templates import as_json, jr_examples, render
+from drivetwin.tools.base import Family, ToolCall
+from drivetwin.tools.errors import ToolError
+
+JR_MAX_TOKENS = 200
+# A grounded name this sure narrows the enum to the grounded names; below it, it is a hint.
+NARROW_SCORE = 0.75
+# Grounded alternatives kept in a narrowed enum (the best one plus near misses).
+NARROW_KEEP = 3
+
+# Words in the request that say which relation a location has; first match wins.
+RELATION_WORDS: tuple[tuple[str, str], ...] = (
+    (r"in front of|ahead of|before", "in_front_of"),
+    (r"behind|in back of", "behind"),
+    (r"left of", "left_of"),
+    (r"right of", "right_of"),
+    (r"next to|beside|by the|near|around|close to", "next_to"),
+    (r"sidewalk|pavement|footpath", "on_sidewalk"),
+    (r"in (the )?lane|on the road", "in_lane"),
+    (r"\bat\b|\bin\b", "at"),
+)
+_PLACE_FAMILIES: tuple[Family, ...] = ("add", "arrange", "position", "move", "search")
+_ASSET_FAMILIES: tuple[Family, ...] = ("remove", "position", "move", "appearance", "search")
+
+
+@dataclass
+class Grounding:
+    """What a requirement's words were grounded to, and the names its schema allows."""
+
+    names: WorldNames
+    matches: list[Match] = field(default_factory=list)
+    relation: str | None = None
+
+    def lines(self) -> list[str]:
+        found = [str(m) for m in self.matches]
+        if self.relation:
+            found.append(f"relation words -> {self.relation}")
+        return found
+
+
+def _narrow(full: list[str], matches: list[Match]) -> list[str]:
+    strong = [m.name for m in matches if m.score >= NARROW_SCORE and m.name in full]
+    return list(dict.fromkeys(strong))[: max(NARROW_KEEP, len(strong))] if strong else full
+
+
+def ground_requirement(
+    requirement: Requirement, prompt: str, context: PlanContext, grounder: Grounder
+) -> Grounding:
+    """Ground the requirement's words and narrow the world's names where grounding is sure."""
+    scene, memory = context.scene, context.memory
+    names = WorldNames.of(scene)
+    matches: list[Match] = []
+    kind = requirement.kind
+    what, where = requirement.what.strip(), requirement.where.strip()
+    if what and kind in ("add", "arrange", "search", "remove", "appearance"):
+        category = grounder.rank(what, "category", scene, NARROW_KEEP)
+        matches += [m for m in category if m.score >= MATCH_FLOOR]
+        names.categories = _narrow(names.categories, category)
+    if what and kind in _ASSET_FAMILIES:
+        assets = grounder.asset_reference(what, memory, scene)
+        matches += assets[:NARROW_KEEP]
+        names.assets = _narrow(names.assets, assets) if assets else names.assets
+    if where and kind in _PLACE_FAMILIES:
+        place = grounder.place_reference(where, memory, scene)
+        ranked = [place] if place is not None else grounder.rank(where, "place", scene, NARROW_KEEP)
+        ranked += [] if place is not None else grounder.rank(where, "asset", scene, 1)
+        ranked = [m for m in ranked if m.score >= MATCH_FLOOR]
+        matches += ranked
+        names.places = _narrow(names.places, ranked)
+    relation = next(
+        (rel for pattern, rel in RELATION_WORDS if re.search(pattern, prompt.lower())), None
+    )
+    return Grounding(names, matches, relation)
+
+
+# Matches below this are noise and not shown to the model or the trace.
+MATCH_FLOOR = 0.45
+
+
+def render_requirement(requirement: Requirement, grounding: Grounding) -> str:
+    """The requirement as the Jr. manager reads it, grounded names after arrows."""
+
+    def side(label: str, text: str, kinds: tuple[str, ...]) -> str:
+        hits = [m.name for m in grounding.matches if m.text == text and m.kind in kinds]
+        return f"{label}: {text}" + (f" -> {', '.join(hits[:NARROW_KEEP])}" if hits else "")
+
+    return " | ".join(
+        [
+            requirement.kind,
+            side("what", requirement.what, ("category", "asset")),
+            side("where", requirement.where, ("place", "asset")),
+            f"how: {requirement.how}",
+        ]
+    )
+
+
+class JrManager:
+    """Plans one requirement of one family into one ToolCall, checked against the scene."""
+
+    def __init__(self, family: Family, backend: Backend, grounder: Grounder) -> None:
+        self.family = family
+        self.backend = backend
+        self.grounder = grounder
+
+    def messages(self, requirement_text: str, grounding: Grounding, context: PlanContext) -> list[Message]:
+        tools = context.registry.family(self.family)
+        hints = [f"Grounded: {'; '.join(grounding.lines())}"] if grounding.lines() else []
+        system = render(
+            "jr_manager.txt",
+            family=self.family,
+            tools="\n".join(signature(t, grounding.names) for t in tools),
+            hints="\n".join(hints),
+        )
+        messages: list[Message] = [Message(role="system", content=system)]
+        for example in jr_examples().get(self.family, ()):
+            messages.append(Message(role="user", content=example.requirement))
+            messages.append(Message(role="assistant", content=as_json(example.call)))
+        messages.append(Message(role="user", content=requirement_text))
+        return messages
+
+    def call(
+        self,
+        requirement: Requirement,
+        prompt: str,
+        context: PlanContext,
+        planned: list[ToolCall],
+    ) -> tuple[ToolCall, list[TraceStep]]:
+        """The call for `requirement`, valid and accepted by a dry run after `planned`."""
+        started = time.perf_counter()
+        grounding = ground_requirement(requirement, prompt, context, self.grounder)
+        text = render_requirement(requirement, grounding)
+        grounded = TraceStep(
+            level=f"grounding:{self.family}",
+            input=str(requirement),
+            output="\n".join(grounding.lines()) or "(nothing to ground)",
+            seconds=time.perf_counter() - started,
+        )
+        tools = context.registry.family(self.family)
+        if not tools:
+            raise PlanningError(f"no tool of the {self.family!r} family is registered")
+
+        def validate(data: object) -> ToolCall:
+            call = ToolCall.model_validate(data)
+            try:
+                tool = context.registry.get(call.tool)
+                if tool.family != self.family:
+                    raise ValueError(
+                        f"tool {call.tool!r} is not a {self.family} tool; use one of: "
+                        + ", ".join(t.name for t in tools)
+                    )
+                args = tool.parse(call.args).model_dump(mode="json", exclude_unset=True)
+            except ToolError as exc:
+                raise ValueError(str(exc)) from exc
+            checked = ToolCall(tool=call.tool, args=args)
+            refusal = context.check([*planned, checked])
+            if refusal is not None:
+                raise ValueError(f"the world refused it: {refusal}")
+            return checked
+
+        answer: Answer[ToolCall] = ask(
+            self.backend,
+            self.messages(text, grounding, context),
+            call_schema(tools, grounding.names),
+            validate,
+            step=f"Jr. manager ({self.family})",
+            max_tokens=JR_MAX_TOKENS,
+        )
+        output = str(answer.value)
+        if answer.refusals:
+            output += "\nrefused on the way: " + " | ".join(answer.refusals)
+        step = TraceStep(
+            level=f"jr_manager:{self.family}",
+            input=text,
+            output=output,
+            seconds=answer.seconds,
+            retries=answer.retries,
+            tokens=answer.tokens,
+        )
+        return answer.value, [grounded, step]
+
+
+__all__ = ["Grounding", "JrManager", "ground_requirement", "render_requirement"]

@@ -1,0 +1,152 @@
+"""The answer schema of a Jr. manager: its family's tools, with the world's names as enums.
+
+Built per scene from each tool's own pydantic argument model: references are inlined,
+nullable fields become plain optional ones, rarely needed fields are left out so that a tiny
+model is not tempted to fill them, and every field that names something in the world
+(a category, a landmark, a lane, an asset) becomes an enum of the names that exist. A
+constrained decoder then cannot name what does not exist.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from drivetwin.tools.appearance import COLOURS, TIME_PRESETS
+from drivetwin.tools.base import Tool
+from drivetwin.worlds.catalog import placeable_categories
+from drivetwin.worlds.scene import Scene
+
+# Fields a Jr. manager is not offered (the tool still accepts them from other planners):
+# free geometry and fine timing that a short prompt never states and a small model invents.
+OMITTED_FIELDS = frozenset({"waypoints", "start_time", "label", "exposure", "ahead", "clockwise"})
+# Longest free string the model may write where no enum applies.
+FREE_TEXT_CHARS = 40
+CLOCK_PATTERN = "^([01][0-9]|2[0-3]):[0-5][0-9]$"
+
+
+@dataclass
+class WorldNames:
+    """The names a Jr. manager may use, each list possibly narrowed by grounding."""
+
+    categories: list[str]
+    places: list[str]
+    assets: list[str]
+    lanes: list[str]
+    notes: list[str] = field(default_factory=list)
+
+    @classmethod
+    def of(cls, scene: Scene) -> WorldNames:
+        """Every name in the scene: placeable categories, landmarks, lanes, asset ids."""
+        lanes = [lane.id for lane in scene.roads.lanes]
+        assets = [a.id for a in scene.all_assets()]
+        places = [lm.name for lm in scene.landmarks] + lanes + assets
+        return cls(placeable_categories(), places, assets, lanes)
+
+
+def _enum(values: list[str]) -> dict[str, Any]:
+    return {"type": "string", "enum": list(dict.fromkeys(values))}
+
+
+def _named(prop: str, names: WorldNames) -> dict[str, Any] | None:
+    """The enum for a property whose name says it names something in the world."""
+    if prop in ("category",):
+        return _enum(names.categories)
+    if prop in ("categories",):
+        return {"type": "array", "items": _enum(names.categories), "minItems": 1, "maxItems": 4}
+    if prop in ("target", "near", "centre"):
+        return _enum(names.places)
+    if prop == "asset":
+        return _enum(names.assets)
+    if prop == "assets":
+        return {"type": "array", "items": _enum(names.assets), "maxItems": 20}
+    if prop == "lane":
+        return _enum(names.lanes)
+    if prop == "colour":
+        return _enum(list(COLOURS))
+    if prop == "time":
+        return {"anyOf": [_enum(list(TIME_PRESETS)), {"type": "string", "pattern": CLOCK_PATTERN}]}
+    return None
+
+
+def _slim(node: Any, defs: dict[str, Any], names: WorldNames, prop: str | None = None) -> Any:
+    """`node` with refs inlined, nulls dropped, enums injected and noise removed."""
+    if not isinstance(node, dict):
+        return node
+    if "$ref" in node:
+        return _slim(defs[node["$ref"].split("/")[-1]], defs, names, prop)
+    if prop is not None:
+        named = _named(prop, names)
+        if named is not None:
+            return named
+    if "anyOf" in node:
+        branches = [b for b in node["anyOf"] if b.get("type") != "null"]
+        if len(branches) == 1:
+            return _slim(branches[0], defs, names, prop)
+        return {"anyOf": [_slim(b, defs, names) for b in branches]}
+    out: dict[str, Any] = {}
+    for key, value in node.items():
+        if key in ("title", "description", "default", "$defs", "examples"):
+            continue
+        if key == "properties":
+            out[key] = {
+                name: _slim(sub, defs, names, name)
+                for name, sub in value.items()
+                if name not in OMITTED_FIELDS
+            }
+        elif key == "items":
+            out[key] = _slim(value, defs, names)
+        elif key == "required":
+            out[key] = [r for r in value if r not in OMITTED_FIELDS]
+        else:
+            out[key] = value
+    if out.get("type") == "string" and "enum" not in out and "pattern" not in out:
+        out.setdefault("maxLength", FREE_TEXT_CHARS)
+    if out.get("type") == "object":
+        out["additionalProperties"] = False
+    return out
+
+
+def args_schema(tool: Tool[Any], names: WorldNames) -> dict[str, Any]:
+    """The JSON Schema of `tool`'s arguments as a Jr. manager may fill them."""
+    raw = tool.Args.model_json_schema()
+    slimmed: dict[str, Any] = _slim(raw, raw.get("$defs", {}), names)
+    return slimmed
+
+
+def call_schema(tools: list[Tool[Any]], names: WorldNames) -> dict[str, Any]:
+    """One call of any of `tools`: {"tool": name, "args": {...}}, as an anyOf by tool."""
+    options = [
+        {
+            "type": "object",
+            "properties": {"tool": {"const": tool.name}, "args": args_schema(tool, names)},
+            "required": ["tool", "args"],
+            "additionalProperties": False,
+        }
+        for tool in tools
+    ]
+    return options[0] if len(options) == 1 else {"anyOf": options}
+
+
+def signature(tool: Tool[Any], names: WorldNames) -> str:
+    """A one-line description of a tool and its arguments for the Jr. manager's prompt."""
+    props = args_schema(tool, names).get("properties", {})
+    parts = []
+    for name, sub in props.items():
+        inner = sub.get("properties")
+        if inner:
+            parts.append(f"{name}{{{', '.join(_arg(k, v) for k, v in inner.items())}}}")
+        else:
+            parts.append(_arg(name, sub))
+    return f"{tool.name}({', '.join(parts)}): {tool.description}"
+
+
+def _arg(name: str, sub: dict[str, Any]) -> str:
+    values = sub.get("enum")
+    # Short enums are worth showing (relations, shapes); long ones live in the grammar.
+    if values is not None and len(values) <= 10:
+        return f"{name}: {'|'.join(str(v) for v in values)}"
+    return name
+
+
+__all__ = ["OMITTED_FIELDS", "WorldNames", "args_schema", "call_schema", "signature"]

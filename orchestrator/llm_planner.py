@@ -1,0 +1,155 @@
+"""The LLM manager hierarchy as a Planner: Sr. manager -> Requirements -> Jr. managers -> calls.
+
+    planner = make_planner("llm", backend="embedded", model="smollm2-135m")
+    plan = planner.plan("make it rain", session.context())
+    print(format_trace(plan))
+
+Every fault ends in a PlanningError with a plain message (the session then leaves the scene
+unchanged): backend down or slow, answers that are cut off, not JSON, name a tool that does
+not exist or break a placement rule after the retry budget, and prompts that try to
+rewrite the planner's instructions.
+"""
+
+from __future__ import annotations
+
+import re
+import time
+from typing import Any
+
+from drivetwin.orchestrator.backends import Backend, BackendError, load_backend
+from drivetwin.orchestrator.grounding import Grounder
+from drivetwin.orchestrator.jr_manager import JrManager
+from drivetwin.orchestrator.planning import Plan, PlanContext, PlanningError, TraceStep
+from drivetwin.orchestrator.sr_manager import SrManager
+from drivetwin.prompts.templates import prompt_version
+from drivetwin.tools.base import Family, ToolCall
+
+DEFAULT_BACKEND = "embedded"
+DEFAULT_MODEL = "smollm2-135m"
+# Confidence of an LLM plan that needed no retries; each retry lowers it.
+BASE_CONFIDENCE = 0.9
+RETRY_PENALTY = 0.15
+MIN_CONFIDENCE = 0.3
+
+# Text that addresses the planner instead of describing a scene change. Matching is on
+# purpose broad: a false alarm costs a rephrase, a miss could cost the user's scene.
+_INJECTION = re.compile(
+    r"(ignore|disregard|forget|override)\b.{0,40}\b(instruction|rule|prompt|guideline|above|previous)"
+    r"|system prompt|you are now|new instructions|developer mode|jailbreak"
+    r"|<\|im_start\|>|<start_of_turn>|\[/?INST\]"
+    r"|\b(import os|subprocess|os\.system|__import__|eval\(|exec\()",
+    re.IGNORECASE,
+)
+
+
+def injection_reason(prompt: str) -> str | None:
+    """Why `prompt` looks like an attempt to instruct the planner, or None."""
+    found = _INJECTION.search(prompt)
+    if found is None:
+        return None
+    return f"it contains {found.group(0)!r}"
+
+
+class LlmPlanner:
+    """The Sr./Jr. manager hierarchy over one LLM backend."""
+
+    name = "llm"
+
+    def __init__(
+        self,
+        backend: Backend | str = DEFAULT_BACKEND,
+        model: str | None = DEFAULT_MODEL,
+        grounder: Grounder | None = None,
+        **backend_options: Any,
+    ) -> None:
+        self._backend = backend if isinstance(backend, Backend) else None
+        self._backend_name = backend if isinstance(backend, str) else backend.name
+        self._model = model
+        self._options = backend_options
+        self.grounder = grounder or Grounder()
+
+    @property
+    def backend(self) -> Backend:
+        """The backend, opened on first use so that a missing model is a planning error."""
+        if self._backend is None:
+            try:
+                self._backend = load_backend(self._backend_name, self._model, **self._options)
+            except BackendError as exc:
+                raise PlanningError(f"cannot open the language model: {exc}") from exc
+        return self._backend
+
+    @property
+    def label(self) -> str:
+        """backend/model, for reports."""
+        model = self._backend.model if self._backend is not None else self._model
+        return f"{self._backend_name}/{model}"
+
+    def plan(self, prompt: str, context: PlanContext) -> Plan:
+        """Requirements from the Sr. manager, one checked call per requirement from Jr. managers."""
+        reason = injection_reason(prompt)
+        if reason is not None:
+            raise PlanningError(
+                f"the prompt was not run because it tries to give the planner instructions "
+                f"({reason}); describe the change you want in the scene instead"
+            )
+        backend = self.backend
+        trace: list[TraceStep] = []
+        started = time.perf_counter()
+        requirements, sr_step = SrManager(backend, self.grounder).requirements(prompt, context)
+        trace.append(sr_step)
+        calls: list[ToolCall] = []
+        juniors: dict[Family, JrManager] = {}
+        for requirement in requirements:
+            junior = juniors.setdefault(
+                requirement.kind, JrManager(requirement.kind, backend, self.grounder)
+            )
+            call, steps = junior.call(requirement, prompt, context, calls)
+            calls.append(call)
+            trace += steps
+        retries = sum(step.retries for step in trace)
+        tokens = sum(step.tokens for step in trace)
+        trace.append(
+            TraceStep(
+                level="llm_planner",
+                input=f"{self.label}, prompts {prompt_version()}",
+                output=f"{len(calls)} call(s), all accepted by a dry run",
+                seconds=time.perf_counter() - started,
+                retries=retries,
+                tokens=tokens,
+            )
+        )
+        confidence = max(MIN_CONFIDENCE, BASE_CONFIDENCE - RETRY_PENALTY * retries)
+        return Plan(
+            calls=calls,
+            planner=self.name,
+            confidence=confidence,
+            prompt_version=prompt_version(),
+            trace=trace,
+            retries=retries,
+            tokens=tokens,
+        )
+
+
+def format_trace(plan: Plan) -> str:
+    """Each planning level's input and output, time, retries and tokens, for `--explain`."""
+    lines = [
+        f"planner {plan.planner}, confidence {plan.confidence:.2f}, "
+        f"prompts {plan.prompt_version or '-'}, {plan.retries} retries, {plan.tokens} tokens"
+    ]
+    for step in plan.trace:
+        cost = f"{step.seconds * 1000:.0f} ms"
+        if step.retries:
+            cost += f", {step.retries} retries"
+        if step.tokens:
+            cost += f", {step.tokens} tokens"
+        lines.append(f"[{step.level}] {cost}")
+        for label, text in (("in ", step.input), ("out", step.output)):
+            for index, line in enumerate(text.splitlines() or [""]):
+                lines.append(f"  {label if index == 0 else '   '}: {line}")
+    if plan.calls:
+        lines.append("calls:")
+        lines += [f"  {call}" for call in plan.calls]
+    return "\n".join(lines)
+
+
+__all__ = ["LlmPlanner", "format_trace", "injection_reason"]

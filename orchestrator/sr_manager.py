@@ -1,0 +1,79 @@
+"""The Sr. manager: from a prompt in context to a list of typed Requirements.
+
+Its prompt holds the rules (prompts/sr_manager.txt), the world's places, a bounded view of
+the conversation, and the few-shot examples closest in meaning to the request.
+"""
+
+from __future__ import annotations
+
+from drivetwin.orchestrator.backends import Backend, Message
+from drivetwin.orchestrator.grounding import Grounder
+from drivetwin.orchestrator.managers import Answer, Requirement, Requirements, ask, requirements_schema
+from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning import PlanContext, TraceStep
+from drivetwin.prompts.templates import as_json, render, sr_examples
+
+# Few-shot examples per prompt: enough to show the pattern, few enough for a 4k context.
+SR_EXAMPLES = 4
+SR_MAX_TOKENS = 160
+# Characters of conversation memory shown to the Sr. manager (the rest is summarised).
+MEMORY_CHARS = 600
+
+
+def memory_view(memory: Memory, limit: int = MEMORY_CHARS) -> str:
+    """The newest part of the conversation, within `limit` characters, plus the last edit."""
+    text = memory.render()
+    if len(text) > limit:
+        text = "…" + text[-limit:]
+    lines = [text or "(nothing yet)"]
+    added = memory.last_added()
+    if added:
+        lines.append(f"last added: {', '.join(added[:6])}")
+    return "\n".join(lines)
+
+
+class SrManager:
+    """Turns a prompt into Requirements with one (constrained, validated) LLM answer."""
+
+    def __init__(self, backend: Backend, grounder: Grounder) -> None:
+        self.backend = backend
+        self.grounder = grounder
+
+    def messages(self, prompt: str, context: PlanContext) -> list[Message]:
+        """The chat the model sees: rules and context, then retrieved examples, then the request."""
+        places = ", ".join(lm.name for lm in context.scene.landmarks)
+        system = render("sr_manager.txt", places=places, memory=memory_view(context.memory))
+        bank = sr_examples()
+        chosen = self.grounder.nearest(prompt, [e.request for e in bank], SR_EXAMPLES)
+        messages: list[Message] = [Message(role="system", content=system)]
+        # Most similar last, nearest the real request, where small models copy from.
+        for index in reversed(chosen):
+            example = bank[index]
+            messages.append(Message(role="user", content=f"Request: {example.request}"))
+            reply = as_json({"requirements": example.requirements})
+            messages.append(Message(role="assistant", content=reply))
+        messages.append(Message(role="user", content=f"Request: {prompt}"))
+        return messages
+
+    def requirements(self, prompt: str, context: PlanContext) -> tuple[list[Requirement], TraceStep]:
+        """The prompt's requirements and the trace step that explains them."""
+        answer: Answer[Requirements] = ask(
+            self.backend,
+            self.messages(prompt, context),
+            requirements_schema(),
+            Requirements.model_validate,
+            step="Sr. manager",
+            max_tokens=SR_MAX_TOKENS,
+        )
+        found = answer.value.requirements
+        output = "\n".join(str(r) for r in found)
+        if answer.refusals:
+            output += "\nrefused on the way: " + " | ".join(answer.refusals)
+        step = TraceStep(
+            level="sr_manager", input=prompt, output=output, seconds=answer.seconds,
+            retries=answer.retries, tokens=answer.tokens,
+        )
+        return found, step
+
+
+__all__ = ["SrManager", "memory_view"]
