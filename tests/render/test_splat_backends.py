@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.rasterize import (
     ALPHA_MAX,

@@ -5,7 +5,6 @@ from __future__ import annotations
 import json
 
 import numpy as np
-
 from drivetwin.worlds.render.bench_splats import main, psnr, street_camera, street_scene
 
 

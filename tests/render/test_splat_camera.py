@@ -6,7 +6,6 @@ import math
 
 import numpy as np
 import pytest
-
 from drivetwin.worlds.render.camera import Camera, CameraError
 
 

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.rasterize import rasterize
 from drivetwin.worlds.render.splats import SH_C0, Splats, SplatsError
@@ -88,7 +87,7 @@ def test_from_points_gives_duplicate_points_a_finite_scale():
 
 
 def test_from_points_refuses_colours_out_of_range():
-    with pytest.raises(SplatsError, match="uint8 0..255 or floats in"):
+    with pytest.raises(SplatsError, match=r"uint8 0\.\.255 or floats in"):
         Splats.from_points(np.random.rand(10, 3), np.full((10, 3), 2.0))
 
 
