@@ -17,9 +17,7 @@ from drivetwin.evals.outcome import Outcome
 from drivetwin.tools.base import ToolCall
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
-Task = Literal[
-    "search", "addition", "removal", "positioning", "moving", "arrangement", "appearance"
-]
+Task = Literal["search", "addition", "removal", "positioning", "moving", "arrangement", "appearance"]
 TASKS: tuple[Task, ...] = (
     "search",
     "addition",

@@ -27,10 +27,11 @@ from drivetwin.evals.outcome import (
     find_target,
     select,
 )
+from drivetwin.tools.locate import Target
 from drivetwin.worlds.catalog import catalog, nearest_categories
 from drivetwin.worlds.scene import AssetInstance, WeatherKind
 from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, surface_at
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, model_validator
 
 Scope = Literal["touched", "added", "all"]
 SurfaceName = Literal["building", "lane", "crossing", "paved", "sidewalk", "ground", "drivable"]
@@ -104,9 +105,7 @@ class _Selecting(_Check):
             return []
         return [self.category] if isinstance(self.category, str) else list(self.category)
 
-    def _judge(
-        self, outcome: Outcome, test: Callable[[AssetInstance], tuple[bool, str]], what: str
-    ) -> CheckResult:
+    def _judge(self, outcome: Outcome, test: Callable[[AssetInstance], tuple[bool, str]], what: str) -> CheckResult:
         chosen = select(outcome, self.categories, self.asset, self.scope)
         who = describe_selection(self.categories, self.asset, self.scope)
         if not chosen:
@@ -119,9 +118,7 @@ class _Selecting(_Check):
             return self._result(True, f"{len(good)} of {len(chosen)} {who} {what}")
         example = f"; e.g. {bad[0][0].id} {bad[0][1]}" if bad else ""
         need = "all" if self.require_all else f"at least {self.min_count}"
-        return self._result(
-            False, f"{len(good)} of {len(chosen)} {who} {what}, need {need}{example}"
-        )
+        return self._result(False, f"{len(good)} of {len(chosen)} {who} {what}, need {need}{example}")
 
 
 def _count(outcome_scene_assets: list[AssetInstance], categories: list[str]) -> int:
@@ -140,9 +137,7 @@ class CountCheck(_Check):
         cats = [self.category] if isinstance(self.category, str) else list(self.category or [])
         n = _count(outcome.after.assets, cats)
         ok = (self.min is None or n >= self.min) and (self.max is None or n <= self.max)
-        return self._result(
-            ok, f"{n} {'/'.join(cats) or 'assets'} after, wanted {_range(self.min, self.max)}"
-        )
+        return self._result(ok, f"{n} {'/'.join(cats) or 'assets'} after, wanted {_range(self.min, self.max)}")
 
 
 class CountDeltaCheck(_Check):
@@ -159,8 +154,7 @@ class CountDeltaCheck(_Check):
         ok = (self.min is None or delta >= self.min) and (self.max is None or delta <= self.max)
         return self._result(
             ok,
-            f"{'/'.join(cats) or 'assets'} changed by {delta:+d}, "
-            f"wanted {_range(self.min, self.max)}",
+            f"{'/'.join(cats) or 'assets'} changed by {delta:+d}, wanted {_range(self.min, self.max)}",
         )
 
 
@@ -173,23 +167,34 @@ def _range(lo: int | float | None, hi: int | float | None) -> str:
 
 
 class NearCheck(_Selecting):
-    """Assets within a distance of a landmark, asset, lane or building."""
+    """Assets within a distance of a landmark, asset, lane or building, or of a point."""
 
     kind: Literal["near"] = "near"
-    target: str
+    target: str | None = Field(None, description="landmark, asset id, lane id or building")
+    point: tuple[float, float] | None = Field(None, description="or: x, y in metres")
     within: float = Field(10.0, gt=0.0, description="metres from the target's point or outline")
 
+    @model_validator(mode="after")
+    def _one_place(self) -> NearCheck:
+        if (self.target is None) == (self.point is None):
+            raise ValueError("a near check needs exactly one of target and point")
+        return self
+
     def evaluate(self, outcome: Outcome) -> CheckResult:
-        try:
-            target = find_target(outcome, self.target)
-        except TargetNotFound as exc:
-            return self._result(False, str(exc))
+        if self.point is not None:
+            x, y = self.point
+            target = Target(f"({x:g}, {y:g})", "centre", x, y, 0.0)
+        else:
+            try:
+                target = find_target(outcome, str(self.target))
+            except TargetNotFound as exc:
+                return self._result(False, str(exc))
 
         def test(a: AssetInstance) -> tuple[bool, str]:
             d = distance_to_target(a.pose.x, a.pose.y, target, outcome.after)
             return d <= self.within, f"is {d:.1f} m away"
 
-        return self._judge(outcome, test, f"within {self.within:g} m of {self.target}")
+        return self._judge(outcome, test, f"within {self.within:g} m of {target.name}")
 
 
 class RelativeCheck(_Selecting):
@@ -410,17 +415,13 @@ class AppearanceCheck(_Selecting):
 
         def test(a: AssetInstance) -> tuple[bool, str]:
             look = a.appearance
-            if colours and not any(
-                matches_colour(look.rgba, c, self.colour_tolerance) for c in colours
-            ):
+            if colours and not any(matches_colour(look.rgba, c, self.colour_tolerance) for c in colours):
                 return False, f"has colour {look.rgba or 'default'}"
             if self.material is not None and look.material != self.material:
                 return False, f"is {look.material}"
             return True, "looks right"
 
-        return self._judge(
-            outcome, test, f"looking {'/'.join(colours)} {self.material or ''}".strip()
-        )
+        return self._judge(outcome, test, f"looking {'/'.join(colours)} {self.material or ''}".strip())
 
 
 class MovedCheck(_Check):
@@ -443,9 +444,7 @@ class MovedCheck(_Check):
         turn = math.degrees(angle_between(b.pose.yaw, a.pose.yaw))
         problems = []
         if d < self.min_distance or (self.max_distance is not None and d > self.max_distance):
-            problems.append(
-                f"moved {d:.1f} m, wanted {_range(self.min_distance, self.max_distance)}"
-            )
+            problems.append(f"moved {d:.1f} m, wanted {_range(self.min_distance, self.max_distance)}")
         if self.direction is not None and d > 1e-6:
             want = a.pose.yaw + _DIRECTION_OFFSET[self.direction]
             off = math.degrees(angle_between(math.atan2(dy, dx), want))
@@ -468,32 +467,24 @@ class ExistsCheck(_Check):
     def evaluate(self, outcome: Outcome) -> CheckResult:
         wrong = [i for i in self.assets if (outcome.after.asset(i) is not None) != self.present]
         state = "present" if self.present else "gone"
-        return self._result(
-            not wrong, f"not {state}: {', '.join(wrong)}" if wrong else f"all {state}"
-        )
+        return self._result(not wrong, f"not {state}: {', '.join(wrong)}" if wrong else f"all {state}")
 
 
 class UnchangedExceptCheck(_Check):
     """Nothing changed except assets of the listed categories or ids (and weather if allowed)."""
 
     kind: Literal["unchanged_except"] = "unchanged_except"
-    categories: Annotated[list[str], AfterValidator(_known_categories)] = Field(
-        default_factory=list
-    )
+    categories: Annotated[list[str], AfterValidator(_known_categories)] = Field(default_factory=list)
     assets: list[str] = Field(default_factory=list)
     environment: bool = False
 
     def evaluate(self, outcome: Outcome) -> CheckResult:
         by_id = {a.id: a for a in [*outcome.before.all_assets(), *outcome.after.all_assets()]}
         moved = outcome.added_ids() | outcome.removed_ids() | outcome.changed_ids()
-        extra = sorted(
-            i for i in moved if i not in self.assets and by_id[i].category not in self.categories
-        )
+        extra = sorted(i for i in moved if i not in self.assets and by_id[i].category not in self.categories)
         if not self.environment and outcome.before.environment != outcome.after.environment:
             extra.append("environment")
-        return self._result(
-            not extra, f"also changed: {', '.join(extra[:6])}" if extra else "nothing else changed"
-        )
+        return self._result(not extra, f"also changed: {', '.join(extra[:6])}" if extra else "nothing else changed")
 
 
 class AnswerContainsCheck(_Check):
@@ -516,9 +507,7 @@ class AnswerContainsCheck(_Check):
         if wrong:
             problems.append(f"wrongly mentions {', '.join(wrong)}")
         short = text.strip().replace("\n", " | ")[:120]
-        return self._result(
-            not problems, "; ".join(problems) + f" (answer: {short!r})" if problems else "answer ok"
-        )
+        return self._result(not problems, "; ".join(problems) + f" (answer: {short!r})" if problems else "answer ok")
 
 
 class StatusCheck(_Check):

@@ -98,18 +98,14 @@ def _run_in_process(case_json: str, trial: int) -> str:
     return _WORKER.run(case_json, trial)
 
 
-def run_inline(
-    jobs: Iterable[Job], planner_name: str, options: dict[str, Any], on_record: OnRecord
-) -> None:
+def run_inline(jobs: Iterable[Job], planner_name: str, options: dict[str, Any], on_record: OnRecord) -> None:
     """Run every job here, one after another (one worker: no process start-up cost)."""
     worker = TrialWorker(planner_name, options)
     for case_json, trial in jobs:
         on_record(TrialRecord.model_validate_json(worker.run(case_json, trial)))
 
 
-def run_local(
-    jobs: list[Job], planner_name: str, options: dict[str, Any], workers: int, on_record: OnRecord
-) -> None:
+def run_local(jobs: list[Job], planner_name: str, options: dict[str, Any], workers: int, on_record: OnRecord) -> None:
     """Run jobs in `workers` spawned processes; a Ctrl-C stops them and keeps what finished."""
     if workers <= 1:
         run_inline(jobs, planner_name, options, on_record)

@@ -87,9 +87,7 @@ def _nearest_gaps(pts: np.ndarray) -> list[float]:
     return [float(d) for d in dist.min(axis=1)]
 
 
-def _segment_crosses(
-    a: tuple[float, float], b: tuple[float, float], line: Sequence[tuple[float, float]]
-) -> bool:
+def _segment_crosses(a: tuple[float, float], b: tuple[float, float], line: Sequence[tuple[float, float]]) -> bool:
     """Whether segment a-b ends on opposite sides of a polyline (and within its reach)."""
     na = nearest_on_polyline(a[0], a[1], line)
     nb = nearest_on_polyline(b[0], b[1], line)
@@ -151,9 +149,7 @@ def _walk_path(asset: AssetInstance) -> list[tuple[float, float]] | None:
     return None
 
 
-def matches_colour(
-    rgba: tuple[float, float, float, float] | None, colour: str, tolerance: float
-) -> bool:
+def matches_colour(rgba: tuple[float, float, float, float] | None, colour: str, tolerance: float) -> bool:
     """Whether an asset's colour override is within `tolerance` per channel of a named colour."""
     if rgba is None:
         return False

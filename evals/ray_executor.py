@@ -18,9 +18,7 @@ class RayUnavailable(RuntimeError):
     """Ray is not installed; the message names the extra that installs it."""
 
 
-def run_ray(
-    jobs: list[Job], planner_name: str, options: dict[str, Any], workers: int, on_record: OnRecord
-) -> None:
+def run_ray(jobs: list[Job], planner_name: str, options: dict[str, Any], workers: int, on_record: OnRecord) -> None:
     """Run jobs on `workers` Ray actors and hand each record over as it arrives."""
     try:
         import ray

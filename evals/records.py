@@ -132,9 +132,7 @@ def _parse_lines(path: Path) -> tuple[RunHeader | None, list[TrialRecord], int]:
                         seen.add(record.key)
                         records.append(record)
             except (json.JSONDecodeError, ValidationError, AttributeError) as exc:
-                raise RecordsError(
-                    f"{path}: line at byte {offset - len(raw)} is not a record: {exc}"
-                ) from exc
+                raise RecordsError(f"{path}: line at byte {offset - len(raw)} is not a record: {exc}") from exc
         valid = offset
     return header, records, valid
 
@@ -161,9 +159,7 @@ class RecordWriter:
         if self.path.is_file() and self.path.stat().st_size > 0:
             old, records, valid = _parse_lines(self.path)
             if old is None:
-                raise RecordsError(
-                    f"{self.path} exists but is not a records file; choose another --out"
-                )
+                raise RecordsError(f"{self.path} exists but is not a records file; choose another --out")
             _check_same_run(self.path, old, header)
             self.header = old
             self.done = {r.key for r in records}

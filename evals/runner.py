@@ -93,9 +93,7 @@ class _Progress:
             try:
                 from tqdm import tqdm
 
-                self._bar = tqdm(
-                    total=total, initial=initial, unit="trial", file=stream, dynamic_ncols=True
-                )
+                self._bar = tqdm(total=total, initial=initial, unit="trial", file=stream, dynamic_ncols=True)
             except ImportError:
                 self._bar = None
 

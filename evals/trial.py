@@ -84,9 +84,7 @@ def scene_fingerprint(scene: Scene) -> str:
     """
     assets = sorted(
         json.dumps(
-            _rounded(
-                a.model_dump(include={"category", "pose", "scale", "behaviour", "appearance"})
-            ),
+            _rounded(a.model_dump(include={"category", "pose", "scale", "behaviour", "appearance"})),
             sort_keys=True,
         )
         for a in scene.all_assets()
@@ -102,9 +100,7 @@ def _levels(plan: Plan | None) -> dict[str, float]:
     return levels
 
 
-def run_trial(
-    case: Case, planner: Planner, trial: int, registry: ToolRegistry | None = None
-) -> TrialRecord:
+def run_trial(case: Case, planner: Planner, trial: int, registry: ToolRegistry | None = None) -> TrialRecord:
     """Run one trial of `case` with `planner` from a fresh copy of its world."""
     started = time.perf_counter()
     under_test: Planner = ReferencePlanner(case) if planner.name == REFERENCE_PLANNER else planner
@@ -132,14 +128,10 @@ def run_trial(
     except Exception as exc:  # a crashing planner is recorded, not fatal to the run
         record.error = f"{type(exc).__name__}: {exc}"
         return _finish(record, started)
-    outcome = Outcome(
-        before, session.scene, report.ok, report.answer or "", report.error, tuple(report.results)
-    )
+    outcome = Outcome(before, session.scene, report.ok, report.answer or "", report.error, tuple(report.results))
     passed, results = case.judge(outcome)
     _fill(record, report, passed)
-    record.failed_checks = [
-        FailedCheck(kind=r.kind, reason=r.reason) for r in results if not r.passed
-    ]
+    record.failed_checks = [FailedCheck(kind=r.kind, reason=r.reason) for r in results if not r.passed]
     record.fingerprint = scene_fingerprint(session.scene)
     return _finish(record, started)
 
