@@ -114,16 +114,10 @@ class Backend(ABC):
     def option_names(cls) -> list[str]:
         """The keyword options this backend's constructor accepts, besides `model`."""
         params = inspect.signature(cls.__init__).parameters.values()
-        return [
-            p.name
-            for p in params
-            if p.kind is inspect.Parameter.KEYWORD_ONLY and p.name not in ("self", "model")
-        ]
+        return [p.name for p in params if p.kind is inspect.Parameter.KEYWORD_ONLY and p.name not in ("self", "model")]
 
 
-def check_request(
-    messages: Sequence[Message], *, max_tokens: int, temperature: float, backend: str
-) -> list[Message]:
+def check_request(messages: Sequence[Message], *, max_tokens: int, temperature: float, backend: str) -> list[Message]:
     """Validate a chat request before any backend spends time on it."""
     if not messages:
         raise InvalidRequest("messages is empty; give at least one user message", backend=backend)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 import threading
@@ -32,6 +33,8 @@ NAME = "embedded"
 # Room for the managers' ~3k-token prompts (scene summary, catalog, memory) plus the answer.
 DEFAULT_N_CTX = 4096
 LLAMA_INSTALL = "pip install 'llama-cpp-python==0.3.36'"
+# One per tool schema plus the Sr. manager's; more than the project has.
+GRAMMAR_CACHE_SIZE = 64
 
 # Used only when a GGUF carries no chat template (the shipped Gemma 3 270M base has none).
 # Gemma has no system role: its own template folds the system text into the first user turn.
@@ -142,9 +145,7 @@ class EmbeddedBackend(Backend):
         timeout_s: float | None = None,
     ) -> ChatResult:
         """Answer in-process; with `schema`, sampling follows a grammar built from it."""
-        checked = check_request(
-            messages, max_tokens=max_tokens, temperature=temperature, backend=NAME
-        )
+        checked = check_request(messages, max_tokens=max_tokens, temperature=temperature, backend=NAME)
         loaded = self._loaded()
         # Timed after the one-time load, like a server that keeps its model warm.
         start = time.perf_counter()
@@ -213,12 +214,8 @@ class EmbeddedBackend(Backend):
 
     def _grammar(self, schema: Mapping[str, Any]) -> Any:
         check_schema(schema, backend=NAME)
-        from llama_cpp.llama_grammar import LlamaGrammar
-
         try:
-            # Built here rather than via response_format, which silently falls back to
-            # "any JSON" when the schema uses something the converter cannot express.
-            return LlamaGrammar.from_json_schema(json.dumps(schema), verbose=False)
+            return _grammar_for(json.dumps(schema, sort_keys=True))
         except (ValueError, RuntimeError, KeyError, TypeError) as error:
             raise InvalidRequest(
                 f"llama.cpp cannot turn this JSON Schema into a grammar: {error!r}",
@@ -244,8 +241,8 @@ class EmbeddedBackend(Backend):
         eos_id, bos_id = llama.token_eos(), llama.token_bos()
         formatter = Jinja2ChatFormatter(
             template=template,
-            eos_token=llama._model.token_get_text(eos_id) if eos_id != -1 else "",
-            bos_token=llama._model.token_get_text(bos_id) if bos_id != -1 else "",
+            eos_token=_token_text(llama, eos_id),
+            bos_token=_token_text(llama, bos_id),
             stop_token_ids=[eos_id],
         )
         try:
@@ -256,9 +253,7 @@ class EmbeddedBackend(Backend):
                 backend=NAME,
                 model=self.model,
             ) from None
-        tokens = llama.tokenize(
-            rendered.prompt.encode("utf-8"), add_bos=not rendered.added_special, special=True
-        )
+        tokens = llama.tokenize(rendered.prompt.encode("utf-8"), add_bos=not rendered.added_special, special=True)
         stop += [s for s in _as_list(rendered.stop) if s]
         return tokens, stop, StoppingCriteriaList(list(rendered.stopping_criteria or []))
 
@@ -290,12 +285,20 @@ class EmbeddedBackend(Backend):
             if not has_llama:
                 rows.append(BackendStatus(NAME, model.name, False, LLAMA_INSTALL, "no llama.cpp"))
             elif not is_installed(model):
-                rows.append(
-                    BackendStatus(NAME, model.name, False, model.install_command, "not installed")
-                )
+                rows.append(BackendStatus(NAME, model.name, False, model.install_command, "not installed"))
             else:
                 rows.append(BackendStatus(NAME, model.name, True, None, model.description))
         return rows
+
+
+@functools.lru_cache(maxsize=GRAMMAR_CACHE_SIZE)
+def _grammar_for(schema_json: str) -> Any:
+    """The llama.cpp grammar for a JSON Schema; managers reuse a few schemas many times."""
+    from llama_cpp.llama_grammar import LlamaGrammar
+
+    # Built here rather than via response_format, which silently falls back to "any JSON"
+    # when the schema uses something the converter cannot express.
+    return LlamaGrammar.from_json_schema(schema_json, verbose=False)
 
 
 def _fold_system_into_first_user(turns: list[dict[str, str]]) -> list[dict[str, str]]:
@@ -306,6 +309,13 @@ def _fold_system_into_first_user(turns: list[dict[str, str]]) -> list[dict[str, 
     elif system:
         rest.insert(0, {"role": "user", "content": system})
     return rest
+
+
+def _token_text(llama: Llama, token: int) -> str:
+    """A special token's text (e.g. `<|im_end|>`), or "" when the model has none (-1)."""
+    if token < 0:
+        return ""
+    return llama.detokenize([token], special=True).decode("utf-8", errors="replace")
 
 
 def _as_list(stop: str | list[str] | None) -> list[str]:
@@ -321,8 +331,6 @@ def _quantisation(file_type: str | None) -> str | None:
     import llama_cpp
 
     for attribute in dir(llama_cpp):
-        if attribute.startswith("LLAMA_FTYPE_MOSTLY_") and str(getattr(llama_cpp, attribute)) == (
-            file_type
-        ):
+        if attribute.startswith("LLAMA_FTYPE_MOSTLY_") and str(getattr(llama_cpp, attribute)) == (file_type):
             return attribute.removeprefix("LLAMA_FTYPE_MOSTLY_")
     return f"file_type {file_type}"

@@ -24,9 +24,7 @@ class BackendUnavailable(BackendError):
     `fix` is the one command (or setting) that makes it usable.
     """
 
-    def __init__(
-        self, message: str, *, fix: str | None = None, backend: str = "", model: str = ""
-    ) -> None:
+    def __init__(self, message: str, *, fix: str | None = None, backend: str = "", model: str = "") -> None:
         super().__init__(message, backend=backend, model=model)
         # `message` stays the bare problem (for tables); str(error) adds the fix.
         self.args = (f"{message}; fix: {fix}" if fix else message,)
@@ -77,9 +75,7 @@ class InvalidRequest(BackendError):
 class UnknownModel(BackendError):
     """The model name is neither a preset nor something the backend can resolve."""
 
-    def __init__(
-        self, message: str, *, presets: Sequence[str], backend: str = "", model: str = ""
-    ) -> None:
+    def __init__(self, message: str, *, presets: Sequence[str], backend: str = "", model: str = "") -> None:
         super().__init__(message, backend=backend, model=model)
         self.presets = tuple(presets)
 

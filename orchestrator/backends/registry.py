@@ -64,9 +64,7 @@ def discover_backends() -> tuple[dict[str, type[Backend]], list[PluginProblem]]:
     """Load every backend plugin; return the good ones by name and the broken ones."""
     found: dict[str, type[Backend]] = {}
     problems: list[PluginProblem] = []
-    candidates: dict[str, tuple[str, str | None]] = {
-        name: (target, None) for name, target in _BUILTIN_BACKENDS.items()
-    }
+    candidates: dict[str, tuple[str, str | None]] = {name: (target, None) for name, target in _BUILTIN_BACKENDS.items()}
     for entry in entry_points(group=ENTRY_POINT_GROUP):
         candidates[entry.name] = (entry.value, _distribution_name(entry))
     for name, (target, distribution) in candidates.items():
@@ -111,8 +109,7 @@ def load_backend(name: str, model: str | None = None, **options: Any) -> Backend
     unknown = sorted(set(options) - set(allowed))
     if unknown:
         raise InvalidRequest(
-            f"backend {name!r} has no option {', '.join(unknown)}; allowed: "
-            + (", ".join(allowed) or "none"),
+            f"backend {name!r} has no option {', '.join(unknown)}; allowed: " + (", ".join(allowed) or "none"),
             backend=name,
         )
     try:
@@ -120,9 +117,7 @@ def load_backend(name: str, model: str | None = None, **options: Any) -> Backend
     except BackendError:
         raise
     except Exception as error:  # a third-party plugin's constructor may fail in any way
-        raise BackendError(
-            f"backend {name!r} could not start: {type(error).__name__}: {error}", backend=name
-        ) from None
+        raise BackendError(f"backend {name!r} could not start: {type(error).__name__}: {error}", backend=name) from None
 
 
 def open_backend(settings: BackendSettings) -> Backend:
@@ -141,9 +136,7 @@ def list_backends(settings: BackendSettings | None = None) -> list[BackendStatus
             rows += cls.statuses(**options)
         except Exception as error:  # a plugin's status check must not break the listing
             rows.append(BackendStatus(name, "?", False, None, f"status check failed: {error}"))
-    rows += [
-        BackendStatus(p.name, "-", False, p.fix, f"broken plugin: {p.error}") for p in problems
-    ]
+    rows += [BackendStatus(p.name, "-", False, p.fix, f"broken plugin: {p.error}") for p in problems]
     return rows
 
 
@@ -157,24 +150,14 @@ def backends_table(settings: BackendSettings | None = None) -> str:
             row.backend,
             row.model + (" *" if (row.backend, row.model) in chosen else ""),
             "yes" if row.usable else "no",
-            row.detail
-            if row.usable
-            else f"{row.detail}; fix: {row.fix}"
-            if row.fix
-            else row.detail,
+            row.detail if row.usable else f"{row.detail}; fix: {row.fix}" if row.fix else row.detail,
         )
         for row in rows
     ]
     widths = [max(len(h), *(len(c[i]) for c in cells)) for i, h in enumerate(headers[:-1])]
-    lines = [
-        "  ".join(h.ljust(w) for h, w in zip(headers[:-1], widths, strict=True))
-        + "  "
-        + headers[-1]
-    ]
+    lines = ["  ".join(h.ljust(w) for h, w in zip(headers[:-1], widths, strict=True)) + "  " + headers[-1]]
     for cell in cells:
-        lines.append(
-            "  ".join(c.ljust(w) for c, w in zip(cell[:-1], widths, strict=True)) + "  " + cell[-1]
-        )
+        lines.append("  ".join(c.ljust(w) for c, w in zip(cell[:-1], widths, strict=True)) + "  " + cell[-1])
     return "\n".join(lines)
 
 

@@ -21,9 +21,7 @@ def check_schema(schema: Mapping[str, Any], *, backend: str) -> None:
         validator = jsonschema.validators.validator_for(schema)
         validator.check_schema(schema)
     except jsonschema.exceptions.SchemaError as error:
-        raise InvalidRequest(
-            f"schema is not a valid JSON Schema: {error.message}", backend=backend
-        ) from None
+        raise InvalidRequest(f"schema is not a valid JSON Schema: {error.message}", backend=backend) from None
 
 
 def parse_answer(
@@ -73,12 +71,9 @@ def parse_answer(
         key=lambda e: list(e.absolute_path),
     )
     if errors:
-        details = "; ".join(
-            f"at {_json_path(list(e.absolute_path))}: {e.message}" for e in errors[:3]
-        )
+        details = "; ".join(f"at {_json_path(list(e.absolute_path))}: {e.message}" for e in errors[:3])
         raise InvalidOutput(
-            f"{backend}/{model} answer does not match the schema ({len(errors)} error(s): "
-            f"{details}). Answer: {quoted}",
+            f"{backend}/{model} answer does not match the schema ({len(errors)} error(s): {details}). Answer: {quoted}",
             raw=text,
             reason="schema_mismatch",
             backend=backend,
