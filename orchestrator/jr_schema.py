@@ -90,9 +90,7 @@ def _slim(node: Any, defs: dict[str, Any], names: WorldNames, prop: str | None =
             continue
         if key == "properties":
             out[key] = {
-                name: _slim(sub, defs, names, name)
-                for name, sub in value.items()
-                if name not in OMITTED_FIELDS
+                name: _slim(sub, defs, names, name) for name, sub in value.items() if name not in OMITTED_FIELDS
             }
         elif key == "items":
             out[key] = _slim(value, defs, names)

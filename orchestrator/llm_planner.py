@@ -100,9 +100,7 @@ class LlmPlanner:
         calls: list[ToolCall] = []
         juniors: dict[Family, JrManager] = {}
         for requirement in requirements:
-            junior = juniors.setdefault(
-                requirement.kind, JrManager(requirement.kind, backend, self.grounder)
-            )
+            junior = juniors.setdefault(requirement.kind, JrManager(requirement.kind, backend, self.grounder))
             call, steps = junior.call(requirement, prompt, context, calls)
             calls.append(call)
             trace += steps

@@ -72,7 +72,10 @@ def requirements_schema() -> dict[str, Any]:
         "type": "object",
         "properties": {
             "requirements": {
-                "type": "array", "items": item, "minItems": 1, "maxItems": MAX_REQUIREMENTS,
+                "type": "array",
+                "items": item,
+                "minItems": 1,
+                "maxItems": MAX_REQUIREMENTS,
             }
         },
         "required": ["requirements"],
@@ -114,8 +117,12 @@ def ask(
     for attempt in range(budget + 1):
         try:
             result = backend.chat(
-                conversation, schema=schema, temperature=0.0, seed=attempt,
-                max_tokens=max_tokens, timeout_s=CALL_TIMEOUT_S,
+                conversation,
+                schema=schema,
+                temperature=0.0,
+                seed=attempt,
+                max_tokens=max_tokens,
+                timeout_s=CALL_TIMEOUT_S,
             )
         except BackendUnavailable as exc:
             raise PlanningError(f"{step}: the language model is not available: {exc}") from exc
@@ -140,16 +147,12 @@ def ask(
             conversation += [_assistant(result.text), _fix(message)]
             continue
         return Answer(value, result.text, attempt, tokens, time.perf_counter() - started, refusals)
-    raise PlanningError(
-        f"{step}: no usable answer after {budget + 1} tries; last problem: {refusals[-1]}"
-    )
+    raise PlanningError(f"{step}: no usable answer after {budget + 1} tries; last problem: {refusals[-1]}")
 
 
 def _validation_message(exc: Exception) -> str:
     if isinstance(exc, ValidationError):
-        details = "; ".join(
-            f"{'.'.join(str(p) for p in e['loc']) or 'answer'}: {e['msg']}" for e in exc.errors()[:3]
-        )
+        details = "; ".join(f"{'.'.join(str(p) for p in e['loc']) or 'answer'}: {e['msg']}" for e in exc.errors()[:3])
         return f"{exc.error_count()} validation error(s): {details}"
     if isinstance(exc, json.JSONDecodeError):
         return f"the answer is not JSON ({exc.msg})"

@@ -17,7 +17,19 @@ def _rules(**options: Any) -> Planner:
     return RulePlanner()
 
 
-BUILTIN: dict[str, Callable[..., Planner]] = {"rules": _rules}
+def _llm(**options: Any) -> Planner:
+    from drivetwin.orchestrator.hybrid_planner import make_llm
+
+    return make_llm(**options)
+
+
+def _hybrid(**options: Any) -> Planner:
+    from drivetwin.orchestrator.hybrid_planner import make_hybrid
+
+    return make_hybrid(**options)
+
+
+BUILTIN: dict[str, Callable[..., Planner]] = {"rules": _rules, "llm": _llm, "hybrid": _hybrid}
 
 
 class UnknownPlannerError(LookupError):

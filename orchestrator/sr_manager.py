@@ -70,8 +70,12 @@ class SrManager:
         if answer.refusals:
             output += "\nrefused on the way: " + " | ".join(answer.refusals)
         step = TraceStep(
-            level="sr_manager", input=prompt, output=output, seconds=answer.seconds,
-            retries=answer.retries, tokens=answer.tokens,
+            level="sr_manager",
+            input=prompt,
+            output=output,
+            seconds=answer.seconds,
+            retries=answer.retries,
+            tokens=answer.tokens,
         )
         return found, step
 
