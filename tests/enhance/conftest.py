@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import numpy as np
@@ -40,6 +41,29 @@ def draw_depth(car_x: int = CAR_X) -> np.ndarray:
     depth[30 : h // 2, 90:120] = 25.0
     depth[h // 2 + 5 : h // 2 + 25, car_x : car_x + CAR_W] = 8.0
     return depth
+
+
+@contextlib.contextmanager
+def one_torch_thread() -> Iterator[None]:
+    """Run torch on one thread: tiny models gain nothing from more, and on a shared 2-core
+    machine spinning OpenMP workers make them 20x slower."""
+    try:
+        import torch
+    except ImportError:
+        yield
+        return
+    before = torch.get_num_threads()
+    torch.set_num_threads(1)
+    try:
+        yield
+    finally:
+        torch.set_num_threads(before)
+
+
+@pytest.fixture(autouse=True)
+def _single_torch_thread() -> Iterator[None]:
+    with one_torch_thread():
+        yield
 
 
 @pytest.fixture
@@ -92,6 +116,11 @@ def tiny_sdxl(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     vocabulary written here (no download).
     """
     pytest.importorskip("diffusers", reason="the enhance extra (diffusers) is not installed")
+    with one_torch_thread():
+        return _build_tiny_sdxl(tmp_path_factory.mktemp("tiny-sdxl"))
+
+
+def _build_tiny_sdxl(root: Path) -> dict[str, Path]:
     import torch
     from diffusers import (
         AutoencoderKL,
@@ -107,7 +136,6 @@ def tiny_sdxl(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
         CLIPTokenizer,
     )
 
-    root = tmp_path_factory.mktemp("tiny-sdxl")
     tok_dir = write_tiny_clip_tokenizer(root / "tokenizer-src")
     tokenizer = CLIPTokenizer(
         str(tok_dir / "vocab.json"), str(tok_dir / "merges.txt"), model_max_length=77
