@@ -78,7 +78,13 @@ def _load(path: Path, n_ctx: int, n_threads: int, model: str) -> _LoadedModel:
             ) from None
         start = time.perf_counter()
         try:
-            llama = Llama(model_path=str(path), n_ctx=n_ctx, n_threads=n_threads, verbose=False)
+            llama = Llama(
+                model_path=str(path),
+                n_ctx=n_ctx,
+                n_threads=n_threads,
+                n_threads_batch=n_threads,  # else prompt reading takes every CPU regardless
+                verbose=False,
+            )
         except (ValueError, RuntimeError, OSError) as error:
             raise BackendUnavailable(
                 f"llama.cpp could not load {path}: {error}",
@@ -106,7 +112,13 @@ class _Deadline:
 
 
 class EmbeddedBackend(Backend):
-    """llama-cpp-python in-process, running a shipped GGUF preset or any local GGUF file."""
+    """llama-cpp-python in-process, running a shipped GGUF preset or any local GGUF file.
+
+    Options: `n_ctx` (context tokens), `n_threads` (default: every CPU; use fewer on a busy
+    machine, where llama.cpp's spinning threads slow down sharply), `timeout_s` (default per
+    call). A GGUF is loaded once per process and context size; the first load's thread count
+    is the one that stays.
+    """
 
     name = NAME
     default_model = "smollm2-135m"

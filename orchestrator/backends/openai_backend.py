@@ -156,11 +156,15 @@ class OpenAIBackend(Backend):
         try:
             return self._request("POST", "/chat/completions", payload, timeout_s)
         except _Refused as refusal:
-            if self._schema_mode != "auto" or mode != "json_schema":
+            if self._schema_mode != "auto":
                 raise refusal.error from None
+        # Only once: the fallback is remembered, and a refused fallback is reported as is.
         self._schema_mode = "json_object"
         payload["response_format"] = _response_format("json_object", schema)
-        return self._request("POST", "/chat/completions", payload, timeout_s)
+        try:
+            return self._request("POST", "/chat/completions", payload, timeout_s)
+        except _Refused as refusal:
+            raise refusal.error from None
 
     def _request(self, method: str, path: str, payload: Mapping[str, Any] | None, timeout_s: float | None) -> Any:
         """One HTTP exchange; every transport or protocol failure becomes a BackendError."""

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 import subprocess
 import sys
 import time
@@ -11,7 +10,7 @@ from pathlib import Path
 
 import httpx
 import pytest
-from backend_servers import Reply, ScriptedServer, free_port
+from backend_servers import TEST_THREADS, Reply, ScriptedServer, free_port
 
 # llama_cpp.server with the 98 MB SmolLM2 file is ready in about 1 s on 2 cores.
 SERVER_START_DEADLINE_S = 60.0
@@ -57,7 +56,7 @@ def llama_server(tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
                 sys.executable, "-m", "llama_cpp.server",
                 "--model", str(model_path), "--model_alias", "smollm2-135m",
                 "--host", "127.0.0.1", "--port", str(port),
-                "--n_ctx", "2048", "--n_threads", str(os.cpu_count() or 1),
+                "--n_ctx", "2048", "--n_threads", str(TEST_THREADS),
             ],
             stdout=log,
             stderr=subprocess.STDOUT,

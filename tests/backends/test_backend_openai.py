@@ -127,3 +127,18 @@ def test_a_server_error_is_a_backend_error_with_its_status(scripted_server: Star
     server = scripted_server({("POST", "/v1/chat/completions"): Reply({"error": "out of memory"}, status=503)})
     with pytest.raises(BackendError, match="HTTP 503"):
         OpenAIBackend("m", base_url=f"{server.url}/v1").chat(WEATHER_PROMPT)
+
+
+def test_a_server_that_refuses_json_schema_is_asked_again_with_json_object(scripted_server: Start) -> None:
+    refusal = Reply({"error": {"message": "response_format.type: Input should be 'text' or 'json_object'"}}, status=422)
+    server = scripted_server({("POST", "/v1/chat/completions"): refusal})
+    backend = OpenAIBackend("m", base_url=f"{server.url}/v1")
+    with pytest.raises(BackendError, match="HTTP 422"):  # the retry is refused too: reported, not looped
+        backend.chat(WEATHER_PROMPT, schema=WEATHER_SCHEMA)
+    formats = [r["json"]["response_format"] for r in server.requests]
+    assert [f["type"] for f in formats] == ["json_schema", "json_object"]
+    assert formats[1]["schema"] == WEATHER_SCHEMA
+
+    server.routes[("POST", "/v1/chat/completions")] = Reply(COMPLETION)
+    assert backend.chat(WEATHER_PROMPT, schema=WEATHER_SCHEMA).data == {"weather": "rain", "intensity": "heavy"}
+    assert server.requests[-1]["json"]["response_format"]["type"] == "json_object"  # remembered
