@@ -142,6 +142,7 @@ class MujocoWorld:
 
         Added and changed assets start at their authored pose. A change of pose alone moves
         the body in place (no rebuild); welded and mocap bodies then need no recompile.
+        Raises UnknownCategoryError, leaving the world untouched, for an unknown category.
         """
         started = time.perf_counter()
         old = {a.id: a for a in self.scene.all_assets()}
@@ -152,6 +153,8 @@ class MujocoWorld:
         moved = [i for i in changed if _only_pose_differs(old[i], new[i])]
         replaced = [i for i in changed if i not in moved]
         static_changed = static_signature(self.scene) != static_signature(scene)
+        for asset_id in replaced + added:
+            category(new[asset_id].category)  # refuse unknown categories before any change
         for asset_id in removed + replaced:
             remove_asset_body(self.spec, asset_id)
         for asset_id in replaced + added:

@@ -220,3 +220,14 @@ def test_moving_a_welded_or_walking_asset_needs_no_recompile_and_its_geoms_follo
     assert consistency_problems(moved, world) == []
     world.update(_with(moved, assets=[*moved.assets, make_asset("cone", "traffic_cone", 0.0, 9.0)]))
     assert world.body_pose("post").x == pytest.approx(-4.0), "a later recompile keeps the move"
+
+
+def test_an_unknown_category_is_refused_and_leaves_the_world_as_it_was() -> None:
+    from drivetwin.worlds.catalog import UnknownCategoryError
+
+    scene = make_scene(make_asset("cone_1", "traffic_cone", 5.0, 5.0))
+    world = MujocoWorld.from_scene(scene)
+    bad = make_asset("cone_2", "traffic_cone", 6.0, 5.0).model_copy(update={"category": "pylonn"})
+    with pytest.raises(UnknownCategoryError, match="nearest"):
+        world.update(_with(scene, assets=[bad]))
+    assert consistency_problems(scene, world) == []
