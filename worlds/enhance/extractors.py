@@ -7,6 +7,7 @@ names how to get the weights; nothing is downloaded.
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any
@@ -70,7 +71,10 @@ def load_inception(path: str | Path, device: str = "auto") -> FeatureExtractor:
     (torch,) = import_extra("torch")
     dev = resolve_device(device)
     try:
-        net = torch.jit.load(str(file), map_location=dev).eval()
+        with warnings.catch_warnings():
+            # torch deprecates TorchScript, but the FID reference network ships only as one.
+            warnings.filterwarnings("ignore", category=DeprecationWarning, message=".*jit.*")
+            net = torch.jit.load(str(file), map_location=dev).eval()
     except (RuntimeError, ValueError) as exc:
         raise EnhanceWeightsMissing(
             f"'{file}' is not a TorchScript Inception file ({str(exc).splitlines()[0][:100]}); "
