@@ -2,7 +2,7 @@
 
 A case names its world, optional earlier turns that build the starting scene, the prompt,
 its task and grade, and the checks that judge the outcome. Its JSON Schema ships as
-`evals/case.schema.json` (regenerate with `python -m drivetwin.evals.case`).
+`evals/case.schema.json` (regenerate with `python -m drivetwin.evals.schema`).
 """
 
 from __future__ import annotations
@@ -159,8 +159,3 @@ def case_json_schema() -> dict[str, Any]:
     schema["$id"] = "https://drivetwin.dev/schema/eval-case-v1.json"
     schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
     return schema
-
-
-if __name__ == "__main__":
-    SCHEMA_PATH.write_text(json.dumps(case_json_schema(), indent=2) + "\n", encoding="utf-8")
-    print(f"wrote {SCHEMA_PATH}")

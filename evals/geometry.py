@@ -161,9 +161,9 @@ def matches_colour(rgba: tuple[float, float, float, float] | None, colour: str, 
 
 
 def mentions(text: str, word: str) -> bool:
-    """Whether `text` contains `word` case-insensitively, not as part of a longer word or number."""
+    """Whether `text` holds `word` (any case), not inside a longer word or number; -85 matches -85.0."""
     pattern = re.escape(word.strip().lower().replace("_", " ")).replace(r"\ ", r"\s+")
     # Word boundaries only where the word itself starts or ends with a letter or digit.
     left = r"(?<![\w.])" if word[:1].isalnum() else ""
-    right = r"(?![\w]|\.\d)" if word[-1:].isalnum() else ""
+    right = r"(?!\w)(?!\.\d*[1-9])" if word[-1:].isalnum() else ""
     return re.search(left + pattern + right, text.lower().replace("_", " ")) is not None

@@ -23,7 +23,16 @@ def plots_available() -> bool:
 
 
 def _errors(rates: Sequence[Rate]) -> list[list[float]]:
-    return [[100 * (r.value - r.low) for r in rates], [100 * (r.high - r.value) for r in rates]]
+    # Clamped at 0: at 0 % or 100 % rounding can put a bound a hair inside the value.
+    return [
+        [max(0.0, 100 * (r.value - r.low)) if r.n else 0.0 for r in rates],
+        [max(0.0, 100 * (r.high - r.value)) if r.n else 0.0 for r in rates],
+    ]
+
+
+def _values(rates: Sequence[Rate]) -> list[float]:
+    """Percentages, NaN (not drawn) where a cell has no trials."""
+    return [100 * r.value if r.n else float("nan") for r in rates]
 
 
 def plot_tasks(runs: Sequence[RunMetrics], target: Path) -> Path:
@@ -38,7 +47,7 @@ def plot_tasks(runs: Sequence[RunMetrics], target: Path) -> Path:
     for i, run in enumerate(runs):
         rates = [run.per_task[t] for t in TASKS]
         xs = [k + (i - (len(runs) - 1) / 2) * width for k in range(len(TASKS))]
-        ax.bar(xs, [100 * r.value for r in rates], width, yerr=_errors(rates), capsize=2, label=run.label)
+        ax.bar(xs, _values(rates), width, yerr=_errors(rates), capsize=2, label=run.label)
     ax.set_xticks(range(len(TASKS)), TASKS)
     ax.set_ylabel("success rate (%)")
     ax.set_ylim(0, 105)

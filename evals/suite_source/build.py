@@ -1,6 +1,6 @@
 """Write the shipped suites, `evals/suites/full.jsonl` and `smoke.jsonl`, from the case modules.
 
-Run from the repository root: `python evals/suite_source/build.py`. The JSONL files are
+Run `python evals/suite_source/build.py [OUT_DIR]` (default: evals/suites). The JSONL files are
 committed; a test checks they match what this script writes.
 """
 
@@ -50,7 +50,8 @@ def render(cases: list[Json]) -> str:
     return "".join(json.dumps(c, ensure_ascii=False, separators=(", ", ": ")) + "\n" for c in cases)
 
 
-def main() -> int:
+def main(argv: list[str]) -> int:
+    out_dir = Path(argv[0]) if argv else SUITES
     cases = all_cases()
     ids = [c["id"] for c in cases]
     duplicates = sorted({i for i in ids if ids.count(i) > 1})
@@ -62,11 +63,11 @@ def main() -> int:
     if missing:
         print(f"smoke ids not in the suite: {', '.join(missing)}", file=sys.stderr)
         return 1
-    (SUITES / "full.jsonl").write_text(render(cases), encoding="utf-8")
-    (SUITES / "smoke.jsonl").write_text(render([by_id[i] for i in SMOKE_IDS]), encoding="utf-8")
+    (out_dir / "full.jsonl").write_text(render(cases), encoding="utf-8")
+    (out_dir / "smoke.jsonl").write_text(render([by_id[i] for i in SMOKE_IDS]), encoding="utf-8")
     print(f"wrote {len(cases)} cases to full.jsonl and {len(SMOKE_IDS)} to smoke.jsonl")
     return 0
 
 
 if __name__ == "__main__":
-    raise SystemExit(main())
+    raise SystemExit(main(sys.argv[1:]))

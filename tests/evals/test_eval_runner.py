@@ -1,0 +1,137 @@
+"""The runner: records per trial, resumes after an interruption, runs in processes and on Ray."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import pytest
+from drivetwin.evals.metrics import compute_metrics
+from drivetwin.evals.records import RecordsError, read_run
+from drivetwin.evals.runner import RunError, run_suite
+
+HERE = Path(__file__).resolve().parent
+TINY = "tiny_planner:make"
+
+
+def _comparable(path: Path) -> dict[str, Any]:
+    """The metrics of a run without what differs between any two runs (times, dates)."""
+    data = compute_metrics(read_run(path)).model_dump(mode="json")
+    for key in ("latency", "latency_levels", "started", "git_commit"):
+        data.pop(key)
+    return data
+
+
+def test_a_run_records_outcome_failed_checks_calls_and_model_facts(tiny_suite: Path, tmp_path: Path) -> None:
+    out = tmp_path / "run.jsonl"
+    summary = run_suite(tiny_suite, TINY, trials=1, out_path=out, progress=False)
+    run = read_run(out)
+    by_id = {r.case_id: r for r in run.records}
+    assert summary.complete and summary.total == len(by_id) == 8
+    assert by_id["rain"].outcome == "pass" and by_id["rain"].calls[0]["tool"] == "set_weather"
+    assert by_id["rain"].tokens == 7 and by_id["rain"].prompt_version == "tiny-1"
+    assert by_id["rain"].latency_s is not None and "tiny" not in by_id["rain"].latency_levels
+    snow = by_id["snow"]
+    assert snow.outcome == "fail" and snow.failed_checks[0].kind == "environment"
+    assert "wanted snow" in snow.failed_checks[0].reason and snow.accepted is False
+    assert by_id["truck"].accepted is False and "knows none" in (by_id["truck"].error or "")
+    assert by_id["where"].outcome == "pass"  # the search answer carries the coordinates
+    assert by_id["rain"].model is not None and by_id["rain"].model.parameters == 42
+    assert run.header.planner == TINY and run.header.trials == 1
+
+
+def test_running_again_does_only_the_trials_that_are_missing(tiny_suite: Path, tmp_path: Path) -> None:
+    out = tmp_path / "run.jsonl"
+    run_suite(tiny_suite, TINY, trials=1, out_path=out, progress=False)
+    again = run_suite(tiny_suite, TINY, trials=2, out_path=out, progress=False)
+    assert (again.already_done, again.ran) == (8, 8)
+    keys = [r.key for r in read_run(out).records]
+    assert len(keys) == len(set(keys)) == 16
+    assert run_suite(tiny_suite, TINY, trials=2, out_path=out, progress=False).ran == 0
+
+
+def test_a_torn_last_line_is_dropped_and_its_trial_rerun(tiny_suite: Path, tmp_path: Path) -> None:
+    out = tmp_path / "run.jsonl"
+    run_suite(tiny_suite, TINY, trials=1, out_path=out, progress=False)
+    text = out.read_text(encoding="utf-8")
+    out.write_text(text[: len(text) - 40], encoding="utf-8")  # cut inside the last record
+    assert len(read_run(out).records) == 7
+    summary = run_suite(tiny_suite, TINY, trials=1, out_path=out, progress=False)
+    assert summary.ran == 1 and len(read_run(out).records) == 8
+
+
+def test_resuming_with_another_planner_into_the_same_file_is_refused(tiny_suite: Path, tmp_path: Path) -> None:
+    out = tmp_path / "run.jsonl"
+    run_suite(tiny_suite, TINY, trials=1, out_path=out, progress=False)
+    with pytest.raises(RecordsError, match="another planner"):
+        run_suite(tiny_suite, "reference", trials=1, out_path=out, progress=False)
+
+
+def test_bad_run_settings_are_refused_before_anything_runs(tiny_suite: Path, tmp_path: Path) -> None:
+    with pytest.raises(RunError, match="trials"):
+        run_suite(tiny_suite, TINY, trials=0, out_path=tmp_path / "a.jsonl")
+    with pytest.raises(RunError, match="local, ray"):
+        run_suite(tiny_suite, TINY, executor="slurm", out_path=tmp_path / "b.jsonl")
+    assert not (tmp_path / "a.jsonl").exists()
+
+
+def test_worker_processes_give_the_same_metrics_as_one_process(tiny_suite: Path, tmp_path: Path) -> None:
+    inline, pooled = tmp_path / "inline.jsonl", tmp_path / "pooled.jsonl"
+    run_suite(tiny_suite, TINY, trials=2, out_path=inline, workers=1, progress=False)
+    run_suite(tiny_suite, TINY, trials=2, out_path=pooled, workers=2, progress=False)
+    assert _comparable(pooled) == _comparable(inline)
+
+
+def test_a_run_stopped_with_ctrl_c_resumes_where_it_stopped_and_measures_the_same(
+    tiny_suite: Path, tmp_path: Path
+) -> None:
+    out, clean = tmp_path / "interrupted.jsonl", tmp_path / "clean.jsonl"
+    script = (
+        "import json, sys\n"
+        "from drivetwin.evals import run_suite\n"
+        f"s = run_suite({str(tiny_suite)!r}, {TINY!r}, planner_options={{'delay': 0.1}}, "
+        f"trials=3, out_path={str(out)!r}, workers=2, progress=False)\n"
+        "print(json.dumps({'interrupted': s.interrupted, 'ran': s.ran}))\n"
+    )
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(HERE), os.environ.get("PYTHONPATH", "")])}
+    proc = subprocess.Popen(
+        [sys.executable, "-c", script], env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    )
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline:  # wait until some, not all, trials are written
+        if out.exists() and out.read_text(encoding="utf-8").count("\n") >= 6:
+            break
+        time.sleep(0.05)
+    proc.send_signal(signal.SIGINT)
+    stdout, stderr = proc.communicate(timeout=60)
+    assert proc.returncode == 0, stderr
+    report = json.loads(stdout.strip().splitlines()[-1])
+    done_before = len(read_run(out).records)
+    assert report["interrupted"] and 0 < done_before < 24
+
+    same = {"planner_options": {"delay": 0.1}, "trials": 3, "workers": 2, "progress": False}
+    resumed = run_suite(tiny_suite, TINY, out_path=out, **same)
+    assert resumed.already_done == done_before and resumed.ran == 24 - done_before
+    run_suite(tiny_suite, TINY, out_path=clean, **same)
+    assert _comparable(out) == _comparable(clean)
+
+
+def test_the_ray_executor_runs_every_trial_on_a_local_ray_instance(tmp_path: Path) -> None:
+    ray = pytest.importorskip("ray", reason="the ray extra is not installed")
+    suite = tmp_path / "suite.jsonl"
+    lines = (Path(__file__).resolve().parents[2] / "evals" / "suites" / "smoke.jsonl").read_text()
+    suite.write_text("".join(lines.splitlines(keepends=True)[:6]), encoding="utf-8")
+    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
+    try:
+        out = tmp_path / "ray.jsonl"
+        summary = run_suite(suite, "reference", trials=2, out_path=out, executor="ray", workers=2, progress=False)
+    finally:
+        ray.shutdown()
+    assert summary.complete and summary.passed == 12
+    assert read_run(out).header.executor == "ray"
