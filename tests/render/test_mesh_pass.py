@@ -85,3 +85,16 @@ def test_an_image_larger_than_the_offscreen_buffer_is_refused(mesh_pass: MeshPas
     camera = Camera.from_look_at((0, 0, 0), (1, 0, 0), width=800, height=600, fovy_deg=60)
     with pytest.raises(MeshPassError, match="offscreen buffer 640x480"):
         mesh_pass.render(model, data, camera)
+
+
+def test_one_mesh_pass_renders_from_another_thread_too(mesh_pass: MeshPass) -> None:
+    import threading
+
+    model, data = _world()
+    camera = _off_centre_camera()
+    here = mesh_pass.render(model, data, camera)
+    there: list[np.ndarray] = []
+    worker = threading.Thread(target=lambda: there.append(mesh_pass.render(model, data, camera).rgb))
+    worker.start()
+    worker.join()
+    assert len(there) == 1 and np.array_equal(there[0], here.rgb)

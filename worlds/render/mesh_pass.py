@@ -121,7 +121,6 @@ class MeshPass:
         self.shadows = shadows
         self.max_geom = max_geom
         self._gl: Any = None
-        self._gl_size = (0, 0)
         self._model: mujoco.MjModel | None = None
         self._context: mujoco.MjrContext | None = None
         self._scene: mujoco.MjvScene | None = None
@@ -136,10 +135,6 @@ class MeshPass:
                 f"image {width}x{height} exceeds the model's offscreen buffer "
                 f"{buffer[0]}x{buffer[1]}; render smaller or raise visual.global offwidth/offheight"
             )
-        if self._gl is None:
-            self._gl = _context_class()(buffer[0], buffer[1])
-            self._gl_size = buffer
-        self._gl.make_current()
         if self._model is not model:
             if self._context is not None:
                 self._context.free()
@@ -153,9 +148,10 @@ class MeshPass:
     def close(self) -> None:
         """Free the GL resources (the pass can be used again afterwards)."""
         with self._thread_lock:
-            if self._context is not None:
-                self._context.free()
             if self._gl is not None:
+                with self._gl.as_current():
+                    if self._context is not None:
+                        self._context.free()
                 self._gl.free()
             self._gl, self._context, self._scene, self._model = None, None, None, None
 
@@ -182,7 +178,12 @@ class MeshPass:
             scene_hook: called with the filled MjvScene before drawing (lights, extra geoms).
         """
         with self._thread_lock:
-            return self._render(model, data, camera, lock, hidden_bodies, scene_hook)
+            if self._gl is None:
+                buffer = (int(model.vis.global_.offwidth), int(model.vis.global_.offheight))
+                self._gl = _context_class()(*buffer)
+            # Current only while drawing, so another thread can use this pass next time.
+            with self._gl.as_current():
+                return self._render(model, data, camera, lock, hidden_bodies, scene_hook)
 
     def _render(
         self,
