@@ -70,6 +70,8 @@ HEADLAMP_RGB: RGB = (0.95, 0.95, 1.0)
 GLOW_RADIUS_M = 0.25  # apparent size of a lamp's halo
 LAMP_REACH_M = 18.0  # irradiance of a lamp falls off over this distance
 LAMP_STRENGTH = 1.6
+SUN_GLARE_POWER = 400  # cos^400 halves about 3 degrees from the sun's centre
+SUN_GLARE_COS = 0.97  # beyond ~14 degrees the glare is below 1e-5: skip those pixels
 
 
 @dataclass(frozen=True)
@@ -170,8 +172,7 @@ def look_of(environment: Environment) -> Look:
         precipitation_intensity=intensity if kind in ("rain", "snow") else 0.0,
         wetness=intensity if kind == "rain" else 0.3 * intensity if kind == "snow" else 0.0,
         snow_cover=SNOW_COVER * intensity if kind == "snow" else 0.0,
-        street_lights=lighting.street_lights == "on"
-        or (lighting.street_lights == "auto" and environment.is_night),
+        street_lights=lighting.street_lights == "on" or (lighting.street_lights == "auto" and environment.is_night),
         vehicle_lights=lighting.vehicle_lights == "on"
         or (lighting.vehicle_lights == "auto" and (environment.is_night or bad_weather)),
     )
@@ -195,9 +196,7 @@ def light_hook(look: Look, lamps: Sequence[Lamp], camera_position: Sequence[floa
                 light.ambient = (0.0, 0.0, 0.0)
                 light.specular = _scale(look.sun_rgb, 0.2)
                 sun_done = True
-        near = sorted(
-            lamps, key=lambda lamp: float(np.linalg.norm(np.subtract(lamp.position, eye)))
-        )
+        near = sorted(lamps, key=lambda lamp: float(np.linalg.norm(np.subtract(lamp.position, eye))))
         for lamp in near[: max(0, MAX_GL_LIGHTS - scene.nlight)]:
             light = scene.lights[scene.nlight]
             scene.nlight += 1
@@ -227,18 +226,19 @@ def _rays(camera: Camera) -> F32:
 @functools.lru_cache(maxsize=8)
 def _cached_rays(key: tuple[int, int, float, float, float, float, bytes]) -> F32:
     width, height, fx, fy, cx, cy, rotation_bytes = key
-    rotation = np.frombuffer(rotation_bytes, dtype=np.float64).reshape(3, 3)
-    u = (np.arange(width) + 0.5 - cx) / fx
-    v = (np.arange(height) + 0.5 - cy) / fy
-    rays_cam = np.stack(np.broadcast_arrays(u[None, :], v[:, None], 1.0), axis=-1)
-    rays = np.asarray(rays_cam @ rotation, dtype=np.float32)  # R^T applied to row vectors
+    rotation = np.frombuffer(rotation_bytes, dtype=np.float64).reshape(3, 3).astype(np.float32)
+    u = ((np.arange(width) + 0.5 - cx) / fx).astype(np.float32)
+    v = ((np.arange(height) + 0.5 - cy) / fy).astype(np.float32)
+    # R^T [u, v, 1]: the camera axes (rows of R) weighted by the pixel's normalised coords.
+    rays: F32 = u[None, :, None] * rotation[0] + v[:, None, None] * rotation[1] + rotation[2]
     rays.setflags(write=False)
     return rays
 
 
 @functools.lru_cache(maxsize=8)
 def _cached_ray_lengths(key: tuple[int, int, float, float, float, float, bytes]) -> F32:
-    lengths: F32 = np.linalg.norm(_cached_rays(key), axis=-1).astype(np.float32)
+    rays = _cached_rays(key)
+    lengths: F32 = np.sqrt(rays[..., 0] ** 2 + rays[..., 1] ** 2 + rays[..., 2] ** 2)
     lengths.setflags(write=False)
     return lengths
 
@@ -257,20 +257,32 @@ def world_points(depth: npt.NDArray[np.floating], camera: Camera) -> F64:
 
 
 def sky_image(camera: Camera, look: Look) -> F32:
-    """The sky [H,W,3] behind everything: horizon colour blending to zenith with elevation."""
-    rays, lengths = _rays(camera), _ray_lengths(camera)
+    """The sky [H,W,3] behind everything: horizon colour blending to zenith with elevation.
+
+    Cached per camera orientation and look (read-only result): a still camera pays once.
+    """
+    rotation = camera.world_to_camera[:3, :3]
+    key = (camera.width, camera.height, camera.fx, camera.fy, camera.cx, camera.cy,
+           rotation.tobytes())  # fmt: skip
+    return _cached_sky(key, look)
+
+
+@functools.lru_cache(maxsize=4)
+def _cached_sky(key: tuple[int, int, float, float, float, float, bytes], look: Look) -> F32:
+    rays, lengths = _cached_rays(key), _cached_ray_lengths(key)
     up = rays[..., 2] / lengths
     t = np.sqrt(np.clip(up, 0.0, 1.0))[..., None]
-    horizon, zenith = (
-        np.asarray(look.sky_horizon, np.float32),
-        np.asarray(look.sky_zenith, np.float32),
-    )
-    sky = horizon + (zenith - horizon) * t
-    sun_dot = np.clip((rays @ np.asarray(look.to_sun, np.float32)) / lengths, 0, 1)
-    glare = sun_dot**400  # the sun's disc and glare
-    if glare.max() > 1e-3:
-        sky += np.asarray(look.sun_rgb, np.float32) * glare[..., None] * 2.0
-    return np.asarray(sky, dtype=np.float32)
+    horizon = np.asarray(look.sky_horizon, np.float32)
+    zenith = np.asarray(look.sky_zenith, np.float32)
+    sky: F32 = horizon + (zenith - horizon) * t
+    sx, sy, sz = (np.float32(v) for v in look.to_sun)
+    sun_dot = (rays[..., 0] * sx + rays[..., 1] * sy + rays[..., 2] * sz) / lengths
+    near_sun = sun_dot > SUN_GLARE_COS
+    if near_sun.any():  # the sun's disc and glare
+        glare = sun_dot[near_sun] ** SUN_GLARE_POWER
+        sky[near_sun] += np.asarray(look.sun_rgb, np.float32) * glare[:, None] * 2.0
+    sky.setflags(write=False)
+    return sky
 
 
 def lamp_irradiance(points: F64, lamps: Sequence[Lamp], mask: npt.NDArray[np.bool_]) -> F32:
@@ -284,9 +296,7 @@ def lamp_irradiance(points: F64, lamps: Sequence[Lamp], mask: npt.NDArray[np.boo
         offset = p - np.asarray(lamp.position)
         dist2 = np.einsum("ij,ij->i", offset, offset)
         facing = np.clip((offset @ np.asarray(lamp.direction)) / np.sqrt(dist2 + 1e-9), 0, 1)
-        total += np.outer(
-            facing * LAMP_STRENGTH / (1.0 + dist2 / (LAMP_REACH_M / 3) ** 2), lamp.rgb
-        )
+        total += np.outer(facing * LAMP_STRENGTH / (1.0 + dist2 / (LAMP_REACH_M / 3) ** 2), lamp.rgb)
     out[mask] = total
     return out
 
@@ -354,9 +364,7 @@ def _glow(out: F32, depth: F32, camera: Camera, look: Look, lamps: Sequence[Lamp
         out[y0:y1, x0:x1] += weight[..., None] * np.asarray(lamp.rgb, np.float32) * 1.5
 
 
-def _precipitation(
-    out: F32, depth: F32, camera: Camera, look: Look, seed: int, time_s: float
-) -> None:
+def _precipitation(out: F32, depth: F32, camera: Camera, look: Look, seed: int, time_s: float) -> None:
     """Seeded rain streaks or snow flakes in a world-fixed box around the camera."""
     rain = look.precipitation == "rain"
     count = int((MAX_RAIN_DROPS if rain else MAX_SNOW_FLAKES) * look.precipitation_intensity)
