@@ -192,3 +192,16 @@ def test_timings_report_each_stage():
     out = rasterize(random_scene(50, 5, 0), small_camera(), backend="numba")
     assert {"project", "bin", "composite", "total"} <= out.timings.keys()
     assert out.backend == "numba"
+
+
+@pytest.mark.parametrize("backend", ["reference", *FAST_BACKENDS])
+def test_splats_at_exactly_the_same_depth_draw_in_id_order(backend):
+    splats = Splats.concat(
+        [one_splat(3.0, rgb=(0.0, 0.0, 1.0))]
+        + [one_splat(4.0, rgb=(0.0, 1.0, 0.0))] * 5
+        + [one_splat(3.0, rgb=(1.0, 0.0, 0.0))]
+    )
+    out = rasterize(splats, centred_camera(), backend=backend, return_index=True)
+    assert out.index[16, 16] == 0  # blue, the lower id of the two at 3 m, is in front
+    assert out.rgb[16, 16, 2] == pytest.approx(0.5, rel=1e-5)
+    assert out.rgb[16, 16, 0] == pytest.approx(0.25, rel=1e-5)

@@ -14,7 +14,7 @@ import numba
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["bin_tiles", "compact", "composite", "project"]
+__all__ = ["bin_tiles", "compact", "composite", "order_ties_by_id", "gather_rows", "project"]
 
 # Columns of the packed per-splat feature rows the compositor reads.
 U, V, CONIC_A, CONIC_B, CONIC_C, OPACITY, MIN_POWER, DEPTH, RED, GREEN, BLUE = range(11)
@@ -161,10 +161,26 @@ def compact(
 
 
 @numba.njit(cache=True)
+def order_ties_by_id(order: npt.NDArray[np.int64], depth: npt.NDArray[np.float64]) -> None:
+    """Make a depth argsort stable in place: runs of equal depth get ascending ids.
+
+    NumPy's unstable argsort is 2.5x faster than its stable one; ties are rare, so
+    fixing them afterwards gives the (depth, id) order the reference uses, cheaply.
+    """
+    start = 0
+    for k in range(1, order.shape[0] + 1):
+        if k == order.shape[0] or depth[order[k]] != depth[order[start]]:
+            if k - start > 1:
+                order[start:k] = np.sort(order[start:k])
+            start = k
+
+
+@numba.njit(cache=True)
 def bin_tiles(
     order: npt.NDArray[np.int64],
     boxes: npt.NDArray[np.int32],
-    tile: int,
+    tile_w: int,
+    tile_h: int,
     tiles_x: int,
     n_tiles: int,
 ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int32]]:
@@ -175,33 +191,61 @@ def bin_tiles(
     """
     counts = np.zeros(n_tiles + 1, dtype=np.int64)
     for g in order:
-        for ty in range(boxes[g, 2] // tile, boxes[g, 3] // tile + 1):
-            for tx in range(boxes[g, 0] // tile, boxes[g, 1] // tile + 1):
+        for ty in range(boxes[g, 2] // tile_h, boxes[g, 3] // tile_h + 1):
+            for tx in range(boxes[g, 0] // tile_w, boxes[g, 1] // tile_w + 1):
                 counts[ty * tiles_x + tx + 1] += 1
     offsets = np.cumsum(counts)
     cursor = offsets[:-1].copy()
     ids = np.empty(offsets[-1], dtype=np.int32)
     for g in order:
-        for ty in range(boxes[g, 2] // tile, boxes[g, 3] // tile + 1):
-            for tx in range(boxes[g, 0] // tile, boxes[g, 1] // tile + 1):
+        for ty in range(boxes[g, 2] // tile_h, boxes[g, 3] // tile_h + 1):
+            for tx in range(boxes[g, 0] // tile_w, boxes[g, 1] // tile_w + 1):
                 t = ty * tiles_x + tx
                 ids[cursor[t]] = g
                 cursor[t] += 1
     return offsets, ids
 
 
+@numba.njit(parallel=True, cache=True, boundscheck=False)
+def gather_rows(
+    ids: npt.NDArray[np.int32],
+    feats: npt.NDArray[np.float64],
+    boxes: npt.NDArray[np.int32],
+    index: npt.NDArray[np.int64],
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int32], npt.NDArray[np.int32]]:
+    """Copy each (tile, splat) pair's splat data into tile order.
+
+    The compositor then streams through memory instead of chasing splat ids across a
+    feature table larger than the caches: measured 30% faster on 100k splats.
+    """
+    n = ids.shape[0]
+    out_feats = np.empty((n, feats.shape[1]))
+    out_boxes = np.empty((n, 4), dtype=np.int32)
+    out_index = np.empty(n, dtype=np.int32)
+    for k in numba.prange(n):
+        g = ids[k]
+        for j in range(feats.shape[1]):
+            out_feats[k, j] = feats[g, j]
+        for j in range(4):
+            out_boxes[k, j] = boxes[g, j]
+        out_index[k] = index[g]
+    return out_feats, out_boxes, out_index
+
+
 @numba.njit(parallel=True, cache=True, boundscheck=False, fastmath=_SAFE_FASTMATH)
 def composite(
     offsets: npt.NDArray[np.int64],
-    ids: npt.NDArray[np.int32],
     tile_order: npt.NDArray[np.int64],
     feats: npt.NDArray[np.float64],
     boxes: npt.NDArray[np.int32],
-    splat_index: npt.NDArray[np.int64],
+    splat_index: npt.NDArray[np.int32],
     depth_limit: npt.NDArray[np.float64],
-    tile: int,
+    tile_w: int,
+    tile_h: int,
     tiles_x: int,
     thresholds: npt.NDArray[np.float64],
+    use_limit: bool,
+    want_index: bool,
     out_rgb: npt.NDArray[np.float32],
     out_alpha: npt.NDArray[np.float32],
     out_depth: npt.NDArray[np.float32],
@@ -209,11 +253,15 @@ def composite(
 ) -> None:
     """Front-to-back alpha compositing, tile by tile, splat-major within a tile.
 
+    Rows ``offsets[t]:offsets[t+1]`` of feats/boxes/splat_index (from ``gather_rows``)
+    are tile t's splats, front to back.
+
     Per pixel the splats arrive in depth order, so this equals the per-pixel loop of 3DGS:
     alpha = min(alpha_max, o * exp(power)); skip alpha < alpha_min; stop (excluding the
     splat) once transmittance would fall below t_min. Visiting only each splat's pixel box
     inside the tile is what makes the CPU fast: most splats cover a few pixels.
-    ``thresholds`` = (alpha_min, alpha_max, t_min, index_min_alpha).
+    ``thresholds`` = (alpha_min, alpha_max, t_min, index_min_alpha); ``use_limit`` and
+    ``want_index`` switch off the depth-limit test and index tracking when unused.
     """
     alpha_min, alpha_max, t_min, index_min_alpha = (
         thresholds[0],
@@ -224,8 +272,8 @@ def composite(
     height, width = depth_limit.shape
     for k in numba.prange(tile_order.shape[0]):
         t = tile_order[k]
-        px0, py0 = (t % tiles_x) * tile, (t // tiles_x) * tile
-        px1, py1 = min(px0 + tile, width), min(py0 + tile, height)
+        px0, py0 = (t % tiles_x) * tile_w, (t // tiles_x) * tile_h
+        px1, py1 = min(px0 + tile_w, width), min(py0 + tile_h, height)
         tw = px1 - px0
         n_pix = tw * (py1 - py0)
         trans = np.ones(n_pix)
@@ -233,28 +281,34 @@ def composite(
         acc_b, acc_z = np.zeros(n_pix), np.zeros(n_pix)
         first = np.full(n_pix, -1, dtype=np.int64)
         done = np.zeros(n_pix, dtype=np.bool_)
+        # Pixels per tile row still open: whole finished rows are skipped before any maths.
+        row_open = np.full(py1 - py0, tw, dtype=np.int64)
         n_done = 0
-        for s in range(offsets[t], offsets[t + 1]):
-            g = ids[s]
+        for g in range(offsets[t], offsets[t + 1]):
             u, v = feats[g, U], feats[g, V]
             ca, cb, cc = feats[g, CONIC_A], feats[g, CONIC_B], feats[g, CONIC_C]
             opacity, z = feats[g, OPACITY], feats[g, DEPTH]
             red, green, blue = feats[g, RED], feats[g, GREEN], feats[g, BLUE]
-            q_max = -2.0 * feats[g, MIN_POWER]
             x_lo, x_hi = max(boxes[g, 0], px0), min(boxes[g, 1], px1 - 1)
+            # Row span of the ellipse power >= min_power: ca dx^2 + 2 cb dy dx + cc dy^2 <= q_max
+            # gives dx = -slope dy +- sqrt(k1 dy^2 + k2); constants hoisted out of the rows.
+            inv_ca = 1.0 / ca
+            slope = cb * inv_ca
+            k1 = (cb * cb - ca * cc) * inv_ca * inv_ca
+            k2 = -2.0 * feats[g, MIN_POWER] * inv_ca
             # Along a row the Gaussian is exp of a quadratic, so successive values follow
-            # e[k+1] = e[k] * r[k], r[k+1] = r[k] * exp(-ca): one exp per row, not per pixel.
+            # e[k+1] = e[k] * r[k], r[k+1] = r[k] * exp(-ca): two exps per row, not per pixel.
             # The conic's entries are at most 1/LOW_PASS, so none of these can overflow.
             step_decay = math.exp(-ca)
             for py in range(max(boxes[g, 2], py0), min(boxes[g, 3], py1 - 1) + 1):
+                if row_open[py - py0] == 0:
+                    continue
                 dy = py + 0.5 - v
-                # Only the span of this row inside the ellipse power >= min_power can pass
-                # the alpha test: solve ca dx^2 + 2 cb dy dx + cc dy^2 - q_max <= 0 for dx.
-                disc = (cb * cb - ca * cc) * dy * dy + ca * q_max
+                disc = k1 * dy * dy + k2
                 if disc < 0.0:
                     continue
-                root = math.sqrt(disc) / ca
-                centre = u - cb * dy / ca - 0.5
+                root = math.sqrt(disc)
+                centre = u - 0.5 - slope * dy
                 span_lo = max(x_lo, math.ceil(centre - root - BOX_SLACK))
                 span_hi = min(x_hi, math.floor(centre + root + BOX_SLACK))
                 if span_lo > span_hi:
@@ -268,19 +322,20 @@ def composite(
                     alpha = min(alpha_max, value)
                     value *= ratio
                     ratio *= step_decay
-                    if alpha < alpha_min or done[p] or z >= depth_limit[py, px]:
+                    if alpha < alpha_min or done[p] or (use_limit and z >= depth_limit[py, px]):
                         continue
                     next_t = trans[p] * (1.0 - alpha)
                     if next_t < t_min:
                         done[p] = True
                         n_done += 1
+                        row_open[py - py0] -= 1
                         continue
                     weight = alpha * trans[p]
                     acc_r[p] += weight * red
                     acc_g[p] += weight * green
                     acc_b[p] += weight * blue
                     acc_z[p] += weight * z
-                    if first[p] < 0 and alpha >= index_min_alpha:
+                    if want_index and first[p] < 0 and alpha >= index_min_alpha:
                         first[p] = splat_index[g]
                     trans[p] = next_t
             if n_done == n_pix:

@@ -68,12 +68,8 @@ def project_reference(splats: Splats, camera: Camera) -> list[ProjectedSplat]:
         cov_world = rs @ rs.T
         cov_cam = rot_w @ cov_world @ rot_w.T
         # Jacobian of the pinhole projection, x/z and y/z clamped just outside the view.
-        xz = min(
-            (camera.width - cx) / fx + FOV_CLAMP * tan_x, max(-cx / fx - FOV_CLAMP * tan_x, x / z)
-        )
-        yz = min(
-            (camera.height - cy) / fy + FOV_CLAMP * tan_y, max(-cy / fy - FOV_CLAMP * tan_y, y / z)
-        )
+        xz = min((camera.width - cx) / fx + FOV_CLAMP * tan_x, max(-cx / fx - FOV_CLAMP * tan_x, x / z))
+        yz = min((camera.height - cy) / fy + FOV_CLAMP * tan_y, max(-cy / fy - FOV_CLAMP * tan_y, y / z))
         jac = np.array([[fx / z, 0.0, -fx * xz / z], [0.0, fy / z, -fy * yz / z]])
         cov2d = jac @ cov_cam @ jac.T + LOW_PASS * np.eye(2)
         if np.linalg.det(cov2d) <= 0:

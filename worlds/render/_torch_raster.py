@@ -145,7 +145,7 @@ def rasterize_torch(
     t1 = time.perf_counter()
     tiles_x, tiles_y = tile_grid(camera)
     order = visible[np.argsort(z_np[visible], kind="stable")]
-    offsets, ids = bin_tiles(order, boxes, TILE_SIZE, tiles_x, tiles_x * tiles_y)
+    offsets, ids = bin_tiles(order, boxes, TILE_SIZE, TILE_SIZE, tiles_x, tiles_x * tiles_y)
     t2 = time.perf_counter()
 
     limit = torch.full((h * w,), math.inf, dtype=dtype, device=device)
@@ -210,9 +210,7 @@ def _tile_batches(counts: npt.NDArray[np.int64]) -> list[npt.NDArray[np.int64]]:
     pixels = TILE_SIZE * TILE_SIZE
     while start < len(tiles):
         end = start + 1
-        while end < len(tiles) and (end + 1 - start) * pixels * counts[tiles[end]] <= (
-            MAX_BATCH_ELEMENTS
-        ):
+        while end < len(tiles) and (end + 1 - start) * pixels * counts[tiles[end]] <= (MAX_BATCH_ELEMENTS):
             end += 1
         batches.append(tiles[start:end])
         start = end

@@ -42,9 +42,7 @@ _EYE_HEIGHT = 1.6  # metres, a car-mounted camera
 def street_camera(width: int, height: int, fovy_deg: float = 50.0) -> Camera:
     """The benchmark camera: 1.6 m above the road, looking down the street (+x, z up)."""
     eye = (0.0, 0.0, _EYE_HEIGHT)
-    return Camera.from_look_at(
-        eye, (10.0, 0.0, _EYE_HEIGHT), width=width, height=height, fovy_deg=fovy_deg
-    )
+    return Camera.from_look_at(eye, (10.0, 0.0, _EYE_HEIGHT), width=width, height=height, fovy_deg=fovy_deg)
 
 
 def street_scene(n: int, camera: Camera, seed: int = 0) -> Splats:
@@ -52,9 +50,7 @@ def street_scene(n: int, camera: Camera, seed: int = 0) -> Splats:
     rng = np.random.default_rng(seed)
     m = int(n * 1.4) + 16  # oversample: rays into the sky are dropped
     pix = rng.uniform([0, 0], [camera.width, camera.height], (m, 2))
-    rays_cam = np.stack(
-        [(pix[:, 0] - camera.cx) / camera.fx, (pix[:, 1] - camera.cy) / camera.fy, np.ones(m)], 1
-    )
+    rays_cam = np.stack([(pix[:, 0] - camera.cx) / camera.fx, (pix[:, 1] - camera.cy) / camera.fy, np.ones(m)], 1)
     c2w = camera.camera_to_world
     rays = rays_cam @ c2w[:3, :3].T
     origin = c2w[:3, 3]
@@ -130,12 +126,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--height", type=int, default=360)
     parser.add_argument("--counts", type=int, nargs="+", default=[10_000, 100_000, 1_000_000])
     parser.add_argument("--frames", type=int, default=5, help="timed frames per case (median)")
-    parser.add_argument(
-        "--backends", nargs="+", default=None, help="numba torch torch-cuda gsplat (default: all)"
-    )
-    parser.add_argument(
-        "--torch-max-count", type=int, default=10_000, help="skip CPU torch above this many splats"
-    )
+    parser.add_argument("--backends", nargs="+", default=None, help="numba torch torch-cuda gsplat (default: all)")
+    parser.add_argument("--torch-max-count", type=int, default=10_000, help="skip CPU torch above this many splats")
     parser.add_argument("--out", default="bench_splats.json", help="JSON output path")
     args = parser.parse_args(argv)
 
@@ -143,9 +135,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     import torch
 
     cuda = bool(torch.cuda.is_available())
-    backends = args.backends or [b for b in available_backends() if b != "reference"] + (
-        ["torch-cuda"] if cuda else []
-    )
+    backends = args.backends or [b for b in available_backends() if b != "reference"] + (["torch-cuda"] if cuda else [])
     camera = street_camera(args.width, args.height)
     report: dict[str, Any] = {
         "resolution": [args.width, args.height],

@@ -156,9 +156,7 @@ def _sh_band_rotations(rotation: F64, degree: int) -> list[F64]:
     n = _ROTATION_FIT_DIRECTIONS
     i = np.arange(n) + 0.5
     polar, azimuth = np.arccos(1 - 2 * i / n), np.pi * (1 + 5**0.5) * i
-    dirs = np.stack(
-        [np.sin(polar) * np.cos(azimuth), np.sin(polar) * np.sin(azimuth), np.cos(polar)], 1
-    )
+    dirs = np.stack([np.sin(polar) * np.cos(azimuth), np.sin(polar) * np.sin(azimuth), np.cos(polar)], 1)
     rotated = dirs @ rotation  # rows are (R^T d)^T
     before = np.stack(sh_basis(dirs[:, 0], dirs[:, 1], dirs[:, 2], degree), 1)
     after = np.stack(sh_basis(rotated[:, 0], rotated[:, 1], rotated[:, 2], degree), 1)
