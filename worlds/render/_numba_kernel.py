@@ -14,7 +14,7 @@ import numba
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["bin_tiles", "compact", "composite", "order_ties_by_id", "gather_rows", "project"]
+__all__ = ["bin_tiles", "compact", "composite", "gather_rows", "order_ties_by_id", "project"]
 
 # Columns of the packed per-splat feature rows the compositor reads.
 U, V, CONIC_A, CONIC_B, CONIC_C, OPACITY, MIN_POWER, DEPTH, RED, GREEN, BLUE = range(11)
