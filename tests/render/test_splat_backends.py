@@ -174,6 +174,9 @@ def test_rasterize_refuses_bad_arguments_with_what_is_allowed():
         rasterize(splats, camera, depth_limit=np.ones((4, 4)))
     with pytest.raises(RasterizeError, match="background"):
         rasterize(splats, camera, background=(1.0, 0.0))
+    splats.means[0, 0] = np.nan
+    with pytest.raises(RasterizeError, match="means contains NaN"):
+        rasterize(splats, camera)
 
 
 def test_gsplat_backend_says_what_it_needs_when_absent():

@@ -140,6 +140,9 @@ def rasterize(
     """
     if backend not in BACKENDS:
         raise RasterizeError(f"unknown backend {backend!r}; choose one of {', '.join(BACKENDS)}")
+    for name in ("means", "quats", "log_scales", "opacity_logits"):
+        if not np.isfinite(getattr(splats, name)).all():
+            raise RasterizeError(f"splats.{name} contains NaN or inf; every value must be finite")
     bg = _check_background(background)
     limit = _check_depth_limit(depth_limit, camera)
     limit_or_none = None if depth_limit is None else limit
