@@ -16,7 +16,7 @@ Config file (`~/.config/drivetwin/config.toml`, or the path in DRIVETWIN_CONFIG)
     [ollama]
     host = "http://127.0.0.1:11434"
     [embedded]
-    threads = 1   # llama.cpp threads; default: all CPUs (use fewer on a busy machine)
+    threads = 1   # llama.cpp threads; default: half the logical CPUs (physical cores)
 """
 
 from __future__ import annotations
@@ -103,7 +103,7 @@ class BackendSettings(BaseModel):
     # None lets the ollama client apply its own default and OLLAMA_HOST.
     ollama_host: str | None = None
     timeout_s: float | None = Field(default=None, gt=0)
-    # None: llama.cpp uses every CPU.
+    # None: the embedded backend's default_threads().
     threads: int | None = Field(default=None, ge=1)
     sources: dict[str, str] = {}
 

@@ -41,6 +41,7 @@ def smollm2() -> EmbeddedBackend:
 def test_smollm2_answers_json_that_matches_the_schema(smollm2: EmbeddedBackend) -> None:
     result = smollm2.chat(WEATHER_PROMPT, schema=WEATHER_SCHEMA, max_tokens=64)
     jsonschema.validate(result.data, WEATHER_SCHEMA)
+    assert result.text.index('"weather"') < result.text.index('"intensity"')  # schema order kept
     assert result.backend == "embedded" and result.model == "smollm2-135m"
     assert result.prompt_tokens > 10 and result.completion_tokens > 0
     assert result.finish_reason == "stop" and result.latency_s > 0
