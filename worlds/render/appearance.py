@@ -69,7 +69,7 @@ LAMP_RGB: RGB = (1.0, 0.82, 0.55)  # sodium-ish warm white
 HEADLAMP_RGB: RGB = (0.95, 0.95, 1.0)
 GLOW_RADIUS_M = 0.25  # apparent size of a lamp's halo
 LAMP_REACH_M = 18.0  # irradiance of a lamp falls off over this distance
-LAMP_STRENGTH = 1.6
+LAMP_STRENGTH = 0.8
 SUN_GLARE_POWER = 400  # cos^400 halves about 3 degrees from the sun's centre
 SUN_GLARE_COS = 0.97  # beyond ~14 degrees the glare is below 1e-5: skip those pixels
 
