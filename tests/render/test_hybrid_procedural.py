@@ -39,3 +39,14 @@ def test_a_campus_frame_shows_facade_splats_in_front_of_the_building_meshes() ->
     assert walls.sum() > 300
     # Buildings are covered by their facade splats (the wall mesh does not hide them).
     assert (comp.raster.alpha[walls] > 0.5).mean() > 0.7
+
+
+def test_a_removed_splat_asset_is_no_longer_drawn() -> None:
+    scene = load_world("campus")
+    world = MujocoWorld.from_scene(scene)
+    suv = next(a for a in scene.assets if a.category == "suv")
+    renderer = HybridRenderer(world, attachments={suv.id: asset_splats("suv")})
+    camera = default_camera(scene, 96, 54)
+    assert renderer.compose(camera).raster is not None
+    world.update(scene.model_copy(update={"assets": [a for a in scene.assets if a.id != suv.id]}))
+    assert renderer.compose(camera).raster is None  # nothing left to rasterize, no error

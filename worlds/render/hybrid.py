@@ -101,6 +101,17 @@ class Composite:
     timings: dict[str, float] = field(default_factory=dict)
 
 
+def _existing_bodies(world: MujocoWorld, asset_ids: Mapping[str, Splats]) -> dict[str, int]:
+    """Body ids of the assets still in the world (a removed asset's splats are not drawn)."""
+    bodies = {}
+    for asset_id in asset_ids:
+        try:
+            bodies[asset_id] = world.body_id(asset_id)
+        except UnknownBodyError:
+            continue
+    return bodies
+
+
 def _body_transform(xpos: npt.ArrayLike, xmat: npt.ArrayLike) -> npt.NDArray[np.float64]:
     transform = np.eye(4)
     transform[:3, :3] = np.asarray(xmat, dtype=np.float64).reshape(3, 3)
@@ -210,7 +221,7 @@ class HybridRenderer:
         with self.lock if self.lock is not None else nullcontext():
             model, data = world.model, world.data
             sim_time = float(data.time)
-            bodies = {asset_id: world.body_id(asset_id) for asset_id in self.attachments}
+            bodies = _existing_bodies(world, self.attachments)
             poses = {a: _body_transform(data.xpos[b], data.xmat[b]) for a, b in bodies.items()}
             lamps = lamps_of(world, look)
         splats = self._posed_splats(poses)
