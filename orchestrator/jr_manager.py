@@ -15,13 +15,15 @@ from dataclasses import dataclass, field
 from drivetwin.orchestrator.backends import Backend, Message
 from drivetwin.orchestrator.grounding import Grounder, Match
 from drivetwin.orchestrator.jr_schema import WorldNames, call_schema, signature
-from drivetwin.orchestrator.managers import Answer, Requirement, ask
+from drivetwin.orchestrator.managers import CALL_TIMEOUT_S, Answer, Requirement, ask
 from drivetwin.orchestrator.planning import PlanContext, PlanningError, TraceStep
 from drivetwin.prompts.templates import as_json, jr_examples, render
 from drivetwin.tools.base import Family, ToolCall
 from drivetwin.tools.errors import ToolError
 
 JR_MAX_TOKENS = 200
+# Few-shot examples per call, chosen by meaning from the family's bank.
+JR_EXAMPLES = 3
 # A grounded name this sure narrows the enum to the grounded names; below it, it is a hint.
 NARROW_SCORE = 0.75
 # Grounded alternatives kept in a narrowed enum (the best one plus near misses).
@@ -114,10 +116,11 @@ def render_requirement(requirement: Requirement, grounding: Grounding) -> str:
 class JrManager:
     """Plans one requirement of one family into one ToolCall, checked against the scene."""
 
-    def __init__(self, family: Family, backend: Backend, grounder: Grounder) -> None:
+    def __init__(self, family: Family, backend: Backend, grounder: Grounder, timeout_s: float = CALL_TIMEOUT_S) -> None:
         self.family = family
         self.backend = backend
         self.grounder = grounder
+        self.timeout_s = timeout_s
 
     def messages(self, requirement_text: str, grounding: Grounding, context: PlanContext) -> list[Message]:
         tools = context.registry.family(self.family)
@@ -129,7 +132,10 @@ class JrManager:
             hints="\n".join(hints),
         )
         messages: list[Message] = [Message(role="system", content=system)]
-        for example in jr_examples().get(self.family, ()):
+        bank = jr_examples().get(self.family, ())
+        chosen = self.grounder.nearest(requirement_text, [e.requirement for e in bank], JR_EXAMPLES)
+        # Most similar last, nearest the real requirement, where small models copy from.
+        for example in (bank[i] for i in reversed(chosen)):
             messages.append(Message(role="user", content=example.requirement))
             messages.append(Message(role="assistant", content=as_json(example.call)))
         messages.append(Message(role="user", content=requirement_text))
@@ -181,6 +187,7 @@ class JrManager:
             validate,
             step=f"Jr. manager ({self.family})",
             max_tokens=JR_MAX_TOKENS,
+            timeout_s=self.timeout_s,
         )
         output = str(answer.value)
         if answer.refusals:

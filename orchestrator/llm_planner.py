@@ -19,6 +19,7 @@ from typing import Any
 from drivetwin.orchestrator.backends import Backend, BackendError, load_backend
 from drivetwin.orchestrator.grounding import Grounder
 from drivetwin.orchestrator.jr_manager import JrManager
+from drivetwin.orchestrator.managers import CALL_TIMEOUT_S
 from drivetwin.orchestrator.planning import Plan, PlanContext, PlanningError, TraceStep
 from drivetwin.orchestrator.sr_manager import SrManager
 from drivetwin.prompts.templates import prompt_version
@@ -60,8 +61,10 @@ class LlmPlanner:
         backend: Backend | str = DEFAULT_BACKEND,
         model: str | None = DEFAULT_MODEL,
         grounder: Grounder | None = None,
+        call_timeout_s: float = CALL_TIMEOUT_S,
         **backend_options: Any,
     ) -> None:
+        self.call_timeout_s = call_timeout_s
         self._backend = backend if isinstance(backend, Backend) else None
         self._backend_name = backend if isinstance(backend, str) else backend.name
         self._model = model
@@ -95,12 +98,14 @@ class LlmPlanner:
         backend = self.backend
         trace: list[TraceStep] = []
         started = time.perf_counter()
-        requirements, sr_step = SrManager(backend, self.grounder).requirements(prompt, context)
+        requirements, sr_step = SrManager(backend, self.grounder, self.call_timeout_s).requirements(prompt, context)
         trace.append(sr_step)
         calls: list[ToolCall] = []
         juniors: dict[Family, JrManager] = {}
         for requirement in requirements:
-            junior = juniors.setdefault(requirement.kind, JrManager(requirement.kind, backend, self.grounder))
+            junior = juniors.setdefault(
+                requirement.kind, JrManager(requirement.kind, backend, self.grounder, self.call_timeout_s)
+            )
             call, steps = junior.call(requirement, prompt, context, calls)
             calls.append(call)
             trace += steps

@@ -104,6 +104,7 @@ def ask(
     step: str,
     max_tokens: int,
     budget: int = RETRY_BUDGET,
+    timeout_s: float = CALL_TIMEOUT_S,
 ) -> Answer[T]:
     """Ask until `validate` accepts the parsed JSON answer, re-asking with the error message.
 
@@ -122,7 +123,7 @@ def ask(
                 temperature=0.0,
                 seed=attempt,
                 max_tokens=max_tokens,
-                timeout_s=CALL_TIMEOUT_S,
+                timeout_s=timeout_s,
             )
         except BackendUnavailable as exc:
             raise PlanningError(f"{step}: the language model is not available: {exc}") from exc
@@ -132,8 +133,8 @@ def ask(
                 "try again, or use a smaller model or the rule planner"
             ) from exc
         except InvalidOutput as exc:
-            refusals.append(_short(exc.message))
-            conversation += [_assistant(exc.raw), _fix(exc.reason + ": " + exc.message)]
+            refusals.append(_short(f"{exc.reason} answer: {exc.message}"))
+            conversation += [_assistant(exc.raw), _fix(refusals[-1])]
             continue
         except BackendError as exc:
             raise PlanningError(f"{step}: the language model failed: {exc}") from exc

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from drivetwin.orchestrator.backends import Backend, Message
 from drivetwin.orchestrator.grounding import Grounder
-from drivetwin.orchestrator.managers import Answer, Requirement, Requirements, ask, requirements_schema
+from drivetwin.orchestrator.managers import CALL_TIMEOUT_S, Answer, Requirement, Requirements, ask, requirements_schema
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning import PlanContext, TraceStep
 from drivetwin.prompts.templates import as_json, render, sr_examples
@@ -35,9 +35,10 @@ def memory_view(memory: Memory, limit: int = MEMORY_CHARS) -> str:
 class SrManager:
     """Turns a prompt into Requirements with one (constrained, validated) LLM answer."""
 
-    def __init__(self, backend: Backend, grounder: Grounder) -> None:
+    def __init__(self, backend: Backend, grounder: Grounder, timeout_s: float = CALL_TIMEOUT_S) -> None:
         self.backend = backend
         self.grounder = grounder
+        self.timeout_s = timeout_s
 
     def messages(self, prompt: str, context: PlanContext) -> list[Message]:
         """The chat the model sees: rules and context, then retrieved examples, then the request."""
@@ -64,6 +65,7 @@ class SrManager:
             Requirements.model_validate,
             step="Sr. manager",
             max_tokens=SR_MAX_TOKENS,
+            timeout_s=self.timeout_s,
         )
         found = answer.value.requirements
         output = "\n".join(str(r) for r in found)
