@@ -169,6 +169,7 @@ class HybridRenderer:
             the body's own geoms are not drawn (they remain its collision proxy).
         lock: the simulation's lock when another thread steps the world.
         shadows: draw mesh shadows (about 3x the mesh-pass time in software GL).
+        antialias: multisample the mesh pass (about 3x its time in software GL).
         backend: the splat rasterizer backend (see `rasterize`).
         seed: seed of the weather particles (same seed and sim time, same frame).
     """
@@ -181,6 +182,7 @@ class HybridRenderer:
         attachments: Mapping[str, Splats] | None = None,
         lock: threading.Lock | AbstractContextManager[Any] | None = None,
         shadows: bool = False,
+        antialias: bool = False,
         backend: BackendName = "auto",
         seed: int = 0,
     ) -> None:
@@ -192,7 +194,7 @@ class HybridRenderer:
         self.lock = lock
         self.backend: BackendName = backend
         self.seed = seed
-        self.mesh_pass = MeshPass(shadows=shadows)
+        self.mesh_pass = MeshPass(shadows=shadows, antialias=antialias)
 
     def close(self) -> None:
         """Free the GL resources."""

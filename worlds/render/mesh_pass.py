@@ -38,6 +38,7 @@ MAX_SCENE_GEOMS = 10_000
 # GL lights beyond this many are ignored by MuJoCo's fixed-function pipeline (OpenGL 1.x
 # guarantees 8 lights); the appearance code keeps its lights within it.
 MAX_GL_LIGHTS = 8
+ANTIALIAS_SAMPLES = 4  # MuJoCo's default offscreen multisampling
 
 SceneHook = Callable[[mujoco.MjvScene], None]
 
@@ -115,10 +116,13 @@ class MeshPass:
     the render context is rebuilt only when the model object changes (a recompile).
     """
 
-    def __init__(self, *, shadows: bool = False, max_geom: int = MAX_SCENE_GEOMS) -> None:
+    def __init__(self, *, shadows: bool = False, antialias: bool = False, max_geom: int = MAX_SCENE_GEOMS) -> None:
         # Shadows cost a second full pass (3-4x the frame time in software GL), so off by
         # default; the sun still shades faces by their normals.
         self.shadows = shadows
+        # 4x multisampling makes software GL about 3.4x slower (140 vs 42 ms at 640x360), and
+        # splats blended over mesh edges soften them anyway.
+        self.samples = ANTIALIAS_SAMPLES if antialias else 0
         self.max_geom = max_geom
         self._gl: Any = None
         self._model: mujoco.MjModel | None = None
@@ -138,7 +142,14 @@ class MeshPass:
         if self._model is not model:
             if self._context is not None:
                 self._context.free()
-            self._context = mujoco.MjrContext(model, mujoco.mjtFontScale.mjFONTSCALE_100.value)
+            # The render context reads its multisampling from the model; set it just for this.
+            samples = int(model.vis.quality.offsamples)
+            model.vis.quality.offsamples = self.samples
+            try:
+                font = mujoco.mjtFontScale.mjFONTSCALE_100.value
+                self._context = mujoco.MjrContext(model, font)
+            finally:
+                model.vis.quality.offsamples = samples
             mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN.value, self._context)
             # Reversed Z (1 at near, 0 at far) keeps float depth precise far from the camera.
             self._context.readDepthMap = mujoco.mjtDepthMap.mjDEPTH_ZEROFAR
