@@ -14,7 +14,7 @@ import numba
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["bin_tiles", "compact", "composite", "gather_rows", "order_ties_by_id", "project"]
+__all__ = ["bin_tiles", "composite", "gather_rows", "order_ties_by_id", "project"]
 
 # Columns of the packed per-splat feature rows the compositor reads.
 U, V, CONIC_A, CONIC_B, CONIC_C, OPACITY, MIN_POWER, DEPTH, RED, GREEN, BLUE = range(11)
@@ -145,22 +145,6 @@ def project(
 
 
 @numba.njit(cache=True)
-def compact(
-    visible: npt.NDArray[np.bool_],
-    feats: npt.NDArray[np.float64],
-    boxes: npt.NDArray[np.int32],
-) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64], npt.NDArray[np.int32]]:
-    """Keep the visible rows: returns their ids, features and boxes."""
-    index = np.flatnonzero(visible)
-    out_feats = np.empty((index.shape[0], feats.shape[1]))
-    out_boxes = np.empty((index.shape[0], 4), dtype=np.int32)
-    for k in range(index.shape[0]):
-        out_feats[k] = feats[index[k]]
-        out_boxes[k] = boxes[index[k]]
-    return index, out_feats, out_boxes
-
-
-@numba.njit(cache=True)
 def order_ties_by_id(order: npt.NDArray[np.int64], depth: npt.NDArray[np.float64]) -> None:
     """Make a depth argsort stable in place: runs of equal depth get ascending ids.
 
@@ -177,27 +161,27 @@ def order_ties_by_id(order: npt.NDArray[np.int64], depth: npt.NDArray[np.float64
 
 @numba.njit(cache=True)
 def bin_tiles(
-    order: npt.NDArray[np.int64],
     boxes: npt.NDArray[np.int32],
     tile_w: int,
     tile_h: int,
     tiles_x: int,
     n_tiles: int,
 ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int32]]:
-    """Sort (tile, splat) pairs by (tile, depth): returns tile offsets [T+1] and splat ids.
+    """Sort (tile, splat) pairs by (tile, depth): returns tile offsets [T+1] and splat rows.
 
-    ``order`` lists splats front to back; a stable counting sort by tile on top of it is
-    the second digit of an LSD radix sort, i.e. one sort by the key (tile, depth).
+    ``boxes`` must already be in depth order (front to back); a stable counting sort by
+    tile on top of that is the second digit of an LSD radix sort, i.e. one sort by the
+    key (tile, depth). Reading the boxes in order keeps both passes streaming.
     """
     counts = np.zeros(n_tiles + 1, dtype=np.int64)
-    for g in order:
+    for g in range(boxes.shape[0]):
         for ty in range(boxes[g, 2] // tile_h, boxes[g, 3] // tile_h + 1):
             for tx in range(boxes[g, 0] // tile_w, boxes[g, 1] // tile_w + 1):
                 counts[ty * tiles_x + tx + 1] += 1
     offsets = np.cumsum(counts)
     cursor = offsets[:-1].copy()
     ids = np.empty(offsets[-1], dtype=np.int32)
-    for g in order:
+    for g in range(boxes.shape[0]):
         for ty in range(boxes[g, 2] // tile_h, boxes[g, 3] // tile_h + 1):
             for tx in range(boxes[g, 0] // tile_w, boxes[g, 1] // tile_w + 1):
                 t = ty * tiles_x + tx
@@ -208,15 +192,16 @@ def bin_tiles(
 
 @numba.njit(parallel=True, cache=True, boundscheck=False)
 def gather_rows(
-    ids: npt.NDArray[np.int32],
+    ids: npt.NDArray[np.integer],
     feats: npt.NDArray[np.float64],
     boxes: npt.NDArray[np.int32],
-    index: npt.NDArray[np.int64],
+    index: npt.NDArray[np.integer],
 ) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int32], npt.NDArray[np.int32]]:
-    """Copy each (tile, splat) pair's splat data into tile order.
+    """Rows ``ids`` of feats, boxes and index, copied in that order (in parallel).
 
-    The compositor then streams through memory instead of chasing splat ids across a
-    feature table larger than the caches: measured 30% faster on 100k splats.
+    Used twice: to put visible splats in depth order, then to lay out each (tile, splat)
+    pair in tile order, so binning and compositing stream through memory instead of
+    chasing ids across tables larger than the caches (30% faster at 100k splats).
     """
     n = ids.shape[0]
     out_feats = np.empty((n, feats.shape[1]))

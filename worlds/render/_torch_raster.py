@@ -145,7 +145,8 @@ def rasterize_torch(
     t1 = time.perf_counter()
     tiles_x, tiles_y = tile_grid(camera)
     order = visible[np.argsort(z_np[visible], kind="stable")]
-    offsets, ids = bin_tiles(order, boxes, TILE_SIZE, TILE_SIZE, tiles_x, tiles_x * tiles_y)
+    offsets, ranks = bin_tiles(boxes[order], TILE_SIZE, TILE_SIZE, tiles_x, tiles_x * tiles_y)
+    ids = order[ranks]
     t2 = time.perf_counter()
 
     limit = torch.full((h * w,), math.inf, dtype=dtype, device=device)

@@ -239,7 +239,10 @@ def _rasterize_numba(
         feats,
         boxes,
     )
-    index, feats, boxes = kernel.compact(visible, feats, boxes)
+    visible_ids = np.flatnonzero(visible)
+    order = visible_ids[np.argsort(feats[visible_ids, kernel.DEPTH])]
+    kernel.order_ties_by_id(order, feats[:, kernel.DEPTH])
+    feats, boxes, index = kernel.gather_rows(order, feats, boxes, np.arange(n))
     if splats.sh_degree == 0:  # view-independent: skip the directions
         feats[:, kernel.RED : kernel.BLUE + 1] = np.maximum(0.5 + SH_C0 * splats.sh[index, 0], 0)
     else:
@@ -248,9 +251,7 @@ def _rasterize_numba(
         feats[:, kernel.RED : kernel.BLUE + 1] = eval_sh_colors(splats.sh[index], directions)
     t1 = time.perf_counter()
     tiles_x, tiles_y = -(-camera.width // CPU_TILE[0]), -(-camera.height // CPU_TILE[1])
-    order = np.argsort(feats[:, kernel.DEPTH])
-    kernel.order_ties_by_id(order, feats[:, kernel.DEPTH])
-    offsets, ids = kernel.bin_tiles(order, boxes, *CPU_TILE, tiles_x, tiles_x * tiles_y)
+    offsets, ids = kernel.bin_tiles(boxes, *CPU_TILE, tiles_x, tiles_x * tiles_y)
     tile_feats, tile_boxes, tile_index = kernel.gather_rows(ids, feats, boxes, index)
     # Busy tiles first so the two threads finish together (dynamic chunks below).
     tile_order = np.argsort(-np.diff(offsets), kind="stable")
