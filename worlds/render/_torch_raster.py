@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -221,7 +222,7 @@ def _tile_batches(counts: npt.NDArray[np.int64]) -> list[npt.NDArray[np.int64]]:
 def _batch_layout(
     tiles: npt.NDArray[np.int64],
     offsets: npt.NDArray[np.int64],
-    ids: npt.NDArray[np.int32],
+    ids: npt.NDArray[np.integer[Any]],
     camera: Camera,
     device: torch.device,
 ) -> tuple[torch.Tensor, torch.Tensor, torch.Tensor]:
