@@ -54,7 +54,9 @@ def test_backend_timeout_is_a_planning_error_and_is_not_retried(campus: Scene, s
     assert session.scene == campus
 
 
-def test_truncated_answers_are_retried_within_the_budget_then_refused(campus: Scene, spelling_grounder: Grounder) -> None:
+def test_truncated_answers_are_retried_within_the_budget_then_refused(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
     cut = InvalidOutput("cut off at max_tokens", raw='{"requirements": [{"ki', reason="truncated")
     session, backend = scripted_session(campus, [cut] * (RETRY_BUDGET + 1), spelling_grounder)
     report = session.submit("make it rain")
@@ -83,7 +85,9 @@ def test_non_json_output_every_time_ends_in_a_planning_error(campus: Scene, spel
     assert session.scene == campus
 
 
-def test_a_tool_that_does_not_exist_is_refused_with_the_tools_that_do(campus: Scene, spelling_grounder: Grounder) -> None:
+def test_a_tool_that_does_not_exist_is_refused_with_the_tools_that_do(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
     teleport = call("teleport_asset", asset="ego")
     session, backend = scripted_session(campus, [RAIN, teleport, teleport, teleport], spelling_grounder)
     report = session.submit("make it rain")
