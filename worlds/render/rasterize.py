@@ -19,7 +19,15 @@ Outputs (``RasterOutput``): ``rgb`` = sum_i w_i c_i with w_i = alpha_i T_i (prem
 no background unless ``background`` is given, then + T * background); ``alpha`` = sum w_i;
 ``transmittance`` = 1 - alpha; ``depth`` = sum w_i z_i / alpha, the expected camera z of
 the visible splat surface (0 where alpha is 0); ``index`` = id of the front-most composited
-splat with alpha >= ``index_min_alpha`` (-1 if none).
+splat with alpha >= ``index_min_alpha`` (-1 if none). ``timings`` (ms): "project"
+(projection, depth sort, SH colours), "bin" (tile binning and layout), "composite".
+
+Backends: "numba" is the CPU path (a compiled per-tile, splat-major loop that visits only
+each splat's ellipse span per row; float64, so it matches "reference" to rounding);
+"torch" is the differentiable path (``_torch_raster.rasterize_torch``); "gsplat" wraps
+gsplat's CUDA rasterizer; "reference" is the slow per-pixel yardstick of the tests.
+Numba was chosen by measurement: on 2 cores it is orders of magnitude faster than padded
+tensor batches (0.1 FPS at 100k splats), with no C++ toolchain needed at install time.
 """
 
 from __future__ import annotations
