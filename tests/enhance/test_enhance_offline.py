@@ -184,3 +184,9 @@ def test_folder_mistakes_are_refused_with_the_reason(tmp_path: Path) -> None:
     write_frames(tmp_path / "src", 1)
     with pytest.raises(EnhanceInputError, match="must differ"):
         enhance_folder(tmp_path / "src", tmp_path / "src", settings)
+
+
+def test_the_default_output_folder_sits_beside_the_source(tmp_path: Path) -> None:
+    from drivetwin.worlds.enhance import default_output_dir
+
+    assert default_output_dir(tmp_path / "run1") == tmp_path / "run1-enhanced"

@@ -111,7 +111,21 @@ def test_the_depth_controlnet_pipeline_conditions_on_the_renderer_depth(
         controlled.repaint(draw_street())
 
 
+def test_without_the_extra_loading_says_which_pip_install_fixes_it() -> None:
+    code = (
+        "import sys; sys.modules['diffusers'] = None\n"  # makes `import diffusers` fail
+        "from drivetwin.worlds.enhance import EnhanceExtraMissing, EnhanceSettings, load_pipeline\n"
+        "try:\n"
+        "    load_pipeline(EnhanceSettings(model='m', device='cpu'))\n"
+        "except EnhanceExtraMissing as exc:\n"
+        "    print(exc)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert "pip install 'drivetwin[enhance]'" in out.stdout
+
+
 def test_a_missing_model_folder_is_one_line_naming_how_to_get_the_weights(tmp_path: Path) -> None:
+    pytest.importorskip("diffusers", reason="the enhance extra (diffusers) is not installed")
     with pytest.raises(EnhanceWeightsMissing) as err:
         load_pipeline(EnhanceSettings(model=str(tmp_path / "nowhere"), device="cpu"))
     message = str(err.value)
@@ -160,3 +174,14 @@ def test_depth_becomes_a_disparity_image_with_near_bright_and_sky_black() -> Non
     building = control[40, 20, 0]
     sky = control[2, 64, 0]
     assert car > building > sky == 0
+
+
+def test_the_benchmark_times_full_enhancements_at_the_requested_size(
+    tiny_sdxl: dict[str, Path], enhancer: FrameEnhancer
+) -> None:
+    from drivetwin.worlds.enhance.bench import measure_fps
+
+    settings = EnhanceSettings(model=str(tiny_sdxl["model"]), **TINY)
+    result = measure_fps(settings, height=96, width=128, frames=1, warmup=0, enhancer=enhancer)
+    assert result.frame == (96, 128) and result.work == (64, 64) and result.steps_run == 2
+    assert result.frames_per_second > 0.0 and result.device == "cpu"

@@ -5,7 +5,7 @@ extra `drivetwin[enhance]`) are imported when a pipeline or feature extractor is
 """
 
 from drivetwin.worlds.enhance.metrics import cmmd, fid, kid
-from drivetwin.worlds.enhance.offline import EnhanceReport, enhance_folder
+from drivetwin.worlds.enhance.offline import EnhanceReport, default_output_dir, enhance_folder
 from drivetwin.worlds.enhance.online import OnlineEnhancer, OnlineFrame, OnlineStats
 from drivetwin.worlds.enhance.pipeline import EnhancedFrame, FrameEnhancer, load_pipeline
 from drivetwin.worlds.enhance.prompting import PromptPair, build_prompts
@@ -42,6 +42,7 @@ __all__ = [
     "StructureScore",
     "build_prompts",
     "cmmd",
+    "default_output_dir",
     "enhance_folder",
     "fid",
     "kid",

@@ -61,6 +61,12 @@ class EnhanceReport:
         return json.dumps(asdict(self), indent=2)
 
 
+def default_output_dir(src_dir: str | Path) -> Path:
+    """Where `drivetwin enhance DIR` writes when no output folder is given: DIR-enhanced."""
+    src = Path(src_dir)
+    return src.parent / f"{src.name}-enhanced"
+
+
 def _atomic_write(path: Path, write: Any) -> None:
     """Write via a temporary file in the same folder, then rename: never a half file."""
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
