@@ -17,7 +17,8 @@ from drivetwin.evals.case import (
     case_json_schema,
     load_suite,
 )
-from drivetwin.evals.checks import CHECK_KINDS, Check, CheckResult
+from drivetwin.evals.check_base import CheckResult
+from drivetwin.evals.checks import CHECK_KINDS, Check
 from drivetwin.evals.metrics import Rate, RunMetrics, compute_metrics, pass_hat_k, wilson
 from drivetwin.evals.outcome import Outcome
 from drivetwin.evals.records import RecordsError, RunHeader, TrialRecord, read_run

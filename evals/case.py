@@ -12,7 +12,8 @@ import json
 from pathlib import Path
 from typing import Any, Literal
 
-from drivetwin.evals.checks import Check, CheckResult
+from drivetwin.evals.check_base import CheckResult
+from drivetwin.evals.checks import Check
 from drivetwin.evals.outcome import Outcome
 from drivetwin.tools.base import ToolCall
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator

@@ -143,7 +143,7 @@ def compute_metrics(run: Run) -> RunMetrics:
     h = run.header
     cell: dict[str, dict[str, Rate]] = {}
     for task in TASKS:
-        row = {g: _rate(r for r in recs if r.task == task and r.grade == g) for g in GRADES}
+        row: dict[str, Rate] = {g: _rate(r for r in recs if r.task == task and r.grade == g) for g in GRADES}
         cell[task] = row
     levels: dict[str, list[float]] = defaultdict(list)
     for r in recs:

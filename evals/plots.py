@@ -52,7 +52,8 @@ def plot_tasks(runs: Sequence[RunMetrics], target: Path) -> Path:
     ax.set_ylabel("success rate (%)")
     ax.set_ylim(0, 105)
     ax.set_title("Success per task (Wilson 95 % intervals)")
-    ax.legend(fontsize="small")
+    # Below the axes: inside, the legend would hide bars.
+    ax.legend(fontsize="small", loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=min(4, max(1, len(runs))))
     fig.tight_layout()
     fig.savefig(target, dpi=DPI)
     plt.close(fig)

@@ -36,7 +36,7 @@ def run_ray(jobs: list[Job], planner_name: str, options: dict[str, Any], workers
             log_to_driver=False,
         )
     actor_class = ray.remote(num_cpus=1)(TrialWorker)
-    actors = [actor_class.remote(planner_name, options) for _ in range(max(1, workers))]
+    actors: list[Any] = [actor_class.remote(planner_name, options) for _ in range(max(1, workers))]
     pool = ActorPool(actors)
     try:
         results = pool.map_unordered(lambda actor, job: actor.run.remote(*job), list(jobs))
