@@ -139,10 +139,10 @@ def render_markdown(runs: Sequence[RunMetrics], plots: Sequence[Path] = ()) -> s
         "| --- | --- | --- | --- | --- | --- | --- |",
     ]
     for m in runs:
+        options = f" `{json.dumps(m.planner_options)}`" if m.planner_options else ""
         out.append(
-            f"| {m.label} | {m.planner} {json.dumps(m.planner_options) if m.planner_options else ''} "
-            f"| {m.suite} ({m.suite_digest}) | {m.cases} × {m.trials_per_case} | {m.errors} "
-            f"| {m.started} | {m.git_commit or '—'} |"
+            f"| {m.label} | {m.planner}{options} | {m.suite} ({m.suite_digest}) "
+            f"| {m.cases} × {m.trials_per_case} | {m.errors} | {m.started} | {m.git_commit or '—'} |"
         )
     out += ["", "## Table 4: planners and models", "", *table4(runs), ""]
     for m in runs:
