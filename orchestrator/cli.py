@@ -226,3 +226,72 @@ def bench(ctx: click.Context, which: str) -> None:
     }[which]
     sys.argv = [module, *ctx.args]
     runpy.run_module(module, run_name="__main__")
+
+
+@main.group(name="eval")
+def eval_group() -> None:
+    """Measure planners on eval suites."""
+
+
+@eval_group.command("run")
+@click.option("--suite", default="smoke", show_default=True, help="suite name (smoke, full) or JSONL path")
+@click.option("--planner", "planner_name", default="rules", show_default=True)
+@click.option("--backend", default=None)
+@click.option("--model", default=None)
+@click.option("--trials", default=1, show_default=True, type=click.IntRange(1, 100))
+@click.option("--workers", default=1, show_default=True, type=click.IntRange(1, 64))
+@click.option("--executor", type=click.Choice(["local", "ray"]), default="local", show_default=True)
+@click.option("--out", "out_path", type=click.Path(dir_okay=False, path_type=Path), required=True,
+              help="records file (JSON Lines); an existing one is resumed")
+def eval_run(suite: str, planner_name: str, backend: str | None, model: str | None, trials: int,
+             workers: int, executor: str, out_path: Path) -> None:
+    """Run a suite against a planner, resumably.
+
+    Example: drivetwin eval run --suite full --planner rules --trials 3 --out runs/rules.jsonl
+    """
+    from drivetwin.evals import run_suite
+
+    options: dict[str, Any] = {k: v for k, v in (("backend", backend), ("model", model)) if v}
+    summary = run_suite(suite, planner_name, planner_options=options, trials=trials, out_path=out_path,
+                        executor=executor, workers=workers, progress=True)
+    click.echo(f"{summary.passed} passed, {summary.failed} failed, {summary.errors} errors; records in {out_path}")
+    if summary.interrupted:
+        click.echo("interrupted: run the same command again to resume")
+        sys.exit(130)
+
+
+@eval_group.command("report")
+@click.argument("runs", nargs=-1, required=True, type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=Path("eval_report"),
+              show_default=True)
+def eval_report(runs: tuple[Path, ...], out_dir: Path) -> None:
+    """Write Markdown, JSON and PNG reports (Tables 4 and 5) for one or more runs.
+
+    Example: drivetwin eval report runs/rules.jsonl runs/llm.jsonl --out report
+    """
+    from drivetwin.evals import write_report
+
+    for path in write_report(list(runs), out_dir):
+        click.echo(f"wrote {path}")
+
+
+@main.command()
+@click.argument("src_dir", type=click.Path(exists=True, file_okay=False, path_type=Path))
+@click.option("--model", required=True, help="SDXL folder or cached model id")
+@click.option("--controlnet", default=None, help="SDXL depth ControlNet folder")
+@click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None)
+def enhance(src_dir: Path, model: str, controlnet: str | None, out_dir: Path | None) -> None:
+    """Enhance a folder of rendered frames with SDXL img2img; resumes where it stopped.
+
+    Example: drivetwin enhance demo_out --model models/sdxl
+    """
+    from drivetwin.worlds.enhance import EnhancerError, EnhanceSettings, enhance_folder
+    from drivetwin.worlds.enhance.offline import default_output_dir
+
+    target = out_dir or default_output_dir(src_dir)
+    try:
+        report = enhance_folder(src_dir, target, EnhanceSettings(model=model, controlnet=controlnet))
+    except EnhancerError as exc:
+        click.echo(f"error: {exc}", err=True)
+        sys.exit(2)
+    click.echo(f"enhanced frames in {target}: {report}")
