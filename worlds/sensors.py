@@ -188,7 +188,7 @@ class CameraSensor:
         focal = 0.5 * self.height / math.tan(math.radians(self.fovy_deg) / 2)
         return Camera(width=self.width, height=self.height, fx=focal, fy=focal,
                       cx=self.width / 2, cy=self.height / 2,
-                      world_to_camera=np.linalg.inv(camera_to_world))  # fmt: skip
+                      world_to_camera=np.linalg.inv(camera_to_world).astype(np.float64))  # fmt: skip
 
 
 @dataclass
