@@ -171,8 +171,7 @@ def tools_list(as_json: bool) -> None:
     """
     registry = ToolRegistry.default()
     if as_json:
-        session = Session(load_world("campus"), make_planner("rules"), registry)
-        click.echo(dump_tools(session))
+        click.echo(dump_tools(registry))
     else:
         for name in registry.names():
             tool = registry.get(name)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from functools import cache
 
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import EGO_ID, Scene
@@ -51,7 +52,8 @@ class Mention:
     plural: bool
 
 
-def _category_phrases() -> list[tuple[str, str]]:
+@cache
+def _category_phrases() -> tuple[tuple[str, str], ...]:
     phrases = []
     for cat in catalog().values():
         if "ego" in cat.tags:
@@ -59,7 +61,7 @@ def _category_phrases() -> list[tuple[str, str]]:
         for word in cat.words:
             phrases.append((word.lower(), cat.name))
     # Longest phrase first, so "traffic light" wins over "light" and "stop sign" over "stop".
-    return sorted(set(phrases), key=lambda p: -len(p[0]))
+    return tuple(sorted(set(phrases), key=lambda p: -len(p[0])))
 
 
 def find_categories(text: str) -> list[Mention]:

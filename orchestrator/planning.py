@@ -6,7 +6,6 @@ the session and the eval harness only ever see this interface.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Protocol, runtime_checkable
 
@@ -62,13 +61,9 @@ class PlanContext:
     scene: Scene
     registry: ToolRegistry
     memory: Memory = field(default_factory=Memory)
-    # Runs calls against a copy of the scene and returns the first refusal, or None.
-    dry_run: Callable[[list[ToolCall]], str | None] | None = None
 
     def check(self, calls: list[ToolCall]) -> str | None:
         """The first refusal these calls would meet, or None when they would all apply."""
-        if self.dry_run is not None:
-            return self.dry_run(calls)
         return first_refusal(self.registry, self.scene, calls)
 
 

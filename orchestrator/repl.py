@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from drivetwin.orchestrator.session import Session, SessionError, TurnReport
+from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.scene import SceneFileError
 
 HELP = """\
@@ -179,10 +180,9 @@ def interactive(session: Session, options: ChatOptions, history_file: Path) -> i
     return run_lines(session, lines(), options)
 
 
-def dump_tools(session: Session) -> str:
+def dump_tools(registry: ToolRegistry) -> str:
     """Every tool with its source and JSON Schema, as JSON."""
     return json.dumps(
-        [{**session.registry.get(n).json_schema(), "source": session.registry.sources.get(n, "?")}
-         for n in session.registry.names()],
+        [{**registry.get(n).json_schema(), "source": registry.sources.get(n, "?")} for n in registry.names()],
         indent=2,
     )

@@ -15,7 +15,7 @@ from pathlib import Path
 from drivetwin.orchestrator.journal import Entry, History, Journal
 from drivetwin.orchestrator.memory import Memory, Turn
 from drivetwin.orchestrator.planning import MAX_PROMPT_CHARS, Plan, PlanContext, Planner, PlanningError
-from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute, first_refusal
+from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.edits import WorldEdit
 from drivetwin.worlds.scene import Scene
@@ -82,12 +82,7 @@ class Session:
         return self._scene
 
     def context(self) -> PlanContext:
-        return PlanContext(
-            scene=self._scene,
-            registry=self.registry,
-            memory=self.memory,
-            dry_run=lambda calls: first_refusal(self.registry, self._scene, calls),
-        )
+        return PlanContext(scene=self._scene, registry=self.registry, memory=self.memory)
 
     # Prompts -----------------------------------------------------------------------------
     def submit(self, prompt: str) -> TurnReport:
