@@ -97,8 +97,17 @@ def chat(world: str, planner_name: str, backend: str | None, model: str | None, 
             session = Session(load_world(world), planner, registry, journal_path)
     except (UnknownWorldError, SceneFileError, ValueError) as exc:
         raise click.ClickException(str(exc)) from exc
-    live = LiveWorld(session, simulate=not no_sim, background=script is None,
-                     enhance_model=enhance_model)
+    try:
+        enhance = None
+        if enhance_model:
+            from drivetwin.worlds.enhance import EnhanceSettings
+
+            enhance = EnhanceSettings(model=enhance_model)
+        live = LiveWorld(session, simulate=not no_sim, background=script is None, enhance=enhance)
+    except ImportError as exc:
+        raise click.ClickException(f"--enhance needs the enhance extra: pip install 'drivetwin[enhance]' ({exc})") from exc
+    except RuntimeError as exc:  # EnhancerError: weights missing or unreadable
+        raise click.ClickException(str(exc)) from exc
     options = ChatOptions(out_dir=out_dir, explain=explain, fail_fast=fail_fast,
                           render_each=render_each, render=live.render)
     if out_dir:
@@ -110,7 +119,11 @@ def chat(world: str, planner_name: str, backend: str | None, model: str | None, 
         else:
             status = interactive(session, options, STATE_DIR / "history.txt")
     finally:
-        live.close()
+        for path in live.close():
+            click.echo(f"  wrote {path}")
+        summary = live.enhancer_summary()
+        if summary:
+            click.echo(summary)
     sys.exit(status)
 
 
@@ -186,14 +199,23 @@ def backends() -> None:
 
 
 @backends.command("list")
-def backends_list() -> None:
+@click.option("--backend", default=None, help="mark this backend's row as the chosen one")
+@click.option("--model", default=None, help="mark this model's row as the chosen one")
+def backends_list(backend: str | None, model: str | None) -> None:
     """Show each backend, whether it is usable now, and the command that fixes it if not.
+
+    The row that flags, environment and config file select is marked with *.
 
     Example: drivetwin backends list
     """
     from drivetwin.orchestrator.backends import backends_table
+    from drivetwin.orchestrator.config import ConfigError, load_settings
 
-    click.echo(backends_table())
+    try:
+        settings = load_settings(backend=backend, model=model)
+    except ConfigError as exc:
+        raise click.ClickException(str(exc)) from exc
+    click.echo(backends_table(settings))
 
 
 @main.command()

@@ -8,25 +8,37 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from drivetwin.orchestrator.session import Session
 from drivetwin.worlds.scene import Scene
 
+if TYPE_CHECKING:
+    from drivetwin.worlds.enhance.settings import EnhanceSettings
+
 FRAME_WIDTH = 640
 FRAME_HEIGHT = 360
+# On close, wait this long for the frame the enhancer is on: a scripted chat ends right after
+# its last render, and that frame should not be lost; SDXL on a CPU can take minutes.
+ENHANCER_DRAIN_S = 600.0
 
 
 class LiveWorld:
     """The simulation and renderer behind a session; closing it stops the physics thread."""
 
     def __init__(self, session: Session, *, simulate: bool = True, background: bool = True,
-                 enhance_model: str | None = None) -> None:
+                 enhance: EnhanceSettings | None = None) -> None:
         self.session = session
         self.sim: Any = None
         self._renderer: Any = None
         self._enhancer: Any = None
-        self._enhance_model = enhance_model
+        self._enhanced_targets: dict[int, Path] = {}
+        self._enhanced_written: set[int] = set()
+        if enhance is not None:
+            # Load up front, so that missing weights stop the chat before any edit is made.
+            from drivetwin.worlds.enhance import OnlineEnhancer
+
+            self._enhancer = OnlineEnhancer.from_settings(enhance)
         if simulate:
             from drivetwin.worlds.simulation import Simulation
 
@@ -64,24 +76,54 @@ class LiveWorld:
         cloud = target.with_name(target.stem + "_lidar.ply")
         save_pointcloud(points, cloud)
         written.append(cloud)
-        if self._enhance_model:
-            written += self._enhance(frame, session, target)
+        if self._enhancer is not None:
+            written += self._enhance_frame(frame, session, target)
         return written
 
-    def _enhance(self, frame: Any, session: Session, target: Path) -> list[Path]:
-        """The frame repainted by SDXL, kept only if its structure held (else the baseline)."""
-        from drivetwin.worlds.enhance import EnhanceSettings, FrameEnhancer
+    def _enhance_frame(self, frame: Any, session: Session, target: Path) -> list[Path]:
+        """Hand the frame to the enhancer thread; write whichever enhanced frame is newest.
+
+        The enhancer runs beside the physics: a frame still waiting when the next arrives is
+        dropped, never queued, and each finished frame is written beside the frame it came from
+        (the baseline when its structure did not hold).
+        """
+        self._enhanced_targets[self._enhancer.stats().submitted] = target.with_name(target.stem + "_enhanced.png")
+        self._enhancer.submit(frame.rgb, frame.depth, session.scene.environment)
+        return self._write_enhanced()
+
+    def _write_enhanced(self) -> list[Path]:
+        """Write the newest finished enhanced frame if it has not been written yet."""
         from PIL import Image
 
-        if self._enhancer is None:
-            self._enhancer = FrameEnhancer(EnhanceSettings(model=self._enhance_model or ""))
-        result = self._enhancer.enhance(frame.rgb, frame.depth, session.scene.environment)
-        path = target.with_name(target.stem + "_enhanced.png")
-        Image.fromarray(result.image).save(path)
+        latest = self._enhancer.latest() if self._enhancer is not None else None
+        if latest is None or latest.index in self._enhanced_written:
+            return []
+        path = self._enhanced_targets[latest.index]
+        Image.fromarray(latest.image).save(path)
+        self._enhanced_written.add(latest.index)
         return [path]
 
-    def close(self) -> None:
+    def enhancer_summary(self) -> str | None:
+        """What the enhancer did (frames submitted, enhanced, dropped, rejected), if it ran."""
+        if self._enhancer is None:
+            return None
+        s = self._enhancer.stats()
+        line = (f"enhancer: {s.submitted} frames submitted, {s.processed} enhanced, {s.dropped} dropped, "
+                f"{s.rejected} rejected (baseline kept), {s.errors} errors")
+        return line + (f"; last error: {s.last_error}" if s.last_error else "")
+
+    def close(self) -> list[Path]:
+        """Stop the physics and the renderer; the enhancer finishes its frame first.
+
+        Returns the enhanced frames written while closing.
+        """
+        written: list[Path] = []
+        if self._enhancer is not None:
+            self._enhancer.drain(ENHANCER_DRAIN_S)
+            written = self._write_enhanced()
+            self._enhancer.stop()
         if self.sim is not None:
             self.sim.stop()
         if self._renderer is not None and hasattr(self._renderer, "close"):
             self._renderer.close()
+        return written

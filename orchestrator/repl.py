@@ -11,6 +11,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from drivetwin.orchestrator.llm_planner import format_trace
 from drivetwin.orchestrator.session import Session, SessionError, TurnReport
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.scene import SceneFileError
@@ -67,12 +68,9 @@ def format_report(report: TurnReport, explain: bool) -> str:
     lines = []
     if report.plan is not None:
         if explain:
-            for step in report.plan.trace:
-                lines.append(f"  [{step.level}] {step.seconds * 1000:.0f} ms, retries {step.retries}")
-                lines.append(f"      in:  {step.input[:300]}")
-                lines.append(f"      out: {step.output[:300]}")
-        for call in report.plan.calls:
-            lines.append(f"  plan: {call}")
+            lines += [f"  {line}" for line in format_trace(report.plan).splitlines()]
+        else:
+            lines += [f"  plan: {call}" for call in report.plan.calls]
     if report.ok:
         lines += [f"  {d}" for d in report.diff] or [f"  {r}" for r in report.results]
         if report.answer and not report.diff:

@@ -132,6 +132,11 @@ class OnlineEnhancer:
                 last_error=self._last_error,
             )
 
+    def drain(self, timeout: float) -> bool:
+        """Wait until no frame is waiting or being enhanced; False if `timeout` ran out first."""
+        with self._cond:
+            return self._cond.wait_for(lambda: self._slot is None and not self._busy, timeout)
+
     def stop(self, timeout: float = STOP_TIMEOUT_S) -> None:
         """Stop the worker after the frame in progress; a waiting frame is dropped."""
         with self._cond:
@@ -170,9 +175,11 @@ class OnlineEnhancer:
                     self._errors += 1
                     self._last_error = f"{type(exc).__name__}: {exc}"
                     self._busy = False
+                    self._cond.notify_all()
                 continue
             with self._cond:
                 self._busy = False
                 self._processed += 1
                 self._rejected += 0 if result.accepted else 1
                 self._latest = OnlineFrame(job.index, result)
+                self._cond.notify_all()
