@@ -3,13 +3,19 @@
 Each category is built from a few primitive parts (boxes, cylinders, spheres). The same parts
 become the category's trimesh mesh (for rendering and export) and its MuJoCo geoms (for
 collision), so what is drawn is what collides.
+
+Reconstructed assets join the catalog too: every asset package found on DRIVETWIN_ASSETS and in
+the user's asset folder (see drivetwin.worlds.reconstruct.package) becomes a Category whose
+`package` names its folder. Its one box part is the bounding box (for footprints and overlap
+checks); MuJoCo collides its convex hulls and the hybrid renderer draws its fitted splats.
 """
 
 from __future__ import annotations
 
 import difflib
+import os
 from collections.abc import Iterable
-from functools import cache
+from functools import cache, lru_cache
 from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
@@ -58,6 +64,8 @@ class Category(BaseModel):
     # Vehicles: distance between axles and the largest steering angle (radians).
     wheelbase: float | None = None
     max_steer: float | None = None
+    # Folder of the asset package a reconstructed category comes from; None for built-ins.
+    package: str | None = None
 
     @property
     def footprint_radius(self) -> float:
@@ -442,9 +450,33 @@ def _build() -> tuple[Category, ...]:
 
 
 @cache
-def catalog() -> dict[str, Category]:
-    """Every category by name, built once."""
+def _builtin() -> dict[str, Category]:
     return {c.name: c for c in _build()}
+
+
+# Packaged categories are found again when these variables change (tests, a new session).
+_DISCOVERY_ENV = ("DRIVETWIN_ASSETS", "DRIVETWIN_CACHE", "HOME")
+
+
+@lru_cache(maxsize=8)
+def _catalog_for(discovery_key: tuple[str, ...]) -> dict[str, Category]:
+    from drivetwin.worlds.reconstruct.package import packaged_categories
+
+    merged = dict(_builtin())
+    for cat in packaged_categories():
+        # A package may not shadow a built-in category (the Workers' rules rely on those).
+        merged.setdefault(cat.name, cat)
+    return merged
+
+
+def catalog() -> dict[str, Category]:
+    """Every category by name: the built-in ones, then those of the asset packages found."""
+    return _catalog_for(tuple(os.environ.get(name, "") for name in _DISCOVERY_ENV))
+
+
+def refresh_catalog() -> None:
+    """Look for asset packages again (after one was written into a folder already searched)."""
+    _catalog_for.cache_clear()
 
 
 def category(name: str) -> Category:
