@@ -52,7 +52,13 @@ def part_mesh(part: Part) -> trimesh.Trimesh:
 
 @cache
 def _category_mesh(category_name: str) -> trimesh.Trimesh:
-    parts = category(category_name).parts
+    cat = category(category_name)
+    if cat.package is not None:  # a reconstructed asset: its surface mesh, package frame
+        from drivetwin.worlds.reconstruct.package import AssetPackage
+
+        surface: trimesh.Trimesh = AssetPackage.load(cat.package).mesh()
+        return surface
+    parts = cat.parts
     merged = trimesh.util.concatenate([part_mesh(p) for p in parts])
     if not isinstance(merged, trimesh.Trimesh):
         raise TypeError(f"parts of {category_name!r} did not merge into one mesh")

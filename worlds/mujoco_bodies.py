@@ -5,6 +5,7 @@ How an asset takes part in the physics follows its category's `motion`:
   actuator on each rear wheel (drive and brake) and a position actuator on each front steer;
 - walker: a kinematic mocap body moved along its path by its behaviour (it still collides);
 - prop / static: a free body when `physics.dynamic`, otherwise welded to the world.
+A reconstructed (packaged) category collides as its convex parts, one mesh geom each.
 Element names derive from the asset id (`ID/wheel_fl`, `ID/drive_rl`, ...) so that state
 and controls can be found again after every recompile.
 """
@@ -25,6 +26,7 @@ __all__ = [
     "add_asset_body",
     "body_kind",
     "geom_size",
+    "hull_mesh_name",
     "part_volume",
     "remove_asset_body",
     "set_body_frame",
@@ -51,6 +53,8 @@ STEER_BANDWIDTH = 60.0
 # drive and steer servos stable at a few-millisecond timestep.
 WHEEL_ARMATURE_FACTOR = 2.0
 STANDARD_GRAVITY = 9.81
+# Spec meshes of packaged assets' convex parts start with this (never a static prefix).
+HULL_MESH_PREFIX = "asset/"
 
 _Y_AXIS_QUAT = (math.cos(math.pi / 4), math.sin(math.pi / 4), 0.0, 0.0)
 _X_AXIS_QUAT = (math.cos(math.pi / 4), 0.0, math.sin(math.pi / 4), 0.0)
@@ -146,6 +150,11 @@ def add_asset_body(spec: mujoco.MjSpec, asset: AssetInstance) -> mujoco.MjsBody:
         quat=yaw_quat(pose.yaw),
         mocap=kind == "mocap",
     )
+    if cat.package is not None:
+        _add_hull_geoms(spec, body, asset, cat.package)
+        if kind == "free":
+            body.add_freejoint(name=f"{asset.id}/free")
+        return body
     body_parts = [p for p in cat.parts if not (kind == "vehicle" and p.role == "wheel")]
     wheel_parts = [p for p in cat.parts if kind == "vehicle" and p.role == "wheel"]
     mass = asset.physics.mass
@@ -161,6 +170,40 @@ def add_asset_body(spec: mujoco.MjSpec, asset: AssetInstance) -> mujoco.MjsBody:
     if kind == "vehicle":
         _add_wheels(spec, body, asset, cat, wheel_parts, wheel_mass)
     return body
+
+
+def hull_mesh_name(asset_id: str, index: int) -> str:
+    """The spec mesh of a packaged asset's convex part (prefixed so static rebuilds skip it)."""
+    return f"{HULL_MESH_PREFIX}{asset_id}/hull{index}"
+
+
+def _add_hull_geoms(spec: mujoco.MjSpec, body: mujoco.MjsBody, asset: AssetInstance, package: str) -> None:
+    """A reconstructed asset collides as its convex parts: one mesh geom per hull, the mass
+    shared by hull volume (the splats, not these geoms, are what the renderer draws)."""
+    from drivetwin.worlds.reconstruct.package import package_hulls
+
+    hulls = package_hulls(package, asset.scale)
+    volumes = [_hull_volume(vertices) for vertices in hulls]
+    total = sum(volumes)
+    rgba = list(asset.appearance.rgba or category(asset.category).parts[0].rgba)
+    for index, (vertices, volume) in enumerate(zip(hulls, volumes, strict=True)):
+        mesh = spec.add_mesh(name=hull_mesh_name(asset.id, index), uservert=vertices.reshape(-1).tolist())
+        # The parts are convex already: inertia from the hull, no exact-volume pass needed.
+        mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_CONVEX
+        body.add_geom(
+            name=f"{asset.id}/hull{index}",
+            type=mujoco.mjtGeom.mjGEOM_MESH,
+            meshname=mesh.name,
+            rgba=rgba,
+            mass=asset.physics.mass * volume / total,
+            friction=[asset.physics.friction, 0.005, 0.0001],
+        )
+
+
+def _hull_volume(vertices: object) -> float:
+    from scipy.spatial import ConvexHull
+
+    return float(ConvexHull(vertices).volume)
 
 
 def wheel_corner(part: Part) -> str:
@@ -243,4 +286,8 @@ def remove_asset_body(spec: mujoco.MjSpec, asset_id: str) -> bool:
         if actuator.name.startswith(prefix):
             spec.delete(actuator)
     spec.delete(body)
+    hulls = f"{HULL_MESH_PREFIX}{asset_id}/"
+    for mesh in list(spec.meshes):
+        if mesh.name.startswith(hulls):
+            spec.delete(mesh)
     return True

@@ -202,7 +202,9 @@ class AssetPackage:
         try:
             manifest = AssetManifest.model_validate_json(manifest_path.read_text(encoding="utf-8"))
         except ValidationError as exc:
-            problems = [f"{MANIFEST}: {'.'.join(str(p) for p in e['loc']) or '(top)'}: {e['msg']}" for e in exc.errors()]
+            problems = [
+                f"{MANIFEST}: {'.'.join(str(p) for p in e['loc']) or '(top)'}: {e['msg']}" for e in exc.errors()
+            ]
             raise AssetPackageError(folder, problems) from None
         package = cls(folder, manifest)
         problems = package.problems()
@@ -363,7 +365,8 @@ def user_asset_folder() -> Path:
     """The user's own asset folder, beside drivetwin's other cached files."""
     from drivetwin.orchestrator.config import cache_dir
 
-    return cache_dir() / "assets"
+    folder: Path = cache_dir() / "assets"
+    return folder
 
 
 def package_folders() -> list[Path]:
