@@ -1,0 +1,226 @@
+"""Edits of what is already in the scene, for the rule planner: remove, move, turn, behave, recolour.
+
+Which assets a clause means comes from, in order: ids and numbered names ("car 2"), the ego,
+pronouns resolved within the prompt and then from memory ("it", "the cones you added"), and
+categories present in the scene. Group words ("the clutter at the bus stop", "the roadworks",
+"parking lot B should be empty") become the assets found there.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import Any
+
+from drivetwin.orchestrator import phrases as ph
+from drivetwin.orchestrator import rule_lexicon as lx
+from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.rule_places import Notes, location
+from drivetwin.orchestrator.rule_reading import Reading, find_count
+from drivetwin.tools.appearance import COLOURS
+from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.catalog import catalog
+from drivetwin.worlds.scene import Scene
+
+# How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
+NEAR_PLACE_M = 8.0
+# Defaults for amounts a person leaves out ("back it up", "shift the bin", "spin it").
+DEFAULT_STEP_M = 3.0
+SMALL_STEP_M = 1.5
+DEFAULT_SPIN_DEG = 90.0
+_RECENT = ("you added", "you just added", "that", "those", "these", "the new", "last", "it", "them")
+
+
+def referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[str]:
+    """Existing assets a clause refers to, or [] when it names none."""
+    found = _referenced(r, scene, memory, notes)
+    if found:
+        notes.subject = found
+    return found
+
+
+def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[str]:
+    if r.ids:
+        return r.ids
+    if r.ego and not r.has(lx.BEHAVIOUR_WORDS["jaywalk"]):
+        return ["ego"]
+    if r.mentions:
+        mention = r.mentions[0]
+        name = mention.category
+        recent = [i for i in memory.last_added(name) if scene.asset(i) is not None]
+        if recent and r.has(_RECENT):
+            return recent if mention.plural else recent[-1:]
+        present = [a.id for a in scene.assets if a.category == name]
+        if not present:
+            return []
+        if mention.plural or r.has(("all", "every", "each")):
+            return present
+        return recent[-1:] if recent else present[:1]
+    if r.has(("it", "them", "that one", "those", "they", "its")):
+        if notes.subject:
+            return notes.subject
+        return [i for i in memory.last_added() if scene.asset(i) is not None]
+    return []
+
+
+def _near(scene: Scene, place: str, radius: float, keep_permanent: bool) -> list[str]:
+    landmark = scene.landmark(place)
+    if landmark is None:
+        return []
+    out = []
+    for a in scene.assets:
+        tags = catalog()[a.category].tags
+        if "light" in tags or (not keep_permanent and "permanent" in tags):
+            continue
+        inside = landmark.polygon is not None and _inside((a.pose.x, a.pose.y), landmark.polygon)
+        if inside or math.dist((a.pose.x, a.pose.y), landmark.position) <= radius:
+            out.append((math.dist((a.pose.x, a.pose.y), landmark.position), a.id))
+    return [i for _, i in sorted(out)]
+
+
+def _inside(point: tuple[float, float], polygon: list[tuple[float, float]]) -> bool:
+    xs, ys = [p[0] for p in polygon], [p[1] for p in polygon]
+    return min(xs) <= point[0] <= max(xs) and min(ys) <= point[1] <= max(ys)
+
+
+def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
+    """remove_assets calls for a clause that asks for removal, or None when it names nothing."""
+    fewer = r.has(lx.FEWER_WORDS)
+    gone = r.has(lx.GONE_WORDS)
+    if r.ids or (r.ego and not r.mentions):
+        return [ToolCall(tool="remove_assets", args={"assets": r.ids or ["ego"]})]
+    if not r.mentions:
+        if r.has(lx.WORKS_WORDS):
+            works = [c.name for c in catalog().values() if "maintenance" in c.tags and scene.count(c.name)]
+            return [ToolCall(tool="remove_assets", args={"category": c}) for c in works] or None
+        if r.landmark and (r.has(lx.GENERIC_THINGS) or gone or r.has(("empty", "clear"))):
+            ids = _near(scene, r.landmark, NEAR_PLACE_M, keep_permanent=fewer or r.has(("everything",)))
+            notes.guess(f"what counts as the things at {r.landmark}")
+            if not ids:
+                return None
+            return [ToolCall(tool="remove_assets", args={"assets": ids[:1] if fewer else ids})]
+        ids = referenced(r, scene, memory, notes)
+        return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
+    mention = r.mentions[0]
+    name = mention.category
+    recent = [i for i in memory.last_added(name) if scene.asset(i) is not None]
+    if recent and r.has(("you added", "you just added", "the new", "that", "those")):
+        return [ToolCall(tool="remove_assets", args={"assets": recent})]
+    args: dict[str, Any] = {"category": name}
+    count = find_count(r, mention)
+    if fewer:
+        count = count or 1
+    elif gone or r.has(("all", "every", "none", "no more")):
+        count = None
+    elif not mention.plural:
+        count = count or 1
+    if count:
+        args["count"] = count
+    if r.landmark:
+        args["near"] = r.landmark
+    elif count and memory.last_focus() is not None and recent:
+        args["near"] = recent[0]
+    return [ToolCall(tool="remove_assets", args=args)]
+
+
+def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall | None:
+    """set_asset_appearance for "paint the bus red", "the bins should blend in with the grass"."""
+    colour = next((c for c in COLOURS if r.has((c,))), None)
+    if colour is None and r.has(("blend in", "match", "same colour as", "colour of", "coloured like")):
+        colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
+    if colour is None:
+        return None
+    ids = referenced(r, scene, memory, notes)
+    if not ids:
+        if r.mentions and r.has(("paint", "recolour", "colour")):
+            raise ph_error(f"there is no {r.mentions[0].category} in the scene to recolour")
+        return None
+    if r.mentions and r.mentions[0].plural and not r.ids and len(ids) > 1:
+        return ToolCall(tool="set_asset_appearance", args={"category": r.mentions[0].category, "colour": colour})
+    return ToolCall(tool="set_asset_appearance", args={"assets": ids, "colour": colour})
+
+
+def ph_error(message: str) -> Exception:
+    from drivetwin.orchestrator.planning import PlanningError
+
+    return PlanningError(message)
+
+
+def behaviour_kind(r: Reading, motion: str | None = None) -> str | None:
+    """The behaviour a clause names, if it suits an asset that moves like `motion`."""
+    for kind in ("jaywalk", "circle", "cross_road", "drive_lane", "parked"):
+        if not r.has(lx.BEHAVIOUR_WORDS[kind]):
+            continue
+        if motion is not None and ((kind in ("jaywalk", "cross_road") and motion != "walker")
+                                   or (kind in ("circle", "drive_lane") and motion not in ("vehicle",))):
+            continue
+        return kind
+    return None
+
+
+def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
+    """The BehaviourSpec arguments for `kind` with what the clause says (speed, radius, lane)."""
+    spec: dict[str, Any] = {"kind": kind}
+    speed = ph.find_speed(r.text)
+    if speed:
+        spec["speed"] = speed
+    if kind == "circle":
+        m = re.search(r"radius (?:of )?(\d+(?:\.\d+)?)", r.low) or re.search(r"(\d+(?:\.\d+)?)\s*(?:m|metre)s?\s*radius", r.low)
+        if m:
+            spec["radius"] = float(m.group(1))
+        if r.has(("clockwise",)) and not r.has(("anticlockwise", "counterclockwise", "counter-clockwise")):
+            spec["clockwise"] = True
+    if kind == "drive_lane" and r.lane:
+        spec["lane"] = r.lane
+    return spec
+
+
+def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
+    """Move, turn, stop, set the behaviour of or place assets already there; None if not that."""
+    ids = referenced(r, scene, memory, notes)
+    if not ids:
+        return None
+    asset = ids[0]
+    found = scene.asset(asset)
+    motion = catalog()[found.category].motion if found is not None else None
+    metres = ph.find_distance(r.text)
+    if r.has(lx.REVERSE_WORDS):
+        if metres is None:
+            notes.guess("how far to reverse")
+        step = metres or (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else DEFAULT_STEP_M)
+        return [ToolCall(tool="move_asset", args={"asset": asset, "forward": -abs(step)})]
+    if r.has(lx.STOP_WORDS) and motion in ("vehicle", "walker") and not r.has(("stop sign",)):
+        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
+    deg = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:deg|°)", r.low)
+    if r.has(lx.TURN_WORDS) and (deg or not r.has(("drive", "driving", "walk", "circle", "circles"))) and (
+        deg or r.has(("turn", "rotate", "spin", "flip", "wrong way", "other way", "faces", "face"))
+    ):
+        if deg:
+            angle = float(deg.group(1))
+        elif r.has(("around", "wrong way", "other way", "flip", "about")):
+            angle = 180.0
+        else:
+            notes.guess("how far to turn")
+            angle = DEFAULT_SPIN_DEG
+        return [ToolCall(tool="move_asset", args={"asset": asset, "turn_deg": angle})]
+    kind = behaviour_kind(r, motion)
+    if kind is not None and kind != "parked":
+        notes.subject = [asset]
+        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": behaviour_spec(kind, r)})]
+    for word, key, sign in lx.SIDE_WORDS:
+        if metres is not None and r.has((word,)) and not r.landmark:
+            return [ToolCall(tool="move_asset", args={"asset": asset, key: sign * metres})]
+    where = location(r, scene, memory, notes, exclude=ids)
+    if where is not None:
+        notes.subject = [asset]
+        return [ToolCall(tool="place_asset", args={"asset": asset, "location": where})]
+    if kind == "parked":
+        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
+    if r.has(("move", "shift", "nudge", "push", "slide", "budge", "relocate")):
+        notes.guess("where to move it")
+        step = metres or (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else DEFAULT_STEP_M)
+        return [ToolCall(tool="move_asset", args={"asset": asset, "left": step})]
+    return None
+
+
+__all__ = ["behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]

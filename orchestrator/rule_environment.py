@@ -1,0 +1,89 @@
+"""Environment requests for the rule planner: weather, time of day and lights, said or implied.
+
+One clause may set several ("a night drive in the rain" is a time and a weather), and a goal
+counts as a request ("I want to test the wipers" is rain, "bring the sun back" is clear
+weather, "drivers can barely see; light up the streets" is street lights on).
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from drivetwin.orchestrator import rule_lexicon as lx
+from drivetwin.orchestrator.rule_reading import Reading
+from drivetwin.tools.base import ToolCall
+
+# Weather intensity (0..1) for "heavy", unqualified and "light".
+HEAVY_INTENSITY, DEFAULT_INTENSITY, LIGHT_INTENSITY = 0.9, 0.6, 0.3
+# Weather kinds tried in order: "stop the rain" is clear before it is rain.
+_WEATHER_ORDER = ("clear", "snow", "fog", "rain", "cloudy")
+# Words that make "light" mean lamps, not a light drizzle.
+_LAMP_CONTEXT = ("street", "streets", "lamps", "headlights", "lights", "light up", "lit", "switch", "turn")
+
+
+def weather(r: Reading) -> ToolCall | None:
+    """The weather a clause asks for, with its intensity, or None."""
+    for kind in _WEATHER_ORDER:
+        if r.has(lx.WEATHER_WORDS[kind]):
+            if kind == "clear" and r.has(("clear the", "clear away", "clear out")) and not r.has(("weather", "sky", "skies")):
+                continue  # "clear the roadworks away" is a removal
+            args: dict[str, Any] = {"kind": kind}
+            if kind != "clear":
+                heavy, light = r.has(lx.HEAVY), r.has(lx.LIGHT) and not r.has(_LAMP_CONTEXT)
+                args["intensity"] = HEAVY_INTENSITY if heavy else LIGHT_INTENSITY if light else DEFAULT_INTENSITY
+            return ToolCall(tool="set_weather", args=args)
+    return None
+
+
+def time_of_day(r: Reading) -> ToolCall | None:
+    """The time a clause asks for ("at 7 pm", "18:30", "dusk", "lunchtime"), or None."""
+    m = re.search(r"(\d{1,2})(?::(\d\d))?\s*(am|pm|o'clock|h\b)?", r.masked)
+    if m and (m.group(2) or m.group(3)) and r.has(("time", "make it", "set", "at", "clock", "change", "to")):
+        hour = int(m.group(1)) % 24
+        if m.group(3) == "pm" and hour < 12:
+            hour += 12
+        if m.group(3) == "am" and hour == 12:
+            hour = 0
+        return ToolCall(tool="set_time_of_day", args={"time": f"{hour:02d}:{m.group(2) or '00'}"})
+    if r.has(("lunchtime", "lunch time", "lunch")):
+        return ToolCall(tool="set_time_of_day", args={"time": "12:30"})
+    for words, preset in lx.TIME_PRESETS:
+        if r.has(words):
+            return ToolCall(tool="set_time_of_day", args={"time": preset})
+    return None
+
+
+def lights(r: Reading) -> ToolCall | None:
+    """Street or vehicle lights switched on or off, or None."""
+    if not r.has(lx.LIGHTS_WORDS) or r.has(("traffic light", "traffic lights")):
+        return None
+    if r.has(("light", "lights")) and not r.has(_LAMP_CONTEXT + ("on", "off")):
+        return None
+    state = "off" if r.has(("off", "switch off", "turn off", "no lights", "dark streets")) else "on"
+    key = "vehicle_lights" if r.has(("headlights", "vehicle lights", "car lights")) else "street_lights"
+    return ToolCall(tool="set_lighting", args={key: state})
+
+
+def environment(r: Reading) -> list[ToolCall]:
+    """Every environment setting the clause asks for, in a stable order."""
+    calls: list[ToolCall] = []
+    found = lights(r)
+    if found is not None:
+        calls.append(found)
+    masked_for_time = r
+    if found is not None:
+        # "light up the streets" is lamps, not daylight.
+        masked_for_time = Reading(r.text, r.low, r.masked.replace("light up", " "), r.mentions)
+    weather_call = weather(r)
+    if weather_call is not None:
+        calls.append(weather_call)
+    when = time_of_day(masked_for_time)
+    # "visibility should be poor this morning": the time is a circumstance, not a request,
+    # unless it is the only thing asked.
+    if when is not None and (weather_call is None or r.has(("night", "nighttime", "dark", "dusk", "dawn", "evening"))):
+        calls.append(when)
+    return calls
+
+
+__all__ = ["environment", "lights", "time_of_day", "weather"]

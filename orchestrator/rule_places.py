@@ -1,0 +1,117 @@
+"""Where a clause puts something, for the rule planner: relations, targets, lanes, "there".
+
+A relation word ("next to", "behind", "by") takes the thing named right after it as its
+target: an existing asset ("next to the bench at the bus stop" is the bench there), else a
+place. "There" is the last place this prompt named, else the last edit's focus in memory.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+from drivetwin.orchestrator import phrases as ph
+from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.rule_reading import Reading
+from drivetwin.worlds.scene import Scene
+
+RELATIONS = ((("in front of", "ahead of", "front of"), "in_front_of"), (("behind",), "behind"),
+             (("left of", "to the left"), "left_of"), (("right of", "to the right"), "right_of"),
+             (("next to", "beside", "alongside", "by the", "close to", "closer to"), "next_to"))
+# Words that say a place was meant; when none resolves, the rules guessed the place.
+PLACE_WORDS = ("near", "next to", "beside", "by", "at", "in front of", "behind", "outside", "around",
+               "close to", "closer to", "over by", "on", "in", "to the")
+_CENTRE = ("centre of the scene", "centre of the map", "scene centre", "middle of the scene",
+           "centre of the world", "middle of the map", "centre of campus", "in the centre",
+           "in the middle", "centre of the campus", "centre of scene", "middle of scene")
+
+
+@dataclass
+class Notes:
+    """What the planner had to guess while reading a prompt; each guess lowers its confidence."""
+
+    guesses: list[str] = field(default_factory=list)
+    # The prompt's own context: the place and the assets its earlier clauses named.
+    place: dict[str, Any] | None = None
+    subject: list[str] = field(default_factory=list)
+
+    def guess(self, why: str) -> None:
+        self.guesses.append(why)
+
+
+def relation_of(low: str) -> str:
+    """The spatial relation a clause states ("at" when none)."""
+    for words, rel in RELATIONS:
+        if any(f" {w} " in low for w in words):
+            return rel
+    return "at"
+
+
+def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str | None:
+    # "next to the bench at the bus stop": the bench nearest that stop.
+    for words, _ in RELATIONS:
+        for word in words:
+            pos = r.low.find(f" {word} ")
+            if pos < 0:
+                continue
+            later = [m for m in r.mentions if m.start > pos]
+            if not later:
+                continue
+            present = [a for a in scene.assets if a.category == later[0].category and a.id not in exclude]
+            if not present:
+                continue
+            landmark = scene.landmark(r.landmark) if r.landmark else None
+            if landmark is not None:
+                point = landmark.position
+                present.sort(key=lambda a: math.dist((a.pose.x, a.pose.y), point))
+            return present[0].id
+    return None
+
+
+def location(r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: list[str] | None = None) -> dict[str, Any] | None:
+    """The Location a clause describes, or None when it names no place."""
+    exclude = exclude or []
+    coords = ph.find_coordinates(r.text)
+    if coords is not None:
+        return {"relation": "absolute", "x": coords[0], "y": coords[1]}
+    if r.has(_CENTRE) or any(c in r.low for c in _CENTRE):
+        return {"relation": "scene_centre"}
+    if r.lane and (r.has(("lane", "side", "road", "street", "drive", "driving")) or not r.landmark):
+        if r.lane_guessed:
+            notes.guess(f"which lane of the road ({r.lane})")
+        return {"relation": "in_lane", "target": r.landmark if r.landmark and r.has(("outside", "front of", "near", "at")) else r.lane}
+    target: str | None = _asset_after_relation(r, scene, exclude)
+    ids = [i for i in r.ids if i not in exclude]
+    if target is None and r.landmark:
+        target = r.landmark
+    elif target is None and ids:
+        target = ids[0]
+    elif target is None and r.ego and "ego" not in exclude:
+        target = "ego"
+    if target is None and r.has(("there", "same place", "same spot", "nearby", "around it", "near it", "that spot")):
+        if notes.place is not None:
+            return dict(notes.place)
+        focus = memory.last_focus()
+        if focus is not None:
+            return {"relation": "absolute", "x": round(focus[0], 2), "y": round(focus[1], 2)}
+    if r.has(("sidewalk", "pavement", "footpath", "kerb", "curb")):
+        return {"relation": "on_sidewalk", **({"target": target} if target else {})}
+    if r.has(("in the lane", "on the road", "in lane", "on the street")):
+        return {"relation": "in_lane", **({"target": target} if target else {})}
+    if target is None:
+        return None
+    found: dict[str, Any] = {"relation": relation_of(r.low), "target": target}
+    metres = ph.find_distance(r.text)
+    if metres is not None and found["relation"] != "at":
+        found["distance"] = metres
+    return found
+
+
+def said_a_place(r: Reading) -> bool:
+    """Whether the clause seems to name a place (for judging an unresolved one a guess)."""
+    return bool(re.search(r"\b(near|next to|beside|by|in front of|behind|outside|close to|over by)\b", r.masked))
+
+
+__all__ = ["PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place"]

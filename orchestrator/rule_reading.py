@@ -1,0 +1,214 @@
+"""What one clause of a prompt names: places, lanes, the ego, categories and existing assets.
+
+A `Reading` is the rule planner's parse of a clause. Names of places are found first and
+blanked out, so the words inside them do not count twice ("bus stop" is a place, not a bus;
+"parking lot A" does not ask for parking; "our car" is the ego, not a passenger car).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from drivetwin.orchestrator import phrases as ph
+from drivetwin.orchestrator import rule_lexicon as lx
+from drivetwin.worlds.catalog import catalog
+from drivetwin.worlds.scene import Scene
+
+_ARTICLES = re.compile(r"\b(the|a|an)\s+")
+_NEW_DETERMINERS = {"a", "an", "some", "another", "new", "more", "extra", "additional", "few", "several"}
+_OLD_DETERMINERS = {"the", "that", "those", "these", "our", "its", "their", "his", "her", "this", "my", "your"}
+_DIRECTIONS = {"west": "westbound", "east": "eastbound", "north": "northbound", "south": "southbound"}
+
+
+@dataclass
+class Reading:
+    """A clause, its normalised and place-blanked forms, and what it names."""
+
+    text: str
+    low: str
+    masked: str
+    mentions: list[ph.Mention]
+    landmark: str | None = None
+    landmark_at: int = -1
+    landmark_word: str | None = None  # a head noun of several places ("the gates")
+    lane: str | None = None
+    lane_guessed: bool = False
+    ids: list[str] = field(default_factory=list)
+    ego: bool = False
+
+    def has(self, words: tuple[str, ...] | list[str]) -> bool:
+        """Whether any of `words` occurs outside the place names of the clause."""
+        return ph.has_any(self.masked, tuple(words))
+
+
+def _blank(text: str, start: int, end: int) -> str:
+    return text[:start] + " " + "§" * max(1, end - start - 2) + " " + text[end:]
+
+
+def _unique_place_words(scene: Scene) -> dict[str, str]:
+    # A word of exactly one place's names, and no catalog or common word, names that place.
+    owners: dict[str, set[str]] = {}
+    for landmark in scene.landmarks:
+        for name in landmark.names():
+            for word in ph.tokens(name):
+                owners.setdefault(word, set()).add(landmark.name)
+    taken = {w for cat in catalog().values() for n in cat.words for w in ph.tokens(n)} | lx.GRAMMAR
+    return {w: next(iter(o)) for w, o in owners.items() if len(o) == 1 and w not in taken and len(w) > 3}
+
+
+def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
+    """The landmark named in normalised text (articles ignored; longest name wins), and its span."""
+    best: tuple[int, str, int, int] | None = None
+    bare = _ARTICLES.sub("", low)
+    for landmark in scene.landmarks:
+        for name in landmark.names():
+            key = _ARTICLES.sub("", ph.normalise(name)).strip()
+            m = re.search(rf"(?<![a-z0-9]){re.escape(key)}(?![a-z0-9])", bare)
+            if m and (best is None or len(key) > best[0]):
+                # Map the span back to `low` by finding the same words there.
+                words = r"\s+(?:(?:the|a|an)\s+)?".join(re.escape(w) for w in key.split())
+                span = re.search(rf"(?<![a-z0-9]){words}(?![a-z0-9])", low)
+                start, end = (span.start(), span.end()) if span else (0, 0)
+                best = (len(key), landmark.name, start, end)
+    if best is not None:
+        return best[1], best[2], best[3]
+    for word, name in _unique_place_words(scene).items():
+        m = re.search(rf"(?<![a-z0-9]){re.escape(word)}(?![a-z0-9])", low)
+        if m:
+            return name, m.start(), m.end()
+    return None
+
+
+def _place_head_word(scene: Scene, low: str) -> str | None:
+    heads = {ph.tokens(name)[-1] for lm in scene.landmarks for name in lm.names()}
+    for word in ph.tokens(low):
+        if word in heads or ph.singular(word) in heads:
+            return ph.singular(word)
+    return None
+
+
+def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
+    """A lane by id, by direction (with its road if several share it), or by road alone (guessed)."""
+    spaced = low.replace("_", " ")
+    for lane in scene.roads.lanes:
+        key = lane.id.replace("_", " ")
+        pos = spaced.find(key)
+        if pos >= 0:
+            return lane.id, pos, pos + len(key), False
+    words = set(ph.tokens(spaced))
+    directions = {_DIRECTIONS.get(w.removesuffix("wards").removesuffix("ward"), w) for w in words}
+    matches = [lane for lane in scene.roads.lanes if lane.id.rsplit("_", 1)[-1] in directions]
+    roads = [lane for lane in matches if lane.road.lower() in spaced] or matches
+    if len({lane.id for lane in roads}) == 1 or (roads and len(matches) > 1 and roads != matches):
+        return roads[0].id, 0, 0, False
+    for lane in scene.roads.lanes:
+        pos = spaced.find(lane.road.lower())
+        if pos >= 0:
+            return lane.id, pos, pos + len(lane.road), True
+    return None
+
+
+def _ego_span(low: str) -> tuple[int, int] | None:
+    for word in ph.EGO_WORDS:
+        m = re.search(rf"(?<![a-z]){re.escape(word)}(?![a-z])", low)
+        if m:
+            return m.start(), m.end()
+    return None
+
+
+def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[str], list[ph.Mention]]:
+    """Assets named by category and number or ordinal: "car 2", "car two", "the second car"."""
+    ids: list[str] = []
+    rest: list[ph.Mention] = []
+    for mention in mentions:
+        after = low[mention.end :].split()[:1]
+        before = low[: mention.start].split()[-2:]
+        number: int | None = None
+        if after and (after[0].isdigit() or after[0] in ph.NUMBER_WORDS) and after[0] not in ("a", "an"):
+            number = int(after[0]) if after[0].isdigit() else ph.NUMBER_WORDS[after[0]]
+        present = sorted((a for a in scene.assets if a.category == mention.category),
+                         key=lambda a: int(a.id.rsplit("_", 1)[-1]) if a.id.rsplit("_", 1)[-1].isdigit() else 0)
+        ordinal = next((lx.ORDINALS[w] for w in reversed(before) if w in lx.ORDINALS), None)
+        if number is not None and scene.asset(f"{mention.category}_{number}") is not None:
+            ids.append(f"{mention.category}_{number}")
+        elif ordinal is not None and present and -1 <= ordinal <= len(present) and ordinal != 0:
+            ids.append(present[ordinal - 1 if ordinal > 0 else -1].id)
+        else:
+            rest.append(mention)
+    return ids, rest
+
+
+def _concepts(low: str, taken: list[ph.Mention]) -> list[ph.Mention]:
+    found: list[ph.Mention] = []
+    for category, words in lx.CONCEPTS.items():
+        for word in words:
+            m = re.search(rf"(?<![a-z]){re.escape(word)}(?![a-z])", low)
+            if m and not any(t.start < m.end() and m.start() < t.end for t in taken + found):
+                found.append(ph.Mention(category, m.start(), m.end(), True))
+    return found
+
+
+def read(text: str, scene: Scene) -> Reading:
+    """Parse one clause against the scene."""
+    low = ph.normalise(text)
+    masked = low
+    spans: list[tuple[int, int]] = []
+    place = find_place(scene, low)
+    if place is not None:
+        spans.append(place[1:])
+    lane = find_lane(scene, low)
+    if lane is not None and lane[2] > lane[1]:
+        spans.append((lane[1], lane[2]))
+    ego = _ego_span(low)
+    if ego is not None:
+        spans.append(ego)
+    for start, end in spans:
+        masked = _blank(masked, start, end)
+    mentions = [m for m in ph.find_categories(low) if not any(m.start < e and s < m.end for s, e in spans)]
+    # "stop" is a verb before a noun phrase or at the start ("stop the ego"), a sign otherwise.
+    mentions = [m for m in mentions if not (low[m.start : m.end] == "stop"
+                                            and (m.start <= 1 or re.match(r"\s+(the|our|it|that|ego)\b", low[m.end :])))]
+    mentions += _concepts(masked, mentions)
+    mentions.sort(key=lambda m: m.start)
+    # "somewhere for students to sit": the students are who it is for, not what is asked.
+    if len(mentions) > 1:
+        mentions = [m for m in mentions if not re.search(r"\bfor\s+$", low[: m.start])] or mentions
+    ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in ph.tokens(low)]
+    numbered, mentions = _numbered(scene, low, mentions)
+    return Reading(
+        text=text, low=low, masked=masked, mentions=mentions,
+        landmark=place[0] if place else None, landmark_at=place[1] if place else -1,
+        landmark_word=None if place else _place_head_word(scene, low),
+        lane=lane[0] if lane else None, lane_guessed=bool(lane and lane[3]),
+        ids=list(dict.fromkeys(ids + numbered)), ego=ego is not None,
+    )
+
+
+def find_count(reading: Reading, mention: ph.Mention) -> int | None:
+    """The number quantifying a mention; collective nouns ("a row of") are not "one"."""
+    for word in reversed(ph.tokens(reading.low[: mention.start])[-4:]):
+        if word in lx.COLLECTIVE_COUNTS:
+            return lx.COLLECTIVE_COUNTS[word] or None
+        if word.isdigit():
+            return int(word)
+        if word in ph.NUMBER_WORDS:
+            return ph.NUMBER_WORDS[word]
+    return None
+
+
+def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:
+    """Whether a mention asks for a new asset ("a cone") rather than names one there ("the cone")."""
+    if add_verb:
+        return True
+    for word in reversed(ph.tokens(reading.low[: mention.start])[-3:]):
+        if word in _NEW_DETERMINERS or word.isdigit() or word in lx.COLLECTIVE_COUNTS or (
+            word in ph.NUMBER_WORDS and word not in ("one",)
+        ):
+            return True
+        if word in _OLD_DETERMINERS:
+            return False
+    return not present  # a bare noun: the one there is, if there is one
+
+
+__all__ = ["Reading", "find_count", "find_lane", "find_place", "is_new", "read"]

@@ -1,0 +1,152 @@
+"""Spelling repair for the rule planner: typos and run-together words fixed against known words.
+
+A word is repaired only when it is not already known (as written, or as a plural or verb form
+of a known word) and is close in spelling to exactly the kind of word the planner reads:
+catalog names, landmark names, lanes, colours, weather and time words, intent verbs. Every
+repair is reported, because a repaired prompt is a guess the planner's confidence must show.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from dataclasses import dataclass, field
+from functools import cache
+
+from drivetwin.orchestrator import rule_lexicon as lx
+from drivetwin.tools.appearance import COLOURS
+from drivetwin.worlds.catalog import catalog
+from drivetwin.worlds.scene import Scene
+
+# Similarity (difflib ratio) a repair needs: "truk"/"truck" 0.89, "lite"/"light" 0.8, while
+# "drivers"/"drive" (a real word, 0.83) is protected by the inflection check, not the cutoff.
+REPAIR_CUTOFF = 0.8
+# Shorter words are too easy to confuse ("bus"/"bush"); only whole-word lists fix them.
+MIN_REPAIR_LEN = 4
+_WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
+# Short slips too common to leave: a doubled letter dropped or a letter swapped.
+_SHORT_SLIPS = {"ad": "add", "teh": "the", "adn": "and", "fo": "of", "ot": "to", "mak": "make",
+                "pu": "put", "nite": "night", "tonite": "tonight", "lite": "light", "thru": "through",
+                "infront": "in front", "wich": "which", "wat": "what", "whr": "where", "u": "you",
+                "abit": "a bit", "alot": "a lot"}
+_SHORT_GRAMMAR_LEN = 5
+_QUESTION_WORDS = ("much", "which", "where", "front", "there", "many")
+_SUFFIXES = ("ies", "es", "s", "ing", "ed", "er", "ers", "ly", "ward", "wards", "'s")
+
+
+@dataclass
+class Repaired:
+    """A prompt after spelling repair, and each repair made (as 'was -> now')."""
+
+    text: str
+    repairs: list[str] = field(default_factory=list)
+
+
+def _words_of(phrases: object) -> set[str]:
+    out: set[str] = set()
+    for phrase in phrases:  # type: ignore[attr-defined]
+        out.update(w.lower() for w in _WORD.findall(str(phrase).replace("_", " ")))
+    return out
+
+
+@cache
+def _static_vocabulary() -> frozenset[str]:
+    words = set(lx.GRAMMAR) | _words_of(COLOURS) | _words_of(lx.COLOUR_OF)
+    for table in (lx.SEARCH_STARTS, lx.PROPERTY_WORDS, lx.REMOVE_WORDS, lx.GONE_WORDS, lx.FEWER_WORDS,
+                  lx.ADD_WORDS, lx.MOVE_WORDS, lx.REVERSE_WORDS, lx.TURN_WORDS, lx.STOP_WORDS,
+                  lx.HEAVY, lx.LIGHT, lx.LIGHTS_WORDS, lx.ARRANGE_WORDS, lx.BLOCK_WORDS,
+                  lx.GENERIC_THINGS, lx.WORKS_WORDS, lx.FILLER_STARTS, tuple(lx.ORDINALS),
+                  tuple(lx.COLLECTIVE_COUNTS)):
+        words |= _words_of(table)
+    for group in (lx.WEATHER_WORDS, lx.BEHAVIOUR_WORDS, lx.CONCEPTS):
+        for values in group.values():
+            words |= _words_of(values)
+    for words_, _ in lx.TIME_PRESETS:
+        words |= _words_of(words_)
+    for cat in catalog().values():
+        words |= _words_of(cat.words)
+    return frozenset(words)
+
+
+def vocabulary(scene: Scene) -> frozenset[str]:
+    """Every word the rule planner reads in this scene."""
+    words = set(_static_vocabulary())
+    for landmark in scene.landmarks:
+        words |= _words_of(landmark.names())
+    for lane in scene.roads.lanes:
+        words |= _words_of((lane.id, lane.road))
+    return frozenset(words)
+
+
+@cache
+def _targets(vocab: frozenset[str]) -> tuple[str, ...]:
+    # Short common words are protected from repair but never its result: "tank" is not "thank".
+    short = {w for w in lx.GRAMMAR if len(w) <= _SHORT_GRAMMAR_LEN} - set(_QUESTION_WORDS)
+    return tuple(sorted(vocab - short))
+
+
+def is_known(word: str, vocab: frozenset[str]) -> bool:
+    """Whether `word` is known as written or as an inflection of a known word."""
+    w = word.lower()
+    if w in vocab:
+        return True
+    for suffix in _SUFFIXES:
+        if w.endswith(suffix) and len(w) - len(suffix) >= 3:
+            stem = w[: -len(suffix)]
+            if stem in vocab or stem + "e" in vocab or (stem[-1:] == stem[-2:-1] and stem[:-1] in vocab):
+                return True
+            if suffix == "ies" and stem + "y" in vocab:
+                return True
+    return False
+
+
+@cache
+def _joined(vocab: frozenset[str]) -> dict[str, str]:
+    # Two known words run together ("trashbin", "infront"): the joined form maps to both.
+    phrases: dict[str, str] = {}
+    for cat in catalog().values():
+        for word in cat.words:
+            parts = word.lower().split()
+            if len(parts) == 2:
+                phrases["".join(parts)] = " ".join(parts)
+    return phrases
+
+
+def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
+    low = word.lower()
+    if low in _SHORT_SLIPS:
+        return _SHORT_SLIPS[low]
+    if len(low) < MIN_REPAIR_LEN or is_known(low, vocab):
+        return None
+    joined = _joined(vocab)
+    for candidate in (low, low[:-1] if low.endswith("s") else low):
+        if candidate in joined:
+            return joined[candidate] + low[len(candidate):]
+    targets = _targets(vocab)
+    if low.endswith("s"):  # a plural keeps its plural: "bolards" -> "bollards"
+        close = difflib.get_close_matches(low[:-1], targets, n=1, cutoff=REPAIR_CUTOFF)
+        if close:
+            return close[0] + ("" if close[0].endswith("s") else "s")
+    close = difflib.get_close_matches(low, targets, n=1, cutoff=REPAIR_CUTOFF)
+    return close[0] if close else None
+
+
+def repair(text: str, scene: Scene) -> Repaired:
+    """`text` with misspelt and run-together words replaced by the known words they resemble."""
+    vocab = vocabulary(scene)
+    repairs: list[str] = []
+
+    def fix(m: re.Match[str]) -> str:
+        word = m.group(0)
+        if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
+            return word  # part of an asset id such as passenger_car_2
+        new = _repair_word(word, vocab)
+        if new is None or new == word.lower():
+            return word
+        repairs.append(f"{word} -> {new}")
+        return new
+
+    return Repaired(_WORD.sub(fix, text), repairs)
+
+
+__all__ = ["REPAIR_CUTOFF", "Repaired", "is_known", "repair", "vocabulary"]
