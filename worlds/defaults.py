@@ -1,4 +1,5 @@
-"""Worlds that can be loaded by name: the shipped ones and any in the user's world folders."""
+"""Worlds that can be loaded by name: the shipped ones, any in the user's world folders, and
+reconstructed world packages (drivetwin.worlds.reconstruct.package) on the asset search path."""
 
 from __future__ import annotations
 
@@ -20,6 +21,8 @@ class WorldEntry:
     name: str
     path: Path
     description: str
+    # The world package folder (background splats, terrain) when the world was reconstructed.
+    package: Path | None = None
 
 
 def _folders() -> list[Path]:
@@ -38,7 +41,23 @@ def list_worlds() -> list[WorldEntry]:
                 continue  # a damaged user file must not hide the other worlds
             first_line = scene.description.split(". ")[0]
             found[path.stem] = WorldEntry(path.stem, path, first_line)
+    for entry in _packaged_worlds():
+        found.setdefault(entry.name, entry)
     return list(found.values())
+
+
+def _packaged_worlds() -> list[WorldEntry]:
+    from drivetwin.worlds.reconstruct.package import WORLD_SCENE, discover_packages
+
+    entries = []
+    for package in discover_packages("world"):
+        path = package.root / WORLD_SCENE
+        try:
+            scene = Scene.load(path)
+        except ValueError:
+            continue
+        entries.append(WorldEntry(package.name, path, scene.description.split(". ")[0], package.root))
+    return entries
 
 
 def load_world(name: str) -> Scene:
