@@ -81,6 +81,8 @@ class RunMetrics(BaseModel):
     planner_options: dict[str, object] = Field(default_factory=dict)
     suite: str
     suite_digest: str
+    # The grades/tasks the run was limited to; empty: the whole suite.
+    only: list[str] = Field(default_factory=list)
     started: str
     git_commit: str | None
     model: ModelFacts | None
@@ -159,6 +161,7 @@ def compute_metrics(run: Run) -> RunMetrics:
         planner_options=dict(h.planner_options),
         suite=h.suite,
         suite_digest=h.suite_digest,
+        only=list(h.only),
         started=h.started,
         git_commit=h.git_commit,
         model=model,

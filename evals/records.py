@@ -40,6 +40,8 @@ class RunHeader(BaseModel):
     suite_path: str
     suite_digest: str
     cases: int
+    # Grades and tasks the run was limited to (`--only direct`); empty: every case.
+    only: list[str] = Field(default_factory=list)
     planner: str
     planner_options: dict[str, Any] = Field(default_factory=dict)
     label: str = ""
@@ -187,7 +189,7 @@ class RecordWriter:
 
 
 def _check_same_run(path: Path, old: RunHeader, new: RunHeader) -> None:
-    for field in ("suite_digest", "planner", "planner_options"):
+    for field in ("suite_digest", "only", "planner", "planner_options"):
         if getattr(old, field) != getattr(new, field):
             raise RecordsError(
                 f"{path} holds a run with another {field} ({getattr(old, field)!r}, now "

@@ -74,6 +74,10 @@ def _secs(value: float | None) -> str:
     return f"{value:.2f} s" if value >= 0.1 else f"{1000 * value:.1f} ms"
 
 
+def _only(m: RunMetrics) -> str:
+    return f", only {'/'.join(m.only)}" if m.only else ""
+
+
 def table4(runs: Sequence[RunMetrics], paper: bool = True) -> list[str]:
     """Markdown lines of Table 4: one row per planner/model."""
     lines = [
@@ -141,7 +145,7 @@ def render_markdown(runs: Sequence[RunMetrics], plots: Sequence[Path] = ()) -> s
     for m in runs:
         options = f" `{json.dumps(m.planner_options)}`" if m.planner_options else ""
         out.append(
-            f"| {m.label} | {m.planner}{options} | {m.suite} ({m.suite_digest}) "
+            f"| {m.label} | {m.planner}{options} | {m.suite} ({m.suite_digest}){_only(m)} "
             f"| {m.cases} × {m.trials_per_case} | {m.errors} | {m.started} | {m.git_commit or '—'} |"
         )
     out += ["", "## Table 4: planners and models", "", *table4(runs), ""]

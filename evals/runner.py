@@ -12,12 +12,13 @@ import platform
 import subprocess
 import sys
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import Any, TextIO
 
-from drivetwin.evals.case import load_suite
+from drivetwin.evals.case import GRADES, TASKS, Case, load_suite
 from drivetwin.evals.executors import EXECUTORS, Job, run_local
 from drivetwin.evals.records import RecordWriter, RunHeader, TrialRecord
 
@@ -117,6 +118,17 @@ class _Progress:
             self._bar.close()
 
 
+def select_cases(cases: Sequence[Case], only: Sequence[str]) -> list[Case]:
+    """The cases whose grade and task pass the `only` filter (grade and task names)."""
+    unknown = sorted(set(only) - set(GRADES) - set(TASKS))
+    if unknown:
+        raise RunError(f"unknown grade or task {', '.join(unknown)}; grades: {', '.join(GRADES)}; "
+                       f"tasks: {', '.join(TASKS)}")
+    grades = set(only) & set(GRADES) or set(GRADES)
+    tasks = set(only) & set(TASKS) or set(TASKS)
+    return [case for case in cases if case.grade in grades and case.task in tasks]
+
+
 def run_suite(
     suite_path: str | Path,
     planner_name: str,
@@ -129,11 +141,14 @@ def run_suite(
     progress: bool = True,
     label: str = "",
     stream: TextIO | None = None,
+    only: Sequence[str] = (),
 ) -> RunSummary:
     """Run every case of a suite `trials` times with a planner, appending records to `out_path`.
 
     `planner_name` is a registered planner ('rules', 'llm', 'hybrid'), 'reference' (each
     case's own reference calls: checks the suite itself), or 'package.module:factory'.
+    `only` limits the run to cases of those grades and tasks (a grade and a task both given:
+    cases that match one of the grades and one of the tasks).
     A Ctrl-C stops the run cleanly: the summary says `interrupted` and the records written
     so far stay; calling again with the same arguments resumes.
     """
@@ -143,11 +158,13 @@ def run_suite(
         raise RunError(f"unknown executor {executor!r}; choose one of: {', '.join(EXECUTORS)}")
     options = dict(planner_options or {})
     suite = load_suite(suite_path)
+    cases = select_cases(suite.cases, only)
     header = RunHeader(
         suite=suite.name,
         suite_path=suite.path,
         suite_digest=suite.digest,
-        cases=len(suite.cases),
+        cases=len(cases),
+        only=sorted(set(only)),
         planner=planner_name,
         planner_options=options,
         label=label,
@@ -169,10 +186,10 @@ def run_suite(
     jobs: list[Job] = [
         (case.model_dump_json(), trial)
         for trial in range(trials)
-        for case in suite.cases
+        for case in cases
         if (case.id, trial) not in writer.done
     ]
-    total = len(suite.cases) * trials
+    total = len(cases) * trials
     bar = _Progress(total, total - len(jobs), progress, stream or sys.stderr)
     counts = {"pass": 0, "fail": 0, "error": 0}
     ran = 0

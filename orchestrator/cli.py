@@ -264,17 +264,21 @@ def eval_group() -> None:
 @click.option("--executor", type=click.Choice(["local", "ray"]), default="local", show_default=True)
 @click.option("--out", "out_path", type=click.Path(dir_okay=False, path_type=Path), required=True,
               help="records file (JSON Lines); an existing one is resumed")
+@click.option("--only", multiple=True, help="run only cases of this grade or task (repeatable), e.g. --only direct")
 def eval_run(suite: str, planner_name: str, backend: str | None, model: str | None, trials: int,
-             workers: int, executor: str, out_path: Path) -> None:
+             workers: int, executor: str, out_path: Path, only: tuple[str, ...]) -> None:
     """Run a suite against a planner, resumably.
 
     Example: drivetwin eval run --suite full --planner rules --trials 3 --out runs/rules.jsonl
     """
-    from drivetwin.evals import run_suite
+    from drivetwin.evals import RecordsError, RunError, SuiteError, run_suite
 
     options: dict[str, Any] = {k: v for k, v in (("backend", backend), ("model", model)) if v}
-    summary = run_suite(suite, planner_name, planner_options=options, trials=trials, out_path=out_path,
-                        executor=executor, workers=workers, progress=True)
+    try:
+        summary = run_suite(suite, planner_name, planner_options=options, trials=trials, out_path=out_path,
+                            executor=executor, workers=workers, progress=True, only=only)
+    except (RunError, SuiteError, RecordsError) as exc:
+        raise click.ClickException(str(exc)) from exc
     click.echo(f"{summary.passed} passed, {summary.failed} failed, {summary.errors} errors; records in {out_path}")
     if summary.interrupted:
         click.echo("interrupted: run the same command again to resume")

@@ -81,6 +81,21 @@ def test_bad_run_settings_are_refused_before_anything_runs(tiny_suite: Path, tmp
     assert not (tmp_path / "a.jsonl").exists()
 
 
+def test_only_runs_the_cases_of_the_named_grades_and_tasks(tiny_suite: Path, tmp_path: Path) -> None:
+    direct = run_suite(tiny_suite, TINY, trials=2, out_path=tmp_path / "d.jsonl", progress=False, only=["direct"])
+    assert direct.total == 2 * 5
+    run = read_run(tmp_path / "d.jsonl")
+    assert run.header.only == ["direct"] and run.header.cases == 5
+    both = run_suite(tiny_suite, TINY, out_path=tmp_path / "a.jsonl", progress=False, only=["direct", "appearance"])
+    assert both.total == 2
+    assert {r.case_id for r in read_run(tmp_path / "a.jsonl").records} == {"rain", "snow"}
+    with pytest.raises(RecordsError, match="another only"):
+        run_suite(tiny_suite, TINY, trials=2, out_path=tmp_path / "d.jsonl", progress=False)
+    with pytest.raises(RunError, match="unknown grade or task drekt"):
+        run_suite(tiny_suite, TINY, out_path=tmp_path / "x.jsonl", progress=False, only=["drekt"])
+    assert not (tmp_path / "x.jsonl").exists()
+
+
 def test_worker_processes_give_the_same_metrics_as_one_process(tiny_suite: Path, tmp_path: Path) -> None:
     inline, pooled = tmp_path / "inline.jsonl", tmp_path / "pooled.jsonl"
     run_suite(tiny_suite, TINY, trials=2, out_path=inline, workers=1, progress=False)
