@@ -320,3 +320,8 @@ def enhance(src_dir: Path, model: str, controlnet: str | None, out_dir: Path | N
         click.echo(f"error: {exc}", err=True)
         sys.exit(2)
     click.echo(f"enhanced frames in {target}: {report}")
+
+
+from drivetwin.worlds.reconstruct.cli import add_reconstruct_parser  # noqa: E402  (the reconstruct group)
+
+add_reconstruct_parser(main)

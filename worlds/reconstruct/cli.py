@@ -1,0 +1,223 @@
+"""`drivetwin reconstruct`: LIDAR scans and photographs to an asset or world package.
+
+Two commands make a package, in either order; the second one fuses it:
+
+    drivetwin reconstruct mesh scan_*.ply --out pkg/kerb_stone --kind object
+    drivetwin reconstruct splats photos/ --out pkg/kerb_stone --colmap photos/sparse/0
+    drivetwin reconstruct report pkg/kerb_stone
+
+Put the package's parent folder on DRIVETWIN_ASSETS (or the package in ~/.cache/drivetwin/assets)
+and the Workers can place it: `drivetwin chat` -> "add a kerb stone next to the bus stop".
+"""
+
+from __future__ import annotations
+
+import inspect
+import json
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import click
+
+# Commands import the reconstruction modules when run, so `drivetwin --help` stays fast.
+
+__all__ = ["add_reconstruct_parser", "reconstruct"]
+
+DEFAULT_BUDGET = 20_000
+_OUT = click.option("--out", "out_dir", required=True, type=click.Path(file_okay=False, path_type=Path),
+                    help="the package folder (created); both halves go into the same one")  # fmt: skip
+_NAME = click.option("--name", default=None, help="catalog name (default: the folder's name)")
+_MATERIAL = click.option(
+    "--material", default=None, help="what it is made of, for the mass estimate (e.g. concrete, wood)"
+)
+_TAGS = click.option("--tag", "tags", multiple=True, help="a tag (repeatable); a tag with a density sets the mass too")
+
+
+@click.group(name="reconstruct")
+def reconstruct() -> None:
+    """Real to sim: scans and photographs to a package a world can use.
+
+    Example: drivetwin reconstruct mesh scans/*.ply --out pkg/kerb_stone --kind object
+    """
+
+
+def _fuse_options(name: str | None, material: str | None, tags: tuple[str, ...]) -> dict[str, Any]:
+    return {"name": name, "material": material, "tags": list(tags)}
+
+
+def _finish(out_dir: Path, options: dict[str, Any]) -> None:
+    """Fuse when the other half is there already; say what is missing otherwise."""
+    from .fusion import FusionError, fuse_if_complete, halves_present
+    from .package import AssetPackageError
+
+    try:
+        package = fuse_if_complete(out_dir, **options)
+    except (FusionError, AssetPackageError) as exc:
+        raise click.ClickException(f"fusion failed: {exc}") from exc
+    if package is None:
+        geometry, _ = halves_present(out_dir)
+        other = "reconstruct splats IMAGES_DIR" if geometry else "reconstruct mesh SCANS..."
+        click.echo(f"half written to {out_dir}; run `drivetwin {other} --out {out_dir}` to fuse the package")
+        return
+    _summary(package, out_dir)
+
+
+def _summary(package: Any, out_dir: Path) -> None:
+    """Say what the package is and how to use it."""
+    from .package import user_asset_folder
+
+    m = package.manifest
+    size = m.dimensions
+    click.echo(f"package {m.name!r} ({m.kind}) in {out_dir}: {size.length:.2f} x {size.width:.2f} x "
+               f"{size.height:.2f} m, {m.mass:.1f} kg, {int(m.metrics.get('splats.kept', 0))} splats, "
+               f"{len(package.hull_paths())} convex parts")  # fmt: skip
+    click.echo(f"use it: export DRIVETWIN_ASSETS={out_dir.resolve().parent} (or copy it into {user_asset_folder()})")
+
+
+@reconstruct.command("mesh")
+@click.argument("scans", nargs=-1, required=True, type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@_OUT
+@click.option("--kind", type=click.Choice(["object", "ground", "scene"]), default="object", show_default=True,
+              help="object: convex parts; ground: height field; scene: both")  # fmt: skip
+@click.option("--budget", default=DEFAULT_BUDGET, show_default=True, type=click.IntRange(100, 2_000_000),
+              help="most triangles in the mesh")  # fmt: skip
+@_NAME
+@_MATERIAL
+@_TAGS
+def mesh_command(scans: tuple[Path, ...], out_dir: Path, kind: str, budget: int, name: str | None,
+                 material: str | None, tags: tuple[str, ...]) -> None:  # fmt: skip
+    """Point clouds (PLY, PCD, LAS, NumPy) to a collision mesh, convex parts and a height field.
+
+    Example: drivetwin reconstruct mesh scan_0.ply scan_1.ply --out pkg/kerb_stone --kind object
+    """
+    from .geometry import reconstruct_mesh
+    from .pointclouds import PointCloudError
+
+    try:
+        reconstruct_mesh(list(scans), out_dir, kind=kind, triangle_budget=budget)  # type: ignore[arg-type]
+    except (PointCloudError, ValueError) as exc:
+        raise click.ClickException(str(exc)) from exc
+    _finish(out_dir, _fuse_options(name, material, tags))
+
+
+# Where the appearance half's `reconstruct_splats(images, out_dir, ...)` may live.
+_APPEARANCE_MODULES = ("appearance", "fit", "splat_pipeline")
+
+
+def _appearance_entry() -> Callable[..., Any]:
+    """The appearance half's `reconstruct_splats(images, out_dir, ...)`."""
+    from importlib import import_module
+
+    for module in _APPEARANCE_MODULES:
+        try:
+            entry = getattr(import_module(f"{__package__}.{module}"), "reconstruct_splats", None)
+        except ImportError:
+            continue
+        if callable(entry):
+            return entry  # type: ignore[no-any-return]
+    raise ImportError("no reconstruct_splats in drivetwin.worlds.reconstruct")
+
+
+@reconstruct.command("splats")
+@click.argument("images_dir", type=click.Path(exists=True, file_okay=False, path_type=Path))
+@_OUT
+@click.option("--colmap", "colmap_dir", type=click.Path(exists=True, file_okay=False, path_type=Path), default=None,
+              help="a COLMAP model folder (cameras, images, points3D) posing the images")  # fmt: skip
+@click.option("--poses", "poses_json", type=click.Path(exists=True, dir_okay=False, path_type=Path), default=None,
+              help="a drivetwin poses JSON file (see views.load_poses_json)")  # fmt: skip
+@click.option("--iterations", default=None, type=click.IntRange(1, 1_000_000), help="fit iterations")
+@_NAME
+@_MATERIAL
+@_TAGS
+def splats_command(images_dir: Path, out_dir: Path, colmap_dir: Path | None, poses_json: Path | None,
+                   iterations: int | None, name: str | None, material: str | None, tags: tuple[str, ...]) -> None:  # fmt: skip
+    """Photographs to fitted Gaussian splats (posed by COLMAP, a poses file, or SfM when neither).
+
+    Example: drivetwin reconstruct splats photos/ --out pkg/kerb_stone --colmap photos/sparse/0
+    """
+    if colmap_dir is not None and poses_json is not None:
+        raise click.UsageError("give --colmap or --poses, not both")
+    try:
+        entry = _appearance_entry()
+    except (ImportError, AttributeError) as exc:
+        raise click.ClickException(f"the appearance half is not installed in this build: {exc}") from exc
+    accepted = inspect.signature(entry).parameters
+    wanted = {"colmap": colmap_dir, "poses": poses_json, "iterations": iterations}
+    options = {k: v for k, v in wanted.items() if v is not None and k in accepted}
+    try:
+        entry(images_dir, out_dir, **options)
+    except ValueError as exc:
+        raise click.ClickException(str(exc)) from exc
+    _finish(out_dir, _fuse_options(name, material, tags))
+
+
+@reconstruct.command("fuse")
+@click.argument("package_dir", type=click.Path(exists=True, file_okay=False, path_type=Path))
+@click.option(
+    "--kind", type=click.Choice(["asset", "world"]), default=None, help="default: asset when convex parts exist"
+)
+@_NAME
+@_MATERIAL
+@_TAGS
+@click.option("--description", default="", help="one line saying what it is")
+def fuse_command(package_dir: Path, kind: str | None, name: str | None, material: str | None,
+                 tags: tuple[str, ...], description: str) -> None:  # fmt: skip
+    """Fuse (again) the two halves in a folder, e.g. with another name or material.
+
+    Example: drivetwin reconstruct fuse pkg/kerb_stone --material concrete --tag kerb
+    """
+    from .fusion import FusionError, fuse
+    from .package import AssetPackageError
+
+    try:
+        package = fuse(package_dir, kind=kind, description=description, **_fuse_options(name, material, tags))  # type: ignore[arg-type]
+    except (FusionError, AssetPackageError) as exc:
+        raise click.ClickException(str(exc)) from exc
+    _summary(package, package_dir)
+
+
+@reconstruct.command("report")
+@click.argument("package_dir", type=click.Path(exists=True, file_okay=False, path_type=Path))
+@click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
+              help="folder for the report (default: the package)")  # fmt: skip
+@click.option("--frames", default=5, show_default=True, type=click.IntRange(1, 1000), help="frames timed for FPS")
+def report_command(package_dir: Path, out_dir: Path | None, frames: int) -> None:
+    """Write the metrics report (Markdown and JSON): cloud-to-mesh, PSNR/SSIM/LPIPS, FPS.
+
+    Example: drivetwin reconstruct report pkg/kerb_stone
+    """
+    from .package import AssetPackageError
+    from .report import write_report
+
+    try:
+        report = write_report(package_dir, out_dir, frames)
+    except AssetPackageError as exc:
+        raise click.ClickException(str(exc)) from exc
+    target = out_dir or package_dir
+    click.echo((target / "reconstruction_report.md").read_text(encoding="utf-8"))
+    click.echo(f"wrote {target / 'reconstruction_report.json'} ({report['render']['fps']:.1f} FPS)")
+
+
+@reconstruct.command("show")
+@click.argument("package_dir", type=click.Path(exists=True, file_okay=False, path_type=Path))
+def show_command(package_dir: Path) -> None:
+    """Print a package's manifest, or every problem that makes it unusable.
+
+    Example: drivetwin reconstruct show pkg/kerb_stone
+    """
+    from .package import AssetPackage, AssetPackageError
+
+    try:
+        package = AssetPackage.load(package_dir)
+    except AssetPackageError as exc:
+        raise click.ClickException(str(exc)) from exc
+    click.echo(json.dumps(package.manifest.model_dump(mode="json"), indent=2))
+
+
+def add_reconstruct_parser(main: click.Group) -> None:
+    """Register the `reconstruct` command group on the drivetwin CLI."""
+    from .demo import demo_command
+
+    reconstruct.add_command(demo_command)
+    main.add_command(reconstruct)
