@@ -29,8 +29,10 @@ _SHORT_SLIPS = {"ad": "add", "teh": "the", "adn": "and", "fo": "of", "ot": "to",
                 "pu": "put", "nite": "night", "tonite": "tonight", "lite": "light", "thru": "through",
                 "infront": "in front", "wich": "which", "wat": "what", "whr": "where", "u": "you",
                 "abit": "a bit", "alot": "a lot"}
-_SHORT_GRAMMAR_LEN = 5
-_QUESTION_WORDS = ("much", "which", "where", "front", "there", "many")
+_REPAIRABLE_GRAMMAR = ("much", "which", "where", "front", "there", "many", "forward", "backward",
+                       "degrees", "metres", "meters", "westbound", "eastbound", "northbound",
+                       "southbound", "sidewalk", "pavement", "entrance", "weather", "behind",
+                       "beside", "between", "towards", "outside", "please", "another", "colour")
 _SUFFIXES = ("ies", "es", "s", "ing", "ed", "er", "ers", "ly", "ward", "wards", "'s")
 
 
@@ -80,9 +82,8 @@ def vocabulary(scene: Scene) -> frozenset[str]:
 
 @cache
 def _targets(vocab: frozenset[str]) -> tuple[str, ...]:
-    # Short common words are protected from repair but never its result: "tank" is not "thank".
-    short = {w for w in lx.GRAMMAR if len(w) <= _SHORT_GRAMMAR_LEN} - set(_QUESTION_WORDS)
-    return tuple(sorted(vocab - short))
+    # Common words are protected from repair but rarely its result: "tank" is not "thanks".
+    return tuple(sorted((vocab - lx.GRAMMAR) | set(_REPAIRABLE_GRAMMAR)))
 
 
 def is_known(word: str, vocab: frozenset[str]) -> bool:
