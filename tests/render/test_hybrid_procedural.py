@@ -45,7 +45,7 @@ def test_a_removed_splat_asset_is_no_longer_drawn() -> None:
     scene = load_world("campus")
     world = MujocoWorld.from_scene(scene)
     suv = next(a for a in scene.assets if a.category == "suv")
-    renderer = HybridRenderer(world, attachments={suv.id: asset_splats("suv")})
+    renderer = HybridRenderer(world, background=None, attachments={suv.id: asset_splats("suv")})
     camera = default_camera(scene, 96, 54)
     assert renderer.compose(camera).raster is not None
     world.update(scene.model_copy(update={"assets": [a for a in scene.assets if a.id != suv.id]}))

@@ -1,9 +1,16 @@
-"""Numba-compiled stages of the CPU splat rasterizer: EWA projection, tile binning, compositing.
+"""Numba-compiled stages of the CPU splat rasterizer: EWA projection and compositing.
 
 All kernels take their thresholds as arguments (not module globals) so the on-disk cache
 (``cache=True``: compiled once per machine) can never hold stale constants. Arithmetic is
 float64 so the kernel agrees with the float64 reference to rounding error, thresholds
 included.
+
+Every kernel is serial, releases the GIL (``nogil=True``) and works on a slice of its
+items, so `_numba_raster` runs slices on its own threads. Numba's ``parallel=True`` is not
+used: its loop bodies are generated functions whose cached environments belong to the
+module "<dynamic>", which numba cannot rebuild from the on-disk cache once the in-memory
+copy has been garbage-collected (an intermittent ModuleNotFoundError: No module named
+'<dynamic>'); own threads also let the mesh pass run beside the splat stages.
 """
 
 from __future__ import annotations
@@ -14,7 +21,7 @@ import numba
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["bin_tiles", "composite", "gather_rows", "order_ties_by_id", "project"]
+__all__ = ["composite", "project"]
 
 # Columns of the packed per-splat feature rows the compositor reads.
 U, V, CONIC_A, CONIC_B, CONIC_C, OPACITY, MIN_POWER, DEPTH, RED, GREEN, BLUE = range(11)
@@ -28,8 +35,10 @@ POWER_SLACK = 1e-9
 _SAFE_FASTMATH = {"nsz", "arcp", "contract", "afn", "reassoc"}
 
 
-@numba.njit(parallel=True, cache=True)
+@numba.njit(cache=True, nogil=True, boundscheck=False)
 def project(
+    start: int,
+    stop: int,
     means: npt.NDArray[np.float32],
     quats: npt.NDArray[np.float32],
     log_scales: npt.NDArray[np.float32],
@@ -42,17 +51,21 @@ def project(
     low_pass: float,
     alpha_min: float,
     fov_clamp: float,
+    sh_dc: npt.NDArray[np.float32],
+    sh_c0: float,
+    colour_from_dc: bool,
     feats: npt.NDArray[np.float64],
     boxes: npt.NDArray[np.int32],
-) -> npt.NDArray[np.bool_]:
-    """EWA-project every splat; fill feats [N,11] and pixel boxes [N,4]; return visibility.
+    visible: npt.NDArray[np.bool_],
+) -> None:
+    """EWA-project splats ``start:stop``: fill their feats rows, pixel boxes and visibility.
 
     A splat is visible when its mean lies strictly between the near and far planes, its 2D
     covariance is positive definite, its opacity can reach ``alpha_min`` and the box of the
     ellipse where it can reach ``alpha_min`` overlaps the image. Boxes are inclusive pixel
-    ranges x0, x1, y0, y1.
+    ranges x0, x1, y0, y1. With ``colour_from_dc`` (SH degree 0: view-independent) the
+    colour columns get 0.5 + sh_c0 * dc clamped below at 0; otherwise the caller fills them.
     """
-    n = means.shape[0]
     fx, fy, cx, cy = intrinsics[0], intrinsics[1], intrinsics[2], intrinsics[3]
     width, height = image_size[0], image_size[1]
     tan_x, tan_y = 0.5 * width / fx, 0.5 * height / fy
@@ -60,9 +73,9 @@ def project(
     lim_x_neg = cx / fx + fov_clamp * tan_x
     lim_y_pos = (height - cy) / fy + fov_clamp * tan_y
     lim_y_neg = cy / fy + fov_clamp * tan_y
-    visible = np.zeros(n, dtype=np.bool_)
     w = viewmat
-    for i in numba.prange(n):
+    for i in range(start, stop):
+        visible[i] = False
         mx, my, mz = float(means[i, 0]), float(means[i, 1]), float(means[i, 2])
         x = w[0, 0] * mx + w[0, 1] * my + w[0, 2] * mz + w[0, 3]
         y = w[1, 0] * mx + w[1, 1] * my + w[1, 2] * mz + w[1, 3]
@@ -141,90 +154,20 @@ def project(
         feats[i, MIN_POWER] = math.log(alpha_min / opacity) - POWER_SLACK
         feats[i, DEPTH] = z
         boxes[i, 0], boxes[i, 1], boxes[i, 2], boxes[i, 3] = x0, x1, y0, y1
-    return visible
+        if colour_from_dc:
+            for c in range(3):
+                feats[i, RED + c] = max(0.0, 0.5 + sh_c0 * float(sh_dc[i, c]))
 
 
-@numba.njit(cache=True)
-def order_ties_by_id(order: npt.NDArray[np.int64], depth: npt.NDArray[np.float64]) -> None:
-    """Make a depth argsort stable in place: runs of equal depth get ascending ids.
-
-    NumPy's unstable argsort is 2.5x faster than its stable one; ties are rare, so
-    fixing them afterwards gives the (depth, id) order the reference uses, cheaply.
-    """
-    start = 0
-    for k in range(1, order.shape[0] + 1):
-        if k == order.shape[0] or depth[order[k]] != depth[order[start]]:
-            if k - start > 1:
-                order[start:k] = np.sort(order[start:k])
-            start = k
-
-
-@numba.njit(cache=True)
-def bin_tiles(
-    boxes: npt.NDArray[np.int32],
-    tile_w: int,
-    tile_h: int,
-    tiles_x: int,
-    n_tiles: int,
-) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int32]]:
-    """Sort (tile, splat) pairs by (tile, depth): returns tile offsets [T+1] and splat rows.
-
-    ``boxes`` must already be in depth order (front to back); a stable counting sort by
-    tile on top of that is the second digit of an LSD radix sort, i.e. one sort by the
-    key (tile, depth). Reading the boxes in order keeps both passes streaming.
-    """
-    counts = np.zeros(n_tiles + 1, dtype=np.int64)
-    for g in range(boxes.shape[0]):
-        for ty in range(boxes[g, 2] // tile_h, boxes[g, 3] // tile_h + 1):
-            for tx in range(boxes[g, 0] // tile_w, boxes[g, 1] // tile_w + 1):
-                counts[ty * tiles_x + tx + 1] += 1
-    offsets = np.cumsum(counts)
-    cursor = offsets[:-1].copy()
-    ids = np.empty(offsets[-1], dtype=np.int32)
-    for g in range(boxes.shape[0]):
-        for ty in range(boxes[g, 2] // tile_h, boxes[g, 3] // tile_h + 1):
-            for tx in range(boxes[g, 0] // tile_w, boxes[g, 1] // tile_w + 1):
-                t = ty * tiles_x + tx
-                ids[cursor[t]] = g
-                cursor[t] += 1
-    return offsets, ids
-
-
-@numba.njit(parallel=True, cache=True, boundscheck=False)
-def gather_rows(
-    ids: npt.NDArray[np.integer],
-    feats: npt.NDArray[np.float64],
-    boxes: npt.NDArray[np.int32],
-    index: npt.NDArray[np.integer],
-) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.int32], npt.NDArray[np.int32]]:
-    """Rows ``ids`` of feats, boxes and index, copied in that order (in parallel).
-
-    Used twice: to put visible splats in depth order, then to lay out each (tile, splat)
-    pair in tile order, so binning and compositing stream through memory instead of
-    chasing ids across tables larger than the caches (30% faster at 100k splats).
-    """
-    n = ids.shape[0]
-    out_feats = np.empty((n, feats.shape[1]))
-    out_boxes = np.empty((n, 4), dtype=np.int32)
-    out_index = np.empty(n, dtype=np.int32)
-    for k in numba.prange(n):
-        g = ids[k]
-        for j in range(feats.shape[1]):
-            out_feats[k, j] = feats[g, j]
-        for j in range(4):
-            out_boxes[k, j] = boxes[g, j]
-        out_index[k] = index[g]
-    return out_feats, out_boxes, out_index
-
-
-@numba.njit(parallel=True, cache=True, boundscheck=False, fastmath=_SAFE_FASTMATH)
+@numba.njit(cache=True, nogil=True, boundscheck=False, fastmath=_SAFE_FASTMATH)
 def composite(
+    tiles: npt.NDArray[np.int64],
     offsets: npt.NDArray[np.int64],
-    tile_order: npt.NDArray[np.int64],
     feats: npt.NDArray[np.float64],
     boxes: npt.NDArray[np.int32],
     splat_index: npt.NDArray[np.int32],
     depth_limit: npt.NDArray[np.float64],
+    tile_min_depth: npt.NDArray[np.float64],
     tile_w: int,
     tile_h: int,
     tiles_x: int,
@@ -236,10 +179,10 @@ def composite(
     out_depth: npt.NDArray[np.float32],
     out_index: npt.NDArray[np.int32],
 ) -> None:
-    """Front-to-back alpha compositing, tile by tile, splat-major within a tile.
+    """Front-to-back alpha compositing of the image tiles ``tiles``, splat-major in a tile.
 
-    Rows ``offsets[t]:offsets[t+1]`` of feats/boxes/splat_index (from ``gather_rows``)
-    are tile t's splats, front to back.
+    Rows ``offsets[t]:offsets[t+1]`` of feats/boxes/splat_index (from binning) are tile
+    t's splats, front to back; every pixel of the listed tiles is written.
 
     Per pixel the splats arrive in depth order, so this equals the per-pixel loop of 3DGS:
     alpha = min(alpha_max, o * exp(power)); skip alpha < alpha_min; stop (excluding the
@@ -247,6 +190,10 @@ def composite(
     inside the tile is what makes the CPU fast: most splats cover a few pixels.
     ``thresholds`` = (alpha_min, alpha_max, t_min, index_min_alpha); ``use_limit`` and
     ``want_index`` switch off the depth-limit test and index tracking when unused.
+
+    Depth limit: splats arrive in depth order, so once one is at or behind a pixel's limit
+    every later one is too and the pixel is finished (exactly as if each were dropped).
+    A splat in front of the tile's nearest limit (``tile_min_depth``) skips the test.
     """
     alpha_min, alpha_max, t_min, index_min_alpha = (
         thresholds[0],
@@ -255,8 +202,8 @@ def composite(
         thresholds[3],
     )
     height, width = depth_limit.shape
-    for k in numba.prange(tile_order.shape[0]):
-        t = tile_order[k]
+    for k in range(tiles.shape[0]):
+        t = tiles[k]
         px0, py0 = (t % tiles_x) * tile_w, (t // tiles_x) * tile_h
         px1, py1 = min(px0 + tile_w, width), min(py0 + tile_h, height)
         tw = px1 - px0
@@ -273,6 +220,7 @@ def composite(
             u, v = feats[g, U], feats[g, V]
             ca, cb, cc = feats[g, CONIC_A], feats[g, CONIC_B], feats[g, CONIC_C]
             opacity, z = feats[g, OPACITY], feats[g, DEPTH]
+            limited = use_limit and z >= tile_min_depth[t]
             red, green, blue = feats[g, RED], feats[g, GREEN], feats[g, BLUE]
             x_lo, x_hi = max(boxes[g, 0], px0), min(boxes[g, 1], px1 - 1)
             # Row span of the ellipse power >= min_power: ca dx^2 + 2 cb dy dx + cc dy^2 <= q_max
@@ -307,7 +255,14 @@ def composite(
                     alpha = min(alpha_max, value)
                     value *= ratio
                     ratio *= step_decay
-                    if alpha < alpha_min or done[p] or (use_limit and z >= depth_limit[py, px]):
+                    if done[p]:
+                        continue
+                    if limited and z >= depth_limit[py, px]:
+                        done[p] = True
+                        n_done += 1
+                        row_open[py - py0] -= 1
+                        continue
+                    if alpha < alpha_min:
                         continue
                     next_t = trans[p] * (1.0 - alpha)
                     if next_t < t_min:

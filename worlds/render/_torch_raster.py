@@ -98,7 +98,7 @@ def rasterize_torch(
     All inputs share one dtype and device (float64 for gradcheck, float32 for fitting);
     ``depth_limit`` is [H,W] camera z. Returns premultiplied rgb without background.
     """
-    from ._numba_kernel import bin_tiles
+    from ._numba_binning import bin_tiles
 
     t0 = time.perf_counter()
     dtype, device = means.dtype, means.device

@@ -15,17 +15,20 @@ import math
 import threading
 import time
 from collections.abc import Mapping
+from concurrent.futures import ThreadPoolExecutor
 from contextlib import AbstractContextManager, nullcontext
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal, cast
 
 import numpy as np
 import numpy.typing as npt
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.mujoco_adapter import MujocoWorld, UnknownBodyError
-from drivetwin.worlds.scene import EGO_ID, Environment, Scene
+from drivetwin.worlds.scene import Environment, Scene
 
+from ._numba_post import blend_layers
+from ._numba_raster import composite_splats, project_splats
 from .appearance import (
     HEADLAMP_RGB,
     LAMP_RGB,
@@ -40,8 +43,18 @@ from .appearance import (
 from .appearance import world_points as _world_points
 from .camera import Camera
 from .mesh_pass import MeshImage, MeshPass
-from .rasterize import BackendName, RasterOutput, rasterize
-from .splats import SH_C0, Splats
+from .procedural import asset_splats, facade_splats
+from .rasterize import (
+    ALPHA_MIN,
+    INDEX_MIN_ALPHA,
+    BackendName,
+    RasterOutput,
+    available_backends,
+    check_splats,
+    rasterize,
+)
+from .splats import Splats
+from .viewpoints import chase_camera, default_camera
 
 __all__ = [
     "Composite",
@@ -55,23 +68,14 @@ __all__ = [
     "save_frame",
 ]  # fmt: skip
 
+F32 = npt.NDArray[np.float32]
 STREET_LIGHT = "street_light"
 # A pixel's depth is the splats' when they cover at least this much of it, else the mesh's.
 SPLAT_DEPTH_ALPHA = 0.5
 # Vehicle lamps sit this far up the body and this far in from its sides (fractions).
 HEADLAMP_HEIGHT, HEADLAMP_INSET = 0.4, 0.3
 HEADLAMP_PITCH = -0.12  # radians: dipped beams point a little down
-# Default overview: look at the main landmark from this far back and this high up.
-OVERVIEW_DISTANCE_M, OVERVIEW_HEIGHT_M, OVERVIEW_FOVY_DEG = 45.0, 22.0, 60.0
-OVERVIEW_LANDMARK = "main intersection"
-CHASE_BACK_M, CHASE_UP_M, CHASE_AHEAD_M = 8.0, 3.5, 10.0
 DEPTH_PNG_MAX_MM = 65_535  # 16-bit depth PNGs saturate at 65.5 m
-# Procedural splats: size (x sample spacing) and opacity that close gaps without blur.
-SPLAT_SIZE, SPLAT_OPACITY_LOGIT, SPLAT_TEXTURE = 0.6, 2.5, 0.06
-FACADE_OFFSET_M = 0.05  # facade splats float this far out, so the wall mesh does not hide them
-WINDOW_PITCH_M = (3.0, 3.5)  # window spacing along a wall and between floors
-WINDOW_FRACTION = (0.55, 0.45)  # share of each pitch that is glass
-WINDOW_RGB = (0.16, 0.2, 0.27)
 
 
 @dataclass
@@ -164,7 +168,9 @@ class HybridRenderer:
 
     Args:
         world: the MuJoCo world (its model/data are read each frame, so recompiles are fine).
-        background: splats in the world frame (a reconstructed scene), or None.
+        background: splats in the world frame (a reconstructed scene); "facades" (default)
+            for procedural facade splats on the scene's buildings (`facade_splats`, rebuilt
+            when the buildings change), the stand-in for a capture; None for no background.
         attachments: asset id -> splats in that asset's body frame; they follow the body and
             the body's own geoms are not drawn (they remain its collision proxy).
         lock: the simulation's lock when another thread steps the world.
@@ -178,7 +184,7 @@ class HybridRenderer:
         self,
         world: MujocoWorld,
         *,
-        background: Splats | None = None,
+        background: Splats | Literal["facades"] | None = "facades",
         attachments: Mapping[str, Splats] | None = None,
         lock: threading.Lock | AbstractContextManager[Any] | None = None,
         shadows: bool = False,
@@ -195,9 +201,15 @@ class HybridRenderer:
         self.backend: BackendName = backend
         self.seed = seed
         self.mesh_pass = MeshPass(shadows=shadows, antialias=antialias)
+        self._posing = _PosedSplats()
+        self._mesh_thread: ThreadPoolExecutor | None = None
 
     def close(self) -> None:
-        """Free the GL resources."""
+        """Free the GL resources and the mesh-pass thread."""
+        if self._mesh_thread is not None:
+            self._mesh_thread.submit(self.mesh_pass.close).result()
+            self._mesh_thread.shutdown()
+            self._mesh_thread = None
         self.mesh_pass.close()
 
     def render(self, camera: Camera, environment: Environment | None = None, *, time_s: float | None = None) -> Frame:
@@ -215,7 +227,12 @@ class HybridRenderer:
         return Frame(rgb=out, depth=comp.depth, timings=timings)
 
     def compose(self, camera: Camera, environment: Environment | None = None) -> Composite:
-        """Steps 1-4 of a frame (meshes, posed splats, depth test, blend), before weather."""
+        """Steps 1-4 of a frame (meshes, posed splats, depth test, blend), before weather.
+
+        With the numba backend the mesh pass draws on its own thread while the splats are
+        projected and depth-sorted (both release the GIL); binning and compositing, which
+        need the mesh depth, follow.
+        """
         t0 = time.perf_counter()
         world = self.world
         env = environment if environment is not None else world.scene.environment
@@ -226,166 +243,125 @@ class HybridRenderer:
             bodies = _existing_bodies(world, self.attachments)
             poses = {a: _body_transform(data.xpos[b], data.xmat[b]) for a, b in bodies.items()}
             lamps = lamps_of(world, look)
-        splats = self._posed_splats(poses)
+        splats = self._posing.update(self._background_splats(), self.attachments, poses)
         t1 = time.perf_counter()
         hook = light_hook(look, lamps, _point(camera.position))
         hidden = list(bodies.values())
-        mesh = self.mesh_pass.render(model, data, camera, lock=self.lock, hidden_bodies=hidden, scene_hook=hook)
-        t2 = time.perf_counter()
+        backend = self._resolved_backend()
+        timings: dict[str, float] = {"pose": 1e3 * (t1 - t0)}
         raster = None
-        if splats is not None and len(splats):
-            raster = rasterize(splats, camera, background=None, depth_limit=mesh.depth,
-                               backend=self.backend)  # fmt: skip
-        t3 = time.perf_counter()
-        layer = np.where(mesh.hit[..., None], mesh.rgb, sky_image(camera, look))
-        if raster is not None:
-            lit = raster.rgb * np.asarray(look.splat_gain, np.float32)
-            covered = raster.alpha > 1.0 / 255.0
-            if lamps and covered.any():
-                points = _world_points(np.where(covered, raster.depth, 0.0), camera)
-                lit += raster.rgb * lamp_irradiance(points, lamps, covered)
-            rgb = lit + raster.transmittance[..., None] * layer
-            depth = np.where(raster.alpha >= SPLAT_DEPTH_ALPHA, raster.depth, mesh.depth)
+        if splats is not None and backend == "numba":
+            if self._mesh_thread is None:
+                self._mesh_thread = ThreadPoolExecutor(1, thread_name_prefix="drivetwin-mesh")
+            mesh_job = self._mesh_thread.submit(self.mesh_pass.render, model, data, camera, lock=self.lock,
+                                                hidden_bodies=hidden, scene_hook=hook)  # fmt: skip
+            try:
+                projected = project_splats(splats, camera)
+            finally:
+                t_wait = time.perf_counter()
+                mesh = mesh_job.result()
+            timings["mesh_wait"] = 1e3 * (time.perf_counter() - t_wait)
+            raster = composite_splats(projected, camera, mesh.depth, INDEX_MIN_ALPHA, False)
         else:
-            rgb, depth = layer, mesh.depth
+            mesh = self.mesh_pass.render(model, data, camera, lock=self.lock, hidden_bodies=hidden, scene_hook=hook)
+            if splats is not None:
+                raster = rasterize(splats, camera, background=None, depth_limit=mesh.depth, backend=backend)
+        t3 = time.perf_counter()
+        rgb, depth, layer = self._blend(camera, look, lamps, mesh, raster)
         t4 = time.perf_counter()
-        timings = {"pose": 1e3 * (t1 - t0), **mesh.timings}
+        timings.update(mesh.timings)
         if raster is not None:
             timings.update({f"splat_{k}": v for k, v in raster.timings.items()})
-        timings.update({"splats": 1e3 * (t3 - t2), "blend": 1e3 * (t4 - t3)})
-        return Composite(rgb=rgb.astype(np.float32), depth=depth.astype(np.float32), mesh=mesh,
-                         raster=raster, layer=layer.astype(np.float32), look=look, lamps=lamps,
-                         sim_time=sim_time, timings=timings)  # fmt: skip
+        timings.update({"splats_and_mesh": 1e3 * (t3 - t1), "blend": 1e3 * (t4 - t3)})
+        return Composite(rgb=rgb, depth=depth, mesh=mesh, raster=raster, layer=layer, look=look,
+                         lamps=lamps, sim_time=sim_time, timings=timings)  # fmt: skip
 
-    def _posed_splats(self, poses: Mapping[str, npt.NDArray[np.float64]]) -> Splats | None:
-        parts = [self.attachments[a].transformed(pose) for a, pose in poses.items()]
-        if self.background is not None:
-            parts.insert(0, self.background)
-        if not parts:
-            return None
-        return parts[0] if len(parts) == 1 else Splats.concat(parts)
+    def _resolved_backend(self) -> BackendName:
+        if self.backend != "auto":
+            return self.backend
+        return cast(BackendName, available_backends()[0])
 
+    def _background_splats(self) -> Splats | None:
+        if self.background == "facades":
+            return _facades_of(self.world.scene)
+        return self.background
 
-# Procedural splats -------------------------------------------------------------------------
-def _splats(points: npt.NDArray[np.float64], rgb: npt.NDArray[np.float64], spacing: float,
-            rng: np.random.Generator) -> Splats:  # fmt: skip
-    """Round splats at ``points`` with ``rgb`` (a little per-splat variation, like texture)."""
-    n = len(points)
-    colour = np.clip(rgb * rng.uniform(1 - SPLAT_TEXTURE, 1 + SPLAT_TEXTURE, (n, 1)), 0.0, 1.0)
-    f32 = np.float32
-    sh = ((colour - 0.5) / SH_C0)[:, None, :].astype(f32)
-    return Splats(means=points.astype(f32), quats=np.tile(np.array([1, 0, 0, 0], f32), (n, 1)),
-                  log_scales=np.full((n, 3), math.log(SPLAT_SIZE * spacing), f32),
-                  opacity_logits=np.full(n, SPLAT_OPACITY_LOGIT, f32), sh=sh)  # fmt: skip
-
-
-def facade_splats(scene: Scene, *, spacing_m: float = 0.35, seed: int = 0) -> Splats:
-    """A splat background for a Scene without a capture: every building's walls as splats
-    with rows of windows, floating just outside the wall mesh (which stays the collider)."""
-    rng = np.random.default_rng(seed)
-    points, colours = [], []
-    for building in scene.buildings:
-        ring = np.asarray(building.footprint, dtype=np.float64)
-        x, y = ring[:, 0], ring[:, 1]
-        ccw = float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)) > 0
-        for a, b in zip(ring, np.roll(ring, -1, axis=0), strict=True):
-            length = float(np.linalg.norm(b - a))
-            columns, rows = int(length / spacing_m), int(building.height / spacing_m)
-            if columns == 0 or rows == 0:
-                continue
-            # A jittered grid: even cover without the holes and clumps of uniform sampling.
-            grid = np.stack(np.meshgrid(np.arange(columns), np.arange(rows)), -1).reshape(-1, 2)
-            cells = (grid + rng.uniform(0.25, 0.75, grid.shape)) * spacing_m
-            along, up = cells[:, 0], cells[:, 1]
-            direction = (b - a) / length
-            normal = np.array([direction[1], -direction[0]]) * (1.0 if ccw else -1.0)
-            xy = a + along[:, None] * direction + FACADE_OFFSET_M * normal
-            points.append(np.column_stack([xy, up]))
-            window = (
-                ((along % WINDOW_PITCH_M[0]) < WINDOW_PITCH_M[0] * WINDOW_FRACTION[0])
-                & ((up % WINDOW_PITCH_M[1]) > WINDOW_PITCH_M[1] * (1 - WINDOW_FRACTION[1]))
-                & (up > WINDOW_PITCH_M[1])
-            )
-            wall = np.asarray(building.rgba[:3], np.float64)
-            colours.append(np.where(window[:, None], WINDOW_RGB, wall))
-    if not points:
-        return Splats.empty()
-    return _splats(np.concatenate(points), np.concatenate(colours), spacing_m, rng)
+    @staticmethod
+    def _blend(camera: Camera, look: Look, lamps: list[Lamp], mesh: MeshImage,
+               raster: RasterOutput | None) -> tuple[F32, F32, F32]:  # fmt: skip
+        """rgb, depth and the layer under the splats (mesh colour, else sky)."""
+        sky = sky_image(camera, look)
+        if raster is None:
+            layer = np.where(mesh.hit[..., None], mesh.rgb, sky).astype(np.float32)
+            return layer.copy(), mesh.depth, layer
+        light = np.zeros((1, 1, 3), np.float32)  # not read unless lamps light the splats
+        covered = raster.alpha > ALPHA_MIN
+        use_light = bool(lamps) and bool(covered.any())
+        if use_light:
+            points = _world_points(np.where(covered, raster.depth, 0.0), camera)
+            light = lamp_irradiance(points, lamps, covered)
+        h, w = raster.alpha.shape
+        rgb, depth, layer = (
+            np.empty((h, w, 3), np.float32),
+            np.empty((h, w), np.float32),
+            np.empty((h, w, 3), np.float32),
+        )
+        blend_layers(raster.rgb, raster.alpha, raster.depth, light, use_light, mesh.rgb, mesh.hit, mesh.depth,
+                     sky, np.asarray(look.splat_gain, np.float32), SPLAT_DEPTH_ALPHA, rgb, depth, layer)  # fmt: skip
+        return rgb, depth, layer
 
 
-def asset_splats(category_name: str, *, scale: float = 1.0, spacing_m: float = 0.08,
-                 seed: int = 0) -> Splats:  # fmt: skip
-    """Body-frame splats covering a catalog category's parts (for `attachments`), so an
-    asset can be drawn as splats while its MuJoCo geoms stay its collision proxy."""
-    # Reconstructed asset package: its own fitted splats (drivetwin.worlds.reconstruct.package).
-    package = category(category_name).package
-    if package is not None:
-        from drivetwin.worlds.reconstruct.package import package_splats
+class _PosedSplats:
+    """The splats of one frame: background plus attachments at their bodies' poses.
 
-        return package_splats(package, scale=scale)
-    rng = np.random.default_rng(seed)
-    points, colours = [], []
-    for part in category(category_name).parts:
-        size = np.asarray(part.size, np.float64) * scale
-        if part.shape == "box":
-            area = 8 * (size[0] * size[1] + size[1] * size[2] + size[0] * size[2])
-            count = max(8, int(area / spacing_m**2))
-            local = rng.uniform(-1, 1, (count, 3))
-            face = rng.choice(3, count, p=_face_weights(size))
-            local[np.arange(count), face] = np.sign(local[np.arange(count), face])
-            local *= size
-        elif part.shape == "cylinder":
-            radius, half = size[0], size[1]
-            count = max(8, int((4 * math.pi * radius * half + 2 * math.pi * radius**2) / spacing_m**2))
-            angle = rng.uniform(0, 2 * math.pi, count)
-            on_side = rng.uniform(0, 1, count) < half / (half + radius / 2)
-            r = np.where(on_side, radius, radius * np.sqrt(rng.uniform(0, 1, count)))
-            z = np.where(on_side, rng.uniform(-half, half, count), half * rng.choice([-1, 1], count))
-            local = np.column_stack([r * np.cos(angle), r * np.sin(angle), z])
-            local = local[:, list(_CYLINDER_AXES[part.axis])]
-        else:
-            count = max(8, int(4 * math.pi * size[0] ** 2 / spacing_m**2))
-            direction = rng.normal(size=(count, 3))
-            local = size[0] * direction / np.linalg.norm(direction, axis=1, keepdims=True)
-        points.append(local + np.asarray(part.pos) * scale)
-        colours.append(np.tile(np.asarray(part.rgba[:3], np.float64), (count, 1)))
-    return _splats(np.concatenate(points), np.concatenate(colours), spacing_m, rng)
+    An attachment is transformed again only when its body moved, and the joined set is
+    reused while nothing changed (most bodies stand still in most frames).
+    """
 
+    def __init__(self) -> None:
+        self._posed: dict[str, tuple[bytes, Splats]] = {}
+        self._key: tuple[object, ...] | None = None
+        self._joined: Splats | None = None
 
-def _face_weights(half: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
-    """Chance that a box-surface sample lies on the faces normal to x, y, z (by area)."""
-    areas = np.array([half[1] * half[2], half[0] * half[2], half[0] * half[1]])
-    return np.asarray(areas / areas.sum(), dtype=np.float64)
+    def update(self, background: Splats | None, attachments: Mapping[str, Splats],
+               poses: Mapping[str, npt.NDArray[np.float64]]) -> Splats | None:  # fmt: skip
+        """The joined splats (None when there are none); each part checked finite once."""
+        parts = []
+        for asset_id, pose in poses.items():
+            pose_key = pose.tobytes()
+            cached = self._posed.get(asset_id)
+            if cached is None or cached[0] != pose_key or cached[1] is not attachments[asset_id]:
+                local = attachments[asset_id]
+                check_splats(local)
+                cached = (pose_key, local.transformed(pose))
+                self._posed[asset_id] = cached
+            parts.append((asset_id, cached))
+        for gone in set(self._posed) - set(poses):
+            del self._posed[gone]
+        key = (id(background), *((a, c[0], id(c[1])) for a, c in parts))
+        if key != self._key:
+            joined = [c[1] for _, c in parts if len(c[1])]
+            if background is not None and len(background):
+                check_splats(background)
+                joined.insert(0, background)
+            self._joined = None if not joined else joined[0] if len(joined) == 1 else Splats.concat(joined)
+            self._key = key
+        return self._joined
 
 
-# A z-axis cylinder's (x, y, z) columns reordered so its axis lies along x, y or z.
-_CYLINDER_AXES = {"z": (0, 1, 2), "x": (2, 0, 1), "y": (0, 2, 1)}
+_facade_cache: dict[int, tuple[object, Splats]] = {}
 
 
-# Cameras ------------------------------------------------------------------------------------
-def default_camera(scene: Scene, width: int = 640, height: int = 360) -> Camera:
-    """An elevated overview of the campus centre (its main landmark, else the bounds' centre)."""
-    landmark = scene.landmark(OVERVIEW_LANDMARK)
-    cx, cy = landmark.position if landmark is not None else scene.bounds.centre
-    # Look from the south-east so the sun (south by day) lights the faces we see.
-    back = OVERVIEW_DISTANCE_M / math.sqrt(2)
-    eye = (cx + back, cy - back, OVERVIEW_HEIGHT_M)
-    return Camera.from_look_at(eye, (cx, cy, 0.0), width=width, height=height,
-                               fovy_deg=OVERVIEW_FOVY_DEG)  # fmt: skip
-
-
-def chase_camera(world: MujocoWorld, asset_id: str = EGO_ID, *, width: int = 640, height: int = 360) -> Camera:
-    """A camera behind and above an asset's live pose, looking past it along its heading."""
-    pose = world.body_pose(asset_id)
-    heading = (math.cos(pose.yaw), math.sin(pose.yaw))
-    eye = (pose.x - CHASE_BACK_M * heading[0], pose.y - CHASE_BACK_M * heading[1],
-           pose.z + CHASE_UP_M)  # fmt: skip
-    target = (
-        pose.x + CHASE_AHEAD_M * heading[0],
-        pose.y + CHASE_AHEAD_M * heading[1],
-        pose.z + 0.5,
-    )
-    return Camera.from_look_at(eye, target, width=width, height=height, fovy_deg=OVERVIEW_FOVY_DEG)
+def _facades_of(scene: Scene) -> Splats | None:
+    """Facade splats of ``scene``'s buildings, made once per set of buildings."""
+    buildings = tuple(scene.buildings)
+    cached = _facade_cache.get(id(scene))
+    if cached is None or cached[0] != buildings:
+        cached = (buildings, facade_splats(scene))
+        _facade_cache.clear()  # one live scene at a time; do not keep old ones alive
+        _facade_cache[id(scene)] = cached
+    splats = cached[1]
+    return splats if len(splats) else None
 
 
 # Saving -------------------------------------------------------------------------------------
