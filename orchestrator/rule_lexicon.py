@@ -7,7 +7,7 @@ test the wipers" means rain), and nouns for things the catalog names differently
 
 from __future__ import annotations
 
-SEARCH_STARTS = ("where", "find", "list", "show me", "how many", "how much", "which", "what", "what's",
+SEARCH_STARTS = ("where", "remind me", "how many", "how much", "find", "list", "show me", "how many", "how much", "which", "what", "what's",
                  "is there", "are there", "locate", "search", "tell me", "i'd like to know",
                  "i would like to know", "do we have", "do you see", "any", "count", "give me",
                  "can you tell", "could you tell", "can you show")
@@ -65,7 +65,8 @@ LIGHTS_WORDS = ("street lights", "streetlights", "street lamps", "headlights", "
                 "light up", "lights", "lamps", "lit")
 ARRANGE_WORDS = ("around", "surround", "ring", "circle of", "encircle", "mark", "cordon", "enclose",
                  "line of", "row of", "in a line", "in a row", "in line", "in row", "grid", "along the",
-                 "in circle", "in a circle", "fence off", "cordon off", "block off", "rows of")
+                 "in circle", "in a circle", "fence off", "cordon off", "block off", "rows of",
+                 "arrange", "arranged", "lay out", "laid out", "across the", "across", "like a grid", "formation")
 # Saying these about a road means: put barriers across it.
 BLOCK_WORDS = ("block the road", "block the street", "close the road", "close the street",
                "block the lane", "close the lane", "shut the road", "road closed", "closed for",
@@ -93,8 +94,8 @@ CONCEPTS: dict[str, tuple[str, ...]] = {
     "construction_sign": ("warn", "warned", "warning", "warning sign", "heads-up"),
     "road_barrier": ("fence off", "cordon off", "barriers", "block the road", "block off"),
     "trash_bin": ("rubbish", "litter", "garbage"),
+    "passenger_car": ("traffic",),
     "pedestrian": ("crowd", "passers-by", "someone", "somebody", "kid", "child", "guy"),
-    "street_light": ("light up",),
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.
 COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6,

@@ -78,7 +78,8 @@ def location(r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: li
         return {"relation": "absolute", "x": coords[0], "y": coords[1]}
     if r.has(_CENTRE) or any(c in r.low for c in _CENTRE):
         return {"relation": "scene_centre"}
-    if r.lane and (r.has(("lane", "side", "road", "street", "drive", "driving")) or not r.landmark):
+    # A road named only as context ("across Main Street at the east gate") yields to the place.
+    if r.lane and not (r.lane_guessed and r.landmark) and (r.has(("lane", "side", "road", "street", "drive", "driving")) or not r.landmark):
         if r.lane_guessed:
             notes.guess(f"which lane of the road ({r.lane})")
         return {"relation": "in_lane", "target": r.landmark if r.landmark and r.has(("outside", "front of", "near", "at")) else r.lane}

@@ -83,12 +83,12 @@ class RulePlanner:
         for clause, asked in clauses:
             reading = read(clause, scene)
             clause_calls = _plan_clause(reading, asked, scene, context.memory, notes)
+            if reading.landmark:
+                notes.place = {"relation": "at", "target": reading.landmark}
             if clause_calls is None:
                 skipped.append(clause)
                 continue
             calls.extend(clause_calls)
-            if reading.landmark:
-                notes.place = {"relation": "at", "target": reading.landmark}
             unknown += _unknown_words(clause, scene)
         if not calls and skipped:
             raise PlanningError(
@@ -117,7 +117,8 @@ def _is_question(r: Reading, asked: bool) -> bool:
     starts = any(re.match(rf"{re.escape(w)}\b", words) for w in lx.SEARCH_STARTS)
     if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", words):
         return False
-    return starts or asked or bool(re.search(r", (where|which|how many|what)\b", r.low))
+    within = re.search(r"(\s,\s*(where|which|what)|how many|how much)\b", r.low)
+    return starts or asked or bool(within)
 
 
 def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
@@ -137,24 +138,28 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             return env
     if r.has(lx.BLOCK_WORDS) and not r.ids:
         return [_block(r, scene, memory, notes)]
-    if not r.has(("add", "create", "spawn", "place a", "put a")):
+    strict_add = r.has(_STRICT_ADD)
+    mention = r.mentions[0] if r.mentions else None
+    # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
+    present = mention is not None and scene.count(mention.category) >= (2 if mention.plural else 1)
+    fresh = mention is not None and is_new(r, mention, strict_add, present)
+    if not fresh and not r.has(("add", "create", "spawn", "place a", "put a")):
         colour = recolour(r, scene, memory, notes)
         if colour is not None:
             return [colour]
-    strict_add = r.has(_STRICT_ADD)
-    mention = r.mentions[0] if r.mentions else None
-    fresh = mention is not None and is_new(r, mention, strict_add, scene.count(mention.category) > 0)
     if not fresh:
         existing = edit_existing(r, scene, memory, notes)
         if existing is not None:
             return existing
     if mention is None:
+        if r.has(lx.GENERIC_THINGS):
+            return environment(r) or None  # "we want to put something there": an intention
         if r.has(("add", "create", "spawn", "place", "put", "insert")) and not r.has(("it", "them", "there")):
             noun = next((w for w in reversed(ph.tokens(r.masked)) if w.isalpha() and w not in lx.GRAMMAR), "it")
             raise PlanningError(f"unknown asset {noun!r}; nearest: {', '.join(nearest_categories(noun))}")
         env = environment(r)
         return env or None
-    if (r.has(lx.ARRANGE_WORDS) and not behaviour_kind(r)) or r.has(("to mark",)):
+    if (r.has(lx.ARRANGE_WORDS) and not behaviour_kind(r, catalog()[mention.category].motion)) or r.has(("to mark",)):
         return [_arrange(r, scene, memory, notes)]
     return _add(r, scene, memory, notes)
 
@@ -229,7 +234,7 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     count = find_count(r, mentions[0])
     if count:
         args["count"] = count
-    if r.has(("line", "row", "rows")):
+    if r.has(("line", "row", "rows", "across")):
         args["shape"] = "line"
     elif r.has(("grid",)):
         args["shape"] = "grid"

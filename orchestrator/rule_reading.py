@@ -157,7 +157,8 @@ def read(text: str, scene: Scene) -> Reading:
     place = find_place(scene, low)
     if place is not None:
         spans.append(place[1:])
-    lane = find_lane(scene, low)
+    # Lanes are read with the place blanked: "the east gate" says nothing about eastbound.
+    lane = find_lane(scene, _blank(low, *place[1:]) if place is not None else low)
     if lane is not None and lane[2] > lane[1]:
         spans.append((lane[1], lane[2]))
     ego = _ego_span(low)
@@ -165,15 +166,16 @@ def read(text: str, scene: Scene) -> Reading:
         spans.append(ego)
     for start, end in spans:
         masked = _blank(masked, start, end)
-    mentions = [m for m in ph.find_categories(low) if not any(m.start < e and s < m.end for s, e in spans)]
+    mentions = [m for m in ph.find_categories(text) if not any(m.start < e and s < m.end for s, e in spans)]
     # "stop" is a verb before a noun phrase or at the start ("stop the ego"), a sign otherwise.
     mentions = [m for m in mentions if not (low[m.start : m.end] == "stop"
                                             and (m.start <= 1 or re.match(r"\s+(the|our|it|that|ego)\b", low[m.end :])))]
     mentions += _concepts(masked, mentions)
     mentions.sort(key=lambda m: m.start)
     # "somewhere for students to sit": the students are who it is for, not what is asked.
-    if len(mentions) > 1:
-        mentions = [m for m in mentions if not re.search(r"\bfor\s+$", low[: m.start])] or mentions
+    if len(mentions) > 1 or place is not None:
+        kept = [m for m in mentions if not re.search(r"\bfor\s+(the\s+|a\s+|an\s+)?$", low[: m.start])]
+        mentions = kept if kept or place is not None else mentions
     ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in ph.tokens(low)]
     numbered, mentions = _numbered(scene, low, mentions)
     return Reading(

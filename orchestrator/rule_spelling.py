@@ -21,6 +21,8 @@ from drivetwin.worlds.scene import Scene
 # Similarity (difflib ratio) a repair needs: "truk"/"truck" 0.89, "lite"/"light" 0.8, while
 # "drivers"/"drive" (a real word, 0.83) is protected by the inflection check, not the cutoff.
 REPAIR_CUTOFF = 0.8
+# Words this short need SHORT_WORD_CUTOFF: one letter changes a lot of a short word.
+SHORT_WORD_LEN, SHORT_WORD_CUTOFF = 4, 0.88
 # Shorter words are too easy to confuse ("bus"/"bush"); only whole-word lists fix them.
 MIN_REPAIR_LEN = 4
 _WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
@@ -53,7 +55,12 @@ def _words_of(phrases: object) -> set[str]:
 
 @cache
 def _static_vocabulary() -> frozenset[str]:
-    words = set(lx.GRAMMAR) | _words_of(COLOURS) | _words_of(lx.COLOUR_OF)
+    return _domain_words() | lx.GRAMMAR
+
+
+@cache
+def _domain_words() -> frozenset[str]:
+    words = _words_of(COLOURS) | _words_of(lx.COLOUR_OF)
     for table in (lx.SEARCH_STARTS, lx.PROPERTY_WORDS, lx.REMOVE_WORDS, lx.GONE_WORDS, lx.FEWER_WORDS,
                   lx.ADD_WORDS, lx.MOVE_WORDS, lx.REVERSE_WORDS, lx.TURN_WORDS, lx.STOP_WORDS,
                   lx.HEAVY, lx.LIGHT, lx.LIGHTS_WORDS, lx.ARRANGE_WORDS, lx.BLOCK_WORDS,
@@ -83,7 +90,8 @@ def vocabulary(scene: Scene) -> frozenset[str]:
 @cache
 def _targets(vocab: frozenset[str]) -> tuple[str, ...]:
     # Common words are protected from repair but rarely its result: "tank" is not "thanks".
-    return tuple(sorted((vocab - lx.GRAMMAR) | set(_REPAIRABLE_GRAMMAR)))
+    domain = _domain_words() | (vocab - _static_vocabulary())
+    return tuple(sorted(domain | set(_REPAIRABLE_GRAMMAR)))
 
 
 def is_known(word: str, vocab: frozenset[str]) -> bool:
@@ -128,7 +136,9 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
         close = difflib.get_close_matches(low[:-1], targets, n=1, cutoff=REPAIR_CUTOFF)
         if close:
             return close[0] + ("" if close[0].endswith("s") else "s")
-    close = difflib.get_close_matches(low, targets, n=1, cutoff=REPAIR_CUTOFF)
+    # A four-letter word needs a closer match: "truk" is "truck", "busy" is not "bus".
+    cutoff = SHORT_WORD_CUTOFF if len(low) <= SHORT_WORD_LEN else REPAIR_CUTOFF
+    close = difflib.get_close_matches(low, targets, n=1, cutoff=cutoff)
     return close[0] if close else None
 
 
