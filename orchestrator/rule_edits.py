@@ -151,8 +151,10 @@ def behaviour_kind(r: Reading, motion: str | None = None) -> str | None:
     for kind in ("jaywalk", "circle", "cross_road", "drive_lane", "parked"):
         if not r.has(lx.BEHAVIOUR_WORDS[kind]):
             continue
-        if motion is not None and ((kind in ("jaywalk", "cross_road") and motion != "walker")
-                                   or (kind in ("circle", "drive_lane") and motion not in ("vehicle",))):
+        if motion is not None and (
+            (kind in ("jaywalk", "cross_road") and motion != "walker")
+            or (kind in ("circle", "drive_lane") and motion not in ("vehicle",))
+        ):
             continue
         return kind
     return None
@@ -165,7 +167,9 @@ def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
     if speed:
         spec["speed"] = speed
     if kind == "circle":
-        m = re.search(r"radius (?:of )?(\d+(?:\.\d+)?)", r.low) or re.search(r"(\d+(?:\.\d+)?)\s*(?:m|metre)s?\s*radius", r.low)
+        m = re.search(r"radius (?:of )?(\d+(?:\.\d+)?)", r.low) or re.search(
+            r"(\d+(?:\.\d+)?)\s*(?:m|metre)s?\s*radius", r.low
+        )
         if m:
             spec["radius"] = float(m.group(1))
         if r.has(("clockwise",)) and not r.has(("anticlockwise", "counterclockwise", "counter-clockwise")):
@@ -192,8 +196,10 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if r.has(lx.STOP_WORDS) and motion in ("vehicle", "walker") and not r.has(("stop sign",)):
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
     deg = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:deg|°)", r.low)
-    if r.has(lx.TURN_WORDS) and (deg or not r.has(("drive", "driving", "walk", "circle", "circles"))) and (
-        deg or r.has(("turn", "rotate", "spin", "flip", "wrong way", "other way", "faces", "face"))
+    if (
+        r.has(lx.TURN_WORDS)
+        and (deg or not r.has(("drive", "driving", "walk", "circle", "circles")))
+        and (deg or r.has(("turn", "rotate", "spin", "flip", "wrong way", "other way", "faces", "face")))
     ):
         if deg:
             angle = float(deg.group(1))

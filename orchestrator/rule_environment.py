@@ -26,7 +26,11 @@ def weather(r: Reading) -> ToolCall | None:
     """The weather a clause asks for, with its intensity, or None."""
     for kind in _WEATHER_ORDER:
         if r.has(lx.WEATHER_WORDS[kind]):
-            if kind == "clear" and r.has(("clear the", "clear away", "clear out")) and not r.has(("weather", "sky", "skies")):
+            if (
+                kind == "clear"
+                and r.has(("clear the", "clear away", "clear out"))
+                and not r.has(("weather", "sky", "skies"))
+            ):
                 continue  # "clear the roadworks away" is a removal
             args: dict[str, Any] = {"kind": kind}
             if kind != "clear":
@@ -58,7 +62,7 @@ def lights(r: Reading) -> ToolCall | None:
     """Street or vehicle lights switched on or off, or None."""
     if not r.has(lx.LIGHTS_WORDS) or r.has(("traffic light", "traffic lights")):
         return None
-    if r.has(("light", "lights")) and not r.has(_LAMP_CONTEXT + ("on", "off")):
+    if r.has(("light", "lights")) and not r.has((*_LAMP_CONTEXT, "on", "off")):
         return None
     state = "off" if r.has(("off", "switch off", "turn off", "no lights", "dark streets")) else "on"
     key = "vehicle_lights" if r.has(("headlights", "vehicle lights", "car lights")) else "street_lights"

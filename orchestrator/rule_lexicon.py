@@ -7,6 +7,9 @@ test the wipers" means rain), and nouns for things the catalog names differently
 
 from __future__ import annotations
 
+# Word tables read best as paragraphs of phrases, not one phrase a line.
+# fmt: off
+
 SEARCH_STARTS = ("where", "remind me", "how many", "how much", "find", "list", "show me", "how many", "how much", "which", "what", "what's",
                  "is there", "are there", "locate", "search", "tell me", "i'd like to know",
                  "i would like to know", "do we have", "do you see", "any", "count", "give me",
@@ -114,7 +117,7 @@ WORKS_WORDS = ("roadworks", "road works", "roadwork", "the works", "maintenance"
 FILLER_STARTS = ("before", "after", "once", "when", "while", "since", "because", "as soon as")
 PROMPT_INJECTION = ("ignore", "pretend", "disregard", "jailbreak", "system prompt", "bypass")
 # Common words that carry no slot: knowing them is not "understanding less".
-GRAMMAR = set(
+GRAMMAR = frozenset(
     """the and that this those these there here also with into from for its it's all any every
     please pls plz can you could would want need let's let front behind left right next beside
     near nearby centre middle scene map world campus sidewalk pavement lane road street maintenance
@@ -129,5 +132,6 @@ GRAMMAR = set(
     put set give want like into via per each both either other same spot place area bay
     outside inside between towards toward closer close far next along through west east north
     south westbound eastbound northbound southbound westwards eastwards northwards southwards
-    coloured colored painted paint recolour just really very quite rather too so than test""".split()
+    coloured colored painted paint recolour just really very quite rather too so than test""".split()  # noqa: SIM905 - a paragraph of words
 )
+# fmt: on

@@ -17,15 +17,45 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.rule_reading import Reading
 from drivetwin.worlds.scene import Scene
 
-RELATIONS = ((("in front of", "ahead of", "front of"), "in_front_of"), (("behind",), "behind"),
-             (("left of", "to the left"), "left_of"), (("right of", "to the right"), "right_of"),
-             (("next to", "beside", "alongside", "by the", "close to", "closer to"), "next_to"))
+RELATIONS = (
+    (("in front of", "ahead of", "front of"), "in_front_of"),
+    (("behind",), "behind"),
+    (("left of", "to the left"), "left_of"),
+    (("right of", "to the right"), "right_of"),
+    (("next to", "beside", "alongside", "by the", "close to", "closer to"), "next_to"),
+)
 # Words that say a place was meant; when none resolves, the rules guessed the place.
-PLACE_WORDS = ("near", "next to", "beside", "by", "at", "in front of", "behind", "outside", "around",
-               "close to", "closer to", "over by", "on", "in", "to the")
-_CENTRE = ("centre of the scene", "centre of the map", "scene centre", "middle of the scene",
-           "centre of the world", "middle of the map", "centre of campus", "in the centre",
-           "in the middle", "centre of the campus", "centre of scene", "middle of scene")
+PLACE_WORDS = (
+    "near",
+    "next to",
+    "beside",
+    "by",
+    "at",
+    "in front of",
+    "behind",
+    "outside",
+    "around",
+    "close to",
+    "closer to",
+    "over by",
+    "on",
+    "in",
+    "to the",
+)
+_CENTRE = (
+    "centre of the scene",
+    "centre of the map",
+    "scene centre",
+    "middle of the scene",
+    "centre of the world",
+    "middle of the map",
+    "centre of campus",
+    "in the centre",
+    "in the middle",
+    "centre of the campus",
+    "centre of scene",
+    "middle of scene",
+)
 
 
 @dataclass
@@ -70,7 +100,9 @@ def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str |
     return None
 
 
-def location(r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: list[str] | None = None) -> dict[str, Any] | None:
+def location(
+    r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: list[str] | None = None
+) -> dict[str, Any] | None:
     """The Location a clause describes, or None when it names no place."""
     exclude = exclude or []
     coords = ph.find_coordinates(r.text)
@@ -79,10 +111,17 @@ def location(r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: li
     if r.has(_CENTRE) or any(c in r.low for c in _CENTRE):
         return {"relation": "scene_centre"}
     # A road named only as context ("across Main Street at the east gate") yields to the place.
-    if r.lane and not (r.lane_guessed and r.landmark) and (r.has(("lane", "side", "road", "street", "drive", "driving")) or not r.landmark):
+    if (
+        r.lane
+        and not (r.lane_guessed and r.landmark)
+        and (r.has(("lane", "side", "road", "street", "drive", "driving")) or not r.landmark)
+    ):
         if r.lane_guessed:
             notes.guess(f"which lane of the road ({r.lane})")
-        return {"relation": "in_lane", "target": r.landmark if r.landmark and r.has(("outside", "front of", "near", "at")) else r.lane}
+        return {
+            "relation": "in_lane",
+            "target": r.landmark if r.landmark and r.has(("outside", "front of", "near", "at")) else r.lane,
+        }
     target: str | None = _asset_after_relation(r, scene, exclude)
     ids = [i for i in r.ids if i not in exclude]
     if target is None and r.landmark:

@@ -41,11 +41,59 @@ MIN_CONFIDENCE = 0.05
 SEARCH_NEAR_M = 20.0
 
 _SPLIT = re.compile(r"([.;:!?\n]+|,?\s+(?:and then|then|and also|after that)\s+)")
-_VERBS = ("add", "make", "put", "place", "remove", "delete", "set", "turn", "move", "create", "change",
-          "paint", "spawn", "switch", "arrange", "surround", "drive", "park", "have", "light", "lose",
-          "get", "take", "clear", "bring", "block", "close", "stop", "reverse", "shift", "relocate")
-_STRICT_ADD = ("add", "create", "spawn", "insert", "install", "plant", "build", "deploy", "new", "another",
-               "more", "set up", "i want", "i need", "we need", "we want", "there should be", "give me")
+_VERBS = (
+    "add",
+    "make",
+    "put",
+    "place",
+    "remove",
+    "delete",
+    "set",
+    "turn",
+    "move",
+    "create",
+    "change",
+    "paint",
+    "spawn",
+    "switch",
+    "arrange",
+    "surround",
+    "drive",
+    "park",
+    "have",
+    "light",
+    "lose",
+    "get",
+    "take",
+    "clear",
+    "bring",
+    "block",
+    "close",
+    "stop",
+    "reverse",
+    "shift",
+    "relocate",
+)
+_STRICT_ADD = (
+    "add",
+    "create",
+    "spawn",
+    "insert",
+    "install",
+    "plant",
+    "build",
+    "deploy",
+    "new",
+    "another",
+    "more",
+    "set up",
+    "i want",
+    "i need",
+    "we need",
+    "we want",
+    "there should be",
+    "give me",
+)
 
 
 def _clauses(prompt: str) -> list[tuple[str, bool]]:
@@ -99,10 +147,19 @@ class RulePlanner:
             notes.guess(f"ignored {clause!r}")
         confidence = FULL_CONFIDENCE - UNKNOWN_WORD_PENALTY * len(unknown) - GUESS_PENALTY * len(notes.guesses)
         why = "; ".join([*notes.guesses, *(f"unknown word {w!r}" for w in unknown)]) or "understood every word"
-        step = TraceStep(level="rules", input=prompt, output="; ".join(str(c) for c in calls) + f" ({why})",
-                         seconds=time.perf_counter() - started)
-        return Plan(calls=calls, planner=self.name, confidence=max(MIN_CONFIDENCE, confidence),
-                    prompt_version=PROMPT_VERSION, trace=[step])
+        step = TraceStep(
+            level="rules",
+            input=prompt,
+            output="; ".join(str(c) for c in calls) + f" ({why})",
+            seconds=time.perf_counter() - started,
+        )
+        return Plan(
+            calls=calls,
+            planner=self.name,
+            confidence=max(MIN_CONFIDENCE, confidence),
+            prompt_version=PROMPT_VERSION,
+            trace=[step],
+        )
 
 
 def _unknown_words(clause: str, scene: Scene) -> list[str]:
@@ -123,7 +180,9 @@ def _is_question(r: Reading, asked: bool) -> bool:
 
 def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     if r.has(lx.PROMPT_INJECTION) and not (r.mentions or r.ego or r.ids):
-        raise PlanningError(f"{r.text!r} is not a scene edit; the world's rules always apply and cannot be switched off")
+        raise PlanningError(
+            f"{r.text!r} is not a scene edit; the world's rules always apply and cannot be switched off"
+        )
     if re.match(rf"\s*({'|'.join(lx.FILLER_STARTS)})\b", r.low) and not r.mentions and not r.ids:
         return None  # "before I add anything": a circumstance, not a request
     if _is_question(r, asked):
@@ -132,7 +191,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         removed = remove(r, scene, memory, notes)
         if removed is not None:
             return removed
-    if not r.mentions and not r.ids and not r.ego or r.has(("weather", "time of day")):
+    if (not r.mentions and not r.ids and not r.ego) or r.has(("weather", "time of day")):
         env = environment(r)
         if env:
             return env
@@ -166,8 +225,12 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
 
 def _search(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall]:
     if r.has(lx.PROPERTY_WORDS) and (r.mentions or r.ids or r.ego):
-        args = {"asset": (r.ids or ["ego"])[0]} if (r.ids or (r.ego and not r.mentions)) else {"category": r.mentions[0].category}
-        return [ToolCall(tool="asset_properties", args=args)]
+        what = (
+            {"asset": (r.ids or ["ego"])[0]}
+            if (r.ids or (r.ego and not r.mentions))
+            else {"category": r.mentions[0].category}
+        )
+        return [ToolCall(tool="asset_properties", args=what)]
     if r.has(("lane", "lanes")):
         near = r.landmark or (r.ids[0] if r.ids else None)
         return [ToolCall(tool="find_lanes", args={"near": near} if near else {})]
@@ -180,8 +243,11 @@ def _search(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall]:
             if r.has(("near", "around", "at", "by", "close to", "next to")):
                 args["within"] = SEARCH_NEAR_M
         return [ToolCall(tool="find_assets", args=args)]
-    if r.landmark and (r.has(lx.GENERIC_THINGS) or r.has(("around", "near", "standing", "at", "close to", "by"))) \
-            and not r.has(("where is", "where's", "where it", "where exactly", "located")):
+    if (
+        r.landmark
+        and (r.has(lx.GENERIC_THINGS) or r.has(("around", "near", "standing", "at", "close to", "by")))
+        and not r.has(("where is", "where's", "where it", "where exactly", "located"))
+    ):
         return [ToolCall(tool="find_assets", args={"near": r.landmark, "within": SEARCH_NEAR_M})]
     if r.landmark:
         return [ToolCall(tool="find_landmarks", args={"query": r.landmark})]
@@ -198,8 +264,11 @@ def _search(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall]:
 
 def _maintenance_target(scene: Scene, memory: Memory) -> str | None:
     """The obstacle a "mark the maintenance" request most likely means: the newest one."""
-    tagged = [a for a in scene.assets if "maintenance" in catalog()[a.category].tags
-              and "obstacle" in catalog()[a.category].tags]
+    tagged = [
+        a
+        for a in scene.assets
+        if "maintenance" in catalog()[a.category].tags and "obstacle" in catalog()[a.category].tags
+    ]
     if not tagged:
         return None
     focus = memory.last_focus()
@@ -211,7 +280,11 @@ def _maintenance_target(scene: Scene, memory: Memory) -> str | None:
 
 def _fallback_place(memory: Memory) -> dict[str, Any]:
     focus = memory.last_focus()
-    return {"relation": "absolute", "x": round(focus[0], 2), "y": round(focus[1], 2)} if focus else {"relation": "scene_centre"}
+    return (
+        {"relation": "absolute", "x": round(focus[0], 2), "y": round(focus[1], 2)}
+        if focus
+        else {"relation": "scene_centre"}
+    )
 
 
 def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
@@ -280,8 +353,12 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCal
     where = location(r, scene, memory, notes)
     if where is not None and kind == "jaywalk" and where.get("target") == "ego":
         where = None  # the jaywalk behaviour places the walker in the ego's path itself
-    if where is not None and category.placement == "sidewalk" and where.get("relation") == "at" \
-            and scene.landmark(str(where.get("target"))) is not None:
+    if (
+        where is not None
+        and category.placement == "sidewalk"
+        and where.get("relation") == "at"
+        and scene.landmark(str(where.get("target"))) is not None
+    ):
         where = {"relation": "on_sidewalk", "target": where["target"]}
     if where is None and kind is None and memory.last_focus() is not None and r.has(("also", "more", "another")):
         where = _fallback_place(memory)

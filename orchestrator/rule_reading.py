@@ -127,8 +127,10 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
         number: int | None = None
         if after and (after[0].isdigit() or after[0] in ph.NUMBER_WORDS) and after[0] not in ("a", "an"):
             number = int(after[0]) if after[0].isdigit() else ph.NUMBER_WORDS[after[0]]
-        present = sorted((a for a in scene.assets if a.category == mention.category),
-                         key=lambda a: int(a.id.rsplit("_", 1)[-1]) if a.id.rsplit("_", 1)[-1].isdigit() else 0)
+        present = sorted(
+            (a for a in scene.assets if a.category == mention.category),
+            key=lambda a: int(a.id.rsplit("_", 1)[-1]) if a.id.rsplit("_", 1)[-1].isdigit() else 0,
+        )
         ordinal = next((lx.ORDINALS[w] for w in reversed(before) if w in lx.ORDINALS), None)
         if number is not None and scene.asset(f"{mention.category}_{number}") is not None:
             ids.append(f"{mention.category}_{number}")
@@ -168,8 +170,13 @@ def read(text: str, scene: Scene) -> Reading:
         masked = _blank(masked, start, end)
     mentions = [m for m in ph.find_categories(text) if not any(m.start < e and s < m.end for s, e in spans)]
     # "stop" is a verb before a noun phrase or at the start ("stop the ego"), a sign otherwise.
-    mentions = [m for m in mentions if not (low[m.start : m.end] == "stop"
-                                            and (m.start <= 1 or re.match(r"\s+(the|our|it|that|ego)\b", low[m.end :])))]
+    mentions = [
+        m
+        for m in mentions
+        if not (
+            low[m.start : m.end] == "stop" and (m.start <= 1 or re.match(r"\s+(the|our|it|that|ego)\b", low[m.end :]))
+        )
+    ]
     mentions += _concepts(masked, mentions)
     mentions.sort(key=lambda m: m.start)
     # "somewhere for students to sit": the students are who it is for, not what is asked.
@@ -179,11 +186,17 @@ def read(text: str, scene: Scene) -> Reading:
     ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in ph.tokens(low)]
     numbered, mentions = _numbered(scene, low, mentions)
     return Reading(
-        text=text, low=low, masked=masked, mentions=mentions,
-        landmark=place[0] if place else None, landmark_at=place[1] if place else -1,
+        text=text,
+        low=low,
+        masked=masked,
+        mentions=mentions,
+        landmark=place[0] if place else None,
+        landmark_at=place[1] if place else -1,
         landmark_word=None if place else _place_head_word(scene, low),
-        lane=lane[0] if lane else None, lane_guessed=bool(lane and lane[3]),
-        ids=list(dict.fromkeys(ids + numbered)), ego=ego is not None,
+        lane=lane[0] if lane else None,
+        lane_guessed=bool(lane and lane[3]),
+        ids=list(dict.fromkeys(ids + numbered)),
+        ego=ego is not None,
     )
 
 
@@ -204,8 +217,11 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
     if add_verb:
         return True
     for word in reversed(ph.tokens(reading.low[: mention.start])[-3:]):
-        if word in _NEW_DETERMINERS or word.isdigit() or word in lx.COLLECTIVE_COUNTS or (
-            word in ph.NUMBER_WORDS and word not in ("one",)
+        if (
+            word in _NEW_DETERMINERS
+            or word.isdigit()
+            or word in lx.COLLECTIVE_COUNTS
+            or (word in ph.NUMBER_WORDS and word not in ("one",))
         ):
             return True
         if word in _OLD_DETERMINERS:

@@ -27,14 +27,55 @@ SHORT_WORD_LEN, SHORT_WORD_CUTOFF = 4, 0.88
 MIN_REPAIR_LEN = 4
 _WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
 # Short slips too common to leave: a doubled letter dropped or a letter swapped.
-_SHORT_SLIPS = {"ad": "add", "teh": "the", "adn": "and", "fo": "of", "ot": "to", "mak": "make",
-                "pu": "put", "nite": "night", "tonite": "tonight", "lite": "light", "thru": "through",
-                "infront": "in front", "wich": "which", "wat": "what", "whr": "where", "u": "you",
-                "abit": "a bit", "alot": "a lot"}
-_REPAIRABLE_GRAMMAR = ("much", "which", "where", "front", "there", "many", "forward", "backward",
-                       "degrees", "metres", "meters", "westbound", "eastbound", "northbound",
-                       "southbound", "sidewalk", "pavement", "entrance", "weather", "behind",
-                       "beside", "between", "towards", "outside", "please", "another", "colour")
+_SHORT_SLIPS = {
+    "ad": "add",
+    "teh": "the",
+    "adn": "and",
+    "fo": "of",
+    "ot": "to",
+    "mak": "make",
+    "pu": "put",
+    "nite": "night",
+    "tonite": "tonight",
+    "lite": "light",
+    "thru": "through",
+    "infront": "in front",
+    "wich": "which",
+    "wat": "what",
+    "whr": "where",
+    "u": "you",
+    "abit": "a bit",
+    "alot": "a lot",
+}
+_REPAIRABLE_GRAMMAR = (
+    "much",
+    "which",
+    "where",
+    "front",
+    "there",
+    "many",
+    "forward",
+    "backward",
+    "degrees",
+    "metres",
+    "meters",
+    "westbound",
+    "eastbound",
+    "northbound",
+    "southbound",
+    "sidewalk",
+    "pavement",
+    "entrance",
+    "weather",
+    "behind",
+    "beside",
+    "between",
+    "towards",
+    "outside",
+    "please",
+    "another",
+    "colour",
+)
 _SUFFIXES = ("ies", "es", "s", "ing", "ed", "er", "ers", "ly", "ward", "wards", "'s")
 
 
@@ -61,11 +102,28 @@ def _static_vocabulary() -> frozenset[str]:
 @cache
 def _domain_words() -> frozenset[str]:
     words = _words_of(COLOURS) | _words_of(lx.COLOUR_OF)
-    for table in (lx.SEARCH_STARTS, lx.PROPERTY_WORDS, lx.REMOVE_WORDS, lx.GONE_WORDS, lx.FEWER_WORDS,
-                  lx.ADD_WORDS, lx.MOVE_WORDS, lx.REVERSE_WORDS, lx.TURN_WORDS, lx.STOP_WORDS,
-                  lx.HEAVY, lx.LIGHT, lx.LIGHTS_WORDS, lx.ARRANGE_WORDS, lx.BLOCK_WORDS,
-                  lx.GENERIC_THINGS, lx.WORKS_WORDS, lx.FILLER_STARTS, tuple(lx.ORDINALS),
-                  tuple(lx.COLLECTIVE_COUNTS)):
+    for table in (
+        lx.SEARCH_STARTS,
+        lx.PROPERTY_WORDS,
+        lx.REMOVE_WORDS,
+        lx.GONE_WORDS,
+        lx.FEWER_WORDS,
+        lx.ADD_WORDS,
+        lx.MOVE_WORDS,
+        lx.REVERSE_WORDS,
+        lx.TURN_WORDS,
+        lx.STOP_WORDS,
+        lx.HEAVY,
+        lx.LIGHT,
+        lx.LIGHTS_WORDS,
+        lx.ARRANGE_WORDS,
+        lx.BLOCK_WORDS,
+        lx.GENERIC_THINGS,
+        lx.WORKS_WORDS,
+        lx.FILLER_STARTS,
+        tuple(lx.ORDINALS),
+        tuple(lx.COLLECTIVE_COUNTS),
+    ):
         words |= _words_of(table)
     for group in (lx.WEATHER_WORDS, lx.BEHAVIOUR_WORDS, lx.CONCEPTS):
         for values in group.values():
@@ -130,7 +188,7 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
     joined = _joined(vocab)
     for candidate in (low, low[:-1] if low.endswith("s") else low):
         if candidate in joined:
-            return joined[candidate] + low[len(candidate):]
+            return joined[candidate] + low[len(candidate) :]
     targets = _targets(vocab)
     if low.endswith("s"):  # a plural keeps its plural: "bolards" -> "bollards"
         close = difflib.get_close_matches(low[:-1], targets, n=1, cutoff=REPAIR_CUTOFF)
