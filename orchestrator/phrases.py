@@ -15,9 +15,28 @@ from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import EGO_ID, Scene
 
 NUMBER_WORDS = {
-    "a": 1, "an": 1, "one": 1, "single": 1, "two": 2, "pair": 2, "couple": 2, "three": 3,
-    "few": 3, "some": 3, "four": 4, "several": 4, "five": 5, "six": 6, "seven": 7,
-    "eight": 8, "nine": 9, "ten": 10, "dozen": 12, "twelve": 12, "fifteen": 15, "twenty": 20,
+    "a": 1,
+    "an": 1,
+    "one": 1,
+    "single": 1,
+    "two": 2,
+    "pair": 2,
+    "couple": 2,
+    "three": 3,
+    "few": 3,
+    "some": 3,
+    "four": 4,
+    "several": 4,
+    "five": 5,
+    "six": 6,
+    "seven": 7,
+    "eight": 8,
+    "nine": 9,
+    "ten": 10,
+    "dozen": 12,
+    "twelve": 12,
+    "fifteen": 15,
+    "twenty": 20,
 }
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
 EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle")
@@ -81,7 +100,7 @@ def find_categories(text: str) -> list[Mention]:
                 if last == "person":
                     variants.append(" ".join([*words[:-1], "people"]))
             for variant in variants:
-                for m in re.finditer(rf"(?<![a-z0-9_]){re.escape(variant)}(?![a-z0-9_])", low):
+                for m in _whole(variant).finditer(low):
                     span = (m.start(), m.end())
                     if any(not (span[1] <= a or span[0] >= b) for a, b in taken):
                         continue
@@ -90,10 +109,15 @@ def find_categories(text: str) -> list[Mention]:
     return sorted(found, key=lambda m: m.start)
 
 
+@cache
+def _whole(phrase: str) -> re.Pattern[str]:
+    return re.compile(rf"(?<![a-z0-9_]){re.escape(phrase)}(?![a-z0-9_])")
+
+
 def find_count(text: str, before: int | None = None) -> int | None:
     """The number that quantifies a noun (digits or words), looking just before `before`."""
     low = normalise(text)
-    window = low[: before] if before is not None else low
+    window = low[:before] if before is not None else low
     words = tokens(window)[-4:]
     for word in reversed(words):
         if word.isdigit():
@@ -171,10 +195,15 @@ def find_speed(text: str) -> float | None:
     return value / 3.6 if m.group(2) in ("km/h", "kph") else value * 0.447 if m.group(2) == "mph" else value
 
 
+@cache
+def _any_of(words: tuple[str, ...]) -> re.Pattern[str]:
+    # One compiled alternation per word list: compiling per call overflows re's own cache.
+    return re.compile("|".join(rf"(?<![a-z]){re.escape(w)}(?![a-z])" for w in words))
+
+
 def has_any(text: str, words: tuple[str, ...]) -> bool:
     """Whether any of `words` (whole words or phrases) occurs in `text`."""
-    low = normalise(text)
-    return any(re.search(rf"(?<![a-z]){re.escape(w)}(?![a-z])", low) for w in words)
+    return bool(words) and _any_of(tuple(words)).search(normalise(text)) is not None
 
 
 def known_words(scene: Scene) -> set[str]:

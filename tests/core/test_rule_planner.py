@@ -93,3 +93,97 @@ def test_nonsense_is_a_planning_error(campus, registry):
         calls_for(campus, registry, "qwerty uiop")
     with pytest.raises(PlanningError, match="unknown asset 'tank'"):
         calls_for(campus, registry, "add a tank")
+
+
+def plan_for(scene, registry, prompt):
+    return RulePlanner().plan(prompt, PlanContext(scene=scene, registry=registry))
+
+
+def test_typos_are_repaired_against_known_words(campus, registry):
+    calls = calls_for(campus, registry, "plase ad two benchs beside the libary")
+    assert calls[0].tool == "add_asset"
+    assert calls[0].args["category"] == "bench" and calls[0].args["count"] == 2
+    assert calls[0].args["location"]["target"] == "Library entrance"
+
+
+def test_run_together_words_are_split(campus, registry):
+    calls = calls_for(campus, registry, "delete the firehydrant")
+    assert calls == [c for c in calls if c.tool == "remove_assets"] and calls[0].args["category"] == "fire_hydrant"
+
+
+@pytest.mark.parametrize("verb", ["get rid of", "take away", "ditch", "throw out"])
+def test_removal_idioms_remove(campus, registry, verb):
+    calls = calls_for(campus, registry, f"{verb} the rubbish bin")
+    assert calls[0].tool == "remove_assets" and calls[0].args["category"] == "trash_bin"
+
+
+def test_a_place_name_is_not_read_as_its_words(campus, registry):
+    calls = calls_for(campus, registry, "drop a bollard by the shuttle stop")
+    assert calls[0].args["category"] == "bollard" and calls[0].args["location"]["target"] == "bus stop"
+
+
+def test_a_numbered_name_means_the_existing_asset(campus, registry):
+    calls = calls_for(campus, registry, "have car number 1 back up a little")
+    assert calls == calls_for(campus, registry, "back up car 1 a little")
+    assert calls[0].tool == "move_asset" and calls[0].args["asset"] == "passenger_car_1"
+    assert calls[0].args["forward"] < 0
+
+
+def test_the_definite_article_moves_what_is_there_and_a_adds(campus, registry):
+    moved = calls_for(campus, registry, "the SUV belongs in lot A")
+    added = calls_for(campus, registry, "an SUV in lot A")
+    assert moved[0].tool == "place_asset" and moved[0].args["asset"] == "suv_1"
+    assert added[0].tool == "add_asset"
+
+
+def test_a_stated_goal_becomes_the_environment_it_needs(campus, registry):
+    assert calls_for(campus, registry, "we are checking how the sensors cope with puddles")[0].args["kind"] == "rain"
+    assert calls_for(campus, registry, "the sunshine should come back")[0].args["kind"] == "clear"
+
+
+def test_one_clause_can_set_time_and_weather(campus, registry):
+    tools = {c.tool for c in calls_for(campus, registry, "a foggy night run please")}
+    assert tools == {"set_weather", "set_time_of_day"}
+
+
+def test_a_finished_activity_clears_its_things(campus, registry):
+    calls = calls_for(campus, registry, "the trees are no longer needed")
+    assert calls[0].tool == "remove_assets" and calls[0].args == {"category": "tree"}
+
+
+def test_stop_as_a_verb_is_not_a_stop_sign(campus, registry):
+    calls = calls_for(campus, registry, "halt our car")
+    assert calls[0].tool == "set_behaviour" and calls[0].args["behaviour"]["kind"] == "parked"
+    assert calls_for(campus, registry, "stop the ego")[0].args["asset"] == "ego"
+
+
+def test_a_row_of_is_not_one(campus, registry):
+    calls = calls_for(campus, registry, "plant a row of oaks outside the engineering building")
+    assert calls[0].tool == "arrange_assets" and calls[0].args["shape"] == "line"
+    assert calls[0].args.get("count") != 1
+
+
+def test_a_question_inside_a_sentence_is_answered(campus, registry):
+    calls = calls_for(campus, registry, "I wonder how many lamp posts there are")
+    assert calls[0].tool == "find_assets" and calls[0].args["category"] == "street_light"
+
+
+def test_there_refers_to_the_place_named_earlier_in_the_prompt(campus, registry):
+    calls = calls_for(campus, registry, "remove the bin at the bus stop, then put a bench there")
+    assert calls[1].tool == "add_asset" and calls[1].args["location"]["target"] == "bus stop"
+
+
+def test_confidence_stays_high_when_every_word_is_understood(campus, registry):
+    assert plan_for(campus, registry, "add 2 road barriers behind the bus stop").confidence > 0.9
+
+
+def test_confidence_drops_when_the_rules_guessed(campus, registry):
+    repaired = plan_for(campus, registry, "remove the benh")
+    defaulted = plan_for(campus, registry, "spin the bench")
+    unknown = plan_for(campus, registry, "add a cone near the gizmo")
+    assert max(repaired.confidence, defaulted.confidence, unknown.confidence) < 0.8
+
+
+def test_an_impossible_request_is_still_refused(campus, registry):
+    with pytest.raises(PlanningError, match="unknown asset 'spaceship'"):
+        calls_for(campus, registry, "put a spaceship at the fountain")
