@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from drivetwin.worlds.defaults import load_world
 from drivetwin.worlds.mujoco_adapter import MujocoWorld
-from drivetwin.worlds.render.appearance import finish, look_of, sun_elevation_azimuth
+from drivetwin.worlds.render.appearance import finish, look_of, sky_image, sun_elevation_azimuth
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.hybrid import HybridRenderer, chase_camera, default_camera
 from drivetwin.worlds.scene import Environment, Lighting, Weather
@@ -102,3 +102,22 @@ def test_exposure_brightens_the_frame() -> None:
     normal = finish(rgb, depth, camera, look_of(Environment()))
     bright = finish(rgb, depth, camera, look_of(Environment(lighting=Lighting(exposure=1.5))))
     assert _luminance(bright).mean() > 1.3 * _luminance(normal).mean()
+
+
+def test_a_clear_sky_keeps_its_horizon_to_zenith_gradient_through_the_haze() -> None:
+    camera = Camera.from_look_at((0, 0, 2.0), (10, 0, 8.0), width=64, height=48, fovy_deg=70)
+    look = look_of(Environment(time_of_day="12:00"))
+    sky = sky_image(camera, look)
+    out = finish(sky, np.full((48, 64), np.inf, np.float32), camera, look).astype(np.float64) / 255
+    top, bottom = out[0].mean(axis=0), out[-1].mean(axis=0)
+    # The top rows look higher up: bluer and darker than the hazy rows near the horizon.
+    assert np.abs(top - bottom).sum() > 0.15
+    assert top[2] - top[0] > bottom[2] - bottom[0]
+
+
+def test_dense_fog_hides_the_sky_too() -> None:
+    camera = Camera.from_look_at((0, 0, 2.0), (10, 0, 8.0), width=64, height=48, fovy_deg=70)
+    look = look_of(Environment(weather=Weather(kind="fog", intensity=1.0)))
+    out = finish(sky_image(camera, look), np.full((48, 64), np.inf, np.float32), camera, look)
+    fog = np.round(np.asarray(look.fog_rgb) * look.exposure * 255)
+    assert np.abs(out.astype(np.float64) - fog).max() <= 2

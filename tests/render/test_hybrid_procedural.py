@@ -50,3 +50,14 @@ def test_a_removed_splat_asset_is_no_longer_drawn() -> None:
     assert renderer.compose(camera).raster is not None
     world.update(scene.model_copy(update={"assets": [a for a in scene.assets if a.id != suv.id]}))
     assert renderer.compose(camera).raster is None  # nothing left to rasterize, no error
+
+
+def test_a_renderer_given_no_background_draws_the_scenes_facades_as_splats() -> None:
+    scene = load_world("campus")
+    world = MujocoWorld.from_scene(scene)
+    camera = default_camera(scene, 96, 54)
+    default = HybridRenderer(world).compose(camera)
+    explicit = HybridRenderer(world, background=facade_splats(scene)).compose(camera)
+    assert default.raster is not None and explicit.raster is not None
+    assert np.array_equal(default.rgb, explicit.rgb)
+    assert HybridRenderer(world, background=None).compose(camera).raster is None

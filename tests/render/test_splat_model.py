@@ -145,3 +145,20 @@ def test_concat_keeps_order_and_pads_lower_sh_degrees():
     assert len(both) == 5 and both.sh_degree == 2
     assert np.array_equal(both.means[3:], b.means)
     assert np.array_equal(both.sh[:3, 0], a.sh[:, 0]) and not both.sh[:3, 1:].any()
+
+
+def test_from_points_caps_the_scale_of_an_isolated_point_at_max_scale():
+    grid = np.stack(np.meshgrid(*[np.arange(5) * 0.1] * 3, indexing="ij"), -1).reshape(-1, 3)
+    points = np.vstack([grid, [[40.0, 0.0, 0.0]]])  # one stray point 40 m away
+    colours = np.full((len(points), 3), 0.5)
+    free = Splats.from_points(points, colours, k=3)
+    capped = Splats.from_points(points, colours, k=3, max_scale=0.25)
+    assert np.exp(free.log_scales[-1, 0]) > 30.0
+    assert np.exp(capped.log_scales[-1]) == pytest.approx([0.25] * 3, rel=1e-6)
+    assert np.array_equal(capped.log_scales[:-1], free.log_scales[:-1])  # dense points untouched
+
+
+@pytest.mark.parametrize("bad", [0.0, -1.0, float("nan"), float("inf")])
+def test_from_points_refuses_a_max_scale_that_is_not_a_positive_length(bad):
+    with pytest.raises(SplatsError, match="max_scale must be a positive number of metres"):
+        Splats.from_points(np.random.rand(10, 3), np.full((10, 3), 0.5), max_scale=bad)

@@ -34,7 +34,7 @@ from .rasterize import (
 )
 from .splats import Splats, sh_basis
 
-__all__ = ["TorchRaster", "rasterize_gsplat", "rasterize_numpy_via_torch", "rasterize_torch"]
+__all__ = ["TorchRaster", "cull_behind_depth_limit", "rasterize_gsplat", "rasterize_numpy_via_torch", "rasterize_torch"]
 
 # Elements of one padded [B, P, K] batch: bounds peak memory to a few hundred MB in float64.
 MAX_BATCH_ELEMENTS = 1 << 22
@@ -272,11 +272,38 @@ def rasterize_numpy_via_torch(
     )
 
 
-def rasterize_gsplat(splats: Splats, camera: Camera) -> RasterOutput:
+def cull_behind_depth_limit(splats: Splats, camera: Camera, depth_limit: npt.NDArray[np.floating]) -> Splats:
+    """The splats whose mean lies in front of ``depth_limit`` [H,W] at the pixel under the mean.
+
+    This is how the gsplat backend takes a depth limit (its CUDA rasterizer has no
+    per-pixel test): a splat is kept or dropped whole by the limit at its centre pixel
+    (means projecting outside the image use the nearest edge pixel; means behind the camera
+    are kept for gsplat's own near-plane culling). It equals the CPU backends' per-pixel
+    rule except across a depth edge inside one splat's footprint: a kept splat then also
+    covers mesh pixels nearer than itself, a dropped one leaves a gap over farther mesh
+    pixels. Splats are a few pixels wide, so the difference is a fringe of about a splat
+    radius along mesh silhouettes.
+    """
+    view = np.asarray(camera.world_to_camera, dtype=np.float64)
+    cam = splats.means.astype(np.float64) @ view[:3, :3].T + view[:3, 3]
+    z = cam[:, 2]
+    in_front = z > camera.near
+    safe_z = np.where(in_front, z, 1.0)
+    col = np.clip(np.floor(camera.fx * cam[:, 0] / safe_z + camera.cx), 0, camera.width - 1).astype(np.int64)
+    row = np.clip(np.floor(camera.fy * cam[:, 1] / safe_z + camera.cy), 0, camera.height - 1).astype(np.int64)
+    limit = np.asarray(depth_limit, dtype=np.float64)[row, col]
+    return splats.subset(~in_front | (z < limit))
+
+
+def rasterize_gsplat(
+    splats: Splats, camera: Camera, depth_limit: npt.NDArray[np.floating] | None = None
+) -> RasterOutput:
     """``rasterize(backend="gsplat")``: gsplat's CUDA rasterizer with the same conventions.
 
-    gsplat is imported here, so this module imports without it. It has no depth limit and
-    no per-pixel splat index; depth is gsplat's expected depth ("ED", normalised by alpha).
+    gsplat is imported here, so this module imports without it (and without CUDA). A depth
+    limit is applied per splat by `cull_behind_depth_limit` before gsplat draws (see there
+    for how that differs from the per-pixel rule); there is no per-pixel splat index;
+    depth is gsplat's expected depth ("ED", normalised by alpha).
     """
     try:
         from gsplat import rasterization
@@ -284,6 +311,14 @@ def rasterize_gsplat(splats: Splats, camera: Camera) -> RasterOutput:
         raise RasterizeError("backend 'gsplat' needs the gsplat package (CUDA)") from exc
     device = torch.device("cuda")
     t0 = time.perf_counter()
+    if depth_limit is not None:
+        splats = cull_behind_depth_limit(splats, camera, depth_limit)
+    t1 = time.perf_counter()
+    if len(splats) == 0:  # gsplat wants at least one Gaussian
+        shape = (camera.height, camera.width)
+        return RasterOutput(rgb=np.zeros((*shape, 3), np.float32), alpha=np.zeros(shape, np.float32),
+                            transmittance=np.ones(shape, np.float32), depth=np.zeros(shape, np.float32),
+                            index=None, timings={"cull": 1e3 * (t1 - t0), "total": 1e3 * (t1 - t0)})  # fmt: skip
 
     def cuda(a: npt.NDArray[np.float32]) -> torch.Tensor:
         return torch.as_tensor(a, device=device)
@@ -314,5 +349,5 @@ def rasterize_gsplat(splats: Splats, camera: Camera) -> RasterOutput:
         transmittance=1.0 - alpha,
         depth=colors[0, ..., 3].cpu().numpy().astype(np.float32),
         index=None,
-        timings={"total": total},
+        timings={"cull": 1e3 * (t1 - t0), "total": total},
     )

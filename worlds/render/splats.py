@@ -8,6 +8,7 @@ to colour as ``0.5 + SH_C0 * dc``.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -227,12 +228,15 @@ class Splats:
         k: int = 3,
         opacity: float = 0.1,
         sh_degree: int = 0,
+        max_scale: float | None = None,
     ) -> Splats:
         """Splats initialised from a coloured point cloud, as 3DGS does from SfM points.
 
         Each point becomes an isotropic Gaussian whose standard deviation is the root of the
-        mean squared distance to its ``k`` nearest neighbours; ``colors`` [N,3] are uint8
-        0..255 or floats in [0,1]; the SH bands above 0 start at zero.
+        mean squared distance to its ``k`` nearest neighbours, capped at ``max_scale``
+        metres when given (an isolated point would otherwise become a splat metres wide
+        that smears over everything near it); ``colors`` [N,3] are uint8 0..255 or floats
+        in [0,1]; the SH bands above 0 start at zero.
         """
         from scipy.spatial import cKDTree
 
@@ -242,6 +246,8 @@ class Splats:
             raise SplatsError(f"need points [N,3] and colors [N,3], got {pts.shape}, {col.shape}")
         if not 0.0 < opacity < 1.0:
             raise SplatsError(f"opacity must be in (0, 1), got {opacity}")
+        if max_scale is not None and not (math.isfinite(max_scale) and max_scale > 0):
+            raise SplatsError(f"max_scale must be a positive number of metres or None (no cap), got {max_scale}")
         if k < 1 or len(pts) <= k:
             raise SplatsError(f"need k >= 1 and more than k points, got k={k}, N={len(pts)}")
         if col.dtype == np.uint8:
@@ -252,6 +258,8 @@ class Splats:
             raise SplatsError("colors must be uint8 0..255 or floats in [0, 1]")
         dist, _ = cKDTree(pts).query(pts, k=k + 1)  # the first neighbour is the point itself
         dist2 = np.maximum(np.mean(dist[:, 1:] ** 2, axis=1), MIN_NEIGHBOUR_DIST2)
+        if max_scale is not None:
+            dist2 = np.minimum(dist2, max_scale * max_scale)
         n = len(pts)
         sh = np.zeros((n, sh_coefficients(sh_degree), 3))
         sh[:, 0] = (rgb - 0.5) / SH_C0
