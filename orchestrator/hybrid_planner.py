@@ -16,7 +16,8 @@ from drivetwin.orchestrator.llm_planner import LlmPlanner
 from drivetwin.orchestrator.planning import Plan, PlanContext, Planner, PlanningError, TraceStep
 
 # Rule plans at least this sure skip the LLM. The rule planner scores 0.95 for a prompt whose
-# every content word it knows and 0.15 less per unknown word, so one unknown word is allowed.
+# every content word it knows, 0.15 less per unknown word and 0.2 less per guess (a repaired
+# typo, a defaulted amount, an ignored clause): one unknown word is allowed, no guess is.
 RULES_CONFIDENT = 0.8
 # When the LLM cannot answer, a rule plan at least this sure (and accepted by a dry run)
 # is used rather than failing: half-understood beats a dead backend.
