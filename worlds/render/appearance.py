@@ -53,6 +53,9 @@ FOG_DENSITY = (0.004, 0.06)  # light fog ~1 km visibility, dense fog ~65 m
 RAIN_HAZE, SNOW_HAZE = 0.004, 0.008  # per unit intensity
 # Vehicle lights come on by day too when the weather is at least this bad.
 LIGHTS_WEATHER_INTENSITY = 0.5
+# At night, street lights scatter in fog and rain haze: the haze glows this warm grey
+# instead of taking the near-black night sky's colour.
+NIGHT_HAZE_GLOW: RGB = (0.15, 0.13, 0.1)
 SNOW_COVER = 0.6  # share of snow white on the ground at full intensity
 LAMP_RGB: RGB = (1.0, 0.82, 0.55)  # sodium-ish warm white
 HEADLAMP_RGB: RGB = (0.95, 0.95, 1.0)
@@ -141,6 +144,7 @@ def look_of(environment: Environment) -> Look:
     gain = tuple(float(v) for v in np.clip(lit / noon, 0.0, 1.5))
     bad_weather = kind in ("rain", "fog", "snow") and intensity >= LIGHTS_WEATHER_INTENSITY
     lighting = environment.lighting
+    street_lights = lighting.street_lights == "on" or (lighting.street_lights == "auto" and environment.is_night)
     return Look(
         to_sun=to_sun,
         sun_rgb=sun,
@@ -151,15 +155,23 @@ def look_of(environment: Environment) -> Look:
         daylight=daylight,
         exposure=lighting.exposure,
         fog_density=fog,
-        fog_rgb=horizon,
+        fog_rgb=_haze_colour(horizon, daylight, street_lights, kind),
         precipitation="rain" if kind == "rain" else "snow" if kind == "snow" else "none",
         precipitation_intensity=intensity if kind in ("rain", "snow") else 0.0,
         wetness=intensity if kind == "rain" else 0.3 * intensity if kind == "snow" else 0.0,
         snow_cover=SNOW_COVER * intensity if kind == "snow" else 0.0,
-        street_lights=lighting.street_lights == "on" or (lighting.street_lights == "auto" and environment.is_night),
+        street_lights=street_lights,
         vehicle_lights=lighting.vehicle_lights == "on"
         or (lighting.vehicle_lights == "auto" and (environment.is_night or bad_weather)),
     )
+
+
+def _haze_colour(horizon: RGB, daylight: float, street_lights: bool, kind: str) -> RGB:
+    """Fog colour: the horizon's, lifted towards the lamps' glow at night in fog or rain."""
+    if not street_lights or kind not in ("fog", "rain", "snow"):
+        return horizon
+    glow = _scale(NIGHT_HAZE_GLOW, 1.0 - daylight)
+    return (max(horizon[0], glow[0]), max(horizon[1], glow[1]), max(horizon[2], glow[2]))
 
 
 # GL lights --------------------------------------------------------------------------------

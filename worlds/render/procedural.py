@@ -25,6 +25,11 @@ FACADE_OFFSET_M = 0.05  # facade splats float this far out, so the wall mesh doe
 WINDOW_PITCH_M = (3.0, 3.5)  # window spacing along a wall and between floors
 WINDOW_FRACTION = (0.55, 0.45)  # share of each pitch that is glass
 WINDOW_RGB = (0.16, 0.2, 0.27)
+# Facades carry the shading of a capture made with light from the south-east (x east,
+# y north): walls facing it are lit fully, walls facing away keep FACADE_AMBIENT of their
+# colour, so a building's faces stay distinguishable as a captured one's would.
+CAPTURE_LIGHT_XY = (0.6, -0.8)
+FACADE_AMBIENT = 0.62
 
 
 def _splats(points: npt.NDArray[np.float64], rgb: npt.NDArray[np.float64], spacing: float,
@@ -66,8 +71,10 @@ def facade_splats(scene: Scene, *, spacing_m: float = 0.35, seed: int = 0) -> Sp
                 & ((up % WINDOW_PITCH_M[1]) > WINDOW_PITCH_M[1] * (1 - WINDOW_FRACTION[1]))
                 & (up > WINDOW_PITCH_M[1])
             )
-            wall = np.asarray(building.rgba[:3], np.float64)
-            colours.append(np.where(window[:, None], WINDOW_RGB, wall))
+            facing = max(0.0, float(normal @ np.asarray(CAPTURE_LIGHT_XY)))
+            shade = FACADE_AMBIENT + (1.0 - FACADE_AMBIENT) * facing
+            wall = np.asarray(building.rgba[:3], np.float64) * shade
+            colours.append(np.where(window[:, None], np.asarray(WINDOW_RGB) * shade, wall))
     if not points:
         return Splats.empty()
     return _splats(np.concatenate(points), np.concatenate(colours), spacing_m, rng)
