@@ -37,6 +37,11 @@ SURFACE_SAMPLES = 40_000
 TOLERANCE_FRACTION = 0.01
 # ...but never nearer than this (sampling spacing and LIDAR noise are centimetres).
 MIN_TOLERANCE_M = 0.01
+# The frames agree when points lie near this share of the surface (the cameras may not
+# have seen all of it: the underside, a side against a wall)...
+MIN_COVERAGE = 0.6
+# ...counting a surface sample as covered within this many of the points' own spacings.
+COVERAGE_SPACINGS = 2.0
 # Correspondences farther than this quantile are dropped at each ICP step (floaters, the
 # part of the mesh the cameras never saw).
 TRIM_QUANTILE = 0.8
@@ -53,17 +58,21 @@ CONVERGED_FRACTION = 1e-6
 @dataclass(frozen=True)
 class AlignmentCheck:
     """How well points sit on a surface: median and 90th-percentile distance (m), the share
-    within `tolerance_m`, and that tolerance."""
+    within `tolerance_m`, that tolerance, and `coverage`: the share of the surface that has
+    a point within `coverage_tolerance_m` (tolerance or the points' own spacing)."""
 
     median_m: float
     p90_m: float
     inlier_fraction: float
     tolerance_m: float
+    coverage: float = 0.0
+    coverage_tolerance_m: float = 0.0
 
     @property
     def aligned(self) -> bool:
-        """Whether most points lie on the surface."""
-        return self.median_m <= self.tolerance_m
+        """Whether the points cover most of the surface (background points do not count
+        against it: a capture's splats hold more than the scanned object)."""
+        return self.coverage >= MIN_COVERAGE
 
 
 def surface_samples(mesh: trimesh.Trimesh, count: int = SURFACE_SAMPLES, seed: int = 0) -> F64:
@@ -81,14 +90,21 @@ def tolerance_for(surface: F64) -> float:
 
 
 def check_alignment(points: F64, surface: F64, tolerance_m: float | None = None) -> AlignmentCheck:
-    """Distances of `points` [N,3] to the surface given by its samples `surface` [M,3]."""
+    """Distances of `points` [N,3] to the surface given by its samples `surface` [M,3], and
+    how much of the surface the points cover."""
     tolerance = tolerance_for(surface) if tolerance_m is None else tolerance_m
+    tree = cKDTree(points)
     distances, _ = cKDTree(surface).query(points)
+    spacing, _ = tree.query(points, k=2)
+    cover_tolerance = max(tolerance, COVERAGE_SPACINGS * float(np.median(spacing[:, 1])))
+    backward, _ = tree.query(surface)
     return AlignmentCheck(
         median_m=float(np.median(distances)),
         p90_m=float(np.quantile(distances, 0.9)),
         inlier_fraction=float(np.mean(distances <= tolerance)),
         tolerance_m=tolerance,
+        coverage=float(np.mean(backward <= cover_tolerance)),
+        coverage_tolerance_m=cover_tolerance,
     )
 
 

@@ -12,11 +12,9 @@ and the Workers can place it: `drivetwin chat` -> "add a kerb stone next to the 
 
 from __future__ import annotations
 
-import inspect
 import json
-from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import click
 
@@ -80,43 +78,34 @@ def _summary(package: Any, out_dir: Path) -> None:
 @_OUT
 @click.option("--kind", type=click.Choice(["object", "ground", "scene"]), default="object", show_default=True,
               help="object: convex parts; ground: height field; scene: both")  # fmt: skip
+@click.option("--reference", type=click.Path(exists=True, dir_okay=False, path_type=Path), default=None,
+              help="a true mesh to measure cloud-to-mesh and mesh-to-mesh distances against")  # fmt: skip
+@click.option("--voxel", default=0.05, show_default=True, type=click.FloatRange(0.001, 10.0),
+              help="working resolution in metres (downsampling, normals, Poisson depth)")  # fmt: skip
 @click.option("--budget", default=DEFAULT_BUDGET, show_default=True, type=click.IntRange(100, 2_000_000),
               help="most triangles in the mesh")  # fmt: skip
 @_NAME
 @_MATERIAL
 @_TAGS
-def mesh_command(scans: tuple[Path, ...], out_dir: Path, kind: str, budget: int, name: str | None,
+def mesh_command(scans: tuple[Path, ...], out_dir: Path, kind: str, reference: Path | None, voxel: float, budget: int,
+                 name: str | None,
                  material: str | None, tags: tuple[str, ...]) -> None:  # fmt: skip
     """Point clouds (PLY, PCD, LAS, NumPy) to a collision mesh, convex parts and a height field.
 
     Example: drivetwin reconstruct mesh scan_0.ply scan_1.ply --out pkg/kerb_stone --kind object
     """
-    from .geometry import reconstruct_mesh
+    from .geometry import GeometryKind, reconstruct_mesh
     from .pointclouds import PointCloudError
 
     try:
-        reconstruct_mesh(list(scans), out_dir, kind=kind, triangle_budget=budget)  # type: ignore[arg-type]
-    except (PointCloudError, ValueError) as exc:
+        geometry_kind: GeometryKind = cast("GeometryKind", kind)  # click.Choice checked it
+        result = reconstruct_mesh(
+            list(scans), out_dir, kind=geometry_kind, triangle_budget=budget, voxel_m=voxel, reference=reference
+        )
+    except (PointCloudError, ValueError, OSError) as exc:
         raise click.ClickException(str(exc)) from exc
+    click.echo(f"mesh: {len(result.mesh.faces)} triangles, {len(result.hulls)} convex parts")
     _finish(out_dir, _fuse_options(name, material, tags))
-
-
-# Where the appearance half's `reconstruct_splats(images, out_dir, ...)` may live.
-_APPEARANCE_MODULES = ("appearance", "fit", "splat_pipeline")
-
-
-def _appearance_entry() -> Callable[..., Any]:
-    """The appearance half's `reconstruct_splats(images, out_dir, ...)`."""
-    from importlib import import_module
-
-    for module in _APPEARANCE_MODULES:
-        try:
-            entry = getattr(import_module(f"{__package__}.{module}"), "reconstruct_splats", None)
-        except ImportError:
-            continue
-        if callable(entry):
-            return entry  # type: ignore[no-any-return]
-    raise ImportError("no reconstruct_splats in drivetwin.worlds.reconstruct")
 
 
 @reconstruct.command("splats")
@@ -126,29 +115,40 @@ def _appearance_entry() -> Callable[..., Any]:
               help="a COLMAP model folder (cameras, images, points3D) posing the images")  # fmt: skip
 @click.option("--poses", "poses_json", type=click.Path(exists=True, dir_okay=False, path_type=Path), default=None,
               help="a drivetwin poses JSON file (see views.load_poses_json)")  # fmt: skip
-@click.option("--iterations", default=None, type=click.IntRange(1, 1_000_000), help="fit iterations")
+@click.option("--iterations", default=None, type=click.IntRange(1, 1_000_000), help="fit iterations (default 300)")
+@click.option("--lpips", "lpips_weights", type=click.Path(exists=True, path_type=Path), default=None,
+              help="LPIPS weights (file or folder) for the held-out LPIPS; none are downloaded")  # fmt: skip
 @_NAME
 @_MATERIAL
 @_TAGS
 def splats_command(images_dir: Path, out_dir: Path, colmap_dir: Path | None, poses_json: Path | None,
-                   iterations: int | None, name: str | None, material: str | None, tags: tuple[str, ...]) -> None:  # fmt: skip
+                   iterations: int | None, lpips_weights: Path | None, name: str | None, material: str | None,
+                   tags: tuple[str, ...]) -> None:  # fmt: skip
     """Photographs to fitted Gaussian splats (posed by COLMAP, a poses file, or SfM when neither).
 
     Example: drivetwin reconstruct splats photos/ --out pkg/kerb_stone --colmap photos/sparse/0
     """
+    from .appearance import reconstruct_splats
+    from .colmap_model import load_colmap, run_sfm
+    from .fit import FitConfig
+    from .views import load_poses_json
+
     if colmap_dir is not None and poses_json is not None:
         raise click.UsageError("give --colmap or --poses, not both")
     try:
-        entry = _appearance_entry()
-    except (ImportError, AttributeError) as exc:
-        raise click.ClickException(f"the appearance half is not installed in this build: {exc}") from exc
-    accepted = inspect.signature(entry).parameters
-    wanted = {"colmap": colmap_dir, "poses": poses_json, "iterations": iterations}
-    options = {k: v for k, v in wanted.items() if v is not None and k in accepted}
-    try:
-        entry(images_dir, out_dir, **options)
-    except ValueError as exc:
+        if poses_json is not None:
+            images = load_poses_json(poses_json, image_root=images_dir)
+        elif colmap_dir is not None:
+            images = load_colmap(colmap_dir, images_dir)
+        else:
+            click.echo(f"no poses given: running structure from motion on {images_dir}")
+            images = run_sfm(images_dir, out_dir / "sfm")
+        result = reconstruct_splats(images, out_dir, iterations=iterations or FitConfig().iterations,
+                                    lpips_weights=lpips_weights)  # fmt: skip
+    except (ValueError, OSError) as exc:
         raise click.ClickException(str(exc)) from exc
+    lpips = f", LPIPS {result.lpips:.3f}" if result.lpips is not None else ""
+    click.echo(f"splats: {len(result.splats)}; held-out PSNR {result.psnr:.2f} dB, SSIM {result.ssim:.3f}{lpips}")
     _finish(out_dir, _fuse_options(name, material, tags))
 
 

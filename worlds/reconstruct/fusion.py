@@ -27,7 +27,7 @@ from drivetwin.worlds.catalog import Placement, refresh_catalog
 from drivetwin.worlds.render.splats import Splats
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Bounds, PhysicsProps, Pose, Scene
 
-from .alignment import apply_transform, check_alignment, estimate_similarity, surface_samples
+from .alignment import MIN_COVERAGE, apply_transform, check_alignment, estimate_similarity, surface_samples
 from .package import (
     APPEARANCE_REPORT,
     CAMERAS_FILE,
@@ -53,9 +53,7 @@ F64 = npt.NDArray[np.float64]
 # Splats of an asset farther than this many on-surface tolerances from its mesh are the
 # capture's background, not the object.
 CROP_TOLERANCES = 4.0
-# An estimated similarity replaces the given frames only when it puts at least this much
-# larger a share of splats on the mesh (a frame already right must not be disturbed).
-MIN_INLIER_GAIN = 0.05
+MIN_COVERAGE_TEXT = f"{MIN_COVERAGE:.0%}"
 # A world's Scene bounds reach this far past its mesh.
 WORLD_MARGIN_M = 5.0
 _GEOMETRY_FILES = (MESH_FILE, HEIGHTFIELD_FILE, POINTS_FILE, GEOMETRY_REPORT)
@@ -203,9 +201,14 @@ def fuse(
     alignment, after = np.eye(4), before
     if not before.aligned:
         estimated, check = estimate_similarity(means, surface, seed=seed)
-        if check.inlier_fraction >= before.inlier_fraction + MIN_INLIER_GAIN:
-            alignment, after = estimated, check
-            splats = splats.transformed(alignment)
+        if not check.aligned:
+            raise FusionError(
+                f"the splats do not match the mesh in any frame (they cover {before.coverage:.0%} of it as given, "
+                f"{check.coverage:.0%} after the best similarity; {MIN_COVERAGE_TEXT} needed): are both halves of "
+                "one capture? Crop the splats to the object or pose the images in the LIDAR frame (--poses)"
+            )
+        alignment, after = estimated, check
+        splats = splats.transformed(alignment)
     kept = len(splats)
     if kind == "asset":
         distances = np.asarray(_distances(splats.means.astype(np.float64), surface))
@@ -231,6 +234,8 @@ def fuse(
         "alignment.p90_after_m": after.p90_m,
         "alignment.inliers_before": before.inlier_fraction,
         "alignment.inliers_after": after.inlier_fraction,
+        "alignment.coverage_before": before.coverage,
+        "alignment.coverage_after": after.coverage,
         "alignment.scale": float(np.cbrt(np.linalg.det(alignment[:3, :3]))),
         "splats.total": float(kept),
         "splats.kept": float(len(splats)),

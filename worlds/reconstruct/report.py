@@ -6,7 +6,10 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -16,7 +19,7 @@ from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.hybrid import HybridRenderer
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Bounds, PhysicsProps, Pose, Scene
 
-from .package import WORLD_SCENE, AssetPackage
+from .package import ASSETS_ENV, WORLD_SCENE, AssetPackage
 
 __all__ = ["measure_fps", "preview_scene", "write_report"]
 
@@ -49,6 +52,22 @@ def preview_scene(package: AssetPackage) -> tuple[Scene, Camera]:
     return scene, camera
 
 
+@contextmanager
+def _on_search_path(root: Path) -> Iterator[None]:
+    """The package's category in the catalog for a while, whether or not it is installed."""
+    before = os.environ.get(ASSETS_ENV)
+    os.environ[ASSETS_ENV] = os.pathsep.join([str(root), *([before] if before else [])])
+    refresh_catalog()
+    try:
+        yield
+    finally:
+        if before is None:
+            os.environ.pop(ASSETS_ENV, None)
+        else:
+            os.environ[ASSETS_ENV] = before
+        refresh_catalog()
+
+
 def _world_camera(package: AssetPackage) -> Camera:
     """An elevated view over a world's mesh, from its south-east corner towards its centre."""
     low, high = package.mesh().bounds
@@ -63,27 +82,27 @@ def measure_fps(package: AssetPackage, frames: int = DEFAULT_FRAMES, out_png: Pa
     """Frames per second of the package drawn by the hybrid renderer at 640x360 (after one
     warm-up frame), with the median per-stage milliseconds. An asset is drawn on its own; a
     world with its background splats from its default camera."""
-    refresh_catalog()
-    if package.manifest.kind == "asset":
-        if category(package.name).package is None:
-            raise ValueError(f"{package.name!r} is a built-in category name; rename the package")
-        scene, camera = preview_scene(package)
-        world = MujocoWorld.from_scene(scene)
-        renderer = HybridRenderer(world, attachments={PREVIEW_ASSET_ID: package.splats()})
-    else:
-        scene = Scene.load(package.root / WORLD_SCENE)
-        world = MujocoWorld.from_scene(scene)
-        renderer = HybridRenderer(world, background=package.splats())
-        camera = _world_camera(package)
-    try:
-        first = renderer.render(camera)
-        started = time.perf_counter()
-        timings: list[dict[str, float]] = []
-        for _ in range(frames):
-            timings.append(renderer.render(camera).timings)
-        elapsed = time.perf_counter() - started
-    finally:
-        renderer.close()
+    with _on_search_path(package.root):
+        if package.manifest.kind == "asset":
+            if category(package.name).package is None:
+                raise ValueError(f"{package.name!r} is a built-in category name; rename the package")
+            scene, camera = preview_scene(package)
+            world = MujocoWorld.from_scene(scene)
+            renderer = HybridRenderer(world, attachments={PREVIEW_ASSET_ID: package.splats()})
+        else:
+            scene = Scene.load(package.root / WORLD_SCENE)
+            world = MujocoWorld.from_scene(scene)
+            renderer = HybridRenderer(world, background=package.splats())
+            camera = _world_camera(package)
+        try:
+            first = renderer.render(camera)
+            started = time.perf_counter()
+            timings: list[dict[str, float]] = []
+            for _ in range(frames):
+                timings.append(renderer.render(camera).timings)
+            elapsed = time.perf_counter() - started
+        finally:
+            renderer.close()
     if out_png is not None:
         from drivetwin.worlds.render.hybrid import save_frame
 
@@ -122,20 +141,19 @@ def write_report(root: str | Path, out_dir: str | Path | None = None, frames: in
         "dimensions_m": package.manifest.dimensions.model_dump(),
         "mass_kg": package.manifest.mass,
         "geometry": {
-            "cloud_to_mesh_mean_m": _pick(
-                geometry, "metrics.cloud_to_mesh.mean_m", "cloud_to_mesh.mean_m", "metrics.cloud_to_mesh_mean_m"
-            ),
-            "cloud_to_mesh_p95_m": _pick(
-                geometry, "metrics.cloud_to_mesh.p95_m", "cloud_to_mesh.p95_m", "metrics.cloud_to_mesh_p95_m"
-            ),
-            "chamfer_m": _pick(geometry, "metrics.chamfer_m", "chamfer_m", "metrics.cloud_to_cloud.chamfer_m"),
+            "cloud_to_mesh_mean_m": _pick(geometry, "metrics.cloud_to_mesh.mean"),
+            "cloud_to_mesh_p95_m": _pick(geometry, "metrics.cloud_to_mesh.p95"),
+            "mesh_accuracy_mean_m": _pick(geometry, "metrics.mesh_to_mesh.accuracy.mean"),
+            "mesh_completeness_mean_m": _pick(geometry, "metrics.mesh_to_mesh.completeness.mean"),
             "triangles": _pick(geometry, "triangles.final", "triangles"),
             "hulls": len(package.hull_paths()),
         },
         "appearance": {
-            "psnr_db": _pick(appearance, "metrics.psnr_db", "psnr_db", "held_out.psnr_db", "psnr"),
-            "ssim": _pick(appearance, "metrics.ssim", "ssim", "held_out.ssim"),
-            "lpips": _pick(appearance, "metrics.lpips", "lpips", "held_out.lpips"),
+            "psnr_db": _pick(appearance, "metrics.psnr", "psnr_db"),
+            "ssim": _pick(appearance, "metrics.ssim", "ssim"),
+            "lpips": _pick(appearance, "metrics.lpips", "lpips"),
+            "held_out_views": _pick(appearance, "views.held_out"),
+            "fit_seconds": _pick(appearance, "seconds"),
             "splats": len(package.splats()),
         },
         "alignment": {k.split(".", 1)[1]: v for k, v in metrics.items() if k.startswith("alignment.")},
@@ -163,9 +181,12 @@ def _markdown(report: dict[str, Any]) -> str:
             "cloud-to-mesh mean / p95",
             f"{_fmt(g['cloud_to_mesh_mean_m'], ' m', 4)} / {_fmt(g['cloud_to_mesh_p95_m'], ' m', 4)}",
         ),
-        ("chamfer (cloud to cloud)", _fmt(g["chamfer_m"], " m", 4)),
+        (
+            "mesh to truth: accuracy / completeness (mean)",
+            f"{_fmt(g['mesh_accuracy_mean_m'], ' m', 4)} / {_fmt(g['mesh_completeness_mean_m'], ' m', 4)}",
+        ),
         ("triangles / convex parts", f"{_fmt(g['triangles'])} / {g['hulls']}"),
-        ("held-out PSNR", _fmt(a["psnr_db"], " dB", 2)),
+        (f"held-out PSNR ({_fmt(a['held_out_views'])} views)", _fmt(a["psnr_db"], " dB", 2)),
         ("held-out SSIM", _fmt(a["ssim"])),
         ("held-out LPIPS", _fmt(a["lpips"])),
         ("splats", str(a["splats"])),
