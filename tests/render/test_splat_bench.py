@@ -35,3 +35,17 @@ def test_psnr_of_identical_images_is_infinite_and_falls_with_noise():
     image = np.random.default_rng(0).random((8, 8, 3))
     assert psnr(image, image) == float("inf")
     assert psnr(image, image + 0.1) < psnr(image, image + 0.01)
+
+
+def test_hybrid_benchmark_prints_a_stage_table_and_writes_json(tmp_path, capsys):
+    from drivetwin.worlds.render.bench_hybrid import main as hybrid_main
+
+    out = tmp_path / "hybrid.json"
+    args = ["--width", "96", "--height", "54", "--splats", "800", "--assets", "3", "--frames", "1",
+            "--out", str(out)]  # fmt: skip
+    assert hybrid_main(args) == 0
+    table = capsys.readouterr().out
+    assert "| cpu | 800 |" in table and "compositing ms" in table
+    cpu = json.loads(out.read_text())["results"][0]
+    assert cpu["device"] == "cpu" and cpu["fps"] > 0
+    assert {"mesh_pass", "projection", "binning", "compositing", "blend", "appearance", "total"} <= cpu["ms"].keys()

@@ -32,7 +32,7 @@ from .camera import Camera
 from .rasterize import RasterOutput, available_backends, rasterize
 from .splats import Splats
 
-__all__ = ["main", "psnr", "street_scene"]
+__all__ = ["main", "markdown_table", "psnr", "street_camera", "street_scene"]
 
 # Opacity the probe in DESIGN.md used for the garden capture: dense but not solid.
 SCENE_OPACITY = 0.8
@@ -83,6 +83,17 @@ def psnr(a: npt.NDArray[np.floating], b: npt.NDArray[np.floating]) -> float:
     """Peak signal-to-noise ratio in dB of two images with values in [0, 1]."""
     mse = float(np.mean((np.clip(a, 0, 1) - np.clip(b, 0, 1)) ** 2))
     return float("inf") if mse == 0 else 10.0 * float(np.log10(1.0 / mse))
+
+
+def markdown_table(results: list[dict[str, Any]]) -> str:
+    """The results as a Markdown table: backend, splats, ms per stage, FPS."""
+    stages = ("project", "bin", "composite", "total")
+    lines = ["| backend | splats | " + " | ".join(f"{s} ms" for s in stages) + " | FPS |",
+             "|" + " --- |" * (len(stages) + 3)]  # fmt: skip
+    for r in results:
+        cells = [f"{r['ms'][s]:.1f}" if s in r["ms"] else "" for s in stages]
+        lines.append(f"| {r['backend']} | {r['splats']:,} | " + " | ".join(cells) + f" | {r['fps']:.2f} |")
+    return "\n".join(lines)
 
 
 def _run(backend: str, splats: Splats, camera: Camera) -> RasterOutput:
@@ -169,6 +180,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             ms = result["ms"]
             print(f"{backend:>10} {count:>8} splats: {result['fps']:7.2f} FPS  "
                   + "  ".join(f"{k} {v:.1f} ms" for k, v in ms.items()))  # fmt: skip
+    print(markdown_table(report["results"]))
     with open(args.out, "w") as fh:
         json.dump(report, fh, indent=2)
     print(f"wrote {args.out}")
