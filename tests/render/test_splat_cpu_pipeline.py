@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from drivetwin.worlds.render import _numba_raster
+from drivetwin.worlds.render import _numba_binning, _numba_kernel, _numba_post, _numba_raster
 from drivetwin.worlds.render._numba_binning import radix_argsort
 from drivetwin.worlds.render._torch_raster import cull_behind_depth_limit
 from drivetwin.worlds.render.bench_splats import street_camera, street_scene
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.rasterize import CPU_TILE, rasterize
+from numba.core.caching import FunctionCache
+from numba.core.registry import CPUDispatcher as Dispatcher
 from test_splat_backends import assert_same_image, random_scene
 
 
@@ -70,3 +72,17 @@ def test_gsplat_depth_limit_keeps_a_splat_by_the_limit_at_its_centre_pixel() -> 
     assert 0 < len(kept) < len(splats)
     u = np.floor(30.0 * splats.means[:, 0] / splats.means[:, 2] + 20.0)
     assert len(kept) == int(np.sum((u >= 20) | (splats.means[:, 2] < 3.5)))  # the rest all kept
+
+
+@pytest.mark.parametrize("module", [_numba_kernel, _numba_binning, _numba_post])
+def test_cached_kernels_are_never_numba_parallel(module) -> None:  # type: ignore[no-untyped-def]
+    # parallel=True compiles loop bodies into generated functions of the module "<dynamic>";
+    # numba pickles their environments into the disk cache when they are still alive at save
+    # time, and a later process then fails to load the entry (No module named '<dynamic>').
+    # The kernels are serial and nogil instead; _numba_raster runs them on its own threads.
+    kernels = [v for v in vars(module).values() if isinstance(v, Dispatcher)]
+    assert kernels
+    for kernel in kernels:
+        assert not kernel.targetoptions.get("parallel"), kernel.py_func.__name__
+        assert kernel.targetoptions.get("nogil"), kernel.py_func.__name__
+        assert isinstance(kernel._cache, FunctionCache), kernel.py_func.__name__  # cache=True
