@@ -78,10 +78,11 @@ def _from_reconstruction(reconstruction: Any, image_dir: Path) -> PosedImages:
         views.append(PosedView(image.name, pixels, camera))
     if not views:
         raise ViewsError("the COLMAP model has no registered images")
-    points3d = reconstruction.points3D
-    if len(points3d):
-        points = np.stack([p.xyz for p in points3d.values()]).astype(np.float32)
-        colors = np.stack([p.color for p in points3d.values()]).astype(np.float32) / np.float32(_UINT8_MAX)
+    # In id order: the order they were added, so a written set reads back as it was.
+    points3d = [reconstruction.point3D(i) for i in sorted(reconstruction.point3D_ids())]
+    if points3d:
+        points = np.stack([p.xyz for p in points3d]).astype(np.float32)
+        colors = np.stack([p.color for p in points3d]).astype(np.float32) / np.float32(_UINT8_MAX)
         return PosedImages(views, points, colors)
     return PosedImages(views)
 

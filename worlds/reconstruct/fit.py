@@ -114,6 +114,7 @@ class FitHistory:
     opacity_resets: list[int] = field(default_factory=list)
     seconds: float = 0.0
     device: str = "cpu"
+    initial_count: int = 0
 
     @property
     def seconds_per_iteration(self) -> float:
@@ -182,7 +183,7 @@ def fit_splats(
     targets = [torch.as_tensor(v.image, device=device) for v in images.views]
     background = torch.tensor(config.background, dtype=torch.float32, device=device)
     stats = GradientStats(len(start), device)
-    history = FitHistory(device=str(device))
+    history = FitHistory(device=str(device), initial_count=len(start))
     order: list[int] = []
     t0 = time.perf_counter()
     for iteration in range(1, config.iterations + 1):
