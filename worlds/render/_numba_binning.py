@@ -76,17 +76,19 @@ def radix_argsort(keys: npt.NDArray[np.uint64]) -> npt.NDArray[np.int64]:
 def gather_rows(
     start: int,
     stop: int,
-    ids: npt.NDArray[np.int64],
+    ids: npt.NDArray[np.integer],
     feats: npt.NDArray[np.float64],
     boxes: npt.NDArray[np.int32],
+    index: npt.NDArray[np.int32],
     out_feats: npt.NDArray[np.float64],
     out_boxes: npt.NDArray[np.int32],
     out_index: npt.NDArray[np.int32],
 ) -> None:
-    """Rows ``ids[start:stop]`` of feats and boxes, copied to rows start:stop of the outputs.
+    """Rows ``ids[start:stop]`` of feats, boxes and index, copied to rows start:stop of the outputs.
 
-    Putting visible splats in depth order this way lets binning and compositing stream
-    through memory instead of chasing ids across tables larger than the caches.
+    Used twice: to put visible splats in depth order, then to lay out each (tile, splat)
+    pair in tile order, so binning and compositing stream through memory instead of
+    chasing ids across tables larger than the caches.
     """
     for k in range(start, stop):
         g = ids[k]
@@ -94,7 +96,7 @@ def gather_rows(
             out_feats[k, j] = feats[g, j]
         for j in range(4):
             out_boxes[k, j] = boxes[g, j]
-        out_index[k] = g
+        out_index[k] = index[g]
 
 
 @numba.njit(cache=True, nogil=True, boundscheck=False)
@@ -154,23 +156,21 @@ def scatter_pairs(
     stop: int,
     boxes: npt.NDArray[np.int32],
     feats: npt.NDArray[np.float64],
-    index: npt.NDArray[np.int32],
     depth_column: int,
     tile_far: npt.NDArray[np.float64],
     tile_w: int,
     tile_h: int,
     tiles_x: int,
     cursor: npt.NDArray[np.int64],
-    out_feats: npt.NDArray[np.float64],
-    out_boxes: npt.NDArray[np.int32],
-    out_index: npt.NDArray[np.int32],
+    ids: npt.NDArray[np.int32],
 ) -> None:
-    """Write the pairs ``count_pairs`` counted for rows start:stop at ``cursor`` [T] (advanced).
+    """Write the row numbers of the pairs ``count_pairs`` counted for rows start:stop into
+    ``ids`` at ``cursor`` [T] (advanced).
 
-    Rows are read in depth order and each tile's slots are filled in that order, so the
-    layout is sorted by (tile, depth) and the compositor streams through it.
+    Rows are read in depth order and each tile's slots are filled in that order, so ``ids``
+    is sorted by (tile, depth); `gather_rows` then lays the rows out in that order (small
+    scattered writes here, long sequential ones there: faster than scattering whole rows).
     """
-    n_cols = feats.shape[1]
     for g in range(start, stop):
         z = feats[g, depth_column]
         for ty in range(boxes[g, 2] // tile_h, boxes[g, 3] // tile_h + 1):
@@ -180,11 +180,7 @@ def scatter_pairs(
                     continue
                 slot = cursor[t]
                 cursor[t] = slot + 1
-                for j in range(n_cols):
-                    out_feats[slot, j] = feats[g, j]
-                for j in range(4):
-                    out_boxes[slot, j] = boxes[g, j]
-                out_index[slot] = index[g]
+                ids[slot] = g
 
 
 @numba.njit(cache=True, nogil=True)

@@ -20,6 +20,7 @@ import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -82,6 +83,27 @@ class KernelThreads:
         return [(int(a), int(b)) for a, b in itertools.pairwise(bounds)]
 
 
+class _Scratch(threading.local):
+    """Per-thread scratch arrays reused from frame to frame (intermediates only, never outputs).
+
+    At 1M splats the intermediates are a few hundred MB; allocating them afresh costs a page
+    fault per 4 kB on first touch every frame.
+    """
+
+    def __init__(self) -> None:
+        self.buffers: dict[str, npt.NDArray[Any]] = {}
+
+    def take(self, name: str, shape: tuple[int, ...], dtype: type[Any]) -> npt.NDArray[Any]:
+        """An uninitialised array of ``shape`` backed by the named buffer (grown as needed)."""
+        size = int(np.prod(shape))
+        buffer = self.buffers.get(name)
+        if buffer is None or buffer.dtype != dtype or buffer.size < size:
+            buffer = np.empty(max(size, 1), dtype)
+            self.buffers[name] = buffer
+        return buffer[:size].reshape(shape)
+
+
+_scratch = _Scratch()
 _threads: KernelThreads | None = None
 _threads_lock = threading.Lock()
 
@@ -118,9 +140,9 @@ def project_splats(splats: Splats, camera: Camera) -> ProjectedSplats:
     t0 = time.perf_counter()
     pool = kernel_threads()
     n = len(splats)
-    feats = np.empty((n, kernel.N_FEATURES), np.float64)
-    boxes = np.empty((n, 4), np.int32)
-    visible = np.empty(n, np.bool_)
+    feats = _scratch.take("project_feats", (n, kernel.N_FEATURES), np.float64)
+    boxes = _scratch.take("project_boxes", (n, 4), np.int32)
+    visible = _scratch.take("project_visible", (n,), np.bool_)
     view = np.ascontiguousarray(camera.world_to_camera, dtype=np.float64)
     intrinsics = np.array([camera.fx, camera.fy, camera.cx, camera.cy], np.float64)
     size = np.array([camera.width, camera.height], np.int64)
@@ -138,12 +160,14 @@ def project_splats(splats: Splats, camera: Camera) -> ProjectedSplats:
     depth_bits = np.ascontiguousarray(feats[ids, kernel.DEPTH]).view(np.uint64)
     order = ids[binning.radix_argsort(depth_bits)]
     m = len(order)
+    ids_as_index = np.arange(n, dtype=np.int32)
     out_feats = np.empty((m, kernel.N_FEATURES), np.float64)
     out_boxes = np.empty((m, 4), np.int32)
     out_index = np.empty(m, np.int32)
 
     def gather(start: int, stop: int) -> Callable[[], None]:
-        return lambda: binning.gather_rows(start, stop, order, feats, boxes, out_feats, out_boxes, out_index)
+        return lambda: binning.gather_rows(start, stop, order, feats, boxes, ids_as_index, out_feats, out_boxes,
+                                           out_index)  # fmt: skip
 
     pool.run([gather(a, b) for a, b in pool.slices(m)])
     if not from_dc:
@@ -193,17 +217,23 @@ def composite_splats(
     # Each slice writes after the earlier (nearer) slices' pairs of the same tile.
     cursors = offsets[:-1] + np.cumsum(counts, axis=0) - counts
     pairs = int(offsets[-1])
-    tile_feats = np.empty((pairs, kernel.N_FEATURES), np.float64)
-    tile_boxes = np.empty((pairs, 4), np.int32)
-    tile_index = np.empty(pairs, np.int32)
+    ids = _scratch.take("pair_ids", (pairs,), np.int32)
 
     def scatter(k: int) -> Callable[[], None]:
         a, b = slices[k]
-        return lambda: binning.scatter_pairs(a, b, boxes, feats, index, kernel.DEPTH, tile_far, tile_w,
-                                             tile_h, tiles_x, cursors[k], tile_feats, tile_boxes,
-                                             tile_index)  # fmt: skip
+        return lambda: binning.scatter_pairs(a, b, boxes, feats, kernel.DEPTH, tile_far, tile_w, tile_h, tiles_x,
+                                             cursors[k], ids)  # fmt: skip
 
     pool.run([scatter(k) for k in range(len(slices))])
+    tile_feats = _scratch.take("tile_feats", (pairs, kernel.N_FEATURES), np.float64)
+    tile_boxes = _scratch.take("tile_boxes", (pairs, 4), np.int32)
+    tile_index = _scratch.take("tile_index", (pairs,), np.int32)
+
+    def gather(start: int, stop: int) -> Callable[[], None]:
+        return lambda: binning.gather_rows(start, stop, ids, feats, boxes, index, tile_feats, tile_boxes,
+                                           tile_index)  # fmt: skip
+
+    pool.run([gather(a, b) for a, b in pool.slices(pairs)])
     t1 = time.perf_counter()
     h, w = camera.height, camera.width
     index_image = np.empty((h, w), np.int32)

@@ -7,6 +7,12 @@ splat behind the mesh surface at a pixel is dropped there; (4) the mesh colour (
 where no mesh is) is blended under the splats with the transmittance they leave:
 rgb = rgb_splat + T * rgb_mesh; (5) the environment's weather and exposure are applied.
 A splat asset's own MuJoCo geoms (its collision proxy) are not drawn.
+
+With the CPU rasterizer, (1) runs on a thread of its own while (3) projects and sorts the
+splats, and (3) then culls splats behind each tile's mesh before compositing. Bodies that
+did not move keep their posed splats from the last frame. Without a capture, the scene's
+buildings get procedural facade splats (`procedural.facade_splats`). Cameras live in
+`viewpoints`, procedural splats in `procedural`; both are re-exported here.
 """
 
 from __future__ import annotations
