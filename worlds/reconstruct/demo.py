@@ -28,9 +28,9 @@ LIDAR_CHANNELS, LIDAR_RESOLUTION_DEG = 64, 0.3
 DEMO_VOXEL_M = 0.02
 
 
-def write_capture(folder: Path, *, views: int = 12, seed: int = 0) -> tuple[list[Path], Path]:
-    """Write LIDAR scans (scan_K.npy, [N,3] metres) and posed photographs (poses.json and
-    images/) of the demo scene into `folder`; the scan paths and the poses file."""
+def write_capture(folder: Path, *, views: int = 12, seed: int = 0) -> tuple[list[Path], Path, Path]:
+    """Write LIDAR scans (scan_K.npy, [N,3] metres), posed photographs (poses.json and
+    images/) and the true mesh of the group (truth.obj) into `folder`; their paths."""
     from .capture_lidar import capture_scene as lidar_capture
     from .capture_views import capture_ring
     from .capture_views import capture_scene as demo_scene
@@ -49,10 +49,16 @@ def write_capture(folder: Path, *, views: int = 12, seed: int = 0) -> tuple[list
         path = folder / f"scan_{index}.npy"
         np.save(path, points[near & (points[:, 2] > GROUND_CUT_M)])
         scans.append(path)
+    # The truth the scans are measured against: the group's surfaces above the ground.
+    normals = [(0, 0, 1), (1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0)]
+    cuts = [(0, 0, GROUND_CUT_M), *[tuple(-GROUP_RADIUS_M * np.asarray(n)) for n in normals[1:]]]
+    truth = lidar.truth.slice_plane(cuts, normals)
+    truth_path = folder / "truth.obj"
+    truth.export(truth_path)
     photos = capture_ring(scene=scene, per_ring=max(views // 2, 2), seed=seed)
     poses = folder / "poses.json"
     write_poses_json(photos.images, poses)
-    return scans, poses
+    return scans, poses, truth_path
 
 
 @click.command("demo")
@@ -70,9 +76,9 @@ def demo_command(ctx: click.Context, out_dir: Path, iterations: int, views: int)
 
     capture = out_dir / "capture"
     package = out_dir / DEMO_NAME
-    scans, poses = write_capture(capture, views=views)
+    scans, poses, truth = write_capture(capture, views=views)
     click.echo(f"capture: {len(scans)} LIDAR scans and {poses} in {capture}")
-    ctx.invoke(mesh_command, scans=tuple(scans), out_dir=package, kind="object", budget=20_000, voxel=DEMO_VOXEL_M, reference=None, name=DEMO_NAME,
+    ctx.invoke(mesh_command, scans=tuple(scans), out_dir=package, kind="object", budget=20_000, voxel=DEMO_VOXEL_M, reference=truth, name=DEMO_NAME,
                material="furniture", tags=("street furniture",))  # fmt: skip
     ctx.invoke(splats_command, images_dir=poses.parent, out_dir=package, colmap_dir=None, poses_json=poses,
                iterations=iterations, lpips_weights=None, name=DEMO_NAME, material="furniture", tags=("street furniture",))  # fmt: skip

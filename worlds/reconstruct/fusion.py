@@ -210,9 +210,12 @@ def fuse(
         alignment, after = estimated, check
         splats = splats.transformed(alignment)
     kept = len(splats)
+    kept_median = after.median_m
     if kind == "asset":
         distances = np.asarray(_distances(splats.means.astype(np.float64), surface))
-        splats = splats.subset(distances <= CROP_TOLERANCES * after.tolerance_m)
+        on_object = distances <= CROP_TOLERANCES * after.tolerance_m
+        splats = splats.subset(on_object)
+        kept_median = float(np.median(distances[on_object])) if on_object.any() else float("nan")
         if not len(splats):
             raise FusionError("no splat lies on the mesh, even after alignment: are the halves of one object?")
 
@@ -232,6 +235,7 @@ def fuse(
         "alignment.median_before_m": before.median_m,
         "alignment.median_after_m": after.median_m,
         "alignment.p90_after_m": after.p90_m,
+        "alignment.median_kept_m": kept_median,
         "alignment.inliers_before": before.inlier_fraction,
         "alignment.inliers_after": after.inlier_fraction,
         "alignment.coverage_before": before.coverage,

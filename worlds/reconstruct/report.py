@@ -19,7 +19,7 @@ from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.hybrid import HybridRenderer
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Bounds, PhysicsProps, Pose, Scene
 
-from .package import ASSETS_ENV, WORLD_SCENE, AssetPackage
+from .package import ASSETS_ENV, POINTS_FILE, WORLD_SCENE, AssetPackage
 
 __all__ = ["measure_fps", "preview_scene", "write_report"]
 
@@ -115,6 +115,20 @@ def measure_fps(package: AssetPackage, frames: int = DEFAULT_FRAMES, out_png: Pa
     return result
 
 
+def _own_cloud_to_mesh(package: AssetPackage) -> dict[str, float] | None:
+    """Distances from the package's LIDAR points to its mesh (how well the surface fits the
+    scan when no true mesh was given), or None without points."""
+    import trimesh
+
+    from .geometry_metrics import cloud_to_mesh
+
+    path = package.root / POINTS_FILE
+    if not path.is_file():
+        return None
+    cloud: Any = trimesh.load(path, process=False)
+    return cloud_to_mesh(cloud.vertices, package.mesh())
+
+
 def _pick(report: dict[str, Any], *paths: str) -> Any:
     """The first value found at one of the dotted `paths` in a nested report, else None."""
     for path in paths:
@@ -143,6 +157,7 @@ def write_report(root: str | Path, out_dir: str | Path | None = None, frames: in
         "geometry": {
             "cloud_to_mesh_mean_m": _pick(geometry, "metrics.cloud_to_mesh.mean"),
             "cloud_to_mesh_p95_m": _pick(geometry, "metrics.cloud_to_mesh.p95"),
+            "own_cloud_to_mesh": _own_cloud_to_mesh(package),
             "mesh_accuracy_mean_m": _pick(geometry, "metrics.mesh_to_mesh.accuracy.mean"),
             "mesh_completeness_mean_m": _pick(geometry, "metrics.mesh_to_mesh.completeness.mean"),
             "triangles": _pick(geometry, "triangles.final", "triangles"),
@@ -175,6 +190,7 @@ def _fmt(value: Any, unit: str = "", digits: int = 3) -> str:
 
 def _markdown(report: dict[str, Any]) -> str:
     g, a, r, al = report["geometry"], report["appearance"], report["render"], report["alignment"]
+    own = g["own_cloud_to_mesh"] or {}
     size = report["dimensions_m"]
     rows = [
         (
@@ -190,7 +206,12 @@ def _markdown(report: dict[str, Any]) -> str:
         ("held-out SSIM", _fmt(a["ssim"])),
         ("held-out LPIPS", _fmt(a["lpips"])),
         ("splats", str(a["splats"])),
-        ("splats to mesh, median (after alignment)", _fmt(al.get("median_after_m"), " m", 4)),
+        (
+            "LIDAR cloud to its own mesh: mean / p95",
+            f"{_fmt(own.get('mean'), ' m', 4)} / {_fmt(own.get('p95'), ' m', 4)}",
+        ),
+        ("kept splats to mesh, median", _fmt(al.get("median_kept_m"), " m", 4)),
+        ("mesh covered by splats", _fmt(al.get("coverage_after"), "", 3)),
         ("alignment scale applied to splats", _fmt(al.get("scale"), "", 4)),
         (f"hybrid renderer FPS ({int(r['width'])}x{int(r['height'])})", _fmt(r["fps"], "", 1)),
     ]
