@@ -294,7 +294,7 @@ class AssetPackage:
 
     def mean_colour(self) -> tuple[float, float, float]:
         """The splats' mean base colour (0..1), used for the collision proxy's rgba."""
-        sh = self.splats().sh
+        sh = package_splats(self.root).sh  # cached: the catalog asks on every discovery
         if not len(sh):
             return (0.5, 0.5, 0.5)
         r, g, b = (float(v) for v in np.clip(0.5 + SH_C0 * sh[:, 0].mean(axis=0), 0.0, 1.0))
