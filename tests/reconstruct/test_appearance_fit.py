@@ -20,18 +20,19 @@ from drivetwin.worlds.reconstruct.lpips import LpipsWeightsError
 from drivetwin.worlds.reconstruct.views import PosedImages
 from drivetwin.worlds.render.splats import Splats
 
-ITERATIONS = 80
+ITERATIONS = 60
 HELD_OUT_EVERY = 5
-# Measured on this capture (seed 0): held-out PSNR 15.8 dB from the seed points, 19.8 dB after
-# 80 iterations; the bounds leave about 1.5 dB of margin for other CPUs and BLAS builds.
-MIN_HELD_OUT_PSNR = 18.0
-MIN_PSNR_GAIN = 2.5
-# A short run: 3DGS's rates, with colour and means faster and one densification at 40.
+# Measured on this capture (seed 0): held-out PSNR 15.75 dB from the seed points, 18.74 dB
+# after 60 iterations (19.8 after 80); the bounds leave about 1 dB of margin for other CPUs
+# and BLAS builds.
+MIN_HELD_OUT_PSNR = 17.5
+MIN_PSNR_GAIN = 2.0
+# A short run: 3DGS's rates, with colour and means faster and one densification at 30.
 SHORT_RUN = FitConfig(
     iterations=ITERATIONS,
-    densify_from=40,
-    densify_until=60,
-    densify_every=40,
+    densify_from=30,
+    densify_until=40,
+    densify_every=30,
     grad_threshold=1e-3,
     max_splats=1000,
     lr_sh_dc=0.01,
@@ -68,10 +69,10 @@ def test_the_loss_decreases_over_the_fit(result: AppearanceResult) -> None:
 def test_densification_changes_the_splat_count_as_it_reports(result: AppearanceResult) -> None:
     history = result.history
     (change,) = history.changes
-    assert change.iteration == 40 and change.split + change.cloned > 0 and change.pruned > 0
-    before = history.splats[38]
+    assert change.iteration == 30 and change.split + change.cloned > 0 and change.pruned > 0
+    before = history.splats[28]
     # Clones add one splat, splits replace one by two, prunes remove one.
-    assert change.count == before + change.cloned + change.split - change.pruned == history.splats[39]
+    assert change.count == before + change.cloned + change.split - change.pruned == history.splats[29]
     assert len(result.splats) == history.splats[-1] <= SHORT_RUN.max_splats
 
 

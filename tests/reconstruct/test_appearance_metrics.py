@@ -85,9 +85,9 @@ def test_metrics_refuse_images_of_different_shapes() -> None:
 
 
 def test_lpips_without_weights_says_how_to_get_them(tmp_path: Path) -> None:
-    with pytest.raises(LpipsWeightsError, match="alex.pth"):
+    with pytest.raises(LpipsWeightsError, match=r"alex\.pth"):
         load_lpips(None)
-    with pytest.raises(LpipsWeightsError, match="do not exist.*alexnet-owt"):
+    with pytest.raises(LpipsWeightsError, match=r"do not exist.*alexnet-owt"):
         load_lpips(tmp_path / "missing")
 
 
@@ -95,7 +95,7 @@ def test_lpips_refuses_weights_that_lack_the_heads(tmp_path: Path) -> None:
     torch.manual_seed(0)
     backbone = {k: v for k, v in AlexLPIPS().state_dict().items() if k.startswith("features.")}
     torch.save(backbone, tmp_path / "alexnet.pth")
-    with pytest.raises(LpipsWeightsError, match="lack lin0.model.1.weight"):
+    with pytest.raises(LpipsWeightsError, match=r"lack lin0\.model\.1\.weight"):
         load_lpips(tmp_path / "alexnet.pth")
 
 

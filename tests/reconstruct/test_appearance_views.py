@@ -75,7 +75,7 @@ def test_a_distorted_colmap_camera_is_refused_with_a_way_out(tmp_path: Path) -> 
         for p in (line.split() for line in cameras.read_text().splitlines())
     ]
     cameras.write_text("\n".join(lines) + "\n")
-    with pytest.raises(ViewsError, match="OPENCV with distortion.*undistort"):
+    with pytest.raises(ViewsError, match=r"OPENCV with distortion.*undistort"):
         load_colmap(tmp_path / "sparse", tmp_path / "images")
 
 
@@ -144,3 +144,12 @@ def test_the_synthetic_capture_gives_posed_views_depths_and_points_on_the_surfac
     p = cam.world_to_camera @ np.append(points[0], 1.0)
     u, v = cam.fx * p[0] / p[2] + cam.cx, cam.fy * p[1] / p[2] + cam.cy
     assert depth[int(v), int(u)] == pytest.approx(p[2], abs=1e-3)
+
+
+def test_sfm_on_textureless_photographs_says_it_posed_nothing(tmp_path: Path) -> None:
+    # The synthetic scene's flat-coloured geoms give SIFT too few features to register views:
+    # pycolmap runs extraction, matching and mapping, and the failure is a typed error.
+    capture = capture_ring(width=128, height=96, per_ring=6, heights=(1.6,), points_per_view=5)
+    write_poses_json(capture.images, tmp_path / "poses.json")
+    with pytest.raises(ViewsError, match="posed no images"):
+        run_sfm(tmp_path / "images", tmp_path / "work", num_threads=2)
