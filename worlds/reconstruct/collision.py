@@ -143,14 +143,15 @@ def _fill_holes(heights: F64) -> F64:
         return heights
     if known.sum() < 3:
         raise CollisionError("too few ground cells to build a height field; use a larger cell or more points")
-    rows, cols = np.indices(heights.shape)
-    at = np.stack([rows[known], cols[known]], axis=1)
+    grid = np.indices(heights.shape)
+    row, col = grid[0], grid[1]
+    at = np.stack([row[known], col[known]], axis=1)
     holes = ~known
     filled = heights.copy()
-    filled[holes] = griddata(at, heights[known], (rows[holes], cols[holes]), method="linear")
+    filled[holes] = griddata(at, heights[known], (row[holes], col[holes]), method="linear")
     still = ~np.isfinite(filled)
     if still.any():
-        filled[still] = griddata(at, heights[known], (rows[still], cols[still]), method="nearest")
+        filled[still] = griddata(at, heights[known], (row[still], col[still]), method="nearest")
     return filled
 
 
@@ -170,7 +171,7 @@ def heightfield_from_points(
         raise CollisionError(f"a height field needs at least 3 ground points, got {len(ground)}")
     low = ground[:, :2].min(axis=0) if bounds is None else np.array(bounds[:2], dtype=np.float64)
     high = ground[:, :2].max(axis=0) if bounds is None else np.array(bounds[2:], dtype=np.float64)
-    cols, rows = (np.floor((high - low) / cell_m).astype(int) + 1).tolist()
+    cols, rows = (int(v) + 1 for v in np.floor((high - low) / cell_m))
     index = _grid_index(ground[:, :2], np.array([*low, 0.0]), cell_m)
     inside = (index[:, 0] >= 0) & (index[:, 0] < cols) & (index[:, 1] >= 0) & (index[:, 1] < rows)
     flat = index[inside, 1] * cols + index[inside, 0]
@@ -188,14 +189,15 @@ def heightfield_from_mesh(mesh: trimesh.Trimesh, *, cell_m: float) -> Heightfiel
     import open3d as o3d
 
     low, high = mesh.bounds[0], mesh.bounds[1]
-    cols, rows = (np.floor((high[:2] - low[:2]) / cell_m).astype(int) + 1).tolist()
+    cols, rows = (int(v) + 1 for v in np.floor((high[:2] - low[:2]) / cell_m))
     ys, xs = np.mgrid[0:rows, 0:cols].astype(np.float64) * cell_m
     top = high[2] + 1.0
     rays = np.zeros((rows * cols, 6), np.float32)
     rays[:, 0], rays[:, 1], rays[:, 2], rays[:, 5] = (xs + low[0]).ravel(), (ys + low[1]).ravel(), top, -1.0
     scene = o3d.t.geometry.RaycastingScene()
-    scene.add_triangles(o3d.core.Tensor(mesh.vertices.astype(np.float32)), o3d.core.Tensor(mesh.faces.astype(np.uint32)))
-    hit = scene.cast_rays(o3d.core.Tensor(rays))["t_hit"].numpy().astype(np.float64)
+    tensor = o3d.core.Tensor.from_numpy
+    scene.add_triangles(tensor(mesh.vertices.astype(np.float32)), tensor(mesh.faces.astype(np.uint32)))
+    hit = scene.cast_rays(tensor(rays))["t_hit"].numpy().astype(np.float64)
     heights = np.where(np.isfinite(hit), top - hit, np.nan).reshape(rows, cols)
     heights = _fill_holes(heights)
     return Heightfield(heights.astype(np.float32), np.array([low[0], low[1], float(heights.min())]), float(cell_m))
@@ -216,14 +218,17 @@ def closed_object_mesh(cloud: PointCloud, *, floor_m: float, voxel_m: float) -> 
     reach = cKDTree(cloud.points[:, :2]).query(floor[:, :2])[0]
     floor = floor[reach <= FLOOR_REACH_VOXELS * voxel_m]
     solid = PointCloud(
-        np.concatenate([cloud.points, floor]), None, np.concatenate([cloud.normals, np.tile([0.0, 0.0, -1.0], (len(floor), 1))])
+        np.concatenate([cloud.points, floor]),
+        None,
+        np.concatenate([cloud.normals, np.tile([0.0, 0.0, -1.0], (len(floor), 1))]),
     )
     mesh, _ = surface.poisson_surface(solid, depth=surface.poisson_depth(solid, voxel_m))
     low[2] = floor_m - voxel_m
     import open3d as o3d
 
     mesh = mesh.crop(o3d.geometry.AxisAlignedBoundingBox(low, high))
-    return surface.to_trimesh(surface.clean_mesh(mesh))
+    closed: trimesh.Trimesh = surface.to_trimesh(surface.clean_mesh(mesh))
+    return closed
 
 
 def convex_parts(
@@ -245,7 +250,7 @@ def convex_parts(
         mcts_nodes=COACD_MCTS_NODES, mcts_max_depth=COACD_MCTS_DEPTH, resolution=COACD_RESOLUTION,
         preprocess_resolution=COACD_PREPROCESS_RESOLUTION,
     )  # fmt: skip
-    hulls = [trimesh.Trimesh(vertices, faces, process=True).convex_hull for vertices, faces in parts]
+    hulls: list[trimesh.Trimesh] = [trimesh.Trimesh(v, f, process=True).convex_hull for v, f in parts]
     return [hull for hull in hulls if hull.volume > 0.0]
 
 

@@ -140,7 +140,9 @@ def reconstruct_clouds(
     folder = out / "collision"
     folder.mkdir(parents=True, exist_ok=True)
     with timer.stage("register"):
-        aligned = registration.register_scans(scans, voxel_m=voxel_m, coarse=coarse) if register and len(scans) > 1 else None
+        aligned = (
+            registration.register_scans(scans, voxel_m=voxel_m, coarse=coarse) if register and len(scans) > 1 else None
+        )
         transforms = registration.Registration([np.eye(4) for _ in scans]) if aligned is None else aligned
         merged, views = registration.merge_registered(scans, transforms, origins)
     with timer.stage("clean"):
@@ -241,7 +243,11 @@ def _report(
             "transforms": [np.round(t, 6).tolist() for t in transforms.transforms],
         },
         "poisson_depth": stats.depth,
-        "triangles": {"poisson": stats.poisson_triangles, "trimmed": stats.trimmed_triangles, "final": stats.final_triangles},
+        "triangles": {
+            "poisson": stats.poisson_triangles,
+            "trimmed": stats.trimmed_triangles,
+            "final": stats.final_triangles,
+        },
         "hulls": len(result.hulls),
         "heightfield": field_info,
         "timings_s": dict(timer.seconds),

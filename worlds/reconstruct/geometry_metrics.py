@@ -63,10 +63,9 @@ def cloud_to_mesh(points: npt.ArrayLike, mesh: trimesh.Trimesh) -> dict[str, flo
     if len(mesh.faces) == 0:
         raise ValueError("the reference mesh has no triangles")
     scene = o3d.t.geometry.RaycastingScene()
-    scene.add_triangles(
-        o3d.core.Tensor(np.asarray(mesh.vertices, np.float32)), o3d.core.Tensor(np.asarray(mesh.faces, np.uint32))
-    )
-    distances = scene.compute_distance(o3d.core.Tensor(query.astype(np.float32))).numpy()
+    tensor = o3d.core.Tensor.from_numpy
+    scene.add_triangles(tensor(np.asarray(mesh.vertices, np.float32)), tensor(np.asarray(mesh.faces, np.uint32)))
+    distances = scene.compute_distance(tensor(query.astype(np.float32))).numpy()
     return distance_summary(distances)
 
 

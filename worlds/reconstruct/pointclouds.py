@@ -139,7 +139,7 @@ def _read_las(path: Path) -> PointCloud:
 
 
 def _read_open3d(path: Path) -> PointCloud:
-    cloud = o3d.io.read_point_cloud(str(path))
+    cloud = o3d.io.read_point_cloud(path)
     if not cloud.has_points():
         raise PointCloudError(f"{path.name}: no points could be read (empty or not a valid {path.suffix} file)")
     return from_open3d(cloud)
@@ -194,7 +194,9 @@ def from_open3d(cloud: Any) -> PointCloud:
         raise PointCloudError("the point cloud is empty (every point was removed or none was read)")
     colors = np.asarray(cloud.colors, dtype=np.float64) if cloud.has_colors() else None
     normals = np.asarray(cloud.normals, dtype=np.float64) if cloud.has_normals() else None
-    return PointCloud(points.copy(), None if colors is None else colors.copy(), None if normals is None else normals.copy())
+    return PointCloud(
+        points.copy(), None if colors is None else colors.copy(), None if normals is None else normals.copy()
+    )
 
 
 def write_ply(cloud: PointCloud, path: str | Path) -> Path:
@@ -203,6 +205,6 @@ def write_ply(cloud: PointCloud, path: str | Path) -> Path:
     if target.suffix.lower() != ".ply":
         raise PointCloudError(f"write_ply writes .ply files, got {target.name!r}")
     target.parent.mkdir(parents=True, exist_ok=True)
-    if not o3d.io.write_point_cloud(str(target), to_open3d(cloud), write_ascii=False):
+    if not o3d.io.write_point_cloud(target, to_open3d(cloud), write_ascii=False):
         raise PointCloudError(f"could not write {target}")
     return target

@@ -152,7 +152,7 @@ def estimate_normals(cloud: PointCloud, *, voxel_m: float, viewpoints: npt.Array
 
 def _fpfh(cloud: o3d.geometry.PointCloud, voxel_m: float) -> o3d.pipelines.registration.Feature:
     search = o3d.geometry.KDTreeSearchParamHybrid(radius=FPFH_RADIUS_VOXELS * voxel_m, max_nn=FPFH_MAX_NEIGHBOURS)
-    return o3d.pipelines.registration.compute_fpfh_feature(cloud, search)
+    return o3d.pipelines.registration.compute_fpfh_feature(cloud, search)  # type: ignore[call-arg]
 
 
 def _coarse_alignment(source: o3d.geometry.PointCloud, target: o3d.geometry.PointCloud, voxel_m: float) -> F64:
