@@ -228,11 +228,3 @@ def write_poses_json(images: PosedImages, path: str | Path, *, image_dir: str = 
     if images.points is not None and images.colors is not None:
         data["points"] = np.concatenate([images.points, images.colors], 1).round(6).tolist()
     target.write_text(json.dumps(data, indent=1), encoding="utf-8")
-
-
-def stack_views(views: Sequence[PosedView]) -> F32:
-    """The views' images stacked [V,H,W,3] (all must share one size)."""
-    shapes = {v.image.shape for v in views}
-    if len(shapes) != 1:
-        raise ViewsError(f"views differ in size: {sorted(shapes)}")
-    return np.stack([v.image for v in views])
