@@ -138,3 +138,24 @@ def test_a_frame_is_saved_with_its_depth_beside_it(world: MujocoWorld, tmp_path)
     assert depth_mm[CENTRE] == pytest.approx(frame.depth[CENTRE] * 1000, abs=1)
     assert np.array_equal(np.load(paths["depth_npy"]), frame.depth)
     assert np.array_equal(np.asarray(Image.open(paths["rgb"])), frame.rgb)
+
+
+def test_a_caller_holding_the_simulation_lock_can_render(world: MujocoWorld) -> None:
+    # The scene is filled on the caller's thread, so a re-entrant simulation lock the
+    # caller already holds does not block the mesh pass (which draws on its own thread).
+    import threading
+
+    lock = threading.RLock()
+    renderer = HybridRenderer(world, background=blob([(5.0, 0.0, 0.0)]), lock=lock)
+    frames = []
+
+    def render_holding_the_lock() -> None:
+        with lock:
+            frames.append(renderer.render(CAMERA, NOON))
+
+    worker = threading.Thread(target=render_holding_the_lock, daemon=True)
+    worker.start()
+    worker.join(timeout=60)
+    assert not worker.is_alive(), "render deadlocked on the caller's own lock"
+    assert _red(frames[0].rgb.astype(np.float32) / 255)[CENTRE]
+    renderer.close()

@@ -209,6 +209,7 @@ class HybridRenderer:
         self.mesh_pass = MeshPass(shadows=shadows, antialias=antialias)
         self._posing = _PosedSplats()
         self._mesh_thread: ThreadPoolExecutor | None = None
+        self._frame_lock = threading.Lock()
 
     def close(self) -> None:
         """Free the GL resources and the mesh-pass thread."""
@@ -235,9 +236,10 @@ class HybridRenderer:
     def compose(self, camera: Camera, environment: Environment | None = None) -> Composite:
         """Steps 1-4 of a frame (meshes, posed splats, depth test, blend), before weather.
 
-        With the numba backend the mesh pass draws on its own thread while the splats are
-        projected and depth-sorted (both release the GIL); binning and compositing, which
-        need the mesh depth, follow.
+        MuJoCo's scene is filled on this thread (under ``lock``); with the numba backend the
+        mesh pass then draws on its own thread while the splats are projected and
+        depth-sorted (both release the GIL); binning and compositing, which need the mesh
+        depth, follow.
         """
         t0 = time.perf_counter()
         world = self.world
@@ -256,22 +258,23 @@ class HybridRenderer:
         backend = self._resolved_backend()
         timings: dict[str, float] = {"pose": 1e3 * (t1 - t0)}
         raster = None
-        if splats is not None and backend == "numba":
-            if self._mesh_thread is None:
-                self._mesh_thread = ThreadPoolExecutor(1, thread_name_prefix="drivetwin-mesh")
-            mesh_job = self._mesh_thread.submit(self.mesh_pass.render, model, data, camera, lock=self.lock,
-                                                hidden_bodies=hidden, scene_hook=hook)  # fmt: skip
-            try:
-                projected = project_splats(splats, camera)
-            finally:
-                t_wait = time.perf_counter()
-                mesh = mesh_job.result()
-            timings["mesh_wait"] = 1e3 * (time.perf_counter() - t_wait)
-            raster = composite_splats(projected, camera, mesh.depth, INDEX_MIN_ALPHA, False)
-        else:
-            mesh = self.mesh_pass.render(model, data, camera, lock=self.lock, hidden_bodies=hidden, scene_hook=hook)
-            if splats is not None:
-                raster = rasterize(splats, camera, background=None, depth_limit=mesh.depth, backend=backend)
+        with self._frame_lock:  # one frame at a time: fill and draw come in pairs
+            self.mesh_pass.fill(model, data, camera, lock=self.lock, hidden_bodies=hidden, scene_hook=hook)
+            if splats is not None and backend == "numba":
+                if self._mesh_thread is None:
+                    self._mesh_thread = ThreadPoolExecutor(1, thread_name_prefix="drivetwin-mesh")
+                mesh_job = self._mesh_thread.submit(self.mesh_pass.draw)
+                try:
+                    projected = project_splats(splats, camera)
+                finally:
+                    t_wait = time.perf_counter()
+                    mesh = mesh_job.result()
+                timings["mesh_wait"] = 1e3 * (time.perf_counter() - t_wait)
+                raster = composite_splats(projected, camera, mesh.depth, INDEX_MIN_ALPHA, False)
+            else:
+                mesh = self.mesh_pass.draw()
+                if splats is not None:
+                    raster = rasterize(splats, camera, background=None, depth_limit=mesh.depth, backend=backend)
         t3 = time.perf_counter()
         rgb, depth, layer = self._blend(camera, look, lamps, mesh, raster)
         t4 = time.perf_counter()

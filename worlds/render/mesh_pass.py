@@ -125,21 +125,26 @@ class MeshPass:
         self.samples = ANTIALIAS_SAMPLES if antialias else 0
         self.max_geom = max_geom
         self._gl: Any = None
-        self._model: mujoco.MjModel | None = None
+        self._model: mujoco.MjModel | None = None  # the model the GL context was made for
         self._context: mujoco.MjrContext | None = None
         self._scene: mujoco.MjvScene | None = None
+        self._scene_model: mujoco.MjModel | None = None
+        self._filled: tuple[mujoco.MjModel, Camera, float] | None = None
         self._option = mujoco.MjvOption()
-        self._thread_lock = threading.Lock()
+        self._thread_lock = threading.RLock()
 
     # Set-up ---------------------------------------------------------------------------------
-    def _prepare(self, model: mujoco.MjModel, width: int, height: int) -> None:
+    def _check_size(self, model: mujoco.MjModel, width: int, height: int) -> None:
         buffer = (int(model.vis.global_.offwidth), int(model.vis.global_.offheight))
         if width > buffer[0] or height > buffer[1]:
             raise MeshPassError(
                 f"image {width}x{height} exceeds the model's offscreen buffer "
                 f"{buffer[0]}x{buffer[1]}; render smaller or raise visual.global offwidth/offheight"
             )
-        if self._model is not model:
+
+    def _prepare_context(self, model: mujoco.MjModel) -> mujoco.MjrContext:
+        """The render context for ``model`` (GL current), rebuilt only when the model changes."""
+        if self._model is not model or self._context is None:
             if self._context is not None:
                 self._context.free()
             # The render context reads its multisampling from the model; set it just for this.
@@ -153,8 +158,8 @@ class MeshPass:
             mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN.value, self._context)
             # Reversed Z (1 at near, 0 at far) keeps float depth precise far from the camera.
             self._context.readDepthMap = mujoco.mjtDepthMap.mjDEPTH_ZEROFAR
-            self._scene = mujoco.MjvScene(model, maxgeom=self.max_geom)
             self._model = model
+        return self._context
 
     def close(self) -> None:
         """Free the GL resources (the pass can be used again afterwards)."""
@@ -164,7 +169,8 @@ class MeshPass:
                     if self._context is not None:
                         self._context.free()
                 self._gl.free()
-            self._gl, self._context, self._scene, self._model = None, None, None, None
+            self._gl, self._context, self._model = None, None, None
+            self._scene, self._scene_model, self._filled = None, None, None
 
     # Rendering ------------------------------------------------------------------------------
     def render(
@@ -177,7 +183,7 @@ class MeshPass:
         hidden_bodies: Collection[int] = (),
         scene_hook: SceneHook | None = None,
     ) -> MeshImage:
-        """Draw ``model``/``data`` through ``camera``.
+        """Draw ``model``/``data`` through ``camera``: `fill`, then `draw`.
 
         Args:
             model, data: the MuJoCo world; only read (never stepped or edited).
@@ -189,49 +195,74 @@ class MeshPass:
             scene_hook: called with the filled MjvScene before drawing (lights, extra geoms).
         """
         with self._thread_lock:
-            if self._gl is None:
-                buffer = (int(model.vis.global_.offwidth), int(model.vis.global_.offheight))
-                self._gl = _context_class()(*buffer)
-            # Current only while drawing, so another thread can use this pass next time.
-            with self._gl.as_current():
-                return self._render(model, data, camera, lock, hidden_bodies, scene_hook)
+            self.fill(model, data, camera, lock=lock, hidden_bodies=hidden_bodies, scene_hook=scene_hook)
+            return self.draw()
 
-    def _render(
+    def fill(
         self,
         model: mujoco.MjModel,
         data: mujoco.MjData,
         camera: Camera,
-        lock: _Locker | AbstractContextManager[Any] | None,
-        hidden_bodies: Collection[int],
-        scene_hook: SceneHook | None,
-    ) -> MeshImage:
+        *,
+        lock: _Locker | AbstractContextManager[Any] | None = None,
+        hidden_bodies: Collection[int] = (),
+        scene_hook: SceneHook | None = None,
+    ) -> None:
+        """First half of `render` (same arguments): copy what to draw out of ``data`` into
+        MuJoCo's scene. No GL is needed, so it runs on the caller's thread (under ``lock``)
+        while `draw` may run on another; the next `fill` waits for nothing, so call them in
+        pairs from one frame loop."""
+        with self._thread_lock:
+            t0 = time.perf_counter()
+            self._check_size(model, camera.width, camera.height)
+            if self._scene is None or self._scene_model is not model:
+                self._scene = mujoco.MjvScene(model, maxgeom=self.max_geom)
+                self._scene_model = model
+            scene = self._scene
+            free_camera = mujoco.MjvCamera()
+            mujoco.mjv_defaultFreeCamera(model, free_camera)
+            with lock if lock is not None else nullcontext():
+                mujoco.mjv_updateScene(model, data, self._option, None, free_camera,
+                                       mujoco.mjtCatBit.mjCAT_ALL.value, scene)  # fmt: skip
+            if hidden_bodies:
+                _hide_bodies(model, scene, hidden_bodies)
+            frustum = gl_camera_frustum(camera)
+            for gl_camera in scene.camera:
+                for name, value in frustum.items():
+                    setattr(gl_camera, name, value)
+            for light in scene.lights[: scene.nlight]:
+                if light.headlight:  # MuJoCo placed it at the free camera; follow ours instead
+                    light.pos, light.dir = frustum["pos"], frustum["forward"]
+            scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = self.shadows
+            # The sky, haze and fog are the appearance code's job (they must cover splats too).
+            scene.flags[mujoco.mjtRndFlag.mjRND_SKYBOX] = False
+            scene.flags[mujoco.mjtRndFlag.mjRND_FOG] = False
+            scene.flags[mujoco.mjtRndFlag.mjRND_HAZE] = False
+            if scene_hook is not None:
+                scene_hook(scene)
+            self._filled = (model, camera, 1e3 * (time.perf_counter() - t0))
+
+    def draw(self) -> MeshImage:
+        """Second half of `render`: draw the scene the last `fill` made and read back RGB and
+        depth. The GL context is current only while drawing, so any thread may call it."""
+        with self._thread_lock:
+            if self._filled is None or self._scene is None:
+                raise MeshPassError("draw() needs a fill() first: it draws the scene fill() made")
+            model, camera, scene_ms = self._filled
+            self._filled = None
+            if self._gl is None:
+                buffer = (int(model.vis.global_.offwidth), int(model.vis.global_.offheight))
+                self._gl = _context_class()(*buffer)
+            with self._gl.as_current():
+                image = self._draw(model, camera, self._scene)
+            image.timings = {"mesh_scene": scene_ms, **image.timings}
+            image.timings["mesh"] += scene_ms
+            return image
+
+    def _draw(self, model: mujoco.MjModel, camera: Camera, scene: mujoco.MjvScene) -> MeshImage:
         width, height = camera.width, camera.height
-        t0 = time.perf_counter()
-        self._prepare(model, width, height)
-        scene, context = self._scene, self._context
-        assert scene is not None and context is not None
-        free_camera = mujoco.MjvCamera()
-        mujoco.mjv_defaultFreeCamera(model, free_camera)
-        with lock if lock is not None else nullcontext():
-            mujoco.mjv_updateScene(model, data, self._option, None, free_camera,
-                                   mujoco.mjtCatBit.mjCAT_ALL.value, scene)  # fmt: skip
-        if hidden_bodies:
-            _hide_bodies(model, scene, hidden_bodies)
-        frustum = gl_camera_frustum(camera)
-        for gl_camera in scene.camera:
-            for name, value in frustum.items():
-                setattr(gl_camera, name, value)
-        for light in scene.lights[: scene.nlight]:
-            if light.headlight:  # MuJoCo placed it at the free camera; follow ours instead
-                light.pos, light.dir = frustum["pos"], frustum["forward"]
-        scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = self.shadows
-        # The sky, haze and fog are the appearance code's job (they must cover splats too).
-        scene.flags[mujoco.mjtRndFlag.mjRND_SKYBOX] = False
-        scene.flags[mujoco.mjtRndFlag.mjRND_FOG] = False
-        scene.flags[mujoco.mjtRndFlag.mjRND_HAZE] = False
-        if scene_hook is not None:
-            scene_hook(scene)
         t1 = time.perf_counter()
+        context = self._prepare_context(model)
         rect = mujoco.MjrRect(0, 0, width, height)
         mujoco.mjr_render(rect, scene, context)
         rgb8 = np.empty((height, width, 3), np.uint8)
@@ -249,8 +280,7 @@ class MeshPass:
         depth32 = np.where(hit, depth, np.inf).astype(np.float32)
         rgb[~hit] = 0.0
         t3 = time.perf_counter()
-        timings = {"mesh_scene": 1e3 * (t1 - t0), "mesh_draw": 1e3 * (t2 - t1),
-                   "mesh_convert": 1e3 * (t3 - t2), "mesh": 1e3 * (t3 - t0)}  # fmt: skip
+        timings = {"mesh_draw": 1e3 * (t2 - t1), "mesh_convert": 1e3 * (t3 - t2), "mesh": 1e3 * (t3 - t1)}
         return MeshImage(rgb=np.ascontiguousarray(rgb), depth=depth32, hit=hit, timings=timings)
 
 
