@@ -17,6 +17,7 @@ buildings get procedural facade splats (`procedural.facade_splats`). Cameras liv
 
 from __future__ import annotations
 
+import functools
 import math
 import threading
 import time
@@ -288,7 +289,7 @@ class HybridRenderer:
     def _resolved_backend(self) -> BackendName:
         if self.backend != "auto":
             return self.backend
-        return cast(BackendName, available_backends()[0])
+        return _auto_backend()
 
     def _background_splats(self) -> Splats | None:
         if self.background == "facades":
@@ -356,6 +357,12 @@ class _PosedSplats:
             self._joined = None if not joined else joined[0] if len(joined) == 1 else Splats.concat(joined)
             self._key = key
         return self._joined
+
+
+@functools.cache
+def _auto_backend() -> BackendName:
+    """The fastest backend here, probed once (a failed `import gsplat` is not cached by Python)."""
+    return cast(BackendName, available_backends()[0])
 
 
 _facade_cache: dict[int, tuple[object, Splats]] = {}
