@@ -73,6 +73,10 @@ class LiveWorld:
             frame = self._renderer.render(camera, session.scene.environment)
             points = Lidar(mount="ego").scan(self.sim.world)
         written = list(save_frame(frame, target).values())
+        # The environment it was drawn in, so that `drivetwin enhance` prompts each frame right.
+        env_path = target.with_name(target.stem + "_env.json")
+        env_path.write_text(session.scene.environment.model_dump_json(indent=1), encoding="utf-8")
+        written.append(env_path)
         cloud = target.with_name(target.stem + "_lidar.ply")
         save_pointcloud(points, cloud)
         written.append(cloud)

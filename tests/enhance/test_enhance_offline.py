@@ -152,6 +152,27 @@ def test_depth_files_and_the_scene_environment_reach_the_enhancer(
     assert all(env == night_rain for env in recorder.envs)
 
 
+def test_a_rendered_session_folder_enhances_each_frame_with_its_own_depth_and_environment(
+    tmp_path: Path, settings: EnhanceSettings, enhancer: FrameEnhancer
+) -> None:
+    """The layout `drivetwin demo` and `chat --render-each` write: step_N.png with
+    step_N_depth.npy, a step_N_depth.png preview and step_N_env.json beside it."""
+    src = tmp_path / "src"
+    src.mkdir()
+    envs = [Environment(weather=Weather(kind="rain", intensity=0.6)), Environment(time_of_day="22:00")]
+    for i, env in enumerate(envs, 1):
+        Image.fromarray(draw_street(seed=i)).save(src / f"step_{i:02d}.png")
+        np.save(src / f"step_{i:02d}_depth.npy", draw_depth())
+        Image.fromarray(np.zeros((8, 8), np.uint8)).save(src / f"step_{i:02d}_depth.png")
+        (src / f"step_{i:02d}_env.json").write_text(env.model_dump_json())
+    Image.fromarray(draw_street()).save(src / "step_01_enhanced.png")
+    recorder = RecordingEnhancer(enhancer)
+    report = enhance_folder(src, tmp_path / "out", settings, progress=False, enhancer=recorder)
+    assert report.frames_total == 2
+    assert recorder.depths == [True, True]
+    assert recorder.envs == envs
+
+
 def test_the_controlnet_enhancer_reads_depth_from_the_folder(
     tmp_path: Path, tiny_sdxl: dict[str, Path]
 ) -> None:

@@ -1,8 +1,11 @@
 """Offline enhancement of a folder of rendered frames, resumable after an interruption.
 
-Layout read from SRC: every PNG/JPEG frame (sorted by name); optional `<stem>.depth.npy`
-beside a frame (float [H, W], metres) for the depth ControlNet; optional `scene.json` whose
-environment builds the prompts. Written to OUT: `<stem>.png` per frame (the enhanced frame,
+Layout read from SRC: every PNG/JPEG frame (sorted by name; the renderer's `*_depth.png`
+previews and earlier `*_enhanced.png` outputs are not frames); optional `<stem>.depth.npy` or
+`<stem>_depth.npy` beside a frame (float [H, W], metres; what `drivetwin chat --render-each`
+and `drivetwin demo` write) for the depth ControlNet and the silhouette check; the
+environment that builds the prompts comes from `<stem>_env.json` beside the frame (written
+per frame by the renderer), else from the folder's `scene.json`. Written to OUT: `<stem>.png` per frame (the enhanced frame,
 or the baseline where the enhancement was rejected), `frames.jsonl` with one record per
 finished frame, and `report.json`. A frame is finished once its record is in frames.jsonl;
 a rerun skips finished frames, so an interrupted run resumes where it stopped.
@@ -28,7 +31,10 @@ from numpy.typing import NDArray
 from PIL import Image
 
 IMAGE_SUFFIXES = (".png", ".jpg", ".jpeg")
-DEPTH_SUFFIX = ".depth.npy"
+DEPTH_SUFFIXES = (".depth.npy", "_depth.npy")
+ENV_SUFFIX = "_env.json"
+# Images beside the frames that are not frames: depth previews and enhanced outputs.
+NOT_FRAME_STEMS = ("_depth", "_enhanced")
 RECORDS_FILE = "frames.jsonl"
 REPORT_FILE = "report.json"
 SCENE_FILE = "scene.json"
@@ -94,7 +100,21 @@ def _read_records(path: Path) -> dict[str, dict[str, Any]]:
 
 
 def _frame_files(src: Path) -> list[Path]:
-    return sorted(p for p in src.iterdir() if p.is_file() and p.suffix.lower() in IMAGE_SUFFIXES)
+    return sorted(
+        p
+        for p in src.iterdir()
+        if p.is_file() and p.suffix.lower() in IMAGE_SUFFIXES and not p.stem.endswith(NOT_FRAME_STEMS)
+    )
+
+
+def _frame_environment(frame: Path, folder_env: Environment | None, override: Environment | None) -> Environment | None:
+    """The environment the frame was rendered in: the override, its own `_env.json`, the folder's."""
+    if override is not None:
+        return override
+    own = frame.with_name(frame.stem + ENV_SUFFIX)
+    if own.exists():
+        return Environment.model_validate_json(own.read_text(encoding="utf-8"))
+    return folder_env
 
 
 def _environment(src: Path, env: Environment | None) -> Environment | None:
@@ -127,9 +147,11 @@ def _mean(records: list[dict[str, Any]], key: str) -> float | None:
 def _load_frame(path: Path) -> tuple[NDArray[np.uint8], NDArray[np.float32] | None]:
     with Image.open(path) as im:
         frame = np.asarray(im.convert("RGB"), dtype=np.uint8)
-    depth_path = path.with_name(path.stem + DEPTH_SUFFIX)
-    depth = np.load(depth_path).astype(np.float32) if depth_path.exists() else None
-    return frame, depth
+    for suffix in DEPTH_SUFFIXES:
+        depth_path = path.with_name(path.stem + suffix)
+        if depth_path.exists():
+            return frame, np.load(depth_path).astype(np.float32)
+    return frame, None
 
 
 def enhance_folder(
@@ -165,7 +187,7 @@ def enhance_folder(
         with records_path.open("a", encoding="utf-8") as log:
             for file in _progress(todo, progress):
                 frame, depth = _load_frame(file)
-                result = worker.enhance(frame, depth, environment)
+                result = worker.enhance(frame, depth, _frame_environment(file, environment, env))
                 target = out / f"{file.stem}.png"
                 _atomic_write(
                     target, lambda h, img=result.image: Image.fromarray(img).save(h, "PNG")

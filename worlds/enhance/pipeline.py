@@ -248,6 +248,6 @@ class FrameEnhancer:
         start = time.perf_counter()
         frame = check_frame(frame)
         candidate = self.repaint(frame, depth, env)
-        score = structure_score(frame, candidate, self.settings, self.depth_estimator)
+        score = structure_score(frame, candidate, self.settings, self.depth_estimator, baseline_depth=depth)
         shown = candidate if score.accepted else frame
         return EnhancedFrame(shown, candidate, score, time.perf_counter() - start)
