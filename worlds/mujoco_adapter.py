@@ -171,7 +171,9 @@ class MujocoWorld:
             self._recompile()
         for asset_id in moved:
             self._place(new[asset_id])
-        if moved and not recompile:
+        if moved:
+            # Placing writes qpos/mocap/body_pos only: frames (xpos) must follow before anyone
+            # renders or ray-casts, with or without a recompile before it.
             self._refresh_kinematics()
         self.scene = scene
         return UpdateStats(

@@ -141,6 +141,8 @@ def test_a_moved_asset_restarts_at_its_new_pose_and_others_keep_state() -> None:
     stats = world.update(moved)
     assert stats.replaced == 1
     assert world.body_pose("cone_1").x == pytest.approx(7.0)
+    # The body's frame (what renderers and ray casts read) follows at once, before any step.
+    np.testing.assert_allclose(world.data.xpos[world.body_id("cone_1")][:2], [7.0, -3.0], atol=1e-9)
     np.testing.assert_array_equal(_free_qvel(world, "bin_1"), before)
 
 
