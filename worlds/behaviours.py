@@ -21,7 +21,10 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
 
-from drivetwin.worlds.mujoco_adapter import MujocoWorld
+import mujoco
+import numpy as np
+from drivetwin.worlds.catalog import category
+from drivetwin.worlds.mujoco_adapter import MujocoWorld, collision_groups
 from drivetwin.worlds.mujoco_bodies import body_kind
 from drivetwin.worlds.routes import (
     CircleRoute,
@@ -30,7 +33,7 @@ from drivetwin.worlds.routes import (
     segment_polyline_intersection,
 )
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, DriveLane, Scene
-from drivetwin.worlds.vehicles import AckermannGeometry, VehicleController, pure_pursuit_curvature
+from drivetwin.worlds.vehicles import AckermannGeometry, VehicleController, VehicleState, pure_pursuit_curvature
 
 __all__ = [
     "BehaviourRunner",
@@ -38,6 +41,7 @@ __all__ = [
     "VehicleParkedRunner",
     "VehicleRouteRunner",
     "WalkerRouteRunner",
+    "clear_distance",
     "jaywalk_crossing_point",
     "runner_for",
 ]
@@ -48,6 +52,19 @@ LOOKAHEAD_S = 0.8
 LOOKAHEAD_MIN_WHEELBASES = 1.5
 # A vehicle within this distance of the end of an open route has arrived.
 ARRIVAL_M = 1.0
+# Vehicles stop this far short of whatever stands in their path (a cone, a barrier, a
+# pedestrian, another car), planning to brake this hard (m/s², below what the tyres give).
+STOP_GAP_M = 2.0
+BRAKE_DECEL = 2.5
+# Obstacle rays run level this high above the road: over kerbs and road paint, under every
+# catalog obstacle's top (rubble is 0.6 m, cones 0.7 m); at the centre and near both sides.
+SENSE_HEIGHT_M = 0.3
+SENSE_SIDES = (-0.8, 0.0, 0.8)
+# A vehicle looks at least this far ahead, more when its stopping distance is longer.
+MIN_SENSE_M = 8.0
+# A ray that hits the vehicle itself restarts this far past the hit, at most this often.
+RAY_STEP_M = 0.01
+OWN_HITS_SKIPPED = 4
 
 AtEnd = Literal["loop", "stop"]
 StartCondition = Callable[[MujocoWorld, float], bool]
@@ -123,6 +140,10 @@ class VehicleRouteRunner(BehaviourRunner):
         self.vehicle = VehicleController(asset.id, AckermannGeometry.of(asset))
         self.route, self.speed, self.at_end = route, speed, at_end
         self.start = _Start(start)
+        shape = category(asset.category)
+        # From the rear axle (where VehicleState is) to the front bumper, and half the width.
+        self.front_m = (shape.length / 2 + self.vehicle.geometry.wheelbase / 2) * asset.scale
+        self.half_width_m = shape.width / 2 * asset.scale
 
     def bind(self, world: MujocoWorld) -> None:
         self.vehicle.bind(world)
@@ -152,7 +173,61 @@ class VehicleRouteRunner(BehaviourRunner):
             return
         tx, ty = self.route.point(s + self.lookahead())
         curvature = pure_pursuit_curvature(state.x, state.y, state.yaw, tx, ty)
-        self.vehicle.drive(data, self.speed, curvature, dt)
+        self.vehicle.drive(data, self.safe_speed(world, state, tx, ty), curvature, dt)
+
+    def safe_speed(self, world: MujocoWorld, state: VehicleState, tx: float, ty: float) -> float:
+        """The route speed, lowered so the vehicle can stop STOP_GAP_M short of an obstacle.
+
+        Rays go from the front bumper towards the pursuit point, so on a curve they follow
+        the path rather than the heading.
+        """
+        reach = max(MIN_SENSE_M, self.speed**2 / (2 * BRAKE_DECEL) + STOP_GAP_M)
+        gap = clear_distance(world, self.asset_id, state, (tx, ty), self.front_m, self.half_width_m, reach)
+        return min(self.speed, math.sqrt(2 * BRAKE_DECEL * max(0.0, gap - STOP_GAP_M)))
+
+
+def clear_distance(
+    world: MujocoWorld,
+    asset_id: str,
+    state: VehicleState,
+    towards: tuple[float, float],
+    front_m: float,
+    half_width_m: float,
+    reach: float,
+) -> float:
+    """Free distance from a vehicle's front bumper towards `towards`, up to `reach` (metres).
+
+    Level rays from the bumper's centre and near its corners hit collision geometry only
+    (not road paint or visual-only parts); the vehicle's own bodies are never hit.
+    """
+    heading = math.atan2(towards[1] - state.y, towards[0] - state.x)
+    model, data = world.model, world.data
+    own_root = model.body_rootid[world.body_id(asset_id)]
+    cos_h, sin_h = math.cos(state.yaw), math.sin(state.yaw)
+    direction = np.array([math.cos(heading), math.sin(heading), 0.0])
+    groups = collision_groups(model)
+    geom = np.zeros(1, np.int32)
+    nearest = reach
+    for side in SENSE_SIDES:
+        offset = side * half_width_m
+        origin = np.array([
+            state.x + front_m * cos_h - offset * sin_h,
+            state.y + front_m * sin_h + offset * cos_h,
+            SENSE_HEIGHT_M,
+        ])
+        travelled = 0.0
+        # A ray may first graze the vehicle's own bumper or wheel: step past it and cast again.
+        for _ in range(OWN_HITS_SKIPPED):
+            distance = mujoco.mj_ray(model, data, origin, direction, groups, 1, -1, geom)
+            if distance < 0.0 or travelled + distance >= nearest:
+                break
+            if model.body_rootid[model.geom_bodyid[geom[0]]] != own_root:
+                nearest = travelled + distance
+                break
+            step = distance + RAY_STEP_M
+            origin = origin + step * direction
+            travelled += step
+    return float(nearest)
 
 
 class WalkerRouteRunner(BehaviourRunner):

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import mujoco
 import numpy as np
+import numpy.typing as npt
 from drivetwin.worlds.catalog import UnknownCategoryError, category
 from drivetwin.worlds.mujoco_bodies import (
     WHEEL_CORNERS,
@@ -384,3 +385,13 @@ def consistency_problems(scene: Scene, world: MujocoWorld) -> list[str]:
     for asset in scene.all_assets():
         problems.extend(_asset_problems(world, asset))
     return problems
+
+
+def collision_groups(model: mujoco.MjModel) -> npt.NDArray[np.uint8]:
+    """Geom groups that hold collision geometry (visual-only geoms have contype=conaffinity=0)."""
+    groups = np.zeros(6, np.uint8)
+    collides = (model.geom_contype != 0) | (model.geom_conaffinity != 0)
+    for group in np.unique(model.geom_group[collides]):
+        if 0 <= group < 6:
+            groups[group] = 1
+    return groups

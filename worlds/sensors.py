@@ -19,7 +19,7 @@ from typing import Any, Literal
 import mujoco
 import numpy as np
 import numpy.typing as npt
-from drivetwin.worlds.mujoco_adapter import MujocoWorld
+from drivetwin.worlds.mujoco_adapter import MujocoWorld, collision_groups
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.hybrid import Frame, HybridRenderer
 
@@ -142,7 +142,7 @@ class Lidar:
             geom = np.full(count, -1, np.int32)
             dist = np.full(count, -1.0)
             mujoco.mj_multiRay(model, data, origin, np.ascontiguousarray(rays).reshape(-1),
-                               _collision_groups(model), 1, own, geom, dist, None, count,
+                               collision_groups(model), 1, own, geom, dist, None, count,
                                self.range_m)  # fmt: skip
             hit = (geom >= 0) & (dist >= 0.0) & (dist <= self.range_m)
             if own >= 0:
@@ -151,16 +151,6 @@ class Lidar:
                 hit &= model.body_rootid[model.geom_bodyid[np.maximum(geom, 0)]] != root
         points: F64 = origin + rays[hit] * dist[hit, None]
         return points
-
-
-def _collision_groups(model: mujoco.MjModel) -> npt.NDArray[np.uint8]:
-    """Geom groups that hold collision geometry (visual-only geoms have contype=conaffinity=0)."""
-    groups = np.zeros(6, np.uint8)
-    collides = (model.geom_contype != 0) | (model.geom_conaffinity != 0)
-    for group in np.unique(model.geom_group[collides]):
-        if 0 <= group < 6:
-            groups[group] = 1
-    return groups
 
 
 @dataclass

@@ -19,6 +19,8 @@ from drivetwin.worlds.scene import (
 )
 from drivetwin.worlds.simulation import Simulation
 
+# An ego out of the way of the lane tests (the default one waits in the eastbound lane).
+PARKED_AWAY = make_asset("ego", "ego_vehicle", 80.0, 40.0)
 # The skidpad must come within this share of the asked radius (the project's done-when).
 RADIUS_TOLERANCE = 0.10
 
@@ -167,3 +169,23 @@ def test_a_parked_vehicle_stops_when_its_behaviour_becomes_parked() -> None:
     before = sim.pose("car").x
     sim.run_for(1.0)
     assert abs(sim.pose("car").x - before) < 0.05
+
+
+def test_a_lane_car_stops_short_of_a_barrier_in_its_lane_and_leaves_it_where_it_was() -> None:
+    car = make_asset("car", "passenger_car", -60.0, -1.75, behaviour=DriveLane(lane="east", speed=8.0))
+    barrier = make_asset("barrier", "road_barrier", -30.0, -1.75, math.pi / 2)
+    sim = Simulation(make_scene(car, barrier, ego=PARKED_AWAY))
+    sim.run_for(10.0)
+    front = sim.pose("car").x + 4.5 / 2
+    barrier_face = -30.0 - 0.5 / 2
+    assert 0.5 < barrier_face - front < 4.0, "the car should wait a couple of metres short of the barrier"
+    moved = sim.pose("barrier")
+    assert math.hypot(moved.x + 30.0, moved.y + 1.75) < 0.01, "nothing should have hit the barrier"
+
+
+def test_a_lane_car_passes_a_barrier_on_the_sidewalk_at_full_speed() -> None:
+    car = make_asset("car", "passenger_car", -60.0, -1.75, behaviour=DriveLane(lane="east", speed=8.0))
+    barrier = make_asset("barrier", "road_barrier", -30.0, -6.5)
+    sim = Simulation(make_scene(car, barrier, ego=PARKED_AWAY))
+    sim.run_for(8.0)
+    assert sim.pose("car").x > -30.0 + 10.0
