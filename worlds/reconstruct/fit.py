@@ -194,13 +194,15 @@ def fit_splats(
             order = rng.permutation(len(images)).tolist()
         index = order.pop()
         camera = images.views[index].camera
-        out = rasterize_torch(*(params[name] for name in PARAM_NAMES), camera)
+        out = rasterize_torch(
+            params["means"], params["quats"], params["log_scales"], params["opacity_logits"], params["sh"], camera
+        )
         rendered = out.rgb + (1.0 - out.alpha)[..., None] * background
         target = targets[index]
         l1 = (rendered - target).abs().mean()
         loss = (1.0 - config.ssim_weight) * l1 + config.ssim_weight * (1.0 - ssim_torch(rendered, target))
         optimizer.zero_grad(set_to_none=True)
-        loss.backward()
+        loss.backward()  # type: ignore[no-untyped-call]
         sh = params["sh"]
         if sh.shape[1] > 1:
             snapshot = sh.detach()[:, 1:].clone()
@@ -237,10 +239,10 @@ def render_views(
 ) -> list[npt.NDArray[np.float32]]:
     """Images [H,W,3] float32 in 0..1 of ``splats`` through ``cameras`` (the fit's renderer and background)."""
     images = []
-    tensors = [torch.as_tensor(getattr(splats, name)) for name in PARAM_NAMES]
+    means, quats, log_scales, opacity_logits, sh = (torch.as_tensor(getattr(splats, name)) for name in PARAM_NAMES)
     bg = torch.tensor(background, dtype=torch.float32)
     with torch.no_grad():
         for camera in cameras:
-            out = rasterize_torch(*tensors, camera)
+            out = rasterize_torch(means, quats, log_scales, opacity_logits, sh, camera)
             images.append((out.rgb + (1.0 - out.alpha)[..., None] * bg).clamp(0.0, 1.0).numpy())
     return images
