@@ -289,11 +289,20 @@ class MujocoWorld:
         return int(mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, name))
 
 
-def _expected_geoms(asset: AssetInstance) -> list[tuple[str, int, list[float]]]:
-    """(geom name, geom type, size) for every geom the asset's body tree should hold."""
+def _expected_geoms(asset: AssetInstance) -> list[tuple[str, int, list[float] | None]]:
+    """(geom name, geom type, size) for every geom the asset's body tree should hold.
+
+    A packaged (reconstructed) asset holds one mesh geom per convex part; MuJoCo sizes
+    mesh geoms itself, so their size is not checked (None).
+    """
     cat = category(asset.category)
+    if cat.package is not None:
+        from drivetwin.worlds.reconstruct.package import package_hulls
+
+        hulls = package_hulls(cat.package, asset.scale)
+        return [(f"{asset.id}/hull{k}", int(mujoco.mjtGeom.mjGEOM_MESH), None) for k in range(len(hulls))]
     kind = body_kind(asset, cat)
-    expected: list[tuple[str, int, list[float]]] = []
+    expected: list[tuple[str, int, list[float] | None]] = []
     index = 0
     for part in cat.parts:
         geom_type = int(
@@ -358,7 +367,7 @@ def _asset_problems(world: MujocoWorld, asset: AssetInstance) -> list[str]:
             continue
         if model.geom_type[geom] != geom_type:
             problems.append(f"{asset.id}: geom {name} has the wrong shape")
-        elif not np.allclose(model.geom_size[geom], size, atol=SIZE_TOLERANCE_M):
+        elif size is not None and not np.allclose(model.geom_size[geom], size, atol=SIZE_TOLERANCE_M):
             problems.append(f"{asset.id}: geom {name} size {model.geom_size[geom]} != {size}")
     mass = float(model.body_subtreemass[body])
     if not math.isclose(mass, asset.physics.mass, rel_tol=MASS_TOLERANCE):

@@ -11,7 +11,7 @@ from drivetwin.orchestrator.session import Session
 from drivetwin.tools import ToolRegistry
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.campus import build_campus
-from drivetwin.worlds.mujoco_adapter import MujocoWorld
+from drivetwin.worlds.mujoco_adapter import MujocoWorld, consistency_problems
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.hybrid import HybridRenderer, asset_splats
 from drivetwin.worlds.scene import AssetInstance, PhysicsProps, Pose
@@ -61,6 +61,7 @@ def test_the_add_worker_places_a_packaged_asset_and_it_compiles_as_convex_parts(
     assert len(geoms) == len(PIECES)
     assert all(world.model.geom_type[g] == mujoco.mjtGeom.mjGEOM_MESH for g in geoms)
     assert float(world.model.body_subtreemass[body]) == pytest.approx(stone.physics.mass)
+    assert consistency_problems(placed, world) == []
 
 
 def test_a_packaged_asset_rests_on_the_ground_and_a_dropped_body_rests_on_it(placed):
