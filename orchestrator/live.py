@@ -69,6 +69,7 @@ class LiveWorld:
         with self.sim.lock:
             if self._renderer is None:
                 self._renderer = HybridRenderer(self.sim.world)
+            self._attach_packaged_splats(session.scene)
             camera = chase_camera(self.sim.world, "ego", width=FRAME_WIDTH, height=FRAME_HEIGHT)
             frame = self._renderer.render(camera, session.scene.environment)
             points = Lidar(mount="ego").scan(self.sim.world)
@@ -83,6 +84,20 @@ class LiveWorld:
         if self._enhancer is not None:
             written += self._enhance_frame(frame, session, target)
         return written
+
+    def _attach_packaged_splats(self, scene: Scene) -> None:
+        """Reconstructed (packaged) assets are drawn as their own splats, riding on their bodies;
+        their convex parts stay the collision proxy. Built-in assets are drawn as meshes."""
+        from drivetwin.worlds.catalog import category
+        from drivetwin.worlds.render.hybrid import asset_splats
+
+        attachments = self._renderer.attachments
+        wanted = {a.id: a for a in scene.all_assets() if category(a.category).package is not None}
+        for asset_id in [i for i in attachments if i not in wanted]:
+            del attachments[asset_id]
+        for asset_id, asset in wanted.items():
+            if asset_id not in attachments:
+                attachments[asset_id] = asset_splats(asset.category, scale=asset.scale)
 
     def _enhance_frame(self, frame: Any, session: Session, target: Path) -> list[Path]:
         """Hand the frame to the enhancer thread; write whichever enhanced frame is newest.

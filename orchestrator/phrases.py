@@ -11,7 +11,7 @@ import re
 from dataclasses import dataclass
 from functools import cache
 
-from drivetwin.worlds.catalog import catalog
+from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import EGO_ID, Scene
 
 NUMBER_WORDS = {
@@ -71,10 +71,16 @@ class Mention:
     plural: bool
 
 
-@cache
 def _category_phrases() -> tuple[tuple[str, str], ...]:
+    """(phrase, category) for every name and synonym of the catalog as it is now: asset
+    packages found after start-up (a reconstructed asset) are understood at once."""
+    return _phrases_of(tuple(catalog().values()))
+
+
+@cache
+def _phrases_of(categories: tuple[Category, ...]) -> tuple[tuple[str, str], ...]:
     phrases = []
-    for cat in catalog().values():
+    for cat in categories:
         if "ego" in cat.tags:
             continue
         for word in cat.words:

@@ -106,3 +106,18 @@ def test_the_hybrid_renderer_draws_the_packaged_splats(placed):
     # The post's red comes from the splats (the hidden collision hulls are one grey-pink).
     red = (after[..., 0] > 120) & (after[..., 0] > 2 * after[..., 1])
     assert red.sum() > 10
+
+
+def test_a_live_chat_draws_a_placed_package_as_its_own_splats(placed, tmp_path):
+    from drivetwin.orchestrator.live import LiveWorld
+
+    session = Session(placed, ScriptedPlanner(), ToolRegistry.default(plugins=False))
+    live = LiveWorld(session, simulate=True, background=False)
+    try:
+        written = live.render(session, tmp_path / "frame.png")
+        attached = live._renderer.attachments
+    finally:
+        live.close()
+    assert (tmp_path / "frame.png") in written
+    assert set(attached) == {"kerb_stone_1"}
+    assert len(attached["kerb_stone_1"]) == len(asset_splats("kerb_stone"))
