@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import torch
+from drivetwin.worlds.render._torch_raster import rotation_matrices
 from drivetwin.worlds.render.camera import Camera
 
 __all__ = ["PARAM_NAMES", "DensityChange", "GradientStats", "densify_and_prune", "reset_opacity", "view_space_gradient"]
@@ -139,7 +140,7 @@ def densify_and_prune(
         rep = split.repeat(SPLIT_COPIES)
         scales = params["log_scales"][rep].exp()
         offsets = torch.randn(scales.shape, generator=generator, device="cpu").to(device) * scales
-        rot = _rotation_matrices(params["quats"][rep])
+        rot = rotation_matrices(params["quats"][rep])
         extra = {
             "means": torch.cat([params["means"][clone], params["means"][rep] + (rot @ offsets[:, :, None])[:, :, 0]]),
             "log_scales": torch.cat([params["log_scales"][clone], torch.log(scales / SPLIT_SHRINK)]),
@@ -180,14 +181,3 @@ def reset_opacity(params: Params, optimizer: torch.optim.Optimizer, ceiling: flo
     if state is not None:
         state["exp_avg"].zero_()
         state["exp_avg_sq"].zero_()
-
-
-def _rotation_matrices(quats: torch.Tensor) -> torch.Tensor:
-    q = quats / quats.norm(dim=-1, keepdim=True)
-    w, x, y, z = q.unbind(-1)
-    rows = [
-        torch.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-        torch.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-        torch.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
-    ]
-    return torch.stack(rows, -2)

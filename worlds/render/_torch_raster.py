@@ -53,7 +53,8 @@ class TorchRaster:
     timings: dict[str, float]
 
 
-def _rotation_matrices(quats: torch.Tensor) -> torch.Tensor:
+def rotation_matrices(quats: torch.Tensor) -> torch.Tensor:
+    """Rotation matrices [N,3,3] of wxyz quaternions [N,4] (normalised here), differentiable."""
     q = quats / quats.norm(dim=-1, keepdim=True)
     w, x, y, z = q.unbind(-1)
     rows = [
@@ -106,7 +107,7 @@ def rasterize_torch(
     view = torch.tensor(np.array(camera.world_to_camera), dtype=dtype, device=device)
     p_cam = means @ view[:3, :3].T + view[:3, 3]
     x, y, z = p_cam.unbind(-1)
-    rs = _rotation_matrices(quats) * torch.exp(log_scales)[:, None, :]
+    rs = rotation_matrices(quats) * torch.exp(log_scales)[:, None, :]
     cov_cam = view[:3, :3] @ rs @ rs.transpose(1, 2) @ view[:3, :3].T
     fx, fy, cx, cy = camera.fx, camera.fy, camera.cx, camera.cy
     tan_x, tan_y = 0.5 * w / fx, 0.5 * h / fy
