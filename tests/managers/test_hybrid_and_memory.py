@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from drivetwin.orchestrator.backends import BackendUnavailable
+import pytest
+from drivetwin.orchestrator.backends import BackendInfo, BackendUnavailable
 from drivetwin.orchestrator.grounding import Grounder
 from drivetwin.orchestrator.hybrid_planner import HybridPlanner
 from drivetwin.orchestrator.jr_schema import WorldNames, call_schema
@@ -58,6 +59,44 @@ def test_hybrid_sends_a_vague_misspelled_prompt_to_the_llm(campus: Scene, spelli
     assert backend.calls == 2
     assert report.plan is not None and report.plan.trace[0].input == "path: llm"
     assert session.scene.count("traffic_cone") == 1
+
+
+class SizedBackend(ScriptedBackend):
+    """A scripted backend that reports a model size, as real backends do."""
+
+    def __init__(self, answers: list[Any], parameters: int) -> None:
+        super().__init__(answers)
+        self.parameters = parameters
+
+    def describe(self) -> BackendInfo:
+        return BackendInfo(self.name, self.model, parameters=self.parameters)
+
+
+@pytest.mark.parametrize(("parameters", "path", "model_calls"), [(135_000_000, "fast", 0), (9_000_000_000, "llm", 2)])
+def test_an_unsure_rule_plan_is_kept_with_a_small_model_and_handed_to_a_large_one(
+    campus: Scene, spelling_grounder: Grounder, parameters: int, path: str, model_calls: int
+) -> None:
+    backend = SizedBackend(
+        [
+            requirement("add", "trafic conez", "libary"),
+            call("add_asset", category="traffic_cone", location={"relation": "next_to", "target": "Library entrance"}),
+        ],
+        parameters,
+    )
+    session = hybrid_session(campus, backend, spelling_grounder)
+    report = session.submit("add trafic conez near the libary")  # the rules repair two typos: a guess
+    assert report.ok, report.error
+    assert report.plan is not None and report.plan.trace[0].input == f"path: {path}"
+    assert backend.calls == model_calls
+    assert session.scene.count("traffic_cone") >= 1
+
+
+def test_an_explicit_threshold_overrides_the_model_size(campus: Scene, spelling_grounder: Grounder) -> None:
+    backend = SizedBackend([requirement("appearance", "rain"), call("set_weather", kind="rain")], 135_000_000)
+    planner = HybridPlanner(RulePlanner(), LlmPlanner(backend, grounder=spelling_grounder), confident=1.0)
+    report = Session(campus, planner).submit("make it rain")
+    assert report.ok and report.plan is not None
+    assert report.plan.trace[0].input == "path: llm" and backend.calls == 2
 
 
 def test_hybrid_falls_back_to_a_half_sure_rule_plan_when_the_model_is_down(
