@@ -130,7 +130,8 @@ def chat(world: str, planner_name: str, backend: str | None, model: str | None, 
 @main.command()
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path),
               default=Path("demo_out"), show_default=True)
-@click.option("--planner", "planner_name", default="rules", show_default=True)
+@click.option("--planner", "planner_name", default=DEFAULT_PLANNER, show_default=True,
+              help="rules, llm or hybrid (the default: rules first, the embedded LLM when they cannot plan)")
 @click.option("--no-render", is_flag=True, help="skip frames (faster)")
 def demo(out_dir: Path, planner_name: str, no_render: bool) -> None:
     """Run the paper's edits on the campus: a frame and a scene summary per step.
