@@ -55,6 +55,18 @@ def test_the_same_seed_and_zero_temperature_give_the_same_answer(smollm2: Embedd
 
 
 @pytest.mark.llm
+def test_a_prompt_sharing_a_prefix_restarts_from_the_kept_state_and_answers_the_same(
+    smollm2: EmbeddedBackend,
+) -> None:
+    longer = [*WEATHER_PROMPT[:-1], {**WEATHER_PROMPT[-1], "content": WEATHER_PROMPT[-1]["content"] + " Please."}]
+    cold = smollm2.chat(longer, schema=WEATHER_SCHEMA, seed=1, max_tokens=64)
+    smollm2.chat(WEATHER_PROMPT, schema=WEATHER_SCHEMA, seed=1, max_tokens=64)
+    warm = smollm2.chat(longer, schema=WEATHER_SCHEMA, seed=1, max_tokens=64)
+    assert smollm2._loaded().llama.cache is not None
+    assert warm.text == cold.text
+
+
+@pytest.mark.llm
 def test_a_gguf_is_loaded_once_per_process(smollm2: EmbeddedBackend) -> None:
     again = load_backend("embedded", "smollm2-135m")
     assert isinstance(again, EmbeddedBackend)
@@ -108,6 +120,7 @@ def test_gemma3_is_assembled_once_into_the_cache_and_answers(model_cache: Path) 
 
     result = backend.chat(WEATHER_PROMPT, schema=WEATHER_SCHEMA, max_tokens=64)
     jsonschema.validate(result.data, WEATHER_SCHEMA)
+    assert backend._loaded().llama.cache is None  # sliding-window model: no prefix reuse
 
 
 def test_an_unknown_model_name_lists_the_presets() -> None:
