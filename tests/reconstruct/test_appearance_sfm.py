@@ -109,9 +109,9 @@ def test_sfm_keeps_given_intrinsics(capture: SyntheticCapture, tmp_path: Path) -
         np.testing.assert_allclose(view.camera.K, truth.K, rtol=1e-9)
 
 
-def test_sfm_refuses_an_unknown_matching_mode(tmp_path: Path) -> None:
-    with pytest.raises(ViewsError, match="unknown matching 'vocab'; allowed: exhaustive, sequential"):
-        run_sfm(tmp_path, tmp_path / "work", matching="vocab")
+def test_sfm_refuses_intrinsics_without_a_positive_focal_length(tmp_path: Path) -> None:
+    with pytest.raises(ViewsError, match=r"intrinsics must be \(fx, fy, cx, cy\)"):
+        run_sfm(tmp_path, tmp_path / "work", intrinsics=(0.0, 100.0, 50.0, 40.0))
 
 
 # The true surfaces' ground: a square patch round the scene, about what the ring sees.

@@ -24,15 +24,13 @@ from drivetwin.worlds.render.camera import Camera
 
 from .views import PosedImages, PosedView, ViewsError, read_image
 
-__all__ = ["SFM_MATCHING", "SUPPORTED_CAMERA_MODELS", "load_colmap", "run_sfm", "write_colmap"]
+__all__ = ["SIFT_PEAK_THRESHOLD", "SUPPORTED_CAMERA_MODELS", "load_colmap", "run_sfm", "write_colmap"]
 
 # Pinhole models map to ``Camera`` exactly; distorted ones need undistortion first.
 SUPPORTED_CAMERA_MODELS = ("PINHOLE", "SIMPLE_PINHOLE")
 # Distortion parameters this small (in COLMAP's units) leave pixels within ~1e-3 px at 1k px.
 _NEGLIGIBLE_DISTORTION = 1e-9
 _UINT8_MAX = 255.0
-# How ``run_sfm`` pairs images for matching.
-SFM_MATCHING = ("exhaustive", "sequential")
 # SIFT's contrast threshold, below COLMAP's 0.0067: small images (a few hundred pixels) give
 # too few blobs at the default; measured on a 16-view 200x150 ring: 16 of 16 views register
 # for 8 seeds, against 12 of 16 for 1 seed in 3 at the default.
@@ -142,17 +140,17 @@ def run_sfm(
     work_dir: str | Path,
     *,
     intrinsics: tuple[float, float, float, float] | None = None,
-    matching: str = "exhaustive",
     max_image_size: int = 1600,
     num_threads: int = -1,
     seed: int = 0,
 ) -> PosedImages:
     """Pose unposed photographs by structure from motion (pycolmap, CPU) and read the result.
 
-    Runs SIFT feature extraction (one camera shared by all images), ``matching``
-    ("exhaustive": every pair, or "sequential": neighbours in file-name order, for a walk or
-    a ring) and incremental mapping into ``work_dir`` (database.db and sparse/N), keeps the
-    largest model and returns its registered views with the sparse points. ``intrinsics``
+    Runs SIFT feature extraction (one camera shared by all images), exhaustive matching
+    (every pair: sequential matching of a 16-view ring registered 4 views, since views two
+    steps apart share no matches) and incremental mapping into ``work_dir`` (database.db
+    and sparse/N), keeps the largest model and returns its registered views with the sparse
+    points. ``intrinsics``
     (fx, fy, cx, cy in pixels) fixes a known PINHOLE camera; without them the camera is
     SIMPLE_PINHOLE (one focal length, principal point at the image centre), its focal length
     estimated from the images. Poses are in COLMAP's arbitrary frame and scale. Raises
@@ -160,8 +158,6 @@ def run_sfm(
     features or overlaps).
     """
     pycolmap = _pycolmap()
-    if matching not in SFM_MATCHING:
-        raise ViewsError(f"unknown matching {matching!r}; allowed: {', '.join(SFM_MATCHING)}")
     if intrinsics is not None and (len(intrinsics) != 4 or min(intrinsics[:2]) <= 0):
         raise ViewsError(f"intrinsics must be (fx, fy, cx, cy) in pixels with fx, fy > 0, not {intrinsics}")
     images = Path(image_dir)
@@ -191,12 +187,7 @@ def run_sfm(
     extraction.sift.peak_threshold = SIFT_PEAK_THRESHOLD
     pycolmap.extract_features(database, images, camera_mode=pycolmap.CameraMode.SINGLE, reader_options=reader,
                               extraction_options=extraction, device=pycolmap.Device.cpu)  # fmt: skip
-    if matching == "sequential":
-        pairing = pycolmap.SequentialPairingOptions()
-        pairing.loop_detection = False  # needs a vocabulary tree file, a download
-        pycolmap.match_sequential(database, pairing_options=pairing, device=pycolmap.Device.cpu)
-    else:
-        pycolmap.match_exhaustive(database, device=pycolmap.Device.cpu)
+    pycolmap.match_exhaustive(database, device=pycolmap.Device.cpu)
     options = pycolmap.IncrementalPipelineOptions()
     options.num_threads = num_threads
     options.random_seed = seed
