@@ -64,12 +64,32 @@ def load_world(name: str) -> Scene:
     """The world called `name` (a shipped name, a user world, or a path to a JSON file)."""
     as_path = Path(name)
     if as_path.suffix == ".json" and as_path.exists():
-        return Scene.load(as_path)
+        return _with_package(Scene.load(as_path), _package_of(as_path))
     for entry in reversed(list_worlds()):
         if entry.name == name:
-            return Scene.load(entry.path)
+            return _with_package(Scene.load(entry.path), entry.package)
     known = ", ".join(e.name for e in list_worlds()) or "none"
     raise UnknownWorldError(f"unknown world {name!r}; known worlds: {known}")
+
+
+def _package_of(scene_file: Path) -> Path | None:
+    """The world package holding `scene_file` (its world.json), or None for a plain world file."""
+    from drivetwin.worlds.reconstruct.package import WORLD_SCENE, AssetPackage, AssetPackageError
+
+    if scene_file.name != WORLD_SCENE:
+        return None
+    try:
+        package = AssetPackage.load(scene_file.parent)
+    except AssetPackageError:
+        return None  # a world.json outside a usable package is just a scene file
+    return package.root if package.manifest.kind == "world" else None
+
+
+def _with_package(scene: Scene, package: Path | None) -> Scene:
+    """`scene` naming its world package (absolute), so physics and rendering find its files."""
+    if package is not None:
+        scene.package = str(package.resolve())
+    return scene
 
 
 class UnknownWorldError(LookupError):

@@ -1,6 +1,6 @@
 """The static part of a MuJoCo world: ground, buildings, road paint, lights and the view camera.
 
-Buildings collide; roads, sidewalks, crossings and paved areas are thin visual-only geoms
+Buildings collide; a world package's terrain (Scene.package) collides as a height field; roads, sidewalks, crossings and paved areas are thin visual-only geoms
 (contype = conaffinity = 0) so a mesh render shows the road layout while vehicles roll on
 the ground plane. Every static geom's name starts with one of STATIC_PREFIXES so an update
 can remove and rebuild them without touching asset bodies.
@@ -10,15 +10,21 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING
 
 import mujoco
 import numpy as np
 from drivetwin.worlds.scene import Building, Scene
 
+if TYPE_CHECKING:
+    from drivetwin.worlds.reconstruct.collision import Heightfield
+
 __all__ = [
     "OFFSCREEN_HEIGHT",
     "OFFSCREEN_WIDTH",
     "STATIC_PREFIXES",
+    "TERRAIN_PREFIX",
     "VIEW_CAMERA",
     "add_static_geoms",
     "configure_spec",
@@ -28,7 +34,9 @@ __all__ = [
 VIEW_CAMERA = "drivetwin_view"
 OFFSCREEN_WIDTH = 1920
 OFFSCREEN_HEIGHT = 1080
-STATIC_PREFIXES = ("ground", "building/", "lane/", "sidewalk/", "crossing/", "paved/")
+STATIC_PREFIXES = ("ground", "terrain/", "building/", "lane/", "sidewalk/", "crossing/", "paved/")
+# Name prefix of a world package's terrain: its height field geom is "terrain/ground".
+TERRAIN_PREFIX = "terrain"
 # Ground plane reaches this far past the scene bounds so the horizon is not a cliff edge.
 GROUND_MARGIN_M = 50.0
 # Visual layers stacked a few millimetres apart so they do not z-fight; tops in metres.
@@ -55,7 +63,7 @@ _VISUAL_ONLY = {"contype": 0, "conaffinity": 0, "group": 1}
 
 def static_signature(scene: Scene) -> tuple[object, ...]:
     """The scene parts the static geoms are built from; equal signatures need no rebuild."""
-    return (scene.bounds, scene.ground, scene.roads, tuple(scene.buildings))
+    return (scene.bounds, scene.ground, scene.roads, tuple(scene.buildings), scene.package)
 
 
 def _look_at_quat(eye: Sequence[float], target: Sequence[float]) -> list[float]:
@@ -102,6 +110,7 @@ def add_static_geoms(spec: mujoco.MjSpec, scene: Scene) -> None:
     """Add the ground, buildings and road paint of `scene` to the world body."""
     world = spec.worldbody
     bounds = scene.bounds
+    terrain = _terrain_of(scene)
     half = (
         (bounds.xmax - bounds.xmin) / 2 + GROUND_MARGIN_M,
         (bounds.ymax - bounds.ymin) / 2 + GROUND_MARGIN_M,
@@ -109,13 +118,16 @@ def add_static_geoms(spec: mujoco.MjSpec, scene: Scene) -> None:
     world.add_geom(
         name="ground",
         type=mujoco.mjtGeom.mjGEOM_PLANE,
-        pos=[*bounds.centre, 0.0],
+        # The plane continues the terrain past its edges and never covers its low parts.
+        pos=[*bounds.centre, 0.0 if terrain is None else min(0.0, float(terrain.origin[2]))],
         size=[half[0], half[1], 1.0],
         rgba=list(scene.ground.rgba),
         friction=[scene.ground.friction, 0.005, 0.0001],
         # The ground's friction governs every contact with it (tyres on ice slip).
         priority=1,
     )
+    if terrain is not None:
+        _add_terrain(spec, terrain, scene)
     for building in scene.buildings:
         _add_building(spec, building)
     roads = scene.roads
@@ -133,6 +145,32 @@ def add_static_geoms(spec: mujoco.MjSpec, scene: Scene) -> None:
             _strip(world, f"sidewalk/{walk.id}/{k}", a, b, walk.width / 2, SIDEWALK_TOP_M, CONCRETE)
     for crossing in roads.crossings:
         _add_zebra(world, crossing.id, crossing.start, crossing.end, crossing.width)
+
+
+def _terrain_of(scene: Scene) -> Heightfield | None:
+    """The height field of the scene's world package, None without one."""
+    if scene.package is None:
+        return None
+    # Imported here: reconstruction pulls in trimesh and scipy, which worlds without a package never need.
+    from drivetwin.worlds.reconstruct.collision import load_heightfield
+    from drivetwin.worlds.reconstruct.package import HEIGHTFIELD_FILE
+
+    path = Path(scene.package) / HEIGHTFIELD_FILE
+    return load_heightfield(path) if path.is_file() else None
+
+
+def _add_terrain(spec: mujoco.MjSpec, terrain: Heightfield, scene: Scene) -> None:
+    """The terrain height field, colliding like the ground plane (same colour and friction)."""
+    from drivetwin.worlds.reconstruct.collision import add_collision_geoms
+
+    for old in list(spec.hfields):
+        # A static rebuild removes the geoms but not their height field asset.
+        if old.name.startswith(STATIC_PREFIXES):
+            spec.delete(old)
+    (geom,) = add_collision_geoms(spec, heightfield=terrain, prefix=TERRAIN_PREFIX)
+    geom.rgba = list(scene.ground.rgba)
+    geom.friction = [scene.ground.friction, 0.005, 0.0001]
+    geom.priority = 1
 
 
 def _strip(

@@ -360,6 +360,9 @@ class Scene(SceneModel):
     ego: AssetInstance
     assets: list[AssetInstance] = Field(default_factory=list)
     environment: Environment = Field(default_factory=Environment)
+    # The world package folder (drivetwin.worlds.reconstruct.package) this world was loaded
+    # from: its terrain collides in MuJoCo and its splats are the renderer's background.
+    package: str | None = None
 
     @model_validator(mode="after")
     def _consistent(self) -> Scene:

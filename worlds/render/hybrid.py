@@ -10,9 +10,10 @@ A splat asset's own MuJoCo geoms (its collision proxy) are not drawn.
 
 With the CPU rasterizer, (1) runs on a thread of its own while (3) projects and sorts the
 splats, and (3) then culls splats behind each tile's mesh before compositing. Bodies that
-did not move keep their posed splats from the last frame. Without a capture, the scene's
-buildings get procedural facade splats (`procedural.facade_splats`). Cameras live in
-`viewpoints`, procedural splats in `procedural`; both are re-exported here.
+did not move keep their posed splats from the last frame. A world package draws its own
+splats (Scene.package); without a capture, the scene's buildings get procedural facade
+splats (`procedural.facade_splats`). Cameras live in `viewpoints`, procedural splats in
+`procedural`; both are re-exported here.
 """
 
 from __future__ import annotations
@@ -176,8 +177,9 @@ class HybridRenderer:
     Args:
         world: the MuJoCo world (its model/data are read each frame, so recompiles are fine).
         background: splats in the world frame (a reconstructed scene); "facades" (default)
-            for procedural facade splats on the scene's buildings (`facade_splats`, rebuilt
-            when the buildings change), the stand-in for a capture; None for no background.
+            for the splats of the scene's world package when it has one, else procedural
+            facade splats on the scene's buildings (`facade_splats`, rebuilt when the
+            buildings change), the stand-in for a capture; None for no background.
         attachments: asset id -> splats in that asset's body frame; they follow the body and
             the body's own geoms are not drawn (they remain its collision proxy).
         lock: the simulation's lock when another thread steps the world.
@@ -369,7 +371,14 @@ _facade_cache: dict[int, tuple[object, Splats]] = {}
 
 
 def _facades_of(scene: Scene) -> Splats | None:
-    """Facade splats of ``scene``'s buildings, made once per set of buildings."""
+    """The splats of ``scene``'s world package, else facade splats of its buildings (made once per set)."""
+    if scene.package is not None:
+        # Imported here: the package module imports this renderer's splats module.
+        from drivetwin.worlds.reconstruct.package import SPLATS_FILE, package_splats
+
+        if (Path(scene.package) / SPLATS_FILE).is_file():
+            background = package_splats(scene.package)  # cached per file and modification time
+            return background if len(background) else None
     buildings = tuple(scene.buildings)
     cached = _facade_cache.get(id(scene))
     if cached is None or cached[0] != buildings:
