@@ -226,6 +226,9 @@ class MujocoWorld:
         for mesh in list(self.spec.meshes):
             if mesh.name.startswith(STATIC_PREFIXES):
                 self.spec.delete(mesh)
+        for field in list(self.spec.hfields):
+            if field.name.startswith(STATIC_PREFIXES):
+                self.spec.delete(field)
 
     def _recompile(self) -> None:
         model, data = self.spec.recompile(self.model, self.data)

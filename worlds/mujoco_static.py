@@ -163,10 +163,6 @@ def _add_terrain(spec: mujoco.MjSpec, terrain: Heightfield, scene: Scene) -> Non
     """The terrain height field, colliding like the ground plane (same colour and friction)."""
     from drivetwin.worlds.reconstruct.collision import add_collision_geoms
 
-    for old in list(spec.hfields):
-        # A static rebuild removes the geoms but not their height field asset.
-        if old.name.startswith(STATIC_PREFIXES):
-            spec.delete(old)
     (geom,) = add_collision_geoms(spec, heightfield=terrain, prefix=TERRAIN_PREFIX)
     geom.rgba = list(scene.ground.rgba)
     geom.friction = [scene.ground.friction, 0.005, 0.0001]

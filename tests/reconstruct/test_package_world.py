@@ -92,6 +92,13 @@ def test_a_world_package_loads_naming_its_package_and_keeps_it_through_json(ramp
     assert load_world(str(plain)).package is None
 
 
+def test_the_world_packages_ego_starts_on_the_terrain(ramp_world):
+    ego = ramp_world.ego
+    terrain = load_heightfield(Path(ramp_world.package or "") / HEIGHTFIELD_FILE)
+    assert ego.pose.z == pytest.approx(terrain.height_at(ego.pose.x, ego.pose.y), abs=1e-6)
+    assert ego.pose.z > 0.3  # the ramp is raised: z = 0 would bury the ego
+
+
 def test_a_body_dropped_on_a_world_package_rests_on_its_terrain(ramp_world):
     world = MujocoWorld.from_scene(_with_cone(ramp_world))
     terrain = world.model.geom(f"{TERRAIN_PREFIX}/ground")

@@ -335,6 +335,11 @@ def _write_world(root: Path, manifest: AssetManifest, mesh: trimesh.Trimesh) -> 
     """A Scene for a world package: bounds around the mesh, the ego at its centre."""
     low, high = mesh.bounds
     cx, cy = float((low[0] + high[0]) / 2), float((low[1] + high[1]) / 2)
+    cz = 0.0
+    if (root / HEIGHTFIELD_FILE).is_file():  # the ego stands on the terrain, not buried in it
+        from .collision import load_heightfield
+
+        cz = float(load_heightfield(root / HEIGHTFIELD_FILE).height_at(cx, cy))
     scene = Scene(
         name=manifest.name,
         description=manifest.description or f"a reconstructed world ({manifest.name.replace('_', ' ')})",
@@ -344,6 +349,8 @@ def _write_world(root: Path, manifest: AssetManifest, mesh: trimesh.Trimesh) -> 
             ymin=float(low[1]) - WORLD_MARGIN_M,
             ymax=float(high[1]) + WORLD_MARGIN_M,
         ),
-        ego=AssetInstance(id=EGO_ID, category="ego_vehicle", pose=Pose(x=cx, y=cy), physics=PhysicsProps(mass=1600.0)),
+        ego=AssetInstance(
+            id=EGO_ID, category="ego_vehicle", pose=Pose(x=cx, y=cy, z=cz), physics=PhysicsProps(mass=1600.0)
+        ),
     )
     scene.save(root / WORLD_SCENE)
