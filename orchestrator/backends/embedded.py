@@ -100,7 +100,7 @@ def _load(path: Path, n_ctx: int, n_threads: int, model: str) -> _LoadedModel:
         # (bench_planners). Sliding-window models (Gemma 3) save their whole window with each
         # state and cannot restart mid-window: there the cache made Gemma slower (5.7 -> 8.8 s).
         if not any(key.endswith(".attention.sliding_window") for key in llama.metadata):
-            from llama_cpp import LlamaRAMCache
+            from llama_cpp.llama_cache import LlamaRAMCache
 
             llama.set_cache(LlamaRAMCache(capacity_bytes=PROMPT_CACHE_BYTES))
         loaded = _LoadedModel(llama=llama, path=path, load_s=time.perf_counter() - start)
