@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import atexit
 import functools
 import json
 import os
@@ -103,6 +104,9 @@ def _load(path: Path, n_ctx: int, n_threads: int, model: str) -> _LoadedModel:
             from llama_cpp.llama_cache import LlamaRAMCache
 
             llama.set_cache(LlamaRAMCache(capacity_bytes=PROMPT_CACHE_BYTES))
+        # Free the model while the interpreter is whole: left to garbage collection at exit,
+        # llama-cpp-python's finaliser runs after its C bindings are gone and prints a TypeError.
+        atexit.register(llama.close)
         loaded = _LoadedModel(llama=llama, path=path, load_s=time.perf_counter() - start)
         _LOADED[key] = loaded
         return loaded
