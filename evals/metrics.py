@@ -156,7 +156,7 @@ def compute_metrics(run: Run) -> RunMetrics:
     model = next((r.model for r in recs if r.model is not None), None)
     trials = Counter(r.case_id for r in recs)
     return RunMetrics(
-        label=h.label or _default_label(h.planner, h.planner_options, model),
+        label=h.label or _default_label(h.planner, h.planner_options, model) + (f" [{'/'.join(h.only)} only]" if h.only else ""),
         planner=h.planner,
         planner_options=dict(h.planner_options),
         suite=h.suite,

@@ -86,6 +86,7 @@ def test_only_runs_the_cases_of_the_named_grades_and_tasks(tiny_suite: Path, tmp
     assert direct.total == 2 * 5
     run = read_run(tmp_path / "d.jsonl")
     assert run.header.only == ["direct"] and run.header.cases == 5
+    assert compute_metrics(run).label.endswith("[direct only]")
     both = run_suite(tiny_suite, TINY, out_path=tmp_path / "a.jsonl", progress=False, only=["direct", "appearance"])
     assert both.total == 2
     assert {r.case_id for r in read_run(tmp_path / "a.jsonl").records} == {"rain", "snow"}
