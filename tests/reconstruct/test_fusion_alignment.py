@@ -7,7 +7,7 @@ import pytest
 from drivetwin.worlds.reconstruct.alignment import apply_transform
 from drivetwin.worlds.reconstruct.fusion import FusionError, fuse, fuse_if_complete
 from drivetwin.worlds.reconstruct.package import AssetPackage, file_digest
-from fusion_capture import fused_package, object_splats, similarity, write_appearance, write_geometry
+from fusion_capture import CAPTURE_OFFSET, fused_package, object_splats, similarity, write_appearance, write_geometry
 
 # Bounds for a 1.6 m object from 6,000 surface splats (measured: 0.13°, 0.2 %, 4.3 mm).
 MAX_ROTATION_DEG = 0.5
@@ -37,6 +37,35 @@ def test_fusion_recovers_a_similarity_applied_to_the_splats(tmp_path, background
     assert metrics["alignment.median_before_m"] > 1.0 > 0.01 > metrics["alignment.median_after_m"]
     # The background (about 10 % of the splats) is cropped away; the object's splats stay.
     assert metrics["splats.kept"] == pytest.approx(len(object_splats()), rel=0.01)
+
+
+def _write_cameras(folder, centres, transform):
+    """visual/cameras.json with cameras at `centres` (capture frame), moved into the splats' frame."""
+    import json
+
+    views = []
+    for centre in apply_transform(transform, np.asarray(centres, dtype=np.float64)):
+        world_to_camera = np.eye(4)
+        world_to_camera[:3, 3] = -centre  # identity rotation: only the centre matters here
+        views.append({"name": f"v{len(views)}", "world_to_camera": world_to_camera.tolist()})
+    (folder / "visual" / "cameras.json").write_text(json.dumps({"views": views}), encoding="utf-8")
+
+
+@pytest.mark.parametrize(("height_m", "accepted"), [(2.0, True), (-3.0, False)])
+def test_an_alignment_that_puts_the_cameras_under_the_surface_is_refused(tmp_path, height_m, accepted):
+    applied = similarity(70.0, (0.3, 1.0, 0.2), 0.4, (3.0, -1.0, 2.0))
+    folder = tmp_path / "p"
+    folder.mkdir()
+    write_geometry(folder)
+    write_appearance(folder, object_splats().transformed(applied))
+    ring = [(CAPTURE_OFFSET[0] + 3 * np.cos(a), CAPTURE_OFFSET[1] + 3 * np.sin(a), height_m) for a in np.linspace(0, 6, 8)]
+    _write_cameras(folder, ring, applied)
+    if accepted:
+        fuse(folder)
+        assert AssetPackage.load(folder).manifest.name
+    else:
+        with pytest.raises(FusionError, match="under the scanned surface"):
+            fuse(folder)
 
 
 def test_halves_already_in_one_frame_are_not_moved_and_the_background_is_cropped(tmp_path):

@@ -58,6 +58,8 @@ MIN_COVERAGE_TEXT = f"{MIN_COVERAGE:.0%}"
 WORLD_MARGIN_M = 5.0
 _GEOMETRY_FILES = (MESH_FILE, HEIGHTFIELD_FILE, POINTS_FILE, GEOMETRY_REPORT)
 _APPEARANCE_FILES = (SPLATS_FILE, CAMERAS_FILE, APPEARANCE_REPORT)
+# More than this share of the cameras under the mesh after an estimated alignment: refused.
+MAX_CAMERAS_BELOW = 0.5
 
 
 class FusionError(ValueError):
@@ -207,6 +209,7 @@ def fuse(
                 f"{check.coverage:.0%} after the best similarity; {MIN_COVERAGE_TEXT} needed): are both halves of "
                 "one capture? Crop the splats to the object or pose the images in the LIDAR frame (--poses)"
             )
+        _check_cameras_above(capture / CAMERAS_FILE, estimated, float(mesh.bounds[0][2]))
         alignment, after = estimated, check
         splats = splats.transformed(alignment)
     kept = len(splats)
@@ -329,6 +332,32 @@ def _write_points(source: Path, target: Path, to_package: F64) -> None:
     point_cloud: Any = trimesh.PointCloud  # untyped in trimesh
     moved: Any = point_cloud(vertices, colors=colours if colours is not None and len(colours) else None)
     moved.export(target)
+
+
+def _check_cameras_above(cameras_path: Path, alignment: F64, ground_z: float) -> None:
+    """Refuse a similarity that puts the photographs' cameras under the scanned surface.
+
+    Over a mostly flat mesh, a mirror-image fit (turned over, rescaled) can cover the surface
+    as well as the right one; cameras stand above what they photograph, so a fit that moves
+    most of them below the mesh's lowest point is the wrong one.
+    """
+    if not cameras_path.is_file():
+        return
+    views = json.loads(cameras_path.read_text(encoding="utf-8")).get("views", [])
+    centres = []
+    for view in views:
+        world_to_camera = np.asarray(view["world_to_camera"], dtype=np.float64)
+        rotation, translation = world_to_camera[:3, :3], world_to_camera[:3, 3]
+        centres.append(-rotation.T @ translation)
+    if not centres:
+        return
+    below = float(np.mean(apply_transform(alignment, np.asarray(centres))[:, 2] < ground_z))
+    if below > MAX_CAMERAS_BELOW:
+        raise FusionError(
+            f"the best fit of the splats to the mesh puts {below:.0%} of the cameras under the scanned "
+            "surface, so it is a mirror image, not the capture: crop the splats to the object or pose "
+            "the images in the LIDAR frame (--poses)"
+        )
 
 
 def _write_world(root: Path, manifest: AssetManifest, mesh: trimesh.Trimesh) -> None:
