@@ -25,7 +25,7 @@ from .base import (
 )
 from .errors import BackendError, BackendTimeout, BackendUnavailable, InvalidRequest
 from .gguf_models import SHIPPED_MODELS, is_installed, resolve_gguf
-from .structured import check_schema, parse_answer
+from .structured import answer_result, check_schema
 
 if TYPE_CHECKING:
     from llama_cpp import Llama
@@ -225,27 +225,17 @@ class EmbeddedBackend(Backend):
                 backend=NAME,
                 model=self.model,
             )
-        finish_reason = str(choice.get("finish_reason") or "stop")
-        data = None
-        if schema is not None:
-            data = parse_answer(
-                text,
-                schema,
-                finish_reason=finish_reason,
-                max_tokens=max_tokens,
-                backend=NAME,
-                model=self.model,
-            )
         usage = completion["usage"]
-        return ChatResult(
-            text=text,
+        return answer_result(
+            text,
+            schema,
+            finish_reason=str(choice.get("finish_reason") or "stop"),
+            max_tokens=max_tokens,
             prompt_tokens=int(usage["prompt_tokens"]),
             completion_tokens=int(usage["completion_tokens"]),
             latency_s=time.perf_counter() - start,
-            model=self.model,
             backend=NAME,
-            finish_reason=finish_reason,
-            data=data,
+            model=self.model,
         )
 
     def _grammar(self, schema: Mapping[str, Any]) -> Any:

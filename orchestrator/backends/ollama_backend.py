@@ -22,7 +22,7 @@ from .base import (
     check_request,
 )
 from .errors import BackendError, BackendTimeout, BackendUnavailable, InvalidOutput
-from .structured import check_schema, parse_answer
+from .structured import answer_result, check_schema
 
 NAME = "ollama"
 OLLAMA_INSTALL = "pip install 'ollama>=0.4'"
@@ -115,25 +115,16 @@ class OllamaBackend(Backend):
         latency = time.perf_counter() - start
         text = response.message.content or ""
         finish_reason = response.done_reason or "stop"
-        data = None
-        if schema is not None:
-            data = parse_answer(
-                text,
-                schema,
-                finish_reason=finish_reason,
-                max_tokens=max_tokens,
-                backend=NAME,
-                model=self.model,
-            )
-        return ChatResult(
-            text=text,
+        return answer_result(
+            text,
+            schema,
+            finish_reason=finish_reason,
+            max_tokens=max_tokens,
             prompt_tokens=response.prompt_eval_count or 0,
             completion_tokens=response.eval_count or 0,
             latency_s=latency,
-            model=self.model,
             backend=NAME,
-            finish_reason=finish_reason,
-            data=data,
+            model=self.model,
         )
 
     def _call(self, request: Any, timeout_s: float | None) -> Any:

@@ -20,7 +20,7 @@ from .base import (
     check_request,
 )
 from .errors import BackendError, BackendTimeout, BackendUnavailable, InvalidOutput
-from .structured import check_schema, parse_answer
+from .structured import answer_result, check_schema
 
 NAME = "openai"
 DEFAULT_BASE_URL = "http://127.0.0.1:8080/v1"
@@ -127,25 +127,16 @@ class OpenAIBackend(Backend):
                 backend=NAME,
                 model=self.model,
             ) from None
-        data = None
-        if schema is not None:
-            data = parse_answer(
-                text,
-                schema,
-                finish_reason=finish_reason,
-                max_tokens=max_tokens,
-                backend=NAME,
-                model=self.model,
-            )
-        return ChatResult(
-            text=str(text),
+        return answer_result(
+            str(text),
+            schema,
+            finish_reason=finish_reason,
+            max_tokens=max_tokens,
             prompt_tokens=int(usage.get("prompt_tokens") or 0),
             completion_tokens=int(usage.get("completion_tokens") or 0),
             latency_s=latency,
-            model=self.model,
             backend=NAME,
-            finish_reason=finish_reason,
-            data=data,
+            model=self.model,
         )
 
     def _complete(self, payload: dict[str, Any], schema: Mapping[str, Any] | None, timeout_s: float | None) -> Any:

@@ -9,6 +9,7 @@ from typing import Any
 import jsonschema
 import jsonschema.exceptions
 
+from .base import ChatResult
 from .errors import InvalidOutput, InvalidRequest
 
 # How much of a bad answer to quote in an error message; the full text is on `.raw`.
@@ -90,3 +91,33 @@ def _quote(text: str) -> str:
     if len(text) <= QUOTE_CHARS:
         return repr(text)
     return repr(text[:QUOTE_CHARS]) + f"… ({len(text)} chars)"
+
+
+def answer_result(
+    text: str,
+    schema: Mapping[str, Any] | None,
+    *,
+    finish_reason: str,
+    max_tokens: int,
+    prompt_tokens: int,
+    completion_tokens: int,
+    latency_s: float,
+    backend: str,
+    model: str,
+) -> ChatResult:
+    """The ChatResult of one answer; with a schema, its text is parsed and checked first."""
+    data = None
+    if schema is not None:
+        data = parse_answer(
+            text, schema, finish_reason=finish_reason, max_tokens=max_tokens, backend=backend, model=model
+        )
+    return ChatResult(
+        text=text,
+        prompt_tokens=prompt_tokens,
+        completion_tokens=completion_tokens,
+        latency_s=latency_s,
+        model=model,
+        backend=backend,
+        finish_reason=finish_reason,
+        data=data,
+    )
