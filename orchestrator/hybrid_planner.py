@@ -50,18 +50,21 @@ class HybridPlanner:
         self.llm = llm
         self.confident = confident
         self.fallback = fallback
+        self._by_model_size: float | None = None
 
     def confidence_needed(self) -> float:
         """The rule confidence that skips the LLM: as given, else by the model's size (a small
         or unknown-size model is asked about its size once, which opens it)."""
-        if self.confident is None:
+        if self.confident is not None:
+            return self.confident
+        if self._by_model_size is None:
             try:
                 parameters = self.llm.backend.describe().parameters
             except Exception:  # a model that cannot say its size is not assumed small
                 parameters = None
             small = parameters is not None and parameters < SMALL_MODEL_PARAMETERS
-            self.confident = RULES_CONFIDENT_SMALL_MODEL if small else RULES_CONFIDENT
-        return self.confident
+            self._by_model_size = RULES_CONFIDENT_SMALL_MODEL if small else RULES_CONFIDENT
+        return self._by_model_size
 
     def _needed(self, confidence: float) -> float:
         if self.confident is None and confidence >= RULES_CONFIDENT:
