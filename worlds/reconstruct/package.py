@@ -32,14 +32,16 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 import numpy.typing as npt
-import trimesh
 from drivetwin.worlds.catalog import Category, Part, Placement
 from drivetwin.worlds.render.splats import SH_C0, Splats, SplatsError
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = [
     "APPEARANCE_REPORT",
@@ -306,6 +308,8 @@ def _mtime_key(paths: list[Path]) -> tuple[tuple[str, int], ...]:
 
 
 def _load_mesh(path: Path) -> trimesh.Trimesh:
+    import trimesh  # only when a package is opened: the catalog looks for packages at start-up
+
     try:
         loaded = trimesh.load(path, force="mesh", process=False)
     except (OSError, ValueError) as exc:
