@@ -18,8 +18,8 @@ from typing import Any, Literal
 from drivetwin.evals.case import Case
 from drivetwin.evals.records import ModelFacts, TrialRecord
 from drivetwin.evals.trial import REFERENCE_PLANNER, run_trial
-from drivetwin.orchestrator.planners import make_planner
 from drivetwin.orchestrator.planning import Plan, PlanContext, Planner, PlanningError
+from drivetwin.orchestrator.planning.registry import make_planner
 from drivetwin.tools.registry import ToolRegistry
 
 ExecutorName = Literal["local", "ray"]
@@ -74,7 +74,7 @@ def planner_facts(planner: Planner, name: str = "", options: dict[str, Any] | No
 
 def _embedded_facts(options: dict[str, Any]) -> ModelFacts | None:
     from drivetwin.orchestrator.backends.gguf_models import resolve_gguf
-    from drivetwin.orchestrator.llm_planner import DEFAULT_BACKEND, DEFAULT_MODEL
+    from drivetwin.orchestrator.planning.llm.planner import DEFAULT_BACKEND, DEFAULT_MODEL
 
     if options.get("backend", DEFAULT_BACKEND) != "embedded":
         return None

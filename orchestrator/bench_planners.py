@@ -21,8 +21,8 @@ from importlib.resources import files
 from pathlib import Path
 from typing import Any
 
-from drivetwin.orchestrator.planners import make_planner
 from drivetwin.orchestrator.planning import Planner
+from drivetwin.orchestrator.planning.registry import make_planner
 from drivetwin.orchestrator.session import Session
 from drivetwin.prompts.templates import prompt_version
 from drivetwin.worlds.defaults import load_world

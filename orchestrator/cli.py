@@ -10,8 +10,8 @@ from pathlib import Path
 from typing import Any
 
 import click
-from drivetwin.orchestrator.planners import UnknownPlannerError, make_planner
 from drivetwin.orchestrator.planning import Planner
+from drivetwin.orchestrator.planning.registry import UnknownPlannerError, make_planner
 from drivetwin.orchestrator.repl import ChatOptions, dump_tools, interactive, run_lines
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools.registry import ToolRegistry

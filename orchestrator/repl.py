@@ -11,7 +11,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from drivetwin.orchestrator.llm_planner import format_trace
+from drivetwin.orchestrator.planning.llm.planner import format_trace
 from drivetwin.orchestrator.session import Session, SessionError, TurnReport
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.scene import SceneFileError

@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 import pytest
-from drivetwin.orchestrator.rule_planner import RulePlanner
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools import ToolRegistry
 from drivetwin.worlds.campus import build_campus

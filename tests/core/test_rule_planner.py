@@ -2,7 +2,7 @@ import math
 
 import pytest
 from drivetwin.orchestrator.planning import PlanContext, PlanningError
-from drivetwin.orchestrator.rule_planner import RulePlanner
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 
 
 def calls_for(scene, registry, prompt):

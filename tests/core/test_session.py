@@ -5,7 +5,7 @@ import textwrap
 
 import pytest
 from drivetwin.orchestrator.journal import Journal, JournalError
-from drivetwin.orchestrator.rule_planner import RulePlanner
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session, SessionError
 from drivetwin.worlds.scene import SceneFileError
 
@@ -108,7 +108,7 @@ def test_kill_9_loses_no_accepted_edit(tmp_path):
     journal = tmp_path / "j.jsonl"
     script = textwrap.dedent(f"""
         import os, signal
-        from drivetwin.orchestrator.rule_planner import RulePlanner
+        from drivetwin.orchestrator.planning.rules.planner import RulePlanner
         from drivetwin.orchestrator.session import Session
         from drivetwin.worlds.campus import build_campus
         s = Session(build_campus(), RulePlanner(), journal_path={str(journal)!r})

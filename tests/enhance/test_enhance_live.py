@@ -8,7 +8,7 @@ import numpy as np
 from click.testing import CliRunner
 from drivetwin.orchestrator.cli import main
 from drivetwin.orchestrator.live import LiveWorld
-from drivetwin.orchestrator.planners import make_planner
+from drivetwin.orchestrator.planning.registry import make_planner
 from drivetwin.orchestrator.session import Session
 from drivetwin.worlds.defaults import load_world
 from drivetwin.worlds.enhance import EnhanceSettings

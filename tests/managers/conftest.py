@@ -14,8 +14,8 @@ from typing import Any, ClassVar
 
 import pytest
 from drivetwin.orchestrator.backends import Backend, BackendError, BackendInfo, BackendStatus, ChatResult, Message
-from drivetwin.orchestrator.grounding import Grounder
-from drivetwin.orchestrator.llm_planner import LlmPlanner
+from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.worlds.defaults import load_world
 from drivetwin.worlds.scene import Scene

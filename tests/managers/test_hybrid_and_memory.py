@@ -6,12 +6,12 @@ from typing import Any
 
 import pytest
 from drivetwin.orchestrator.backends import BackendInfo, BackendUnavailable
-from drivetwin.orchestrator.grounding import Grounder
-from drivetwin.orchestrator.hybrid_planner import HybridPlanner
-from drivetwin.orchestrator.jr_schema import WorldNames, call_schema
-from drivetwin.orchestrator.llm_planner import LlmPlanner, format_trace
-from drivetwin.orchestrator.planners import make_planner
-from drivetwin.orchestrator.rule_planner import RulePlanner
+from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.hybrid import HybridPlanner
+from drivetwin.orchestrator.planning.llm.jr_schema import WorldNames, call_schema
+from drivetwin.orchestrator.planning.llm.planner import LlmPlanner, format_trace
+from drivetwin.orchestrator.planning.registry import make_planner
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.prompts.templates import prompt_version
 from drivetwin.tools.registry import ToolRegistry

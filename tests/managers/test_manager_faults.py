@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 from drivetwin.orchestrator.backends import BackendTimeout, BackendUnavailable, InvalidOutput
-from drivetwin.orchestrator.grounding import Grounder
-from drivetwin.orchestrator.managers import RETRY_BUDGET
+from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.llm.managers import RETRY_BUDGET
 from drivetwin.worlds.scene import Scene
 
 from .conftest import call, requirement, scripted_session

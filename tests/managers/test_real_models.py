@@ -7,11 +7,11 @@ import json
 
 import pytest
 from drivetwin.orchestrator.backends import load_backend
-from drivetwin.orchestrator.grounding import Grounder
-from drivetwin.orchestrator.jr_manager import JrManager, ground_requirement, render_requirement
-from drivetwin.orchestrator.jr_schema import call_schema
-from drivetwin.orchestrator.llm_planner import LlmPlanner
-from drivetwin.orchestrator.managers import Requirement
+from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.llm.jr_manager import JrManager, ground_requirement, render_requirement
+from drivetwin.orchestrator.planning.llm.jr_schema import call_schema
+from drivetwin.orchestrator.planning.llm.managers import Requirement
+from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.catalog import placeable_categories

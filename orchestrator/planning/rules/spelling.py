@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass, field
 from functools import cache
 
-from drivetwin.orchestrator import rule_lexicon as lx
+from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import Scene

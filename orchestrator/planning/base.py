@@ -31,6 +31,29 @@ class TraceStep(BaseModel):
     seconds: float = 0.0
     retries: int = 0
     tokens: int = 0
+    # Set when the planner cannot tell which of a few readings was meant: the session asks
+    # instead of applying anything (the calls are then empty).
+    question: Question | None = None
+    # Other candidate readings, best first (other planners' plans), for the plan-vs-request check.
+    alternatives: list[Reading] = Field(default_factory=list)
+
+
+class Reading(BaseModel):
+    """One way to understand a request: a few words for the person and the calls that do it."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    text: str = Field(min_length=1)
+    calls: list[ToolCall] = Field(default_factory=list)
+
+
+class Question(BaseModel):
+    """A short clarifying question with numbered readings to choose from (nothing applied yet)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    text: str = Field(min_length=1)
+    readings: list[Reading] = Field(min_length=1, max_length=3)
 
 
 class Plan(BaseModel):

@@ -10,8 +10,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from drivetwin.orchestrator import phrases as ph
-from drivetwin.orchestrator import rule_lexicon as lx
+from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import Scene
 

@@ -14,15 +14,15 @@ import re
 import time
 from typing import Any
 
-from drivetwin.orchestrator import phrases as ph
-from drivetwin.orchestrator import rule_lexicon as lx
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning import Plan, PlanContext, PlanningError, TraceStep
-from drivetwin.orchestrator.rule_edits import behaviour_kind, behaviour_spec, edit_existing, recolour, remove
-from drivetwin.orchestrator.rule_environment import environment
-from drivetwin.orchestrator.rule_places import Notes, location, said_a_place
-from drivetwin.orchestrator.rule_reading import Reading, find_count, is_new, read
-from drivetwin.orchestrator.rule_spelling import is_known, repair, vocabulary
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.edits import behaviour_kind, behaviour_spec, edit_existing, recolour, remove
+from drivetwin.orchestrator.planning.rules.environment import environment
+from drivetwin.orchestrator.planning.rules.places import Notes, location, said_a_place
+from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
+from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog, nearest_categories

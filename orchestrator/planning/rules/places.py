@@ -12,9 +12,9 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from drivetwin.orchestrator import phrases as ph
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.rule_reading import Reading
+from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.reading import Reading
 from drivetwin.worlds.scene import Scene
 
 RELATIONS = (

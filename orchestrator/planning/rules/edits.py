@@ -12,11 +12,11 @@ import math
 import re
 from typing import Any
 
-from drivetwin.orchestrator import phrases as ph
-from drivetwin.orchestrator import rule_lexicon as lx
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.rule_places import Notes, location
-from drivetwin.orchestrator.rule_reading import Reading, find_count
+from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.places import Notes, location
+from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog
@@ -141,7 +141,7 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
 
 
 def ph_error(message: str) -> Exception:
-    from drivetwin.orchestrator.planning import PlanningError
+    from drivetwin.orchestrator.planning.base import PlanningError
 
     return PlanningError(message)
 

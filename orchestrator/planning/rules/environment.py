@@ -10,8 +10,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from drivetwin.orchestrator import rule_lexicon as lx
-from drivetwin.orchestrator.rule_reading import Reading
+from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules.reading import Reading
 from drivetwin.tools.base import ToolCall
 
 # Weather intensity (0..1) for "heavy", unqualified and "light".

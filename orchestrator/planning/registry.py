@@ -6,25 +6,25 @@ from collections.abc import Callable
 from importlib.metadata import entry_points
 from typing import Any
 
-from drivetwin.orchestrator.planning import Planner
+from drivetwin.orchestrator.planning.base import Planner
 
 ENTRY_POINT_GROUP = "drivetwin.planners"
 
 
 def _rules(**options: Any) -> Planner:
-    from drivetwin.orchestrator.rule_planner import RulePlanner
+    from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 
     return RulePlanner()
 
 
 def _llm(**options: Any) -> Planner:
-    from drivetwin.orchestrator.hybrid_planner import make_llm
+    from drivetwin.orchestrator.planning.hybrid import make_llm
 
     return make_llm(**options)
 
 
 def _hybrid(**options: Any) -> Planner:
-    from drivetwin.orchestrator.hybrid_planner import make_hybrid
+    from drivetwin.orchestrator.planning.hybrid import make_hybrid
 
     return make_hybrid(**options)
 

@@ -13,10 +13,10 @@ import time
 from dataclasses import dataclass, field
 
 from drivetwin.orchestrator.backends import Backend, Message
-from drivetwin.orchestrator.grounding import Grounder, Match
-from drivetwin.orchestrator.jr_schema import WorldNames, call_schema, signature
-from drivetwin.orchestrator.managers import CALL_TIMEOUT_S, Answer, Requirement, ask
-from drivetwin.orchestrator.planning import PlanContext, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.base import PlanContext, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.grounding import Grounder, Match
+from drivetwin.orchestrator.planning.llm.jr_schema import WorldNames, call_schema, signature
+from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S, Answer, Requirement, ask
 from drivetwin.prompts.templates import as_json, jr_examples, render
 from drivetwin.tools.base import Family, ToolCall
 from drivetwin.tools.errors import ToolError

@@ -16,8 +16,8 @@ from __future__ import annotations
 import time
 from typing import Any
 
-from drivetwin.orchestrator.llm_planner import LlmPlanner
-from drivetwin.orchestrator.planning import Plan, PlanContext, Planner, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, Planner, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 
 # Rule plans at least this sure skip the LLM. The rule planner scores 0.95 for a prompt whose
 # every content word it knows, 0.15 less per unknown word and 0.2 less per guess (a repaired
@@ -117,7 +117,7 @@ def _version(plan: Plan, path: str) -> str | None:
 def make_hybrid(**options: Any) -> HybridPlanner:
     """The hybrid planner with the rule planner and an LLM hierarchy on `options`' backend;
     option `rules_confident` fixes the hand-off threshold (default: by the model's size)."""
-    from drivetwin.orchestrator.rule_planner import RulePlanner
+    from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 
     confident = options.pop("rules_confident", None)
     return HybridPlanner(RulePlanner(), make_llm(**options), confident=confident)

@@ -21,7 +21,7 @@ from drivetwin.orchestrator.backends import (
     InvalidOutput,
     Message,
 )
-from drivetwin.orchestrator.planning import PlanningError
+from drivetwin.orchestrator.planning.base import PlanningError
 from drivetwin.tools.base import FAMILIES, Family
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 

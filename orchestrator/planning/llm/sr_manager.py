@@ -7,10 +7,17 @@ the conversation, and the few-shot examples closest in meaning to the request.
 from __future__ import annotations
 
 from drivetwin.orchestrator.backends import Backend, Message
-from drivetwin.orchestrator.grounding import Grounder
-from drivetwin.orchestrator.managers import CALL_TIMEOUT_S, Answer, Requirement, Requirements, ask, requirements_schema
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning import PlanContext, TraceStep
+from drivetwin.orchestrator.planning.base import PlanContext, TraceStep
+from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.llm.managers import (
+    CALL_TIMEOUT_S,
+    Answer,
+    Requirement,
+    Requirements,
+    ask,
+    requirements_schema,
+)
 from drivetwin.prompts.templates import as_json, render, sr_examples
 
 # Few-shot examples per prompt: enough to show the pattern, few enough for a 4k context.

@@ -17,11 +17,11 @@ import time
 from typing import Any
 
 from drivetwin.orchestrator.backends import Backend, BackendError, load_backend
-from drivetwin.orchestrator.grounding import Grounder
-from drivetwin.orchestrator.jr_manager import JrManager
-from drivetwin.orchestrator.managers import CALL_TIMEOUT_S
-from drivetwin.orchestrator.planning import Plan, PlanContext, PlanningError, TraceStep
-from drivetwin.orchestrator.sr_manager import SrManager
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.llm.jr_manager import JrManager
+from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S
+from drivetwin.orchestrator.planning.llm.sr_manager import SrManager
 from drivetwin.prompts.templates import prompt_version
 from drivetwin.tools.base import Family, ToolCall
 
