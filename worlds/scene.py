@@ -7,12 +7,12 @@ right-handed with z up; yaw is measured from +x towards +y.
 
 from __future__ import annotations
 
-import json
 import math
 import re
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
+from drivetwin.worlds.json_input import MAX_SCENE_FILE_BYTES, JsonInputError, parse_json, read_text_file
 from pydantic import (
     AfterValidator,
     BaseModel,
@@ -48,7 +48,8 @@ Fraction = Annotated[float, Field(ge=0.0, le=1.0, allow_inf_nan=False)]
 class SceneModel(BaseModel):
     """Base for every Scene part: strict about unknown fields, compared by value."""
 
-    model_config = ConfigDict(extra="forbid", validate_assignment=True, frozen=False)
+    # No float is ever infinite or NaN: pydantic would save either as `null`.
+    model_config = ConfigDict(extra="forbid", validate_assignment=True, frozen=False, allow_inf_nan=False)
 
 
 class Pose(SceneModel):
@@ -62,11 +63,27 @@ class Pose(SceneModel):
     @field_validator("yaw")
     @classmethod
     def _wrap_yaw(cls, yaw: float) -> float:
-        return math.atan2(math.sin(yaw), math.cos(yaw))
+        return canonical_yaw(yaw)
 
     @property
     def xy(self) -> tuple[float, float]:
         return (self.x, self.y)
+
+
+# Yaw is kept to 12 decimals (a nanoradian): enough for any pose, and a value that is
+# already canonical comes back bit for bit, so save -> load -> save is byte-identical.
+YAW_DECIMALS = 12
+_YAW_LIMIT = round(math.pi, YAW_DECIMALS)
+
+
+def canonical_yaw(yaw: float) -> float:
+    """`yaw` wrapped into (-pi, pi] and rounded; a canonical value maps to itself exactly."""
+    wrapped = round(math.remainder(yaw, math.tau), YAW_DECIMALS)
+    if wrapped > _YAW_LIMIT:
+        wrapped = round(wrapped - math.tau, YAW_DECIMALS)
+    elif wrapped <= -_YAW_LIMIT:
+        wrapped = round(wrapped + math.tau, YAW_DECIMALS)
+    return wrapped + 0.0  # -0.0 becomes 0.0
 
 
 class Bounds(SceneModel):
@@ -421,19 +438,18 @@ class Scene(SceneModel):
     @classmethod
     def load(cls, path: str | Path) -> Scene:
         """Read a scene saved with `save`; a damaged file raises SceneFileError."""
-        target = Path(path)
         try:
-            text = target.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise SceneFileError(f"cannot read scene file {target}: {exc.strerror}") from exc
-        return cls.from_json(text, source=str(target))
+            text = read_text_file(path, "scene file", MAX_SCENE_FILE_BYTES)
+        except JsonInputError as exc:
+            raise SceneFileError(str(exc)) from exc
+        return cls.from_json(text, source=str(path))
 
     @classmethod
     def from_json(cls, text: str, source: str = "<text>") -> Scene:
         try:
-            data: Any = json.loads(text)
-        except json.JSONDecodeError as exc:
-            raise SceneFileError(f"{source} is not valid JSON: {exc.msg} at line {exc.lineno}") from exc
+            data: Any = parse_json(text, source)
+        except JsonInputError as exc:
+            raise SceneFileError(str(exc)) from exc
         try:
             return cls.model_validate(data)
         except ValidationError as exc:
