@@ -126,6 +126,19 @@ class Lane(SceneModel):
     centreline: list[Vec2] = Field(min_length=2)
     width: Positive = 3.5
     speed_limit: Positive = 8.0
+    # Imported road maps (drivetwin.worlds.opendrive) fill these; the defaults keep older
+    # scene files loading. OpenDRIVE lane types kept as lanes: traffic drives in "driving".
+    kind: Literal["driving", "shoulder", "border", "parking"] = "driving"
+    # Height of the road surface at each centreline point, metres; None: flat at z = 0.
+    elevation: list[Finite] | None = None
+    # Lanes that traffic may continue into from this lane's end (through junctions).
+    successors: list[str] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _elevation_per_point(self) -> Lane:
+        if self.elevation is not None and len(self.elevation) != len(self.centreline):
+            raise ValueError(f"lane {self.id!r}: elevation needs one height per centreline point")
+        return self
 
 
 class Sidewalk(SceneModel):
