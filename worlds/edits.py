@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import Annotated, Literal
 
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Environment, Scene, asset_order
+from drivetwin.worlds.storyboard import Storyboard
 from pydantic import BaseModel, ConfigDict, Field
 
 
@@ -46,7 +47,17 @@ class SetEnvironment(_Op):
     after: Environment
 
 
-Operation = Annotated[AddAsset | RemoveAsset | UpdateAsset | SetEnvironment, Field(discriminator="op")]
+class SetStoryboard(_Op):
+    """Replace the storyboard (events, manoeuvres, traffic-light phases)."""
+
+    op: Literal["storyboard"] = "storyboard"
+    before: Storyboard
+    after: Storyboard
+
+
+Operation = Annotated[
+    AddAsset | RemoveAsset | UpdateAsset | SetEnvironment | SetStoryboard, Field(discriminator="op")
+]
 
 
 class EditConflict(ValueError):
@@ -69,7 +80,7 @@ class WorldEdit(BaseModel):
 
     def inverse(self) -> WorldEdit:
         """The edit that undoes this one."""
-        undone: list[AddAsset | RemoveAsset | UpdateAsset | SetEnvironment] = []
+        undone: list[AddAsset | RemoveAsset | UpdateAsset | SetEnvironment | SetStoryboard] = []
         for op in reversed(self.ops):
             if isinstance(op, AddAsset):
                 undone.append(RemoveAsset(before=op.asset))
@@ -77,6 +88,8 @@ class WorldEdit(BaseModel):
                 undone.append(AddAsset(asset=op.before))
             elif isinstance(op, UpdateAsset):
                 undone.append(UpdateAsset(before=op.after, after=op.before))
+            elif isinstance(op, SetStoryboard):
+                undone.append(SetStoryboard(before=op.after, after=op.before))
             else:
                 undone.append(SetEnvironment(before=op.after, after=op.before))
         return WorldEdit(ops=tuple(undone))
@@ -96,6 +109,7 @@ class WorldEdit(BaseModel):
         assets = {a.id: a for a in scene.assets}
         ego = scene.ego
         environment = scene.environment
+        storyboard = scene.storyboard
         for op in self.ops:
             if isinstance(op, AddAsset):
                 if op.asset.id in assets or op.asset.id == EGO_ID:
@@ -115,6 +129,10 @@ class WorldEdit(BaseModel):
                     ego = op.after
                 else:
                     assets[op.before.id] = op.after
+            elif isinstance(op, SetStoryboard):
+                if storyboard != op.before:
+                    raise EditConflict("the storyboard is not as this edit expects")
+                storyboard = op.after
             else:
                 if environment != op.before:
                     raise EditConflict("the environment is not as this edit expects")
@@ -124,6 +142,7 @@ class WorldEdit(BaseModel):
                 "assets": sorted(assets.values(), key=asset_order),
                 "ego": ego,
                 "environment": environment,
+                "storyboard": storyboard,
             }
         )
 
@@ -138,6 +157,10 @@ class WorldEdit(BaseModel):
                 lines.append(f"- {op.before.id} ({op.before.category})")
             elif isinstance(op, UpdateAsset):
                 lines.append(f"~ {op.before.id}: {', '.join(_changed(op.before, op.after))}")
+            elif isinstance(op, SetStoryboard):
+                before = {e.name for _, e in op.before.events()}
+                added = [f"{a or 'signals'}: {e.name} ({e.action.kind})" for a, e in op.after.events() if e.name not in before]
+                lines.append(f"~ storyboard: {', '.join(added) or 'changed'}")
             else:
                 lines.append(f"~ environment: {', '.join(_env_changes(op.before, op.after))}")
         return lines

@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import Annotated, Any, Literal
 
 from drivetwin.worlds.json_input import MAX_SCENE_FILE_BYTES, JsonInputError, parse_json, read_text_file
+from drivetwin.worlds.storyboard import Storyboard
 from pydantic import (
     AfterValidator,
     BaseModel,
@@ -390,6 +391,8 @@ class Scene(SceneModel):
     ego: AssetInstance
     assets: list[AssetInstance] = Field(default_factory=list)
     environment: Environment = Field(default_factory=Environment)
+    # What happens over time (OpenSCENARIO-like); empty for a still scene.
+    storyboard: Storyboard = Field(default_factory=Storyboard)
     # The world package folder (drivetwin.worlds.reconstruct.package) this world was loaded
     # from: its terrain collides in MuJoCo and its splats are the renderer's background.
     package: str | None = None
