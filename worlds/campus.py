@@ -36,6 +36,10 @@ SIDEWALK_OFFSET = 5.5  # sidewalk centreline from the road centreline: lane + 2 
 SIDEWALK_WIDTH = 2.0
 JUNCTION = 9.0  # half-size of the paved crossroads box, with generous corner radii
 CROSSING_AT = 11.5  # crossings sit just outside the crossroads box
+ROAD_EDGE = LANE_WIDTH  # Main Street's kerbs, either side of its centreline
+DRIVEWAY_HALF_WIDTH = 3.0  # a two-way car-park driveway, 6 m wide
+LOT_A_DRIVEWAY_X = -85.0  # clear of the street lights at x = -80
+LOT_B_DRIVEWAY_X = 47.0  # clear of the street lights at x = 37 and 62
 
 
 def _rect(x0: float, y0: float, x1: float, y1: float) -> list[tuple[float, float]]:
@@ -95,6 +99,11 @@ def _paved() -> list[PavedArea]:
         PavedArea(id="parking_lot_b", kind="parking", polygon=_rect(15, -46, 62, -12)),
         PavedArea(id="jtekt_dropoff", kind="driveway", polygon=_rect(28, 7.5, 46, 15)),
         PavedArea(id="library_dropoff", kind="driveway", polygon=_rect(-50, -15, -32, -7.5)),
+        # The car parks' driveways join them to Main Street across the verge and sidewalk.
+        PavedArea(id="parking_lot_a_driveway", kind="driveway", polygon=_rect(
+            LOT_A_DRIVEWAY_X - DRIVEWAY_HALF_WIDTH, ROAD_EDGE, LOT_A_DRIVEWAY_X + DRIVEWAY_HALF_WIDTH, 14)),
+        PavedArea(id="parking_lot_b_driveway", kind="driveway", polygon=_rect(
+            LOT_B_DRIVEWAY_X - DRIVEWAY_HALF_WIDTH, -12, LOT_B_DRIVEWAY_X + DRIVEWAY_HALF_WIDTH, -ROAD_EDGE)),
     ]
 
 
@@ -141,6 +150,20 @@ def _landmarks() -> list[Landmark]:
         Landmark(
             name="parking lot B", aliases=["lot B", "student parking", "parking B", "car park"],
             kind="area", position=(38.5, -29.0), polygon=_rect(15, -46, 62, -12), heading=north,
+        ),
+        Landmark(
+            name="parking lot A entrance",
+            aliases=["lot A entrance", "entrance of lot A", "entrance of parking lot A",
+                     "parking lot A driveway", "lot A driveway"],
+            position=(LOT_A_DRIVEWAY_X, ROAD_EDGE), heading=south,
+            description="where parking lot A's driveway meets Main Street",
+        ),
+        Landmark(
+            name="parking lot B entrance",
+            aliases=["lot B entrance", "entrance of lot B", "entrance of parking lot B",
+                     "parking lot B driveway", "lot B driveway"],
+            position=(LOT_B_DRIVEWAY_X, -ROAD_EDGE), heading=north,
+            description="where parking lot B's driveway meets Main Street",
         ),
         Landmark(
             name="bus stop", aliases=["shuttle stop", "bus station"],
