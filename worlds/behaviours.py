@@ -17,7 +17,7 @@ control tick. Props ignore behaviours (they only move when something pushes them
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Literal
 
@@ -65,6 +65,16 @@ MIN_SENSE_M = 8.0
 # A ray that hits the vehicle itself restarts this far past the hit, at most this often.
 RAY_STEP_M = 0.01
 OWN_HITS_SKIPPED = 4
+# A red light's stop line counts for a vehicle whose route passes within this distance of it;
+# the vehicle plans to stop with its front bumper this far short of the line, braking this
+# gently (m/s², below BRAKE_DECEL: the speed loop lags a planned stop by about 1 m/s).
+STOP_LINE_ON_ROUTE_M = 1.5
+STOP_LINE_MARGIN_M = 1.0
+STOP_LINE_DECEL = 1.8
+# A front bumper up to this far past a red line still holds (it overshot; the junction is beyond).
+LINE_OVERSHOOT_M = 3.0
+# Below this asked and measured speed (m/s) a vehicle told to stop holds its wheels.
+STANDSTILL_MPS = 0.05
 
 AtEnd = Literal["loop", "stop"]
 StartCondition = Callable[[MujocoWorld, float], bool]
@@ -88,6 +98,10 @@ class BehaviourRunner:
 
     def bind(self, world: MujocoWorld) -> None:
         raise NotImplementedError
+
+    def done(self, world: MujocoWorld) -> bool:
+        """Whether a manoeuvre this runner plays has ended (a plain behaviour never ends)."""
+        return False
 
     def control(self, world: MujocoWorld, time: float, dt: float) -> None:
         raise NotImplementedError
@@ -138,7 +152,12 @@ class VehicleRouteRunner(BehaviourRunner):
     def __init__(self, asset: AssetInstance, route: Route, speed: float, start: StartCondition, at_end: AtEnd) -> None:
         self.asset_id = asset.id
         self.vehicle = VehicleController(asset.id, AckermannGeometry.of(asset))
-        self.route, self.speed, self.at_end = route, speed, at_end
+        self.route, self.at_end = route, at_end
+        # The speed asked for now; with a `rate` (m/s²) it ramps towards `target_speed`.
+        self.speed = self.target_speed = speed
+        self.rate: float | None = None
+        # Stop lines of red lights (set by the storyboard player every tick).
+        self.red_stops: Sequence[tuple[float, float]] = ()
         self.start = _Start(start)
         shape = category(asset.category)
         # From the rear axle (where VehicleState is) to the front bumper, and half the width.
@@ -159,7 +178,13 @@ class VehicleRouteRunner(BehaviourRunner):
         if self.start.elapsed(world, time) is None:
             self.vehicle.brake(data)
             return
+        if self.rate is not None:
+            step = self.rate * dt
+            self.speed += max(-step, min(step, self.target_speed - self.speed))
         state = self.vehicle.state(data)
+        if self.speed <= STANDSTILL_MPS and abs(state.speed) <= STANDSTILL_MPS * 4:
+            self.vehicle.brake(data)
+            return
         s = self.route.project(state.x, state.y)
         if not self.route.closed and s >= self.route.length - ARRIVAL_M:
             if self.at_end == "stop":
@@ -183,7 +208,29 @@ class VehicleRouteRunner(BehaviourRunner):
         """
         reach = max(MIN_SENSE_M, self.speed**2 / (2 * BRAKE_DECEL) + STOP_GAP_M)
         gap = clear_distance(world, self.asset_id, state, (tx, ty), self.front_m, self.half_width_m, reach)
-        return min(self.speed, math.sqrt(2 * BRAKE_DECEL * max(0.0, gap - STOP_GAP_M)))
+        free = gap - STOP_GAP_M
+        red_speed = math.sqrt(2 * STOP_LINE_DECEL * max(0.0, self.red_light_distance(state) - STOP_LINE_MARGIN_M))
+        return min(self.speed, red_speed, math.sqrt(2 * BRAKE_DECEL * max(0.0, free)))
+
+    def red_light_distance(self, state: VehicleState) -> float:
+        """Distance along the route from the front bumper to the nearest red stop line ahead."""
+        nearest = math.inf
+        if not self.red_stops:
+            return nearest
+        fx = state.x + self.front_m * math.cos(state.yaw)
+        fy = state.y + self.front_m * math.sin(state.yaw)
+        s_front = self.route.project(fx, fy)
+        for sx, sy in self.red_stops:
+            s_line = self.route.project(sx, sy)
+            px, py = self.route.point(s_line)
+            if math.hypot(px - sx, py - sy) > STOP_LINE_ON_ROUTE_M:
+                continue
+            ahead = s_line - s_front
+            if self.route.closed and ahead < 0.0:
+                ahead += self.route.length
+            if ahead >= -LINE_OVERSHOOT_M:
+                nearest = min(nearest, ahead)
+        return nearest
 
 
 def clear_distance(

@@ -14,7 +14,23 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-__all__ = ["CircleRoute", "PolylineRoute", "Route", "segment_polyline_intersection"]
+__all__ = [
+    "CircleRoute",
+    "NoJunctionError",
+    "OffsetRoute",
+    "PolylineRoute",
+    "Route",
+    "junction_route",
+    "segment_polyline_intersection",
+]
+
+# A junction turn's exit lane must leave within this angle of the asked turn (90° left or
+# right, 0° straight on); a U-turn is never a junction turn.
+TURN_TOLERANCE_RAD = math.pi / 4
+# Lanes are sampled this finely (m) to find where they enter and leave a junction box.
+JUNCTION_SAMPLE_M = 0.5
+# Points on a turn's curve through the junction (a quadratic Bézier).
+TURN_CURVE_POINTS = 16
 
 
 class Route:
@@ -157,3 +173,128 @@ def segment_polyline_intersection(
             hit = p + t * r
             best = (float(t), (float(hit[0]), float(hit[1])))
     return None if best is None else best[1]
+
+
+@dataclass
+class OffsetRoute(Route):
+    """A base route shifted sideways: from `d_from` to `d_to` metres (left positive) between
+    arc lengths `s_start` and `s_start + span`, with a smooth (cosine) blend: a lane change."""
+
+    base: Route
+    s_start: float
+    span: float
+    d_from: float
+    d_to: float
+
+    def __post_init__(self) -> None:
+        self.length = self.base.length
+        self.closed = self.base.closed
+
+    def offset(self, s: float) -> float:
+        t = min(1.0, max(0.0, (s - self.s_start) / self.span))
+        return self.d_from + (self.d_to - self.d_from) * (1.0 - math.cos(math.pi * t)) / 2.0
+
+    def point(self, s: float) -> tuple[float, float]:
+        x, y = self.base.point(s)
+        yaw, d = self.base.heading(s), self.offset(s)
+        return x - d * math.sin(yaw), y + d * math.cos(yaw)
+
+    def heading(self, s: float) -> float:
+        return self.base.heading(s)
+
+    def project(self, x: float, y: float) -> float:
+        return self.base.project(x, y)
+
+
+class NoJunctionError(LookupError):
+    """No junction ahead, or no lane out of it in the asked direction."""
+
+
+def _inside(point: tuple[float, float], polygon: Sequence[Sequence[float]]) -> bool:
+    x, y = point
+    inside = False
+    for (ax, ay), (bx, by) in itertools.pairwise([*polygon, polygon[0]]):
+        if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
+            inside = not inside
+    return inside
+
+
+def _span_inside(route: PolylineRoute, polygon: Sequence[Sequence[float]], s_from: float) -> tuple[float, float] | None:
+    """Arc lengths where `route` first enters and then leaves `polygon`, from `s_from` on."""
+    s, entered = s_from, None
+    while s <= route.length:
+        inside = _inside(route.point(s), polygon)
+        if entered is None and inside:
+            entered = s
+        elif entered is not None and not inside:
+            return entered, s
+        s += JUNCTION_SAMPLE_M
+    return None if entered is None else (entered, route.length)
+
+
+def junction_route(
+    lanes: Sequence[tuple[str, Sequence[Sequence[float]]]],
+    junctions: Sequence[Sequence[Sequence[float]]],
+    x: float,
+    y: float,
+    yaw: float,
+    turn: str,
+) -> tuple[PolylineRoute, float]:
+    """A route from (x, y, heading yaw) through the next junction ahead, turning as asked.
+
+    `lanes` are (id, centreline) pairs and `junctions` the junction boxes' polygons. The
+    route follows the current lane to the box, a curve tangent to both lanes across it (the
+    lane connection), then the exit lane to its end. Returns the route and the arc length
+    where it leaves the junction. Raises NoJunctionError when no junction or exit lane fits.
+    """
+    routes = {lane_id: PolylineRoute(points) for lane_id, points in lanes}
+    aligned = [
+        (r.distance_to(x, y), lane_id) for lane_id, r in routes.items()
+        if math.cos(r.heading(r.project(x, y)) - yaw) > math.cos(TURN_TOLERANCE_RAD)
+    ]
+    if not aligned:
+        raise NoJunctionError(f"no lane runs along heading {math.degrees(yaw):.0f}° at ({x:.1f}, {y:.1f})")
+    current_id = min(aligned)[1]
+    current = routes[current_id]
+    s_here = current.project(x, y)
+    ahead = [(span, box) for box in junctions if (span := _span_inside(current, box, s_here)) is not None]
+    if not ahead:
+        raise NoJunctionError(f"no junction ahead on lane {current_id}")
+    (s_in, _), box = min(ahead, key=lambda item: item[0][0])
+    entry, in_yaw = current.point(s_in), current.heading(s_in)
+    want = {"left": math.pi / 2, "right": -math.pi / 2, "straight": 0.0}[turn]
+    best: tuple[float, PolylineRoute, float] | None = None
+    for lane_id, r in routes.items():
+        span = _span_inside(r, box, 0.0)
+        if (lane_id == current_id and turn != "straight") or span is None:
+            continue
+        s_out = span[1]
+        error = abs(math.remainder(r.heading(s_out) - in_yaw - want, math.tau))
+        if error < TURN_TOLERANCE_RAD and (best is None or error < best[0]):
+            best = (error, r, s_out)
+    if best is None:
+        raise NoJunctionError(f"no lane leaves the junction to the {turn} of lane {current_id}")
+    _, exit_route, s_out = best
+    exit_point, out_yaw = exit_route.point(s_out), exit_route.heading(s_out)
+    control = _corner(entry, in_yaw, exit_point, out_yaw)
+    curve = [
+        (
+            (1 - t) ** 2 * entry[0] + 2 * (1 - t) * t * control[0] + t**2 * exit_point[0],
+            (1 - t) ** 2 * entry[1] + 2 * (1 - t) * t * control[1] + t**2 * exit_point[1],
+        )
+        for t in (k / TURN_CURVE_POINTS for k in range(TURN_CURVE_POINTS + 1))
+    ]
+    back = current.point(max(0.0, s_here - 1.0))
+    tail = [exit_route.point(s) for s in (s_out + 1.0, exit_route.length) if s <= exit_route.length]
+    route = PolylineRoute([back, *curve, *tail])
+    return route, route.project(*exit_point)
+
+
+def _corner(a: tuple[float, float], a_yaw: float, b: tuple[float, float], b_yaw: float) -> tuple[float, float]:
+    """Where the entry line (a, a_yaw) meets the exit line (b, b_yaw); the midpoint if parallel."""
+    ca, sa, cb, sb = math.cos(a_yaw), math.sin(a_yaw), math.cos(b_yaw), math.sin(b_yaw)
+    denominator = ca * sb - sa * cb
+    if abs(denominator) < 1e-6:
+        return ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    t = ((b[0] - a[0]) * sb - (b[1] - a[1]) * cb) / denominator
+    return (a[0] + t * ca, a[1] + t * sa)

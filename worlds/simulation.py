@@ -15,6 +15,7 @@ from collections import deque
 import mujoco
 from drivetwin.worlds.behaviours import BehaviourRunner, UnknownLaneError, runner_for
 from drivetwin.worlds.mujoco_adapter import DEFAULT_TIMESTEP, MujocoWorld, UpdateStats
+from drivetwin.worlds.scenario_player import StoryboardPlayer
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Pose, Scene
 
 __all__ = ["DEFAULT_CONTROL_EVERY", "Simulation", "TracePoint"]
@@ -61,6 +62,8 @@ class Simulation:
         for asset in scene.all_assets():
             self._make_runner(asset, scene)
         self._bind_all()
+        # Plays the storyboard: starts manoeuvres (replacing runners) and sets light states.
+        self.player = StoryboardPlayer(scene, start_time=self.time)
 
     # Runners --------------------------------------------------------------------------------
     def _make_runner(self, asset: AssetInstance, scene: Scene) -> None:
@@ -98,6 +101,9 @@ class Simulation:
                 self._runners.pop(asset_id, None)
                 self._traces.pop(asset_id, None)
             self._bind_all()
+            if old.storyboard != scene.storyboard:
+                self.player = StoryboardPlayer(scene, start_time=float(self.world.data.time))
+            self.player.scene = scene
             self.last_update = stats
             return stats
 
@@ -106,11 +112,12 @@ class Simulation:
         world = self.world
         now = float(world.data.time)
         period = self.dt * self.control_every
+        self.player.control(world, now, self._runners)
         for runner in self._runners.values():
             runner.control(world, now, period)
         for asset_id in self._runners:
             x, y, _, yaw = world.planar_pose(asset_id)
-            self._traces[asset_id].append((now, x, y, yaw))
+            self._traces.setdefault(asset_id, deque(maxlen=TRACE_LENGTH)).append((now, x, y, yaw))
 
     def _step_unlocked(self, n: int) -> None:
         model, data = self.world.model, self.world.data
