@@ -230,7 +230,7 @@ def schema(what: str) -> None:
 
 
 @main.command(context_settings={"ignore_unknown_options": True, "allow_extra_args": True})
-@click.argument("which", type=click.Choice(["edits", "physics", "splats", "hybrid", "planners"]))
+@click.argument("which", type=click.Choice(["edits", "physics", "splats", "hybrid", "planners", "roads"]))
 @click.pass_context
 def bench(ctx: click.Context, which: str) -> None:
     """Run a benchmark; it prints figures and writes JSON (--out FILE).
@@ -245,6 +245,7 @@ def bench(ctx: click.Context, which: str) -> None:
         "splats": "drivetwin.worlds.render.bench_splats",
         "hybrid": "drivetwin.worlds.render.bench_hybrid",
         "planners": "drivetwin.orchestrator.bench_planners",
+        "roads": "drivetwin.worlds.opendrive.bench",
     }[which]
     sys.argv = [module, *ctx.args]
     runpy.run_module(module, run_name="__main__")
@@ -324,5 +325,8 @@ def enhance(src_dir: Path, model: str, controlnet: str | None, out_dir: Path | N
 
 
 from drivetwin.worlds.reconstruct.cli import add_reconstruct_parser  # noqa: E402  (the reconstruct group)
+from drivetwin.worlds.opendrive.cli import import_command  # noqa: E402  (worlds import)
+
+worlds.add_command(import_command)
 
 add_reconstruct_parser(main)

@@ -1,5 +1,7 @@
-"""Worlds that can be loaded by name: the shipped ones, any in the user's world folders, and
-reconstructed world packages (drivetwin.worlds.reconstruct.package) on the asset search path."""
+"""Worlds that can be loaded by name: the shipped ones, any in the user's world folders,
+road maps imported with `drivetwin worlds import` (drivetwin.worlds.opendrive.package), and
+reconstructed world packages (drivetwin.worlds.reconstruct.package) on the asset search path.
+A world name may also be the path of a map file (.xodr or .osm), read in place."""
 
 from __future__ import annotations
 
@@ -41,9 +43,25 @@ def list_worlds() -> list[WorldEntry]:
                 continue  # a damaged user file must not hide the other worlds
             first_line = scene.description.split(". ")[0]
             found[path.stem] = WorldEntry(path.stem, path, first_line)
+    for entry in _imported_worlds():
+        found[entry.name] = entry
     for entry in _packaged_worlds():
         found.setdefault(entry.name, entry)
     return list(found.values())
+
+
+def _imported_worlds() -> list[WorldEntry]:
+    """Road-map worlds in the user's data folder (each a folder holding world.json)."""
+    from drivetwin.worlds.opendrive.package import WORLD_FILE, user_world_folder
+
+    entries = []
+    for path in sorted(user_world_folder().glob(f"*/{WORLD_FILE}")):
+        try:
+            scene = Scene.load(path)
+        except ValueError:
+            continue  # a damaged import must not hide the other worlds
+        entries.append(WorldEntry(path.parent.name, path, scene.description.split(". ")[0]))
+    return entries
 
 
 def _packaged_worlds() -> list[WorldEntry]:
@@ -63,6 +81,10 @@ def _packaged_worlds() -> list[WorldEntry]:
 def load_world(name: str) -> Scene:
     """The world called `name` (a shipped name, a user world, or a path to a JSON file)."""
     as_path = Path(name)
+    if as_path.suffix.lower() in (".xodr", ".osm") and as_path.is_file():
+        from drivetwin.worlds.opendrive.package import scene_from_file
+
+        return scene_from_file(as_path)
     if as_path.suffix == ".json" and as_path.exists():
         return _with_package(Scene.load(as_path), _package_of(as_path))
     for entry in reversed(list_worlds()):

@@ -1,0 +1,1 @@
+"""Writing drivetwin worlds in other tools' formats: OpenDRIVE road networks (opendrive.py)."""
