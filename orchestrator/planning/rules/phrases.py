@@ -11,6 +11,7 @@ import re
 from dataclasses import dataclass
 from functools import cache
 
+from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import EGO_ID, Scene
 
@@ -39,6 +40,8 @@ NUMBER_WORDS = {
     "twenty": 20,
 }
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
+# Tokens with their spans, numbers written with separators kept whole ("10,000").
+_TOKEN_SPANS = re.compile(r"\d{1,3}(?:,\d{3})+(?![\d,])|[a-z0-9_#.\-'+]+")
 EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle")
 
 
@@ -51,7 +54,8 @@ def normalise(text: str) -> str:
     out = " " + re.sub(r"\s+", " ", text.lower()) + " "
     for us, uk in (("center", "centre"), ("color", "colour"), ("gray", "grey"), ("meter", "metre")):
         out = out.replace(us, uk)
-    return out.replace("’", "'").replace(",", " , ")
+    # A comma inside a number ("10,000") is a thousands separator, not a clause break.
+    return re.sub(r"(?<!\d),|,(?!\d{3}(?!\d))", " , ", out.replace("’", "'"))
 
 
 def _singular(word: str) -> str:
@@ -120,16 +124,23 @@ def _whole(phrase: str) -> re.Pattern[str]:
     return re.compile(rf"(?<![a-z0-9_]){re.escape(phrase)}(?![a-z0-9_])")
 
 
-def find_count(text: str, before: int | None = None) -> int | None:
-    """The number that quantifies a noun (digits or words), looking just before `before`."""
+def find_count(text: str, before: int | None = None, what: str = "things") -> int | None:
+    """The number that quantifies a noun (digits or words), looking just before `before`;
+    a number that cannot be a count ("nan", "2.5") is refused, never read as a default."""
     low = normalise(text)
     window = low[:before] if before is not None else low
-    words = tokens(window)[-4:]
-    for word in reversed(words):
-        if word.isdigit():
-            return int(word)
-        if word in NUMBER_WORDS:
-            return NUMBER_WORDS[word]
+    return count_in_window(window, what)
+
+
+def count_in_window(window: str, what: str) -> int | None:
+    """The count written in the last few words of `window` (digits or number words)."""
+    written = {n.end: n for n in nb.numbers_in(window)}
+    for word in reversed(list(_TOKEN_SPANS.finditer(window))[-4:]):
+        number = written.get(word.end())
+        if number is not None:
+            return nb.count(number, what)
+        if word.group(0) in NUMBER_WORDS:
+            return NUMBER_WORDS[word.group(0)]
     return None
 
 
@@ -171,7 +182,9 @@ def find_lane(scene: Scene, text: str) -> str | None:
     return None
 
 
-_COORDS = re.compile(r"\(?\s*(?:x\s*=\s*)?(-?\d+(?:\.\d+)?)\s*[, ]\s*(?:y\s*=\s*)?(-?\d+(?:\.\d+)?)\s*\)?")
+# Coordinates are plain signed numbers; "1e9" and "nan" are read as written and refused later.
+_COORD = r"([-+]?(?:\d+(?:\.\d+)?|\.\d+)(?:e[-+]?\d+)?|[-+]?(?:nan|infinity|inf))"
+_COORDS = re.compile(rf"\(?\s*(?:x\s*=\s*)?{_COORD}\s*[, ]\s*(?:y\s*=\s*)?{_COORD}\s*\)?")
 
 
 def find_coordinates(text: str) -> tuple[float, float] | None:
@@ -179,25 +192,28 @@ def find_coordinates(text: str) -> tuple[float, float] | None:
     low = text.lower()
     m = re.search(r"(?:\bat\b|\bto\b|\()\s*" + _COORDS.pattern, low)
     if m is None:
-        m = re.search(r"x\s*=\s*(-?\d+(?:\.\d+)?)\s*,?\s*y\s*=\s*(-?\d+(?:\.\d+)?)", low)
+        m = re.search(rf"x\s*=\s*{_COORD}\s*,?\s*y\s*=\s*{_COORD}", low)
     if m is None:
         return None
-    return (float(m.group(1)), float(m.group(2)))
+    x, y = (nb.Number(nb.parse(m.group(i)), m.group(i), m.start(i), m.end(i)) for i in (1, 2))
+    return (nb.finite(x, "a coordinate"), nb.finite(y, "a coordinate"))
 
 
 def find_distance(text: str) -> float | None:
     """A distance in metres ('5 m', '10 metres', '3 meters')."""
-    m = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:m\b|metres?\b|meters?\b)", text.lower())
-    return float(m.group(1)) if m else None
+    m = re.search(rf"({nb.NUMBER})\s*(?:m\b|metres?\b|meters?\b)", text.lower())
+    if m is None:
+        return None
+    return nb.finite(nb.Number(nb.parse(m.group(1)), m.group(1), m.start(1), m.end(1)), "a distance in metres")
 
 
 def find_speed(text: str) -> float | None:
     """A speed: 'at 3 m/s' or 'at 20 km/h' (converted to m/s)."""
     low = text.lower()
-    m = re.search(r"(\d+(?:\.\d+)?)\s*(m/s|km/h|kph|mph)", low)
+    m = re.search(rf"({nb.NUMBER})\s*(m/s|km/h|kph|mph)", low)
     if m is None:
         return None
-    value = float(m.group(1))
+    value = nb.finite(nb.Number(nb.parse(m.group(1)), m.group(1), m.start(1), m.end(1)), "a speed")
     return value / 3.6 if m.group(2) in ("km/h", "kph") else value * 0.447 if m.group(2) == "mph" else value
 
 

@@ -40,7 +40,9 @@ MIN_CONFIDENCE = 0.05
 # Radius of a search "around" a place when the prompt gives none, metres.
 SEARCH_NEAR_M = 20.0
 
-_SPLIT = re.compile(r"([.;:!?\n]+|,?\s+(?:and then|then|and also|after that)\s+)")
+# Clause breaks: a stop or colon between digits is part of a number or a clock time ("2.5 m",
+# "18:30"), not a break.
+_SPLIT = re.compile(r"((?:[;!?\n]|(?<!\d)[.:]|[.:](?!\d))+|,?\s+(?:and then|then|and also|after that)\s+)")
 _VERBS = (
     "add",
     "make",

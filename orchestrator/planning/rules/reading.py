@@ -201,15 +201,15 @@ def read(text: str, scene: Scene) -> Reading:
 
 
 def find_count(reading: Reading, mention: ph.Mention) -> int | None:
-    """The number quantifying a mention; collective nouns ("a row of") are not "one"."""
-    for word in reversed(ph.tokens(reading.low[: mention.start])[-4:]):
+    """The number quantifying a mention; collective nouns ("a row of") are not "one"; a number
+    that cannot be a count ("nan", "2.5") is refused rather than replaced by a default."""
+    before = reading.low[: mention.start]
+    for word in reversed(ph.tokens(before)[-4:]):
         if word in lx.COLLECTIVE_COUNTS:
             return lx.COLLECTIVE_COUNTS[word] or None
-        if word.isdigit():
-            return int(word)
-        if word in ph.NUMBER_WORDS:
-            return ph.NUMBER_WORDS[word]
-    return None
+        if word.isdigit() or word in ph.NUMBER_WORDS or any(c.isdigit() for c in word) or word in ("nan", "inf"):
+            break
+    return ph.count_in_window(before, ph.singular(reading.low[mention.start : mention.end].strip()) + "s")
 
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:

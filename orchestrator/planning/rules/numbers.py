@@ -1,0 +1,75 @@
+"""Numbers as people write them: "3", "2.5", "10,000", "1e2", and the words that are no number.
+
+Every amount the rule planner reads (counts, metres, coordinates, speeds) is parsed here, so
+"1e2 m" is 100 m rather than 2 m, and "10,000 cones" is ten thousand rather than three. A
+value that is no finite amount ("nan", "inf") or cannot be what it quantifies (a count of
+2.5, of 0, or negative) is refused with a message that says what was read and what is
+allowed: the planner never substitutes a default for a number it was given.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+from drivetwin.orchestrator.planning.base import PlanningError
+
+# A written number: digits with optional thousands separators, decimals and an exponent, or
+# the words that parse as floats but are no amount. Not part of an id ("car_2") or a word.
+NUMBER = (
+    r"(?<![\w.])(?:[-+]?(?:\d{1,3}(?:,\d{3})+(?![\d,])|\d+(?:\.\d+)?|\.\d+)(?:e[-+]?\d+)?"
+    r"|[-+]?(?:nan|infinity|inf))(?![\w])"
+)
+_NUMBER = re.compile(NUMBER, re.IGNORECASE)
+# The most of anything one request may count: far above what a scene can hold, so a larger
+# figure is a slip or a test of limits, refused in words rather than truncated.
+MAX_COUNT = 1_000_000
+
+
+class NumberError(PlanningError):
+    """A number in the request that cannot be the amount it stands for (nan, inf, 2.5 cones)."""
+
+
+@dataclass(frozen=True)
+class Number:
+    """A number found in text: its value, the words it was written as, and where."""
+
+    value: float
+    text: str
+    start: int
+    end: int
+
+    @property
+    def finite(self) -> bool:
+        return math.isfinite(self.value)
+
+
+def parse(text: str) -> float:
+    """The value of one written number ("10,000" -> 10000.0, "1e2" -> 100.0, "nan" -> nan)."""
+    return float(text.replace(",", "").lower())
+
+
+def numbers_in(text: str) -> list[Number]:
+    """Every written number in `text`, in order."""
+    return [Number(parse(m.group(0)), m.group(0), m.start(), m.end()) for m in _NUMBER.finditer(text)]
+
+
+def finite(number: Number, what: str) -> float:
+    """The value of `number`, or a NumberError naming `what` it was meant to be."""
+    if not number.finite:
+        raise NumberError(f"{number.text!r} is not a number I can use as {what}; give a figure, e.g. 5")
+    return number.value
+
+
+def count(number: Number, what: str) -> int:
+    """`number` as a count of `what`: a whole number from 1 to MAX_COUNT, else a NumberError."""
+    value = finite(number, f"a number of {what}")
+    if value != int(value) or value < 1:
+        raise NumberError(f"{number.text!r} is not a number of {what}; say how many, e.g. 3")
+    if value > MAX_COUNT:
+        raise NumberError(f"{number.text} {what} is more than any scene can hold; ask for fewer")
+    return int(value)
+
+
+__all__ = ["MAX_COUNT", "NUMBER", "Number", "NumberError", "count", "finite", "numbers_in", "parse"]
