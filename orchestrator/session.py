@@ -7,17 +7,18 @@ handed to the views (the MuJoCo simulation, the renderer) through `on_change`.
 
 from __future__ import annotations
 
+import contextlib
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from drivetwin.orchestrator.journal import Entry, History, Journal
+from drivetwin.orchestrator.journal import Entry, EventKind, History, Journal, JournalError, JournalWriteError
 from drivetwin.orchestrator.memory import Memory, Turn
 from drivetwin.orchestrator.planning import MAX_PROMPT_CHARS, Plan, PlanContext, Planner, PlanningError
 from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute
 from drivetwin.tools.registry import ToolRegistry
-from drivetwin.worlds.edits import WorldEdit
+from drivetwin.worlds.edits import EditConflict, WorldEdit
 from drivetwin.worlds.scene import Scene
 
 
@@ -68,14 +69,45 @@ class Session:
         registry: ToolRegistry | None = None,
         on_change: Callable[[Scene], None] | None = None,
     ) -> Session:
-        """The session a journal describes, as it was when the journal was last written."""
+        """The session a journal describes, as it was when the journal was last written.
+
+        The session becomes the journal's only writer (JournalLockedError if another has it)
+        and appends to it; a journal that does not replay is left untouched.
+        """
         journal = Journal(journal_path)
-        restored = journal.replay()
+        journal.open()
+        try:
+            restored = journal.replay()
+        except JournalError:
+            journal.close()
+            raise
         session = cls(restored.scene, planner, registry, None, on_change)
         session.history = restored.history
         session.memory = restored.memory
         session.journal = journal
         return session
+
+    def close(self) -> None:
+        """End the session cleanly: an `end` event, and the journal's lock released."""
+        if self.journal is not None:
+            try:
+                self.journal.end()
+            except JournalWriteError:
+                self.journal.close()  # a full disk: the journal stays resumable without `end`
+
+    def _record(self, kind: EventKind, **payload: object) -> None:
+        """Journal an undo/redo/accept/reject/load before it happens; a failed write refuses it."""
+        if self.journal is not None:
+            try:
+                self.journal.append(kind, **payload)
+            except JournalWriteError as exc:
+                raise SessionError(str(exc)) from exc
+
+    def _note(self, turn: Turn) -> None:
+        """Journal a conversation turn; on a full disk the turn lives on in memory only."""
+        if self.journal is not None:
+            with contextlib.suppress(JournalWriteError):
+                self.journal.append("turn", turn=turn.model_dump(mode="json"))
 
     @property
     def scene(self) -> Scene:
@@ -110,7 +142,10 @@ class Session:
             self._remember(text, plan, outcome, "answered")
             answer = plan.answer or ("; ".join(results) if results else None)
             return TurnReport(text, True, plan, results, [], None, time.perf_counter() - started, answer)
-        self._commit(text, outcome.edit, outcome.after)
+        try:
+            self._commit(text, outcome.edit, outcome.after)
+        except JournalWriteError as exc:  # not durable, so not done: the scene stays as it was
+            return self._failed(text, str(exc), started, plan)
         self._remember(text, plan, outcome, "applied")
         return TurnReport(
             text, True, plan, results, outcome.edit.summary(), None,
@@ -120,8 +155,7 @@ class Session:
     def _failed(self, prompt: str, error: str, started: float, plan: Plan | None = None) -> TurnReport:
         turn = Turn(prompt=prompt[:500], status="failed", results=[error[:300]])
         self.memory.record(turn)
-        if self.journal is not None:
-            self.journal.append("turn", turn=turn.model_dump(mode="json"))
+        self._note(turn)
         return TurnReport(prompt, False, plan, [], [], error, time.perf_counter() - started)
 
     def _remember(self, prompt: str, plan: Plan, outcome: Outcome, status: str) -> None:
@@ -140,8 +174,7 @@ class Session:
             touched=sorted(edit.touched_ids()),
         )
         self.memory.record(turn)
-        if self.journal is not None:
-            self.journal.append("turn", turn=turn.model_dump(mode="json"))
+        self._note(turn)
 
     def _commit(self, prompt: str, edit: WorldEdit, after: Scene) -> None:
         entry = Entry(self.history.next_txn, prompt, edit)
@@ -164,9 +197,8 @@ class Session:
             raise SessionError("nothing to undo")
         entry = self.history.done[-1]
         inverse = entry.edit.inverse()
-        after = inverse.apply(self._scene)
-        if self.journal is not None:
-            self.journal.append("undo", txn=entry.txn)
+        after = _applied(inverse, self._scene, f"change {entry.txn} cannot be undone")
+        self._record("undo", txn=entry.txn)
         self.history.done.pop()
         self.history.undone.append(entry)
         self.memory.mark_last("undone")
@@ -178,9 +210,8 @@ class Session:
         if not self.history.undone:
             raise SessionError("nothing to redo")
         entry = self.history.undone[-1]
-        after = entry.edit.apply(self._scene)
-        if self.journal is not None:
-            self.journal.append("redo", txn=entry.txn)
+        after = _applied(entry.edit, self._scene, f"change {entry.txn} cannot be redone")
+        self._record("redo", txn=entry.txn)
         self.history.undone.pop()
         self.history.done.append(entry)
         self.memory.mark_last("applied")
@@ -192,8 +223,7 @@ class Session:
         if not self.history.done or self.history.done[-1].accepted:
             raise SessionError("no pending change to accept")
         entry = self.history.done[-1]
-        if self.journal is not None:
-            self.journal.append("accept", txn=entry.txn)
+        self._record("accept", txn=entry.txn)
         entry.accepted = True
         self.memory.mark_last("accepted")
         return f"accepted change {entry.txn}: {entry.prompt}"
@@ -204,10 +234,10 @@ class Session:
             raise SessionError("no pending change to reject")
         entry = self.history.done[-1]
         inverse = entry.edit.inverse()
-        after = inverse.apply(self._scene)
-        if self.journal is not None:
-            self.journal.append("reject", txn=entry.txn)
+        after = _applied(inverse, self._scene, f"change {entry.txn} cannot be rejected")
+        self._record("reject", txn=entry.txn)
         self.history.done.pop()
+        self.history.undone.clear()  # undone changes were made on top of the rejected one
         self.memory.mark_last("rejected")
         self._set_scene(after)
         return inverse.summary()
@@ -216,13 +246,24 @@ class Session:
     def save(self, path: str | Path) -> Path:
         """Write the scene as JSON (atomically)."""
         target = Path(path)
+        if not target.name or target.name in (".", "..") or target.is_dir():
+            raise SessionError(f"cannot save to {path!s}: it is a folder; give a file path such as scene.json")
+        if not target.parent.is_dir():
+            raise SessionError(f"cannot save to {path!s}: the folder {target.parent} does not exist")
         self._scene.save(target)
         return target
 
     def load(self, path: str | Path) -> None:
         """Replace the scene by a saved one; a bad file changes nothing."""
         scene = Scene.load(path)  # raises SceneFileError before anything changes
-        if self.journal is not None:
-            self.journal.append("load", scene=scene.model_dump(mode="json"))
+        self._record("load", scene=scene.model_dump(mode="json"))
         self.history = History(next_txn=self.history.next_txn)
         self._set_scene(scene)
+
+
+def _applied(edit: WorldEdit, scene: Scene, refusal: str) -> Scene:
+    """`edit` applied to `scene`, or a SessionError saying why it no longer fits."""
+    try:
+        return edit.apply(scene)
+    except EditConflict as exc:
+        raise SessionError(f"{refusal}: {exc}") from exc

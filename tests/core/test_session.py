@@ -83,6 +83,7 @@ def test_resume_replays_the_journal_exactly(session, tmp_path):
                    "make it night"):
         assert session.submit(prompt).ok
     session.undo()
+    session.close()
     resumed = Session.resume(session.journal.path, RulePlanner())
     assert resumed.scene == session.scene
     assert [t.status for t in resumed.memory.turns] == [t.status for t in session.memory.turns]
