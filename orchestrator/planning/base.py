@@ -31,11 +31,6 @@ class TraceStep(BaseModel):
     seconds: float = 0.0
     retries: int = 0
     tokens: int = 0
-    # Set when the planner cannot tell which of a few readings was meant: the session asks
-    # instead of applying anything (the calls are then empty).
-    question: Question | None = None
-    # Other candidate readings, best first (other planners' plans), for the plan-vs-request check.
-    alternatives: list[Reading] = Field(default_factory=list)
 
 
 class Reading(BaseModel):
@@ -71,6 +66,11 @@ class Plan(BaseModel):
     trace: list[TraceStep] = Field(default_factory=list)
     retries: int = 0
     tokens: int = 0
+    # Set when the planner cannot tell which of a few readings was meant: the session asks
+    # instead of applying anything (the calls are then empty).
+    question: Question | None = None
+    # Other candidate readings, best first (other planners' plans), for the plan-vs-request check.
+    alternatives: list[Reading] = Field(default_factory=list)
 
 
 class PlanningError(Exception):
