@@ -125,7 +125,7 @@ def read_opendrive(path: str | Path, step: float = SAMPLE_STEP_M) -> RoadMap:
         lanes.extend(_lanes_of(road, names))
         crossings.extend(_crossings_of(road))
         props.extend(_props_of(road))
-    return RoadMap(lanes, crossings, _merge_props(props), [_junction(j, names) for j in junctions], names)
+    return RoadMap(lanes, crossings, _merge_props(props), [_junction(j, _roads_at_junctions(roads)) for j in junctions], names)
 
 
 def _normalised(source: Path) -> io.BytesIO:
@@ -263,6 +263,17 @@ def _merge_props(props: list[MapProp]) -> list[MapProp]:
     return kept
 
 
-def _junction(junction: Any, names: dict[str, str]) -> MapJunction:
-    incoming = sorted(str(r) for r in junction.get_incoming_road_ids())
+def _roads_at_junctions(roads: list[Any]) -> dict[str, set[str]]:
+    """Junction id -> ids of the roads whose ends link to it."""
+    touching: dict[str, set[str]] = {}
+    for road in roads:
+        for end in road.road_xml.findall("link/*"):
+            if end.get("elementType") == "junction":
+                touching.setdefault(str(end.get("elementId")), set()).add(str(road.id))
+    return touching
+
+
+def _junction(junction: Any, touching: dict[str, set[str]]) -> MapJunction:
+    # Every road the junction joins: a one-way street leaving it is not "incoming" but names it too.
+    incoming = sorted({str(r) for r in junction.get_incoming_road_ids()} | touching.get(str(junction.id), set()))
     return MapJunction(str(junction.id), str(junction.junction_xml.attrib.get("name", "")).strip(), incoming)

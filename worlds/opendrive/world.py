@@ -1,8 +1,8 @@
 """A drivetwin Scene from a RoadMap: lanes, sidewalks, crossings, junction paving, props,
 buildings and the names people use for places.
 
-Map coordinates are shifted so the map's centre is the world origin (a Scene keeps its
-coordinates within ±10 km); `SceneOrigin` records the shift so export can undo it.
+Map coordinates are kept when they fit a Scene (within ±10 km); a map further from its own
+origin is shifted so its centre is the world origin.
 """
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ from drivetwin.worlds.opendrive.landmarks import MapPlace, place_landmarks
 from drivetwin.worlds.opendrive.reader import MapLane, RoadMap
 from drivetwin.worlds.scene import (
     EGO_ID,
+    MAX_COORDINATE_M,
     AssetInstance,
     Bounds,
     Building,
@@ -78,7 +79,9 @@ def scene_from_map(road_map: RoadMap, name: str, description: str,
     everything = np.vstack([lane.points[:, :2] for lane in road_map.lanes]
                            + [np.asarray(b.footprint) for b in buildings])
     lo, hi = everything.min(axis=0), everything.max(axis=0)
-    origin = np.round((lo + hi) / 2)
+    # Coordinates stay as they are when they fit (export then writes the source's frame back).
+    fits = max(abs(lo).max(), abs(hi).max()) + BOUNDS_MARGIN_M < MAX_COORDINATE_M
+    origin = np.zeros(2) if fits else np.round((lo + hi) / 2)
     sections: dict[str, int] = {}
     for lane in road_map.lanes:
         sections[lane.road_id] = max(sections.get(lane.road_id, 0), lane.key[1] + 1)
@@ -92,8 +95,8 @@ def scene_from_map(road_map: RoadMap, name: str, description: str,
     houses = [Building(id=f"building_{slug(b.key)}", name=b.name or f"building {b.key}",
                       footprint=[_shift(p, origin) for p in b.footprint], height=b.height) for b in buildings]
     roads = RoadNetwork(lanes=lanes, sidewalks=walks, crossings=crossings, paved=paved)
-    half = (hi - lo) / 2 + BOUNDS_MARGIN_M
-    bounds = Bounds(xmin=-half[0], xmax=half[0], ymin=-half[1], ymax=half[1])
+    low, high = lo - origin - BOUNDS_MARGIN_M, hi - origin + BOUNDS_MARGIN_M
+    bounds = Bounds(xmin=float(low[0]), xmax=float(high[0]), ymin=float(low[1]), ymax=float(high[1]))
     shifted_places = [MapPlace(p.name, p.kind, *_shift((p.x, p.y), origin), p.polygon and
                                [_shift(q, origin) for q in p.polygon]) for p in places]
     landmarks = place_landmarks(road_map, roads, ids, (float(origin[0]), float(origin[1])), houses, shifted_places)

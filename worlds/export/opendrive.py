@@ -1,0 +1,66 @@
+"""Write any world's road network as OpenDRIVE with scenariogeneration.
+
+Each lane becomes one road with one right-hand lane whose centre is the road's reference line
+(a lane offset of half its width): the plan view is the lane's centreline as line segments,
+the elevation profile its heights as linear pieces, so reading the file back gives the same
+lanes. Sidewalks are roads with one sidewalk lane. The road's name is the lane's road name.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from pathlib import Path
+
+from drivetwin.worlds.scene import Scene
+
+__all__ = ["export_opendrive"]
+
+
+def _road(road_id: int, name: str, polyline: Sequence[tuple[float, float]], width: float, lane_type: str,
+          elevation: Sequence[float] | None) -> object:
+    from scenariogeneration import xodr
+
+    planview = xodr.PlanView()
+    travelled, stations = 0.0, [0.0]
+    for (x1, y1), (x2, y2) in zip(polyline, polyline[1:], strict=False):
+        length = math.hypot(x2 - x1, y2 - y1)
+        if length <= 0.0:
+            continue
+        planview.add_fixed_geometry(xodr.Line(length), x1, y1, math.atan2(y2 - y1, x2 - x1), s=travelled)
+        travelled += length
+        stations.append(travelled)
+    centre = xodr.Lane()
+    section = xodr.LaneSection(0.0, centre)
+    section.add_right_lane(xodr.Lane(lane_type=getattr(xodr.LaneType, lane_type), a=width))
+    lanes = xodr.Lanes()
+    lanes.add_lanesection(section)
+    # The centre lane sits half a lane to the left, so lane -1's centre is the reference line.
+    lanes.add_laneoffset(xodr.LaneOffset(0.0, width / 2, 0.0, 0.0, 0.0))
+    road = xodr.Road(road_id, planview, lanes, name=name)
+    if elevation is not None:
+        kept = [z for (a, b), z in zip(zip(polyline, polyline[1:], strict=False), elevation, strict=False)
+                if math.hypot(b[0] - a[0], b[1] - a[1]) > 0.0]
+        heights = [*kept, elevation[-1]]
+        for k in range(len(stations) - 1):
+            slope = (heights[k + 1] - heights[k]) / max(stations[k + 1] - stations[k], 1e-9)
+            road.add_elevation(stations[k], heights[k], slope, 0.0, 0.0)
+    return road
+
+
+def export_opendrive(scene: Scene, path: str | Path) -> Path:
+    """Write `scene`'s lanes and sidewalks to the OpenDRIVE file `path` and return it."""
+    from scenariogeneration import xodr
+
+    odr = xodr.OpenDrive(scene.name)
+    road_id = 1
+    for lane in scene.roads.lanes:
+        lane_type = "driving" if lane.kind == "driving" else lane.kind
+        odr.add_road(_road(road_id, lane.road, lane.centreline, lane.width, lane_type, lane.elevation))
+        road_id += 1
+    for walk in scene.roads.sidewalks:
+        odr.add_road(_road(road_id, walk.id, walk.polyline, walk.width, "sidewalk", None))
+        road_id += 1
+    target = Path(path)
+    odr.write_xml(str(target))
+    return target
