@@ -8,15 +8,15 @@ from typing import Literal
 from drivetwin.tools.add import new_asset
 from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import RuleViolation
-from drivetwin.tools.locate import Location, resolve_anchor, resolve_target
-from drivetwin.tools.rules import check_placement
+from drivetwin.tools.locate import SEARCH_RADIUS_M, Location, resolve_anchor, resolve_target
+from drivetwin.tools.rules import check_placement, footprint
 from drivetwin.worlds.catalog import category, placeable_categories
 from drivetwin.worlds.edits import AddAsset, WorldEdit
 from drivetwin.worlds.scene import AssetInstance, Pose, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_along
+from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon
 from pydantic import Field
 
-Shape = Literal["line", "ring", "grid", "lane_edge"]
+Shape = Literal["line", "ring", "grid", "lane_edge", "parking_row"]
 # Free space kept around a ring's target (added to the target's own half-length).
 RING_CLEARANCE_M = 1.5
 MAX_ARRANGED = 100
@@ -24,6 +24,13 @@ MAX_ARRANGED = 100
 ENCLOSE_WITHIN_M = 6.0
 # Gap between a ring and the outermost thing it encloses.
 RING_GAP_M = 0.5
+# Centre-to-centre spacing of parking bays: a standard car-park bay is 2.4-2.7 m wide.
+PARKING_BAY_WIDTH_M = 2.7
+# A parked row keeps at least this much between neighbours' sides (doors must open).
+PARKING_SIDE_GAP_M = 0.6
+# Row positions tried across a parking lot, on a grid this fine.
+PARKING_SEARCH_STEP_M = 1.0
+DEFAULT_ROW = 4
 
 
 class ArrangeArgs(ToolArgs):
@@ -31,12 +38,19 @@ class ArrangeArgs(ToolArgs):
         min_length=1, max_length=4,
         description="one category (homogeneous) or several used in turn (mixed)",
     )
-    shape: Shape
+    shape: Shape = Field(
+        description="line, ring (around the target), grid, lane_edge, or parking_row: vehicles side by "
+        "side at parking-bay spacing, all facing the same way, on a free stretch of a parking lot"
+    )
     count: int | None = Field(None, ge=1, le=MAX_ARRANGED, description="how many in all")
-    location: Location = Field(description="the target to ring around, or where the layout starts")
+    location: Location = Field(
+        description="the target to ring around, where the layout starts, or the parking lot for a parking_row"
+    )
     radius: float | None = Field(None, gt=0.5, le=60.0, description="ring radius, metres")
     spacing: float | None = Field(None, gt=0.1, le=30.0, description="gap between centres, metres")
-    heading_deg: float | None = Field(None, ge=-360.0, le=360.0, description="line direction")
+    heading_deg: float | None = Field(
+        None, ge=-360.0, le=360.0, description="line direction; for parking_row the way the vehicles face"
+    )
     columns: int | None = Field(None, ge=1, le=20, description="grid columns")
     label: str = Field("", max_length=80)
 
@@ -124,14 +138,79 @@ def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list
     return poses
 
 
-LAYOUTS = {"ring": _ring, "line": _line, "grid": _grid, "lane_edge": _lane_edge}
+def _row_at(x: float, y: float, heading: float, spacing: float, count: int) -> list[Pose]:
+    """`count` poses side by side, centred on (x, y), facing `heading`."""
+    across = heading + math.pi / 2
+    start = -(count - 1) / 2 * spacing
+    return [Pose(x=x + (start + k * spacing) * math.cos(across), y=y + (start + k * spacing) * math.sin(across),
+                 yaw=heading) for k in range(count)]
+
+
+def _row_fits(scene: Scene, poses: list[Pose], templates: list[AssetInstance],
+              area: list[tuple[float, float]] | None) -> bool:
+    placed: list[AssetInstance] = []
+    others = scene.all_assets()
+    for pose, template in zip(poses, templates, strict=True):
+        asset = template.model_copy(update={"pose": pose})
+        if area is not None and not all(point_in_polygon(x, y, area) for x, y in footprint(asset)):
+            return False
+        try:
+            check_placement(scene, asset, [*others, *placed])
+        except RuleViolation:
+            return False
+        placed.append(asset)
+    return True
+
+
+def _parking_row(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[float]) -> list[Pose]:
+    """The free row of parked vehicles nearest the location, inside its parking lot if it names one."""
+    anchor = resolve_anchor(scene, args.location, max(sizes) / 2)
+    heading = math.radians(args.heading_deg) if args.heading_deg is not None else anchor.heading
+    spacing = args.spacing or max(PARKING_BAY_WIDTH_M, max(widths) + PARKING_SIDE_GAP_M)
+    count = args.count or DEFAULT_ROW
+    templates = [new_asset(scene, args.categories[k % len(args.categories)], set()) for k in range(count)]
+    # Distinct ids, so the row's members are told apart by the overlap rule.
+    templates = [t.model_copy(update={"id": f"{t.id}_row{k}"}) for k, t in enumerate(templates)]
+    area = anchor.area
+    reach = SEARCH_RADIUS_M
+    if area is not None:
+        reach = max(max(p[0] for p in area) - min(p[0] for p in area), max(p[1] for p in area) - min(p[1] for p in area))
+    steps = int(reach / PARKING_SEARCH_STEP_M)
+    centres = sorted(
+        ((anchor.x + i * PARKING_SEARCH_STEP_M, anchor.y + j * PARKING_SEARCH_STEP_M)
+         for i in range(-steps, steps + 1) for j in range(-steps, steps + 1)),
+        key=lambda p: math.hypot(p[0] - anchor.x, p[1] - anchor.y),
+    )
+    if area is not None:
+        centres = [c for c in centres if point_in_polygon(c[0], c[1], area)]
+
+    def first_fit(n: int) -> list[Pose] | None:
+        for cx, cy in centres:
+            poses = _row_at(cx, cy, heading, spacing, n)
+            if _row_fits(scene, poses, templates[:n], area):
+                return poses
+        return None
+
+    row = first_fit(count)
+    if row is not None:
+        return row
+    fit = next((n for n in range(count - 1, 0, -1) if first_fit(n) is not None), 0)
+    where = anchor.near.name if anchor.near else f"({anchor.x:.1f}, {anchor.y:.1f})"
+    raise RuleViolation(
+        "no_space", f"no free row for {count} parked {'/'.join(args.categories)} at {spacing:g} m "
+        f"bays in {where}; {fit} fit side by side",
+    )
+
+
+LAYOUTS = {"ring": _ring, "line": _line, "grid": _grid, "lane_edge": _lane_edge, "parking_row": _parking_row}
 
 
 class ArrangeAssets(Tool[ArrangeArgs]):
     name = "arrange_assets"
     description = (
-        "Add several assets laid out as a line, a ring around a target, a grid, or along a "
-        "lane's edge; one category or a mix used in turn."
+        "Add several assets laid out as a line, a ring around a target, a grid, along a "
+        "lane's edge, or as a parking_row of vehicles side by side in a parking lot; one "
+        "category or a mix used in turn."
     )
     family = "arrange"
     Args = ArrangeArgs

@@ -9,11 +9,13 @@ from __future__ import annotations
 
 import difflib
 import math
+import re
 from dataclasses import dataclass
 from typing import Literal
 
+from drivetwin.tools.along import Side, TrackPoint, along_point, free_pose_on_track
 from drivetwin.tools.errors import NotFoundError, RuleViolation
-from drivetwin.tools.rules import check_placement
+from drivetwin.tools.rules import check_placement, footprints_overlap
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.scene import AssetInstance, Finite, Pose, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, surface_at
@@ -55,6 +57,19 @@ class Location(BaseModel):
     distance: float | None = Field(
         None, ge=0.0, le=100.0, description="metres from the target (default: just clear of it)"
     )
+    along_m: float | None = Field(
+        None, ge=-200.0, le=200.0,
+        description="metres along the lane or sidewalk the target stands on: positive ahead (its "
+        "direction of travel), negative behind (relation 'behind' also means behind); the "
+        "result stays on that lane or sidewalk",
+    )
+    side: Literal["left", "right"] | None = Field(
+        None, description="with along_m: that edge of the lane or sidewalk (facing ahead), or for "
+        "a pedestrian or sign ahead of a vehicle, the sidewalk on that side",
+    )
+    offset_m: float | None = Field(
+        None, ge=0.0, le=10.0, description="with side: metres from the centreline (default: at the edge)"
+    )
 
 
 @dataclass(frozen=True)
@@ -62,7 +77,7 @@ class Target:
     """A resolved target: where it is, which way it faces, and how big it is."""
 
     name: str
-    kind: Literal["landmark", "area", "asset", "lane", "centre"]
+    kind: Literal["landmark", "area", "asset", "lane", "centre", "point"]
     x: float
     y: float
     heading: float
@@ -84,6 +99,8 @@ class Anchor:
     near: Target | None = None
     # Placement in a named lane searches along that lane only.
     lane_id: str | None = None
+    # "N m ahead of X along its lane": placement searches along that track only.
+    spot: TrackPoint | None = None
 
 
 def target_names(scene: Scene) -> list[str]:
@@ -95,9 +112,30 @@ def target_names(scene: Scene) -> list[str]:
     return names
 
 
+# "12, -3", "x=12 y=-3", "(12.5 -3)": a point given by its coordinates, metres east and north.
+_COORDINATES = re.compile(
+    r"^\(?\s*(?:x\s*=\s*)?(-?\d+(?:\.\d+)?)\s*[, ]\s*(?:y\s*=\s*)?(-?\d+(?:\.\d+)?)\s*\)?$", re.IGNORECASE
+)
+
+
+def parse_coordinates(text: str) -> tuple[float, float] | None:
+    """(x, y) if `text` is a pair of coordinates such as "12, -3" or "x=12 y=-3", else None."""
+    match = _COORDINATES.match(text.strip())
+    return (float(match.group(1)), float(match.group(2))) if match else None
+
+
 def resolve_target(scene: Scene, name: str) -> Target:
-    """The landmark, asset, lane or building that `name` refers to."""
+    """The landmark, asset, lane, building or coordinate pair that `name` refers to."""
     key = name.strip()
+    point = parse_coordinates(key)
+    if point is not None:
+        b = scene.bounds
+        if not b.contains(*point):
+            raise RuleViolation(
+                "bounds", f"({point[0]:g}, {point[1]:g}) is outside the world; allowed: "
+                f"x in [{b.xmin:g}, {b.xmax:g}], y in [{b.ymin:g}, {b.ymax:g}] m",
+            )
+        return Target(f"({point[0]:g}, {point[1]:g})", "point", point[0], point[1], 0.0)
     asset = scene.asset(key) or scene.asset(key.lower().replace(" ", "_"))
     if asset is not None:
         cat = category(asset.category)
@@ -130,9 +168,16 @@ def resolve_target(scene: Scene, name: str) -> Target:
     raise NotFoundError(f"no landmark, asset or lane called {name!r}{hint}")
 
 
-def resolve_anchor(scene: Scene, location: Location, new_half_length: float) -> Anchor:
-    """The point, heading and surface need that a Location describes."""
+def resolve_anchor(scene: Scene, location: Location, new_half_length: float,
+                   category_name: str | None = None) -> Anchor:
+    """The point, heading and surface need that a Location describes.
+
+    `category_name` is what will stand there: it decides whether a spot "along" the target's
+    lane goes in a lane or on a sidewalk.
+    """
     rel = location.relation
+    if location.along_m is not None or location.side is not None:
+        return _along_anchor(scene, location, category_name)
     if rel == "absolute":
         if location.x is None or location.y is None:
             raise NotFoundError("relation 'absolute' needs both x and y (metres)")
@@ -174,6 +219,24 @@ def resolve_anchor(scene: Scene, location: Location, new_half_length: float) -> 
     )
     return Anchor(target.x + gap * math.cos(direction), target.y + gap * math.sin(direction),
                   target.heading, near=target)
+
+
+def _along_anchor(scene: Scene, location: Location, category_name: str | None) -> Anchor:
+    if location.relation in ("absolute", "scene_centre") or location.target is None:
+        raise NotFoundError("along_m and side need a target (an asset, landmark or lane) to go "
+                            "ahead of or behind, and a relation other than absolute or scene_centre")
+    target = resolve_target(scene, location.target)
+    along = location.along_m or 0.0
+    if location.relation == "behind":
+        along = -abs(along)
+    side: Side | None = location.side
+    spot = along_point(
+        scene, target.name, target.x, target.y, None if target.kind in ("point", "centre") else target.heading,
+        category_name, along, side, location.offset_m, lane_id=target.lane_id,
+        heading_is_facing=target.kind == "asset",
+    )
+    pose = spot.pose()
+    return Anchor(pose.x, pose.y, spot.yaw, near=target, spot=spot)
 
 
 def _lane_anchor(scene: Scene, target: Target, distance: float | None) -> Anchor:
@@ -227,13 +290,20 @@ def find_free_pose(
     anchor: Anchor,
     others: list[AssetInstance],
     yaw: float | None = None,
+    keep_clear: list[AssetInstance] | None = None,
+    slots: int = 1,
 ) -> Pose:
     """The pose nearest the anchor where `template` passes every placement rule.
 
-    Exact anchors (absolute coordinates) are not moved: they pass or raise.
+    Exact anchors (absolute coordinates) are not moved: they pass or raise. `keep_clear` are
+    assets the pose must not overlap even where the rules let it (walkers of one request
+    spread out instead of standing on one point); `slots` is how many assets the caller will
+    fit around the anchor, widening a search along a track.
     """
+    if anchor.spot is not None:
+        return free_pose_on_track(scene, template, anchor.spot, [*others, *(keep_clear or [])], yaw, slots)
     if anchor.lane_id is not None:
-        return _free_pose_in_lane(scene, template, anchor, anchor.lane_id, others, yaw)
+        return _free_pose_in_lane(scene, template, anchor, anchor.lane_id, others, yaw, keep_clear or [])
     last: RuleViolation | None = None
     steps = 1 if anchor.exact else int(SEARCH_RADIUS_M / SEARCH_STEP_M) + 1
     if anchor.area is not None:
@@ -254,6 +324,7 @@ def find_free_pose(
             candidate = template.model_copy(update={"pose": Pose(x=x, y=y, yaw=heading)})
             try:
                 check_placement(scene, candidate, others)
+                _check_clear(candidate, keep_clear or [])
             except RuleViolation as exc:
                 last = exc
                 continue
@@ -268,9 +339,19 @@ def find_free_pose(
     )
 
 
+# Walkers of one request keep this much apart, so they read as separate people.
+SPREAD_GAP_M = 0.3
+
+
+def _check_clear(candidate: AssetInstance, keep_clear: list[AssetInstance]) -> None:
+    for other in keep_clear:
+        if other.id != candidate.id and footprints_overlap(candidate, other, tolerance=-SPREAD_GAP_M):
+            raise RuleViolation("overlap", f"{candidate.id} would stand on {other.id}")
+
+
 def _free_pose_in_lane(
     scene: Scene, template: AssetInstance, anchor: Anchor, lane_id: str,
-    others: list[AssetInstance], yaw: float | None,
+    others: list[AssetInstance], yaw: float | None, keep_clear: list[AssetInstance],
 ) -> Pose:
     """The free pose on the lane's centreline nearest the anchor, searching both ways along it."""
     lane = scene.roads.lane(lane_id)
@@ -286,6 +367,7 @@ def _free_pose_in_lane(
             )
             try:
                 check_placement(scene, candidate, others)
+                _check_clear(candidate, keep_clear)
             except RuleViolation as exc:
                 last = exc
                 continue

@@ -12,8 +12,8 @@ import math
 from typing import Literal
 
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
-from drivetwin.tools.errors import NotFoundError, RuleViolation
-from drivetwin.tools.locate import resolve_target
+from drivetwin.tools.errors import NotFoundError, RuleViolation, ToolArgumentError
+from drivetwin.tools.locate import Location, find_free_pose, resolve_anchor, resolve_target
 from drivetwin.tools.rules import check_placement
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.edits import UpdateAsset, WorldEdit
@@ -44,6 +44,8 @@ CROSSING_KEEP_OUT_M = 4.0
 # Points checked around a skidpad circle for a clear, drivable path.
 CIRCLE_SAMPLES = 36
 DEFAULT_SKIDPAD_RADIUS_M = 5.0
+# A group move covers at most this many assets (a scene holds at most 500).
+MAX_GROUP = 500
 
 
 class BehaviourSpec(ToolArgs):
@@ -210,27 +212,88 @@ def find_asset(scene: Scene, asset_id: str) -> AssetInstance:
 
 
 class MoveArgs(ToolArgs):
-    asset: str = Field(description="id of the asset to move, e.g. passenger_car_2 or ego")
+    asset: str | None = Field(None, description="id of the asset to move, e.g. passenger_car_2 or ego")
+    assets: list[str] = Field(
+        default_factory=list, max_length=MAX_GROUP,
+        description="ids moved together as one group (e.g. all the cones); members may take each "
+        "other's old places",
+    )
     forward: float = Field(0.0, ge=-100.0, le=100.0, description="metres along its heading")
     left: float = Field(0.0, ge=-100.0, le=100.0, description="metres to its left")
+    east: float = Field(0.0, ge=-100.0, le=100.0, description="metres east (+x), whatever its heading")
+    north: float = Field(0.0, ge=-100.0, le=100.0, description="metres north (+y), whatever its heading")
     turn_deg: float = Field(0.0, ge=-360.0, le=360.0, description="degrees anticlockwise")
+    relative_to: str | None = Field(
+        None, description="instead of shifting: put the asset along_m metres ahead of (negative: "
+        "behind) this asset or landmark, along the lane or sidewalk it stands on",
+    )
+    along_m: float = Field(0.0, ge=-200.0, le=200.0, description="with relative_to: metres ahead (+) or behind (-)")
+    side: Literal["left", "right"] | None = Field(
+        None, description="with relative_to: that edge of the lane or sidewalk, facing ahead"
+    )
+    offset_m: float | None = Field(
+        None, ge=0.0, le=10.0, description="with side: metres from the centreline (default: at the edge)"
+    )
+
+
+def _shifted(asset: AssetInstance, args: MoveArgs) -> AssetInstance:
+    p = asset.pose
+    c, s = math.cos(p.yaw), math.sin(p.yaw)
+    pose = Pose(x=p.x + c * args.forward - s * args.left + args.east,
+                y=p.y + s * args.forward + c * args.left + args.north,
+                yaw=p.yaw + math.radians(args.turn_deg))
+    return asset.model_copy(update={"pose": pose})
 
 
 class MoveAsset(Tool[MoveArgs]):
     name = "move_asset"
-    description = "Shift an existing asset forward/back/left/right by metres and/or turn it."
+    description = (
+        "Shift existing assets (one, or a group moved together) forward/back/left/right or "
+        "east/north by metres and/or turn them; or put one N m ahead of/behind another asset or "
+        "landmark along its lane (relative_to, along_m, side)."
+    )
     family = "move"
     Args = MoveArgs
 
     def propose(self, args: MoveArgs, scene: Scene) -> ToolResult:
-        asset = find_asset(scene, args.asset)
-        p = asset.pose
-        c, s = math.cos(p.yaw), math.sin(p.yaw)
-        pose = Pose(x=p.x + c * args.forward - s * args.left, y=p.y + s * args.forward + c * args.left,
-                    yaw=p.yaw + math.radians(args.turn_deg))
-        after = asset.model_copy(update={"pose": pose})
-        edit = WorldEdit(ops=(UpdateAsset(before=asset, after=after),))
-        return ToolResult(edit, f"moved {asset.id} to ({pose.x:.1f}, {pose.y:.1f})", (pose.x, pose.y))
+        ids = ([args.asset] if args.asset else []) + [a for a in args.assets if a != args.asset]
+        if not ids:
+            raise NotFoundError("name the asset to move (asset) or the group (assets)")
+        members = [find_asset(scene, a) for a in ids]
+        if args.relative_to is not None:
+            if len(members) > 1:
+                raise ToolArgumentError("relative_to moves one asset; name it in asset and move "
+                                        "the others with separate calls")
+            return _place_along(scene, members[0], args)
+        # One edit for the whole group: the rules see every member at its new place at once,
+        # so the result does not depend on the order of the members.
+        ops = tuple(UpdateAsset(before=m, after=_shifted(m, args)) for m in members)
+        edit = WorldEdit(ops=ops)
+        cx = sum(op.after.pose.x for op in ops) / len(ops)
+        cy = sum(op.after.pose.y for op in ops) / len(ops)
+        if len(ops) == 1:
+            text = f"moved {ops[0].after.id} to ({cx:.1f}, {cy:.1f})"
+        else:
+            text = f"moved {', '.join(ids)} together; they now centre on ({cx:.1f}, {cy:.1f})"
+        return ToolResult(edit, text, (cx, cy), {"ids": ids})
+
+
+def _place_along(scene: Scene, asset: AssetInstance, args: MoveArgs) -> ToolResult:
+    """Put `asset` along_m metres ahead of (or behind) `relative_to` along its lane or sidewalk."""
+    reference = args.relative_to or ""
+    if resolve_target(scene, reference).name == asset.id:
+        raise ToolArgumentError(f"{asset.id} cannot be placed relative to itself; name another asset or landmark")
+    location = Location(relation="at", target=reference, along_m=args.along_m,
+                        side=args.side, offset_m=args.offset_m)
+    cat = category(asset.category)
+    anchor = resolve_anchor(scene, location, cat.length * asset.scale / 2, asset.category)
+    others = [a for a in scene.all_assets() if a.id != asset.id]
+    yaw = asset.pose.yaw + math.radians(args.turn_deg) if args.turn_deg else None
+    pose = find_free_pose(scene, asset, anchor, others, yaw)
+    after = asset.model_copy(update={"pose": pose})
+    label = anchor.spot.label if anchor.spot else args.relative_to
+    return ToolResult(WorldEdit(ops=(UpdateAsset(before=asset, after=after),)),
+                      f"moved {asset.id} {label}, to ({pose.x:.1f}, {pose.y:.1f})", (pose.x, pose.y))
 
 
 class BehaviourArgs(ToolArgs):

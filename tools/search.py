@@ -7,25 +7,81 @@ import math
 
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError
-from drivetwin.tools.locate import resolve_target
+from drivetwin.tools.locate import Target, resolve_target
 from drivetwin.tools.move import find_asset
+from drivetwin.tools.rules import footprint
 from drivetwin.worlds.catalog import UnknownCategoryError, catalog, nearest_categories, resolve_category
 from drivetwin.worlds.edits import WorldEdit
-from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
+from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon
 from pydantic import Field
 
 MAX_LISTED = 20
+# Words that name no particular lane ("the northbound lane" means campus_northbound).
+_LANE_FILLER = frozenset({"the", "lane", "lanes", "road", "of", "on", "in"})
+
+_NEAREST_TO = (
+    "an asset id, landmark or place name, or 'x,y' metres: sort by distance from it and name "
+    "the nearest with its distance"
+)
+
+
+def match_lanes(scene: Scene, text: str) -> list[Lane]:
+    """The lanes `text` names: a lane id, a road name, or words of either ("northbound")."""
+    key = text.strip().lower()
+    lanes = scene.roads.lanes
+    exact = [ln for ln in lanes if key in (ln.id.lower(), ln.road.lower())]
+    if exact:
+        return exact
+    words = [w for w in key.replace("_", " ").split() if w not in _LANE_FILLER]
+    found = [ln for ln in lanes if words and all(w in f"{ln.id} {ln.road}".lower() for w in words)]
+    if not found:
+        known = ", ".join([ln.id for ln in lanes] + sorted({ln.road for ln in lanes}))
+        raise NotFoundError(f"no lane or road like {text!r}; lanes and roads: {known or 'none'}")
+    return found
+
+
+def lane_under(asset: AssetInstance, lanes: list[Lane]) -> Lane | None:
+    """The lane (of `lanes`) the asset's footprint stands on, nearest centreline first."""
+    best: tuple[float, Lane] | None = None
+    for lane in lanes:
+        for x, y in [(asset.pose.x, asset.pose.y), *footprint(asset)]:
+            d = nearest_on_polyline(x, y, lane.centreline).distance
+            if d <= lane.width / 2 and (best is None or d < best[0]):
+                best = (d, lane)
+    return best[1] if best else None
+
+
+def landmark_distance(landmark: Landmark, x: float, y: float) -> float:
+    """Metres from (x, y) to a landmark: its point, or the edge of its area (0 inside)."""
+    if landmark.kind == "area" and landmark.polygon:
+        if point_in_polygon(x, y, landmark.polygon):
+            return 0.0
+        return nearest_on_polyline(x, y, [*landmark.polygon, landmark.polygon[0]]).distance
+    return math.hypot(landmark.position[0] - x, landmark.position[1] - y)
+
+
+def _is_reference(t: Target, names: list[str]) -> bool:
+    return t.name.lower() in (n.lower() for n in names)
 
 
 class FindAssetsArgs(ToolArgs):
     category: str | None = Field(None, description="category or a word for it, e.g. 'cones'")
     near: str | None = Field(None, description="landmark or asset to measure distance from")
-    within: float | None = Field(None, gt=0.0, le=1000.0, description="metres from `near`")
+    within: float | None = Field(None, gt=0.0, le=1000.0, description="metres from `near` (or `nearest_to`)")
+    nearest_to: str | None = Field(None, description=_NEAREST_TO + " (the reference asset itself is left out)")
+    on_lane: bool = Field(False, description="only assets standing on a lane (on the road, e.g. blocking it)")
+    lane: str | None = Field(
+        None, description="only assets on this lane id or road, e.g. campus_northbound, Main Street, northbound"
+    )
 
 
 class FindAssets(Tool[FindAssetsArgs]):
     name = "find_assets"
-    description = "List assets in the scene, optionally of a category and within a distance of a place."
+    description = (
+        "List assets in the scene, optionally of a category, within a distance of a place, "
+        "standing on a lane or road (on_lane, lane), or nearest first to an asset, place or x,y (nearest_to)."
+    )
     family = "search"
     Args = FindAssetsArgs
 
@@ -36,29 +92,86 @@ class FindAssets(Tool[FindAssetsArgs]):
             if name is None:
                 raise UnknownCategoryError(args.category, nearest_categories(args.category))
             pool = [a for a in pool if a.category == name]
-        if args.near:
-            t = resolve_target(scene, args.near)
+        lanes_of: dict[str, str] = {}
+        if args.on_lane or args.lane:
+            lanes = match_lanes(scene, args.lane) if args.lane else scene.roads.lanes
+            for a in pool:
+                lane = lane_under(a, lanes)
+                if lane is not None:
+                    lanes_of[a.id] = lane.id
+            pool = [a for a in pool if a.id in lanes_of]
+        reference = args.nearest_to or args.near
+        t = resolve_target(scene, reference) if reference else None
+        if t is not None:
+            if args.nearest_to:
+                pool = [a for a in pool if not (t.kind == "asset" and a.id == t.name)]
             pool.sort(key=lambda a: math.hypot(a.pose.x - t.x, a.pose.y - t.y))
             if args.within is not None:
                 pool = [a for a in pool if math.hypot(a.pose.x - t.x, a.pose.y - t.y) <= args.within]
         what = args.category or "asset"
-        lines = [f"{a.id} ({a.category}) at ({a.pose.x:.1f}, {a.pose.y:.1f})" for a in pool[:MAX_LISTED]]
+        distances = {a.id: math.hypot(a.pose.x - t.x, a.pose.y - t.y) for a in pool} if t else {}
+
+        def line(a: AssetInstance) -> str:
+            where = f" in {lanes_of[a.id]}" if a.id in lanes_of else ""
+            away = f", {distances[a.id]:.1f} m away" if a.id in distances else ""
+            return f"{a.id} ({a.category}) at ({a.pose.x:.1f}, {a.pose.y:.1f}){where}{away}"
+
+        lines = [line(a) for a in pool[:MAX_LISTED]]
         more = f" (+{len(pool) - MAX_LISTED} more)" if len(pool) > MAX_LISTED else ""
         text = f"{len(pool)} {what}(s) found" + (": " + "; ".join(lines) + more if pool else "")
-        return ToolResult(WorldEdit(), text, data={"ids": [a.id for a in pool]})
+        if args.nearest_to and t is not None:
+            head = (f"nearest {what} to {t.name}: {pool[0].id}, {distances[pool[0].id]:.1f} m away"
+                    if pool else f"no {what} near {t.name}")
+            text = f"{head}. {text}"
+        data: dict[str, object] = {"ids": [a.id for a in pool]}
+        if distances:
+            data["distances"] = {a.id: round(distances[a.id], 2) for a in pool}
+        if lanes_of:
+            data["lanes"] = {a.id: lanes_of[a.id] for a in pool}
+        return ToolResult(WorldEdit(), text, data=data)
 
 
 class FindLandmarksArgs(ToolArgs):
     query: str | None = Field(None, description="words of a landmark name; empty lists all")
+    nearest_to: str | None = Field(None, description=_NEAREST_TO + " (the reference landmark itself is left out)")
 
 
 class FindLandmarks(Tool[FindLandmarksArgs]):
     name = "find_landmarks"
-    description = "List the named places of the world (entrances, gates, parking lots) or find one."
+    description = (
+        "List the named places of the world (entrances, gates, parking lots) or find one; "
+        "nearest_to sorts them by distance from an asset, place or x,y and names the nearest."
+    )
     family = "search"
     Args = FindLandmarksArgs
 
     def propose(self, args: FindLandmarksArgs, scene: Scene) -> ToolResult:
+        if args.nearest_to:
+            return self._nearest(args, scene, args.nearest_to)
+        marks = self._matching(args, scene)
+        lines = [f"{lm.name} at ({lm.position[0]:.1f}, {lm.position[1]:.1f})" for lm in marks]
+        return ToolResult(WorldEdit(), f"{len(marks)} landmark(s): " + "; ".join(lines),
+                          data={"names": [lm.name for lm in marks]})
+
+    def _nearest(self, args: FindLandmarksArgs, scene: Scene, reference: str) -> ToolResult:
+        t = resolve_target(scene, reference)
+        marks = self._matching(args, scene)
+        marks = [lm for lm in marks if not (t.kind in ("landmark", "area") and _is_reference(t, lm.names()))]
+        if not marks:
+            raise NotFoundError(f"no other landmark to compare with {t.name}")
+        ranked = sorted(marks, key=lambda lm: landmark_distance(lm, t.x, t.y))
+        distances = {lm.name: landmark_distance(lm, t.x, t.y) for lm in ranked}
+        best = ranked[0]
+        lines = [f"{lm.name} {distances[lm.name]:.1f} m" for lm in ranked[:MAX_LISTED]]
+        text = (f"nearest landmark to {t.name}: {best.name}, {distances[best.name]:.1f} m away "
+                f"at ({best.position[0]:.1f}, {best.position[1]:.1f}). By distance: " + "; ".join(lines))
+        return ToolResult(WorldEdit(), text, data={
+            "names": [lm.name for lm in ranked],
+            "distances": {k: round(v, 2) for k, v in distances.items()},
+        })
+
+    def _matching(self, args: FindLandmarksArgs, scene: Scene) -> list[Landmark]:
+        """The landmarks `query` names (all of them without a query)."""
         marks = scene.landmarks
         if args.query:
             exact = scene.landmark(args.query)
@@ -71,9 +184,7 @@ class FindLandmarks(Tool[FindLandmarksArgs]):
                     names = [n for lm in scene.landmarks for n in lm.names()]
                     near = difflib.get_close_matches(args.query, names, n=3, cutoff=0.3)
                     raise NotFoundError(f"no landmark like {args.query!r}; nearest: {', '.join(near)}")
-        lines = [f"{lm.name} at ({lm.position[0]:.1f}, {lm.position[1]:.1f})" for lm in marks]
-        return ToolResult(WorldEdit(), f"{len(marks)} landmark(s): " + "; ".join(lines),
-                          data={"names": [lm.name for lm in marks]})
+        return marks
 
 
 class FindLanesArgs(ToolArgs):
