@@ -20,6 +20,7 @@ from drivetwin.tools.errors import ToolError, UnknownToolError
 from drivetwin.tools.move import MoveAsset, SetBehaviour
 from drivetwin.tools.position import PlaceAsset
 from drivetwin.tools.remove import RemoveAssets
+from drivetwin.tools.scenario import AddEvent, AddManoeuvre, SetLightPhases
 from drivetwin.tools.search import AssetProperties, FindAssets, FindLandmarks, FindLanes
 from drivetwin.worlds.catalog import UnknownCategoryError
 from drivetwin.worlds.scene import Scene
@@ -35,6 +36,7 @@ def builtin_tools() -> list[Tool[Any]]:
         RemoveAssets(),
         PlaceAsset(),
         MoveAsset(), SetBehaviour(),
+        AddEvent(), AddManoeuvre(), SetLightPhases(),
         ArrangeAssets(),
         SetTimeOfDay(), SetWeather(), SetLighting(), SetAssetAppearance(),
     ]
