@@ -1,0 +1,34 @@
+"""The real campus world and the built-in Workers, for the tool behaviour tests."""
+
+from __future__ import annotations
+
+from typing import Any, Protocol
+
+import pytest
+from drivetwin.tools import ToolCall, ToolRegistry, ToolResult
+from drivetwin.worlds.defaults import load_world
+from drivetwin.worlds.scene import Scene
+
+
+@pytest.fixture(scope="session")
+def registry() -> ToolRegistry:
+    return ToolRegistry.default(plugins=False)
+
+
+@pytest.fixture
+def campus() -> Scene:
+    return load_world("campus")
+
+
+class Caller(Protocol):
+    def __call__(self, scene: Scene, tool: str, **args: Any) -> ToolResult: ...
+
+
+@pytest.fixture
+def call(registry: ToolRegistry) -> Caller:
+    """Runs one Worker call against a scene (which is not changed)."""
+
+    def run(scene: Scene, tool: str, **args: Any) -> ToolResult:
+        return registry.run(ToolCall(tool=tool, args=args), scene)
+
+    return run

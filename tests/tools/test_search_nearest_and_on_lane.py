@@ -1,0 +1,85 @@
+"""find_landmarks / find_assets: nearest-to an asset, place or x,y, and assets standing on lanes."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import pytest
+from drivetwin.tools import NotFoundError, ToolResult
+from drivetwin.worlds.scene import Scene
+
+Caller = Callable[..., ToolResult]
+
+
+
+def test_nearest_landmark_to_the_ego_is_named_with_its_distance(call: Caller, campus: Scene) -> None:
+    result = call(campus, "find_landmarks", nearest_to="ego")
+    # The ego starts at (-60, -1.75); parking lot A's nearest corner is (-70, 14).
+    assert result.data["names"][0] == "parking lot A"
+    assert result.data["distances"]["parking lot A"] == pytest.approx(math.hypot(10.0, 15.75), abs=0.01)
+    assert result.text.startswith("nearest landmark to ego: parking lot A, 18.7 m away")
+
+
+def test_nearest_landmark_to_a_landmark_leaves_the_landmark_itself_out(call: Caller, campus: Scene) -> None:
+    result = call(campus, "find_landmarks", nearest_to="west crosswalk")
+    assert "west crosswalk" not in result.data["names"]
+    assert result.data["names"][0] == "main intersection"
+
+
+def test_nearest_landmark_to_coordinates(call: Caller, campus: Scene) -> None:
+    result = call(campus, "find_landmarks", nearest_to="x=74 y=38")
+    assert result.data["names"][0] == "fountain"
+
+
+def test_closest_car_to_the_fountain_is_named_with_its_distance(call: Caller, campus: Scene) -> None:
+    result = call(campus, "find_assets", category="car", nearest_to="fountain")
+    # Cars stand at (19, -42) and (27, -42); the fountain is at (75, 40).
+    assert result.data["ids"][0] == "passenger_car_2"
+    assert result.data["distances"]["passenger_car_2"] == pytest.approx(math.hypot(48.0, 82.0), abs=0.01)
+    assert "nearest car to fountain: passenger_car_2, 95.0 m away" in result.text
+
+
+def test_nearest_asset_to_an_asset_leaves_that_asset_out(call: Caller, campus: Scene) -> None:
+    result = call(campus, "find_assets", category="passenger_car", nearest_to="passenger_car_1")
+    assert result.data["ids"] == ["passenger_car_2"]
+
+
+def test_nearest_to_coordinates_outside_the_world_is_refused(call: Caller, campus: Scene) -> None:
+    with pytest.raises(Exception, match="outside the world"):
+        call(campus, "find_assets", nearest_to="500, 0")
+
+
+def _with_cones(call: Caller, campus: Scene) -> Scene:
+    in_lane = call(campus, "add_asset", category="traffic_cone",
+                   location={"relation": "absolute", "x": 1.75, "y": -40.0})
+    scene = in_lane.edit.apply(campus)
+    on_walk = call(scene, "add_asset", category="trash_bin",
+                   location={"relation": "absolute", "x": 5.5, "y": -40.0})
+    return on_walk.edit.apply(scene)
+
+
+def test_on_lane_lists_only_assets_standing_on_a_lane(call: Caller, campus: Scene) -> None:
+    scene = _with_cones(call, campus)
+    result = call(scene, "find_assets", on_lane=True)
+    assert "traffic_cone_1" in result.data["ids"]  # in campus_northbound
+    assert "trash_bin_2" not in result.data["ids"]  # on the sidewalk
+    assert result.data["lanes"]["traffic_cone_1"] == "campus_northbound"
+    assert "street_light_1" not in result.data["ids"]
+
+
+def test_a_lane_named_by_a_word_lists_what_is_in_it(call: Caller, campus: Scene) -> None:
+    scene = _with_cones(call, campus)
+    result = call(scene, "find_assets", lane="northbound")
+    assert result.data["ids"] == ["traffic_cone_1"]
+    assert call(scene, "find_assets", lane="main_eastbound").data["ids"] == ["ego"]
+
+
+def test_a_road_name_covers_both_of_its_lanes(call: Caller, campus: Scene) -> None:
+    scene = _with_cones(call, campus)
+    assert call(scene, "find_assets", lane="Campus Drive").data["ids"] == ["traffic_cone_1"]
+
+
+def test_an_unknown_lane_is_refused_naming_the_lanes(call: Caller, campus: Scene) -> None:
+    with pytest.raises(NotFoundError, match="campus_northbound"):
+        call(campus, "find_assets", lane="skyway")
