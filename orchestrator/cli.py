@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import json
-import os
 import sys
 from importlib.resources import files
 from pathlib import Path
 from typing import Any
 
 import click
+from drivetwin.orchestrator.config import ConfigError, Settings, load_settings
 from drivetwin.orchestrator.planning import Planner
 from drivetwin.orchestrator.planning.registry import UnknownPlannerError, make_planner
 from drivetwin.orchestrator.repl import ChatOptions, dump_tools, interactive, run_lines
@@ -18,32 +18,34 @@ from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.defaults import UnknownWorldError, list_worlds, load_world
 from drivetwin.worlds.scene import SceneFileError, scene_json_schema
 
-DEFAULT_PLANNER = os.environ.get("DRIVETWIN_PLANNER", "hybrid")
-STATE_DIR = Path(os.environ.get("DRIVETWIN_STATE", Path.home() / ".local" / "state" / "drivetwin"))
 # Simulated seconds between scripted prompts, so each frame shows the world moving on.
 SCRIPT_SECONDS_PER_STEP = 1.0
 
 
-def _planner(name: str, backend: str | None, model: str | None) -> Planner:
-    options: dict[str, Any] = {}
-    if backend:
-        options["backend"] = backend
-    if model:
-        options["model"] = model
+def _settings(planner: str | None = None, backend: str | None = None, model: str | None = None) -> Settings:
+    """This command's Settings: its flags over environment, config file and defaults."""
     try:
-        return make_planner(name, **options)
+        return load_settings(planner=planner, backend=backend, model=model)
+    except ConfigError as exc:
+        raise click.ClickException(str(exc)) from exc
+
+
+def _planner(settings: Settings) -> Planner:
+    name = settings.planner
+    try:
+        return make_planner(name, **settings.planner_options())
     except UnknownPlannerError as exc:
         raise click.UsageError(str(exc)) from exc
     except Exception as exc:  # a backend that cannot start: say so in one line
         raise click.ClickException(f"planner {name!r} cannot start: {exc}") from exc
 
 
-def _fallback_planner(name: str, backend: str | None, model: str | None) -> Planner:
+def _fallback_planner(settings: Settings) -> Planner:
     """The asked planner, or the rule planner with a one-line note when it cannot start."""
     try:
-        return _planner(name, backend, model)
+        return _planner(settings)
     except click.ClickException as exc:
-        if name == "rules":
+        if settings.planner == "rules":
             raise
         click.echo(f"note: {exc.message}; using the rule-based planner", err=True)
         return make_planner("rules")
@@ -60,8 +62,8 @@ def main() -> None:
 
 @main.command()
 @click.option("--world", default="campus", show_default=True, help="world name or JSON file")
-@click.option("--planner", "planner_name", default=DEFAULT_PLANNER, show_default=True,
-              help="rules, llm or hybrid (or a plugin's name)")
+@click.option("--planner", "planner_name", default=None,
+              help="rules, llm, retrieval or hybrid, or a plugin's (default: settings, hybrid)")
 @click.option("--backend", default=None, help="LLM backend: embedded, ollama, openai")
 @click.option("--model", default=None, help="model name, preset or GGUF path")
 @click.option("--script", type=click.Path(exists=True, dir_okay=False, path_type=Path),
@@ -76,7 +78,7 @@ def main() -> None:
 @click.option("--explain", is_flag=True, help="show each planning level's input and output")
 @click.option("--no-sim", is_flag=True, help="edit the scene without running physics")
 @click.option("--enhance", "enhance_model", default=None, help="SDXL folder for enhanced frames")
-def chat(world: str, planner_name: str, backend: str | None, model: str | None, script: Path | None,
+def chat(world: str, planner_name: str | None, backend: str | None, model: str | None, script: Path | None,
          fail_fast: bool, out_dir: Path | None, render_each: bool, resume: bool, journal: Path | None,
          explain: bool, no_sim: bool, enhance_model: str | None) -> None:
     """Edit a live world by typing what you want.
@@ -85,8 +87,9 @@ def chat(world: str, planner_name: str, backend: str | None, model: str | None, 
     """
     from drivetwin.orchestrator.live import LiveWorld
 
-    planner = _fallback_planner(planner_name, backend, model)
-    journal_path = journal or STATE_DIR / "session.journal.jsonl"
+    settings = _settings(planner_name, backend, model)
+    planner = _fallback_planner(settings)
+    journal_path = journal or settings.state_dir / "session.journal.jsonl"
     registry = ToolRegistry.default()
     for problem in registry.problems:
         click.echo(f"warning: plugin {problem.entry_point} skipped: {problem.error}", err=True)
@@ -117,7 +120,7 @@ def chat(world: str, planner_name: str, backend: str | None, model: str | None, 
             lines = script.read_text(encoding="utf-8").splitlines()
             status = run_lines(session, live.paced(lines, SCRIPT_SECONDS_PER_STEP), options)
         else:
-            status = interactive(session, options, STATE_DIR / "history.txt")
+            status = interactive(session, options, settings.state_dir / "history.txt")
     finally:
         for path in live.close():
             click.echo(f"  wrote {path}")
@@ -130,10 +133,10 @@ def chat(world: str, planner_name: str, backend: str | None, model: str | None, 
 @main.command()
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path),
               default=Path("demo_out"), show_default=True)
-@click.option("--planner", "planner_name", default=DEFAULT_PLANNER, show_default=True,
+@click.option("--planner", "planner_name", default=None,
               help="rules, llm or hybrid (the default: rules first, the embedded LLM when they cannot plan)")
 @click.option("--no-render", is_flag=True, help="skip frames (faster)")
-def demo(out_dir: Path, planner_name: str, no_render: bool) -> None:
+def demo(out_dir: Path, planner_name: str | None, no_render: bool) -> None:
     """Run the paper's edits on the campus: a frame and a scene summary per step.
 
     Example: drivetwin demo --out demo_out
@@ -142,7 +145,7 @@ def demo(out_dir: Path, planner_name: str, no_render: bool) -> None:
 
     script = files("drivetwin.orchestrator").joinpath("demo_script.txt").read_text(encoding="utf-8")
     out_dir.mkdir(parents=True, exist_ok=True)
-    session = Session(load_world("campus"), _fallback_planner(planner_name, None, None),
+    session = Session(load_world("campus"), _fallback_planner(_settings(planner_name)),
                       journal_path=out_dir / "journal.jsonl")
     live = LiveWorld(session, simulate=True, background=False)
     options = ChatOptions(out_dir=out_dir, fail_fast=True, render_each=not no_render,
@@ -210,13 +213,29 @@ def backends_list(backend: str | None, model: str | None) -> None:
     Example: drivetwin backends list
     """
     from drivetwin.orchestrator.backends import backends_table
-    from drivetwin.orchestrator.config import ConfigError, load_settings
 
-    try:
-        settings = load_settings(backend=backend, model=model)
-    except ConfigError as exc:
-        raise click.ClickException(str(exc)) from exc
-    click.echo(backends_table(settings))
+    click.echo(backends_table(_settings(backend=backend, model=model)))
+
+
+@main.group()
+def config() -> None:
+    """The settings every command uses: flags > environment > config file > defaults."""
+
+
+@config.command("show")
+@click.option("--json", "as_json", is_flag=True, help="print the settings as JSON")
+def config_show(as_json: bool) -> None:
+    """Print each resolved setting, its value and where it came from.
+
+    Example: DRIVETWIN_BACKEND=openai drivetwin config show
+    """
+    rows = _settings().rows()
+    if as_json:
+        click.echo(json.dumps({name: {"value": value, "source": source} for name, value, source in rows}, indent=2))
+        return
+    width = max(len(name) for name, _, _ in rows)
+    for name, value, source in rows:
+        click.echo(f"{name:<{width}}  {value}  [{source}]")
 
 
 @main.command()
@@ -275,7 +294,10 @@ def eval_run(suite: str, planner_name: str, backend: str | None, model: str | No
     """
     from drivetwin.evals import RecordsError, RunError, SuiteError, run_suite
 
-    options: dict[str, Any] = {k: v for k, v in (("backend", backend), ("model", model)) if v}
+    settings = _settings(planner_name, backend, model)
+    # The rule planner takes no backend; the others run on the settings' backend and model.
+    options: dict[str, Any] = {} if planner_name == "rules" else {
+        k: v for k, v in settings.planner_options().items() if v is not None}
     try:
         summary = run_suite(suite, planner_name, planner_options=options, trials=trials, out_path=out_path,
                             executor=executor, workers=workers, progress=True, only=only)
@@ -324,8 +346,8 @@ def enhance(src_dir: Path, model: str, controlnet: str | None, out_dir: Path | N
     click.echo(f"enhanced frames in {target}: {report}")
 
 
-from drivetwin.worlds.reconstruct.cli import add_reconstruct_parser  # noqa: E402  (the reconstruct group)
 from drivetwin.worlds.opendrive.cli import import_command  # noqa: E402  (worlds import)
+from drivetwin.worlds.reconstruct.cli import add_reconstruct_parser  # noqa: E402  (the reconstruct group)
 
 worlds.add_command(import_command)
 

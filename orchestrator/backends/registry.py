@@ -22,7 +22,7 @@ from .base import Backend, BackendStatus
 from .errors import BackendError, BackendUnavailable, InvalidRequest, UnknownBackend
 
 if TYPE_CHECKING:
-    from ..config import BackendSettings
+    from ..config import Settings
 
 ENTRY_POINT_GROUP = "drivetwin.backends"
 _BUILTIN_BACKENDS = {
@@ -120,12 +120,12 @@ def load_backend(name: str, model: str | None = None, **options: Any) -> Backend
         raise BackendError(f"backend {name!r} could not start: {type(error).__name__}: {error}", backend=name) from None
 
 
-def open_backend(settings: BackendSettings) -> Backend:
+def open_backend(settings: Settings) -> Backend:
     """Open the backend that resolved settings (see drivetwin.orchestrator.config) choose."""
     return load_backend(settings.backend, settings.model, **settings.options_for(settings.backend))
 
 
-def list_backends(settings: BackendSettings | None = None) -> list[BackendStatus]:
+def list_backends(settings: Settings | None = None) -> list[BackendStatus]:
     """Every backend/model pair and whether it is usable now; broken plugins included."""
     found, problems = discover_backends()
     rows: list[BackendStatus] = []
@@ -140,7 +140,7 @@ def list_backends(settings: BackendSettings | None = None) -> list[BackendStatus
     return rows
 
 
-def backends_table(settings: BackendSettings | None = None) -> str:
+def backends_table(settings: Settings | None = None) -> str:
     """The text `drivetwin backends list` prints: what is usable now and what fixes the rest."""
     rows = list_backends(settings)
     chosen = _chosen(settings)
@@ -161,7 +161,7 @@ def backends_table(settings: BackendSettings | None = None) -> str:
     return "\n".join(lines)
 
 
-def _chosen(settings: BackendSettings | None) -> set[tuple[str, str]]:
+def _chosen(settings: Settings | None) -> set[tuple[str, str]]:
     """The (backend, model) rows that the settings select, to mark them in the table."""
     if settings is None:
         return set()

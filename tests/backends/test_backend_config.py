@@ -77,7 +77,7 @@ def test_invalid_toml_is_a_config_error_naming_the_file(tmp_path: Path) -> None:
 
 def test_an_unknown_key_is_a_config_error_listing_the_allowed_keys(tmp_path: Path) -> None:
     path = write_config(tmp_path, 'backnd = "ollama"\n')
-    with pytest.raises(ConfigError, match=r"backnd.*allowed keys: backend, model"):
+    with pytest.raises(ConfigError, match=r"backnd.*allowed keys: planner, backend, model"):
         load_settings(environ={}, config_file=path)
 
 

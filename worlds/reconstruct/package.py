@@ -36,6 +36,7 @@ from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 import numpy.typing as npt
+from drivetwin.worlds import paths
 from drivetwin.worlds.catalog import Category, Part, Placement
 from drivetwin.worlds.render.splats import SH_C0, Splats, SplatsError
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
@@ -367,10 +368,7 @@ def _manifest(root: Path) -> AssetManifest:
 # Discovery ------------------------------------------------------------------------------
 def user_asset_folder() -> Path:
     """The user's own asset folder, beside drivetwin's other cached files."""
-    from drivetwin.orchestrator.config import cache_dir
-
-    folder: Path = cache_dir() / "assets"
-    return folder
+    return paths.cache_dir() / "assets"
 
 
 def package_folders() -> list[Path]:
