@@ -456,7 +456,8 @@ R = "removal"
 CONES_AT_CROSSROADS = turn("Scatter six cones over the crossroads.",
                            call("add_asset", category="traffic_cone", count=6, location=at("at", "main intersection")))
 CARS_IN_LOT_A = turn("Park two cars in lot A.",
-                     call("add_asset", category="passenger_car", count=2, location=at("at", "parking lot A")))
+                     call("add_asset", category="passenger_car", count=2, location=at("at", "parking lot A")),
+                     planned=True)
 DRIVER_WESTBOUND = turn("Add a car driving in the westbound lane.",
                         call("add_asset", category="passenger_car", location=at("in_lane", "main_westbound"),
                              behaviour={"kind": "drive_lane", "lane": "main_westbound"}), planned=True)
@@ -590,6 +591,604 @@ case(R, "erroneous", "trees_and_cones", "remove the tree near fountain and also 
      [call("remove_assets", category="tree", near="fountain", count=1), call("remove_assets", category="traffic_cone")],
      setup=[CONES_AT_CROSSROADS], tags=COMPOUND)
 
+
+# Positioning: an existing asset put somewhere else; only it changes ------------------------------
+P = "positioning"
+BUS_AT_STOP = turn("Add a bus at the bus stop.", call("add_asset", category="bus", location=at("at", "bus stop")),
+                   planned=True)
+ROBOT_AT_STOP = turn("Add a small robot rover at the bus stop.",
+                     call("add_asset", category="ackermann_robot", location=at("at", "bus stop")), planned=True)
+
+
+def put(asset: str, *checks: Json, others: tuple[str, ...] = ()) -> list[Json]:
+    return [accepted(), *checks, only(assets=(asset, *others))]
+
+
+def put_one_of(categories: list[str], *checks: Json) -> list[Json]:
+    """One asset of these categories repositioned; nothing added or removed."""
+    return [accepted(), delta(categories, 0, 0), *checks, only(*categories)]
+
+
+case(P, "direct", "bench_to_fountain", "Put the bench next to the fountain.",
+     put("bench_1", near("bench_1", "fountain", 6.0)), [call("place_asset", asset="bench_1", location=at("at", "fountain"))])
+case(P, "direct", "suv_to_lot_a", "Place the SUV in parking lot A.",
+     put("suv_1", near("suv_1", "parking lot A", 1.0)), [call("place_asset", asset="suv_1", location=at("at", "parking lot A"))])
+case(P, "direct", "ego_westbound", "Put the ego vehicle in the westbound lane.",
+     put("ego", in_lane("ego", "main_westbound")), [call("place_asset", asset="ego", location=at("in_lane", "main_westbound"))])
+case(P, "direct", "hydrant_sidewalk_library", "Move the fire hydrant to the sidewalk by the library.",
+     put("fire_hydrant_1", on("fire_hydrant_1", "sidewalk"), near("fire_hydrant_1", "Library entrance", 12.0)),
+     [call("place_asset", asset="fire_hydrant_1", location=at("on_sidewalk", "Library entrance"))])
+case(P, "direct", "bin_north_crosswalk", "Put the trash bin at the north crosswalk.",
+     put("trash_bin_1", near("trash_bin_1", "north crosswalk", 6.0)),
+     [call("place_asset", asset="trash_bin_1", location=at("at", "north crosswalk"))])
+case(P, "direct", "ego_main_gate", "Position the ego at the main gate.",
+     put("ego", near("ego", "main gate", 10.0)), [call("place_asset", asset="ego", location=at("at", "main gate"))])
+case(P, "direct", "parked_car_behind_ego", "Put one of the parked cars right behind the ego.",
+     put_one_of(["passenger_car", "suv"], rel(["passenger_car", "suv"], "behind", "ego", 12.0, tolerance_deg=30.0)),
+     [call("place_asset", asset="passenger_car_1", location=at("behind", "ego"))])
+case(P, "direct", "bench_5m_library", "Place the bench 5 m in front of the library entrance.",
+     put("bench_1", near("bench_1", (-41.0, -10.0), 2.5), rel("bench_1", "in_front_of", "Library entrance", 8.0)),
+     [call("place_asset", asset="bench_1", location=at("in_front_of", "Library entrance", distance=5.0))])
+case(P, "direct", "stop_sign_xy", "Put the stop sign at x=-13.5, y=5.5.",
+     put("stop_sign_1", near("stop_sign_1", (-13.5, 5.5), 0.5)), [call("place_asset", asset="stop_sign_1", location=xy(-13.5, 5.5))])
+case(P, "direct", "suv_jtekt", "Move the SUV to the JTEKT building entrance.",
+     put("suv_1", near("suv_1", "JTEKT building entrance", 8.0)),
+     [call("place_asset", asset="suv_1", location=at("at", "JTEKT building entrance"))])
+case(P, "direct", "bench_in_jtekt", "Put the bench inside the JTEKT Building, at x=37, y=29.",
+     refused(), [call("place_asset", asset="bench_1", location=xy(37.0, 29.0))], tags=IMPOSSIBLE)
+case(P, "direct", "suv_x500", "Put the SUV at x=500, y=0.",
+     refused(), [call("place_asset", asset="suv_1", location=xy(500.0, 0.0))], tags=IMPOSSIBLE)
+
+case(P, "indirect", "bench_to_quad", "Could you move the bench over to the quad?",
+     put("bench_1", near("bench_1", "fountain", 6.0)), [call("place_asset", asset="bench_1", location=at("at", "the quad"))])
+case(P, "indirect", "ego_east_gate", "I'd like the ego to start at the east gate.",
+     put("ego", near("ego", "east gate", 10.0)), [call("place_asset", asset="ego", location=at("at", "east gate"))])
+case(P, "indirect", "car_to_west_lot", "Would you park one of the sedans over in the west parking lot?",
+     put_one_of(["passenger_car"], near("passenger_car", "parking lot A", 1.0)),
+     [call("place_asset", asset="passenger_car_1", location=at("at", "west parking lot"))])
+case(P, "indirect", "bin_engineering", "It'd be better if the trash bin stood next to the Engineering Hall entrance.",
+     put("trash_bin_1", near("trash_bin_1", "Engineering Hall entrance", 6.0)),
+     [call("place_asset", asset="trash_bin_1", location=at("at", "Engineering Hall entrance"))])
+case(P, "indirect", "ego_northbound", "Can you put our car in the northbound lane of Campus Drive?",
+     put("ego", in_lane("ego", "campus_northbound")), [call("place_asset", asset="ego", location=at("in_lane", "campus_northbound"))])
+case(P, "indirect", "hydrant_bus_stop", "I'd prefer the fire hydrant to be near the bus stop.",
+     put("fire_hydrant_1", near("fire_hydrant_1", "bus stop", 6.0)),
+     [call("place_asset", asset="fire_hydrant_1", location=at("at", "bus stop"))])
+case(P, "indirect", "ego_behind_bus", "Could you put the ego right behind the bus?",
+     put("ego", rel("ego", "behind", "bus_1", 20.0, tolerance_deg=30.0)),
+     [call("place_asset", asset="ego", location=at("behind", "bus_1"))], setup=[BUS_AT_STOP])
+case(P, "indirect", "stop_sign_east_gate", "I'd like the stop sign moved to the sidewalk near the east gate.",
+     put("stop_sign_1", on("stop_sign_1", "sidewalk"), near("stop_sign_1", "east gate", 8.0)),
+     [call("place_asset", asset="stop_sign_1", location=at("on_sidewalk", "east gate"))])
+case(P, "indirect", "robot_to_lot_a", "Would you put the robot I just added in lot A?",
+     [accepted(), delta("ackermann_robot", 0, 0), near("ackermann_robot", "parking lot A", 1.0, scope="all"), only("ackermann_robot")],
+     [call("place_asset", asset="ackermann_robot_1", location=at("at", "parking lot A"))],
+     setup=[turn("Add a little research robot at the bus stop.",
+                 call("add_asset", category="ackermann_robot", location=at("at", "bus stop")), planned=True)])
+case(P, "indirect", "bin_front_of_union", "Could you put the trash bin right in front of the Student Union entrance?",
+     put("trash_bin_1", rel("trash_bin_1", "in_front_of", "Student Union entrance", 8.0)),
+     [call("place_asset", asset="trash_bin_1", location=at("in_front_of", "Student Union entrance"))])
+case(P, "indirect", "ego_centre", "I'd like the ego placed in the middle of the crossroads.",
+     put("ego", near("ego", "main intersection", 1.0)), [call("place_asset", asset="ego", location=at("at", "main intersection"))])
+case(P, "indirect", "hydrant_in_library", "Could you put the fire hydrant in the middle of the Library building (x=-41, y=-30)?",
+     refused(), [call("place_asset", asset="fire_hydrant_1", location=xy(-41.0, -30.0))], tags=IMPOSSIBLE)
+
+case(P, "vague", "bench_by_water", "the bench would look better by the water",
+     put("bench_1", near("bench_1", "fountain", 8.0)), [call("place_asset", asset="bench_1", location=at("at", "fountain"))])
+case(P, "vague", "suv_other_lot", "SUV out of lot B, over to the other lot",
+     put("suv_1", near("suv_1", "parking lot A", 1.0)), [call("place_asset", asset="suv_1", location=at("at", "lot A"))])
+case(P, "vague", "ego_near_entrance_gate", "ego should start near the entrance gate",
+     put("ego", near("ego", "main gate", 12.0)), [call("place_asset", asset="ego", location=at("at", "entrance gate"))])
+case(P, "vague", "bin_by_cafeteria", "stick the bin by the cafeteria",
+     put("trash_bin_1", near("trash_bin_1", "Student Union entrance", 8.0)),
+     [call("place_asset", asset="trash_bin_1", location=at("at", "cafeteria"))])
+case(P, "vague", "hydrant_library", "hydrant's in a weird spot, put it by the library",
+     put("fire_hydrant_1", near("fire_hydrant_1", "Library entrance", 12.0)),
+     [call("place_asset", asset="fire_hydrant_1", location=at("at", "Library entrance"))])
+case(P, "vague", "ego_other_lane", "ego over in the other lane",
+     put("ego", in_lane("ego", "main_westbound")), [call("place_asset", asset="ego", location=at("in_lane", "main_westbound"))])
+case(P, "vague", "car_closer_jtekt", "a car closer to the JTEKT building, not in the lot",
+     put_one_of(["passenger_car", "suv"], near(["passenger_car", "suv"], "JTEKT building entrance", 10.0)),
+     [call("place_asset", asset="passenger_car_2", location=at("at", "JTEKT building entrance"))])
+case(P, "vague", "stop_sign_north_crosswalk", "stop sign somewhere by the north crosswalk",
+     put("stop_sign_1", near("stop_sign_1", "north crosswalk", 8.0)),
+     [call("place_asset", asset="stop_sign_1", location=at("at", "north crosswalk"))])
+case(P, "vague", "tree_to_quad", "the tree by the library blocks the view, put it in the quad",
+     put("tree_1", near("tree_1", "fountain", 12.0)), [call("place_asset", asset="tree_1", location=at("at", "fountain"))])
+case(P, "vague", "ego_centre", "ego in the centre please",
+     put("ego", near("ego", "main intersection", 1.0)), [call("place_asset", asset="ego", location=at("at", "scene centre"))])
+case(P, "vague", "suv_engineering", "the SUV, over by the engineering building",
+     put("suv_1", near("suv_1", "Engineering Hall entrance", 12.0)),
+     [call("place_asset", asset="suv_1", location=at("at", "Engineering Hall entrance"))])
+case(P, "vague", "bench_to_moon", "bench? send it to the moon",
+     refused(), [call("place_asset", asset="bench_1", location=at("at", "moon"))], tags=IMPOSSIBLE)
+case(P, "vague", "suv_and_ego_swap", "SUV to lot A, ego to the east gate",
+     [accepted(), near("suv_1", "parking lot A", 1.0), near("ego", "east gate", 10.0), only(assets=("suv_1", "ego"))],
+     [call("place_asset", asset="suv_1", location=at("at", "parking lot A")),
+      call("place_asset", asset="ego", location=at("at", "east gate"))], tags=COMPOUND)
+
+case(P, "erroneous", "nex_to_fontain", "put the bench nex to fontain",
+     put("bench_1", near("bench_1", "fountain", 6.0)), [call("place_asset", asset="bench_1", location=at("at", "fountain"))])
+case(P, "erroneous", "suv_parking_a", "place suv in the parking lot A pls",
+     put("suv_1", near("suv_1", "parking lot A", 1.0)), [call("place_asset", asset="suv_1", location=at("at", "parking lot A"))])
+case(P, "erroneous", "ego_westbond", "ego car put at westbond lane",
+     put("ego", in_lane("ego", "main_westbound")), [call("place_asset", asset="ego", location=at("in_lane", "main_westbound"))])
+case(P, "erroneous", "hydrant_side_walk", "move hydrant to side walk near librar",
+     put("fire_hydrant_1", on("fire_hydrant_1", "sidewalk"), near("fire_hydrant_1", "Library entrance", 12.0)),
+     [call("place_asset", asset="fire_hydrant_1", location=at("on_sidewalk", "Library entrance"))])
+case(P, "erroneous", "trashbin_crosswalk", "put trashbin on north crosswalk",
+     put("trash_bin_1", near("trash_bin_1", "north crosswalk", 6.0)),
+     [call("place_asset", asset="trash_bin_1", location=at("at", "north crosswalk"))])
+case(P, "erroneous", "ego_in_main_gate", "position the ego in main gate",
+     put("ego", near("ego", "main gate", 10.0)), [call("place_asset", asset="ego", location=at("at", "main gate"))])
+case(P, "erroneous", "car_behind_of_ego", "put a car behind of ego",
+     [accepted(), delta(["passenger_car", "suv"], 0, 1), only("passenger_car", "suv"),
+      rel(["passenger_car", "suv"], "behind", "ego", 12.0, tolerance_deg=30.0)],
+     [call("place_asset", asset="passenger_car_2", location=at("behind", "ego"))])
+case(P, "erroneous", "stop_sign_x_y", "place stop sign at x -13.5 y 5.5",
+     put("stop_sign_1", near("stop_sign_1", (-13.5, 5.5), 0.5)), [call("place_asset", asset="stop_sign_1", location=xy(-13.5, 5.5))])
+case(P, "erroneous", "ego_centre_intersection", "put ego on centre of intersection",
+     put("ego", near("ego", "main intersection", 1.0)), [call("place_asset", asset="ego", location=at("at", "main intersection"))])
+case(P, "erroneous", "bin_cafeterea", "move the bin to cafeterea",
+     put("trash_bin_1", near("trash_bin_1", "Student Union entrance", 8.0)),
+     [call("place_asset", asset="trash_bin_1", location=at("at", "cafeteria"))])
+case(P, "erroneous", "robot_lot_a", "put robot at lot A",
+     put("ackermann_robot_1", near("ackermann_robot_1", "parking lot A", 1.0)),
+     [call("place_asset", asset="ackermann_robot_1", location=at("at", "parking lot A"))], setup=[ROBOT_AT_STOP])
+case(P, "erroneous", "bench_inside_jtekt", "place bench in inside jtekt building at x=37 y=29",
+     refused(), [call("place_asset", asset="bench_1", location=xy(37.0, 29.0))], tags=IMPOSSIBLE)
+
+# Moving: shift, turn or set in motion an existing asset -----------------------------------------
+M = "moving"
+PERSON_AT_STOP = turn("Add a pedestrian at the bus stop.", call("add_asset", category="pedestrian", location=at("at", "bus stop")),
+                      planned=True)
+
+
+def shifted(asset: str, *checks: Json) -> list[Json]:
+    return [accepted(), *checks, only(assets=(asset,))]
+
+
+def spun(asset: str, lo: float, hi: float) -> list[Json]:
+    return shifted(asset, moved(asset, max_distance=0.5, turn_min_deg=lo, turn_max_deg=hi))
+
+
+def ego_speed(lo: float | None, hi: float | None) -> list[Json]:
+    return shifted("ego", does("ego", "drive_lane", speed_min=lo, speed_max=hi))
+
+
+case(M, "direct", "ego_forward_10", "Move the ego forward 10 m.",
+     shifted("ego", moved("ego", min_distance=8.0, max_distance=12.0, direction="forward")),
+     [call("move_asset", asset="ego", forward=10.0)])
+case(M, "direct", "suv_left_2", "Shift the SUV 2 m to its left.",
+     shifted("suv_1", moved("suv_1", min_distance=1.5, max_distance=2.5, direction="left")),
+     [call("move_asset", asset="suv_1", left=2.0)])
+case(M, "direct", "turn_bench_around", "Turn the bench around.", spun("bench_1", 170.0, 180.0),
+     [call("move_asset", asset="bench_1", turn_deg=180.0)])
+case(M, "direct", "back_ego_5", "Back the ego up 5 metres.",
+     shifted("ego", moved("ego", min_distance=4.0, max_distance=6.0, direction="backward")),
+     [call("move_asset", asset="ego", forward=-5.0)])
+case(M, "direct", "rotate_ego_90", "Rotate the ego 90 degrees to the left.", spun("ego", 80.0, 100.0),
+     [call("move_asset", asset="ego", turn_deg=90.0)])
+case(M, "direct", "ego_10_mps", "Make the ego drive at 10 m/s.", ego_speed(9.5, 10.5),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 10.0})])
+case(M, "direct", "suv_circles_lot_b", "Make the SUV drive in circles in parking lot B.",
+     shifted("suv_1", does("suv_1", "circle", centre_near="parking lot B", centre_within=20.0)),
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B"})])
+case(M, "direct", "bin_3m_east", "Move the trash bin 3 m east.",
+     shifted("trash_bin_1", moved("trash_bin_1", min_distance=2.5, max_distance=3.5, direction="forward")),
+     [call("move_asset", asset="trash_bin_1", forward=3.0)])
+case(M, "direct", "ego_drive_westbound", "Make the ego drive in the westbound lane.",
+     shifted("ego", does("ego", "drive_lane", lane="main_westbound")),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_westbound"})])
+case(M, "direct", "ego_face_north", "Turn the ego to face north.", spun("ego", 80.0, 100.0),
+     [call("move_asset", asset="ego", turn_deg=90.0)])
+case(M, "direct", "ego_forward_500", "Move the ego forward 500 m.",
+     refused(), [call("move_asset", asset="ego", forward=500.0)], tags=IMPOSSIBLE)
+case(M, "direct", "bench_drives", "Make the bench drive around the parking lot.",
+     refused(), [call("set_behaviour", asset="bench_1", behaviour={"kind": "circle", "centre": "parking lot A"})],
+     tags=IMPOSSIBLE)
+case(M, "direct", "ego_forward_and_faster", "Move the ego forward 10 m and make it drive at 8 m/s.",
+     shifted("ego", moved("ego", min_distance=8.0, max_distance=12.0, direction="forward"),
+             does("ego", "drive_lane", speed_min=7.5, speed_max=8.5)),
+     [call("move_asset", asset="ego", forward=10.0),
+      call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 8.0})],
+     tags=COMPOUND)
+
+case(M, "indirect", "nudge_ego_3", "Could you nudge the ego forward by about 3 metres?",
+     shifted("ego", moved("ego", min_distance=2.0, max_distance=4.0, direction="forward")),
+     [call("move_asset", asset="ego", forward=3.0)])
+case(M, "indirect", "suv_north_campus_drive", "I'd like the SUV to drive up Campus Drive heading north.",
+     shifted("suv_1", does("suv_1", "drive_lane", lane="campus_northbound")),
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "drive_lane", "lane": "campus_northbound"})])
+case(M, "indirect", "bench_other_way", "Would you turn the bench so it faces the other way?", spun("bench_1", 170.0, 180.0),
+     [call("move_asset", asset="bench_1", turn_deg=180.0)])
+case(M, "indirect", "slow_ego_3", "Can you slow the ego down to 3 m/s?", ego_speed(2.5, 3.5),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 3.0})])
+case(M, "indirect", "ego_20_back", "I'd like the ego to start 20 m further back.",
+     shifted("ego", moved("ego", min_distance=18.0, max_distance=22.0, direction="backward")),
+     [call("move_asset", asset="ego", forward=-20.0)])
+case(M, "indirect", "donuts_lot_a", "I want to see how the ego copes with a car doing doughnuts in lot A.",
+     [accepted(), does(["passenger_car", "suv"], "circle", centre_near="parking lot A", centre_within=20.0),
+      delta(["passenger_car", "suv"], 0, 1), only("passenger_car", "suv")],
+     [call("set_behaviour", asset="passenger_car_1", behaviour={"kind": "circle", "centre": "parking lot A"})])
+case(M, "indirect", "ego_point_west", "Could you spin the ego around so it points west?", spun("ego", 170.0, 180.0),
+     [call("move_asset", asset="ego", turn_deg=180.0)])
+case(M, "indirect", "ego_twice_as_fast", "I'd like the ego going twice as fast as it is now.", ego_speed(9.0, 11.0),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 10.0})])
+case(M, "indirect", "ego_half_lane_left", "Would you shift the ego half a lane to the left?",
+     shifted("ego", moved("ego", min_distance=1.2, max_distance=2.3, direction="left")),
+     [call("move_asset", asset="ego", left=1.75)])
+case(M, "indirect", "hydrant_2m_east", "Could the fire hydrant sit 2 m further east?",
+     shifted("fire_hydrant_1", moved("fire_hydrant_1", min_distance=1.5, max_distance=2.5, direction="forward")),
+     [call("move_asset", asset="fire_hydrant_1", forward=2.0)])
+case(M, "indirect", "person_crosses", "I'd like to see that pedestrian cross the road at the west crosswalk.",
+     shifted("pedestrian_1", does("pedestrian_1", "cross_road", crosses_lane="main_eastbound")),
+     [call("set_behaviour", asset="pedestrian_1", behaviour={"kind": "cross_road"})], setup=[PERSON_AT_STOP])
+case(M, "indirect", "tree_walks", "Could you make the tree walk across the road?",
+     refused(), [call("set_behaviour", asset="tree_1", behaviour={"kind": "cross_road"})], tags=IMPOSSIBLE)
+
+case(M, "vague", "ego_further_along", "the ego a bit further along",
+     shifted("ego", moved("ego", min_distance=1.0, max_distance=30.0, direction="forward")),
+     [call("move_asset", asset="ego", forward=5.0)])
+case(M, "vague", "ego_faster", "get the ego moving faster", ego_speed(5.5, None),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 8.0})])
+case(M, "vague", "car_should_drive", "that sedan should be driving, not parked",
+     [accepted(), does("passenger_car", "drive_lane"), delta("passenger_car", 0, 0), only("passenger_car")],
+     [call("set_behaviour", asset="passenger_car_1", behaviour={"kind": "drive_lane"})])
+case(M, "vague", "bench_wrong_way", "the bench faces the wrong way", spun("bench_1", 90.0, 180.0),
+     [call("move_asset", asset="bench_1", turn_deg=180.0)])
+case(M, "vague", "ego_other_way", "ego should go the other way",
+     [accepted(), only(assets=("ego",))], [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_westbound"})],
+     alternatives=[[moved("ego", turn_min_deg=150.0)], [does("ego", "drive_lane", lane="main_westbound")]])
+case(M, "vague", "ego_bit_left", "a bit to the left with the ego",
+     shifted("ego", moved("ego", min_distance=0.3, max_distance=3.6, direction="left")), [call("move_asset", asset="ego", left=1.0)])
+case(M, "vague", "suv_round_and_round", "SUV going round and round", shifted("suv_1", does("suv_1", "circle")),
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B"})])
+case(M, "vague", "ego_too_slow", "the ego's too slow", ego_speed(5.5, None),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 8.0})])
+case(M, "vague", "bin_little_east", "the trash bin, a little to the east",
+     shifted("trash_bin_1", moved("trash_bin_1", min_distance=0.3, max_distance=4.0, direction="forward")),
+     [call("move_asset", asset="trash_bin_1", forward=1.5)])
+case(M, "vague", "that_person_jaywalks", "now have them jaywalk",
+     [accepted(), does("pedestrian", "jaywalk", crosses_lane="main_eastbound"), delta("pedestrian", 0, 0), only("pedestrian")],
+     [call("set_behaviour", asset="pedestrian_1", behaviour={"kind": "jaywalk"})],
+     setup=[turn("Put a pedestrian on the sidewalk near the bus stop.",
+                 call("add_asset", category="pedestrian", location=at("on_sidewalk", "bus stop")), planned=True)])
+case(M, "vague", "park_the_ego", "park the ego", shifted("ego", does("ego", "parked")),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "parked"})])
+case(M, "vague", "stop_sign_chases", "stop sign chasing the ego down the road",
+     refused(), [call("set_behaviour", asset="stop_sign_1", behaviour={"kind": "drive_lane", "lane": "main_eastbound"})],
+     tags=IMPOSSIBLE)
+
+case(M, "erroneous", "forwad_10", "move ego forwad 10 meter",
+     shifted("ego", moved("ego", min_distance=8.0, max_distance=12.0, direction="forward")), [call("move_asset", asset="ego", forward=10.0)])
+case(M, "erroneous", "turn_around_bench", "turn around the bench", spun("bench_1", 170.0, 180.0),
+     [call("move_asset", asset="bench_1", turn_deg=180.0)])
+case(M, "erroneous", "ego_go_back", "ego go back 5 metre",
+     shifted("ego", moved("ego", min_distance=4.0, max_distance=6.0, direction="backward")), [call("move_asset", asset="ego", forward=-5.0)])
+case(M, "erroneous", "ego_10_meter_per_second", "make ego drive 10 meter per second", ego_speed(9.5, 10.5),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 10.0})])
+case(M, "erroneous", "suv_move_left", "suv move left 2m",
+     shifted("suv_1", moved("suv_1", min_distance=1.5, max_distance=2.5, direction="left")), [call("move_asset", asset="suv_1", left=2.0)])
+case(M, "erroneous", "rotate_90_degre", "rotate ego 90 degre left", spun("ego", 80.0, 100.0),
+     [call("move_asset", asset="ego", turn_deg=90.0)])
+case(M, "erroneous", "suv_driving_circle", "make suv driving in circle in parking b",
+     shifted("suv_1", does("suv_1", "circle", centre_near="parking lot B", centre_within=20.0)),
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B"})])
+case(M, "erroneous", "westbond", "ego car must drive in westbond lane", shifted("ego", does("ego", "drive_lane", lane="main_westbound")),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_westbound"})])
+case(M, "erroneous", "pedestrain_jaywalk", "the pedestrain must to jaywalk",
+     shifted("pedestrian_1", does("pedestrian_1", "jaywalk", crosses_lane="main_eastbound")),
+     [call("set_behaviour", asset="pedestrian_1", behaviour={"kind": "jaywalk"})], setup=[PERSON_AT_STOP])
+case(M, "erroneous", "slow_down_ego", "slow down ego to 3 m/s please", ego_speed(2.5, 3.5),
+     [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 3.0})])
+case(M, "erroneous", "bin_move_3_east", "trash bin move 3 meter to east",
+     shifted("trash_bin_1", moved("trash_bin_1", min_distance=2.5, max_distance=3.5, direction="forward")),
+     [call("move_asset", asset="trash_bin_1", forward=3.0)])
+case(M, "erroneous", "foward_1e4", "move the ego foward 1e4 m", refused(), [call("move_asset", asset="ego", forward=10000.0)],
+     tags=IMPOSSIBLE)
+
+# Arrangement: several new assets laid out together ----------------------------------------------
+G = "arrangement"
+RUBBLE_CROSSROADS = turn("Put a pile of construction debris in the middle of the crossroads.",
+                 call("add_asset", category="cement_rubble", location=at("at", "main intersection")))
+RUBBLE_PLANNED = turn("There should be some broken concrete lying in the centre of the intersection.",
+                      call("add_asset", category="cement_rubble", location=at("at", "main intersection")),
+                      planned=True)
+BLOCKERS = ["road_barrier", "traffic_cone", "bollard"]
+
+
+def laid(category: str | list[str], n: int | tuple[int, int], form: str, *checks: Json, **layout: Any) -> list[Json]:
+    lo, hi = (n, n) if isinstance(n, int) else n
+    cats = [category] if isinstance(category, str) else category
+    return [accepted(), delta(category, lo, hi), shape(category, form, lo, **layout), *checks, only(*cats)]
+
+
+def ring(category: str | list[str], n: int | tuple[int, int], around: str, *checks: Json) -> list[Json]:
+    return laid(category, n, "ring", *checks, around=around)
+
+
+case(G, "direct", "cones_ring_rubble", "Put six cones in a ring around the rubble.",
+     ring("traffic_cone", 6, "cement_rubble_1"),
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=6, location=at("at", "cement_rubble_1"))],
+     setup=[RUBBLE_CROSSROADS])
+case(G, "direct", "cones_lane_edge", "Put a line of 4 cones along the edge of the eastbound lane.",
+     laid("traffic_cone", 4, "line", in_lane("traffic_cone", "main_eastbound")),
+     [call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", count=4, location=at("in_lane", "main_eastbound"))])
+case(G, "direct", "twelve_cones_ring_intersection", "Arrange twelve cones in a circle around the intersection.",
+     ring("traffic_cone", 12, "main intersection"),
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=12, location=at("at", "main intersection"))])
+case(G, "direct", "trees_row_fountain", "Plant a row of four trees near the fountain.",
+     laid("tree", 4, "line", near("tree", "fountain", 10.0)),
+     [call("arrange_assets", categories=["tree"], shape="line", count=4, location=at("at", "fountain"))])
+case(G, "direct", "cars_grid_lot_a", "Set out a 3 by 3 grid of cars in parking lot A.",
+     laid("passenger_car", 9, "cluster", near("passenger_car", "parking lot A", 0.5), tolerance=15.0),
+     [call("arrange_assets", categories=["passenger_car"], shape="grid", count=9, columns=3, location=at("at", "parking lot A"))])
+case(G, "direct", "bollards_jtekt_sidewalk", "Place eight bollards in a line along the sidewalk near the JTEKT entrance.",
+     laid("bollard", 8, "line", on("bollard", "sidewalk"), near("bollard", "JTEKT building entrance", 15.0)),
+     [call("arrange_assets", categories=["bollard"], shape="line", count=8,
+           location=at("on_sidewalk", "JTEKT building entrance"))])
+case(G, "direct", "bollards_around_hydrant", "Surround the fire hydrant with 4 bollards.",
+     ring("bollard", 4, "fire_hydrant_1"),
+     [call("arrange_assets", categories=["bollard"], shape="ring", count=4, location=at("at", "fire_hydrant_1"))])
+case(G, "direct", "barriers_east_gate", "Put three barriers in a line across the road at the east gate.",
+     laid("road_barrier", 3, "line", near("road_barrier", "east gate", 6.0), on("road_barrier", "lane")),
+     [call("arrange_assets", categories=["road_barrier"], shape="line", count=3, location=at("at", "east gate"))])
+case(G, "direct", "ten_cones_westbound_edge", "Arrange 10 traffic cones along the edge of the westbound lane.",
+     laid("traffic_cone", 10, "line", in_lane("traffic_cone", "main_westbound")),
+     [call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", count=10, location=at("in_lane", "main_westbound"))])
+case(G, "direct", "signs_front_library", "Put 5 construction signs in a line in front of the library entrance.",
+     laid("construction_sign", 5, "line", near("construction_sign", "Library entrance", 6.0)),
+     [call("arrange_assets", categories=["construction_sign"], shape="line", count=5,
+           location=at("in_front_of", "Library entrance"))])
+case(G, "direct", "five_hundred_cones", "Arrange 500 cones in a circle around the intersection.",
+     refused(), [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=500,
+                      location=at("at", "main intersection"))], tags=IMPOSSIBLE)
+case(G, "direct", "ring_inside_library", "Put a ring of cones around the middle of the Library building, x=-41, y=-30.",
+     refused(), [call("arrange_assets", categories=["traffic_cone"], shape="ring", radius=5.0, location=xy(-41.0, -30.0))],
+     tags=IMPOSSIBLE)
+
+case(G, "indirect", "ring_round_rubble", "Could you set up a ring of cones around that pile of rubble?",
+     ring("traffic_cone", (4, 30), "cement_rubble_1"),
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", location=at("at", "cement_rubble_1"))],
+     setup=[RUBBLE_PLANNED])
+case(G, "indirect", "close_lane_two_barriers", "I'd like our lane closed with two barriers 20 m ahead of the ego.",
+     laid("road_barrier", 2, "line", in_lane("road_barrier", "main_eastbound"),
+          rel("road_barrier", "in_front_of", "ego", 30.0, tolerance_deg=20.0)),
+     [call("arrange_assets", categories=["road_barrier"], shape="line", count=2,
+           location=at("in_front_of", "ego", distance=20.0))])
+case(G, "indirect", "protect_hydrant", "Could you put some bollards around the fire hydrant to protect it?",
+     ring("bollard", (3, 12), "fire_hydrant_1"),
+     [call("arrange_assets", categories=["bollard"], shape="ring", count=4, location=at("at", "fire_hydrant_1"))])
+case(G, "indirect", "trees_line_fountain", "It'd be nice to have a line of trees by the fountain.",
+     laid("tree", (3, 8), "line", near("tree", "fountain", 12.0)),
+     [call("arrange_assets", categories=["tree"], shape="line", count=4, location=at("at", "fountain"))])
+case(G, "indirect", "suv_grid_lot_a", "Would you fill lot A with a grid of six parked SUVs?",
+     laid("suv", 6, "cluster", near("suv", "parking lot A", 0.5), tolerance=15.0),
+     [call("arrange_assets", categories=["suv"], shape="grid", count=6, columns=3, location=at("at", "parking lot A"))])
+case(G, "indirect", "cones_northbound_edge", "I'd like cones along the edge of the northbound lane of Campus Drive, say eight of them.",
+     laid("traffic_cone", 8, "line", in_lane("traffic_cone", "campus_northbound")),
+     [call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", count=8,
+           location=at("in_lane", "campus_northbound"))])
+case(G, "indirect", "benches_circle_fountain", "Could you put a circle of benches around the fountain?",
+     ring("bench", (3, 12), "fountain"),
+     [call("arrange_assets", categories=["bench"], shape="ring", location=at("at", "fountain"))])
+case(G, "indirect", "queue_at_bus_stop", "Can you line up 4 people waiting along the sidewalk at the bus stop?",
+     laid("pedestrian", 4, "line", near("pedestrian", "bus stop", 5.0)),
+     [call("arrange_assets", categories=["pedestrian"], shape="line", count=4, location=at("on_sidewalk", "bus stop"))])
+case(G, "indirect", "cars_block_student_parking", "I'd like a 2 by 3 block of cars in the student parking.",
+     laid("passenger_car", 6, "cluster", near("passenger_car", "parking lot B", 0.5), tolerance=15.0),
+     [call("arrange_assets", categories=["passenger_car"], shape="grid", count=6, columns=3, location=at("at", "student parking"))])
+case(G, "indirect", "signs_jtekt_sidewalk", "Could you line up some road work signs along the sidewalk near the JTEKT entrance?",
+     laid("construction_sign", (3, 12), "line", on("construction_sign", "sidewalk"), near("construction_sign", "JTEKT building entrance", 15.0)),
+     [call("arrange_assets", categories=["construction_sign"], shape="line", count=5,
+           location=at("on_sidewalk", "JTEKT building entrance"))])
+case(G, "indirect", "mark_ego_lane", "I want the ego's lane marked off with cones along its edge.",
+     laid("traffic_cone", (3, 40), "line", in_lane("traffic_cone", "main_eastbound")),
+     [call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", location=at("in_lane", "ego"))])
+case(G, "indirect", "line_through_jtekt", "Could you run a line of cones straight through the JTEKT Building, at x=37, y=29?",
+     refused(), [call("arrange_assets", categories=["traffic_cone"], shape="line", count=5, location=xy(37.0, 29.0))],
+     tags=IMPOSSIBLE)
+case(G, "indirect", "ring_and_sign", "Could you ring the rubble with cones and put a road work sign in front of the ego?",
+     [accepted(), shape("traffic_cone", "ring", 4, around="cement_rubble_1"), delta("construction_sign", 1, 1),
+      rel("construction_sign", "in_front_of", "ego", 40.0), only("traffic_cone", "construction_sign")],
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", location=at("at", "cement_rubble_1")),
+      call("add_asset", category="construction_sign", location=at("in_front_of", "ego", distance=10.0))],
+     setup=[RUBBLE_CROSSROADS], tags=COMPOUND)
+
+case(G, "vague", "fence_off_rubble", "fence off the rubble",
+     [accepted(), delta(BLOCKERS, 4, 40), shape(BLOCKERS, "ring", 4, around="cement_rubble_1"), only(*BLOCKERS)],
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", location=at("at", "cement_rubble_1"))],
+     setup=[RUBBLE_PLANNED])
+case(G, "vague", "close_road_ahead", "close the road ahead of us",
+     [accepted(), delta(BLOCKERS, 2, 20), shape(BLOCKERS, "line", 2),
+      rel(BLOCKERS, "in_front_of", "ego", 40.0, tolerance_deg=30.0, scope="added"), only(*BLOCKERS)],
+     [call("arrange_assets", categories=["road_barrier"], shape="line", count=2, location=at("in_front_of", "ego", distance=15.0))])
+case(G, "vague", "trees_row", "a row of trees near the fountain",
+     laid("tree", (3, 8), "line", near("tree", "fountain", 12.0)),
+     [call("arrange_assets", categories=["tree"], shape="line", count=3, location=at("at", "fountain"))])
+case(G, "vague", "fill_empty_lot", "fill the empty parking lot with cars",
+     [accepted(), delta(VEHICLES, 4, 60), near(VEHICLES, "parking lot A", 0.5), only(*VEHICLES)],
+     [call("arrange_assets", categories=["passenger_car"], shape="grid", count=9, location=at("at", "parking lot A"))])
+case(G, "vague", "mark_lane_edge", "mark the lane edge with cones",
+     laid("traffic_cone", (3, 40), "line", in_lane("traffic_cone")),
+     [call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", location=at("in_lane", "ego"))])
+case(G, "vague", "protect_hydrant", "protect the hydrant",
+     [accepted(), delta(BLOCKERS, 3, 12), shape(BLOCKERS, "ring", 3, around="fire_hydrant_1"), only(*BLOCKERS)],
+     [call("arrange_assets", categories=["bollard"], shape="ring", count=4, location=at("at", "fire_hydrant_1"))])
+case(G, "vague", "seating_round_fountain", "some seating around the fountain",
+     [accepted(), delta("bench", 2, 12), near("bench", "fountain", 8.0), only("bench")],
+     [call("arrange_assets", categories=["bench"], shape="ring", location=at("at", "fountain"))])
+case(G, "vague", "queue_bus_stop", "a queue of people at the bus stop",
+     laid("pedestrian", (3, 20), "line", near("pedestrian", "bus stop", 8.0)),
+     [call("arrange_assets", categories=["pedestrian"], shape="line", count=5, location=at("on_sidewalk", "bus stop"))])
+case(G, "vague", "work_zone_library", "a work zone in front of the library",
+     [accepted(), delta(["construction_sign", *BLOCKERS], 2, 30), shape(["construction_sign", *BLOCKERS], "line", 2),
+      near(["construction_sign", *BLOCKERS], "Library entrance", 10.0), only("construction_sign", *BLOCKERS)],
+     [call("arrange_assets", categories=["construction_sign", "traffic_cone"], shape="line", count=6,
+           location=at("in_front_of", "Library entrance"))])
+case(G, "vague", "cone_off_intersection", "cone off the intersection",
+     ring("traffic_cone", (4, 60), "main intersection"),
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=12, location=at("at", "main intersection"))])
+case(G, "vague", "robot_fleet", "a fleet of robots lined up in lot B",
+     laid("ackermann_robot", (3, 20), "line", near("ackermann_robot", "parking lot B", 0.5)),
+     [call("arrange_assets", categories=["ackermann_robot"], shape="line", count=5, location=at("at", "parking lot B"))])
+case(G, "vague", "ring_round_moon", "a ring of cones around the moon",
+     refused(), [call("arrange_assets", categories=["traffic_cone"], shape="ring", location=at("at", "moon"))], tags=IMPOSSIBLE)
+
+case(G, "erroneous", "cone_circle_rubel", "put 6 cone in circle around the rubel",
+     ring("traffic_cone", 6, "cement_rubble_1"),
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=6, location=at("at", "cement_rubble_1"))],
+     setup=[RUBBLE_PLANNED])
+case(G, "erroneous", "barier_infront_ego", "line 2 barier across lane infront ego 15m",
+     laid("road_barrier", 2, "line", in_lane("road_barrier", "main_eastbound"),
+          rel("road_barrier", "in_front_of", "ego", 25.0, tolerance_deg=20.0)),
+     [call("arrange_assets", categories=["road_barrier"], shape="line", count=2, location=at("in_front_of", "ego", distance=15.0))])
+case(G, "erroneous", "twelv_cones", "twelv cones circle around intersecion",
+     ring("traffic_cone", 12, "main intersection"),
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=12, location=at("at", "main intersection"))])
+case(G, "erroneous", "row_tree_fontain", "row of 4 tree near fontain",
+     laid("tree", 4, "line", near("tree", "fountain", 10.0)),
+     [call("arrange_assets", categories=["tree"], shape="line", count=4, location=at("at", "fountain"))])
+case(G, "erroneous", "grid_car_parking_a", "grid 3x3 car in parking A",
+     laid("passenger_car", 9, "cluster", near("passenger_car", "parking lot A", 0.5), tolerance=15.0),
+     [call("arrange_assets", categories=["passenger_car"], shape="grid", count=9, columns=3, location=at("at", "parking lot A"))])
+case(G, "erroneous", "ring_bollard_hydrant", "ring of bollard around hydrant",
+     ring("bollard", (3, 12), "fire_hydrant_1"),
+     [call("arrange_assets", categories=["bollard"], shape="ring", count=4, location=at("at", "fire_hydrant_1"))])
+case(G, "erroneous", "cones_edge_westbond", "cones 10 along edge westbond lane",
+     laid("traffic_cone", 10, "line", in_lane("traffic_cone", "main_westbound")),
+     [call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", count=10, location=at("in_lane", "main_westbound"))])
+case(G, "erroneous", "construction_sign_line", "5 construction sign in line front of library",
+     laid("construction_sign", 5, "line", near("construction_sign", "Library entrance", 6.0)),
+     [call("arrange_assets", categories=["construction_sign"], shape="line", count=5,
+           location=at("in_front_of", "Library entrance"))])
+case(G, "erroneous", "bench_circle", "bench circle around fountain pls",
+     ring("bench", (3, 12), "fountain"), [call("arrange_assets", categories=["bench"], shape="ring", location=at("at", "fountain"))])
+case(G, "erroneous", "people_line_4", "line of people at bus stop, 4 of them",
+     laid("pedestrian", 4, "line", near("pedestrian", "bus stop", 5.0)),
+     [call("arrange_assets", categories=["pedestrian"], shape="line", count=4, location=at("on_sidewalk", "bus stop"))])
+case(G, "erroneous", "robots_5_line", "robots 5 line in parking B",
+     laid("ackermann_robot", 5, "line", near("ackermann_robot", "parking lot B", 0.5)),
+     [call("arrange_assets", categories=["ackermann_robot"], shape="line", count=5, location=at("at", "parking lot B"))])
+case(G, "erroneous", "arange_500", "arange 500 cone in circle at crossroad",
+     refused(), [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=500,
+                      location=at("at", "main intersection"))], tags=IMPOSSIBLE)
+
+# Appearance: weather, time, lighting and the looks of assets ------------------------------------
+L = "appearance"
+RAINING = turn("Make it rain.", call("set_weather", kind="rain", intensity=0.6))
+
+
+def sky(*checks: Json) -> list[Json]:
+    """An environment change only."""
+    return [accepted(), *checks, only(environment=True)]
+
+
+def painted(asset: str, **look: Any) -> list[Json]:
+    return [accepted(), looks(asset, **look), only(assets=(asset,))]
+
+
+DARKER = [[env(exposure_max=0.95)], [env(time_from="18:00", time_to="06:00")]]
+WET = ["rain", "snow"]
+
+case(L, "direct", "make_it_rain", "Make it rain.", sky(env(weather=["rain"])), [call("set_weather", kind="rain")])
+case(L, "direct", "time_1830", "Set the time to 18:30.", sky(env(time_from="18:25", time_to="18:35")),
+     [call("set_time_of_day", time="18:30")])
+case(L, "direct", "bench_green", "Paint the bench green.", painted("bench_1", colour="green"),
+     [call("set_asset_appearance", assets=["bench_1"], colour="green")])
+case(L, "direct", "street_lights_on", "Turn on the street lights.", sky(env(street_lights="on")),
+     [call("set_lighting", street_lights="on")])
+case(L, "direct", "heavy_fog", "Add heavy fog.", sky(env(weather=["fog"], intensity_min=0.7)),
+     [call("set_weather", kind="fog", intensity=0.9)])
+case(L, "direct", "parked_cars_blue", "Make all the parked cars blue.",
+     [accepted(), looks("passenger_car", colour="blue", scope="all"), only("passenger_car", "suv")],
+     [call("set_asset_appearance", category="passenger_car", colour="blue")])
+case(L, "direct", "headlights_on", "Switch the vehicle headlights on.", sky(env(vehicle_lights="on")),
+     [call("set_lighting", vehicle_lights="on")])
+case(L, "direct", "midnight", "Set the time to midnight.", sky(env(time_from="23:45", time_to="00:15")),
+     [call("set_time_of_day", time="00:00")])
+case(L, "direct", "light_snow", "Make it snow lightly.", sky(env(weather=["snow"], intensity_min=0.05, intensity_max=0.45)),
+     [call("set_weather", kind="snow", intensity=0.3)])
+case(L, "direct", "ego_hex", "Paint the ego #ff8800.", painted("ego", colour="#ff8800", colour_tolerance=0.05),
+     [call("set_asset_appearance", assets=["ego"], colour="#ff8800")])
+case(L, "direct", "time_2500", "Set the time to 25:00.", refused(), [call("set_time_of_day", time="25:00")], tags=IMPOSSIBLE)
+case(L, "direct", "hail", "Make it hail.", refused(), [call("set_weather", kind="hail")], tags=IMPOSSIBLE)
+case(L, "direct", "rain_and_headlights", "Make it rain and turn on the headlights.",
+     sky(env(weather=["rain"], vehicle_lights="on")),
+     [call("set_weather", kind="rain"), call("set_lighting", vehicle_lights="on")], tags=COMPOUND)
+
+case(L, "indirect", "test_wipers", "I want to test the wipers.", sky(env(weather=WET, intensity_min=0.2)),
+     [call("set_weather", kind="rain", intensity=0.6)])
+case(L, "indirect", "half_six_evening", "Could you make it half past six in the evening?",
+     sky(env(time_from="18:25", time_to="18:35")), [call("set_time_of_day", time="18:30")])
+case(L, "indirect", "suv_red", "I'd like the SUV to be red.", painted("suv_1", colour="red"),
+     [call("set_asset_appearance", assets=["suv_1"], colour="red")])
+case(L, "indirect", "bit_darker", "Would you make the scene a bit darker?", [accepted(), only(environment=True)],
+     [call("set_lighting", exposure=0.7)], alternatives=DARKER)
+case(L, "indirect", "sky_clears", "It would be nice if the sky cleared up.", sky(env(weather=["clear"])),
+     [call("set_weather", kind="clear")], setup=[RAINING])
+case(L, "indirect", "night_vision", "I need to test how the ego's cameras do at night.", sky(env(night=True)),
+     [call("set_time_of_day", time="22:00")])
+case(L, "indirect", "wooden_bench", "Could you give the bench a wooden look?", painted("bench_1", material="wood"),
+     [call("set_asset_appearance", assets=["bench_1"], material="wood")])
+case(L, "indirect", "thick_fog_cameras", "I'd like to see how the cameras cope with thick fog.",
+     sky(env(weather=["fog"], intensity_min=0.7)), [call("set_weather", kind="fog", intensity=0.9)])
+case(L, "indirect", "street_lights_off", "Could the street lights be switched off?", sky(env(street_lights="off")),
+     [call("set_lighting", street_lights="off")])
+case(L, "indirect", "hydrant_yellow", "Can you paint the fire hydrant yellow instead of red?", painted("fire_hydrant_1", colour="yellow"),
+     [call("set_asset_appearance", assets=["fire_hydrant_1"], colour="yellow")])
+case(L, "indirect", "early_morning_7", "I'd like it to be early morning, around 7.", sky(env(time_from="06:30", time_to="08:00")),
+     [call("set_time_of_day", time="07:00")])
+case(L, "indirect", "unicorn_bench", "Could you paint the bench a sparkly unicorn colour?",
+     refused(), [call("set_asset_appearance", assets=["bench_1"], colour="sparkly unicorn")], tags=IMPOSSIBLE)
+case(L, "indirect", "dusk_and_lights", "Could you make it dusk and switch the street lights on?",
+     sky(env(time_from="18:00", time_to="21:00", street_lights="on")),
+     [call("set_time_of_day", time="dusk"), call("set_lighting", street_lights="on")], tags=COMPOUND)
+
+case(L, "vague", "dusk", "dusk", sky(env(time_from="18:00", time_to="21:00")), [call("set_time_of_day", time="dusk")])
+case(L, "vague", "gloomy", "gloomy weather", sky(env(weather=["cloudy", "rain", "fog"])), [call("set_weather", kind="cloudy", intensity=0.8)])
+case(L, "vague", "winter_vibes", "winter vibes", sky(env(weather=["snow"])), [call("set_weather", kind="snow")])
+case(L, "vague", "storm", "make it look like a storm", sky(env(weather=["rain"], intensity_min=0.7)),
+     [call("set_weather", kind="rain", intensity=0.9)])
+case(L, "vague", "lights_on", "lights on", [accepted(), only(environment=True)], [call("set_lighting", street_lights="on")],
+     alternatives=[[env(street_lights="on")], [env(vehicle_lights="on")]])
+case(L, "vague", "less_bright", "something less bright", [accepted(), only(environment=True)],
+     [call("set_lighting", exposure=0.6)], alternatives=DARKER)
+case(L, "vague", "bench_dull", "the bench looks dull",
+     [accepted(), looks("bench"), only("bench")], [call("set_asset_appearance", assets=["bench_1"], colour="red")])
+case(L, "vague", "late_night", "late at night", sky(env(night=True, time_from="22:00", time_to="04:00")),
+     [call("set_time_of_day", time="23:30")])
+case(L, "vague", "visibility_trouble", "more visibility trouble for the ego",
+     sky(env(weather=["fog", "rain", "snow"], intensity_min=0.3)), [call("set_weather", kind="fog", intensity=0.7)])
+case(L, "vague", "sunny_please", "sunny please", sky(env(weather=["clear"])), [call("set_weather", kind="clear")],
+     setup=[turn("Let it rain hard.", call("set_weather", kind="rain", intensity=0.9), planned=True)])
+case(L, "vague", "ego_stand_out", "make the ego stand out", [accepted(), looks("ego_vehicle"), only("ego_vehicle")],
+     [call("set_asset_appearance", assets=["ego"], colour="orange")])
+case(L, "vague", "thirty_oclock", "make it 30 o'clock", refused(), [call("set_time_of_day", time="30:00")], tags=IMPOSSIBLE)
+
+case(L, "erroneous", "rainning", "make it rainning", sky(env(weather=["rain"])), [call("set_weather", kind="rain")])
+case(L, "erroneous", "time_18h30", "set time to 18h30", sky(env(time_from="18:25", time_to="18:35")),
+     [call("set_time_of_day", time="18:30")])
+case(L, "erroneous", "bench_green_colour", "paint bench in green colour", painted("bench_1", colour="green"),
+     [call("set_asset_appearance", assets=["bench_1"], colour="green")])
+case(L, "erroneous", "turn_on_street_light", "turn on street light", sky(env(street_lights="on")),
+     [call("set_lighting", street_lights="on")])
+case(L, "erroneous", "fogg", "put heavy fogg", sky(env(weather=["fog"], intensity_min=0.7)),
+     [call("set_weather", kind="fog", intensity=0.9)])
+case(L, "erroneous", "car_all_blue", "make car all blue",
+     [accepted(), looks("passenger_car", colour="blue", scope="all"), only("passenger_car", "suv")],
+     [call("set_asset_appearance", category="passenger_car", colour="blue")])
+case(L, "erroneous", "headlight_on", "switch on headlight of car", sky(env(vehicle_lights="on")),
+     [call("set_lighting", vehicle_lights="on")])
+case(L, "erroneous", "mid_night", "set time to mid night", sky(env(time_from="23:45", time_to="00:15")),
+     [call("set_time_of_day", time="00:00")])
+case(L, "erroneous", "snowing_little", "make snowing a little", sky(env(weather=["snow"], intensity_min=0.05, intensity_max=0.45)),
+     [call("set_weather", kind="snow", intensity=0.3)])
+case(L, "erroneous", "ego_paint_orange", "ego paint orange", painted("ego", colour="orange"),
+     [call("set_asset_appearance", assets=["ego"], colour="orange")])
+case(L, "erroneous", "nigth", "make nigth time", sky(env(night=True)), [call("set_time_of_day", time="night")])
+case(L, "erroneous", "tornado", "set the wether to tornado", refused(), [call("set_weather", kind="tornado")], tags=IMPOSSIBLE)
 
 def write(path: Path = OUT) -> int:
     """Write the cases as JSON Lines; returns how many."""
