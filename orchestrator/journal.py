@@ -28,6 +28,7 @@ from typing import Any, Literal
 
 from drivetwin.orchestrator.journal_events import (
     CommitEvent,
+    EndEvent,
     Event,
     JournalError,
     LoadEvent,
@@ -85,7 +86,6 @@ class Restored:
     memory: Memory
     # Whether the last event is `end`: the session that wrote it closed normally.
     ended_cleanly: bool = False
-    events: int = 0
 
 
 class Journal:
@@ -187,23 +187,47 @@ def read_lines(path: Path) -> list[tuple[int, str]]:
 
 def replay_lines(lines: list[tuple[int, str]], source: str) -> Restored:
     """Replay numbered event lines; the first line that does not fit is a JournalError naming it."""
+    salvage = salvage_lines(lines, source)
+    if salvage.error is not None:
+        raise salvage.error
+    assert salvage.restored is not None
+    return salvage.restored
+
+
+@dataclass
+class Salvage:
+    """How far a journal replays: the state after its longest valid prefix, and what stopped it."""
+
+    restored: Restored | None
+    kept: int  # how many of the lines replayed
+    error: JournalError | None
+
+
+def salvage_lines(lines: list[tuple[int, str]], source: str) -> Salvage:
+    """Replay lines until the first that does not fit; never raises for a bad line."""
     if not lines:
-        raise JournalError(f"{source} is empty: it does not begin with a start event")
-    state: _Replay | None = None
+        return Salvage(None, 0, JournalError(f"{source} is empty: it does not begin with a start event"))
+    state: ReplayState | None = None
     last: Event | None = None
+    kept = 0
     for number, line in lines:
-        event = parse_event(line, f"{source} line {number}", first=state is None)
-        if state is None:
-            assert isinstance(event, StartEvent)
-            state = _Replay(_scene_of(event.scene, f"{source} line {number}"))
-        else:
-            try:
+        where = f"{source} line {number}"
+        try:
+            event = parse_event(line, where, first=state is None)
+            if state is None:
+                assert isinstance(event, StartEvent)
+                state = ReplayState(_scene_of(event.scene, where))
+            else:
                 state.apply(event)
-            except (JournalError, EditConflict, ValueError) as exc:
-                raise JournalError(f"{source} line {number}: {exc}") from exc
+        except JournalError as exc:
+            error = exc if str(exc).startswith(where) else JournalError(f"{where}: {exc}")
+            return Salvage(state.restored(last) if state else None, kept, error)
+        except (EditConflict, ValueError) as exc:
+            return Salvage(state.restored(last) if state else None, kept, JournalError(f"{where}: {exc}"))
         last = event
+        kept += 1
     assert state is not None
-    return Restored(state.scene, state.history, state.memory, last is not None and last.event == "end", len(lines))
+    return Salvage(state.restored(last), kept, None)
 
 
 def _scene_of(data: dict[str, Any], where: str) -> Scene:
@@ -213,13 +237,17 @@ def _scene_of(data: dict[str, Any], where: str) -> Scene:
         raise JournalError(f"{where}: the scene is not valid: {str(exc).splitlines()[0]}") from exc
 
 
-class _Replay:
+class ReplayState:
     """The state a replay builds, one event at a time, checking each against transaction ids."""
 
     def __init__(self, scene: Scene) -> None:
         self.scene = scene
         self.history = History()
         self.memory = Memory()
+
+    def restored(self, last: Event | None) -> Restored:
+        # Each event checks before it changes anything, so a refused one left no trace.
+        return Restored(self.scene, self.history, self.memory, isinstance(last, EndEvent))
 
     def apply(self, event: Event) -> None:
         if isinstance(event, StartEvent):

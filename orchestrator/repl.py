@@ -7,6 +7,7 @@ script (`--script FILE`), so a scripted demo exercises exactly what a user types
 from __future__ import annotations
 
 import json
+import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -14,7 +15,31 @@ from pathlib import Path
 from drivetwin.orchestrator.planning.llm.planner import format_trace
 from drivetwin.orchestrator.session import Session, SessionError, TurnReport
 from drivetwin.tools.registry import ToolRegistry
+from drivetwin.worlds.json_input import JsonInputError, read_text_file
 from drivetwin.worlds.scene import SceneFileError
+
+# A script is a few hundred lines of prompts; a bigger file is almost certainly the wrong one.
+MAX_SCRIPT_BYTES = 1024 * 1024
+# Control characters (ANSI escapes, C1 controls) and invisible direction overrides: echoed
+# raw they would recolour, move or rewrite the user's terminal. Newlines are kept.
+_UNSAFE_CHARS = re.compile(r"[\x00-\x09\x0b-\x1f\x7f-\x9f\u200b-\u200f\u202a-\u202e\u2066-\u2069]")
+
+
+def neutralised(text: str) -> str:
+    """`text` with every control character shown as a visible escape (ESC -> \\x1b)."""
+    return _UNSAFE_CHARS.sub(lambda m: m.group().encode("unicode_escape").decode("ascii"), text)
+
+
+class ScriptFileError(ValueError):
+    """A --script file that cannot be read: missing, not a regular file, too big, not UTF-8."""
+
+
+def read_script(path: Path) -> list[str]:
+    """The lines of a --script file; ScriptFileError says what is wrong with it."""
+    try:
+        return read_text_file(path, "script", MAX_SCRIPT_BYTES).splitlines()
+    except JsonInputError as exc:
+        raise ScriptFileError(str(exc)) from exc
 
 HELP = """\
 Type what you want changed, e.g.
@@ -41,6 +66,10 @@ class ChatOptions:
     echo: Callable[[str], None] = print
     render: Callable[[Session, Path], list[Path]] | None = None
     frames: list[Path] = field(default_factory=list)
+
+    def say(self, text: str) -> None:
+        """Echo `text` with control characters made visible (a prompt may hold ANSI escapes)."""
+        self.echo(neutralised(text))
 
 
 def scene_summary(session: Session) -> str:
@@ -85,7 +114,7 @@ def run_command(session: Session, line: str, options: ChatOptions) -> bool | Non
     """Run a REPL command; None if `line` is not a command, else whether it succeeded."""
     word, _, rest = line.strip().lstrip("/").partition(" ")
     word, rest = word.lower(), rest.strip()
-    echo = options.echo
+    echo = options.say
     try:
         if word == "undo":
             echo("\n".join(f"  {d}" for d in session.undo()) or "  undone")
@@ -135,11 +164,11 @@ def run_lines(session: Session, lines: Iterable[str], options: ChatOptions) -> i
             continue
         if line.strip().lower() in ("quit", "exit", "/quit", "/exit"):
             break
-        options.echo(f"> {line}")
+        options.say(f"> {line}")
         done = run_command(session, line, options)
         if done is None:
             report = session.submit(line)
-            options.echo(format_report(report, options.explain))
+            options.say(format_report(report, options.explain))
             done = report.ok
             if report.ok and options.render_each and options.render and options.out_dir:
                 step += 1
