@@ -165,12 +165,18 @@ def worlds() -> None:
 
 
 @worlds.command("list")
-def worlds_list() -> None:
-    """Show every world: shipped ones and those in $DRIVETWIN_WORLDS.
+@click.option("--json", "as_json", is_flag=True, help="print the worlds as JSON")
+def worlds_list(as_json: bool) -> None:
+    """Show every world: shipped, imported, reconstructed and those in $DRIVETWIN_WORLDS.
 
     Example: drivetwin worlds list
     """
-    for entry in list_worlds():
+    entries = list_worlds()
+    if as_json:
+        click.echo(json.dumps([{"name": e.name, "description": e.description, "path": str(e.path),
+                                "package": str(e.package) if e.package else None} for e in entries], indent=2))
+        return
+    for entry in entries:
         click.echo(f"{entry.name:16s} {entry.description}  ({entry.path})")
 
 
@@ -205,16 +211,23 @@ def backends() -> None:
 @backends.command("list")
 @click.option("--backend", default=None, help="mark this backend's row as the chosen one")
 @click.option("--model", default=None, help="mark this model's row as the chosen one")
-def backends_list(backend: str | None, model: str | None) -> None:
+@click.option("--json", "as_json", is_flag=True, help="print the rows as JSON")
+def backends_list(backend: str | None, model: str | None, as_json: bool) -> None:
     """Show each backend, whether it is usable now, and the command that fixes it if not.
 
     The row that flags, environment and config file select is marked with *.
 
     Example: drivetwin backends list
     """
-    from drivetwin.orchestrator.backends import backends_table
+    from dataclasses import asdict
 
-    click.echo(backends_table(_settings(backend=backend, model=model)))
+    from drivetwin.orchestrator.backends import backends_table, list_backends
+
+    settings = _settings(backend=backend, model=model)
+    if as_json:
+        click.echo(json.dumps([asdict(row) for row in list_backends(settings)], indent=2, default=str))
+        return
+    click.echo(backends_table(settings))
 
 
 @main.group()
@@ -248,26 +261,42 @@ def schema(what: str) -> None:
     click.echo(json.dumps(scene_json_schema(), indent=2))
 
 
-@main.command(context_settings={"ignore_unknown_options": True, "allow_extra_args": True})
-@click.argument("which", type=click.Choice(["edits", "physics", "splats", "hybrid", "planners", "roads"]))
-@click.pass_context
-def bench(ctx: click.Context, which: str) -> None:
-    """Run a benchmark; it prints figures and writes JSON (--out FILE).
+# Each benchmark is a module with its own argparse `main()`: the sub-command hands every
+# argument to it, --help included, so `drivetwin bench edits --help` shows the benchmark's options.
+BENCHMARKS: dict[str, tuple[str, str]] = {
+    "edits": ("drivetwin.orchestrator.bench_edits", "add/move/remove latency and physics rate by world size"),
+    "physics": ("drivetwin.worlds.bench_physics", "MuJoCo steps per second with N assets"),
+    "splats": ("drivetwin.worlds.render.bench_splats", "splat rasterizer frame times (numba, torch, gsplat)"),
+    "hybrid": ("drivetwin.worlds.render.bench_hybrid", "hybrid renderer stage table at 10k/100k/1M splats"),
+    "planners": ("drivetwin.orchestrator.bench_planners", "planner latency on the paper's prompts"),
+    "roads": ("drivetwin.worlds.opendrive.bench", "OpenDRIVE/OSM import time and lane accuracy"),
+}
 
-    Example: drivetwin bench edits --assets 200 --out bench_edits.json
-    """
-    import runpy
 
-    module = {
-        "edits": "drivetwin.orchestrator.bench_edits",
-        "physics": "drivetwin.worlds.bench_physics",
-        "splats": "drivetwin.worlds.render.bench_splats",
-        "hybrid": "drivetwin.worlds.render.bench_hybrid",
-        "planners": "drivetwin.orchestrator.bench_planners",
-        "roads": "drivetwin.worlds.opendrive.bench",
-    }[which]
-    sys.argv = [module, *ctx.args]
-    runpy.run_module(module, run_name="__main__")
+@main.group()
+def bench() -> None:
+    """Benchmarks: each prints figures and writes JSON (--out FILE); `bench NAME --help` lists its options."""
+
+
+def _benchmark_command(name: str, module: str, summary: str) -> click.Command:
+    @click.command(name=name, help=f"{summary}.\n\nExample: drivetwin bench {name} --out {name}.json",
+                   context_settings={"ignore_unknown_options": True, "allow_extra_args": True},
+                   add_help_option=False)
+    @click.pass_context
+    def run(ctx: click.Context) -> None:
+        import importlib
+
+        # argparse reads sys.argv when a benchmark's main() is called without arguments;
+        # argv[0] becomes the program name its --help shows.
+        sys.argv = [f"drivetwin bench {name}", *ctx.args]
+        result = importlib.import_module(module).main()
+        sys.exit(result if isinstance(result, int) else 0)
+
+    return run
+
+
+for _name, (_module, _summary) in BENCHMARKS.items():
+    bench.add_command(_benchmark_command(_name, _module, _summary))
 
 
 @main.group(name="eval")
@@ -341,8 +370,7 @@ def enhance(src_dir: Path, model: str, controlnet: str | None, out_dir: Path | N
     try:
         report = enhance_folder(src_dir, target, EnhanceSettings(model=model, controlnet=controlnet))
     except EnhancerError as exc:
-        click.echo(f"error: {exc}", err=True)
-        sys.exit(2)
+        raise click.ClickException(str(exc)) from exc
     click.echo(f"enhanced frames in {target}: {report}")
 
 
