@@ -1,9 +1,11 @@
 """The MuJoCo view of a Scene: Scene → MjSpec → model (static) and data (state).
 
-`MujocoWorld.from_scene` builds the spec; `update` diffs a new Scene against the one it was
-built from by asset id, patches only the bodies that changed and recompiles with the state
-kept, so everything else keeps moving. `consistency_problems` says whether a world still
-matches a scene (used by property tests of random edit sequences).
+`MujocoWorld.from_scene` builds the spec with a pool of body slots per slot shape
+(drivetwin.worlds.mujoco_pool); `update` diffs a new Scene against the one it was built
+from by asset id and activates, moves, restyles or parks only the slots that changed, in
+place. Only a pool's growth and a changed static world recompile (with the state kept), so
+everything else keeps moving. `consistency_problems` says whether a world still matches a
+scene (used by property tests of random edit sequences).
 """
 
 from __future__ import annotations
@@ -15,16 +17,8 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 import numpy.typing as npt
-from drivetwin.worlds.catalog import UnknownCategoryError, category
-from drivetwin.worlds.mujoco_bodies import (
-    WHEEL_CORNERS,
-    add_asset_body,
-    body_kind,
-    geom_size,
-    remove_asset_body,
-    set_body_frame,
-    yaw_quat,
-)
+from drivetwin.worlds.catalog import category
+from drivetwin.worlds.mujoco_pool import LOAD_HEADROOM_SHARE, BodyPool, slot_key
 from drivetwin.worlds.mujoco_static import (
     STATIC_PREFIXES,
     add_static_geoms,
@@ -38,16 +32,18 @@ __all__ = [
     "MujocoWorld",
     "UnknownBodyError",
     "UpdateStats",
+    "collision_groups",
     "consistency_problems",
 ]
 
 # Stable for 60 kg robots to 12 t buses on cylinder wheels with the implicit integrator,
 # and 200 steps per simulated second keep 200-asset worlds faster than real time on 2 cores.
 DEFAULT_TIMESTEP = 0.005
-# Relative tolerance for a body's total mass against the asset's (float32-free, so tight).
-MASS_TOLERANCE = 1e-6
-# Geom sizes are compared to the scaled parts to this many metres.
-SIZE_TOLERANCE_M = 1e-9
+# MuJoCo's default arena grows with dofs squared (531 MB at 3,000 dofs; no memory at
+# 30,000): size it by slot count instead. Measured peak use in drivetwin bench edits:
+# under 8 KiB per slot with every prop resting; 64 KiB leaves room for piles of contacts.
+ARENA_BYTES_PER_SLOT = 64 * 1024
+ARENA_MIN_BYTES = 64 * 1024 * 1024
 
 # Where a body's pose lives: the qpos of its free joint, its mocap slot, or its xpos.
 _FREE, _MOCAP, _WELDED = 0, 1, 2
@@ -90,6 +86,21 @@ def _only_pose_differs(old: AssetInstance, new: AssetInstance) -> bool:
     return all(getattr(old, f) == getattr(new, f) for f in _BODY_FIELDS if f != "pose")
 
 
+def _refresh_kinematics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
+    """Recompute every body's frame, static ones included (sleep caches those)."""
+    options = model.opt
+    flags = int(options.enableflags)
+    options.enableflags = flags & ~int(mujoco.mjtEnableBit.mjENBL_SLEEP)
+    try:
+        mujoco.mj_kinematics(model, data)
+    finally:
+        options.enableflags = flags
+
+
+def _arena_bytes(pool: BodyPool) -> int:
+    return max(ARENA_MIN_BYTES, ARENA_BYTES_PER_SLOT * len(pool.slots))
+
+
 def yaw_of_quat(quat: np.ndarray) -> float:
     """The heading (rotation about z) of a unit quaternion (w, x, y, z)."""
     w, x, y, z = (float(v) for v in quat)
@@ -104,14 +115,22 @@ class MujocoWorld:
     data: mujoco.MjData
     scene: Scene
 
-    def __init__(self, spec: mujoco.MjSpec, model: mujoco.MjModel, data: mujoco.MjData, scene: Scene) -> None:
+    def __init__(
+        self,
+        spec: mujoco.MjSpec,
+        model: mujoco.MjModel,
+        data: mujoco.MjData,
+        scene: Scene,
+        pool: BodyPool | None = None,
+    ) -> None:
         self.spec = spec
         self.model = model
         self.data = data
         self.scene = scene
+        # A world built by hand (tests, tools) has no pool: its bodies are found by name.
+        self.pool = pool if pool is not None else BodyPool(spec, scene.bounds.centre)
         # Bumped on every recompile: element ids change then, so cached ids must be redone.
         self.generation = 0
-        self._body_ids: dict[str, int] = {}
         self._pose_sources: dict[str, tuple[int, int]] = {}
 
     @classmethod
@@ -130,52 +149,67 @@ class MujocoWorld:
         spec.option.enableflags |= int(mujoco.mjtEnableBit.mjENBL_SLEEP)
         configure_spec(spec, scene)
         add_static_geoms(spec, scene)
-        for asset in scene.all_assets():
-            add_asset_body(spec, asset)
+        assets = scene.all_assets()
+        for asset in assets:
+            category(asset.category)  # an unknown category is refused before any work
+        pool = BodyPool(spec, scene.bounds.centre)
+        pool.reserve(assets, headroom=LOAD_HEADROOM_SHARE)
+        pool.prespawn_catalog()
+        spec.memory = _arena_bytes(pool)
         model = spec.compile()
         data = mujoco.MjData(model)
+        pool.bind(model)
+        for asset in assets:
+            pool.activate(asset, model, data)
+        # Welded slots were compiled parked: their cached frames must follow the activation.
+        _refresh_kinematics(model, data)
         mujoco.mj_forward(model, data)
-        return cls(spec, model, data, scene)
+        return cls(spec, model, data, scene, pool)
 
     # Editing ------------------------------------------------------------------------------
     def update(self, scene: Scene) -> UpdateStats:
         """Patch the world to match `scene`; unchanged assets keep their state (keep moving).
 
-        Added and changed assets start at their authored pose. A change of pose alone moves
-        the body in place (no rebuild); welded and mocap bodies then need no recompile.
-        Raises UnknownCategoryError, leaving the world untouched, for an unknown category.
+        Added and changed assets start at their authored pose, in a pooled slot: no
+        recompile unless a pool must grow or the static world changed. Raises
+        UnknownCategoryError, leaving the world untouched, for an unknown category.
         """
         started = time.perf_counter()
         old = {a.id: a for a in self.scene.all_assets()}
         new = {a.id: a for a in scene.all_assets()}
         removed = [i for i in old if i not in new]
         added = [i for i in new if i not in old]
-        changed = [i for i in new if i in old and _body_differs(old[i], new[i])]
+        # Unchanged assets are the same objects in both scenes (edits share them): skip fast.
+        changed = [i for i in new if i in old and old[i] is not new[i] and _body_differs(old[i], new[i])]
         moved = [i for i in changed if _only_pose_differs(old[i], new[i])]
-        replaced = [i for i in changed if i not in moved]
-        static_changed = static_signature(self.scene) != static_signature(scene)
-        for asset_id in replaced + added:
+        reshaped = [i for i in changed if i not in moved and slot_key(old[i]) != slot_key(new[i])]
+        restyled = [i for i in changed if i not in moved and i not in reshaped]
+        for asset_id in reshaped + added:
             category(new[asset_id].category)  # refuse unknown categories before any change
-        for asset_id in removed + replaced:
-            remove_asset_body(self.spec, asset_id)
-        for asset_id in replaced + added:
-            add_asset_body(self.spec, new[asset_id])
+        static_changed = static_signature(self.scene) != static_signature(scene)
+        for asset_id in removed + reshaped:
+            self.pool.release(asset_id, self.model, self.data)
+            self._pose_sources.pop(asset_id, None)
+        grew = self.pool.reserve([new[i] for i in reshaped + added])
         if static_changed:
             self._remove_static()
             add_static_geoms(self.spec, scene)
-        for asset_id in moved:
-            set_body_frame(self.spec.body(asset_id), new[asset_id].pose)
-        # Free bodies may be asleep; only a recompile wakes them reliably.
-        moved_free = [i for i in moved if body_kind(new[i]) in ("vehicle", "free")]
-        recompile = bool(removed or added or replaced or static_changed or moved_free)
+        recompile = grew or static_changed
         if recompile:
             self._recompile()
-        for asset_id in moved:
-            self._place(new[asset_id])
-        if moved:
+        model, data = self.model, self.data
+        for asset_id in reshaped + added:
+            self.pool.activate(new[asset_id], model, data)
+        for asset_id in restyled:
+            self.pool.restyle(new[asset_id], model)
+        for asset_id in moved + restyled:
+            slot = self.pool.slot_of(asset_id)
+            assert slot is not None
+            self.pool.place(slot, new[asset_id].pose, model, data)
+        if removed or changed or added:
             # Placing writes qpos/mocap/body_pos only: frames (xpos) must follow before anyone
-            # renders or ray-casts, with or without a recompile before it.
-            self._refresh_kinematics()
+            # renders or ray-casts.
+            _refresh_kinematics(model, data)
         self.scene = scene
         return UpdateStats(
             added=len(added),
@@ -186,38 +220,6 @@ class MujocoWorld:
             recompiled=recompile,
             ms=(time.perf_counter() - started) * 1000.0,
         )
-
-    def _refresh_kinematics(self) -> None:
-        """Recompute every body's frame, static ones included (sleep caches those)."""
-        options = self.model.opt
-        flags = int(options.enableflags)
-        options.enableflags = flags & ~int(mujoco.mjtEnableBit.mjENBL_SLEEP)
-        try:
-            mujoco.mj_kinematics(self.model, self.data)
-        finally:
-            options.enableflags = flags
-
-    def _place(self, asset: AssetInstance) -> None:
-        """Put an existing body at the asset's authored pose, at rest."""
-        body = self.body_id(asset.id)
-        model, data = self.model, self.data
-        pose = asset.pose
-        position = [pose.x, pose.y, pose.z]
-        quat = yaw_quat(pose.yaw)
-        joint = int(model.body_jntadr[body])
-        mocap = int(model.body_mocapid[body])
-        if joint >= 0 and model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_FREE:
-            start = int(model.jnt_qposadr[joint])
-            data.qpos[start : start + 3] = position
-            data.qpos[start + 3 : start + 7] = quat
-            dof, count = int(model.body_dofadr[body]), int(model.body_dofnum[body])
-            data.qvel[dof : dof + count] = 0.0
-        elif mocap >= 0:
-            data.mocap_pos[mocap] = position
-            data.mocap_quat[mocap] = quat
-        else:
-            model.body_pos[body] = position
-            model.body_quat[body] = quat
 
     def _remove_static(self) -> None:
         for geom in list(self.spec.worldbody.geoms):
@@ -231,23 +233,25 @@ class MujocoWorld:
                 self.spec.delete(field)
 
     def _recompile(self) -> None:
+        self.spec.memory = _arena_bytes(self.pool)
         model, data = self.spec.recompile(self.model, self.data)
         self.model, self.data = model, data
+        self.pool.bind(model)
         # Positions of new bodies are only known after kinematics; renderers read them.
         mujoco.mj_kinematics(self.model, self.data)
         self.generation += 1
-        self._body_ids.clear()
         self._pose_sources.clear()
 
     # Reading ------------------------------------------------------------------------------
     def body_id(self, asset_id: str) -> int:
-        """The MuJoCo body id of an asset (valid until the next recompile)."""
-        body = self._body_ids.get(asset_id)
-        if body is None:
-            body = int(mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, asset_id))
-            if body < 0:
-                raise UnknownBodyError(asset_id, [a.id for a in self.scene.all_assets()])
-            self._body_ids[asset_id] = body
+        """The MuJoCo body id of an asset (valid until the next recompile or edit of it)."""
+        slot = self.pool.slot_of(asset_id)
+        if slot is not None:
+            return slot.body_id
+        # Slot names hold a '#', which asset ids never do: this finds only hand-built bodies.
+        body = int(mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_BODY, asset_id))
+        if body < 0:
+            raise UnknownBodyError(asset_id, [a.id for a in self.scene.all_assets()])
         return body
 
     def body_pose(self, asset_id: str) -> Pose:
@@ -283,120 +287,23 @@ class MujocoWorld:
             return _MOCAP, int(model.body_mocapid[body])
         return _WELDED, body
 
+    def element_name(self, name: str) -> str:
+        """The model's name of an asset's element named `ASSET_ID/part` (its slot's)."""
+        asset_id, sep, rest = name.partition("/")
+        slot = self.pool.slot_of(asset_id) if sep else None
+        return f"{slot.name}/{rest}" if slot is not None else name
+
     def joint_id(self, name: str) -> int:
-        """The id of a joint by its full name, or -1."""
-        return int(mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, name))
+        """The id of a joint by its full name (`car_1/spin_fl`), or -1."""
+        return int(mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_JOINT, self.element_name(name)))
 
     def actuator_id(self, name: str) -> int:
-        """The id of an actuator by its full name, or -1."""
-        return int(mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, name))
+        """The id of an actuator by its full name (`car_1/drive_rl`), or -1."""
+        return int(mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_ACTUATOR, self.element_name(name)))
 
-
-def _expected_geoms(asset: AssetInstance) -> list[tuple[str, int, list[float] | None]]:
-    """(geom name, geom type, size) for every geom the asset's body tree should hold.
-
-    A packaged (reconstructed) asset holds one mesh geom per convex part; MuJoCo sizes
-    mesh geoms itself, so their size is not checked (None).
-    """
-    cat = category(asset.category)
-    if cat.package is not None:
-        from drivetwin.worlds.reconstruct.package import package_hulls
-
-        hulls = package_hulls(cat.package, asset.scale)
-        return [(f"{asset.id}/hull{k}", int(mujoco.mjtGeom.mjGEOM_MESH), None) for k in range(len(hulls))]
-    kind = body_kind(asset, cat)
-    expected: list[tuple[str, int, list[float] | None]] = []
-    index = 0
-    for part in cat.parts:
-        geom_type = int(
-            {
-                "box": mujoco.mjtGeom.mjGEOM_BOX,
-                "cylinder": mujoco.mjtGeom.mjGEOM_CYLINDER,
-                "sphere": mujoco.mjtGeom.mjGEOM_SPHERE,
-            }[part.shape]
-        )
-        if kind == "vehicle" and part.role == "wheel":
-            corner = ("f" if part.pos[0] > 0 else "r") + ("l" if part.pos[1] > 0 else "r")
-            name = f"{asset.id}/wheel_{corner}"
-        else:
-            name = f"{asset.id}/part{index}"
-            index += 1
-        expected.append((name, geom_type, geom_size(part, asset.scale)))
-    return expected
-
-
-def _joint_problems(world: MujocoWorld, asset: AssetInstance, body: int) -> list[str]:
-    model = world.model
-    kind = body_kind(asset)
-    own = [j for j in range(model.njnt) if model.jnt_bodyid[j] == body]
-    free = [j for j in own if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE]
-    is_mocap = model.body_mocapid[body] >= 0
-    problems: list[str] = []
-    if kind in ("vehicle", "free") and (len(free) != 1 or len(own) != 1):
-        problems.append(f"{asset.id}: expected one free joint, found {len(own)} joint(s)")
-    if kind in ("mocap", "welded") and own:
-        problems.append(f"{asset.id}: expected no joint ({kind}), found {len(own)}")
-    if is_mocap != (kind == "mocap"):
-        problems.append(f"{asset.id}: mocap is {is_mocap}, expected {kind == 'mocap'}")
-    if kind == "vehicle":
-        for corner in WHEEL_CORNERS:
-            if world.joint_id(f"{asset.id}/spin_{corner}") < 0:
-                problems.append(f"{asset.id}: missing wheel joint spin_{corner}")
-            actuator = f"{asset.id}/{'steer' if corner[0] == 'f' else 'drive'}_{corner}"
-            if world.actuator_id(actuator) < 0:
-                problems.append(f"{asset.id}: missing actuator {actuator}")
-    return problems
-
-
-def _asset_problems(world: MujocoWorld, asset: AssetInstance) -> list[str]:
-    model = world.model
-    body = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, asset.id)
-    if body < 0:
-        return [f"{asset.id}: no body in the MuJoCo world"]
-    if model.body_parentid[body] != 0:
-        return [f"{asset.id}: body is not a child of the world"]
-    try:
-        expected = _expected_geoms(asset)
-    except UnknownCategoryError as exc:
-        return [f"{asset.id}: {exc}"]
-    problems: list[str] = []
-    in_tree = {g for g in range(model.ngeom) if model.body_rootid[model.geom_bodyid[g]] == body}
-    if len(in_tree) != len(expected):
-        problems.append(f"{asset.id}: {len(in_tree)} geoms, expected {len(expected)}")
-    for name, geom_type, size in expected:
-        geom = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, name)
-        if geom < 0 or geom not in in_tree:
-            problems.append(f"{asset.id}: missing geom {name}")
-            continue
-        if model.geom_type[geom] != geom_type:
-            problems.append(f"{asset.id}: geom {name} has the wrong shape")
-        elif size is not None and not np.allclose(model.geom_size[geom], size, atol=SIZE_TOLERANCE_M):
-            problems.append(f"{asset.id}: geom {name} size {model.geom_size[geom]} != {size}")
-    mass = float(model.body_subtreemass[body])
-    if not math.isclose(mass, asset.physics.mass, rel_tol=MASS_TOLERANCE):
-        problems.append(f"{asset.id}: mass {mass:.6g} kg, expected {asset.physics.mass:g} kg")
-    return problems + _joint_problems(world, asset, body)
-
-
-def consistency_problems(scene: Scene, world: MujocoWorld) -> list[str]:
-    """Every way `world` fails to match `scene`; [] when each scene asset (ego included) has
-    exactly one body named by its id with the right geoms, joint kind and mass, and no body
-    exists for anything that is not in the scene."""
-    problems: list[str] = []
-    wanted = {a.id for a in scene.all_assets()}
-    model = world.model
-    top_level = [model.body(b).name for b in range(1, model.nbody) if model.body_parentid[b] == 0]
-    for name in top_level:
-        if name not in wanted:
-            problems.append(f"body {name!r} is not an asset of the scene")
-    seen: set[str] = set()
-    for name in top_level:
-        if name in seen:
-            problems.append(f"more than one body is named {name!r}")
-        seen.add(name)
-    for asset in scene.all_assets():
-        problems.extend(_asset_problems(world, asset))
-    return problems
+    def geom_id(self, name: str) -> int:
+        """The id of a geom by its full name (`cone_1/part0`, `building/hall`), or -1."""
+        return int(mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_GEOM, self.element_name(name)))
 
 
 def collision_groups(model: mujoco.MjModel) -> npt.NDArray[np.uint8]:
@@ -407,3 +314,7 @@ def collision_groups(model: mujoco.MjModel) -> npt.NDArray[np.uint8]:
         if 0 <= group < 6:
             groups[group] = 1
     return groups
+
+
+# Re-exported: the consistency check is part of the adapter's contract.
+from drivetwin.worlds.mujoco_consistency import consistency_problems  # noqa: E402

@@ -6,8 +6,9 @@ How an asset takes part in the physics follows its category's `motion`:
 - walker: a kinematic mocap body moved along its path by its behaviour (it still collides);
 - prop / static: a free body when `physics.dynamic`, otherwise welded to the world.
 A reconstructed (packaged) category collides as its convex parts, one mesh geom each.
-Element names derive from the asset id (`ID/wheel_fl`, `ID/drive_rl`, ...) so that state
-and controls can be found again after every recompile.
+Element names derive from the body's name (`NAME/wheel_fl`, `NAME/drive_rl`, ...) so that
+state and controls can be found again after every recompile; the MuJoCo adapter names
+bodies by pool slot and maps asset ids to them (drivetwin.worlds.mujoco_pool).
 """
 
 from __future__ import annotations
@@ -27,8 +28,8 @@ __all__ = [
     "body_kind",
     "geom_size",
     "hull_mesh_name",
+    "part_rgba",
     "part_volume",
-    "remove_asset_body",
     "set_body_frame",
     "wheel_corner",
     "yaw_quat",
@@ -104,9 +105,7 @@ def _add_part_geom(
     mass: float,
     pos: tuple[float, float, float],
 ) -> None:
-    rgba = part.rgba
-    if part.role == "body" and asset.appearance.rgba is not None:
-        rgba = asset.appearance.rgba
+    rgba = part_rgba(part, asset)
     quat = (1.0, 0.0, 0.0, 0.0)
     if part.shape == "cylinder" and part.axis == "y":
         quat = _Y_AXIS_QUAT
@@ -124,6 +123,13 @@ def _add_part_geom(
     )
 
 
+def part_rgba(part: Part, asset: AssetInstance) -> tuple[float, float, float, float]:
+    """The colour a part's geom shows: the asset's colour override on body parts, else the part's."""
+    if part.role == "body" and asset.appearance.rgba is not None:
+        return asset.appearance.rgba
+    return part.rgba
+
+
 def yaw_quat(yaw: float) -> list[float]:
     """The unit quaternion (w, x, y, z) of a rotation by `yaw` about z."""
     return [math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)]
@@ -139,21 +145,23 @@ def _scaled(pos: tuple[float, float, float], scale: float) -> tuple[float, float
     return (pos[0] * scale, pos[1] * scale, pos[2] * scale)
 
 
-def add_asset_body(spec: mujoco.MjSpec, asset: AssetInstance) -> mujoco.MjsBody:
-    """Add `asset` to `spec` as one top-level body named by its id, at its authored pose."""
+def add_asset_body(spec: mujoco.MjSpec, asset: AssetInstance, name: str | None = None) -> mujoco.MjsBody:
+    """Add `asset` to `spec` as one top-level body at its authored pose, named `name` (the
+    asset id by default); the names of its geoms, joints and actuators start with `name/`."""
     cat = category(asset.category)
     kind = body_kind(asset, cat)
     pose = asset.pose
+    name = name or asset.id
     body = spec.worldbody.add_body(
-        name=asset.id,
+        name=name,
         pos=[pose.x, pose.y, pose.z],
         quat=yaw_quat(pose.yaw),
         mocap=kind == "mocap",
     )
     if cat.package is not None:
-        _add_hull_geoms(spec, body, asset, cat.package)
+        _add_hull_geoms(spec, body, asset, cat.package, name)
         if kind == "free":
-            body.add_freejoint(name=f"{asset.id}/free")
+            body.add_freejoint(name=f"{name}/free")
         return body
     body_parts = [p for p in cat.parts if not (kind == "vehicle" and p.role == "wheel")]
     wheel_parts = [p for p in cat.parts if kind == "vehicle" and p.role == "wheel"]
@@ -164,20 +172,22 @@ def add_asset_body(spec: mujoco.MjSpec, asset: AssetInstance) -> mujoco.MjsBody:
     total = sum(volumes)
     for index, (part, volume) in enumerate(zip(body_parts, volumes, strict=True)):
         share = chassis_mass * volume / total
-        _add_part_geom(body, f"{asset.id}/part{index}", part, asset, share, _scaled(part.pos, asset.scale))
+        _add_part_geom(body, f"{name}/part{index}", part, asset, share, _scaled(part.pos, asset.scale))
     if kind in ("vehicle", "free"):
-        body.add_freejoint(name=f"{asset.id}/free")
+        body.add_freejoint(name=f"{name}/free")
     if kind == "vehicle":
-        _add_wheels(spec, body, asset, cat, wheel_parts, wheel_mass)
+        _add_wheels(spec, body, asset, cat, wheel_parts, wheel_mass, name)
     return body
 
 
-def hull_mesh_name(asset_id: str, index: int) -> str:
+def hull_mesh_name(body_name: str, index: int) -> str:
     """The spec mesh of a packaged asset's convex part (prefixed so static rebuilds skip it)."""
-    return f"{HULL_MESH_PREFIX}{asset_id}/hull{index}"
+    return f"{HULL_MESH_PREFIX}{body_name}/hull{index}"
 
 
-def _add_hull_geoms(spec: mujoco.MjSpec, body: mujoco.MjsBody, asset: AssetInstance, package: str) -> None:
+def _add_hull_geoms(
+    spec: mujoco.MjSpec, body: mujoco.MjsBody, asset: AssetInstance, package: str, name: str
+) -> None:
     """A reconstructed asset collides as its convex parts: one mesh geom per hull, the mass
     shared by hull volume (the splats, not these geoms, are what the renderer draws)."""
     from drivetwin.worlds.reconstruct.package import package_hulls
@@ -187,11 +197,11 @@ def _add_hull_geoms(spec: mujoco.MjSpec, body: mujoco.MjsBody, asset: AssetInsta
     total = sum(volumes)
     rgba = list(asset.appearance.rgba or category(asset.category).parts[0].rgba)
     for index, (vertices, volume) in enumerate(zip(hulls, volumes, strict=True)):
-        mesh = spec.add_mesh(name=hull_mesh_name(asset.id, index), uservert=vertices.reshape(-1).tolist())
+        mesh = spec.add_mesh(name=hull_mesh_name(name, index), uservert=vertices.reshape(-1).tolist())
         # The parts are convex already: inertia from the hull, no exact-volume pass needed.
         mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_CONVEX
         body.add_geom(
-            name=f"{asset.id}/hull{index}",
+            name=f"{name}/hull{index}",
             type=mujoco.mjtGeom.mjGEOM_MESH,
             meshname=mesh.name,
             rgba=rgba,
@@ -228,18 +238,19 @@ def _add_wheels(
     cat: Category,
     wheel_parts: list[Part],
     wheel_mass: float,
+    name: str,
 ) -> None:
     max_steer = cat.max_steer or 0.6
     drive_weight = asset.physics.mass * STANDARD_GRAVITY / 2.0
     for part in wheel_parts:
         corner = wheel_corner(part)
         dims = _WheelDims(part.size[0] * asset.scale, wheel_mass)
-        wheel = chassis.add_body(name=f"{asset.id}/wheel_{corner}", pos=list(_scaled(part.pos, asset.scale)))
+        wheel = chassis.add_body(name=f"{name}/wheel_{corner}", pos=list(_scaled(part.pos, asset.scale)))
         armature = WHEEL_ARMATURE_FACTOR * dims.spin_inertia
         steer_kp = STEER_KP_PER_KG * asset.physics.mass
         if corner.startswith("f"):
             wheel.add_joint(
-                name=f"{asset.id}/steer_{corner}",
+                name=f"{name}/steer_{corner}",
                 type=mujoco.mjtJoint.mjJNT_HINGE,
                 axis=[0.0, 0.0, 1.0],
                 range=[-max_steer, max_steer],
@@ -247,16 +258,16 @@ def _add_wheels(
                 armature=steer_kp / STEER_BANDWIDTH**2,
             )
         wheel.add_joint(
-            name=f"{asset.id}/spin_{corner}",
+            name=f"{name}/spin_{corner}",
             type=mujoco.mjtJoint.mjJNT_HINGE,
             axis=[0.0, 1.0, 0.0],
             armature=armature,
         )
-        _add_part_geom(wheel, f"{asset.id}/wheel_{corner}", part, asset, wheel_mass, (0.0, 0.0, 0.0))
+        _add_part_geom(wheel, f"{name}/wheel_{corner}", part, asset, wheel_mass, (0.0, 0.0, 0.0))
         if corner.startswith("f"):
             steer = spec.add_actuator(
-                name=f"{asset.id}/steer_{corner}",
-                target=f"{asset.id}/steer_{corner}",
+                name=f"{name}/steer_{corner}",
+                target=f"{name}/steer_{corner}",
                 trntype=mujoco.mjtTrn.mjTRN_JOINT,
             )
             steer.set_to_position(kp=steer_kp, dampratio=STEER_DAMPRATIO)
@@ -264,8 +275,8 @@ def _add_wheels(
             steer.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
         else:
             drive = spec.add_actuator(
-                name=f"{asset.id}/drive_{corner}",
-                target=f"{asset.id}/spin_{corner}",
+                name=f"{name}/drive_{corner}",
+                target=f"{name}/spin_{corner}",
                 trntype=mujoco.mjtTrn.mjTRN_JOINT,
             )
             # Force at the contact per unit speed error: m / (2 wheels · τ), as a joint gain.
@@ -274,20 +285,3 @@ def _add_wheels(
             torque = DRIVE_TORQUE_WEIGHT_FACTOR * drive_weight * dims.radius / 2.0
             drive.forcerange = [-torque, torque]
             drive.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
-
-
-def remove_asset_body(spec: mujoco.MjSpec, asset_id: str) -> bool:
-    """Delete the asset's body, its subtree and its actuators from `spec`; False if absent."""
-    body = spec.body(asset_id)
-    if body is None:
-        return False
-    prefix = f"{asset_id}/"
-    for actuator in list(spec.actuators):
-        if actuator.name.startswith(prefix):
-            spec.delete(actuator)
-    spec.delete(body)
-    hulls = f"{HULL_MESH_PREFIX}{asset_id}/"
-    for mesh in list(spec.meshes):
-        if mesh.name.startswith(hulls):
-            spec.delete(mesh)
-    return True
