@@ -1190,6 +1190,112 @@ case(L, "erroneous", "ego_paint_orange", "ego paint orange", painted("ego", colo
 case(L, "erroneous", "nigth", "make nigth time", sky(env(night=True)), [call("set_time_of_day", time="night")])
 case(L, "erroneous", "tornado", "set the wether to tornado", refused(), [call("set_weather", kind="tornado")], tags=IMPOSSIBLE)
 
+# More compound and multi-turn cases (two requests at once; references to earlier turns) --------
+case(A, "indirect", "bus_and_bench", "Could you add a bus at the bus stop, and a bench next to it?",
+     [accepted(), delta("bus", 1, 1), delta("bench", 1, 1), near("bus", "bus stop", 10.0), near("bench", "bus_1", 4.0),
+      only("bus", "bench")],
+     [call("add_asset", category="bus", location=at("at", "bus stop")),
+      call("add_asset", category="bench", location=at("next_to", "bus_1"))], tags=COMPOUND)
+case(A, "direct", "people_and_cyclist", "Add two pedestrians at the north crosswalk and a cyclist at the west crosswalk.",
+     [accepted(), delta("pedestrian", 2, 2), delta("bicycle", 1, 1), near("pedestrian", "north crosswalk", 8.0),
+      near("bicycle", "west crosswalk", 6.0), only("pedestrian", "bicycle")],
+     [call("add_asset", category="pedestrian", count=2, location=at("at", "north crosswalk")),
+      call("add_asset", category="bicycle", location=at("at", "west crosswalk"))], tags=COMPOUND)
+case(A, "erroneous", "tree_and_bench_fountain", "add tree at fountain and bench also there",
+     [accepted(), delta("tree", 1, 1), delta("bench", 1, 1), near(["tree", "bench"], "fountain", 10.0), only("tree", "bench")],
+     [call("add_asset", category="tree", location=at("at", "fountain")),
+      call("add_asset", category="bench", location=at("at", "fountain"))], tags=COMPOUND)
+case(A, "vague", "two_more_there", "put two more there",
+     [accepted(), delta("traffic_cone", 2, 2), count("traffic_cone", 3, 3), near("traffic_cone", (-50.0, -1.75), 6.0),
+      only("traffic_cone")],
+     [call("add_asset", category="traffic_cone", count=2, location=at("in_front_of", "ego", distance=10.0))],
+     setup=[turn("Put a cone 10 m in front of the ego.",
+                 call("add_asset", category="traffic_cone", location=at("in_front_of", "ego", distance=10.0)), planned=True)])
+case(R, "indirect", "trees_and_stop_sign", "Could you get rid of the trees and the stop sign?",
+     [accepted(), count("tree", 0, 0), gone("stop_sign_1"), only("tree", "stop_sign")],
+     [call("remove_assets", category="tree"), call("remove_assets", category="stop_sign")], tags=COMPOUND)
+case(R, "vague", "suv_becomes_bus", "swap the SUV for a bus, same spot",
+     [accepted(), gone("suv_1"), delta("bus", 1, 1), near("bus", (23.0, -42.0), 3.0), only("suv", "bus")],
+     [call("remove_assets", assets=["suv_1"]),
+      call("add_asset", category="bus", location=xy(23.0, -42.0), yaw_deg=90.0)], tags=COMPOUND)
+case(R, "indirect", "two_fewer_cones", "Actually, I'd like two fewer of those cones.",
+     [accepted(), delta("traffic_cone", -2, -2), only("traffic_cone")],
+     [call("remove_assets", category="traffic_cone", count=2)],
+     setup=[turn("Put five cones in a line in front of the library entrance.",
+                 call("arrange_assets", categories=["traffic_cone"], shape="line", count=5,
+                      location=at("in_front_of", "Library entrance")), planned=True)])
+case(P, "direct", "suv_lot_a_black", "Put the SUV in lot A and paint it black.",
+     [accepted(), near("suv_1", "parking lot A", 1.0), looks("suv_1", colour="black"), only(assets=("suv_1",))],
+     [call("place_asset", asset="suv_1", location=at("at", "parking lot A")),
+      call("set_asset_appearance", assets=["suv_1"], colour="black")], tags=COMPOUND)
+case(P, "indirect", "bench_and_bin_fountain", "Could you move the bench to the fountain and the trash bin next to it?",
+     [accepted(), near("bench_1", "fountain", 6.0), near("trash_bin_1", "fountain", 8.0),
+      only(assets=("bench_1", "trash_bin_1"))],
+     [call("place_asset", asset="bench_1", location=at("at", "fountain")),
+      call("place_asset", asset="trash_bin_1", location=at("next_to", "bench_1"))], tags=COMPOUND)
+case(P, "erroneous", "ego_east_gate_face_west", "put ego to east gate and make it face to west",
+     [accepted(), near("ego", "east gate", 10.0), moved("ego", turn_min_deg=150.0), only(assets=("ego",))],
+     [call("place_asset", asset="ego", location=at("at", "east gate"), yaw_deg=180.0)], tags=COMPOUND)
+case(P, "vague", "them_by_fountain", "now put them by the fountain",
+     [accepted(), delta("pedestrian", 0, 0), near("pedestrian", "fountain", 8.0), only("pedestrian")],
+     [call("place_asset", asset="pedestrian_1", location=at("at", "fountain"))],
+     setup=[turn("Add a pedestrian next to the bench.",
+                 call("add_asset", category="pedestrian", location=at("next_to", "bench_1")), planned=True)])
+case(M, "indirect", "back_and_slow", "Could you move the ego back 10 m and slow it down to 3 m/s?",
+     shifted("ego", moved("ego", min_distance=8.0, max_distance=12.0, direction="backward"),
+             does("ego", "drive_lane", speed_min=2.5, speed_max=3.5)),
+     [call("move_asset", asset="ego", forward=-10.0),
+      call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 3.0})],
+     tags=COMPOUND)
+case(M, "vague", "suv_circles_ego_faster", "SUV circling in lot B, and the ego a bit quicker",
+     [accepted(), does("suv_1", "circle"), does("ego", "drive_lane", speed_min=5.5), only(assets=("suv_1", "ego"))],
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B"}),
+      call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 7.0})],
+     tags=COMPOUND)
+case(M, "erroneous", "bench_turn_and_move", "turn bench around and move it 2 meter",
+     shifted("bench_1", moved("bench_1", min_distance=1.5, max_distance=2.5, turn_min_deg=170.0)),
+     [call("move_asset", asset="bench_1", forward=2.0, turn_deg=180.0)], tags=COMPOUND)
+case(M, "vague", "move_it_left", "move it a bit left",
+     [accepted(), moved("passenger_car_3", min_distance=0.3, max_distance=3.6, direction="left"), only("passenger_car")],
+     [call("move_asset", asset="passenger_car_3", left=1.0)],
+     setup=[turn("Add a car in lot A.", call("add_asset", category="passenger_car", location=at("at", "parking lot A")),
+                 planned=True)])
+case(G, "direct", "ring_and_barrier_line", "Put a ring of 8 cones around the intersection and a line of 3 barriers at the east gate.",
+     [accepted(), delta("traffic_cone", 8, 8), shape("traffic_cone", "ring", 8, around="main intersection"),
+      delta("road_barrier", 3, 3), shape("road_barrier", "line", 3), near("road_barrier", "east gate", 6.0),
+      only("traffic_cone", "road_barrier")],
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=8, location=at("at", "main intersection")),
+      call("arrange_assets", categories=["road_barrier"], shape="line", count=3, location=at("at", "east gate"))],
+     tags=COMPOUND)
+case(G, "erroneous", "trees_line_bollards_ring", "line of 4 tree at fountain and 4 bollard around hydrant",
+     [accepted(), shape("tree", "line", 4), near("tree", "fountain", 10.0), shape("bollard", "ring", 4, around="fire_hydrant_1"),
+      delta("tree", 4, 4), delta("bollard", 4, 4), only("tree", "bollard")],
+     [call("arrange_assets", categories=["tree"], shape="line", count=4, location=at("at", "fountain")),
+      call("arrange_assets", categories=["bollard"], shape="ring", count=4, location=at("at", "fire_hydrant_1"))],
+     tags=COMPOUND)
+case(L, "vague", "rainy_night", "rainy night", sky(env(weather=["rain"], night=True)),
+     [call("set_weather", kind="rain"), call("set_time_of_day", time="night")], tags=COMPOUND)
+case(L, "erroneous", "snow_and_blue_bench", "make it snow and paint the bench blue",
+     [accepted(), env(weather=["snow"]), looks("bench_1", colour="blue"), only(assets=("bench_1",), environment=True)],
+     [call("set_weather", kind="snow"), call("set_asset_appearance", assets=["bench_1"], colour="blue")], tags=COMPOUND)
+case(L, "indirect", "foggy_six_am", "I'd like foggy weather at 6 in the morning.",
+     sky(env(weather=["fog"], time_from="05:45", time_to="06:15")),
+     [call("set_weather", kind="fog"), call("set_time_of_day", time="06:00")], tags=COMPOUND)
+case(L, "indirect", "paint_it_yellow", "Could you paint it yellow?",
+     [accepted(), looks("bus", colour="yellow"), only("bus")],
+     [call("set_asset_appearance", assets=["bus_1"], colour="yellow")],
+     setup=[turn("Add a bus at the bus stop.", call("add_asset", category="bus", location=at("at", "bus stop")), planned=True)])
+case(S, "vague", "trees_and_benches", "trees and benches, how many of each?",
+     question(says(*FOUR), says("1", "one")),
+     [call("find_assets", category="tree"), call("find_assets", category="bench")], tags=COMPOUND)
+case(S, "direct", "bus_stop_and_fountain", "Where are the bus stop and the fountain?",
+     question(says(all_of=("-30", "75"))),
+     [call("find_landmarks", query="bus stop"), call("find_landmarks", query="fountain")], tags=COMPOUND)
+case(S, "indirect", "bikes_now", "How many bikes are there now, could you check?",
+     question(says("3", "three")), [call("find_assets", category="bicycle")],
+     setup=[turn("Add three bicycles at the bus stop.",
+                 call("add_asset", category="bicycle", count=3, location=at("at", "bus stop")), planned=True)])
+
 def write(path: Path = OUT) -> int:
     """Write the cases as JSON Lines; returns how many."""
     lines = [json.dumps(c, separators=(",", ":")) for c in CASES]
