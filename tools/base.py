@@ -1,15 +1,17 @@
 """The Worker tool contract: a name, a description, an argument model, a check and an apply.
 
-A tool never edits a Scene itself: `propose` computes the WorldEdit it would make, `check`
-runs the placement rules on it without applying anything, and `apply` returns the checked
-edit with a short result text. The transaction applies edits; nothing else does.
+A tool never edits a Scene itself: `propose` computes the WorldEdit it would make, and it is
+the only method a Worker implements. The host (the registry, inside a transaction) applies the
+world rules to every proposal itself: `check` and `apply` are host methods that a subclass
+may not override (a plugin that does is reported, and its override is never called).
+The transaction applies edits; nothing else does.
 """
 
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
-from typing import Annotated, Any, ClassVar, Generic, Literal, TypeVar
+from typing import Annotated, Any, ClassVar, Generic, Literal, TypeVar, final
 
 from drivetwin.tools.errors import ToolArgumentError
 from drivetwin.tools.rules import check_edit
@@ -86,16 +88,19 @@ class Tool(ABC, Generic[ArgsT]):
     def propose(self, args: ArgsT, scene: Scene) -> ToolResult:
         """The edit this call would make to `scene`, without checking placement rules."""
 
+    @final
     def check(self, args: ArgsT, scene: Scene) -> None:
         """Raise a ToolError if the call cannot be applied to `scene`; change nothing."""
         self.apply(args, scene)
 
+    @final
     def apply(self, args: ArgsT, scene: Scene) -> ToolResult:
         """The checked edit and result text; raises a ToolError and changes nothing on refusal."""
         result = self.propose(args, scene)
         check_edit(scene, result.edit)
         return result
 
+    @final
     def parse(self, raw: dict[str, Any]) -> ArgsT:
         """Validate raw arguments against the tool's model."""
         try:
@@ -111,3 +116,11 @@ class Tool(ABC, Generic[ArgsT]):
             "family": self.family,
             "parameters": self.Args.model_json_schema(),
         }
+
+
+HOST_METHODS = ("check", "apply", "parse")
+
+
+def overridden_host_methods(tool: Tool[Any]) -> list[str]:
+    """The host methods a Worker's class overrides (the host never calls those overrides)."""
+    return [name for name in HOST_METHODS if getattr(type(tool), name, None) is not getattr(Tool, name)]

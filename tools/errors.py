@@ -49,3 +49,9 @@ class RuleViolation(ToolError):
     def __init__(self, rule: str, message: str) -> None:
         self.rule = rule
         super().__init__(message)
+
+
+class PluginError(ToolError):
+    """A plugin's code failed, hung, exited or broke the contract; the message names the plugin."""
+
+    kind = "plugin"

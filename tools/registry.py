@@ -1,7 +1,11 @@
 """The Worker registry: built-in tools plus plugins found through the `drivetwin.tools` entry points.
 
 A plugin's entry point names a Tool subclass (or an instance, or a function returning a list
-of them). A plugin that fails to import or to build is reported and skipped, never fatal.
+of them). A plugin that fails to import or to build (it raises, calls sys.exit or hangs) is
+reported and skipped, never fatal. Plugin Workers run boxed (drivetwin.tools.plugin_box): a
+deadline on every call, a copy of the scene, and the world rules applied by the registry to
+whatever they propose; with `isolate` they run in a separate process
+(drivetwin.tools.plugin_process), so even os._exit or a segfault is only a refusal.
 """
 
 from __future__ import annotations
@@ -9,17 +13,20 @@ from __future__ import annotations
 import difflib
 from collections.abc import Iterable
 from dataclasses import dataclass
-from importlib.metadata import entry_points
+from functools import partial
+from importlib.metadata import EntryPoint, entry_points
 from typing import Any
 
 from drivetwin.tools.add import AddAssetTool
 from drivetwin.tools.appearance import SetAssetAppearance, SetLighting, SetTimeOfDay, SetWeather
 from drivetwin.tools.arrange import ArrangeAssets
-from drivetwin.tools.base import FAMILIES, Family, Tool, ToolCall, ToolResult
-from drivetwin.tools.errors import ToolError, UnknownToolError
+from drivetwin.tools.base import FAMILIES, Family, Tool, ToolCall, ToolResult, overridden_host_methods
+from drivetwin.tools.errors import PluginError, ToolError, UnknownToolError
 from drivetwin.tools.move import MoveAsset, SetBehaviour
+from drivetwin.tools.plugin_box import CALL_DEADLINE_S, IMPORT_DEADLINE_S, propose_boxed, run_boxed
 from drivetwin.tools.position import PlaceAsset
 from drivetwin.tools.remove import RemoveAssets
+from drivetwin.tools.rules import check_edit
 from drivetwin.tools.scenario import AddEvent, AddManoeuvre, SetLightPhases
 from drivetwin.tools.search import AssetProperties, FindAssets, FindLandmarks, FindLanes
 from drivetwin.worlds.catalog import UnknownCategoryError
@@ -61,12 +68,19 @@ class ToolRegistry:
             self.register(tool)
 
     @classmethod
-    def default(cls, plugins: bool = True) -> ToolRegistry:
-        """The built-in tools, plus installed plugins unless `plugins` is False."""
+    def default(cls, plugins: bool = True, isolate: bool = False) -> ToolRegistry:
+        """The built-in tools, plus installed plugins unless `plugins` is False.
+
+        With `isolate`, plugins are imported and run in a separate process.
+        """
         registry = cls(builtin_tools())
         for name in registry._tools:
             registry.sources[name] = "built-in"
-        if plugins:
+        if plugins and isolate:
+            from drivetwin.tools.plugin_process import load_isolated_plugins
+
+            load_isolated_plugins(registry)
+        elif plugins:
             registry.load_plugins()
         return registry
 
@@ -76,18 +90,25 @@ class ToolRegistry:
             raise ValueError(f"a tool named {tool.name!r} is already registered")
         self._tools[tool.name] = tool
         self.sources[tool.name] = source
+        overrides = overridden_host_methods(tool)
+        if overrides:
+            self.problems.append(PluginProblem(
+                f"{tool.name} ({source})",
+                f"overrides {', '.join(overrides)}, which only the host runs; the override is ignored",
+            ))
 
     def load_plugins(self) -> None:
         """Register every tool the `drivetwin.tools` entry points provide; report failures."""
         for ep in entry_points(group=ENTRY_POINT_GROUP):
+            where = f"{ep.name} = {ep.value}"
             try:
-                loaded = ep.load()
-                made = loaded() if callable(loaded) else loaded
-                tools = made if isinstance(made, list | tuple) else [made]
+                tools = run_boxed(partial(_load_entry_point, ep), f"plugin {where}", IMPORT_DEADLINE_S)
                 for tool in tools:
                     self.register(tool, source=f"plugin {ep.value}")
-            except Exception as exc:  # a broken plugin must never take the session down
-                self.problems.append(PluginProblem(f"{ep.name} = {ep.value}", f"{type(exc).__name__}: {exc}"))
+            except PluginError as exc:  # a broken plugin must never take the session down
+                self.problems.append(PluginProblem(where, str(exc).removeprefix(f"plugin {where} ")))
+            except Exception as exc:
+                self.problems.append(PluginProblem(where, f"{type(exc).__name__}: {exc}"))
 
     # Queries ---------------------------------------------------------------------------
     def names(self) -> list[str]:
@@ -120,11 +141,22 @@ class ToolRegistry:
         self.run(call, scene)
 
     def run(self, call: ToolCall, scene: Scene) -> ToolResult:
-        """Validate and apply one call against `scene` (which is not changed)."""
+        """Validate one call, let its Worker propose an edit, and check that against the world rules.
+
+        `scene` is not changed. Plugin Workers are boxed: a copy of the scene, a deadline,
+        and every failure a PluginError naming the plugin.
+        """
         tool = self.get(call.tool)
-        args = tool.parse(call.args)
+        source = self.sources.get(call.tool, "built-in")
         try:
-            return tool.apply(args, scene)
+            if source == "built-in":
+                result = tool.propose(Tool.parse(tool, call.args), scene)
+            else:
+                who = f"{source} ({call.tool})"
+                args = run_boxed(lambda: Tool.parse(tool, call.args), who, CALL_DEADLINE_S)
+                result = propose_boxed(tool, args, scene, who, CALL_DEADLINE_S)
+            check_edit(scene, result.edit)  # the world rules, applied by the host to every proposal
+            return result
         except ToolError:
             raise
         except UnknownCategoryError as exc:
@@ -140,3 +172,13 @@ def _validate_tool(tool: Tool[Any]) -> None:
             raise TypeError(f"{type(tool).__name__} is not a Worker tool: it has no {attr!r}")
     if tool.family not in FAMILIES:
         raise TypeError(f"tool {tool.name!r} has unknown family {tool.family!r}; allowed: {FAMILIES}")
+
+
+def _load_entry_point(ep: EntryPoint) -> list[Tool[Any]]:
+    return plugin_tools(ep.load())
+
+
+def plugin_tools(loaded: object) -> list[Tool[Any]]:
+    """The Workers an entry point's object provides: a Tool class or instance, or a factory of them."""
+    made = loaded() if callable(loaded) else loaded
+    return list(made) if isinstance(made, list | tuple) else [made]  # type: ignore[list-item]
