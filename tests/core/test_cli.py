@@ -35,14 +35,14 @@ def test_explain_shows_each_level_with_its_input_output_and_time(tmp_path: Path)
 
 def test_fail_fast_stops_at_a_refused_prompt_with_a_non_zero_status(tmp_path: Path) -> None:
     code, output = chat(tmp_path, ["add 500 traffic cones inside the library", "make it rain"], "--fail-fast")
-    assert code != 0
+    assert code == 1
     assert "error:" in output
     assert "weather clear -> rain" not in output
 
 
 def test_an_unknown_world_is_one_clear_line_naming_the_known_ones(tmp_path: Path) -> None:
     code, output = chat(tmp_path, ["make it rain"], "--world", "atlantis")
-    assert code != 0
+    assert code == 1
     assert "unknown world 'atlantis'; known worlds: campus" in output
     assert "Traceback" not in output
 

@@ -42,7 +42,7 @@ def test_chat_with_missing_enhancer_weights_stops_with_one_clear_line(tmp_path: 
     missing = tmp_path / "no-sdxl-here"
     result = CliRunner().invoke(main, ["chat", "--planner", "rules", "--no-sim", "--script", str(script),
                                        "--journal", str(tmp_path / "j.jsonl"), "--enhance", str(missing)])
-    assert result.exit_code != 0
+    assert result.exit_code == 1
     assert "Traceback" not in result.output
     assert str(missing) in result.output
     assert not (tmp_path / "j.jsonl").exists() or "rain" not in (tmp_path / "j.jsonl").read_text()

@@ -65,6 +65,7 @@ def test_npz_with_points_and_colors_is_read(tmp_path: Path) -> None:
     cloud = read_point_cloud(tmp_path / "a.npz")
     np.testing.assert_allclose(cloud.points, POINTS)
     assert cloud.colors is not None
+    np.testing.assert_allclose(cloud.colors, COLORS)
 
 
 def test_a_missing_file_is_named(tmp_path: Path) -> None:
