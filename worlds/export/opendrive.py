@@ -8,6 +8,7 @@ lanes. Sidewalks are roads with one sidewalk lane. The road's name is the lane's
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from pathlib import Path
@@ -23,7 +24,7 @@ def _road(road_id: int, name: str, polyline: Sequence[tuple[float, float]], widt
 
     planview = xodr.PlanView()
     travelled, stations = 0.0, [0.0]
-    for (x1, y1), (x2, y2) in zip(polyline, polyline[1:], strict=False):
+    for (x1, y1), (x2, y2) in itertools.pairwise(polyline):
         length = math.hypot(x2 - x1, y2 - y1)
         if length <= 0.0:
             continue
@@ -39,7 +40,7 @@ def _road(road_id: int, name: str, polyline: Sequence[tuple[float, float]], widt
     lanes.add_laneoffset(xodr.LaneOffset(0.0, width / 2, 0.0, 0.0, 0.0))
     road = xodr.Road(road_id, planview, lanes, name=name)
     if elevation is not None:
-        kept = [z for (a, b), z in zip(zip(polyline, polyline[1:], strict=False), elevation, strict=False)
+        kept = [z for (a, b), z in zip(itertools.pairwise(polyline), elevation, strict=False)
                 if math.hypot(b[0] - a[0], b[1] - a[1]) > 0.0]
         heights = [*kept, elevation[-1]]
         for k in range(len(stations) - 1):

@@ -8,7 +8,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-
 from drivetwin.worlds.opendrive.reader import RoadMap
 from drivetwin.worlds.scene import Building, Landmark, RoadNetwork
 

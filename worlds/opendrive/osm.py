@@ -11,10 +11,9 @@ import os
 import subprocess
 from pathlib import Path
 
-from lxml import etree
-
 from drivetwin.worlds.opendrive.landmarks import MapPlace
 from drivetwin.worlds.opendrive.world import MapBuilding
+from lxml import etree
 
 __all__ = ["OsmConversionError", "osm_to_opendrive", "read_osm_places"]
 

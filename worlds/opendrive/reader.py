@@ -241,9 +241,9 @@ def _props_of(road: Any) -> Iterable[MapProp]:
             continue
         yield _prop(road, signal, category, facing_back=signal.attrib.get("orientation") != "-")
     for obj in road.road_xml.findall("objects/object"):
-        category = OBJECT_CATEGORIES.get(str(obj.attrib.get("type", "")).lower())
-        if category is not None:
-            yield _prop(road, obj, category, facing_back=False)
+        object_category = OBJECT_CATEGORIES.get(str(obj.attrib.get("type", "")).lower())
+        if object_category is not None:
+            yield _prop(road, obj, object_category, facing_back=False)
 
 
 def _prop(road: Any, element: Any, category: str, facing_back: bool) -> MapProp:

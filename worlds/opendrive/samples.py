@@ -62,14 +62,11 @@ def _last_line_to_poly3(path: Path) -> None:
     tree.write(str(path), xml_declaration=True, encoding="UTF-8")
 
 
-def crossroads(path: str | Path, origin: tuple[float, float] = (0.0, 0.0), first_id: int = 1,
-               junction_id: int = 100, odr: object | None = None) -> Path:
+def crossroads(path: str | Path, first_id: int = 1, junction_id: int = 100) -> Path:
     """Write a four-way junction of Main Street (east-west) and Oak Avenue (north-south)."""
     from scenariogeneration import xodr
 
-    own = odr is None
-    drive = xodr.OpenDrive("crossroads") if odr is None else odr
-    assert isinstance(drive, xodr.OpenDrive)
+    drive = xodr.OpenDrive("crossroads")
     creator = xodr.CommonJunctionCreator(junction_id, "", startnum=first_id + 100)
     arms = [("Main Street", 0.0), ("Oak Avenue", math.pi / 2), ("Main Street", math.pi), ("Oak Avenue", -math.pi / 2)]
     radius = 12.0
@@ -78,7 +75,7 @@ def crossroads(path: str | Path, origin: tuple[float, float] = (0.0, 0.0), first
                                 lane_width=LANE_WIDTH_M)
         road.name = name
         creator.add_incoming_road_cartesian_geometry(
-            road, origin[0] + radius * math.cos(angle), origin[1] + radius * math.sin(angle),
+            road, radius * math.cos(angle), radius * math.sin(angle),
             angle + math.pi, "predecessor")
         drive.add_road(road)
     for a in range(4):
@@ -86,10 +83,9 @@ def crossroads(path: str | Path, origin: tuple[float, float] = (0.0, 0.0), first
             creator.add_connection(first_id + a, first_id + b)
     drive.add_junction_creator(creator)
     target = Path(path)
-    if own:
-        drive.adjust_roads_and_lanes()
-        drive.write_xml(str(target))
-        _add_furniture(target, str(first_id))
+    drive.adjust_roads_and_lanes()
+    drive.write_xml(str(target))
+    _add_furniture(target, str(first_id))
     return target
 
 
@@ -114,16 +110,26 @@ def _add_furniture(path: Path, road_id: str) -> None:
 
 
 def grid_town(path: str | Path, size: int) -> Path:
-    """`size` x `size` separate crossroads 200 m apart (a few km² at size 10)."""
-    from scenariogeneration import xodr
-
-    drive = xodr.OpenDrive("grid_town")
+    """`size` x `size` separate crossroads 200 m apart (a few km² at size 10), in one file."""
+    target = Path(path)
     pitch = 2 * (ARM_LENGTH_M + 20.0)
+    merged: etree._ElementTree | None = None
     for i in range(size):
         for j in range(size):
             k = i * size + j
-            crossroads(path, (i * pitch, j * pitch), first_id=1 + 1000 * k, junction_id=100000 + k, odr=drive)
-    drive.adjust_roads_and_lanes()
-    target = Path(path)
-    drive.write_xml(str(target))
+            part = target.with_name(f".{target.stem}_{k}.xodr")
+            crossroads(part, first_id=1 + 1000 * k, junction_id=100000 + k)
+            tree = etree.parse(str(part))
+            part.unlink()
+            for geometry in tree.getroot().iter("geometry"):  # the junction creator ignores the origin
+                geometry.set("x", repr(float(geometry.get("x", 0)) + i * pitch))
+                geometry.set("y", repr(float(geometry.get("y", 0)) + j * pitch))
+            if merged is None:
+                merged = tree
+            else:
+                root = merged.getroot()
+                for element in tree.getroot().findall("road") + tree.getroot().findall("junction"):
+                    root.append(element)
+    assert merged is not None
+    merged.write(str(target), xml_declaration=True, encoding="UTF-8")
     return target

@@ -7,14 +7,13 @@ origin is shifted so its centre is the world origin.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from shapely import LineString, MultiPoint
-
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.opendrive.landmarks import MapPlace, place_landmarks
 from drivetwin.worlds.opendrive.reader import MapLane, RoadMap
@@ -34,6 +33,7 @@ from drivetwin.worlds.scene import (
     Scene,
     Sidewalk,
 )
+from shapely import LineString, MultiPoint
 
 __all__ = ["MapBuilding", "scene_from_map"]
 
@@ -123,7 +123,7 @@ def _lane(lane: MapLane, ids: dict[tuple[str, int, int], str], origin: np.ndarra
     kind = lane.kind if lane.kind in ("driving", "shoulder", "border", "parking") else "driving"
     return Lane(id=ids[lane.key], road=lane.road_name or (f"junction {lane.junction}" if lane.junction else "road"),
                 centreline=xy, width=lane.width, speed_limit=lane.speed_limit or DEFAULT_SPEED_M_S,
-                kind=kind,  # type: ignore[arg-type]  # checked just above
+                kind=kind,
                 elevation=z if max(abs(v) for v in z) > FLAT_M else None,
                 successors=[ids[s] for s in lane.successors if s in ids])
 
@@ -175,6 +175,6 @@ def _ego(lanes: list[Lane]) -> AssetInstance:
 
 def _stations(polyline: Sequence[tuple[float, float]]) -> list[float]:
     out = [0.0]
-    for (x1, y1), (x2, y2) in zip(polyline, polyline[1:], strict=False):
+    for (x1, y1), (x2, y2) in itertools.pairwise(polyline):
         out.append(out[-1] + math.hypot(x2 - x1, y2 - y1))
     return out
