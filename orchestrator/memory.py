@@ -10,7 +10,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-TurnStatus = Literal["applied", "failed", "undone", "rejected", "accepted", "answered"]
+TurnStatus = Literal["applied", "failed", "undone", "rejected", "accepted", "answered", "asked"]
 DEFAULT_BUDGET_CHARS = 2400
 
 

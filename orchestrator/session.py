@@ -15,7 +15,8 @@ from pathlib import Path
 
 from drivetwin.orchestrator.journal import Entry, EventKind, History, Journal, JournalError, JournalWriteError
 from drivetwin.orchestrator.memory import Memory, Turn
-from drivetwin.orchestrator.planning import MAX_PROMPT_CHARS, Plan, PlanContext, Planner, PlanningError
+from drivetwin.orchestrator.planning import MAX_PROMPT_CHARS, Plan, PlanContext, Planner, PlanningError, Question
+from drivetwin.orchestrator.planning.check import review
 from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.edits import EditConflict, WorldEdit
@@ -38,6 +39,9 @@ class TurnReport:
     error: str | None = None
     seconds: float = 0.0
     answer: str | None = None
+    # Set when the plan did not account for the request: nothing was applied; the person
+    # picks a numbered reading (`Session.choose`) or rephrases.
+    question: Question | None = None
 
 
 class Session:
@@ -56,6 +60,8 @@ class Session:
         self.registry = registry or ToolRegistry.default()
         self.history = History()
         self.memory = Memory()
+        # The prompt and question of a turn that asked, until a reading is chosen or a new prompt comes.
+        self.pending: tuple[str, Question] | None = None
         self.on_change = on_change
         self.journal = Journal(journal_path) if journal_path else None
         if self.journal is not None:
@@ -129,10 +135,20 @@ class Session:
                 f"the prompt is {len(text)} characters; at most {MAX_PROMPT_CHARS} are accepted",
                 started,
             )
+        self.pending = None  # a new prompt instead of a number drops an open question
         try:
             plan = self.planner.plan(text, self.context())
         except PlanningError as exc:
             return self._failed(text, str(exc), started)
+        verdict = review(text, plan, self.context())
+        if verdict.action == "refuse":
+            return self._failed(text, verdict.message or "; ".join(verdict.problems), started, plan)
+        if verdict.question is not None:
+            return self._ask(text, plan, verdict.question, started)
+        return self._run(text, plan, started)
+
+    def _run(self, text: str, plan: Plan, started: float) -> TurnReport:
+        """Apply a plan's calls as one transaction (or answer, when they change nothing)."""
         try:
             outcome = execute(self.registry, self._scene, plan.calls)
         except TransactionError as exc:
@@ -151,6 +167,24 @@ class Session:
             text, True, plan, results, outcome.edit.summary(), None,
             time.perf_counter() - started, plan.answer,
         )
+
+    def _ask(self, prompt: str, plan: Plan, question: Question, started: float) -> TurnReport:
+        self.pending = (prompt, question)
+        turn = Turn(prompt=prompt[:500], status="asked", results=[question.text[:300]])
+        self.memory.record(turn)
+        self._note(turn)
+        return TurnReport(prompt, False, plan, [], [], None, time.perf_counter() - started, None, question)
+
+    def choose(self, number: int) -> TurnReport:
+        """Apply reading `number` (from 1) of the open question as the asked prompt's transaction."""
+        if self.pending is None:
+            raise SessionError("there is no open question to answer; type a request")
+        prompt, question = self.pending
+        if not 1 <= number <= len(question.readings):
+            raise SessionError(f"choose a reading from 1 to {len(question.readings)}, or rephrase")
+        self.pending = None
+        reading = question.readings[number - 1]
+        return self._run(prompt, Plan(calls=list(reading.calls), planner="chosen", answer=None), time.perf_counter())
 
     def _failed(self, prompt: str, error: str, started: float, plan: Plan | None = None) -> TurnReport:
         turn = Turn(prompt=prompt[:500], status="failed", results=[error[:300]])

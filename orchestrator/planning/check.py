@@ -1,0 +1,335 @@
+"""The plan-versus-request check: before a plan is applied, does it do what the words say?
+
+A planner can turn "I no longer want the bus" into an added bus, or "remove the parked cars"
+into removing a driving one too, with full confidence. The check reads a few general signals
+from the request (polarity, the categories and descriptions it names, its numbers, the place
+and scope it names, whether it is a question) and compares them with what a dry run of the
+plan actually does. A plan that accounts for all of them is applied; otherwise the session
+asks one short question offering the readings that do fit (repaired ones built here, and the
+planner's alternatives), and when none fits it refuses, saying first what it did not
+understand and what it can do.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections import Counter
+from dataclasses import dataclass, field
+from functools import cache
+from typing import Any, Literal
+
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
+from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
+from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.numbers import numbers_in
+from drivetwin.orchestrator.planning.rules.reading import find_lane, find_place
+from drivetwin.orchestrator.planning.rules.spelling import repair
+from drivetwin.orchestrator.transaction import TransactionError, execute
+from drivetwin.tools.base import ToolCall
+from drivetwin.tools.errors import ToolError
+from drivetwin.tools.locate import resolve_target
+from drivetwin.worlds.catalog import catalog, placeable_categories
+from drivetwin.worlds.scene import AssetInstance, Scene
+
+Action = Literal["apply", "ask", "refuse"]
+# Metres from a named place within which an edit counts as "at" it (a parking lot or a building
+# front is tens of metres across; the campus's places are 60 m or more apart).
+PLACE_RADIUS_M = 30.0
+# A description grounds to a category only when MiniLM is at least this sure and the plan's
+# category scores at least this much less (a plain synonym scores 1.0 and is read directly).
+DESCRIPTION_SCORE, DESCRIPTION_MARGIN = 0.45, 0.08
+# Tolerance when matching a number of the request with one of the plan (rounding, unit maths).
+NUMBER_TOLERANCE = 0.02
+# Unit conversions a planner may apply to a number: km/h and mph to m/s.
+UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704)
+QUERY_TOOLS = ("find_assets", "find_landmarks", "find_lanes", "asset_properties")
+MAX_READINGS = 3
+
+# The small general vocabulary the check reads polarity and questions with.
+_REMOVE = re.compile(
+    r"\b(remove|delete|get rid of|take (away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
+    r"|not want|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
+)
+_ADD = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
+_QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
+_POLITE = re.compile(r"^(can|could|would|will) (you|we|i)\b|^please\b")
+_PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
+# Command verbs and fillers dropped before grounding a description on its nouns.
+_VERB = re.compile(r"\b(please|i'?d like|i want|we need|add|put|place|create|spawn|remove|delete|get rid of|"
+                   r"there should be|could you|can you|a|an|the|some|one|two|three)\b")
+# A category word after these describes the thing asked for ("a vehicle that carries passengers",
+# "a bench for pedestrians") rather than naming it.
+_DESCRIBING = re.compile(r"\b(that|which|who|with|for|carrying|carries|full of)\b[^,.;]*$")
+_PARKED = re.compile(r"\bparked\b")
+_MOVING = re.compile(r"\b(driving|moving|travelling|traveling)\b")
+
+
+@dataclass
+class Verdict:
+    """What to do with a plan: apply it, ask which reading was meant, or refuse (and why)."""
+
+    action: Action
+    problems: list[str] = field(default_factory=list)
+    question: Question | None = None
+    message: str | None = None
+
+
+@dataclass(frozen=True)
+class Request:
+    """The signals read from a request's words."""
+
+    text: str
+    question: bool
+    polarity: Literal["add", "remove"] | None
+    categories: frozenset[str]
+    numbers: tuple[float, ...]
+    place: str | None
+    lane: str | None
+    state: Literal["parked", "moving"] | None
+    about_places: bool = False
+
+
+@dataclass(frozen=True)
+class Effect:
+    """What a plan does, from a dry run: assets added, removed and changed, and its numbers."""
+
+    calls: tuple[ToolCall, ...]
+    added: tuple[AssetInstance, ...]
+    removed: tuple[AssetInstance, ...]
+    changed: tuple[AssetInstance, ...]
+    environment: bool
+
+    @property
+    def edits(self) -> bool:
+        return bool(self.added or self.removed or self.changed or self.environment)
+
+
+def read_request(prompt: str, scene: Scene) -> Request:
+    """The request's signals: polarity, categories, numbers, place, lane, state and mood."""
+    low = ph.normalise(repair(prompt, scene).text).strip()
+    place = find_place(scene, f" {low} ")
+    masked = low if place is None else low[: max(0, place[1] - 1)] + " " + low[max(0, place[2] - 1) :]
+    for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
+        masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
+    lane = find_lane(scene, masked)
+    polite = bool(_POLITE.match(low))
+    question = not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?"))
+    polarity: Literal["add", "remove"] | None = (
+        "remove" if _REMOVE.search(low) else "add" if _ADD.search(low) else None
+    )
+    categories = frozenset(m.category for m in ph.find_categories(masked) if not _DESCRIBING.search(masked[: m.start]))
+    numbers = tuple(n.value for n in numbers_in(_without_times(masked)) if not _is_reference(masked, n.start))
+    state: Literal["parked", "moving"] | None = (
+        "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) else None
+    )
+    return Request(prompt, question, polarity, categories, numbers, place[0] if place else None,
+                   lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)))
+
+
+def _without_times(text: str) -> str:
+    # A clock time is checked by what the time tool sets, not number by number.
+    return re.sub(r"\d{1,2}:\d\d|\d{1,2}\s*(am|pm|o'clock)\b", " ", text)
+
+
+def _is_reference(text: str, start: int) -> bool:
+    # "car 2", "lot 3", "the 2nd": a number that names something rather than an amount.
+    before = text[:start].split()[-1:]
+    return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in ("lot", "no"))
+
+
+def dry_run(plan_calls: list[ToolCall], context: PlanContext) -> Effect | None:
+    """What the calls would do to the scene, or None when a dry run refuses them."""
+    try:
+        outcome = execute(context.registry, context.scene, plan_calls)
+    except TransactionError:
+        return None
+    ops = outcome.edit.ops
+    return Effect(
+        calls=tuple(plan_calls),
+        added=tuple(op.asset for op in ops if op.op == "add"),
+        removed=tuple(op.before for op in ops if op.op == "remove"),
+        changed=tuple(op.after for op in ops if op.op == "update"),
+        environment=any(op.op in ("environment", "storyboard") for op in ops),
+    )
+
+
+def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[str]:
+    """Each way the plan's effect fails to account for the request, in plain words."""
+    out: list[str] = []
+    scene = context.scene
+    if request.question and effect.edits:
+        out.append("you asked a question, but the plan would change the scene")
+    looks_up_places = any(c.tool == "find_landmarks" or "nearest_to" in c.args for c in effect.calls)
+    if request.question and request.about_places and not effect.edits and not looks_up_places:
+        out.append("you asked about places, but the plan looks up something else")
+    if request.polarity == "remove" and effect.added and not effect.removed:
+        out.append("you asked to take something away, but the plan adds " + _names(effect.added))
+    if request.polarity == "add" and effect.removed and not effect.added:
+        out.append("you asked for more, but the plan removes " + _names(effect.removed))
+    touched = [*effect.added, *effect.removed]
+    if request.categories and touched:
+        strays = {a.category for a in touched} - request.categories - _companions(effect)
+        if strays:
+            out.append(f"you named {', '.join(sorted(request.categories))}, but the plan touches {', '.join(sorted(strays))}")
+    if not request.categories and touched and not _companions(effect):
+        plan_categories = {a.category for a in touched}
+        try:
+            meant = described_category(request.text, plan_categories)
+        except GroundingUnavailable:
+            meant = None  # without MiniLM a description cannot be judged; the other signals remain
+        if meant is not None:
+            out.append(f"your words describe a {meant.replace('_', ' ')}, but the plan uses "
+                       + ", ".join(sorted(plan_categories)))
+    missing = [n for n in request.numbers if not _accounts_for(n, effect)]
+    if missing and effect.edits:
+        out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
+    if request.place is not None and effect.edits and not effect.environment:
+        far = [a for a in [*effect.added, *effect.removed, *effect.changed] if a.id != "ego"
+               and not _near(scene, a, request.place) and not _names_target(effect, request.place)]
+        if far:
+            out.append(f"you named {request.place}, but the plan acts on {_names(far)} away from it")
+    if request.state is not None and (effect.removed or effect.changed):
+        wrong = [a for a in [*effect.removed, *effect.changed] if a.id != "ego"
+                 and (a.behaviour.kind == "parked") != (request.state == "parked") and a.category in request.categories]
+        if wrong:
+            out.append(f"you said {request.state} ones, but the plan also takes {_names(wrong)}")
+    return out
+
+
+def described_category(text: str, plan_categories: set[str]) -> str | None:
+    """The category a description names ("something people throw rubbish into" is a trash bin),
+    when MiniLM, comparing the words with each category's catalog description, is clearly
+    surer of it than of every category the plan uses; else None."""
+    names, vectors = _category_descriptions()
+    query = embed([_VERB.sub(" ", ph.normalise(text))])[0]
+    scores = dict(zip(names, (float(v) for v in vectors @ query), strict=True))
+    best = max(scores, key=lambda n: scores[n])
+    if best in plan_categories or scores[best] < DESCRIPTION_SCORE:
+        return None
+    if all(scores.get(c, 0.0) <= scores[best] - DESCRIPTION_MARGIN for c in plan_categories):
+        return best
+    return None
+
+
+@cache
+def _category_descriptions() -> tuple[tuple[str, ...], Any]:
+    names = tuple(placeable_categories())
+    texts = [f"{n.replace('_', ' ')}: {catalog()[n].description}" for n in names]
+    return names, embed(texts)
+
+
+def _companions(effect: Effect) -> set[str]:
+    # Arrangements add what a layout needs; the check only weighs what was asked for by name.
+    return {a.category for a in effect.added} if any(c.tool == "arrange_assets" for c in effect.calls) else set()
+
+
+def _names(assets: tuple[AssetInstance, ...] | list[AssetInstance]) -> str:
+    counts = Counter(a.category for a in assets)
+    return ", ".join(f"{n} {c}" for c, n in counts.items())
+
+
+def _numbers_in_args(value: Any) -> list[float]:
+    if isinstance(value, bool):
+        return []
+    if isinstance(value, int | float):
+        return [float(value)]
+    if isinstance(value, str):
+        return [n.value for n in numbers_in(value)]
+    if isinstance(value, dict):
+        return [n for v in value.values() for n in _numbers_in_args(v)]
+    if isinstance(value, list | tuple):
+        return [n for v in value for n in _numbers_in_args(v)]
+    return []
+
+
+def _accounts_for(number: float, effect: Effect) -> bool:
+    if not math.isfinite(number):
+        return False
+    used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + [float(len(effect.added))]
+    return any(math.isclose(abs(number) * f, abs(u), rel_tol=NUMBER_TOLERANCE, abs_tol=NUMBER_TOLERANCE)
+               for u in used for f in UNIT_FACTORS)
+
+
+def _near(scene: Scene, asset: AssetInstance, place: str) -> bool:
+    try:
+        target = resolve_target(scene, place)
+    except ToolError:
+        return True  # a place the tools cannot resolve cannot be judged against
+    if target.polygon is not None:
+        from drivetwin.worlds.surface import point_in_polygon
+
+        if point_in_polygon(asset.pose.x, asset.pose.y, target.polygon):
+            return True
+    return math.hypot(asset.pose.x - target.x, asset.pose.y - target.y) <= PLACE_RADIUS_M
+
+
+def _names_target(effect: Effect, place: str) -> bool:
+    return any(place.lower() in str(c.args).lower() for c in effect.calls if c.tool not in ("remove_assets",))
+
+
+def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Reading]:
+    """Readings built from the plan's own effect that fit the request better: the opposite
+    polarity, only the assets at the place or of the state named, no edit for a question."""
+    out: list[Reading] = []
+    scene = context.scene
+    if request.question and effect.edits:
+        queries = [c for c in effect.calls if c.tool in QUERY_TOOLS]
+        if request.categories and not queries:
+            queries = [ToolCall(tool="find_assets", args={"category": sorted(request.categories)[0]})]
+        if queries:
+            out.append(Reading(text="only answer the question, change nothing", calls=queries))
+    if request.polarity == "remove" and effect.added and not effect.removed:
+        for category in dict.fromkeys(a.category for a in effect.added):
+            if scene.count(category):
+                args: dict[str, Any] = {"category": category}
+                if request.place:
+                    args["near"] = request.place
+                out.append(Reading(text=f"remove the {category.replace('_', ' ')}", calls=[
+                    ToolCall(tool="remove_assets", args=args)]))
+    if request.polarity == "add" and effect.removed and not effect.added:
+        category = sorted(request.categories)[0] if request.categories else effect.removed[0].category
+        out.append(Reading(text=f"add a {category.replace('_', ' ')}", calls=[
+            ToolCall(tool="add_asset", args={"category": category, "count": 1})]))
+    if effect.removed and (request.place or request.state):
+        keep = [a.id for a in effect.removed
+                if (request.place is None or _near(scene, a, request.place))
+                and (request.state is None or (a.behaviour.kind == "parked") == (request.state == "parked"))]
+        if keep and len(keep) < len(effect.removed):
+            out.append(Reading(text="remove only " + ", ".join(keep), calls=[
+                ToolCall(tool="remove_assets", args={"assets": keep})]))
+    return out
+
+
+def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
+    """Apply, ask or refuse: whether `plan` accounts for what `prompt` asks (nothing is applied)."""
+    if plan.question is not None:
+        return Verdict("ask", ["the planner could not tell which reading was meant"], plan.question)
+    effect = dry_run(plan.calls, context)
+    if effect is None:
+        return Verdict("apply")  # the transaction refuses it in its own words
+    request = read_request(prompt, context.scene)
+    found = problems_of(request, effect, context)
+    if not found:
+        return Verdict("apply")
+    fitting: list[Reading] = []
+    for reading in [*repairs(request, effect, context), *plan.alternatives]:
+        other = dry_run(reading.calls, context)
+        if other is not None and not problems_of(request, other, context) and reading not in fitting:
+            fitting.append(reading)
+    if not fitting:
+        return Verdict("refuse", found, None, refusal(found, context))
+    mine = Reading(text="as planned: " + "; ".join(str(c) for c in plan.calls), calls=list(plan.calls))
+    readings = [*fitting[: MAX_READINGS - 1], mine]
+    text = f"I am not sure what you meant: {found[0]}. Which did you mean?"
+    return Verdict("ask", found, Question(text=text, readings=readings))
+
+
+def refusal(problems: list[str], context: PlanContext) -> str:
+    """A refusal that says first what was not understood, then what is possible."""
+    tools = sorted({context.registry.get(n).family for n in context.registry.names()})
+    return (f"I did not do it: {'; '.join(problems)}. I can {', '.join(tools)} things in the scene; "
+            "say it another way, e.g. naming the thing and the place")
+
+
+__all__ = ["Effect", "Request", "Verdict", "dry_run", "problems_of", "read_request", "refusal", "repairs", "review"]
