@@ -12,11 +12,11 @@ import click
 from drivetwin.orchestrator.config import ConfigError, Settings, load_settings
 from drivetwin.orchestrator.planning import Planner
 from drivetwin.orchestrator.planning.registry import UnknownPlannerError, make_planner
-from drivetwin.orchestrator.repl import ChatOptions, dump_tools, interactive, run_lines
+from drivetwin.orchestrator.repl import ChatOptions, ScriptFileError, dump_tools, interactive, read_script, run_lines
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools.registry import ToolRegistry
-from drivetwin.worlds.defaults import UnknownWorldError, list_worlds, load_world
-from drivetwin.worlds.scene import SceneFileError, scene_json_schema
+from drivetwin.worlds.defaults import list_worlds, load_world
+from drivetwin.worlds.scene import scene_json_schema
 
 # Simulated seconds between scripted prompts, so each frame shows the world moving on.
 SCRIPT_SECONDS_PER_STEP = 1.0
@@ -60,6 +60,13 @@ def main() -> None:
     """
 
 
+def _script_lines(script: Path) -> list[str]:
+    try:
+        return read_script(script)
+    except ScriptFileError as exc:
+        raise click.ClickException(str(exc)) from exc
+
+
 @main.command()
 @click.option("--world", default="campus", show_default=True, help="world name or JSON file")
 @click.option("--planner", "planner_name", default=None,
@@ -78,9 +85,10 @@ def main() -> None:
 @click.option("--explain", is_flag=True, help="show each planning level's input and output")
 @click.option("--no-sim", is_flag=True, help="edit the scene without running physics")
 @click.option("--enhance", "enhance_model", default=None, help="SDXL folder for enhanced frames")
+@click.option("--isolate-plugins", is_flag=True, help="run plugin Workers in a separate process")
 def chat(world: str, planner_name: str | None, backend: str | None, model: str | None, script: Path | None,
          fail_fast: bool, out_dir: Path | None, render_each: bool, resume: bool, journal: Path | None,
-         explain: bool, no_sim: bool, enhance_model: str | None) -> None:
+         explain: bool, no_sim: bool, enhance_model: str | None, isolate_plugins: bool) -> None:
     """Edit a live world by typing what you want.
 
     Example: drivetwin chat --world campus --script demo.txt --fail-fast
@@ -88,18 +96,14 @@ def chat(world: str, planner_name: str | None, backend: str | None, model: str |
     from drivetwin.orchestrator.live import LiveWorld
 
     settings = _settings(planner_name, backend, model)
+    from drivetwin.orchestrator.chat_journal import open_chat_session
+
     planner = _fallback_planner(settings)
-    journal_path = journal or settings.state_dir / "session.journal.jsonl"
-    registry = ToolRegistry.default()
+    registry = ToolRegistry.default(isolate=isolate_plugins)
     for problem in registry.problems:
         click.echo(f"warning: plugin {problem.entry_point} skipped: {problem.error}", err=True)
-    try:
-        if resume:
-            session = Session.resume(journal_path, planner, registry)
-        else:
-            session = Session(load_world(world), planner, registry, journal_path)
-    except (UnknownWorldError, SceneFileError, ValueError) as exc:
-        raise click.ClickException(str(exc)) from exc
+    session = open_chat_session(world, planner, registry, settings.state_dir, journal, resume,
+                                can_ask=script is None and sys.stdin.isatty())
     try:
         enhance = None
         if enhance_model:
@@ -117,10 +121,10 @@ def chat(world: str, planner_name: str | None, backend: str | None, model: str |
         out_dir.mkdir(parents=True, exist_ok=True)
     try:
         if script is not None:
-            lines = script.read_text(encoding="utf-8").splitlines()
-            status = run_lines(session, live.paced(lines, SCRIPT_SECONDS_PER_STEP), options)
+            status = run_lines(session, live.paced(_script_lines(script), SCRIPT_SECONDS_PER_STEP), options)
         else:
             status = interactive(session, options, settings.state_dir / "history.txt")
+        session.close()  # a clean end: the journal says so, and `chat` will not offer to resume it
     finally:
         for path in live.close():
             click.echo(f"  wrote {path}")
@@ -380,3 +384,7 @@ from drivetwin.worlds.reconstruct.cli import add_reconstruct_parser  # noqa: E40
 worlds.add_command(import_command)
 
 add_reconstruct_parser(main)
+
+from drivetwin.orchestrator.cli_journal import journal_group  # noqa: E402  (drivetwin journal check|repair)
+
+main.add_command(journal_group)

@@ -149,7 +149,7 @@ class ToolRegistry:
         tool = self.get(call.tool)
         source = self.sources.get(call.tool, "built-in")
         try:
-            if source == "built-in":
+            if source == "built-in" or getattr(tool, "out_of_process", False):
                 result = tool.propose(Tool.parse(tool, call.args), scene)
             else:
                 who = f"{source} ({call.tool})"
