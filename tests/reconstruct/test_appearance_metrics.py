@@ -163,3 +163,15 @@ def test_lpips_refuses_images_too_small_for_alexnet(random_lpips: tuple[AlexLPIP
     net, _ = random_lpips
     with pytest.raises(MetricsError, match="32x32"):
         net.distance(np.zeros((16, 16, 3)), np.zeros((16, 16, 3)))
+
+
+def test_the_differentiable_ssim_loss_agrees_with_the_shared_metric() -> None:
+    import torch
+    from drivetwin.worlds.reconstruct.image_metrics import ssim_torch
+
+    rng = np.random.default_rng(3)
+    a = rng.random((24, 20, 3))
+    b = np.clip(a + rng.normal(0, 0.1, a.shape), 0, 1)
+    with torch.no_grad():
+        differentiable = float(ssim_torch(torch.from_numpy(a), torch.from_numpy(b)))
+    assert differentiable == pytest.approx(ssim(a, b), abs=1e-9)

@@ -6,7 +6,8 @@ import json
 
 import numpy as np
 import pytest
-from drivetwin.worlds.render.bench_splats import main, psnr, street_camera, street_scene
+from drivetwin.worlds.image_metrics import psnr
+from drivetwin.worlds.render.bench_splats import main, street_camera, street_scene
 
 
 def test_benchmark_writes_fps_and_stage_timings_as_json(tmp_path):

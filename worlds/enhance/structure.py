@@ -23,6 +23,7 @@ from drivetwin.worlds.enhance.settings import (
     EnhanceInputError,
     EnhanceSettings,
 )
+from drivetwin.worlds.image_metrics import ssim, ssim_map
 from numpy.typing import NDArray
 from PIL import Image
 from scipy import ndimage
@@ -34,12 +35,6 @@ DepthEstimator = Callable[[NDArray[np.uint8]], NDArray[np.float32]]
 # Long side (px) the comparison runs at: a 640-px frame shrinks 10x, which removes texture
 # while a car of 30 px still spans 3 px of edges.
 STRUCTURE_LONG_SIDE = 64
-# The Gaussian window of Wang et al. (2004): sigma 1.5, 11 taps (radius 5 = 3.5 sigma).
-SSIM_SIGMA = 1.5
-_SSIM_TRUNCATE = 3.5
-# SSIM's stabilising constants, as fractions of the data range (Wang et al. 2004).
-_K1 = 0.01
-_K2 = 0.03
 # Smoothing before Sobel, in low-res pixels: suppresses one-pixel noise edges.
 _EDGE_SMOOTH = 1.0
 # Edge maps are divided by their 99th percentile (scale-free, so a darker or tinted frame has
@@ -92,32 +87,6 @@ def low_res_rgb(frame: NDArray[np.uint8], long_side: int = STRUCTURE_LONG_SIDE) 
     """A frame as float RGB in [0, 1] [h, w, 3], shrunk so its long side is `long_side`."""
     rgb = frame.astype(np.float32) / 255.0
     return np.stack([_resize_plane(rgb[..., c], long_side) for c in range(3)], axis=-1)
-
-
-def ssim_map(a: FloatImage, b: FloatImage, data_range: float = 1.0) -> FloatImage:
-    """Per-pixel SSIM of two single-channel images [H, W] with an 11-tap Gaussian window."""
-    if a.shape != b.shape or a.ndim != 2:
-        raise EnhanceInputError(f"ssim needs two equal 2-D images; got {a.shape} and {b.shape}")
-    a64 = a.astype(np.float64)
-    b64 = b.astype(np.float64)
-
-    def window(x: NDArray[np.float64]) -> NDArray[np.float64]:
-        return np.asarray(ndimage.gaussian_filter(x, SSIM_SIGMA, truncate=_SSIM_TRUNCATE))
-
-    mu_a, mu_b = window(a64), window(b64)
-    var_a = window(a64 * a64) - mu_a * mu_a
-    var_b = window(b64 * b64) - mu_b * mu_b
-    cov = window(a64 * b64) - mu_a * mu_b
-    c1 = (_K1 * data_range) ** 2
-    c2 = (_K2 * data_range) ** 2
-    num = (2 * mu_a * mu_b + c1) * (2 * cov + c2)
-    den = (mu_a * mu_a + mu_b * mu_b + c1) * (var_a + var_b + c2)
-    return (num / den).astype(np.float32)
-
-
-def ssim(a: FloatImage, b: FloatImage, data_range: float = 1.0) -> float:
-    """Mean SSIM of two single-channel images [H, W]."""
-    return float(ssim_map(a, b, data_range).mean())
 
 
 def edge_map(rgb: FloatImage) -> FloatImage:

@@ -1,47 +1,37 @@
 """Image quality metrics of novel-view synthesis: PSNR and SSIM as the 3DGS papers compute them.
 
-Images are RGB [H,W,3] in 0..1 (NumPy or torch). SSIM uses an 11x11 Gaussian window with
-sigma 1.5, constants C1 = (0.01)^2 and C2 = (0.03)^2, zero padding of half a window and the
-mean over pixels and channels, as the 3DGS reference code (``ssim`` in loss_utils) does;
-``ssim_torch`` is the differentiable form the fit's D-SSIM loss uses. LPIPS is in ``lpips``.
+Images are RGB [H,W,3] in 0..1. PSNR and SSIM are the project's own (drivetwin.worlds.image_metrics);
+SSIM with zero padding of half a window, as the 3DGS reference code (``ssim`` in loss_utils) does.
+``ssim_torch`` is the differentiable form the fit's D-SSIM loss uses, tested against it. LPIPS is
+in ``lpips``.
 """
 
 from __future__ import annotations
-
-import math
 
 import numpy as np
 import numpy.typing as npt
 import torch
 import torch.nn.functional as F
+from drivetwin.worlds import image_metrics
+from drivetwin.worlds.image_metrics import SSIM_SIGMA, SSIM_WINDOW, MetricsError
 
 __all__ = ["SSIM_SIGMA", "SSIM_WINDOW", "MetricsError", "psnr", "ssim", "ssim_torch"]
 
-SSIM_WINDOW = 11  # pixels per side of the Gaussian window (Wang et al. 2004, 3DGS)
-SSIM_SIGMA = 1.5  # its standard deviation in pixels
 # Stabilising constants for a dynamic range of 1: (K * L)^2 with K1 = 0.01, K2 = 0.03.
 _C1 = 0.01**2
 _C2 = 0.03**2
-
-
-class MetricsError(ValueError):
-    """Images given to a metric do not match in shape or are not RGB in [0, 1]."""
 
 
 def _checked_pair(a: npt.ArrayLike, b: npt.ArrayLike) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     x, y = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
     if x.shape != y.shape or x.ndim != 3 or x.shape[2] != 3:
         raise MetricsError(f"need two RGB images [H,W,3] of one shape, got {x.shape} and {y.shape}")
-    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(y))):
-        raise MetricsError("images must be finite")
     return x, y
 
 
 def psnr(a: npt.ArrayLike, b: npt.ArrayLike) -> float:
     """Peak signal-to-noise ratio (dB) of two RGB images in 0..1; ``inf`` when they are equal."""
-    x, y = _checked_pair(a, b)
-    mse = float(np.mean((x - y) ** 2))
-    return math.inf if mse == 0.0 else -10.0 * math.log10(mse)
+    return image_metrics.psnr(*_checked_pair(a, b))
 
 
 def _gaussian_window(channels: int, dtype: torch.dtype, device: torch.device) -> torch.Tensor:
@@ -72,6 +62,4 @@ def ssim_torch(x: torch.Tensor, y: torch.Tensor) -> torch.Tensor:
 
 def ssim(a: npt.ArrayLike, b: npt.ArrayLike) -> float:
     """Structural similarity (3DGS's Gaussian-window SSIM) of two RGB images in 0..1; 1 when equal."""
-    x, y = _checked_pair(a, b)
-    with torch.no_grad():
-        return float(ssim_torch(torch.from_numpy(x), torch.from_numpy(y)))
+    return image_metrics.ssim(*_checked_pair(a, b), padding="zeros")

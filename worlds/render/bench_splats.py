@@ -27,12 +27,13 @@ from typing import Any
 
 import numpy as np
 import numpy.typing as npt
+from drivetwin.worlds.image_metrics import psnr
 
 from .camera import Camera
 from .rasterize import RasterOutput, available_backends, rasterize
 from .splats import Splats
 
-__all__ = ["main", "markdown_table", "psnr", "street_camera", "street_scene"]
+__all__ = ["main", "markdown_table", "street_camera", "street_scene"]
 
 # Opacity the probe in DESIGN.md used for the garden capture: dense but not solid.
 SCENE_OPACITY = 0.8
@@ -77,12 +78,6 @@ def street_scene(n: int, camera: Camera, seed: int = 0) -> Splats:
     colors = np.clip(palette[kind[hit]] * (0.8 + 0.2 * checker[:, None])
                      + rng.normal(0, 0.03, (len(hit), 3)), 0, 1)  # fmt: skip
     return Splats.from_points(points, colors, opacity=SCENE_OPACITY, max_scale=SCENE_MAX_SCALE_M)
-
-
-def psnr(a: npt.NDArray[np.floating], b: npt.NDArray[np.floating]) -> float:
-    """Peak signal-to-noise ratio in dB of two images with values in [0, 1]."""
-    mse = float(np.mean((np.clip(a, 0, 1) - np.clip(b, 0, 1)) ** 2))
-    return float("inf") if mse == 0 else 10.0 * float(np.log10(1.0 / mse))
 
 
 def markdown_table(results: list[dict[str, Any]]) -> str:
@@ -175,7 +170,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             result = bench_one(backend, splats, camera, args.frames)
             images[backend] = result.pop("_rgb")
             if "numba" in images and backend != "numba":
-                result["psnr_vs_numba_db"] = psnr(images[backend], images["numba"])
+                result["psnr_vs_numba_db"] = psnr(np.clip(images[backend], 0, 1), np.clip(images["numba"], 0, 1))
             report["results"].append(result)
             ms = result["ms"]
             print(f"{backend:>10} {count:>8} splats: {result['fps']:7.2f} FPS  "
