@@ -388,3 +388,7 @@ add_reconstruct_parser(main)
 from drivetwin.orchestrator.cli_journal import journal_group  # noqa: E402  (drivetwin journal check|repair)
 
 main.add_command(journal_group)
+
+from drivetwin.orchestrator.cli_export import export_command  # noqa: E402  (drivetwin export)
+
+main.add_command(export_command)

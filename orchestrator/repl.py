@@ -12,6 +12,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from drivetwin.orchestrator.cli_export import ExportError, export_scene
 from drivetwin.orchestrator.planning.llm.planner import format_trace
 from drivetwin.orchestrator.session import Session, SessionError, TurnReport
 from drivetwin.tools.registry import ToolRegistry
@@ -48,6 +49,7 @@ Commands (with or without a leading slash):
   undo, redo          step back / forward through changes
   accept, reject      confirm the last change, or throw it away for good
   save PATH, load PATH  write / read the scene as JSON
+  export PATH.xosc    write the scenario as OpenSCENARIO (roads as OpenDRIVE beside it)
   scene               summary of the scene          tools   list the Worker tools
   render [PATH]       write a frame (PNG, depth and LIDAR beside it)
   explain on|off      show each planning level's input and output
@@ -126,6 +128,8 @@ def run_command(session: Session, line: str, options: ChatOptions) -> bool | Non
             echo("\n".join(f"  {d}" for d in session.reject()) or "  rejected")
         elif word == "save" and rest:
             echo(f"  saved {session.save(rest)}")
+        elif word == "export" and rest:
+            echo("\n".join(f"  wrote {path}" for path in export_scene(session.scene, rest)))
         elif word == "load" and rest:
             session.load(rest)
             echo(f"  loaded {rest}\n{scene_summary(session)}")
@@ -148,7 +152,7 @@ def run_command(session: Session, line: str, options: ChatOptions) -> bool | Non
             echo(HELP)
         else:
             return None
-    except (SessionError, SceneFileError, OSError) as exc:
+    except (SessionError, SceneFileError, ExportError, OSError) as exc:
         echo(f"  error: {exc}")
         return False
     return True
