@@ -16,7 +16,7 @@ from drivetwin.worlds.export.openscenario import (
     validate_openscenario,
 )
 from drivetwin.worlds.export.openscenario_read import read_openscenario
-from drivetwin.worlds.scene import Environment, Scene, Weather
+from drivetwin.worlds.scene import AssetInstance, Environment, PhysicsProps, Pose, Scene, Weather
 from drivetwin.worlds.storyboard import (
     ChangeSpeed,
     CrossRoadManoeuvre,
@@ -49,8 +49,6 @@ def _every_kind_scene() -> Scene:
     """The campus with one event of every manoeuvre and condition kind, and two lights."""
     car, walker = "passenger_car_1", "pedestrian_1"
     campus = build_campus()
-    from drivetwin.worlds.scene import AssetInstance, PhysicsProps, Pose
-
     person = AssetInstance(id=walker, category="pedestrian", pose=Pose(x=-20.0, y=-6.0),
                            physics=PhysicsProps(mass=75.0))
     board = Storyboard(stop_time=60.0, lights=[
@@ -120,7 +118,7 @@ def test_every_manoeuvre_and_condition_exports_to_a_file_that_validates(exported
 def test_a_file_that_breaks_the_schema_is_refused(exported: tuple[Scene, Path, Path], tmp_path: Path) -> None:
     broken = tmp_path / "broken.xosc"
     broken.write_text(exported[1].read_text().replace("TeleportAction", "TeleportTo"))
-    with pytest.raises(OpenScenarioError, match="not valid OpenSCENARIO 1.2"):
+    with pytest.raises(OpenScenarioError, match=r"not valid OpenSCENARIO 1\.2"):
         validate_openscenario(broken)
 
 
