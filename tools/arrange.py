@@ -148,12 +148,13 @@ def _row_at(x: float, y: float, heading: float, spacing: float, count: int) -> l
 
 def _row_fits(scene: Scene, poses: list[Pose], templates: list[AssetInstance],
               area: list[tuple[float, float]] | None) -> bool:
+    row = [t.model_copy(update={"pose": p}) for p, t in zip(poses, templates, strict=True)]
+    # The cheap test first: a row that sticks out of the lot needs no rule checks.
+    if area is not None and not all(point_in_polygon(x, y, area) for a in row for x, y in footprint(a)):
+        return False
     placed: list[AssetInstance] = []
     others = scene.all_assets()
-    for pose, template in zip(poses, templates, strict=True):
-        asset = template.model_copy(update={"pose": pose})
-        if area is not None and not all(point_in_polygon(x, y, area) for x, y in footprint(asset)):
-            return False
+    for asset in row:
         try:
             check_placement(scene, asset, [*others, *placed])
         except RuleViolation:

@@ -311,6 +311,10 @@ def find_free_pose(
         ys = [p[1] for p in anchor.area]
         span = max(max(xs) - min(xs), max(ys) - min(ys))
         steps = max(steps, int(span / SEARCH_STEP_M) + 1)
+    # Only what stands within reach of the searched disc can overlap a candidate.
+    reach = steps * SEARCH_STEP_M + category(template.category).footprint_radius * template.scale
+    others = _within(others, anchor.x, anchor.y, reach)
+    keep_clear = _within(keep_clear or [], anchor.x, anchor.y, reach)
     for i in range(steps):
         for dx, dy in _ring(i * SEARCH_STEP_M):
             x, y = anchor.x + dx, anchor.y + dy
@@ -337,6 +341,12 @@ def find_free_pose(
         "no_space",
         f"no free spot for a {template.category} within {SEARCH_RADIUS_M:g} m of {where}{reason}",
     )
+
+
+def _within(assets: list[AssetInstance], x: float, y: float, reach: float) -> list[AssetInstance]:
+    """The assets whose footprints come within `reach` metres of (x, y)."""
+    return [a for a in assets if math.hypot(a.pose.x - x, a.pose.y - y)
+            <= reach + category(a.category).footprint_radius * a.scale]
 
 
 # Walkers of one request keep this much apart, so they read as separate people.

@@ -38,13 +38,14 @@ def test_three_pedestrians_at_the_north_crossing_stand_on_three_distinct_free_sp
 
 
 def test_a_request_for_more_than_fit_says_how_many_do(call: Caller, campus: Scene) -> None:
-    with pytest.raises(RuleViolation, match=r"for 30 bus; (\d+) fit") as refused:
-        call(campus, "add_asset", category="bus", count=30, location={"relation": "at", "target": "main intersection"})
+    entrance = {"relation": "at", "target": "parking lot A entrance"}
+    with pytest.raises(RuleViolation, match=r"within 12 m of parking lot A entrance for 7 bus; (\d+) fit") as refused:
+        call(campus, "add_asset", category="bus", count=7, location=entrance)
     match = re.search(r"; (\d+) fit", str(refused.value))
     assert match is not None
     fit = int(match.group(1))
-    assert 0 < fit < 30
-    _, buses = _added(call, campus, category="bus", count=fit, location={"relation": "at", "target": "main intersection"})
+    assert 0 < fit < 7
+    _, buses = _added(call, campus, category="bus", count=fit, location=entrance)
     assert len(buses) == fit
 
 
