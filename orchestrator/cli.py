@@ -327,6 +327,8 @@ def eval_run(suite: str, planner_name: str, backend: str | None, model: str | No
     """
     from drivetwin.evals import RecordsError, RunError, SuiteError, run_suite
 
+    if planner_name == "rules" and (backend or model):
+        raise click.UsageError("the rules planner takes no --backend or --model; use --planner llm or hybrid")
     settings = _settings(planner_name, backend, model)
     # The rule planner takes no backend; the others run on the settings' backend and model.
     options: dict[str, Any] = {} if planner_name == "rules" else {
