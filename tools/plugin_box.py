@@ -10,11 +10,11 @@ world is the WorldEdit it returns, which the host checks against the world rules
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Callable
 from typing import Any, TypeVar
 
 from drivetwin.tools.base import Tool, ToolResult
+from drivetwin.tools.deadline import DeadlineExceeded, call_within
 from drivetwin.tools.errors import PluginError, ToolError
 from drivetwin.worlds.edits import WorldEdit
 from drivetwin.worlds.scene import Scene
@@ -27,27 +27,32 @@ CALL_DEADLINE_S = 5.0
 IMPORT_DEADLINE_S = 20.0
 
 
+class _PluginRaised(Exception):
+    """What the plugin raised, kept apart from a Ctrl-C the user presses while it runs."""
+
+    def __init__(self, error: BaseException) -> None:
+        super().__init__(error)
+        self.error = error
+
+
 def run_boxed(function: Callable[[], T], who: str, deadline_s: float) -> T:
     """`function()` in a worker thread; its failure or hang becomes a PluginError naming `who`."""
-    outcome: dict[str, Any] = {}
 
-    def target() -> None:
+    def guarded() -> T:
         try:
-            outcome["value"] = function()
+            return function()
         except BaseException as exc:  # SystemExit, KeyboardInterrupt: the plugin's, not ours
-            outcome["error"] = exc
+            raise _PluginRaised(exc) from exc
 
-    worker = threading.Thread(target=target, name=f"plugin {who}", daemon=True)
-    worker.start()
-    worker.join(deadline_s)
-    if worker.is_alive():
-        raise PluginError(f"{who} did not answer within {deadline_s:g} s and was abandoned")
-    if "error" in outcome:
-        error = outcome["error"]
-        if isinstance(error, ToolError):
-            raise error  # a refusal in the contract's own words
+    try:
+        return call_within(guarded, deadline_s, who)
+    except DeadlineExceeded as exc:
+        raise PluginError(f"{who} did not answer within {deadline_s:g} s and was abandoned") from exc
+    except _PluginRaised as raised:
+        if isinstance(raised.error, ToolError):
+            raise raised.error from None  # a refusal in the contract's own words
+        error = raised.error
         raise PluginError(f"{who} failed: {type(error).__name__}: {error}") from error
-    return outcome["value"]  # type: ignore[no-any-return]
 
 
 def propose_boxed(tool: Tool[Any], args: Any, scene: Scene, who: str, deadline_s: float = CALL_DEADLINE_S) -> ToolResult:

@@ -123,7 +123,7 @@ class IsolatedTool(Tool[RemoteArgs]):
         except ValueError as exc:
             raise PluginError(f"{self._who} proposed an edit that is not a valid WorldEdit: {exc}") from exc
         focus = tuple(answer["focus"]) if answer.get("focus") else None
-        return ToolResult(edit, str(answer.get("text", "")), focus, dict(answer.get("data") or {}))  # type: ignore[arg-type]
+        return ToolResult(edit, str(answer.get("text", "")), focus, dict(answer.get("data") or {}))
 
 
 def load_isolated_plugins(registry: ToolRegistry) -> PluginProcess:

@@ -10,6 +10,7 @@ from typing import Any, ClassVar
 
 import httpx
 import pydantic
+from drivetwin.tools.deadline import DeadlineExceeded, call_within
 
 from .base import (
     DEFAULT_MAX_TOKENS,
@@ -132,7 +133,15 @@ class OllamaBackend(Backend):
         import ollama
 
         try:
-            return request()
+            # The client's timeout counts per read; the deadline counts for the whole call.
+            return call_within(request, timeout_s, f"{NAME}/{self.model} request")
+        except DeadlineExceeded:
+            raise BackendTimeout(
+                f"{NAME}/{self.model} did not answer within {timeout_s:g} s",
+                timeout_s=timeout_s or 0.0,
+                backend=NAME,
+                model=self.model,
+            ) from None
         except ConnectionError:
             # The client turns httpx.ConnectError into a bare ConnectionError.
             raise BackendUnavailable(

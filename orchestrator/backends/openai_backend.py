@@ -8,6 +8,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any, Literal
 
 import httpx
+from drivetwin.tools.deadline import DeadlineExceeded, call_within
 
 from .base import (
     DEFAULT_MAX_TOKENS,
@@ -132,8 +133,8 @@ class OpenAIBackend(Backend):
             schema,
             finish_reason=finish_reason,
             max_tokens=max_tokens,
-            prompt_tokens=int(usage.get("prompt_tokens") or 0),
-            completion_tokens=int(usage.get("completion_tokens") or 0),
+            prompt_tokens=_token_count(usage, "prompt_tokens"),
+            completion_tokens=_token_count(usage, "completion_tokens"),
             latency_s=latency,
             backend=NAME,
             model=self.model,
@@ -161,7 +162,19 @@ class OpenAIBackend(Backend):
         """One HTTP exchange; every transport or protocol failure becomes a BackendError."""
         url = f"{self._base_url}{path}"
         try:
-            response = httpx.request(method, url, json=payload, headers=self._headers, timeout=timeout_s)
+            # httpx's timeout counts per read (a server dripping a byte at a time never trips
+            # it); the deadline counts for the whole exchange.
+            response = call_within(
+                lambda: httpx.request(method, url, json=payload, headers=self._headers, timeout=timeout_s),
+                timeout_s, f"{NAME} {method} {path}",
+            )
+        except DeadlineExceeded:
+            raise BackendTimeout(
+                f"{NAME}/{self.model or '?'} at {self._base_url} did not answer within {timeout_s:g} s",
+                timeout_s=timeout_s or 0.0,
+                backend=NAME,
+                model=self.model,
+            ) from None
         except httpx.ConnectError:
             raise BackendUnavailable(
                 f"no OpenAI-compatible server answers at {self._base_url} ({WHERE_HINT})",
@@ -269,3 +282,9 @@ def _response_format(mode: str, schema: Mapping[str, Any]) -> dict[str, Any]:
         "type": "json_schema",
         "json_schema": {"name": "answer", "schema": dict(schema), "strict": True},
     }
+
+
+def _token_count(usage: object, key: str) -> int:
+    """A token count from the answer's `usage`; 0 when the server sent none or nonsense."""
+    value = usage.get(key) if isinstance(usage, dict) else None
+    return value if isinstance(value, int) and not isinstance(value, bool) and value >= 0 else 0
