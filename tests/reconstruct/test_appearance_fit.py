@@ -7,16 +7,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from drivetwin.worlds.reconstruct.appearance import (
+from drivetwin.worlds.reconstruct.capture_views import SyntheticCapture, capture_ring
+from drivetwin.worlds.reconstruct.fit import FitConfig, FitError, FitProgress, fit_splats
+from drivetwin.worlds.reconstruct.lpips import LpipsWeightsError
+from drivetwin.worlds.reconstruct.photo_splats import (
     CAMERAS_FILE,
     REPORT_FILE,
     SPLATS_FILE,
     AppearanceResult,
     reconstruct_splats,
 )
-from drivetwin.worlds.reconstruct.capture_views import SyntheticCapture, capture_ring
-from drivetwin.worlds.reconstruct.fit import FitConfig, FitError, FitProgress, fit_splats
-from drivetwin.worlds.reconstruct.lpips import LpipsWeightsError
 from drivetwin.worlds.reconstruct.views import PosedImages
 from drivetwin.worlds.render.splats import Splats
 

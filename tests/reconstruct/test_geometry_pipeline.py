@@ -17,9 +17,9 @@ from drivetwin.worlds.reconstruct.collision import (
     add_collision_geoms,
     load_heightfield,
 )
-from drivetwin.worlds.reconstruct.geometry import GeometryResult, reconstruct_mesh
+from drivetwin.worlds.reconstruct.lidar_mesh import GeometryResult, reconstruct_mesh
 from drivetwin.worlds.reconstruct.pointclouds import PointCloudError
-from drivetwin.worlds.reconstruct.surface import SurfaceError, simplify_mesh
+from drivetwin.worlds.reconstruct.poisson import SurfaceError, simplify_mesh
 from scipy.spatial import ConvexHull, cKDTree
 
 VOXEL_M = 0.08

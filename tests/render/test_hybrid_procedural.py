@@ -6,13 +6,13 @@ import numpy as np
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.defaults import load_world
 from drivetwin.worlds.mujoco_adapter import MujocoWorld
-from drivetwin.worlds.render.appearance import world_points
 from drivetwin.worlds.render.hybrid import (
     HybridRenderer,
     asset_splats,
     default_camera,
     facade_splats,
 )
+from drivetwin.worlds.render.look import world_points
 from drivetwin.worlds.scene import Environment
 
 

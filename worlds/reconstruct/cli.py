@@ -94,7 +94,7 @@ def mesh_command(scans: tuple[Path, ...], out_dir: Path, kind: str, reference: P
 
     Example: drivetwin reconstruct mesh scan_0.ply scan_1.ply --out pkg/kerb_stone --kind object
     """
-    from .geometry import GeometryKind, reconstruct_mesh
+    from .lidar_mesh import GeometryKind, reconstruct_mesh
     from .pointclouds import PointCloudError
 
     try:
@@ -128,9 +128,9 @@ def splats_command(images_dir: Path, out_dir: Path, colmap_dir: Path | None, pos
 
     Example: drivetwin reconstruct splats photos/ --out pkg/kerb_stone --colmap photos/sparse/0
     """
-    from .appearance import reconstruct_splats
     from .colmap_model import load_colmap, run_sfm
     from .fit import FitConfig
+    from .photo_splats import reconstruct_splats
     from .views import load_poses_json
 
     if colmap_dir is not None and poses_json is not None:

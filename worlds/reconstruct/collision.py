@@ -17,7 +17,7 @@ import mujoco
 import numpy as np
 import numpy.typing as npt
 import trimesh
-from drivetwin.worlds.reconstruct import surface
+from drivetwin.worlds.reconstruct import poisson
 from drivetwin.worlds.reconstruct.pointclouds import PointCloud
 from scipy import ndimage
 from scipy.interpolate import griddata
@@ -222,12 +222,12 @@ def closed_object_mesh(cloud: PointCloud, *, floor_m: float, voxel_m: float) -> 
         None,
         np.concatenate([cloud.normals, np.tile([0.0, 0.0, -1.0], (len(floor), 1))]),
     )
-    mesh, _ = surface.poisson_surface(solid, depth=surface.poisson_depth(solid, voxel_m))
+    mesh, _ = poisson.poisson_surface(solid, depth=poisson.poisson_depth(solid, voxel_m))
     low[2] = floor_m - voxel_m
     import open3d as o3d
 
     mesh = mesh.crop(o3d.geometry.AxisAlignedBoundingBox(low, high))
-    closed: trimesh.Trimesh = surface.to_trimesh(surface.clean_mesh(mesh))
+    closed: trimesh.Trimesh = poisson.to_trimesh(poisson.clean_mesh(mesh))
     return closed
 
 
@@ -242,7 +242,7 @@ def convex_parts(
     if max_hulls < 1:
         raise CollisionError(f"max_hulls must be at least 1, got {max_hulls}")
     if len(mesh.faces) > COACD_INPUT_FACES:
-        mesh = surface.to_trimesh(surface.simplify_mesh(surface.to_open3d_mesh(mesh), COACD_INPUT_FACES))
+        mesh = poisson.to_trimesh(poisson.simplify_mesh(poisson.to_open3d_mesh(mesh), COACD_INPUT_FACES))
     coacd.set_log_level("error")
     parts = coacd.run_coacd(
         coacd.Mesh(np.asarray(mesh.vertices, np.float64), np.asarray(mesh.faces, np.int32)),

@@ -37,7 +37,8 @@ from drivetwin.worlds.scene import Environment, Scene
 
 from ._numba_post import blend_layers
 from ._numba_raster import composite_splats, project_splats
-from .appearance import (
+from .camera import Camera
+from .look import (
     HEADLAMP_RGB,
     LAMP_RGB,
     Lamp,
@@ -48,8 +49,7 @@ from .appearance import (
     look_of,
     sky_image,
 )
-from .appearance import world_points as _world_points
-from .camera import Camera
+from .look import world_points as _world_points
 from .mesh_pass import MeshImage, MeshPass
 from .procedural import asset_splats, facade_splats
 from .rasterize import (

@@ -18,7 +18,7 @@ from . import _numba_post
 from .camera import Camera
 
 if TYPE_CHECKING:
-    from .appearance import Lamp, Look
+    from .look import Lamp, Look
 
 __all__ = ["finish", "lamp_irradiance", "sky_image", "world_points"]
 

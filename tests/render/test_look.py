@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 from drivetwin.worlds.defaults import load_world
 from drivetwin.worlds.mujoco_adapter import MujocoWorld
-from drivetwin.worlds.render.appearance import finish, look_of, sky_image, sun_elevation_azimuth
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.hybrid import HybridRenderer, chase_camera, default_camera
+from drivetwin.worlds.render.look import finish, look_of, sky_image, sun_elevation_azimuth
 from drivetwin.worlds.scene import Environment, Lighting, Weather
 
 WIDTH, HEIGHT = 160, 90

@@ -27,7 +27,7 @@ import numpy as np
 import numpy.typing as npt
 import open3d as o3d
 import trimesh
-from drivetwin.worlds.reconstruct import collision, geometry_metrics, registration, surface
+from drivetwin.worlds.reconstruct import collision, geometry_metrics, poisson, registration
 from drivetwin.worlds.reconstruct.pointclouds import PointCloud, PointCloudError, read_point_cloud, write_ply
 
 __all__ = ["GeometryKind", "GeometryResult", "reconstruct_clouds", "reconstruct_mesh"]
@@ -153,7 +153,7 @@ def reconstruct_clouds(
         cloud = registration.estimate_normals(cloud, voxel_m=voxel_m, viewpoints=viewpoints)
     points_path = write_ply(cloud, out / "points.ply")
     with timer.stage("surface"):
-        mesh, stats = surface.reconstruct_surface(cloud, voxel_m=voxel_m, triangle_budget=triangle_budget)
+        mesh, stats = poisson.reconstruct_surface(cloud, voxel_m=voxel_m, triangle_budget=triangle_budget)
     mesh_path = folder / "mesh.obj"
     mesh.export(mesh_path, file_type="obj")
     result = GeometryResult(out, points_path, mesh_path, out / "geometry_report.json", mesh, cloud)
@@ -223,7 +223,7 @@ def _report(
     result: GeometryResult,
     kind: str,
     timer: _Timer,
-    stats: surface.SurfaceStats,
+    stats: poisson.SurfaceStats,
     scans: Sequence[PointCloud],
     merged: PointCloud,
     transforms: registration.Registration,
