@@ -40,7 +40,7 @@ def test_a_full_disk_refuses_the_edit_and_leaves_no_torn_line(small_disk, campus
             assert session.scene == before
             break
     assert refused is not None, "the 64 kB disk never filled"
-    with pytest.raises(SessionError, match="disk is full|nothing to undo"):
+    with pytest.raises(SessionError, match=r"disk is full|nothing to undo"):
         for _ in range(200):  # undo refuses rather than half-writes (a small event may still fit)
             session.undo()
     data = path.read_bytes()
