@@ -1296,6 +1296,37 @@ case(S, "indirect", "bikes_now", "How many bikes are there now, could you check?
      setup=[turn("Add three bicycles at the bus stop.",
                  call("add_asset", category="bicycle", count=3, location=at("at", "bus stop")), planned=True)])
 
+# A few more wordings: a dozen, a clock time in words, a building by what it holds, scopes -------
+case(A, "direct", "dozen_cones_crossroads", "Add a dozen cones at the crossroads.",
+     added("traffic_cone", 12, near("traffic_cone", "main intersection", 1.0)),
+     [call("add_asset", category="traffic_cone", count=12, location=at("at", "main intersection"))])
+case(A, "indirect", "bench_cafeteria_building", "I'd like a bench near the building with the cafeteria.",
+     added("bench", 1, near("bench", "Student Union entrance", 10.0)),
+     [call("add_asset", category="bench", location=at("at", "Student Union entrance"))])
+case(A, "direct", "car_8m_ahead_of_bus", "Add a car 8 m in front of the bus.",
+     added("passenger_car", 1, rel("passenger_car", "in_front_of", "bus_1", 16.0, tolerance_deg=30.0)),
+     [call("add_asset", category="passenger_car", location=at("in_front_of", "bus_1", distance=8.0))],
+     setup=[turn("Put a shuttle bus at the bus stop.", call("add_asset", category="bus", location=at("at", "bus stop")),
+                 planned=True)])
+case(A, "vague", "more_cones", "more cones",
+     [accepted(), delta("traffic_cone", 1, 20), only("traffic_cone")],
+     [call("add_asset", category="traffic_cone", count=2, location=at("in_front_of", "Library entrance"))],
+     setup=[turn("Put two cones in front of the library entrance.",
+                 call("add_asset", category="traffic_cone", count=2, location=at("in_front_of", "Library entrance")),
+                 planned=True)])
+case(R, "vague", "quieter_bus_stop", "make it quieter around the bus stop",
+     removed("pedestrian", (1, 4)), [call("remove_assets", category="pedestrian", count=2)],
+     setup=[turn("Four people waiting at the bus stop, please.",
+                 call("add_asset", category="pedestrian", count=4, location=at("at", "bus stop")))])
+case(L, "indirect", "quarter_to_eight", "Could you set the clock to a quarter to eight in the morning?",
+     sky(env(time_from="07:40", time_to="07:50")), [call("set_time_of_day", time="07:45")])
+case(L, "direct", "lot_b_cars_silver_not_suv", "Paint the cars in lot B silver, but not the SUV.",
+     [accepted(), looks("passenger_car", colour="silver", scope="all"), kept("suv_1"), only("passenger_car")],
+     [call("set_asset_appearance", assets=["passenger_car_1", "passenger_car_2"], colour="silver")])
+case(S, "indirect", "in_the_egos_way", "Is anything in the ego's way within the next 40 metres?",
+     question(says("rubble", "cement_rubble_1", "debris", "concrete")),
+     [call("find_assets", near="ego", within=40.0)], setup=[RUBBLE_AHEAD])
+
 def write(path: Path = OUT) -> int:
     """Write the cases as JSON Lines; returns how many."""
     lines = [json.dumps(c, separators=(",", ":")) for c in CASES]
