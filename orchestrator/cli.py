@@ -9,46 +9,17 @@ from pathlib import Path
 from typing import Any
 
 import click
-from drivetwin.orchestrator.config import ConfigError, Settings, load_settings
-from drivetwin.orchestrator.planning import Planner
-from drivetwin.orchestrator.planning.registry import UnknownPlannerError, make_planner
 from drivetwin.orchestrator.repl import ChatOptions, ScriptFileError, dump_tools, interactive, read_script, run_lines
 from drivetwin.orchestrator.session import Session
+from drivetwin.orchestrator.session_setup import command_settings as _settings
+from drivetwin.orchestrator.session_setup import open_live_session
+from drivetwin.orchestrator.session_setup import planner_or_rules as _fallback_planner
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.defaults import list_worlds, load_world
 from drivetwin.worlds.scene import scene_json_schema
 
 # Simulated seconds between scripted prompts, so each frame shows the world moving on.
 SCRIPT_SECONDS_PER_STEP = 1.0
-
-
-def _settings(planner: str | None = None, backend: str | None = None, model: str | None = None) -> Settings:
-    """This command's Settings: its flags over environment, config file and defaults."""
-    try:
-        return load_settings(planner=planner, backend=backend, model=model)
-    except ConfigError as exc:
-        raise click.ClickException(str(exc)) from exc
-
-
-def _planner(settings: Settings) -> Planner:
-    name = settings.planner
-    try:
-        return make_planner(name, **settings.planner_options())
-    except UnknownPlannerError as exc:
-        raise click.UsageError(str(exc)) from exc
-    except Exception as exc:  # a backend that cannot start: say so in one line
-        raise click.ClickException(f"planner {name!r} cannot start: {exc}") from exc
-
-
-def _fallback_planner(settings: Settings) -> Planner:
-    """The asked planner, or the rule planner with a one-line note when it cannot start."""
-    try:
-        return _planner(settings)
-    except click.ClickException as exc:
-        if settings.planner == "rules":
-            raise
-        click.echo(f"note: {exc.message}; using the rule-based planner", err=True)
-        return make_planner("rules")
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -93,28 +64,11 @@ def chat(world: str, planner_name: str | None, backend: str | None, model: str |
 
     Example: drivetwin chat --world campus --script demo.txt --fail-fast
     """
-    from drivetwin.orchestrator.live import LiveWorld
-
     settings = _settings(planner_name, backend, model)
-    from drivetwin.orchestrator.chat_journal import open_chat_session
-
-    planner = _fallback_planner(settings)
-    registry = ToolRegistry.default(isolate=isolate_plugins)
-    for problem in registry.problems:
-        click.echo(f"warning: plugin {problem.entry_point} skipped: {problem.error}", err=True)
-    session = open_chat_session(world, planner, registry, settings.state_dir, journal, resume,
-                                can_ask=script is None and sys.stdin.isatty())
-    try:
-        enhance = None
-        if enhance_model:
-            from drivetwin.worlds.enhance import EnhanceSettings
-
-            enhance = EnhanceSettings(model=enhance_model)
-        live = LiveWorld(session, simulate=not no_sim, background=script is None, enhance=enhance)
-    except ImportError as exc:
-        raise click.ClickException(f"--enhance needs the enhance extra: pip install 'drivetwin[enhance]' ({exc})") from exc
-    except RuntimeError as exc:  # EnhancerError: weights missing or unreadable
-        raise click.ClickException(str(exc)) from exc
+    opened = open_live_session(world, settings, journal=journal, resume=resume,
+                               can_ask=script is None and sys.stdin.isatty(), isolate_plugins=isolate_plugins,
+                               simulate=not no_sim, background=script is None, enhance_model=enhance_model)
+    session, live = opened.session, opened.live
     options = ChatOptions(out_dir=out_dir, explain=explain, fail_fast=fail_fast,
                           render_each=render_each, render=live.render)
     if out_dir:
