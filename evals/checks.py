@@ -29,6 +29,7 @@ from drivetwin.evals.check_base import (
 from drivetwin.evals.outcome import (
     Outcome,
 )
+from drivetwin.evals.scenario_checks import ScenarioCheck
 from drivetwin.worlds.scene import AssetInstance, WeatherKind
 from pydantic import AfterValidator, Field
 
@@ -199,7 +200,8 @@ Check = Annotated[
     | ExistsCheck
     | UnchangedExceptCheck
     | AnswerContainsCheck
-    | StatusCheck,
+    | StatusCheck
+    | ScenarioCheck,
     Field(discriminator="kind"),
 ]
 CHECK_KINDS: tuple[str, ...] = (
@@ -218,4 +220,5 @@ CHECK_KINDS: tuple[str, ...] = (
     "unchanged_except",
     "answer_contains",
     "status",
+    "scenario",
 )
