@@ -10,7 +10,7 @@ from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from drivetwin.orchestrator.session import Session
+from drivetwin.orchestrator.session import Session, SessionError
 from drivetwin.worlds.scene import Scene
 
 if TYPE_CHECKING:
@@ -61,7 +61,7 @@ class LiveWorld:
     def render(self, session: Session, target: Path) -> list[Path]:
         """Write a frame of the live world to `target` (PNG), with depth and LIDAR beside it."""
         if self.sim is None:
-            raise RuntimeError("rendering needs the simulation (run without --no-sim)")
+            raise SessionError("rendering needs the simulation (run without --no-sim)")
         from drivetwin.worlds.render.hybrid import HybridRenderer, chase_camera, save_frame
         from drivetwin.worlds.sensors import Lidar, save_pointcloud
 

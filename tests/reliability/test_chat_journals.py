@@ -76,3 +76,18 @@ def test_rotation_keeps_the_newest_journals_and_any_in_use(tmp_path, campus, reg
     remaining = {p.name for p in session_journals(folder)}
     assert len(deleted) == 3 and live.journal.path.name in remaining and len(remaining) == 3
     live.close()
+
+
+def test_a_person_at_a_terminal_is_asked_and_can_resume_the_unclean_session(state, campus, registry, monkeypatch):
+    import io
+
+    from drivetwin.orchestrator.chat_journal import open_chat_session
+
+    crashed = journal_folder(state) / "session-20250101-000000-1.jsonl"
+    session = Session(campus, RulePlanner(), registry, journal_path=crashed)
+    assert session.submit("make it snow").ok
+    session.journal.close()  # no end event
+    monkeypatch.setattr("sys.stdin", io.StringIO("y\n"))
+    resumed = open_chat_session("campus", RulePlanner(), registry, state, None, False, can_ask=True)
+    assert resumed.journal.path == crashed and resumed.scene.environment.weather.kind == "snow"
+    resumed.close()

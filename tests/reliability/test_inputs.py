@@ -150,3 +150,11 @@ def test_a_malformed_usage_gives_zero_token_counts_not_a_traceback(serve, usage)
     handler = type("Answer", (_Answer,), {"usage": usage})
     result = OpenAIBackend("m", base_url=serve(handler), timeout_s=10.0).chat(PROMPT)
     assert result.text == "hi" and result.prompt_tokens == 0 and result.completion_tokens == 0
+
+
+def test_render_without_the_simulation_is_a_one_line_error(tmp_path, monkeypatch):
+    monkeypatch.setenv("DRIVETWIN_STATE", str(tmp_path / "state"))
+    script = tmp_path / "script.txt"
+    script.write_text("render frame.png\n")
+    result = CliRunner().invoke(main, ["chat", "--planner", "rules", "--no-sim", "--script", str(script)])
+    assert "error: rendering needs the simulation" in result.output and "Traceback" not in result.output

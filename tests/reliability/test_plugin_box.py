@@ -115,3 +115,13 @@ def test_a_good_plugin_still_works_in_its_box(plugin_dir, campus, tmp_path):
     report = session.submit("add a cone through the plugin")
     assert report.ok and session.scene.count("traffic_cone") == campus.count("traffic_cone") + 1
     session.close()
+
+
+def test_a_plugin_that_exits_at_import_does_not_stop_a_drivetwin_command(plugin_dir):
+    from click.testing import CliRunner
+    from drivetwin.orchestrator.cli import main
+
+    install_plugin(plugin_dir, "exiting_plugin", module_level="sys.exit(1)")
+    result = CliRunner().invoke(main, ["tools", "list"])
+    assert result.exit_code == 0 and "add_asset" in result.output
+    assert "exiting_plugin" in result.output and "SystemExit" in result.output
