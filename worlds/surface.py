@@ -1,7 +1,9 @@
 """What lies under a point of a world: a building, a lane, paving, a sidewalk or plain ground.
 
 Workers use these queries for their placement rules ("a car goes on something drivable",
-"nothing inside a building") and for positions relative to lanes and sidewalks.
+"nothing inside a building") and for positions relative to lanes and sidewalks. The queries
+about a scene look only at the parts its spatial index (`drivetwin.worlds.surface_index`)
+finds near the point, and answer exactly as a scan of every part would.
 """
 
 from __future__ import annotations
@@ -13,6 +15,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from drivetwin.worlds.scene import Lane, Scene
+from drivetwin.worlds.surface_index import surface_index
 
 Point = tuple[float, float]
 SurfaceKind = Literal["building", "lane", "crossing", "paved", "sidewalk", "ground"]
@@ -97,17 +100,40 @@ def _on_strip(x: float, y: float, polyline: Sequence[Point], half_width: float) 
 
 def lane_at(scene: Scene, x: float, y: float) -> Lane | None:
     """The lane whose strip contains (x, y), the nearest centreline winning."""
+    lanes = scene.roads.lanes
     best: tuple[float, Lane] | None = None
-    for lane in scene.roads.lanes:
+    for k in surface_index(scene).lanes.near(x, y):
+        lane = lanes[k]
         near = nearest_on_polyline(x, y, lane.centreline)
         if near.distance <= lane.width / 2 and (best is None or near.distance < best[0]):
             best = (near.distance, lane)
     return best[1] if best else None
 
 
+def nearest_lane(scene: Scene, x: float, y: float) -> Lane | None:
+    """The lane whose centreline passes nearest to (x, y) (the first in scene order on a tie)."""
+    lanes = scene.roads.lanes
+    if not lanes:
+        return None
+    # Lanes in order of their boxes' distance; a box nearer than the best lane so far may
+    # hold a nearer lane, a box further away cannot.
+    bounds = surface_index(scene).lane_lines.box_distances(x, y)
+    best: tuple[float, int] | None = None
+    for k in (int(i) for i in bounds.argsort(kind="stable")):
+        if best is not None and bounds[k] > best[0]:
+            break
+        distance = nearest_on_polyline(x, y, lanes[k].centreline).distance
+        if best is None or (distance, k) < best:
+            best = (distance, k)
+    assert best is not None
+    return lanes[best[1]]
+
+
 def building_at(scene: Scene, x: float, y: float, margin: float = 0.0) -> str | None:
     """The name of the building whose footprint (grown by `margin`) contains (x, y)."""
-    for building in scene.buildings:
+    buildings = scene.buildings
+    for k in surface_index(scene).buildings.near(x, y, max(margin, 0.0)):
+        building = buildings[k]
         if point_in_polygon(x, y, building.footprint):
             return building.name
         if margin > 0.0:
@@ -119,16 +145,19 @@ def building_at(scene: Scene, x: float, y: float, margin: float = 0.0) -> str | 
 
 def surface_at(scene: Scene, x: float, y: float) -> SurfaceKind:
     """What the ground at (x, y) is, the most restrictive kind winning."""
+    index, roads = surface_index(scene), scene.roads
     if building_at(scene, x, y):
         return "building"
-    for crossing in scene.roads.crossings:
+    for k in index.crossings.near(x, y):
+        crossing = roads.crossings[k]
         if _on_strip(x, y, [crossing.start, crossing.end], crossing.width / 2):
             return "crossing"
     if lane_at(scene, x, y) is not None:
         return "lane"
-    if any(point_in_polygon(x, y, area.polygon) for area in scene.roads.paved):
+    if any(point_in_polygon(x, y, roads.paved[k].polygon) for k in index.paved.near(x, y)):
         return "paved"
-    if any(_on_strip(x, y, walk.polyline, walk.width / 2) for walk in scene.roads.sidewalks):
+    if any(_on_strip(x, y, roads.sidewalks[k].polyline, roads.sidewalks[k].width / 2)
+           for k in index.sidewalks.near(x, y)):
         return "sidewalk"
     return "ground"
 
