@@ -1,5 +1,5 @@
-"""Benchmark: planning latency per prompt for the rule planner, each embedded model through the
-LLM hierarchy, and the hybrid default, over the paper's prompts; prints median and p95 and
+"""Benchmark: planning latency per prompt for the rule planner, the retrieval planner, each
+embedded model through the LLM hierarchy, and the hybrid default, over the paper's prompts; prints median and p95 and
 writes JSON.
 
     python -m drivetwin.orchestrator.bench_planners --repeats 3 --out bench_planners.json
@@ -35,6 +35,7 @@ VAGUE_PROMPTS = (
 # name -> (planner name, options)
 CONFIGS: dict[str, tuple[str, dict[str, Any]]] = {
     "rules": ("rules", {}),
+    "retrieval": ("retrieval", {}),
     "hybrid/smollm2-135m": ("hybrid", {"backend": "embedded", "model": "smollm2-135m"}),
     "llm/smollm2-135m": ("llm", {"backend": "embedded", "model": "smollm2-135m"}),
     "llm/gemma3-270m": ("llm", {"backend": "embedded", "model": "gemma3-270m"}),

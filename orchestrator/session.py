@@ -260,6 +260,9 @@ class Session:
         self._record("accept", txn=entry.txn)
         entry.accepted = True
         self.memory.mark_last("accepted")
+        from drivetwin.orchestrator.planning.retrieval import learn_accepted  # bank code loads only when used
+
+        learn_accepted(self.planner, self._scene, entry.prompt, self.memory)  # learns how this person speaks
         return f"accepted change {entry.txn}: {entry.prompt}"
 
     def reject(self) -> list[str]:

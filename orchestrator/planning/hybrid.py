@@ -1,14 +1,15 @@
-"""The default planner: rules first, the LLM hierarchy when the rules are unsure.
+"""The default planner: independent planners, combined by agreement rather than a fixed order.
 
-A plain request ("make it rain") is planned by the rule planner in milliseconds; when its
-confidence is at least RULES_CONFIDENT and a dry run accepts its calls, that is the plan
-(the fast path, no LLM). A vague or misspelled request ("put some pylons by the big
-building") goes to the LLM hierarchy, whose calls are dry-run and retried with the
-refusal like any other. Which path was taken, and why, is the first line of the trace.
-
-How unsure the rules may be before the LLM takes over depends on the model: a small model
-(under SMALL_MODEL_PARAMETERS) spoils more unsure rule plans than it repairs, so with one the
-LLM only gets what the rules cannot plan at all (or what a dry run refuses).
+The rule planner and the retrieval planner (nearest bank examples, adapted) each plan the
+request in milliseconds. When their plans agree (the same calls once defaults are filled in,
+or the same dry-run outcome), that is the plan. When they disagree, a candidate that is
+clearly surer wins (RULES_CONFIDENT for the rules, RETRIEVAL_CONFIDENT for retrieval, with
+the other below its own bar); otherwise the LLM hierarchy is asked (it is slow, so only then)
+and a candidate it agrees with wins; failing that the person is asked one short question with
+the readings in plain words (`Plan.question`). The losing candidates go in `Plan.alternatives`.
+When only the rules can plan it, the old rule applies: a sure rule plan is used, an unsure one
+goes to the LLM unless the model is small (SMALL_MODEL_PARAMETERS), whose edits spoil more
+unsure rule plans than they repair. Which path was taken, and why, is the first trace line.
 """
 
 from __future__ import annotations
@@ -16,8 +17,10 @@ from __future__ import annotations
 import time
 from typing import Any
 
-from drivetwin.orchestrator.planning.base import Plan, PlanContext, Planner, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, Planner, PlanningError, Question, Reading, TraceStep
 from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
+from drivetwin.orchestrator.planning.readings import canonical, describe, dry_run, same_outcome
+from drivetwin.orchestrator.transaction import Outcome
 
 # Rule plans at least this sure skip the LLM. The rule planner scores 0.95 for a prompt whose
 # every content word it knows, 0.15 less per unknown word and 0.2 less per guess (a repaired
@@ -31,10 +34,17 @@ RULES_FALLBACK = 0.5
 # Below this many parameters, an accepted rule plan is kept however unsure it is.
 SMALL_MODEL_PARAMETERS = 1_000_000_000
 RULES_CONFIDENT_SMALL_MODEL = 0.0
+# A retrieval plan this sure (similarity less its slot penalties) stands on its own: the
+# nearest example is a close paraphrase and every name in the request found its place.
+RETRIEVAL_CONFIDENT = 0.8
+# Below this, a retrieval plan is not offered as a reading to choose from.
+RETRIEVAL_READING = 0.45
+# Readings offered in a clarifying question (the interface allows 1-3).
+MAX_READINGS = 3
 
 
 class HybridPlanner:
-    """Rule planner fast path, LLM hierarchy slow path; a Planner the eval harness can name."""
+    """Rules, retrieval and (when needed) the LLM hierarchy, combined by agreement."""
 
     name = "hybrid"
 
@@ -44,10 +54,13 @@ class HybridPlanner:
         llm: LlmPlanner,
         confident: float | None = None,
         fallback: float = RULES_FALLBACK,
+        retrieval: Planner | None = None,
     ) -> None:
-        """`confident`: how sure a rule plan must be to skip the LLM; None: by the model's size."""
+        """`confident`: how sure a rule plan must be to skip the LLM; None: by the model's size.
+        `retrieval`: the second independent planner; None plans with rules and LLM only."""
         self.rules = rules
         self.llm = llm
+        self.retrieval = retrieval
         self.confident = confident
         self.fallback = fallback
         self._by_model_size: float | None = None
@@ -71,24 +84,69 @@ class HybridPlanner:
             return RULES_CONFIDENT  # sure enough whatever the model: no need to open it
         return self.confidence_needed()
 
-    def plan(self, prompt: str, context: PlanContext) -> Plan:
-        """The rule plan when it is sure and accepted, else the LLM plan (or a rule fallback)."""
-        started = time.perf_counter()
-        rule_plan: Plan | None = None
-        why: str
+    def _candidate(
+        self, planner: Planner, prompt: str, context: PlanContext
+    ) -> tuple[Plan | None, Outcome | None, str]:
         try:
-            rule_plan = self.rules.plan(prompt, context)
+            plan = planner.plan(prompt, context)
         except PlanningError as exc:
-            why = f"rules could not plan it ({exc})"
-        else:
-            refusal = context.check(rule_plan.calls) if rule_plan.calls else None
-            if refusal is not None:
-                why = f"a dry run refused the rule plan: {refusal}"
-                rule_plan = None
-            elif rule_plan.confidence >= (needed := self._needed(rule_plan.confidence)):
-                return self._mark(rule_plan, "fast", started, f"rules confidence {rule_plan.confidence:.2f} >= {needed}")
-            else:
-                why = f"rules confidence {rule_plan.confidence:.2f} < {needed}"
+            return None, None, f"{planner.name} could not plan it ({exc})"
+        if not plan.calls:
+            return plan, None, f"{planner.name}: no calls"
+        outcome = dry_run(plan.calls, context.registry, context.scene)
+        if isinstance(outcome, str):
+            return None, None, f"a dry run refused the {planner.name} plan: {outcome}"
+        return plan, outcome, f"{planner.name} confidence {plan.confidence:.2f}"
+
+    def agree(self, a: Plan, a_run: Outcome | None, b: Plan, b_run: Outcome | None, context: PlanContext) -> bool:
+        """Whether two candidates mean the same: equal calls up to defaults, or equal outcomes."""
+        if canonical(a.calls, context.registry) == canonical(b.calls, context.registry):
+            return True
+        return a_run is not None and b_run is not None and same_outcome(a_run, b_run)
+
+    def plan(self, prompt: str, context: PlanContext) -> Plan:
+        """The agreed plan, a clearly surer one, the LLM's tie-break, or a clarifying question."""
+        started = time.perf_counter()
+        rule_plan, rule_run, rule_why = self._candidate(self.rules, prompt, context)
+        if self.retrieval is None:
+            return self._rules_then_llm(prompt, context, rule_plan, rule_why, started)
+        found, found_run, found_why = self._candidate(self.retrieval, prompt, context)
+        why = f"{rule_why}; {found_why}"
+        if rule_plan is None or found is None or not rule_plan.calls or not found.calls:
+            if rule_plan is not None:
+                return self._rules_then_llm(prompt, context, rule_plan, why, started, [found] if found else [])
+            if found is not None and found.confidence >= RETRIEVAL_CONFIDENT:
+                return self._mark(found, "retrieval", started, f"{why}; retrieval alone is sure")
+            return self._llm_or_ask(prompt, context, [found] if found else [], why, started)
+        if self.agree(rule_plan, rule_run, found, found_run, context):
+            best = rule_plan.model_copy(update={"confidence": max(rule_plan.confidence, found.confidence)})
+            return self._mark(best, "agree", started, f"{why}; rules and retrieval agree")
+        rules_sure = rule_plan.confidence >= RULES_CONFIDENT
+        found_sure = found.confidence >= RETRIEVAL_CONFIDENT
+        if rules_sure and not found_sure:
+            return self._mark(rule_plan, "fast", started, f"{why}; they disagree, rules clearly surer", [found])
+        if found_sure and not rules_sure:
+            return self._mark(
+                found, "retrieval", started, f"{why}; they disagree, retrieval clearly surer", [rule_plan]
+            )
+        return self._llm_or_ask(prompt, context, [rule_plan, found], f"{why}; they disagree", started)
+
+    def _rules_then_llm(
+        self,
+        prompt: str,
+        context: PlanContext,
+        rule_plan: Plan | None,
+        why: str,
+        started: float,
+        others: list[Plan] | None = None,
+    ) -> Plan:
+        """Only the rules could plan it: the sure rule plan, else the LLM, else a fallback."""
+        if rule_plan is not None and (
+            not rule_plan.calls or rule_plan.confidence >= (needed := self._needed(rule_plan.confidence))
+        ):
+            return self._mark(rule_plan, "fast", started, f"{why}; rules plan used", others)
+        if rule_plan is not None:
+            why = f"{why}; rules confidence {rule_plan.confidence:.2f} < {needed}"
         try:
             llm_plan = self.llm.plan(prompt, context)
         except PlanningError as exc:
@@ -96,15 +154,65 @@ class HybridPlanner:
                 return self._mark(rule_plan, "fallback", started, f"{why}; the LLM failed ({exc}); using the rule plan")
             raise PlanningError(f"{exc} (rule planner: {why})") from exc
         rule_steps = rule_plan.trace if rule_plan is not None else []
-        return self._mark(llm_plan, "llm", started, why, rule_steps)
+        return self._mark(llm_plan, "llm", started, why, [p for p in [rule_plan] if p is not None], rule_steps)
 
-    def _mark(self, plan: Plan, path: str, started: float, why: str, before: list[TraceStep] | None = None) -> Plan:
+    def _llm_or_ask(self, prompt: str, context: PlanContext, candidates: list[Plan], why: str, started: float) -> Plan:
+        """Candidates that disagree (or none sure): the LLM's plan breaks the tie, else ask."""
+        try:
+            llm_plan: Plan | None = self.llm.plan(prompt, context)
+        except PlanningError as exc:
+            llm_plan, why = None, f"{why}; the LLM failed ({exc})"
+        if llm_plan is not None:
+            llm_run = dry_run(llm_plan.calls, context.registry, context.scene)
+            for candidate in candidates:
+                run = dry_run(candidate.calls, context.registry, context.scene)
+                if self.agree(
+                    candidate,
+                    None if isinstance(run, str) else run,
+                    llm_plan,
+                    None if isinstance(llm_run, str) else llm_run,
+                    context,
+                ):
+                    others = [c for c in candidates if c is not candidate]
+                    return self._mark(
+                        candidate, "tie-break", started, f"{why}; the LLM agrees with {candidate.planner}", others
+                    )
+            if not candidates:
+                return self._mark(llm_plan, "llm", started, why)
+            candidates = [*candidates, llm_plan]
+        readings = [
+            c for c in candidates if c.calls and (c.planner != "retrieval" or c.confidence >= RETRIEVAL_READING)
+        ]
+        if not readings:
+            raise PlanningError(f"I did not understand the request ({why})")
+        question = Question(
+            text="I am not sure what you mean. Did you mean:",
+            readings=[Reading(text=describe(c.calls), calls=c.calls) for c in readings[:MAX_READINGS]],
+        )
+        step = TraceStep(
+            level="hybrid", input="path: ask", output=f"{why}; asking", seconds=time.perf_counter() - started
+        )
+        return Plan(
+            calls=[], planner=self.name, confidence=0.0, question=question, trace=[step], alternatives=question.readings
+        )
+
+    def _mark(
+        self,
+        plan: Plan,
+        path: str,
+        started: float,
+        why: str,
+        others: list[Plan] | None = None,
+        before: list[TraceStep] | None = None,
+    ) -> Plan:
         step = TraceStep(level="hybrid", input=f"path: {path}", output=why, seconds=time.perf_counter() - started)
+        alternatives = [Reading(text=describe(o.calls), calls=o.calls) for o in others or [] if o.calls]
         return plan.model_copy(
             update={
                 "planner": self.name,
                 "trace": [step, *(before or []), *plan.trace],
                 "prompt_version": _version(plan, path),
+                "alternatives": [*plan.alternatives, *alternatives],
             }
         )
 
@@ -115,12 +223,13 @@ def _version(plan: Plan, path: str) -> str | None:
 
 
 def make_hybrid(**options: Any) -> HybridPlanner:
-    """The hybrid planner with the rule planner and an LLM hierarchy on `options`' backend;
+    """The hybrid planner: rules, retrieval and an LLM hierarchy on `options`' backend;
     option `rules_confident` fixes the hand-off threshold (default: by the model's size)."""
+    from drivetwin.orchestrator.planning.retrieval import RetrievalPlanner
     from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 
     confident = options.pop("rules_confident", None)
-    return HybridPlanner(RulePlanner(), make_llm(**options), confident=confident)
+    return HybridPlanner(RulePlanner(), make_llm(**options), confident=confident, retrieval=RetrievalPlanner())
 
 
 def make_llm(**options: Any) -> LlmPlanner:
@@ -128,4 +237,11 @@ def make_llm(**options: Any) -> LlmPlanner:
     return LlmPlanner(**options)
 
 
-__all__ = ["RULES_CONFIDENT", "SMALL_MODEL_PARAMETERS", "HybridPlanner", "make_hybrid", "make_llm"]
+__all__ = [
+    "RETRIEVAL_CONFIDENT",
+    "RULES_CONFIDENT",
+    "SMALL_MODEL_PARAMETERS",
+    "HybridPlanner",
+    "make_hybrid",
+    "make_llm",
+]

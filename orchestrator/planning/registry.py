@@ -23,13 +23,24 @@ def _llm(**options: Any) -> Planner:
     return make_llm(**options)
 
 
+def _retrieval(**options: Any) -> Planner:
+    from drivetwin.orchestrator.planning.retrieval import RetrievalPlanner
+
+    return RetrievalPlanner()
+
+
 def _hybrid(**options: Any) -> Planner:
     from drivetwin.orchestrator.planning.hybrid import make_hybrid
 
     return make_hybrid(**options)
 
 
-BUILTIN: dict[str, Callable[..., Planner]] = {"rules": _rules, "llm": _llm, "hybrid": _hybrid}
+BUILTIN: dict[str, Callable[..., Planner]] = {
+    "rules": _rules,
+    "retrieval": _retrieval,
+    "llm": _llm,
+    "hybrid": _hybrid,
+}
 
 
 class UnknownPlannerError(LookupError):

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from drivetwin.orchestrator.backends import Backend, Message
 from drivetwin.orchestrator.planning.base import PlanContext, PlanningError, TraceStep
 from drivetwin.orchestrator.planning.grounding import Grounder, Match
+from drivetwin.orchestrator.planning.llm.demos import jr_demos
 from drivetwin.orchestrator.planning.llm.jr_schema import WorldNames, call_schema, signature
 from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S, Answer, Requirement, ask
 from drivetwin.prompts.templates import as_json, jr_examples, render
@@ -122,7 +123,9 @@ class JrManager:
         self.grounder = grounder
         self.timeout_s = timeout_s
 
-    def messages(self, requirement_text: str, grounding: Grounding, context: PlanContext) -> list[Message]:
+    def messages(
+        self, requirement_text: str, grounding: Grounding, context: PlanContext, prompt: str = ""
+    ) -> list[Message]:
         tools = context.registry.family(self.family)
         hints = [f"Grounded: {'; '.join(grounding.lines())}"] if grounding.lines() else []
         system = render(
@@ -132,12 +135,15 @@ class JrManager:
             hints="\n".join(hints),
         )
         messages: list[Message] = [Message(role="system", content=system)]
-        bank = jr_examples().get(self.family, ())
-        chosen = self.grounder.nearest(requirement_text, [e.requirement for e in bank], JR_EXAMPLES)
+        demos = [(d.requirement, d.call) for d in jr_demos(self.family, prompt or requirement_text, context, JR_EXAMPLES)]
+        if not demos:  # no bank, or nothing of this family near: the static examples
+            bank = jr_examples().get(self.family, ())
+            chosen = self.grounder.nearest(requirement_text, [e.requirement for e in bank], JR_EXAMPLES)
+            demos = [(bank[i].requirement, bank[i].call) for i in chosen]
         # Most similar last, nearest the real requirement, where small models copy from.
-        for example in (bank[i] for i in reversed(chosen)):
-            messages.append(Message(role="user", content=example.requirement))
-            messages.append(Message(role="assistant", content=as_json(example.call)))
+        for requirement, call in reversed(demos):
+            messages.append(Message(role="user", content=requirement))
+            messages.append(Message(role="assistant", content=as_json(call)))
         messages.append(Message(role="user", content=requirement_text))
         return messages
 
@@ -182,7 +188,7 @@ class JrManager:
 
         answer: Answer[ToolCall] = ask(
             self.backend,
-            self.messages(text, grounding, context),
+            self.messages(text, grounding, context, prompt),
             call_schema(tools, grounding.names),
             validate,
             step=f"Jr. manager ({self.family})",

@@ -1,7 +1,8 @@
 """The Sr. manager: from a prompt in context to a list of typed Requirements.
 
 Its prompt holds the rules (prompts/sr_manager.txt), the world's places, a bounded view of
-the conversation, and the few-shot examples closest in meaning to the request.
+the conversation, and the few-shot examples closest in meaning to the request, retrieved from
+the world's example bank (llm/demos.py; the static prompts/sr_examples.json without one).
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ from drivetwin.orchestrator.backends import Backend, Message
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import PlanContext, TraceStep
 from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.llm.demos import sr_demos
 from drivetwin.orchestrator.planning.llm.managers import (
     CALL_TIMEOUT_S,
     Answer,
@@ -51,15 +53,16 @@ class SrManager:
         """The chat the model sees: rules and context, then retrieved examples, then the request."""
         places = ", ".join(lm.name for lm in context.scene.landmarks)
         system = render("sr_manager.txt", places=places, memory=memory_view(context.memory))
-        bank = sr_examples()
-        chosen = self.grounder.nearest(prompt, [e.request for e in bank], SR_EXAMPLES)
+        demos = [(d.request, d.requirements) for d in sr_demos(prompt, context, SR_EXAMPLES)]
+        if not demos:  # no bank (no embedding model): the static examples, nearest by spelling
+            bank = sr_examples()
+            chosen = self.grounder.nearest(prompt, [e.request for e in bank], SR_EXAMPLES)
+            demos = [(bank[i].request, bank[i].requirements) for i in chosen]
         messages: list[Message] = [Message(role="system", content=system)]
         # Most similar last, nearest the real request, where small models copy from.
-        for index in reversed(chosen):
-            example = bank[index]
-            messages.append(Message(role="user", content=f"Request: {example.request}"))
-            reply = as_json({"requirements": example.requirements})
-            messages.append(Message(role="assistant", content=reply))
+        for request, requirements in reversed(demos):
+            messages.append(Message(role="user", content=f"Request: {request}"))
+            messages.append(Message(role="assistant", content=as_json({"requirements": requirements})))
         messages.append(Message(role="user", content=f"Request: {prompt}"))
         return messages
 

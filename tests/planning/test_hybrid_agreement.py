@@ -1,0 +1,99 @@
+"""The hybrid planner combines independent planners by agreement, and asks when they disagree.
+
+The candidates here are fixed plans (the hybrid's decisions are the subject); the last tests
+run the real rule and retrieval planners."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from drivetwin.orchestrator.planning import Plan, PlanContext, PlanningError
+from drivetwin.orchestrator.planning.hybrid import HybridPlanner
+from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
+from drivetwin.orchestrator.planning.retrieval import RetrievalPlanner
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.tools import ToolRegistry
+from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.defaults import load_world
+
+RAIN = [ToolCall(tool="set_weather", args={"kind": "rain", "intensity": 0.6})]
+SNOW = [ToolCall(tool="set_weather", args={"kind": "snow"})]
+TREES_BY_CATEGORY = [ToolCall(tool="remove_assets", args={"category": "tree"})]
+TREES_BY_ID = [ToolCall(tool="remove_assets", args={"assets": ["tree_1", "tree_2", "tree_3", "tree_4"]})]
+
+
+class Fixed:
+    """A planner that always answers the same plan (or fails)."""
+
+    def __init__(self, name: str, calls: list[ToolCall] | None, confidence: float = 0.9) -> None:
+        self.name, self.calls, self.confidence = name, calls, confidence
+        self.asked = 0
+
+    def plan(self, prompt: str, context: PlanContext) -> Plan:
+        self.asked += 1
+        if self.calls is None:
+            raise PlanningError(f"{self.name} cannot")
+        return Plan(calls=self.calls, planner=self.name, confidence=self.confidence)
+
+
+@pytest.fixture
+def context() -> PlanContext:
+    return PlanContext(scene=load_world("campus"), registry=ToolRegistry.default(plugins=False))
+
+
+def hybrid(rules: Fixed, retrieval: Fixed, llm: Any) -> HybridPlanner:
+    return HybridPlanner(rules, llm, retrieval=retrieval)
+
+
+def path(plan: Plan) -> str:
+    return plan.trace[0].input
+
+
+def test_candidates_with_the_same_calls_agree_and_the_llm_is_not_asked(context: PlanContext) -> None:
+    llm = Fixed("llm", SNOW)
+    plan = hybrid(Fixed("rules", RAIN, 0.6), Fixed("retrieval", RAIN, 0.5), llm).plan("wet please", context)
+    assert path(plan) == "path: agree" and plan.calls == RAIN and llm.asked == 0
+
+
+def test_candidates_with_the_same_dry_run_outcome_agree(context: PlanContext) -> None:
+    plan = hybrid(Fixed("rules", TREES_BY_CATEGORY), Fixed("retrieval", TREES_BY_ID), Fixed("llm", None)).plan(
+        "no trees", context
+    )
+    assert path(plan) == "path: agree"
+
+
+def test_a_clearly_surer_candidate_wins_and_the_other_is_an_alternative(context: PlanContext) -> None:
+    plan = hybrid(Fixed("rules", RAIN, 0.95), Fixed("retrieval", SNOW, 0.5), Fixed("llm", None)).plan("x", context)
+    assert plan.calls == RAIN and [r.calls for r in plan.alternatives] == [SNOW]
+
+
+def test_the_llm_breaks_a_tie_between_two_sure_candidates(context: PlanContext) -> None:
+    llm = Fixed("llm", SNOW)
+    plan = hybrid(Fixed("rules", RAIN, 0.9), Fixed("retrieval", SNOW, 0.9), llm).plan("x", context)
+    assert path(plan) == "path: tie-break" and plan.calls == SNOW and llm.asked == 1
+
+
+def test_disagreement_nobody_settles_becomes_a_question_with_plain_readings(context: PlanContext) -> None:
+    plan = hybrid(Fixed("rules", RAIN, 0.9), Fixed("retrieval", SNOW, 0.9), Fixed("llm", None)).plan("x", context)
+    assert plan.calls == [] and plan.question is not None
+    assert [r.text for r in plan.question.readings] == ["weather rain (intensity 0.6)", "weather snow"]
+    assert [r.calls for r in plan.question.readings] == [RAIN, SNOW]
+
+
+def test_a_sure_retrieval_plan_stands_when_the_rules_cannot_plan(context: PlanContext) -> None:
+    plan = hybrid(Fixed("rules", None), Fixed("retrieval", SNOW, 0.9), Fixed("llm", None)).plan("x", context)
+    assert path(plan) == "path: retrieval" and plan.calls == SNOW
+
+
+def test_a_refused_candidate_does_not_count(context: PlanContext) -> None:
+    refused = [ToolCall(tool="remove_assets", args={"assets": ["no_such_thing"]})]
+    plan = hybrid(Fixed("rules", RAIN, 0.9), Fixed("retrieval", refused, 0.99), Fixed("llm", None)).plan("x", context)
+    assert plan.calls == RAIN
+
+
+def test_real_rules_and_retrieval_agree_on_a_plain_request(context: PlanContext) -> None:
+    planner = HybridPlanner(RulePlanner(), LlmPlanner(model="no-such-model"), retrieval=RetrievalPlanner())
+    plan = planner.plan("make it snow", context)
+    assert path(plan) == "path: agree" and plan.calls[0].tool == "set_weather"
+    assert plan.calls[0].args["kind"] == "snow"

@@ -1,0 +1,113 @@
+"""Retrieval: nearest bank examples by MiniLM, adapted to the request's own names and numbers."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from drivetwin.orchestrator.planning import PlanContext, PlanningError, make_planner
+from drivetwin.orchestrator.planning.retrieval import RetrievalPlanner, bank_index, learn
+from drivetwin.orchestrator.planning.retrieval.slots import adapt, read_slots
+from drivetwin.tools import ToolRegistry
+from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.defaults import load_world
+from drivetwin.worlds.scene import Scene
+
+
+@pytest.fixture(scope="module")
+def world() -> Scene:
+    return load_world("campus")
+
+
+@pytest.fixture
+def context(world: Scene) -> PlanContext:
+    return PlanContext(scene=world.model_copy(deep=True), registry=ToolRegistry.default(plugins=False))
+
+
+def test_slots_are_read_in_order_with_units_typos_and_clock_times(world: Scene) -> None:
+    slots = read_slots("put 4 bycicles 12 metres behind the fountain at 18:30, going 36 km/h", world)
+    assert slots.found == [
+        ("count", 4),
+        ("category", "bicycle"),
+        ("distance", 12.0),
+        ("place", "fountain"),
+        ("time", "18:30"),
+        ("speed", 10.0),
+    ]
+
+
+def test_adapting_puts_the_requests_names_in_place_of_the_examples(world: Scene) -> None:
+    example = [
+        ToolCall(
+            tool="add_asset",
+            args={"category": "bench", "count": 3, "location": {"relation": "next_to", "target": "fountain"}},
+        )
+    ]
+    fitted = adapt(example, read_slots("five traffic cones near the library", world), world)
+    assert fitted.calls[0].args == {
+        "category": "traffic_cone",
+        "count": 5,
+        "location": {"relation": "next_to", "target": "Library entrance"},
+    }
+    assert (fitted.unfilled, fitted.unused) == (0, 0)
+
+
+def test_an_unsaid_count_is_dropped_and_counted_as_unfilled(world: Scene) -> None:
+    example = [
+        ToolCall(
+            tool="add_asset",
+            args={"category": "bench", "count": 3, "location": {"relation": "at", "target": "fountain"}},
+        )
+    ]
+    fitted = adapt(example, read_slots("a bench at the bus stop", world), world)
+    assert "count" not in fitted.calls[0].args and fitted.unfilled == 1
+
+
+def test_the_nearest_examples_are_close_in_meaning(world: Scene) -> None:
+    hits = bank_index(world).nearest("could we get some snow falling", 5)
+    assert hits[0].similarity > 0.6
+    assert any(c.tool == "set_weather" and c.args.get("kind") == "snow" for h in hits[:3] for c in h.example.calls)
+
+
+def test_a_description_finds_its_category_through_the_bank(context: PlanContext) -> None:
+    plan = RetrievalPlanner().plan("add a portable road work ahead sign by the library", context)
+    assert plan.calls[0].tool == "add_asset" and plan.calls[0].args["category"] == "construction_sign"
+
+
+def test_a_negated_want_becomes_a_removal(context: PlanContext) -> None:
+    plan = RetrievalPlanner().plan("honestly I do not want any of the trees anymore", context)
+    assert [c.tool for c in plan.calls] == ["remove_assets"] and plan.calls[0].args.get("category") == "tree"
+
+
+def test_a_question_plans_a_search_not_an_edit(context: PlanContext) -> None:
+    plan = RetrievalPlanner().plan("how many fire hydrants have we got", context)
+    assert plan.calls[0].tool == "find_assets" and plan.calls[0].args["category"] == "fire_hydrant"
+
+
+def test_confidence_falls_when_slots_are_left_unfilled(context: PlanContext) -> None:
+    sure = RetrievalPlanner().plan("put two benches next to the fountain", context)
+    vague = RetrievalPlanner().plan("put two of them next to it", context)
+    assert sure.confidence > vague.confidence
+
+
+def test_nothing_like_it_in_the_bank_is_a_planning_error(context: PlanContext) -> None:
+    planner = RetrievalPlanner(nearest=1)
+    with pytest.raises(PlanningError, match="no example like it"):
+        planner.plan(
+            "remove the submarine from lot Q",
+            context.__class__(scene=context.scene.model_copy(update={"assets": []}), registry=context.registry),
+        )
+
+
+def test_a_learned_request_is_retrieved_from_then_on(
+    world: Scene, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, context: PlanContext
+) -> None:
+    monkeypatch.setenv("DRIVETWIN_CACHE", str(tmp_path))
+    calls = [ToolCall(tool="set_lighting", args={"street_lights": "on", "vehicle_lights": "on"})]
+    learn(world, "lights everywhere, it's a party", calls)
+    plan = RetrievalPlanner().plan("lights everywhere, it's a party", context)
+    assert plan.calls == calls and plan.confidence > 0.9
+
+
+def test_retrieval_is_a_planner_by_name() -> None:
+    assert make_planner("retrieval").name == "retrieval"
