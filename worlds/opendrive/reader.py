@@ -125,7 +125,8 @@ def read_opendrive(path: str | Path, step: float = SAMPLE_STEP_M) -> RoadMap:
         lanes.extend(_lanes_of(road, names))
         crossings.extend(_crossings_of(road))
         props.extend(_props_of(road))
-    return RoadMap(lanes, crossings, _merge_props(props), [_junction(j, _roads_at_junctions(roads)) for j in junctions], names)
+    touching = _roads_at_junctions(roads)
+    return RoadMap(lanes, crossings, _merge_props(props), [_junction(j, touching) for j in junctions], names)
 
 
 def _normalised(source: Path) -> io.BytesIO:
