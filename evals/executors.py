@@ -58,6 +58,22 @@ def build_planner(name: str, options: dict[str, Any]) -> Planner:
     return make_planner(name, **options)
 
 
+def preflight(name: str, options: dict[str, Any]) -> None:
+    """Build the planner once and open its model, so a wrong name, option or model stops a run
+    before its first case (in one line) instead of failing every case."""
+    if name == "rules" and options:
+        raise PlannerLoadError(f"the rules planner takes no options; got {', '.join(sorted(options))}")
+    try:
+        planner = build_planner(name, options)
+        for part in (planner, getattr(planner, "llm", None)):
+            if part is not None and hasattr(part, "backend"):
+                part.backend  # noqa: B018 - opening the backend is the check
+    except PlannerLoadError:
+        raise
+    except (LookupError, TypeError, ValueError, PlanningError) as exc:
+        raise PlannerLoadError(f"planner {name!r} cannot start: {exc}") from exc
+
+
 def planner_facts(planner: Planner, name: str = "", options: dict[str, Any] | None = None) -> ModelFacts | None:
     """Model name, size on disk and parameter count: from the planner's `model_facts()` if it
     has one, else for an embedded GGUF model from its file and its name ("...-135m")."""

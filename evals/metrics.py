@@ -6,7 +6,9 @@
   resulting scene equals the case's most common one, pooled over direct cases;
 - pass^k (tau-bench): the chance that k independent trials of a case all pass, averaged
   over cases, estimated without bias as C(c, k) / C(n, k) for c passes in n trials;
-- latency median and p95 per prompt and per planning level; tokens and retries.
+- latency median and p95 per prompt and per planning level; tokens and retries;
+- outcomes: the share of trials passed, asked (a clarifying question), refused, wrong
+  (accepted but failing a check: the worst) and crashed.
 
 Rates carry Wilson 95 % intervals so that a small suite is not over-read.
 """
@@ -19,7 +21,7 @@ from collections.abc import Iterable, Sequence
 
 import numpy as np
 from drivetwin.evals.case import GRADES, TASKS
-from drivetwin.evals.records import ModelFacts, Run, TrialRecord
+from drivetwin.evals.records import RESULTS, ModelFacts, Run, TrialRecord
 from pydantic import BaseModel, Field
 
 # z for a two-sided 95 % interval.
@@ -101,6 +103,8 @@ class RunMetrics(BaseModel):
     mean_tokens: float
     mean_retries: float
     failed_check_kinds: dict[str, int]
+    # Share of trials per outcome class (passed, asked, refused, wrong, error), with intervals.
+    outcomes: dict[str, Rate] = Field(default_factory=dict)
 
 
 def _rate(records: Iterable[TrialRecord]) -> Rate:
@@ -180,7 +184,14 @@ def compute_metrics(run: Run) -> RunMetrics:
         mean_tokens=float(np.mean([r.tokens for r in recs])) if recs else 0.0,
         mean_retries=float(np.mean([r.retries for r in recs])) if recs else 0.0,
         failed_check_kinds=dict(failed.most_common()),
+        outcomes=outcome_rates(recs),
     )
+
+
+def outcome_rates(records: Sequence[TrialRecord]) -> dict[str, Rate]:
+    """passed / asked / refused / wrong / error, each as a share of all trials with its interval."""
+    counts = Counter(r.result_class for r in records)
+    return {name: Rate.of(counts.get(name, 0), len(records)) for name in RESULTS}
 
 
 def _default_label(planner: str, options: dict[str, object], model: ModelFacts | None) -> str:

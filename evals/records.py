@@ -17,6 +17,10 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 RECORDS_FORMAT = "drivetwin-eval-records/1"
 Outcome = Literal["pass", "fail", "error"]
+# What a trial amounted to for the person: done as meant, a clarifying question, a refusal, or
+# a change accepted that fails a check (the one to drive to zero); "error": the trial crashed.
+Result = Literal["passed", "asked", "refused", "wrong", "error"]
+RESULTS: tuple[str, ...] = ("passed", "asked", "refused", "wrong", "error")
 
 
 class ModelFacts(BaseModel):
@@ -74,6 +78,8 @@ class TrialRecord(BaseModel):
     task: str
     grade: str
     outcome: Outcome
+    # Records written before outcome classes existed have none; `result_class` derives it.
+    result: Result | None = None
     planner: str = ""
     accepted: bool | None = None
     failed_checks: list[FailedCheck] = Field(default_factory=list)
@@ -92,6 +98,17 @@ class TrialRecord(BaseModel):
     @property
     def key(self) -> tuple[str, int]:
         return (self.case_id, self.trial)
+
+    @property
+    def result_class(self) -> Result:
+        """passed, asked, refused, wrong or error (derived for records that predate the field)."""
+        if self.result is not None:
+            return self.result
+        if self.outcome == "error":
+            return "error"
+        if self.outcome == "pass":
+            return "passed"
+        return "refused" if self.accepted is False else "wrong"
 
 
 class RecordsError(ValueError):

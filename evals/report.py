@@ -128,6 +128,18 @@ def _pass_k(runs: Sequence[RunMetrics]) -> list[str]:
     return lines
 
 
+def outcomes_table(runs: Sequence[RunMetrics]) -> list[str]:
+    """Passed / asked / refused / wrong per run with Wilson intervals (README-ready Markdown)."""
+    lines = [
+        "| Planner / model | Suite | Passed | Asked | Refused | Wrong |",
+        "| --- | --- | --- | --- | --- | --- |",
+    ]
+    for m in runs:
+        cells = [pct(m.outcomes.get(k)) for k in ("passed", "asked", "refused", "wrong")]
+        lines.append(f"| {m.label} | {m.suite}{_only(m)} | " + " | ".join(cells) + " |")
+    return lines
+
+
 def render_markdown(runs: Sequence[RunMetrics], plots: Sequence[Path] = ()) -> str:
     """The whole report as Markdown."""
     out = [
@@ -148,7 +160,9 @@ def render_markdown(runs: Sequence[RunMetrics], plots: Sequence[Path] = ()) -> s
             f"| {m.label} | {m.planner}{options} | {m.suite} ({m.suite_digest}){_only(m)} "
             f"| {m.cases} × {m.trials_per_case} | {m.errors} | {m.started} | {m.git_commit or '—'} |"
         )
-    out += ["", "## Table 4: planners and models", "", *table4(runs), ""]
+    out += ["", "## Outcomes: passed, asked, refused, wrong (accepted but failing a check)", "",
+            *outcomes_table(runs), ""]
+    out += ["## Table 4: planners and models", "", *table4(runs), ""]
     for m in runs:
         out += [f"## Table 5: {m.label}, success per task and grade", "", *table5(m), ""]
     pk = _pass_k(runs)

@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Any, TextIO
 
 from drivetwin.evals.case import GRADES, TASKS, Case, load_suite
-from drivetwin.evals.executors import EXECUTORS, Job, run_local
+from drivetwin.evals.executors import EXECUTORS, Job, PlannerLoadError, preflight, run_local
 from drivetwin.evals.records import RecordWriter, RunHeader, TrialRecord
 
 
@@ -150,6 +150,10 @@ def run_suite(
     options = dict(planner_options or {})
     suite = load_suite(suite_path)
     cases = select_cases(suite.cases, only)
+    try:
+        preflight(planner_name, options)
+    except PlannerLoadError as exc:
+        raise RunError(str(exc)) from exc
     header = RunHeader(
         suite=suite.name,
         suite_path=suite.path,

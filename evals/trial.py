@@ -120,6 +120,7 @@ def run_trial(case: Case, planner: Planner, trial: int, registry: ToolRegistry |
             if not turn.ok:
                 # A replayed step that fails is a broken case; a planned one is the planner's.
                 record.outcome = "fail" if step.planned else "error"
+                record.result = ("asked" if turn.question is not None else "refused") if step.planned else "error"
                 record.error = f"setup turn {number} ({step.prompt!r}) failed: {turn.error}"
                 return _finish(record, started)
         before = session.scene
@@ -138,10 +139,14 @@ def run_trial(case: Case, planner: Planner, trial: int, registry: ToolRegistry |
 
 def _fill(record: TrialRecord, report: TurnReport, passed: bool) -> None:
     plan = report.plan
-    record.outcome = "pass" if passed else "fail"
+    asked = report.question is not None
+    record.outcome = "pass" if passed and not asked else "fail"
+    record.result = "asked" if asked else "passed" if passed else "refused" if not report.ok else "wrong"
     record.accepted = report.ok
+    if asked and report.question is not None:
+        record.answer = report.question.text[:500]
     record.error = report.error
-    record.answer = (report.answer or "")[:500]
+    record.answer = record.answer or (report.answer or "")[:500]
     record.latency_s = report.seconds
     record.latency_levels = _levels(plan)
     if plan is not None:

@@ -102,7 +102,11 @@ def format_report(report: TurnReport, explain: bool) -> str:
             lines += [f"  {line}" for line in format_trace(report.plan).splitlines()]
         else:
             lines += [f"  plan: {call}" for call in report.plan.calls]
-    if report.ok:
+    if report.question is not None:
+        lines.append(f"  asked: {report.question.text}")
+        lines += [f"    {n}. {r.text}" for n, r in enumerate(report.question.readings, start=1)]
+        lines.append("  type a number to choose, or say it another way")
+    elif report.ok:
         lines += [f"  {d}" for d in report.diff] or [f"  {r}" for r in report.results]
         if report.answer and not report.diff:
             lines.append(f"  answer: {report.answer}")
@@ -171,7 +175,14 @@ def run_lines(session: Session, lines: Iterable[str], options: ChatOptions) -> i
         options.say(f"> {line}")
         done = run_command(session, line, options)
         if done is None:
-            report = session.submit(line)
+            # A bare number answers an open clarifying question; anything else is a new prompt.
+            if session.pending is not None and line.strip().isdigit():
+                try:
+                    report = session.choose(int(line.strip()))
+                except SessionError as exc:
+                    report = TurnReport(line, False, error=str(exc))
+            else:
+                report = session.submit(line)
             options.say(format_report(report, options.explain))
             done = report.ok
             if report.ok and options.render_each and options.render and options.out_dir:

@@ -49,7 +49,7 @@ MAX_READINGS = 3
 # The small general vocabulary the check reads polarity and questions with.
 _REMOVE = re.compile(
     r"\b(remove|delete|get rid of|take (away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
-    r"|not want|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
+    r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
 )
 _ADD = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
@@ -108,8 +108,8 @@ class Effect:
 def read_request(prompt: str, scene: Scene) -> Request:
     """The request's signals: polarity, categories, numbers, place, lane, state and mood."""
     low = ph.normalise(repair(prompt, scene).text).strip()
-    place = find_place(scene, f" {low} ")
-    masked = low if place is None else low[: max(0, place[1] - 1)] + " " + low[max(0, place[2] - 1) :]
+    place = _named_place(scene, low)
+    masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
         masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
     lane = find_lane(scene, masked)
@@ -125,6 +125,17 @@ def read_request(prompt: str, scene: Scene) -> Request:
     )
     return Request(prompt, question, polarity, categories, numbers, place[0] if place else None,
                    lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)))
+
+
+def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
+    """A place the request names in full (a name or alias), not one guessed from a single word."""
+    found = find_place(scene, f" {low} ")
+    if found is None:
+        return None
+    said = re.sub(r"\b(the|a|an)\s+(?=[a-z0-9])", "", f" {low} "[found[1] : found[2]].strip())
+    landmark = scene.landmark(found[0])
+    names = [re.sub(r"\b(the|a|an)\s+(?=[a-z0-9])", "", ph.normalise(n).strip()) for n in (landmark.names() if landmark else [])]
+    return (found[0], max(0, found[1] - 1), max(0, found[2] - 1)) if said in names else None
 
 
 def _without_times(text: str) -> str:
@@ -172,8 +183,9 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         strays = {a.category for a in touched} - request.categories - _companions(effect)
         if strays:
             out.append(f"you named {', '.join(sorted(request.categories))}, but the plan touches {', '.join(sorted(strays))}")
-    if not request.categories and touched and not _companions(effect):
-        plan_categories = {a.category for a in touched}
+    if not request.categories and effect.added and not _companions(effect):
+        # What a new thing should be is described; what to clear away is often only implied.
+        plan_categories = {a.category for a in effect.added}
         try:
             meant = described_category(request.text, plan_categories)
         except GroundingUnavailable:
@@ -246,7 +258,8 @@ def _numbers_in_args(value: Any) -> list[float]:
 def _accounts_for(number: float, effect: Effect) -> bool:
     if not math.isfinite(number):
         return False
-    used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + [float(len(effect.added))]
+    counts = [float(len(effect.added)), float(len(effect.removed)), float(len(effect.changed))]
+    used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + counts
     return any(math.isclose(abs(number) * f, abs(u), rel_tol=NUMBER_TOLERANCE, abs_tol=NUMBER_TOLERANCE)
                for u in used for f in UNIT_FACTORS)
 

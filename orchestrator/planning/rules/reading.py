@@ -15,7 +15,8 @@ from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import Scene
 
-_ARTICLES = re.compile(r"\b(the|a|an)\s+")
+# An article before a word; "lot A" at the end of a name keeps its letter.
+_ARTICLES = re.compile(r"\b(the|a|an)\s+(?=[a-z0-9])")
 _NEW_DETERMINERS = {"a", "an", "some", "another", "new", "more", "extra", "additional", "few", "several"}
 _OLD_DETERMINERS = {"the", "that", "those", "these", "our", "its", "their", "his", "her", "this", "my", "your"}
 _DIRECTIONS = {"west": "westbound", "east": "eastbound", "north": "northbound", "south": "southbound"}
