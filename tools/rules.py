@@ -2,55 +2,45 @@
 
 Rules look only at what an edit adds or moves, so an edit is never refused for a conflict
 that was already in the scene (a recolour of an asset that touches another is fine).
+Overlap checks read a grid index of the footprints (drivetwin.tools.footprints), not every
+asset, so they stay fast in worlds of thousands of assets.
 """
 
 from __future__ import annotations
 
-import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 
 from drivetwin.tools.errors import RuleViolation
+from drivetwin.tools.footprints import (
+    NON_COLLIDING_MOTION,
+    OVERLAP_TOLERANCE_M,
+    footprint_of,
+    overlap,
+    overlapping,
+)
 from drivetwin.worlds.catalog import Category, category
 from drivetwin.worlds.edits import AddAsset, EditConflict, RemoveAsset, UpdateAsset, WorldEdit
 from drivetwin.worlds.scene import EGO_ID, MAX_ASSETS, AssetInstance, Scene
 from drivetwin.worlds.surface import DRIVABLE, building_at, surface_at
 
-# Footprints may touch: cones in a tight ring or cars in adjacent bays are fine.
-OVERLAP_TOLERANCE_M = 0.05
-# Walkers and riders are kinematic and step around furniture; they only must not stand
-# inside a building or off the world.
-NON_COLLIDING_MOTION = frozenset({"walker"})
+__all__ = [
+    "NON_COLLIDING_MOTION",
+    "OVERLAP_TOLERANCE_M",
+    "check_edit",
+    "check_placement",
+    "footprint",
+    "footprints_overlap",
+]
 
 
 def footprint(asset: AssetInstance) -> list[tuple[float, float]]:
     """The four corners of an asset's footprint rectangle, in world metres."""
-    cat = category(asset.category)
-    hl, hw = cat.length * asset.scale / 2, cat.width * asset.scale / 2
-    c, s = math.cos(asset.pose.yaw), math.sin(asset.pose.yaw)
-    return [
-        (asset.pose.x + c * dx - s * dy, asset.pose.y + s * dx + c * dy)
-        for dx, dy in ((hl, hw), (-hl, hw), (-hl, -hw), (hl, -hw))
-    ]
+    return list(footprint_of(asset).corners)
 
 
 def footprints_overlap(a: AssetInstance, b: AssetInstance, tolerance: float = OVERLAP_TOLERANCE_M) -> bool:
     """Separating-axis test of two footprint rectangles, each shrunk by `tolerance`."""
-    pa, pb = footprint(a), footprint(b)
-    ra = category(a.category).footprint_radius * a.scale
-    rb = category(b.category).footprint_radius * b.scale
-    if math.hypot(a.pose.x - b.pose.x, a.pose.y - b.pose.y) > ra + rb:
-        return False
-    for poly in (pa, pb):
-        for i in range(2):
-            (x1, y1), (x2, y2) = poly[i], poly[i + 1]
-            ax, ay = x2 - x1, y2 - y1
-            norm = math.hypot(ax, ay)
-            ax, ay = ax / norm, ay / norm
-            proj_a = [x * ax + y * ay for x, y in pa]
-            proj_b = [x * ax + y * ay for x, y in pb]
-            if max(proj_a) - tolerance <= min(proj_b) or max(proj_b) - tolerance <= min(proj_a):
-                return False
-    return True
+    return overlap(footprint_of(a), footprint_of(b), tolerance)
 
 
 def _placed(edit: WorldEdit) -> list[AssetInstance]:
@@ -69,7 +59,8 @@ def _placed(edit: WorldEdit) -> list[AssetInstance]:
 def check_placement(scene: Scene, asset: AssetInstance, others: Iterable[AssetInstance]) -> None:
     """Raise RuleViolation if `asset` may not stand where it is, among `others`."""
     cat = category(asset.category)
-    corners = footprint(asset)
+    probe = footprint_of(asset, cat)
+    corners = probe.corners
     x, y = asset.pose.x, asset.pose.y
     b = scene.bounds
     if not all(b.contains(cx, cy) for cx, cy in corners):
@@ -89,15 +80,13 @@ def check_placement(scene: Scene, asset: AssetInstance, others: Iterable[AssetIn
     _check_surface(scene, asset, cat)
     if cat.motion in NON_COLLIDING_MOTION:
         return
-    for other in others:
-        if other.id == asset.id or category(other.category).motion in NON_COLLIDING_MOTION:
-            continue
-        if footprints_overlap(asset, other):
-            raise RuleViolation(
-                "overlap",
-                f"{asset.id} at ({x:.1f}, {y:.1f}) would overlap {other.id}; "
-                "choose a free spot or a larger spacing",
-            )
+    hits = overlapping(others if isinstance(others, Sequence) else list(others), probe)
+    if hits:
+        raise RuleViolation(
+            "overlap",
+            f"{asset.id} at ({x:.1f}, {y:.1f}) would overlap {hits[0].asset.id}; "
+            "choose a free spot or a larger spacing",
+        )
 
 
 def _check_surface(scene: Scene, asset: AssetInstance, cat: Category) -> None:

@@ -23,6 +23,7 @@ from typing import Any
 import mujoco
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.scene import (
+    MAX_ASSETS,
     AssetInstance,
     Behaviour,
     Bounds,
@@ -38,7 +39,7 @@ from drivetwin.worlds.scene import (
 )
 from drivetwin.worlds.simulation import Simulation
 
-__all__ = ["benchmark", "benchmark_scene", "main"]
+__all__ = ["PROP_MIX", "benchmark", "benchmark_scene", "main"]
 
 # Share of the assets that are vehicles and walkers; the rest are props.
 DRIVING_VEHICLES = 6
@@ -194,8 +195,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--runs", type=int, default=5, help="timed runs (median reported)")
     parser.add_argument("--out", type=Path, default=None, help="write the figures as JSON here")
     args = parser.parse_args(argv)
-    if not 0 <= args.assets <= 500:
-        parser.error("--assets must be between 0 and 500 (a scene's limit)")
+    if not 0 <= args.assets <= MAX_ASSETS:
+        parser.error(f"--assets must be between 0 and {MAX_ASSETS} (a scene's limit)")
     result = benchmark(args.assets, steps=args.steps, runs=args.runs)
     print(
         f"{result['assets']} assets ({result['bodies']} bodies, {result['dofs']} dofs): "
