@@ -348,3 +348,7 @@ main.add_command(journal_group)
 from drivetwin.orchestrator.cli_export import export_command  # noqa: E402  (drivetwin export)
 
 main.add_command(export_command)
+
+from drivetwin.orchestrator.serve.command import serve_command  # noqa: E402  (drivetwin serve)
+
+main.add_command(serve_command)
