@@ -143,6 +143,11 @@ CASES: dict[str, tuple[dict[str, Any], tuple[Any, ...], tuple[Any, ...], tuple[A
         (("find_landmarks", {"query": "parking lot B"}),),
         (("find_landmarks", {"query": "parking"}),),
         (),
+    ),    "scenario": (
+        {"kind": "scenario", "seconds": 16, "expect": [{"kind": "stopped_before", "line": [-14.0, -1.75]}]},
+        (("set_light_phases", {"light": "traffic_light_1", "phases": [{"state": "red", "duration": 60}]}),),
+        (("set_light_phases", {"light": "traffic_light_1", "phases": [{"state": "green", "duration": 60}]}),),
+        (),
     ),
 }
 
