@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -90,10 +91,10 @@ class ChatPanel:
         actions = self.actions
 
         @self.send_button.on_click
-        def _(_: viser.GuiEvent) -> None:
+        def _(_: viser.GuiEvent[Any]) -> None:
             text = self.request.value
             if text.strip():
-                self.request.value = ""
+                self.request.value = ""  # type: ignore[misc]  # viser has the setter; its typing hides it
                 actions.send(text)
 
         @self.history.on_click
@@ -101,25 +102,25 @@ class ChatPanel:
             actions.command(event.target.value.lower(), "")
 
         @self.save_button.on_click
-        def _(_: viser.GuiEvent) -> None:
+        def _(_: viser.GuiEvent[Any]) -> None:
             actions.command("save", self.save_path.value)
 
         @self.clear_button.on_click
-        def _(_: viser.GuiEvent) -> None:
+        def _(_: viser.GuiEvent[Any]) -> None:
             actions.clear_selection()
 
         @self.render_button.on_click
-        def _(_: viser.GuiEvent) -> None:
+        def _(_: viser.GuiEvent[Any]) -> None:
             actions.render_ego()
 
         @self.follow.on_update
-        def _(_: viser.GuiEvent) -> None:
+        def _(_: viser.GuiEvent[Any]) -> None:
             actions.follow_ego(self.follow.value)
 
         for name, checkbox in self.toggles.items():
             checkbox.on_update(self._toggled(name, checkbox))
 
-    def _toggled(self, name: str, checkbox: viser.GuiCheckboxHandle) -> Callable[[viser.GuiEvent], None]:
+    def _toggled(self, name: str, checkbox: viser.GuiCheckboxHandle) -> Callable[[viser.GuiEvent[Any]], None]:
         return lambda _: self.actions.toggle(name, checkbox.value)
 
     def show_conversation(self, messages: list[Message], choices: list[str]) -> None:
@@ -135,7 +136,7 @@ class ChatPanel:
                 self._choice_buttons.append(button)
         self.question_folder.visible = bool(choices)
 
-    def _chosen(self, number: int) -> Callable[[viser.GuiEvent], None]:
+    def _chosen(self, number: int) -> Callable[[viser.GuiEvent[Any]], None]:
         return lambda _: self.actions.choose(number)
 
     def show_status(self, text: str) -> None:

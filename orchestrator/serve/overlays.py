@@ -3,6 +3,7 @@ labels, and the storyboard's routes and triggers (and the paths assets' behaviou
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -48,6 +49,10 @@ class Trigger:
     position: tuple[float, float] | None
 
 
+def _xy(point: Sequence[float]) -> tuple[float, float]:
+    return (float(point[0]), float(point[1]))
+
+
 def routes_and_triggers(scene: Scene) -> tuple[list[Route], list[Trigger]]:
     """The routes of the storyboard's manoeuvres and of assets' behaviours, and the events' triggers."""
     routes: list[Route] = []
@@ -56,12 +61,12 @@ def routes_and_triggers(scene: Scene) -> tuple[list[Route], list[Trigger]]:
     for actor, event in scene.storyboard.events():
         action = event.action
         if isinstance(action, FollowRoute):
-            routes.append(Route(f"{event.name} ({actor})", [tuple(p) for p in action.waypoints]))
+            routes.append(Route(f"{event.name} ({actor})", [_xy(p) for p in action.waypoints]))
         elif isinstance(action, CrossRoadManoeuvre | StopMidRoad):
-            routes.append(Route(f"{event.name} ({actor})", [tuple(action.start), tuple(action.end)]))
+            routes.append(Route(f"{event.name} ({actor})", [_xy(action.start), _xy(action.end)]))
         start = event.start
         if isinstance(start, ReachPositionCondition):
-            triggers.append(Trigger(event.name, f"{event.name}: {start.actor} reaches here", tuple(start.position)))
+            triggers.append(Trigger(event.name, f"{event.name}: {start.actor} reaches here", _xy(start.position)))
         elif isinstance(start, DistanceCondition | TimeToCollisionCondition):
             limit = f"{start.distance} m" if isinstance(start, DistanceCondition) else f"TTC {start.seconds} s"
             target = actors.get(start.target)
@@ -74,9 +79,9 @@ def routes_and_triggers(scene: Scene) -> tuple[list[Route], list[Trigger]]:
     for asset in scene.all_assets():
         behaviour = asset.behaviour
         if isinstance(behaviour, FollowPath):
-            routes.append(Route(asset.id, [tuple(p) for p in behaviour.waypoints]))
+            routes.append(Route(asset.id, [_xy(p) for p in behaviour.waypoints]))
         elif isinstance(behaviour, CrossRoad | Jaywalk):
-            routes.append(Route(asset.id, [tuple(behaviour.start), tuple(behaviour.end)]))
+            routes.append(Route(asset.id, [_xy(behaviour.start), _xy(behaviour.end)]))
     return routes, triggers
 
 
@@ -135,7 +140,7 @@ class Overlays:
             points = np.column_stack([np.asarray(route.points, dtype=np.float64), np.full(len(route.points), ROUTE_HEIGHT_M)])
             segments = np.stack([points[:-1], points[1:]], axis=1)
             nodes.append(self.api.add_line_segments(f"/overlays/storyboard/route_{i}", segments, colors=ROUTE_RGB,
-                                                    line_width=3.0))
+                                                    thickness=3.0))
             nodes.append(self.api.add_label(f"/overlays/storyboard/route_{i}/name", route.name,
                                             position=tuple(points[0] + (0.0, 0.0, LABEL_HEIGHT_M))))
         for i, trigger in enumerate(triggers):

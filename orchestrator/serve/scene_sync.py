@@ -13,6 +13,7 @@ from collections.abc import Callable, Mapping
 from contextlib import AbstractContextManager
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -187,8 +188,8 @@ class SceneSync:
         self._batches[node] = _Batch(handle, np.asarray([row], dtype=np.intp), [asset.id])
         handle.on_click(self._clicked(node))
 
-    def _clicked(self, node: str) -> Callable[[viser.SceneNodePointerEvent[viser.SceneNodeHandle]], None]:
-        def on_click(event: viser.SceneNodePointerEvent[viser.SceneNodeHandle]) -> None:
+    def _clicked(self, node: str) -> Callable[[viser.SceneNodePointerEvent[Any]], None]:
+        def on_click(event: viser.SceneNodePointerEvent[Any]) -> None:
             asset_id = self.asset_at(node, event.instance_index)
             if asset_id is not None and self.on_asset_click is not None:
                 self.on_asset_click(asset_id)

@@ -64,12 +64,12 @@ class EnvironmentView:
     caption: str  # "12:00, rain 0.6" for the status line
 
 
-def _rgb(values: Sequence[float]) -> RGB:
-    r, g, b = (round(255 * min(1.0, max(0.0, float(v)))) for v in values[:3])
+def _rgb(values: npt.ArrayLike) -> RGB:
+    r, g, b = (round(255 * min(1.0, max(0.0, float(v)))) for v in np.asarray(values, dtype=np.float64)[:3])
     return (r, g, b)
 
 
-def _strip(points: Sequence[Sequence[float]], width: float, z: float | Sequence[float]) -> trimesh.Trimesh | None:
+def _strip(points: Sequence[Sequence[float]], width: float, z: npt.ArrayLike) -> trimesh.Trimesh | None:
     """A flat ribbon `width` wide along a polyline, at height z (one per point, or one for all)."""
     line = np.asarray(points, dtype=np.float64)
     if len(line) < 2:
