@@ -18,6 +18,7 @@ import mujoco
 import numpy as np
 import numpy.typing as npt
 from drivetwin.worlds.catalog import category
+from drivetwin.worlds.mujoco_dormancy import ContactDormancy
 from drivetwin.worlds.mujoco_pool import LOAD_HEADROOM_SHARE, BodyPool, slot_key
 from drivetwin.worlds.mujoco_static import (
     STATIC_PREFIXES,
@@ -129,6 +130,7 @@ class MujocoWorld:
         self.scene = scene
         # A world built by hand (tests, tools) has no pool: its bodies are found by name.
         self.pool = pool if pool is not None else BodyPool(spec, scene.bounds.centre)
+        self.dormancy = ContactDormancy()
         # Bumped on every recompile: element ids change then, so cached ids must be redone.
         self.generation = 0
         self._pose_sources: dict[str, tuple[int, int]] = {}
@@ -205,6 +207,8 @@ class MujocoWorld:
         for asset_id in moved + restyled:
             slot = self.pool.slot_of(asset_id)
             assert slot is not None
+            self.pool.restore_contacts(asset_id, model)  # it may have been dormant
+            self.dormancy.wake(slot.body_id)
             self.pool.place(slot, new[asset_id].pose, model, data)
         if removed or changed or added:
             # Placing writes qpos/mocap/body_pos only: frames (xpos) must follow before anyone
@@ -220,6 +224,11 @@ class MujocoWorld:
             recompiled=recompile,
             ms=(time.perf_counter() - started) * 1000.0,
         )
+
+    def refresh_contacts(self) -> None:
+        """Switch off the contacts of props resting far from anything that moves, back on
+        near it (drivetwin.worlds.mujoco_dormancy); the simulation calls it every control tick."""
+        self.dormancy.refresh(self.pool, self.model, self.data)
 
     def _remove_static(self) -> None:
         for geom in list(self.spec.worldbody.geoms):

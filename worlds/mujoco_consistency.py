@@ -110,8 +110,8 @@ def _geom_problems(model: mujoco.MjModel, asset: AssetInstance, expected: list[_
             problems.append(f"{asset.id}: geom {name} size {model.geom_size[geom]} != {size}")
         if rgba is not None and not np.allclose(model.geom_rgba[geom], rgba, atol=RGBA_TOLERANCE):
             problems.append(f"{asset.id}: geom {name} colour {model.geom_rgba[geom]} != {rgba}")
-        if model.geom_group[geom] == PARKED_GROUP or not (model.geom_contype[geom] or model.geom_conaffinity[geom]):
-            problems.append(f"{asset.id}: geom {name} is parked (hidden or without contacts)")
+        if model.geom_group[geom] == PARKED_GROUP:
+            problems.append(f"{asset.id}: geom {name} is parked (hidden)")
     return problems
 
 
@@ -136,6 +136,11 @@ def _asset_problems(world: MujocoWorld, asset: AssetInstance, slot: Slot, index:
         problems.append(f"{asset.id}: mass {mass:.6g} kg, expected {asset.physics.mass:g} kg")
     if model.body_gravcomp[body] != 0.0:
         problems.append(f"{asset.id}: body is weightless (parked)")
+    dormant = world.dormancy.is_dormant(body)
+    for geom in slot.geoms:
+        flags = (int(model.geom_contype[geom.id]), int(model.geom_conaffinity[geom.id]))
+        if flags != ((0, 0) if dormant else (geom.contype, geom.conaffinity)):
+            problems.append(f"{asset.id}: geom {geom.name} contacts {flags}, expected as built")
     return problems + _joint_problems(world, asset, body, index)
 
 

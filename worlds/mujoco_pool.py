@@ -114,6 +114,8 @@ class BodyPool:
         self._free: dict[SlotKey, list[Slot]] = {}
         self._capacity: dict[SlotKey, int] = {}
         self._serial = 0
+        # Bumped whenever slots are assigned, parked, spawned or rebound (views cache by it).
+        self.version = 0
         if spec.body(POOL_ANCHOR) is None:
             spec.worldbody.add_body(name=POOL_ANCHOR, gravcomp=1.0)
 
@@ -191,6 +193,7 @@ class BodyPool:
     def bind(self, model: mujoco.MjModel) -> None:
         """Look up every slot's model ids (after each compile: ids change then)."""
         body_type, geom_type = mujoco.mjtObj.mjOBJ_BODY, mujoco.mjtObj.mjOBJ_GEOM
+        self.version += 1
         for slot in self.slots.values():
             slot.body_id = int(mujoco.mj_name2id(model, body_type, slot.name))
             slot.body_ids = [int(mujoco.mj_name2id(model, body_type, b.name)) for b in slot.bodies]
@@ -201,6 +204,7 @@ class BodyPool:
     def activate(self, asset: AssetInstance, model: mujoco.MjModel, data: mujoco.MjData) -> Slot:
         """Show `asset` in a free slot of its shape (reserve first), at its authored pose."""
         slot = self._free[slot_key(asset)].pop()
+        self.version += 1
         slot.asset_id = asset.id
         self._by_asset[asset.id] = slot
         self._set_contacts(slot, model, active=True)
@@ -212,6 +216,7 @@ class BodyPool:
     def release(self, asset_id: str, model: mujoco.MjModel, data: mujoco.MjData) -> None:
         """Park the slot that shows `asset_id` and give it back to its pool."""
         slot = self._by_asset.pop(asset_id)
+        self.version += 1
         slot.asset_id = None
         self._set_contacts(slot, model, active=False)
         self._set_weightless(slot, model, True)
@@ -254,6 +259,10 @@ class BodyPool:
         else:
             model.body_pos[body] = position
             model.body_quat[body] = quat
+
+    def restore_contacts(self, asset_id: str, model: mujoco.MjModel) -> None:
+        """The asset's slot collides as built (a moved prop whose contacts were dormant)."""
+        self._set_contacts(self._by_asset[asset_id], model, active=True)
 
     def _set_contacts(self, slot: Slot, model: mujoco.MjModel, active: bool) -> None:
         group = ACTIVE_GROUP if active else PARKED_GROUP

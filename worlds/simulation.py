@@ -112,6 +112,7 @@ class Simulation:
         world = self.world
         now = float(world.data.time)
         period = self.dt * self.control_every
+        world.refresh_contacts()  # resting props far from movers leave the broad phase
         self.player.control(world, now, self._runners)
         for runner in self._runners.values():
             runner.control(world, now, period)
