@@ -2,7 +2,9 @@
 
 Buildings collide; a world package's terrain (Scene.package) collides as a height field; roads, sidewalks, crossings and paved areas are thin visual-only geoms
 (contype = conaffinity = 0) so a mesh render shows the road layout while vehicles roll on
-the ground plane. Every static geom's name starts with one of STATIC_PREFIXES so an update
+the ground plane. A lane with elevation (imported road maps) is a colliding deck instead: a
+slab per centreline segment, tilted so its top follows the road's height, that vehicles
+drive on. Every static geom's name starts with one of STATIC_PREFIXES so an update
 can remove and rebuild them without touching asset bodies.
 """
 
@@ -46,6 +48,9 @@ LINE_TOP_M = 0.005
 CROSSING_TOP_M = 0.006
 SIDEWALK_TOP_M = 0.008
 LINE_HALF_WIDTH_M = 0.06
+# Half thickness of an elevated lane's deck slab: thick enough that a wheel never tunnels
+# through it at a 2 ms step, thin enough to stay under the road beside a junction.
+DECK_HALF_THICKNESS_M = 0.15
 ZEBRA_STRIPE_HALF_M = 0.25
 ZEBRA_PITCH_M = 1.0
 # Near clip 5 cm (close-up views of cones); far clip twice the scene diagonal.
@@ -134,12 +139,17 @@ def add_static_geoms(spec: mujoco.MjSpec, scene: Scene) -> None:
     for paved in roads.paved:
         _add_prism(spec, f"paved/{paved.id}", paved.polygon, 0.0, PAVED_TOP_M, PAVING, _VISUAL_ONLY)
     for lane in roads.lanes:
+        heights = lane.elevation or [0.0] * len(lane.centreline)
         for k, (a, b) in enumerate(zip(lane.centreline, lane.centreline[1:], strict=False)):
-            _strip(world, f"lane/{lane.id}/{k}", a, b, lane.width / 2, LANE_TOP_M, ASPHALT)
+            rise = (heights[k], heights[k + 1])
+            if lane.elevation is None:
+                _strip(world, f"lane/{lane.id}/{k}", a, b, lane.width / 2, LANE_TOP_M, ASPHALT)
+            else:
+                _add_deck(world, f"lane/{lane.id}/{k}", a, b, rise, lane.width / 2, scene)
             for side in (-1.0, 1.0):
                 offset = side * lane.width / 2
                 name = f"lane/{lane.id}/{k}/line{int(side):+d}"
-                _strip(world, name, a, b, LINE_HALF_WIDTH_M, LINE_TOP_M, PAINT, offset)
+                _strip(world, name, a, b, LINE_HALF_WIDTH_M, LINE_TOP_M, PAINT, offset, rise)
     for walk in roads.sidewalks:
         for k, (a, b) in enumerate(zip(walk.polyline, walk.polyline[1:], strict=False)):
             _strip(world, f"sidewalk/{walk.id}/{k}", a, b, walk.width / 2, SIDEWALK_TOP_M, CONCRETE)
@@ -169,6 +179,21 @@ def _add_terrain(spec: mujoco.MjSpec, terrain: Heightfield, scene: Scene) -> Non
     geom.priority = 1
 
 
+def _segment_frame(
+    a: Sequence[float], b: Sequence[float], rise: tuple[float, float]
+) -> tuple[float, float, float, float, list[float]] | None:
+    """(half length along the slope, left normal x, y, mid height, quaternion) of a→b, or None."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    flat = math.hypot(dx, dy)
+    if flat <= 0.0:
+        return None
+    dz = rise[1] - rise[0]
+    yaw, pitch = math.atan2(dy, dx), -math.atan2(dz, flat)  # MuJoCo's +y rotation tips +x down
+    cy, sy, cp, sp = math.cos(yaw / 2), math.sin(yaw / 2), math.cos(pitch / 2), math.sin(pitch / 2)
+    quat = [cy * cp, -sy * sp, cy * sp, sy * cp]  # yaw about z, then pitch about the new y
+    return math.hypot(flat, dz) / 2, -dy / flat, dx / flat, (rise[0] + rise[1]) / 2, quat
+
+
 def _strip(
     world: mujoco.MjsBody,
     name: str,
@@ -178,22 +203,49 @@ def _strip(
     top: float,
     rgba: Sequence[float],
     offset: float = 0.0,
+    rise: tuple[float, float] = (0.0, 0.0),
 ) -> None:
-    """A thin visual box from a to b, `offset` metres to the left of the a→b line."""
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    length = math.hypot(dx, dy)
-    if length <= 0.0:
+    """A thin visual box from a to b, `offset` metres to the left of the a→b line, its top
+    `top` metres over a surface rising from rise[0] at a to rise[1] at b."""
+    frame = _segment_frame(a, b, rise)
+    if frame is None:
         return
-    yaw = math.atan2(dy, dx)
-    nx, ny = -dy / length, dx / length
+    half_length, nx, ny, mid, quat = frame
     world.add_geom(
         name=name,
         type=mujoco.mjtGeom.mjGEOM_BOX,
-        pos=[(a[0] + b[0]) / 2 + nx * offset, (a[1] + b[1]) / 2 + ny * offset, top / 2],
-        quat=[math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)],
-        size=[length / 2, half_width, top / 2],
+        pos=[(a[0] + b[0]) / 2 + nx * offset, (a[1] + b[1]) / 2 + ny * offset, mid + top / 2],
+        quat=quat,
+        size=[half_length, half_width, top / 2],
         rgba=list(rgba),
         **_VISUAL_ONLY,
+    )
+
+
+def _add_deck(
+    world: mujoco.MjsBody,
+    name: str,
+    a: Sequence[float],
+    b: Sequence[float],
+    rise: tuple[float, float],
+    half_width: float,
+    scene: Scene,
+) -> None:
+    """A colliding asphalt slab under one segment of an elevated lane, its top on the road."""
+    frame = _segment_frame(a, b, rise)
+    if frame is None:
+        return
+    half_length, _, _, mid, quat = frame
+    world.add_geom(
+        name=name,
+        type=mujoco.mjtGeom.mjGEOM_BOX,
+        pos=[(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, mid + LANE_TOP_M - DECK_HALF_THICKNESS_M],
+        quat=quat,
+        size=[half_length, half_width, DECK_HALF_THICKNESS_M],
+        rgba=list(ASPHALT),
+        # Like the ground: its friction governs every contact (tyres on ice slip on decks too).
+        friction=[scene.ground.friction, 0.005, 0.0001],
+        priority=1,
     )
 
 

@@ -129,6 +129,23 @@ def nearest_lane(scene: Scene, x: float, y: float) -> Lane | None:
     return lanes[best[1]]
 
 
+def road_height(scene: Scene, x: float, y: float) -> float:
+    """Height (m) of the road surface at (x, y): the elevation of the lane there, interpolated
+    along it; 0 off lanes and on flat ones (the ground plane's height)."""
+    lane = lane_at(scene, x, y)
+    if lane is None or lane.elevation is None:
+        return 0.0
+    along = nearest_on_polyline(x, y, lane.centreline).arc_length
+    travelled = 0.0
+    for (x1, y1), (x2, y2), z1, z2 in zip(lane.centreline, lane.centreline[1:], lane.elevation,
+                                          lane.elevation[1:], strict=False):
+        seg = math.hypot(x2 - x1, y2 - y1)
+        if along <= travelled + seg and seg > 0.0:
+            return z1 + (z2 - z1) * (along - travelled) / seg
+        travelled += seg
+    return lane.elevation[-1]
+
+
 def building_at(scene: Scene, x: float, y: float, margin: float = 0.0) -> str | None:
     """The name of the building whose footprint (grown by `margin`) contains (x, y)."""
     buildings = scene.buildings

@@ -110,13 +110,24 @@ def _shift(point: Sequence[float], origin: np.ndarray) -> tuple[float, float]:
 
 
 def _simplified(points: np.ndarray) -> tuple[list[tuple[float, float]], list[float]]:
-    line = LineString(points).simplify(SIMPLIFY_TOLERANCE_M, preserve_topology=False)
-    coords = np.asarray(line.coords)
-    if len(coords) < 2:
-        coords = points[[0, -1]]
+    """The polyline with the points that matter kept: within SIMPLIFY_TOLERANCE_M of the
+    original in plan and, where it has heights, in its height profile (a crest on a straight
+    road keeps its top)."""
+    kept = _kept(points[:, :2])
+    if points.shape[1] > 2:
+        stations = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(points[:, :2], axis=0), axis=1))])
+        kept |= _kept(np.column_stack([stations, points[:, 2]]))
+    coords = points[sorted(kept)]
     xy = [(round(float(x), 3), round(float(y), 3)) for x, y in coords[:, :2]]
     z = [round(float(v), 3) for v in coords[:, 2]] if coords.shape[1] > 2 else [0.0] * len(xy)
     return xy, z
+
+
+def _kept(line: np.ndarray) -> set[int]:
+    """Indices of the vertices Douglas-Peucker keeps of the 2-D polyline `line` (ends always)."""
+    simple = np.asarray(LineString(line).simplify(SIMPLIFY_TOLERANCE_M, preserve_topology=False).coords)
+    first = {vertex: k for k, vertex in reversed(list(enumerate(map(tuple, line.tolist()))))}
+    return {0, len(line) - 1} | {first[vertex] for vertex in map(tuple, simple.tolist())}
 
 
 def _lane(lane: MapLane, ids: dict[tuple[str, int, int], str], origin: np.ndarray) -> Lane:
