@@ -190,7 +190,7 @@ def compute_metrics(run: Run) -> RunMetrics:
 
 def outcome_rates(records: Sequence[TrialRecord]) -> dict[str, Rate]:
     """passed / asked / refused / wrong / error, each as a share of all trials with its interval."""
-    counts = Counter(r.result_class for r in records)
+    counts: Counter[str] = Counter(r.result_class for r in records)
     return {name: Rate.of(counts.get(name, 0), len(records)) for name in RESULTS}
 
 
