@@ -67,7 +67,7 @@ def crowded_campus(n: int) -> Scene:
     b = scene.bounds
     pitch = math.sqrt((b.xmax - b.xmin) * (b.ymax - b.ymin) / max(n, 1))
     while True:
-        spots = []
+        spots: list[tuple[float, float]] = []
         y = b.ymin + CLEARANCE_M
         while y <= b.ymax - CLEARANCE_M and len(spots) < n:
             x = b.xmin + CLEARANCE_M
@@ -111,7 +111,11 @@ def measure(n: int, repeats: int) -> dict[str, Any]:
     sim = Simulation(scene)
     load_s = time.perf_counter() - started
     planner = _Replay()
-    session = Session(scene, planner, on_change=sim.apply)
+
+    def apply(changed: Scene) -> None:
+        sim.apply(changed)
+
+    session = Session(scene, planner, on_change=apply)
     timings: dict[str, list[float]] = {"add": [], "move": [], "remove": []}
     recompiles = 0
     for _ in range(repeats):

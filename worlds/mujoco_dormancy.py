@@ -41,7 +41,12 @@ class ContactDormancy:
         self.dormant = np.zeros(0, bool)
 
     def _build(self, pool: BodyPool, model: mujoco.MjModel) -> None:
-        props, movers, geoms, owner, contype, conaffinity = [], [], [], [], [], []
+        props: list[int] = []
+        movers: list[int] = []
+        geoms: list[int] = []
+        owner: list[int] = []
+        contype: list[int] = []
+        conaffinity: list[int] = []
         for slot in pool.slots.values():
             if slot.asset_id is None:
                 continue
