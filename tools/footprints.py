@@ -25,6 +25,7 @@ __all__ = [
     "Footprint",
     "FootprintIndex",
     "footprint_of",
+    "near",
     "overlap",
     "overlapping",
 ]
@@ -96,7 +97,7 @@ def _cells(x: float, y: float, radius: float) -> list[Cell]:
 
 
 class FootprintIndex:
-    """A uniform grid of the colliding footprints among some assets, kept in their order."""
+    """A uniform grid of the footprints of some assets, kept in their order."""
 
     def __init__(self) -> None:
         self._grid: dict[Cell, dict[int, Footprint]] = {}
@@ -131,7 +132,7 @@ class FootprintIndex:
         if cat is None:
             cat = self._categories[asset.category] = category(asset.category)
         footprint = footprint_of(asset, cat)
-        cells = _cells(footprint.x, footprint.y, footprint.radius) if footprint.collides else []
+        cells = _cells(footprint.x, footprint.y, footprint.radius)
         for cell in cells:
             self._grid.setdefault(cell, {})[key] = footprint
         self._members[key] = (footprint, cells)
@@ -142,9 +143,20 @@ class FootprintIndex:
         found: dict[int, Footprint] = {}
         for cell in _cells(probe.x, probe.y, probe.radius):
             for key, other in self._grid.get(cell, {}).items():
-                if key not in found and other.asset.id != probe.asset.id and overlap(probe, other, tolerance):
+                if (key not in found and other.collides and other.asset.id != probe.asset.id
+                        and overlap(probe, other, tolerance)):  # fmt: skip
                     found[key] = other
         return [found[k] for k in sorted(found, key=self._order.__getitem__)]
+
+    def near(self, x: float, y: float, reach: float) -> list[AssetInstance]:
+        """Indexed assets whose footprint circle comes within `reach` metres of (x, y), in
+        the order the assets were given."""
+        found: dict[int, Footprint] = {}
+        for cell in _cells(x, y, reach):
+            for key, other in self._grid.get(cell, {}).items():
+                if key not in found and math.hypot(other.x - x, other.y - y) <= reach + other.radius:
+                    found[key] = other
+        return [found[k].asset for k in sorted(found, key=self._order.__getitem__)]
 
 
 _lock = threading.Lock()
@@ -162,19 +174,31 @@ def overlapping(assets: Sequence[AssetInstance], probe: Footprint) -> list[Footp
     one list) reuses its index as it is; another one patches the index closest in size.
     """
     with _lock:
-        for k, (source, length, index) in enumerate(_kept):
-            if source is assets and length == len(assets):
-                _kept.insert(0, _kept.pop(k))
-                return index.overlapping(probe)
-        closest = min(range(len(_kept)), key=lambda k: abs(len(_kept[k][2]) - len(assets)), default=None)
-        similar = closest is not None and abs(len(_kept[closest][2]) - len(assets)) <= len(assets) // 2
-        if closest is not None and (similar or len(_kept) >= INDEXES_KEPT):
-            index = _kept.pop(closest)[2]
-        else:
-            index = FootprintIndex()
-        index.sync(assets)
-        _kept.insert(0, (assets, len(assets), index))
-        return index.overlapping(probe)
+        return _synced(assets).overlapping(probe)
+
+
+def near(assets: Sequence[AssetInstance], x: float, y: float, reach: float) -> list[AssetInstance]:
+    """The assets among `assets` whose footprint circle comes within `reach` metres of (x, y),
+    in the order given (what a free-spot search must check around its disc)."""
+    with _lock:
+        return _synced(assets).near(x, y, reach)
+
+
+def _synced(assets: Sequence[AssetInstance]) -> FootprintIndex:
+    """The index of `assets` (call with the lock held)."""
+    for k, (source, length, index) in enumerate(_kept):
+        if source is assets and length == len(assets):
+            _kept.insert(0, _kept.pop(k))
+            return index
+    closest = min(range(len(_kept)), key=lambda k: abs(len(_kept[k][2]) - len(assets)), default=None)
+    similar = closest is not None and abs(len(_kept[closest][2]) - len(assets)) <= len(assets) // 2
+    if closest is not None and (similar or len(_kept) >= INDEXES_KEPT):
+        index = _kept.pop(closest)[2]
+    else:
+        index = FootprintIndex()
+    index.sync(assets)
+    _kept.insert(0, (assets, len(assets), index))
+    return index
 
 
 def _reference_overlaps(probe: Footprint, assets: Iterable[AssetInstance]) -> list[AssetInstance]:

@@ -15,6 +15,7 @@ from drivetwin.tools.footprints import (
     NON_COLLIDING_MOTION,
     OVERLAP_TOLERANCE_M,
     footprint_of,
+    near,
     overlap,
     overlapping,
 )
@@ -26,6 +27,7 @@ from drivetwin.worlds.surface import DRIVABLE, building_at, surface_at
 __all__ = [
     "NON_COLLIDING_MOTION",
     "OVERLAP_TOLERANCE_M",
+    "assets_near",
     "check_edit",
     "check_placement",
     "footprint",
@@ -41,6 +43,12 @@ def footprint(asset: AssetInstance) -> list[tuple[float, float]]:
 def footprints_overlap(a: AssetInstance, b: AssetInstance, tolerance: float = OVERLAP_TOLERANCE_M) -> bool:
     """Separating-axis test of two footprint rectangles, each shrunk by `tolerance`."""
     return overlap(footprint_of(a), footprint_of(b), tolerance)
+
+
+def assets_near(assets: Sequence[AssetInstance], x: float, y: float, reach: float) -> list[AssetInstance]:
+    """The assets whose footprints come within `reach` metres of (x, y), in the order given,
+    found through the grid index (what a free-spot search must check around its disc)."""
+    return near(assets, x, y, reach)
 
 
 def _placed(edit: WorldEdit) -> list[AssetInstance]:

@@ -7,7 +7,7 @@ import math
 import pytest
 from drivetwin.tools.errors import RuleViolation
 from drivetwin.tools.footprints import FootprintIndex, _reference_overlaps, footprint_of, overlapping
-from drivetwin.tools.rules import check_placement
+from drivetwin.tools.rules import assets_near, check_placement
 from drivetwin.worlds.campus import build_campus
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.scene import AssetInstance, PhysicsProps, Pose
@@ -44,6 +44,10 @@ def test_the_index_finds_exactly_the_overlaps_the_scan_finds(placed, probes, dro
         probe = footprint_of(_asset(2000 + k, *spec))
         expected = [a.id for a in _reference_overlaps(probe, [*kept, *extra])]
         assert [f.asset.id for f in index.overlapping(probe)] == expected
+        reach = 5.0
+        within = [a.id for a in [*kept, *extra]
+                  if math.hypot(a.pose.x - probe.x, a.pose.y - probe.y) <= reach + footprint_of(a).radius]  # fmt: skip
+        assert [a.id for a in index.near(probe.x, probe.y, reach)] == within
 
 
 def test_an_asset_changed_in_place_is_indexed_where_it_stands_now() -> None:
@@ -66,3 +70,4 @@ def test_check_placement_names_the_first_overlapping_asset_in_the_given_order() 
         with pytest.raises(RuleViolation, match=f"would overlap {order[0].id}"):
             check_placement(scene, probe, [*scene.all_assets(), *order])
     assert overlapping([a], footprint_of(_asset(4, "traffic_cone", 50.0, 50.0, 0.0, 1.0))) == []
+    assert [x.id for x in assets_near([a, b], -99.5, 16.0, 0.6)] == ["a1"]
