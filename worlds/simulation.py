@@ -95,7 +95,8 @@ class Simulation:
                 before = previous.get(asset.id)
                 # Jaywalkers watch the ego's lane, so they are redone when the ego changes.
                 watches_ego = asset.behaviour.kind == "jaywalk" and ego_changed
-                if before != asset or watches_ego:
+                # Edits share unchanged assets between scenes: an identity test skips most.
+                if (before is not asset and before != asset) or watches_ego:
                     self._make_runner(asset, scene)
             for asset_id in set(previous) - {a.id for a in scene.all_assets()}:
                 self._runners.pop(asset_id, None)
