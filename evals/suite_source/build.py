@@ -1,4 +1,4 @@
-"""Write the shipped suites, `evals/suites/full.jsonl` and `smoke.jsonl`, from the case modules.
+"""Write the shipped suites, `evals/suites/full.jsonl`, `smoke.jsonl` and `scenarios.jsonl`, from the case modules.
 
 Run `python evals/suite_source/build.py [OUT_DIR]` (default: evals/suites). The JSONL files are
 committed; a test checks they match what this script writes.
@@ -16,6 +16,7 @@ import arrangement
 import moving
 import positioning
 import removal
+import scenarios
 import search
 from dsl import Json
 
@@ -65,6 +66,7 @@ def main(argv: list[str]) -> int:
         return 1
     (out_dir / "full.jsonl").write_text(render(cases), encoding="utf-8")
     (out_dir / "smoke.jsonl").write_text(render([by_id[i] for i in SMOKE_IDS]), encoding="utf-8")
+    (out_dir / "scenarios.jsonl").write_text(render(scenarios.cases()), encoding="utf-8")
     print(f"wrote {len(cases)} cases to full.jsonl and {len(SMOKE_IDS)} to smoke.jsonl")
     return 0
 

@@ -1,6 +1,6 @@
 """The scenario suite: triggered manoeuvres, lights and junction turns, judged by simulating them.
 
-Writes evals/suites/scenarios.jsonl: `python evals/suite_source/scenarios.py`. Each family
+build.py writes it to evals/suites/scenarios.jsonl. Each family
 sets its actors up with replayed calls (the same start for every planner), then asks for
 the event in four grades of wording. Checks: the prompt is accepted, no asset changes (a
 scenario is not a teleport or a repaint), the storyboard holds the event and it started,
@@ -11,12 +11,9 @@ lane connections) expect a refusal.
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
 from typing import Any
 
 Json = dict[str, Any]
-OUT = Path(__file__).resolve().parents[1] / "suites" / "scenarios.jsonl"
 GRADES = ("direct", "indirect", "vague", "erroneous")
 EAST_STOP_LINE = [-14.0, -1.75]
 
@@ -235,7 +232,3 @@ def cases() -> list[Json]:
         })
     return out
 
-
-if __name__ == "__main__":
-    OUT.write_text("".join(json.dumps(c) + "\n" for c in cases()), encoding="utf-8")
-    print(f"wrote {len(cases())} cases to {OUT}")
