@@ -52,7 +52,7 @@ class ReferencePlanner:
     def plan(self, prompt: str, context: PlanContext) -> Plan:
         if prompt not in self._calls:
             raise PlanningError(f"the reference planner has no plan for {prompt!r}")
-        return Plan(calls=list(self._calls[prompt]), planner=self.name, prompt_version="reference")
+        return Plan(calls=list(self._calls[prompt]), planner=self.name, prompt_version="reference", verbatim=True)
 
 
 @cache

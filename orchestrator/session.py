@@ -140,6 +140,8 @@ class Session:
             plan = self.planner.plan(text, self.context())
         except PlanningError as exc:
             return self._failed(text, str(exc), started)
+        if plan.verbatim:
+            return self._run(text, plan, started)
         verdict = review(text, plan, self.context())
         if verdict.action == "refuse":
             return self._failed(text, verdict.message or "; ".join(verdict.problems), started, plan)

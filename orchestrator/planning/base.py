@@ -71,6 +71,9 @@ class Plan(BaseModel):
     question: Question | None = None
     # Other candidate readings, best first (other planners' plans), for the plan-vs-request check.
     alternatives: list[Reading] = Field(default_factory=list)
+    # The calls were given as they are (a case's reference plan, a recorded replay), not read
+    # from the words, so the plan-vs-request check has nothing to compare them with.
+    verbatim: bool = False
 
 
 class PlanningError(Exception):

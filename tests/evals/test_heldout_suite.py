@@ -105,3 +105,10 @@ def test_the_reference_calls_build_an_outcome_every_heldout_case_accepts() -> No
         if not passed:
             failures.append(f"{case.id}: {[r.reason for r in results if not r.passed]}")
     assert not failures
+
+
+def test_the_reference_planner_passes_every_heldout_case_through_the_harness(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    from drivetwin.evals import run_suite
+
+    summary = run_suite("heldout", "reference", out_path=tmp_path / "ref.jsonl", progress=False)
+    assert summary.failed == 0 and summary.errors == 0 and summary.passed >= 370
