@@ -160,3 +160,15 @@ def test_a_manoeuvre_the_actor_cannot_do_is_reported_and_changes_nothing() -> No
     simulation = simulate(campus_with(walker, storyboard=board), 0.5)
     assert "cannot lane_change" in (simulation.player.records["bad"].failed or "")
     assert simulation.trace("pedestrian_9") == []
+
+
+def test_an_edited_storyboard_starts_its_clock_when_it_reaches_the_live_world() -> None:
+    scene = _lead_scene(Storyboard())
+    simulation = simulate(scene, 2.0)  # type: ignore[arg-type]
+    board = Storyboard().with_event(LEAD, Event(
+        name="lead_brakes", action=ChangeSpeed(speed=0.0, rate=3.0), start=SimulationTimeCondition(time=1.0)))
+    simulation.apply(scene.model_copy(update={"storyboard": board}))  # type: ignore[attr-defined]
+    simulation.run_for(1.5)
+    started = simulation.player.records["lead_brakes"].started
+    assert started == pytest.approx(1.0, abs=0.05)  # one second after the edit, not at t = 1 s
+    assert simulation.player.start_time == pytest.approx(2.0, abs=0.01)
