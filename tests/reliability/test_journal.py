@@ -46,8 +46,9 @@ def test_a_canonical_yaw_is_its_own_canonical_form(yaw):
 def test_turn_resume_edit_resume_never_goes_stale(session, registry):
     path = session.journal.path
     for step in range(12):  # odd angles: each reload used to move the yaw by an ulp now and then
-        session.planner = ScriptedPlanner(call("move_asset", asset="ego", turn_deg=17.3 * step + 0.1))
-        assert session.submit(f"turn the ego, step {step}").ok
+        turn = call("move_asset", asset="ego", turn_deg=round(17.3 * step + 0.1, 1))
+        session.planner = ScriptedPlanner(turn)
+        assert session.submit(str(turn)).ok  # the prompt names the call, so the plan check agrees
         session.close()
         session = Session.resume(path, RulePlanner(), registry)
     session.undo()

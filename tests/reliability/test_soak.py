@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import random
 import subprocess
@@ -30,3 +31,34 @@ def test_the_soak_command_prints_figures_and_writes_json(tmp_path):
     figures = json.loads(out.read_text())
     assert figures["trials"] == 2 and figures["lost_edits"] == 0 and figures["corrupted_journals"] == 0
     assert "lost_edits" in done.stdout
+
+
+PROMPTS = ("make it rain", "make it night", "add traffic cones to mark the maintenance", "make it foggy",
+           "create cement rubble at the centre of the scene", "remove the cones you added", "make it sunny")
+COMMANDS = ("undo", "redo", "accept", "reject", "resume", "crash")
+
+
+@settings(max_examples=5, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(steps=st.lists(st.sampled_from(PROMPTS + COMMANDS), min_size=4, max_size=10))
+def test_random_prompt_sequences_with_resumes_keep_every_change(steps, registry, campus, tmp_path_factory):
+    from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+    from drivetwin.orchestrator.session import Session, SessionError
+
+    path = tmp_path_factory.mktemp("prompts") / "journal.jsonl"
+    session = Session(campus, RulePlanner(), registry, journal_path=path)
+    for step in steps:
+        if step in ("resume", "crash"):
+            before = (session.scene, [e.txn for e in session.history.done], [e.txn for e in session.history.undone])
+            if step == "resume":
+                session.close()
+            else:
+                session.journal.close()  # died without an end event
+            session = Session.resume(path, RulePlanner(), registry)
+            after = (session.scene, [e.txn for e in session.history.done], [e.txn for e in session.history.undone])
+            assert after == before
+        elif step in COMMANDS:
+            with contextlib.suppress(SessionError):  # nothing to undo...: a fine outcome
+                getattr(session, step)()
+        else:
+            session.submit(step)
+    session.close()
