@@ -55,9 +55,6 @@ class Footprint:
     pose: Pose
     scale: float
 
-    def current(self) -> bool:
-        return self.asset.pose is self.pose and self.asset.scale == self.scale
-
 
 def footprint_of(asset: AssetInstance, cat: Category | None = None) -> Footprint:
     """The footprint of `asset` (its category's rectangle, scaled and turned)."""
@@ -111,12 +108,20 @@ class FootprintIndex:
     def sync(self, assets: Sequence[AssetInstance]) -> None:
         """Index exactly `assets`: drop those no longer given (or changed in place), add the
         new ones; assets are matched by identity."""
-        order: dict[int, int] = {}
-        for k, asset in enumerate(assets):
-            order.setdefault(id(asset), k)
-        self._order = order
         members = self._members
-        for key in [k for k, (fp, _) in members.items() if k not in order or not fp.current()]:
+        order: dict[int, int] = {}
+        stale: list[int] = []
+        for k, asset in enumerate(assets):
+            key = id(asset)
+            if key in order:
+                continue
+            order[key] = k
+            member = members.get(key)
+            if member is not None and (member[0].pose is not asset.pose or member[0].scale != asset.scale):
+                stale.append(key)
+        self._order = order
+        stale += [key for key in members if key not in order]
+        for key in stale:
             _, cells = members.pop(key)
             for cell in cells:
                 del self._grid[cell][key]
