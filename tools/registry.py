@@ -2,7 +2,8 @@
 
 A plugin's entry point names a Tool subclass (or an instance, or a function returning a list
 of them). A plugin that fails to import or to build (it raises, calls sys.exit or hangs) is
-reported and skipped, never fatal. Plugin Workers run boxed (drivetwin.tools.plugin_box): a
+reported and skipped, never fatal (the one plugin loader, drivetwin.tools.plugins, for every
+entry-point group). Plugin Workers run boxed (drivetwin.tools.plugin_box): a
 deadline on every call, a copy of the scene, and the world rules applied by the registry to
 whatever they propose; with `isolate` they run in a separate process
 (drivetwin.tools.plugin_process), so even os._exit or a segfault is only a refusal.
@@ -12,18 +13,16 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Iterable
-from dataclasses import dataclass
-from functools import partial
-from importlib.metadata import EntryPoint, entry_points
-from typing import Any
+from typing import Any, cast
 
 from drivetwin.tools.add import AddAssetTool
 from drivetwin.tools.appearance import SetAssetAppearance, SetLighting, SetTimeOfDay, SetWeather
 from drivetwin.tools.arrange import ArrangeAssets
 from drivetwin.tools.base import FAMILIES, Family, Tool, ToolCall, ToolResult, overridden_host_methods
-from drivetwin.tools.errors import PluginError, ToolError, UnknownToolError
+from drivetwin.tools.errors import ToolError, UnknownToolError
 from drivetwin.tools.move import MoveAsset, SetBehaviour
 from drivetwin.tools.plugin_box import CALL_DEADLINE_S, IMPORT_DEADLINE_S, propose_boxed, run_boxed
+from drivetwin.tools.plugins import TOOLS_GROUP, PluginProblem, fix_for, load_group
 from drivetwin.tools.position import PlaceAsset
 from drivetwin.tools.remove import RemoveAssets
 from drivetwin.tools.rules import check_edit
@@ -31,8 +30,6 @@ from drivetwin.tools.scenario import AddEvent, AddManoeuvre, SetLightPhases
 from drivetwin.tools.search import AssetProperties, FindAssets, FindLandmarks, FindLanes
 from drivetwin.worlds.catalog import UnknownCategoryError
 from drivetwin.worlds.scene import Scene
-
-ENTRY_POINT_GROUP = "drivetwin.tools"
 
 
 def builtin_tools() -> list[Tool[Any]]:
@@ -47,14 +44,6 @@ def builtin_tools() -> list[Tool[Any]]:
         ArrangeAssets(),
         SetTimeOfDay(), SetWeather(), SetLighting(), SetAssetAppearance(),
     ]
-
-
-@dataclass(frozen=True)
-class PluginProblem:
-    """A plugin that could not be loaded, and why."""
-
-    entry_point: str
-    error: str
 
 
 class ToolRegistry:
@@ -95,20 +84,22 @@ class ToolRegistry:
             self.problems.append(PluginProblem(
                 f"{tool.name} ({source})",
                 f"overrides {', '.join(overrides)}, which only the host runs; the override is ignored",
+                TOOLS_GROUP, f"remove the {', '.join(overrides)} override from {tool.name}",
             ))
 
     def load_plugins(self) -> None:
         """Register every tool the `drivetwin.tools` entry points provide; report failures."""
-        for ep in entry_points(group=ENTRY_POINT_GROUP):
-            where = f"{ep.name} = {ep.value}"
-            try:
-                tools = run_boxed(partial(_load_entry_point, ep), f"plugin {where}", IMPORT_DEADLINE_S)
-                for tool in tools:
-                    self.register(tool, source=f"plugin {ep.value}")
-            except PluginError as exc:  # a broken plugin must never take the session down
-                self.problems.append(PluginProblem(where, str(exc).removeprefix(f"plugin {where} ")))
-            except Exception as exc:
-                self.problems.append(PluginProblem(where, f"{type(exc).__name__}: {exc}"))
+        found = load_group(TOOLS_GROUP, plugin_tools, deadline_s=IMPORT_DEADLINE_S)
+        self.problems += found.problems
+        for plugin in found.loaded:
+            for tool in plugin.value:
+                try:
+                    self.register(tool, source=f"plugin {plugin.target}")
+                except (TypeError, ValueError) as exc:  # not a Worker, or a name already taken
+                    self.problems.append(PluginProblem(
+                        f"{plugin.name} = {plugin.target}", str(exc), TOOLS_GROUP,
+                        fix_for(plugin.name, plugin.target, plugin.distribution),
+                    ))
 
     # Queries ---------------------------------------------------------------------------
     def names(self) -> list[str]:
@@ -166,19 +157,19 @@ class ToolRegistry:
             raise ToolError(f"{call.tool}: {exc}") from exc
 
 
-def _validate_tool(tool: Tool[Any]) -> None:
+def _validate_tool(tool: object) -> None:
     for attr in ("name", "description", "family", "Args"):
         if not hasattr(tool, attr):
             raise TypeError(f"{type(tool).__name__} is not a Worker tool: it has no {attr!r}")
-    if tool.family not in FAMILIES:
-        raise TypeError(f"tool {tool.name!r} has unknown family {tool.family!r}; allowed: {FAMILIES}")
-
-
-def _load_entry_point(ep: EntryPoint) -> list[Tool[Any]]:
-    return plugin_tools(ep.load())
+    family = getattr(tool, "family", None)
+    if family not in FAMILIES:
+        raise TypeError(f"tool {getattr(tool, 'name', '?')!r} has unknown family {family!r}; allowed: {FAMILIES}")
 
 
 def plugin_tools(loaded: object) -> list[Tool[Any]]:
     """The Workers an entry point's object provides: a Tool class or instance, or a factory of them."""
     made = loaded() if callable(loaded) else loaded
-    return list(made) if isinstance(made, list | tuple) else [made]  # type: ignore[list-item]
+    tools: list[object] = list(made) if isinstance(made, list | tuple) else [made]
+    for tool in tools:
+        _validate_tool(tool)
+    return cast(list[Tool[Any]], tools)

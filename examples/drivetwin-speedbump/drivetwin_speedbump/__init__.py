@@ -9,12 +9,19 @@ from __future__ import annotations
 
 import math
 
-from drivetwin.tools import Tool, ToolArgs, ToolResult
-from drivetwin.tools.add import new_asset
-from drivetwin.tools.errors import NotFoundError
-from drivetwin.worlds.edits import AddAsset, WorldEdit
-from drivetwin.worlds.scene import Pose, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_along
+from drivetwin.tools import (
+    AddAsset,
+    NotFoundError,
+    Pose,
+    Scene,
+    Tool,
+    ToolArgs,
+    ToolResult,
+    WorldEdit,
+    nearest_on_polyline,
+    new_asset,
+    point_along,
+)
 from pydantic import Field
 
 # A taper of cones spaced like a real lane closure on a low-speed road.

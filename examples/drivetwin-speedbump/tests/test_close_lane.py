@@ -1,9 +1,8 @@
 """The example plugin works as an installed plugin would: through the registry."""
 
 from drivetwin.orchestrator.transaction import execute
-from drivetwin.tools import RuleViolation, ToolCall, ToolRegistry
+from drivetwin.tools import RuleViolation, ToolCall, ToolRegistry, lane_at
 from drivetwin.worlds.campus import build_campus
-from drivetwin.worlds.surface import lane_at
 from drivetwin_speedbump import CloseLane
 
 
