@@ -7,7 +7,6 @@ worker builds its planner once and reuses it for all its trials (a model loads o
 
 from __future__ import annotations
 
-import importlib
 import multiprocessing
 import re
 import signal
@@ -19,7 +18,7 @@ from drivetwin.evals.case import Case
 from drivetwin.evals.records import ModelFacts, TrialRecord
 from drivetwin.evals.trial import REFERENCE_PLANNER, run_trial
 from drivetwin.orchestrator.planning import Plan, PlanContext, Planner, PlanningError
-from drivetwin.orchestrator.planning.registry import make_planner
+from drivetwin.orchestrator.planning.registry import UnknownPlannerError, make_planner
 from drivetwin.tools.registry import ToolRegistry
 
 ExecutorName = Literal["local", "ray"]
@@ -44,18 +43,13 @@ class PlannerLoadError(RuntimeError):
 
 
 def build_planner(name: str, options: dict[str, Any]) -> Planner:
-    """A planner by registered name, 'reference', or 'package.module:factory'."""
+    """A planner by registered name, 'reference', or 'package.module:factory' (the planner registry's)."""
     if name == REFERENCE_PLANNER:
         return _ReferenceStub()
-    if ":" in name:
-        module_name, _, attr = name.partition(":")
-        try:
-            factory = getattr(importlib.import_module(module_name), attr)
-        except (ImportError, AttributeError) as exc:
-            raise PlannerLoadError(f"cannot import planner factory {name!r}: {exc}") from exc
-        planner: Planner = factory(**options)
-        return planner
-    return make_planner(name, **options)
+    try:
+        return make_planner(name, **options)
+    except UnknownPlannerError as exc:
+        raise PlannerLoadError(str(exc)) from exc
 
 
 def preflight(name: str, options: dict[str, Any]) -> None:

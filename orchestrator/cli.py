@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import Any
 
 import click
+from drivetwin.orchestrator.cli_plugins import PluginCommandGroup, echo_problems, planners_group
 from drivetwin.orchestrator.repl import ChatOptions, ScriptFileError, dump_tools, interactive, read_script, run_lines
 from drivetwin.orchestrator.session import Session
 from drivetwin.orchestrator.session_setup import command_settings as _settings
@@ -22,7 +23,7 @@ from drivetwin.worlds.scene import scene_json_schema
 SCRIPT_SECONDS_PER_STEP = 1.0
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.group(cls=PluginCommandGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(package_name="drivetwin")
 def main() -> None:
     """Author driving scenarios in a live digital twin by talking to it.
@@ -157,8 +158,7 @@ def tools_list(as_json: bool) -> None:
         for name in registry.names():
             tool = registry.get(name)
             click.echo(f"{name:22s} {tool.family:11s} {registry.sources[name]:12s} {tool.description}")
-    for problem in registry.problems:
-        click.echo(f"broken plugin skipped: {problem.entry_point}: {problem.error}", err=True)
+    echo_problems(registry.problems)
 
 
 @main.group()
@@ -352,3 +352,4 @@ main.add_command(export_command)
 from drivetwin.orchestrator.serve.command import serve_command  # noqa: E402  (drivetwin serve)
 
 main.add_command(serve_command)
+main.add_command(planners_group)  # drivetwin planners list (cli_plugins)

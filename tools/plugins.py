@@ -49,6 +49,11 @@ class PluginProblem:
     group: str = TOOLS_GROUP
     fix: str = ""
 
+    @property
+    def name(self) -> str:
+        """The entry point's name (a backend's, a planner's, a command's...)."""
+        return self.entry_point.split(" = ", 1)[0]
+
     def __str__(self) -> str:
         fix = f"; fix: {self.fix}" if self.fix else ""
         return f"{self.group} plugin {self.entry_point}: {self.error}{fix}"
@@ -109,20 +114,44 @@ def load_group(
             continue
         candidates.append((ep.name, ep.value, _distribution(ep), ep.load))
     for name, target, distribution, load in candidates:
-        where = f"{name} = {target}"
-        who = f"{group} plugin {where}"
-        try:
-            value = run_boxed(partial(_accepted, accept, load), who, deadline_s)
-        except PluginError as exc:  # a broken plugin must never take the command down
-            error = str(exc).removeprefix(f"{who} ").removeprefix("failed: ")
-            result.problems.append(PluginProblem(where, error, group, fix_for(name, target, distribution)))
-            continue
-        except Exception as exc:  # a ToolError raised by a plugin's factory, re-raised by the box
-            result.problems.append(PluginProblem(
-                where, f"{type(exc).__name__}: {exc}", group, fix_for(name, target, distribution)))
-            continue
-        result.loaded.append(LoadedPlugin(name, value, target, distribution))
+        loaded = _load_boxed(group, name, target, distribution, load, accept, deadline_s)
+        if isinstance(loaded, PluginProblem):
+            result.problems.append(loaded)
+        else:
+            result.loaded.append(loaded)
     return result
+
+
+def load_target(
+    group: str,
+    target: str,
+    accept: Callable[[object], T] = _identity,  # type: ignore[assignment]
+    *,
+    deadline_s: float = IMPORT_DEADLINE_S,
+) -> LoadedPlugin[T] | PluginProblem:
+    """Load one `module:attribute` target as a plugin of `group` would be (the same box and checks).
+
+    For places that name a plugin directly instead of installing it (`--planner pkg.mod:factory`).
+    """
+    if ":" not in target:
+        return PluginProblem(target, "not a 'module:attribute' target", group, "write it as package.module:name")
+    return _load_boxed(group, target, target, None, partial(_import_target, target), accept, deadline_s)
+
+
+def _load_boxed(
+    group: str, name: str, target: str, distribution: str | None,
+    load: Callable[[], object], accept: Callable[[object], T], deadline_s: float,
+) -> LoadedPlugin[T] | PluginProblem:
+    where = f"{name} = {target}"
+    who = f"{group} plugin {where}"
+    try:
+        value = run_boxed(partial(_accepted, accept, load), who, deadline_s)
+    except PluginError as exc:  # a broken plugin must never take the command down
+        error = str(exc).removeprefix(f"{who} ").removeprefix("failed: ")
+        return PluginProblem(where, error, group, fix_for(name, target, distribution))
+    except Exception as exc:  # a ToolError raised by a plugin's factory, re-raised by the box
+        return PluginProblem(where, f"{type(exc).__name__}: {exc}", group, fix_for(name, target, distribution))
+    return LoadedPlugin(name, value, target, distribution)
 
 
 def fix_for(name: str, target: str, distribution: str | None) -> str:

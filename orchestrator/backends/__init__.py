@@ -25,7 +25,6 @@ from .errors import (
     UnknownModel,
 )
 from .registry import (
-    ENTRY_POINT_GROUP,
     PluginProblem,
     backend_names,
     backends_table,
@@ -38,7 +37,6 @@ from .registry import (
 __all__ = [
     "DEFAULT_MAX_TOKENS",
     "DEFAULT_TIMEOUT_S",
-    "ENTRY_POINT_GROUP",
     "Backend",
     "BackendError",
     "BackendInfo",

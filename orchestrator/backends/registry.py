@@ -6,17 +6,17 @@ A plugin is an entry point whose object is a `Backend` subclass:
     mybackend = "my_package.module:MyBackend"
 
 The built-in backends are registered the same way and, so that a checkout works before it
-is reinstalled, also listed in a fallback table. A plugin that fails to import is reported
+is reinstalled, also listed in a fallback table. They load through the one plugin loader
+(drivetwin.tools.plugins): a plugin that fails to import is reported as a PluginProblem
 (`plugin_problems()`, `list_backends()`, a logged warning) and skipped, never fatal.
 """
 
 from __future__ import annotations
 
-import importlib
 import logging
-from dataclasses import dataclass
-from importlib.metadata import EntryPoint, entry_points
 from typing import TYPE_CHECKING, Any
+
+from drivetwin.tools.plugins import BACKENDS_GROUP, PluginProblem, load_group
 
 from .base import Backend, BackendStatus
 from .errors import BackendError, BackendUnavailable, InvalidRequest, UnknownBackend
@@ -24,7 +24,6 @@ from .errors import BackendError, BackendUnavailable, InvalidRequest, UnknownBac
 if TYPE_CHECKING:
     from ..config import Settings
 
-ENTRY_POINT_GROUP = "drivetwin.backends"
 _BUILTIN_BACKENDS = {
     "embedded": "drivetwin.orchestrator.backends.embedded:EmbeddedBackend",
     "ollama": "drivetwin.orchestrator.backends.ollama_backend:OllamaBackend",
@@ -33,53 +32,18 @@ _BUILTIN_BACKENDS = {
 _log = logging.getLogger(__name__)
 
 
-@dataclass(frozen=True)
-class PluginProblem:
-    """A backend plugin that could not be loaded, and why."""
-
-    name: str
-    target: str
-    distribution: str | None
-    error: str
-
-    @property
-    def fix(self) -> str:
-        if self.distribution:
-            return f"pip install --force-reinstall {self.distribution}  (or pip uninstall it)"
-        return f"fix or remove the entry point {self.name} = {self.target}"
-
-
-def _load_target(target: str) -> type[Backend]:
-    module_name, _, attribute = target.partition(":")
-    module = importlib.import_module(module_name)
-    obj = module
-    for part in attribute.split("."):
-        obj = getattr(obj, part)
-    if not (isinstance(obj, type) and issubclass(obj, Backend)):
-        raise TypeError(f"{target} is not a drivetwin Backend subclass")
-    return obj
+def _backend_class(loaded: object) -> type[Backend]:
+    if not (isinstance(loaded, type) and issubclass(loaded, Backend)):
+        raise TypeError(f"{loaded!r} is not a drivetwin Backend subclass")
+    return loaded
 
 
 def discover_backends() -> tuple[dict[str, type[Backend]], list[PluginProblem]]:
     """Load every backend plugin; return the good ones by name and the broken ones."""
-    found: dict[str, type[Backend]] = {}
-    problems: list[PluginProblem] = []
-    candidates: dict[str, tuple[str, str | None]] = {name: (target, None) for name, target in _BUILTIN_BACKENDS.items()}
-    for entry in entry_points(group=ENTRY_POINT_GROUP):
-        candidates[entry.name] = (entry.value, _distribution_name(entry))
-    for name, (target, distribution) in candidates.items():
-        try:
-            found[name] = _load_target(target)
-        except Exception as error:  # a plugin can fail in any way; report, never crash
-            problem = PluginProblem(name, target, distribution, f"{type(error).__name__}: {error}")
-            _log.warning("skipping backend plugin %s (%s): %s", name, target, problem.error)
-            problems.append(problem)
-    return found, problems
-
-
-def _distribution_name(entry: EntryPoint) -> str | None:
-    dist = getattr(entry, "dist", None)
-    return str(dist.name) if dist is not None else None
+    found = load_group(BACKENDS_GROUP, _backend_class, builtins=_BUILTIN_BACKENDS)
+    for problem in found.problems:
+        _log.warning("skipping backend plugin %s: %s", problem.entry_point, problem.error)
+    return {name: plugin.value for name, plugin in found.by_name().items()}, found.problems
 
 
 def backend_names() -> list[str]:

@@ -96,7 +96,8 @@ def test_a_broken_plugin_is_skipped_and_reported(plugins: None, caplog: pytest.L
     assert "broken" not in names and "echo" in names
     assert "skipping backend plugin broken" in caplog.text
     [problem] = plugin_problems()
-    assert problem.distribution == "drivetwin-test-plugins"
+    assert problem.group == "drivetwin.backends" and problem.name == "broken"
+    assert "--force-reinstall drivetwin-test-plugins" in problem.fix
     assert "ModuleNotFoundError" in problem.error
     row = next(r for r in list_backends() if r.backend == "broken")
     assert not row.usable and row.fix is not None and "drivetwin-test-plugins" in row.fix
