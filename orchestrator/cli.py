@@ -16,7 +16,7 @@ from drivetwin.orchestrator.session_setup import command_settings as _settings
 from drivetwin.orchestrator.session_setup import open_live_session
 from drivetwin.orchestrator.session_setup import planner_or_rules as _fallback_planner
 from drivetwin.tools.registry import ToolRegistry
-from drivetwin.worlds.defaults import list_worlds, load_world
+from drivetwin.worlds.defaults import list_worlds, load_world, plugin_worlds
 from drivetwin.worlds.scene import scene_json_schema
 
 # Simulated seconds between scripted prompts, so each frame shows the world moving on.
@@ -131,6 +131,7 @@ def worlds_list(as_json: bool) -> None:
     Example: drivetwin worlds list
     """
     entries = list_worlds()
+    echo_problems(plugin_worlds()[1])
     if as_json:
         click.echo(json.dumps([{"name": e.name, "description": e.description, "path": str(e.path),
                                 "package": str(e.package) if e.package else None} for e in entries], indent=2))

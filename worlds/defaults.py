@@ -8,8 +8,12 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from drivetwin.worlds.scene import Scene
+
+if TYPE_CHECKING:
+    from drivetwin.tools.plugins import PluginProblem
 
 SHIPPED = Path(__file__).with_name("data")
 # Extra folders of `NAME.json` worlds, separated like PATH (os.pathsep).
@@ -47,6 +51,8 @@ def list_worlds() -> list[WorldEntry]:
         found[entry.name] = entry
     for entry in _packaged_worlds():
         found.setdefault(entry.name, entry)
+    for entry in plugin_worlds()[0]:
+        found.setdefault(entry.name, entry)
     return list(found.values())
 
 
@@ -62,6 +68,24 @@ def _imported_worlds() -> list[WorldEntry]:
             continue  # a damaged import must not hide the other worlds
         entries.append(WorldEntry(path.parent.name, path, scene.description.split(". ")[0]))
     return entries
+
+
+def plugin_worlds() -> tuple[list[WorldEntry], list[PluginProblem]]:
+    """Worlds that `drivetwin.worlds` plugins provide, and the plugins that failed.
+
+    The entry point's name is the world's; its object is the path of a world JSON file the
+    plugin ships (or a function returning it). A file that is not a Scene is a problem too.
+    """
+    # The one plugin loader lives with the tools (its box and deadline are there).
+    from drivetwin.tools.plugins import WORLDS_GROUP, load_group
+
+    def world_file(loaded: object) -> tuple[Path, str]:
+        path = Path(loaded() if callable(loaded) else loaded)  # type: ignore[arg-type]
+        return path, Scene.load(path).description.split(". ")[0]
+
+    found = load_group(WORLDS_GROUP, world_file)
+    entries = [WorldEntry(p.name, p.value[0], p.value[1]) for p in found.loaded]
+    return entries, found.problems
 
 
 def _packaged_worlds() -> list[WorldEntry]:
