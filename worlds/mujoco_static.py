@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 import mujoco
 import numpy as np
+from drivetwin.worlds.road_marks import road_marks
 from drivetwin.worlds.scene import Building, Scene
 
 if TYPE_CHECKING:
@@ -47,7 +48,6 @@ LANE_TOP_M = 0.004
 LINE_TOP_M = 0.005
 CROSSING_TOP_M = 0.006
 SIDEWALK_TOP_M = 0.008
-LINE_HALF_WIDTH_M = 0.06
 # Half thickness of an elevated lane's deck slab: thick enough that a wheel never tunnels
 # through it at a 2 ms step, thin enough to stay under the road beside a junction.
 DECK_HALF_THICKNESS_M = 0.15
@@ -139,20 +139,18 @@ def add_static_geoms(spec: mujoco.MjSpec, scene: Scene) -> None:
     for paved in roads.paved:
         _add_prism(spec, f"paved/{paved.id}", paved.polygon, 0.0, PAVED_TOP_M, PAVING, _VISUAL_ONLY)
     for lane in roads.lanes:
-        heights = lane.elevation or [0.0] * len(lane.centreline)
+        if lane.elevation is None:
+            line = [(x, y, 0.0) for x, y in lane.centreline]
+            _add_ribbon(spec, f"lane/{lane.id}/surface", [line], lane.width / 2, LANE_TOP_M, ASPHALT)
+            continue
         for k, (a, b) in enumerate(zip(lane.centreline, lane.centreline[1:], strict=False)):
-            rise = (heights[k], heights[k + 1])
-            if lane.elevation is None:
-                _strip(world, f"lane/{lane.id}/{k}", a, b, lane.width / 2, LANE_TOP_M, ASPHALT)
-            else:
-                _add_deck(world, f"lane/{lane.id}/{k}", a, b, rise, lane.width / 2, scene)
-            for side in (-1.0, 1.0):
-                offset = side * lane.width / 2
-                name = f"lane/{lane.id}/{k}/line{int(side):+d}"
-                _strip(world, name, a, b, LINE_HALF_WIDTH_M, LINE_TOP_M, PAINT, offset, rise)
+            _add_deck(world, f"lane/{lane.id}/{k}", a, b, (lane.elevation[k], lane.elevation[k + 1]),
+                      lane.width / 2, scene)
+    for mark in road_marks(scene):
+        _add_ribbon(spec, f"lane/{mark.id}", mark.pieces, mark.half_width, LINE_TOP_M, mark.rgba)
     for walk in roads.sidewalks:
-        for k, (a, b) in enumerate(zip(walk.polyline, walk.polyline[1:], strict=False)):
-            _strip(world, f"sidewalk/{walk.id}/{k}", a, b, walk.width / 2, SIDEWALK_TOP_M, CONCRETE)
+        line = [(x, y, 0.0) for x, y in walk.polyline]
+        _add_ribbon(spec, f"sidewalk/{walk.id}", [line], walk.width / 2, SIDEWALK_TOP_M, CONCRETE)
     for crossing in roads.crossings:
         _add_zebra(world, crossing.id, crossing.start, crossing.end, crossing.width)
 
@@ -247,6 +245,42 @@ def _add_deck(
         friction=[scene.ground.friction, 0.005, 0.0001],
         priority=1,
     )
+
+
+def _add_ribbon(
+    spec: mujoco.MjSpec,
+    name: str,
+    pieces: Sequence[Sequence[tuple[float, float, float]]],
+    half_width: float,
+    top: float,
+    rgba: Sequence[float],
+) -> None:
+    """A visual-only ribbon mesh `2 * half_width` wide along each piece, `top` metres over its
+    heights: one geom per lane or mark (per-segment boxes made a 2000-lane town 50,000 geoms)."""
+    vertices: list[float] = []
+    faces: list[int] = []
+    for piece in pieces:
+        base = len(vertices) // 3
+        count = 0
+        for k, (x, y, z) in enumerate(piece):
+            before, after = piece[max(k - 1, 0)], piece[min(k + 1, len(piece) - 1)]
+            dx, dy = after[0] - before[0], after[1] - before[1]
+            norm = math.hypot(dx, dy)
+            if norm == 0.0:
+                continue
+            nx, ny = -dy / norm * half_width, dx / norm * half_width
+            vertices.extend((x - nx, y - ny, z + top, x + nx, y + ny, z + top))  # right, left
+            count += 1
+        for k in range(count - 1):
+            r0, l0, r1, l1 = base + 2 * k, base + 2 * k + 1, base + 2 * k + 2, base + 2 * k + 3
+            faces.extend((r0, r1, l1, r0, l1, l0))  # counter-clockwise from above: faces up
+    if not faces:
+        return
+    mesh = spec.add_mesh(name=name, uservert=vertices, userface=faces)
+    # A ribbon has no volume; its (unused: static, visual-only) inertia is a shell's.
+    mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL
+    spec.worldbody.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_MESH, meshname=name, rgba=list(rgba),
+                            **_VISUAL_ONLY)
 
 
 def _add_zebra(

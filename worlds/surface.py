@@ -98,85 +98,115 @@ def _on_strip(x: float, y: float, polyline: Sequence[Point], half_width: float) 
     return nearest_on_polyline(x, y, polyline).distance <= half_width
 
 
+class SceneSurface:
+    """The surface queries of one scene, its spatial index looked up once: for a batch of
+    queries (a search over many candidate points) while the scene's geometry stays as it
+    is. The module's functions answer one query each with a fresh one."""
+
+    def __init__(self, scene: Scene) -> None:
+        self.scene = scene
+        self.index = surface_index(scene)
+
+    def lane_at(self, x: float, y: float) -> Lane | None:
+        """The lane whose strip contains (x, y), the nearest centreline winning."""
+        lanes = self.scene.roads.lanes
+        best: tuple[float, Lane] | None = None
+        for k in self.index.lanes.near(x, y):
+            lane = lanes[k]
+            near = nearest_on_polyline(x, y, lane.centreline)
+            if near.distance <= lane.width / 2 and (best is None or near.distance < best[0]):
+                best = (near.distance, lane)
+        return best[1] if best else None
+
+    def nearest_lane(self, x: float, y: float) -> Lane | None:
+        """The lane whose centreline passes nearest to (x, y) (the first in scene order on a tie)."""
+        lanes = self.scene.roads.lanes
+        if not lanes:
+            return None
+        # Lanes in order of their boxes' distance; a box nearer than the best lane so far may
+        # hold a nearer lane, a box further away cannot.
+        bounds = self.index.lane_lines.box_distances(x, y)
+        best: tuple[float, int] | None = None
+        for k in (int(i) for i in bounds.argsort(kind="stable")):
+            if best is not None and bounds[k] > best[0]:
+                break
+            distance = nearest_on_polyline(x, y, lanes[k].centreline).distance
+            if best is None or (distance, k) < best:
+                best = (distance, k)
+        assert best is not None
+        return lanes[best[1]]
+
+    def road_height(self, x: float, y: float) -> float:
+        """Height (m) of the road surface at (x, y): the elevation of the lane there,
+        interpolated along it; 0 off lanes and on flat ones (the ground plane's height)."""
+        lane = self.lane_at(x, y)
+        if lane is None or lane.elevation is None:
+            return 0.0
+        along = nearest_on_polyline(x, y, lane.centreline).arc_length
+        travelled = 0.0
+        for (x1, y1), (x2, y2), z1, z2 in zip(lane.centreline, lane.centreline[1:], lane.elevation,
+                                              lane.elevation[1:], strict=False):
+            seg = math.hypot(x2 - x1, y2 - y1)
+            if along <= travelled + seg and seg > 0.0:
+                return z1 + (z2 - z1) * (along - travelled) / seg
+            travelled += seg
+        return lane.elevation[-1]
+
+    def building_at(self, x: float, y: float, margin: float = 0.0) -> str | None:
+        """The name of the building whose footprint (grown by `margin`) contains (x, y)."""
+        buildings = self.scene.buildings
+        for k in self.index.buildings.near(x, y, max(margin, 0.0)):
+            building = buildings[k]
+            if point_in_polygon(x, y, building.footprint):
+                return building.name
+            if margin > 0.0:
+                ring = [*building.footprint, building.footprint[0]]
+                if nearest_on_polyline(x, y, ring).distance < margin:
+                    return building.name
+        return None
+
+    def surface_at(self, x: float, y: float) -> SurfaceKind:
+        """What the ground at (x, y) is, the most restrictive kind winning."""
+        index, roads = self.index, self.scene.roads
+        if self.building_at(x, y):
+            return "building"
+        for k in index.crossings.near(x, y):
+            crossing = roads.crossings[k]
+            if _on_strip(x, y, [crossing.start, crossing.end], crossing.width / 2):
+                return "crossing"
+        if self.lane_at(x, y) is not None:
+            return "lane"
+        if any(point_in_polygon(x, y, roads.paved[k].polygon) for k in index.paved.near(x, y)):
+            return "paved"
+        if any(_on_strip(x, y, roads.sidewalks[k].polyline, roads.sidewalks[k].width / 2)
+               for k in index.sidewalks.near(x, y)):
+            return "sidewalk"
+        return "ground"
+
+
 def lane_at(scene: Scene, x: float, y: float) -> Lane | None:
     """The lane whose strip contains (x, y), the nearest centreline winning."""
-    lanes = scene.roads.lanes
-    best: tuple[float, Lane] | None = None
-    for k in surface_index(scene).lanes.near(x, y):
-        lane = lanes[k]
-        near = nearest_on_polyline(x, y, lane.centreline)
-        if near.distance <= lane.width / 2 and (best is None or near.distance < best[0]):
-            best = (near.distance, lane)
-    return best[1] if best else None
+    return SceneSurface(scene).lane_at(x, y)
 
 
 def nearest_lane(scene: Scene, x: float, y: float) -> Lane | None:
     """The lane whose centreline passes nearest to (x, y) (the first in scene order on a tie)."""
-    lanes = scene.roads.lanes
-    if not lanes:
-        return None
-    # Lanes in order of their boxes' distance; a box nearer than the best lane so far may
-    # hold a nearer lane, a box further away cannot.
-    bounds = surface_index(scene).lane_lines.box_distances(x, y)
-    best: tuple[float, int] | None = None
-    for k in (int(i) for i in bounds.argsort(kind="stable")):
-        if best is not None and bounds[k] > best[0]:
-            break
-        distance = nearest_on_polyline(x, y, lanes[k].centreline).distance
-        if best is None or (distance, k) < best:
-            best = (distance, k)
-    assert best is not None
-    return lanes[best[1]]
+    return SceneSurface(scene).nearest_lane(x, y)
 
 
 def road_height(scene: Scene, x: float, y: float) -> float:
-    """Height (m) of the road surface at (x, y): the elevation of the lane there, interpolated
-    along it; 0 off lanes and on flat ones (the ground plane's height)."""
-    lane = lane_at(scene, x, y)
-    if lane is None or lane.elevation is None:
-        return 0.0
-    along = nearest_on_polyline(x, y, lane.centreline).arc_length
-    travelled = 0.0
-    for (x1, y1), (x2, y2), z1, z2 in zip(lane.centreline, lane.centreline[1:], lane.elevation,
-                                          lane.elevation[1:], strict=False):
-        seg = math.hypot(x2 - x1, y2 - y1)
-        if along <= travelled + seg and seg > 0.0:
-            return z1 + (z2 - z1) * (along - travelled) / seg
-        travelled += seg
-    return lane.elevation[-1]
+    """Height (m) of the road surface at (x, y); 0 off lanes and on flat ones."""
+    return SceneSurface(scene).road_height(x, y)
 
 
 def building_at(scene: Scene, x: float, y: float, margin: float = 0.0) -> str | None:
     """The name of the building whose footprint (grown by `margin`) contains (x, y)."""
-    buildings = scene.buildings
-    for k in surface_index(scene).buildings.near(x, y, max(margin, 0.0)):
-        building = buildings[k]
-        if point_in_polygon(x, y, building.footprint):
-            return building.name
-        if margin > 0.0:
-            ring = [*building.footprint, building.footprint[0]]
-            if nearest_on_polyline(x, y, ring).distance < margin:
-                return building.name
-    return None
+    return SceneSurface(scene).building_at(x, y, margin)
 
 
 def surface_at(scene: Scene, x: float, y: float) -> SurfaceKind:
     """What the ground at (x, y) is, the most restrictive kind winning."""
-    index, roads = surface_index(scene), scene.roads
-    if building_at(scene, x, y):
-        return "building"
-    for k in index.crossings.near(x, y):
-        crossing = roads.crossings[k]
-        if _on_strip(x, y, [crossing.start, crossing.end], crossing.width / 2):
-            return "crossing"
-    if lane_at(scene, x, y) is not None:
-        return "lane"
-    if any(point_in_polygon(x, y, roads.paved[k].polygon) for k in index.paved.near(x, y)):
-        return "paved"
-    if any(_on_strip(x, y, roads.sidewalks[k].polyline, roads.sidewalks[k].width / 2)
-           for k in index.sidewalks.near(x, y)):
-        return "sidewalk"
-    return "ground"
+    return SceneSurface(scene).surface_at(x, y)
 
 
 DRIVABLE: frozenset[SurfaceKind] = frozenset({"lane", "crossing", "paved"})

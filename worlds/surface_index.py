@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from operator import attrgetter
 
 import numpy as np
 from drivetwin.worlds.scene import Scene
@@ -85,24 +86,30 @@ def _build(scene: Scene) -> SurfaceIndex:
     )
 
 
+# What each part's index entry is built from; attrgetter keeps the per-query check in C.
+_LANE = attrgetter("centreline", "width")
+_WALK = attrgetter("polyline", "width")
+_CROSSING = attrgetter("start", "end", "width")
+_PAVED = attrgetter("polygon")
+_BUILDING = attrgetter("footprint")
+
+
 def _geometry(scene: Scene) -> tuple[object, ...]:
     """What the index is built from, by reference: equal to a snapshot while nothing changed."""
     roads = scene.roads
-    return (tuple((lane.centreline, lane.width) for lane in roads.lanes),
-            tuple((walk.polyline, walk.width) for walk in roads.sidewalks),
-            tuple((c.start, c.end, c.width) for c in roads.crossings),
-            tuple(area.polygon for area in roads.paved),
-            tuple(b.footprint for b in scene.buildings))
+    return (list(map(_LANE, roads.lanes)), list(map(_WALK, roads.sidewalks)),
+            list(map(_CROSSING, roads.crossings)), list(map(_PAVED, roads.paved)),
+            list(map(_BUILDING, scene.buildings)))
 
 
 def _snapshot(scene: Scene) -> tuple[object, ...]:
     """The same as `_geometry` with every list copied, so later edits cannot reach it."""
     roads = scene.roads
-    return (tuple((list(lane.centreline), lane.width) for lane in roads.lanes),
-            tuple((list(walk.polyline), walk.width) for walk in roads.sidewalks),
-            tuple((c.start, c.end, c.width) for c in roads.crossings),
-            tuple(list(area.polygon) for area in roads.paved),
-            tuple(list(b.footprint) for b in scene.buildings))
+    return ([(list(line), width) for line, width in map(_LANE, roads.lanes)],
+            [(list(line), width) for line, width in map(_WALK, roads.sidewalks)],
+            list(map(_CROSSING, roads.crossings)),
+            [list(polygon) for polygon in map(_PAVED, roads.paved)],
+            [list(footprint) for footprint in map(_BUILDING, scene.buildings)])
 
 
 _cache: list[tuple[tuple[object, ...], SurfaceIndex]] = []

@@ -71,7 +71,7 @@ def test_buildings_collide_and_road_paint_does_not() -> None:
     model = MujocoWorld.from_scene(scene).model
     hall = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "building/hall")
     tower = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "building/tower")
-    lane = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "lane/east/0")
+    lane = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "lane/east/surface")
     assert model.geom_type[hall] == mujoco.mjtGeom.mjGEOM_BOX
     np.testing.assert_allclose(model.geom_size[hall], [10.0, 5.0, 6.0])
     assert model.geom_type[tower] == mujoco.mjtGeom.mjGEOM_MESH
