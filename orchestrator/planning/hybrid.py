@@ -3,10 +3,10 @@
 The rule planner and the retrieval planner (nearest bank examples, adapted) each plan the
 request in milliseconds. When their plans agree (the same calls once defaults are filled in,
 or the same dry-run outcome), that is the plan. When they disagree, a candidate that is
-clearly surer wins (RULES_CONFIDENT for the rules, RETRIEVAL_CONFIDENT for retrieval, with
-the other below its own bar); otherwise the LLM hierarchy is asked (it is slow, so only then)
-and a candidate it agrees with wins; failing that the person is asked one short question with
-the readings in plain words (`Plan.question`). The losing candidates go in `Plan.alternatives`.
+clearly surer wins: a retrieval plan below RETRIEVAL_CONFIDENT overrules nothing (the rules'
+path below applies), a sure one beats unsure rules; when both are sure the LLM hierarchy is
+asked (it is slow, so only then) and a candidate it agrees with wins; failing that the person
+is asked one short question with the readings in plain words (`Plan.question`). The losing candidates go in `Plan.alternatives`.
 When only the rules can plan it, the old rule applies: a sure rule plan is used, an unsure one
 goes to the LLM unless the model is small (SMALL_MODEL_PARAMETERS), whose edits spoil more
 unsure rule plans than they repair. Which path was taken, and why, is the first trace line.
@@ -36,7 +36,7 @@ SMALL_MODEL_PARAMETERS = 1_000_000_000
 RULES_CONFIDENT_SMALL_MODEL = 0.0
 # A retrieval plan this sure (similarity less its slot penalties) stands on its own: the
 # nearest example is a close paraphrase and every name in the request found its place.
-RETRIEVAL_CONFIDENT = 0.8
+RETRIEVAL_CONFIDENT = 0.85
 # Below this, a retrieval plan is not offered as a reading to choose from.
 RETRIEVAL_READING = 0.45
 # Readings offered in a clarifying question (the interface allows 1-3).
@@ -122,14 +122,13 @@ class HybridPlanner:
             best = rule_plan.model_copy(update={"confidence": max(rule_plan.confidence, found.confidence)})
             return self._mark(best, "agree", started, f"{why}; rules and retrieval agree")
         rules_sure = rule_plan.confidence >= RULES_CONFIDENT
-        found_sure = found.confidence >= RETRIEVAL_CONFIDENT
-        if rules_sure and not found_sure:
-            return self._mark(rule_plan, "fast", started, f"{why}; they disagree, rules clearly surer", [found])
-        if found_sure and not rules_sure:
+        if found.confidence < RETRIEVAL_CONFIDENT:  # an unsure retrieval plan overrules nothing
+            return self._rules_then_llm(prompt, context, rule_plan, f"{why}; they disagree", started, [found])
+        if not rules_sure:
             return self._mark(
                 found, "retrieval", started, f"{why}; they disagree, retrieval clearly surer", [rule_plan]
             )
-        return self._llm_or_ask(prompt, context, [rule_plan, found], f"{why}; they disagree", started)
+        return self._llm_or_ask(prompt, context, [rule_plan, found], f"{why}; they disagree, both sure", started)
 
     def _rules_then_llm(
         self,

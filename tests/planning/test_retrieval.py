@@ -4,9 +4,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 from drivetwin.orchestrator.planning import PlanContext, PlanningError, make_planner
-from drivetwin.orchestrator.planning.retrieval import RetrievalPlanner, bank_index, learn
+from drivetwin.orchestrator.planning.retrieval import BankIndex, RetrievalPlanner, bank_index, learn
 from drivetwin.orchestrator.planning.retrieval.slots import adapt, read_slots
 from drivetwin.tools import ToolRegistry
 from drivetwin.tools.base import ToolCall
@@ -30,6 +31,7 @@ def test_slots_are_read_in_order_with_units_typos_and_clock_times(world: Scene) 
         ("count", 4),
         ("category", "bicycle"),
         ("distance", 12.0),
+        ("relation", "behind"),
         ("place", "fountain"),
         ("time", "18:30"),
         ("speed", 10.0),
@@ -52,7 +54,7 @@ def test_adapting_puts_the_requests_names_in_place_of_the_examples(world: Scene)
     assert (fitted.unfilled, fitted.unused) == (0, 0)
 
 
-def test_an_unsaid_count_is_dropped_and_counted_as_unfilled(world: Scene) -> None:
+def test_an_unsaid_count_is_left_to_the_tools_default(world: Scene) -> None:
     example = [
         ToolCall(
             tool="add_asset",
@@ -60,7 +62,7 @@ def test_an_unsaid_count_is_dropped_and_counted_as_unfilled(world: Scene) -> Non
         )
     ]
     fitted = adapt(example, read_slots("a bench at the bus stop", world), world)
-    assert "count" not in fitted.calls[0].args and fitted.unfilled == 1
+    assert "count" not in fitted.calls[0].args and (fitted.dropped, fitted.unfilled) == (1, 0)
 
 
 def test_the_nearest_examples_are_close_in_meaning(world: Scene) -> None:
@@ -90,13 +92,10 @@ def test_confidence_falls_when_slots_are_left_unfilled(context: PlanContext) -> 
     assert sure.confidence > vague.confidence
 
 
-def test_nothing_like_it_in_the_bank_is_a_planning_error(context: PlanContext) -> None:
-    planner = RetrievalPlanner(nearest=1)
-    with pytest.raises(PlanningError, match="no example like it"):
-        planner.plan(
-            "remove the submarine from lot Q",
-            context.__class__(scene=context.scene.model_copy(update={"assets": []}), registry=context.registry),
-        )
+def test_an_empty_bank_is_a_planning_error(context: PlanContext) -> None:
+    planner = RetrievalPlanner(index=BankIndex([], np.zeros((0, 384), dtype=np.float32)))
+    with pytest.raises(PlanningError, match="bank of this world is empty"):
+        planner.plan("add a bench", context)
 
 
 def test_a_learned_request_is_retrieved_from_then_on(
@@ -104,8 +103,8 @@ def test_a_learned_request_is_retrieved_from_then_on(
 ) -> None:
     monkeypatch.setenv("DRIVETWIN_CACHE", str(tmp_path))
     calls = [ToolCall(tool="set_lighting", args={"street_lights": "on", "vehicle_lights": "on"})]
-    learn(world, "lights everywhere, it's a party", calls)
-    plan = RetrievalPlanner().plan("lights everywhere, it's a party", context)
+    learn(world, "lights everywhere for the party", calls)
+    plan = RetrievalPlanner().plan("lights everywhere for the party", context)
     assert plan.calls == calls and plan.confidence > 0.9
 
 

@@ -14,7 +14,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
-from drivetwin.orchestrator.planning.retrieval._words import Words, plural
+from drivetwin.orchestrator.planning.retrieval._words import Words
 from drivetwin.tools.appearance import COLOURS
 
 Slot = tuple[str, Any]

@@ -14,9 +14,9 @@ import time
 
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
 from drivetwin.orchestrator.planning.retrieval.index import BankIndex, Hit, bank_index
-from drivetwin.orchestrator.planning.retrieval.slots import REFERENCES, Adapted, adapt, read_slots
+from drivetwin.orchestrator.planning.retrieval.slots import REFERENCES, Adapted, Slots, adapt, intents, read_slots
 
-PROMPT_VERSION = "retrieval-1"
+PROMPT_VERSION = "retrieval-2"
 # Examples adapted per request: enough to find one whose slots fit, few enough to stay fast.
 NEAREST = 12
 # Confidence lost per example slot the request left unfilled, and per request slot unused.
@@ -24,15 +24,33 @@ UNFILLED_PENALTY = 0.12
 UNUSED_PENALTY = 0.1
 # A request that points back at the conversation ("put one there") is for the rules/LLM.
 REFERENCE_PENALTY = 0.3
+# Per amount left to the tool's default because the request did not state one.
+DROPPED_PENALTY = 0.04
+# An example this similar is the request itself (a learned one, say): its calls as they are.
+VERBATIM_SIMILARITY = 0.98
+# Per slot filled from another kind (an existing asset for a category the request named).
+STAND_IN_PENALTY = 0.1
+# Per intent marker (removal, question) that the request and the example do not share:
+# "remove the X near Y" must not become "move X near Y" however alike they read.
+INTENT_PENALTY = 0.3
 # Dry runs tried before giving up (each costs a transaction on a copy of the scene).
-DRY_RUNS = 4
+DRY_RUNS = 3
 
 
-def score(hit: Hit, fitted: Adapted, refers_back: bool) -> float:
+def score(hit: Hit, fitted: Adapted, refers_back: bool, wanted: frozenset[str] = frozenset()) -> float:
     """How sure the adapted example is to do what was asked, 0..1."""
     penalty = UNFILLED_PENALTY * fitted.unfilled + UNUSED_PENALTY * fitted.unused
+    penalty += STAND_IN_PENALTY * fitted.stood_in + DROPPED_PENALTY * fitted.dropped
+    penalty += INTENT_PENALTY * len(wanted ^ intents(hit.example.request))
     penalty += REFERENCE_PENALTY if refers_back else 0.0
     return max(0.0, min(1.0, hit.similarity - penalty))
+
+
+def _fit(hit: Hit, slots: Slots, context: PlanContext) -> Adapted:
+    """The hit's calls adapted to `slots`; the request itself (a learned one) as it is."""
+    if hit.similarity >= VERBATIM_SIMILARITY:
+        return Adapted(list(hit.example.calls), unfilled=0, unused=0, filled=0)
+    return adapt(hit.example.calls, slots, context.scene)
 
 
 class RetrievalPlanner:
@@ -53,12 +71,9 @@ class RetrievalPlanner:
         hits = self.index(context).nearest(prompt, self.nearest)
         slots = read_slots(prompt, context.scene)
         refers_back = REFERENCES.search(prompt.lower()) is not None
+        wanted = intents(prompt)
         ranked = sorted(
-            (
-                (score(h, fitted, refers_back), h, fitted)
-                for h in hits
-                for fitted in [adapt(h.example.calls, slots, context.scene)]
-            ),
+            ((score(h, fitted, refers_back, wanted), h, fitted) for h in hits for fitted in [_fit(h, slots, context)]),
             key=lambda t: -t[0],
         )
         lines = [f"slots: {', '.join(f'{k}={v}' for k, v in slots.found) or '(none)'}"]

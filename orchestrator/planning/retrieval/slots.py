@@ -18,15 +18,18 @@ from dataclasses import dataclass, field
 from functools import cache
 from typing import Any
 
-from drivetwin.orchestrator.planning.retrieval._frames import STRENGTHS, TIME_WORDS, WEATHER
+from drivetwin.orchestrator.planning.retrieval._frames import RELATION_WORDS, STRENGTHS, TIME_WORDS, WEATHER
 from drivetwin.orchestrator.planning.retrieval._words import NUMBER_WORDS, plural
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog, placeable_categories
 from drivetwin.worlds.scene import Scene
 
-# A single word this close in spelling to a known one is read as it ("bycicle", "benchs").
+# A single word this close in spelling to a known one is read as it ("benchs"); a long word
+# may be further off ("bycicles": a swapped letter costs a long word less of its meaning).
 SPELLING_CUTOFF = 0.84
+LONG_WORD_LETTERS = 7
+LONG_WORD_CUTOFF = 0.74
 # Words shorter than this are never repaired ("bus"/"bush", "car"/"cat").
 SPELLING_MIN_LETTERS = 4
 LONGEST_PHRASE_WORDS = 5
@@ -41,8 +44,36 @@ _XY = re.compile(
 _AMOUNTS = {"a couple of": 2, "a pair of": 2, "half a dozen": 6, "a dozen": 12}
 _SPEED_FACTOR = {"m/s": 1.0, "km/h": 3.6, "kmh": 3.6, "kph": 3.6, "mph": 2.237}
 _RADIUS = re.compile(r"radius|wide circle|across")
+# Relation words, longest first ("to the left of" before "left of"); "at", "by" and "around"
+# say too little to overrule an example's relation ("at 18:30").
+_RELATIONS = sorted(
+    [
+        (w, rel)
+        for rel, words in RELATION_WORDS.items()
+        if rel != "on_sidewalk"
+        for w in words
+        if w not in ("at", "by", "around")
+    ]
+    + [("on the sidewalk", "on_sidewalk"), ("on the pavement", "on_sidewalk"), ("on the footpath", "on_sidewalk")],
+    key=lambda wr: -len(wr[0]),
+)
 # Words that point back at the conversation: retrieval cannot resolve them, the rules can.
 REFERENCES = re.compile(r"\b(there|them|those|it|that one|same place|again)\b")
+
+
+# What a request asks for, told by its words: a removal, or a question (which changes nothing).
+_REMOVAL = re.compile(
+    r"\b(remove|delete|get rid|take away|take out|clear|erase|no longer|don'?t (want|need)|do not (want|need)"
+    r"|no more|shouldn'?t be|must go|lose|pull out)\b"
+)
+_QUESTION = re.compile(r"\?|^\s*(where|which|what|how|is there|are there|list|find|show|count|tell me|locate)\b")
+
+
+def intents(text: str) -> frozenset[str]:
+    """The request's intent markers: "removal" and/or "question"."""
+    low = text.lower()
+    found = {"removal"} if _REMOVAL.search(low) else set()
+    return frozenset(found | ({"question"} if _QUESTION.search(low) else set()))
 
 
 @dataclass
@@ -140,6 +171,9 @@ def read_slots(text: str, scene: Scene) -> Slots:
     for phrase, amount in _AMOUNTS.items():
         for m in list(re.finditer(rf"\b{phrase}\b", low)):
             take(m, "count", amount)
+    for words, relation in _RELATIONS:
+        for m in list(re.finditer(rf"\b{re.escape(words)}\b", low)):
+            take(m, "relation", relation)
     found += _words(low, scene)
     if "light" in low or "lamp" in low:
         state = re.search(r"\b(on|off)\b", low)
@@ -170,7 +204,8 @@ def _words(low: str, scene: Scene) -> list[tuple[int, str, Any]]:
             elif word in NUMBER_WORDS[2:]:
                 found.append((spans[i][0], "count", NUMBER_WORDS.index(word)))
             elif len(word) >= SPELLING_MIN_LETTERS and word not in _COMMON:
-                close = difflib.get_close_matches(word, singles, n=1, cutoff=SPELLING_CUTOFF)
+                cutoff = LONG_WORD_CUTOFF if len(word) >= LONG_WORD_LETTERS else SPELLING_CUTOFF
+                close = difflib.get_close_matches(word, singles, n=1, cutoff=cutoff)
                 if close:
                     found.append((spans[i][0], *phrases[close[0]]))
             i += 1
@@ -234,6 +269,7 @@ _KEY_KIND = {
     "vehicle_lights": "lights",
     "x": "x",
     "y": "y",
+    "relation": "relation",
 }
 _PLACE_KEYS = ("target", "near", "centre", "query")
 # When the request has none of a kind, these stand in for it (a lane is a place, an asset's
@@ -249,6 +285,10 @@ class Adapted:
     unfilled: int
     unused: int
     filled: int
+    # Slots filled from another kind (an asset from a category said, a lane for a place...).
+    stood_in: int = 0
+    # Amounts the request did not state, left to the tool's default.
+    dropped: int = 0
 
 
 def adapt(calls: list[ToolCall], slots: Slots, scene: Scene, tool_defaults: frozenset[str] = frozenset()) -> Adapted:
@@ -260,7 +300,7 @@ def adapt(calls: list[ToolCall], slots: Slots, scene: Scene, tool_defaults: froz
         wanted.setdefault(kind, []).append(value)
     used: dict[str, set[int]] = {}
     seen: dict[str, list[Any]] = {}
-    counts = {"unfilled": 0, "filled": 0}
+    counts = {"unfilled": 0, "filled": 0, "stood_in": 0, "dropped": 0}
 
     def kind_of(key: str, value: Any, tool: str) -> str | None:
         if key in _PLACE_KEYS and isinstance(value, str):
@@ -286,10 +326,15 @@ def adapt(calls: list[ToolCall], slots: Slots, scene: Scene, tool_defaults: froz
             stood = _stand_in(kind, other, wanted.get(other, []), scene)
             if stood is not None:
                 used.setdefault(other, set()).add(0)
-                counts["filled"] += 1
+                counts["stood_in"] += 1
                 return stood
+        if kind == "relation":
+            return value  # an unsaid relation keeps the example's: "at" and "near" differ little
+        if kind in _DROPPABLE:
+            counts["dropped"] += 1
+            return _DROP  # unsaid: the tool's default ("a sign" is one, "by X" is just clear of it)
         counts["unfilled"] += 1
-        return _DROP if kind == "count" else value
+        return value
 
     def walk(node: Any, tool: str) -> Any:
         if isinstance(node, dict):
@@ -315,10 +360,12 @@ def adapt(calls: list[ToolCall], slots: Slots, scene: Scene, tool_defaults: froz
 
     adapted = [ToolCall(tool=c.tool, args=walk(copy.deepcopy(c.args), c.tool)) for c in calls]
     unused = sum(len(values) - len(used.get(kind, set())) for kind, values in wanted.items())
-    return Adapted(adapted, counts["unfilled"], max(0, unused), counts["filled"])
+    return Adapted(adapted, counts["unfilled"], max(0, unused), counts["filled"], counts["stood_in"], counts["dropped"])
 
 
 _DROP = object()
+# Slot kinds whose value an example may lose when the request does not say one.
+_DROPPABLE = frozenset({"count", "distance"})
 
 
 def _stand_in(kind: str, other: str, values: list[Any], scene: Scene) -> Any:
@@ -334,4 +381,4 @@ def _stand_in(kind: str, other: str, values: list[Any], scene: Scene) -> Any:
     return value
 
 
-__all__ = ["REFERENCES", "Adapted", "Slots", "adapt", "read_slots"]
+__all__ = ["REFERENCES", "Adapted", "Slots", "adapt", "intents", "read_slots"]
