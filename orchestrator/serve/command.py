@@ -26,13 +26,15 @@ DEFAULT_PORT = 8080
               help="address to listen on; only this machine can connect unless you change it")
 @click.option("--port", default=DEFAULT_PORT, show_default=True, type=click.IntRange(0, 65535),
               help="port to listen on (0: any free port)")
+@click.option("--update-hz", default=30.0, show_default=True, type=click.FloatRange(1.0, 120.0),
+              help="pose updates sent to the browser per second (lower it for a browser without a GPU)")
 @click.option("--resume", is_flag=True, help="restore the last session from its journal")
 @click.option("--journal", type=click.Path(dir_okay=False, path_type=Path), default=None,
               help="journal file (default: under $DRIVETWIN_STATE)")
 @click.option("--no-sim", is_flag=True, help="edit the scene without running physics")
 @click.option("--isolate-plugins", is_flag=True, help="run plugin Workers in a separate process")
 def serve_command(world: str, planner_name: str | None, backend: str | None, model: str | None, host: str,
-                  port: int, resume: bool, journal: Path | None, no_sim: bool, isolate_plugins: bool) -> None:
+                  port: int, update_hz: float, resume: bool, journal: Path | None, no_sim: bool, isolate_plugins: bool) -> None:
     """Watch and edit a live world in your browser: the 3D view with the chat beside it.
 
     Example: drivetwin serve --world campus   (then open the printed URL)
@@ -52,7 +54,8 @@ def serve_command(world: str, planner_name: str | None, backend: str | None, mod
 
     try:
         try:
-            app = ServeApp(session, live, host=host, port=port, frames_dir=settings.state_dir / "serve_frames")
+            app = ServeApp(session, live, host=host, port=port, frames_dir=settings.state_dir / "serve_frames",
+                           update_hz=update_hz)
         except OSError as exc:  # the port is taken, or the host is not this machine's
             raise click.ClickException(f"cannot listen on {host}:{port}: {exc}") from exc
         signal.signal(signal.SIGTERM, stop_serving)
