@@ -4,6 +4,10 @@ Each lane becomes one road with one right-hand lane whose centre is the road's r
 (a lane offset of half its width): the plan view is the lane's centreline as line segments,
 the elevation profile its heights as linear pieces, so reading the file back gives the same
 lanes. Sidewalks are roads with one sidewalk lane. The road's name is the lane's road name.
+
+`validate_opendrive` checks a file against the ASAM OpenDRIVE 1.7 schema that the
+scenariogeneration package ships (opendrive_17_core.xsd and the parts it includes); the
+files written here declare 1.5, whose elements they use are unchanged in 1.7.
 """
 
 from __future__ import annotations
@@ -11,11 +15,18 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Sequence
+from importlib.metadata import files
 from pathlib import Path
 
 from drivetwin.worlds.scene import Scene
 
-__all__ = ["export_opendrive"]
+__all__ = ["OpenDriveError", "export_opendrive", "opendrive_xsd", "validate_opendrive"]
+
+OPENDRIVE_XSD = "opendrive_17_core.xsd"
+
+
+class OpenDriveError(ValueError):
+    """An OpenDRIVE file that does not validate against the schema, or no schema to check it with."""
 
 
 def _road(road_id: int, name: str, polyline: Sequence[tuple[float, float]], width: float, lane_type: str,
@@ -65,3 +76,26 @@ def export_opendrive(scene: Scene, path: str | Path) -> Path:
     target = Path(path)
     odr.write_xml(str(target))
     return target
+
+
+def opendrive_xsd() -> Path:
+    """The ASAM OpenDRIVE 1.7 schema (its core file) that the scenariogeneration package ships."""
+    for file in files("scenariogeneration") or []:
+        if file.name == OPENDRIVE_XSD:
+            return Path(str(file.locate()))
+    raise OpenDriveError(f"scenariogeneration ships no {OPENDRIVE_XSD}; reinstall it (pip install scenariogeneration)")
+
+
+def validate_opendrive(path: str | Path) -> None:
+    """Raise OpenDriveError with the first problem if `path` does not validate against the XSD."""
+    import xmlschema
+
+    schema = xmlschema.XMLSchema(str(opendrive_xsd()))
+    try:
+        errors = list(schema.iter_errors(str(path)))
+    except (OSError, SyntaxError) as exc:  # ElementTree's ParseError is a SyntaxError
+        raise OpenDriveError(f"{path} cannot be read as XML: {exc}") from exc
+    if errors:
+        first = errors[0]
+        reason = " ".join(str(first.reason).split())
+        raise OpenDriveError(f"{path} is not valid OpenDRIVE 1.7: {len(errors)} error(s), first at {first.path}: {reason}")
