@@ -35,6 +35,7 @@ __all__ = [
     "UpdateStats",
     "collision_groups",
     "consistency_problems",
+    "scene_diff",
 ]
 
 # Stable for 60 kg robots to 12 t buses on cylinder wheels with the implicit integrator,
@@ -96,6 +97,19 @@ def _refresh_kinematics(model: mujoco.MjModel, data: mujoco.MjData) -> None:
         mujoco.mj_kinematics(model, data)
     finally:
         options.enableflags = flags
+
+
+def scene_diff(old: Scene, new: Scene) -> tuple[dict[str, AssetInstance], dict[str, AssetInstance]]:
+    """The assets of `old` that `new` does not hold and those of `new` that `old` does not,
+    each by id, matched by identity: edits share every unchanged AssetInstance between
+    scenes, so this costs set operations (C), not a comparison per asset. An asset changed
+    (or copied) appears in both."""
+    before, after = old.all_assets(), new.all_assets()
+    ids_before, ids_after = list(map(id, before)), list(map(id, after))
+    gone, came = set(ids_before).difference(ids_after), set(ids_after).difference(ids_before)
+    by_id = dict(zip(ids_before, before, strict=True))
+    by_id.update(zip(ids_after, after, strict=True))
+    return {by_id[k].id: by_id[k] for k in gone}, {by_id[k].id: by_id[k] for k in came}
 
 
 def _arena_bytes(pool: BodyPool) -> int:
@@ -177,12 +191,10 @@ class MujocoWorld:
         UnknownCategoryError, leaving the world untouched, for an unknown category.
         """
         started = time.perf_counter()
-        old = {a.id: a for a in self.scene.all_assets()}
-        new = {a.id: a for a in scene.all_assets()}
+        old, new = scene_diff(self.scene, scene)
         removed = [i for i in old if i not in new]
         added = [i for i in new if i not in old]
-        # Unchanged assets are the same objects in both scenes (edits share them): skip fast.
-        changed = [i for i in new if i in old and old[i] is not new[i] and _body_differs(old[i], new[i])]
+        changed = [i for i in new if i in old and _body_differs(old[i], new[i])]
         moved = [i for i in changed if _only_pose_differs(old[i], new[i])]
         reshaped = [i for i in changed if i not in moved and slot_key(old[i]) != slot_key(new[i])]
         restyled = [i for i in changed if i not in moved and i not in reshaped]
@@ -219,7 +231,7 @@ class MujocoWorld:
             added=len(added),
             removed=len(removed),
             replaced=len(changed),
-            unchanged=len(new) - len(added) - len(changed),
+            unchanged=len(scene.assets) + 1 - len(added) - len(changed),
             static_rebuilt=static_changed,
             recompiled=recompile,
             ms=(time.perf_counter() - started) * 1000.0,

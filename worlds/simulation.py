@@ -14,7 +14,7 @@ from collections import deque
 
 import mujoco
 from drivetwin.worlds.behaviours import BehaviourRunner, UnknownLaneError, runner_for
-from drivetwin.worlds.mujoco_adapter import DEFAULT_TIMESTEP, MujocoWorld, UpdateStats
+from drivetwin.worlds.mujoco_adapter import DEFAULT_TIMESTEP, MujocoWorld, UpdateStats, scene_diff
 from drivetwin.worlds.scenario_player import StoryboardPlayer
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Pose, Scene
 
@@ -90,15 +90,16 @@ class Simulation:
             old = self.world.scene
             stats = self.world.update(scene)
             ego_changed = old.ego.behaviour != scene.ego.behaviour
-            previous = {a.id: a for a in old.all_assets()}
-            for asset in scene.all_assets():
-                before = previous.get(asset.id)
-                # Jaywalkers watch the ego's lane, so they are redone when the ego changes.
-                watches_ego = asset.behaviour.kind == "jaywalk" and ego_changed
-                # Edits share unchanged assets between scenes: an identity test skips most.
-                if (before is not asset and before != asset) or watches_ego:
+            # Edits share unchanged assets between scenes: only the others are looked at.
+            gone, came = scene_diff(old, scene)
+            for asset in came.values():
+                if gone.get(asset.id) != asset:
                     self._make_runner(asset, scene)
-            for asset_id in set(previous) - {a.id for a in scene.all_assets()}:
+            if ego_changed:  # jaywalkers watch the ego's lane, so they are redone with it
+                for asset in scene.assets:
+                    if asset.behaviour.kind == "jaywalk" and asset.id not in came:
+                        self._make_runner(asset, scene)
+            for asset_id in set(gone) - set(came):
                 self._runners.pop(asset_id, None)
                 self._traces.pop(asset_id, None)
             self._bind_all()
