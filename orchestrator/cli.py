@@ -229,6 +229,7 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "hybrid": ("drivetwin.worlds.render.bench_hybrid", "hybrid renderer stage table at 10k/100k/1M splats"),
     "planners": ("drivetwin.orchestrator.bench_planners", "planner latency on the paper's prompts"),
     "roads": ("drivetwin.worlds.opendrive.bench", "OpenDRIVE/OSM import time and lane accuracy"),
+    "serve": ("drivetwin.orchestrator.serve.bench", "browser view pose updates per second with N assets"),
 }
 
 

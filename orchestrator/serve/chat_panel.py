@@ -35,9 +35,9 @@ class PanelActions:
     clear_selection: Callable[[], None]
 
 
-def _code(text: str) -> str:
-    """Text shown verbatim in markdown (plans and diffs hold brackets and underscores)."""
-    return "```\n" + text.replace("```", "'''") + "\n```"
+def _quoted(text: str) -> str:
+    """Text shown line for line as a quote that wraps (plans and diffs hold brackets and underscores)."""
+    return "\n".join(f"> {_escape(line.strip())}  " for line in text.splitlines() if line.strip())
 
 
 def conversation_markdown(messages: list[Message]) -> str:
@@ -49,7 +49,7 @@ def conversation_markdown(messages: list[Message]) -> str:
         if message.role == "you":
             lines.append(f"**you:** {_escape(message.text)}")
         else:
-            lines.append(_code(message.text.strip("\n") or "(done)"))
+            lines.append(_quoted(message.text) or "> (done)")
     return "\n\n".join(lines)
 
 
