@@ -56,3 +56,17 @@ def test_a_driving_car_follows_the_slope(slope):
     assert abs(heights[-1][1] - start.z) > 0.3  # it climbed or descended along the road
     for body, road in heights:
         assert body == pytest.approx(road, abs=ON_ROAD_M)
+
+
+def test_a_crest_on_a_straight_road_keeps_its_height(tmp_path):
+    from scenariogeneration import xodr
+
+    road = xodr.create_road(xodr.Line(100.0), 1, left_lanes=1, right_lanes=1)
+    road.add_elevation(0.0, 0.0, 0.1, -0.001, 0.0)  # z = 0.1 s - 0.001 s^2: 2.5 m up at s = 50
+    drive = xodr.OpenDrive("crest")
+    drive.add_road(road)
+    drive.adjust_roads_and_lanes()
+    drive.write_xml(str(tmp_path / "crest.xodr"))
+    lane = scene_from_file(tmp_path / "crest.xodr").roads.lanes[0]
+    assert lane.elevation is not None
+    assert max(lane.elevation) == pytest.approx(2.5, abs=0.02)  # a straight line in plan, not in height
