@@ -4,18 +4,7 @@ import pytest
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools import ToolRegistry
-from drivetwin.worlds.campus import build_campus
 from drivetwin.worlds.scene import Scene
-
-
-@pytest.fixture(scope="session")
-def registry() -> ToolRegistry:
-    return ToolRegistry.default(plugins=False)
-
-
-@pytest.fixture
-def campus() -> Scene:
-    return build_campus()
 
 
 @pytest.fixture

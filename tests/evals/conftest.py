@@ -12,20 +12,11 @@ from drivetwin.evals.trial import fresh_world
 from drivetwin.orchestrator.transaction import execute
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.registry import ToolRegistry
-from drivetwin.worlds.scene import Scene
 from tiny_planner import TINY_CASES, write_suite
 
 HERE = Path(__file__).resolve().parent
 
 
-@pytest.fixture(scope="session")
-def registry() -> ToolRegistry:
-    return ToolRegistry.default(plugins=False)
-
-
-@pytest.fixture()
-def campus() -> Scene:
-    return fresh_world("campus")
 
 
 OutcomeOf = Callable[..., Outcome]

@@ -6,18 +6,7 @@ from typing import Any, Protocol
 
 import pytest
 from drivetwin.tools import ToolCall, ToolRegistry, ToolResult
-from drivetwin.worlds.defaults import load_world
 from drivetwin.worlds.scene import Scene
-
-
-@pytest.fixture(scope="session")
-def registry() -> ToolRegistry:
-    return ToolRegistry.default(plugins=False)
-
-
-@pytest.fixture
-def campus() -> Scene:
-    return load_world("campus")
 
 
 class Caller(Protocol):
