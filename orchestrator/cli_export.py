@@ -20,7 +20,8 @@ class ExportError(ValueError):
 
 
 def export_scene(scene: Scene, target: str | Path, validate: bool = True) -> list[Path]:
-    """Write `scene` to `target` (.xosc, with a .xodr beside it), validated; the files written."""
+    """Write `scene` to `target` (.xosc, with a .xodr beside it), both validated; the files written."""
+    from drivetwin.worlds.export.opendrive import OpenDriveError, validate_opendrive
     from drivetwin.worlds.export.openscenario import OpenScenarioError, export_openscenario, validate_openscenario
 
     path = Path(target)
@@ -31,7 +32,8 @@ def export_scene(scene: Scene, target: str | Path, validate: bool = True) -> lis
     if validate:
         try:
             validate_openscenario(scenario)
-        except OpenScenarioError as exc:
+            validate_opendrive(roads)
+        except (OpenScenarioError, OpenDriveError) as exc:
             raise ExportError(str(exc)) from exc
     return [scenario, roads]
 
@@ -49,5 +51,5 @@ def export_command(scene_file: Path, target: Path, no_validate: bool) -> None:
     except (SceneFileError, ExportError, OSError) as exc:
         raise click.ClickException(str(exc)) from exc
     events = sum(1 for _ in scene.storyboard.events())
-    checked = "" if no_validate else ", valid against the OpenSCENARIO 1.2 XSD"
+    checked = "" if no_validate else ", valid against the OpenSCENARIO 1.2 XSD; roads valid OpenDRIVE 1.7"
     click.echo(f"wrote {written[0]} ({len(scene.all_assets())} entities, {events} events{checked}) and {written[1]}")

@@ -9,6 +9,7 @@ import pytest
 from click.testing import CliRunner
 from drivetwin.orchestrator.cli import main
 from drivetwin.worlds.campus import build_campus
+from drivetwin.worlds.export.opendrive import validate_opendrive
 from drivetwin.worlds.export.openscenario import (
     OpenScenarioError,
     export_openscenario,
@@ -108,10 +109,11 @@ def test_the_xsd_is_the_one_scenariogeneration_ships() -> None:
     assert xsd.name == "OpenSCENARIO_1_2.xsd" and xsd.is_file()
 
 
-def test_every_manoeuvre_and_condition_exports_to_a_file_that_validates(exported: tuple[Scene, Path, Path]) -> None:
+def test_every_manoeuvre_and_condition_exports_to_files_that_validate(exported: tuple[Scene, Path, Path]) -> None:
     _, scenario, roads = exported
     validate_openscenario(scenario)
-    assert roads.suffix == ".xodr" and "<OpenDRIVE" in roads.read_text()
+    validate_opendrive(roads)
+    assert roads.suffix == ".xodr"
     assert f'filepath="{roads.name}"' in scenario.read_text()
 
 
@@ -158,7 +160,7 @@ def test_the_export_command_writes_and_validates_both_files(tmp_path: Path) -> N
     _every_kind_scene().save(source)
     result = CliRunner().invoke(main, ["export", str(source), "--to", str(tmp_path / "out.xosc")])
     assert result.exit_code == 0, result.output
-    assert "11 events, valid against the OpenSCENARIO 1.2 XSD" in result.output
+    assert "11 events, valid against the OpenSCENARIO 1.2 XSD; roads valid OpenDRIVE 1.7" in result.output
     assert (tmp_path / "out.xosc").is_file() and (tmp_path / "out.xodr").is_file()
 
 
