@@ -1,0 +1,488 @@
+"""The practice suite's cases, as a plain list: `python -m drivetwin.evals.practice_source`.
+
+A second development suite, written from the campus world, the catalog, the Worker tools and
+the checks only (not from the planners, their prompts or any other suite), in the voices of
+different users. Every case judges the outcome, and its reference calls build one outcome
+its checks accept (tests/evals/test_practice_suite.py). The few builders below only spell
+JSON; they hold no logic of their own.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+JSONL_PATH = Path(__file__).with_name("suites") / "practice.jsonl"
+Json = dict[str, Any]
+
+# Ids of the campus world's assets, as campus.json names them.
+LOT_B_VEHICLES = ["passenger_car_1", "suv_1", "passenger_car_2"]
+OK: Json = {"kind": "status", "accepted": True}
+
+
+def call(tool: str, **args: Any) -> Json:
+    return {"tool": tool, "args": args}
+
+
+def at(target: str, relation: str = "at", **more: Any) -> Json:
+    return {"relation": relation, "target": target, **more}
+
+
+def xy(x: float, y: float) -> Json:
+    return {"relation": "absolute", "x": x, "y": y}
+
+
+def keep(*categories: str, assets: tuple[str, ...] | list[str] = (), environment: bool = False) -> Json:
+    """Nothing else changed: the collateral-edit guard every case carries."""
+    return {"kind": "unchanged_except", "categories": list(categories), "assets": list(assets),
+            "environment": environment}
+
+
+def delta(category: str | list[str], lo: int, hi: int | None = None) -> Json:
+    return {"kind": "count_delta", "category": category, "min": lo, "max": lo if hi is None else hi}
+
+
+def count(category: str | list[str], lo: int | None, hi: int | None) -> Json:
+    return {"kind": "count", "category": category, "min": lo, "max": hi}
+
+
+def near(target: str, within: float, **select: Any) -> Json:
+    return {"kind": "near", "target": target, "within": within, **select}
+
+
+def near_point(x: float, y: float, within: float, **select: Any) -> Json:
+    return {"kind": "near", "point": [x, y], "within": within, **select}
+
+
+def says(*any_of: str, all_of: tuple[str, ...] = (), none_of: tuple[str, ...] = ()) -> Json:
+    return {"kind": "answer_contains", "any_of": list(any_of), "all_of": list(all_of),
+            "none_of": list(none_of)}
+
+
+def gone(*assets: str) -> Json:
+    return {"kind": "exists", "assets": list(assets), "present": False}
+
+
+def moved(asset: str, lo: float, hi: float | None = None, **more: Any) -> Json:
+    return {"kind": "moved", "asset": asset, "min_distance": lo, "max_distance": hi, **more}
+
+
+def env(**fields: Any) -> Json:
+    return {"kind": "environment", **fields}
+
+
+def look(colour: str | None = None, material: str | None = None, **select: Any) -> Json:
+    return {"kind": "appearance", "colour": colour, "material": material, **select}
+
+
+def step(prompt: str, calls: list[Json], planned: bool = False) -> Json:
+    return {"prompt": prompt, "calls": calls, "planned": planned}
+
+
+def refused() -> list[Json]:
+    """The outcome of an impossible request: refused, and nothing changed."""
+    return [{"kind": "status", "accepted": False}, keep()]
+
+
+CASES: list[Json] = []
+
+
+def case(task: str, grade: str, name: str, prompt: str, reference: list[Json], checks: list[Json], *,
+         setup: list[Json] | None = None, alternatives: list[list[Json]] | None = None,
+         tags: tuple[str, ...] = (), notes: str = "") -> None:
+    labels = ["practice", *tags]
+    if setup:
+        labels.append("multi_turn")
+    CASES.append({
+        "id": f"practice.{task}.{grade}.{name}", "world": "campus", "setup": setup or [],
+        "prompt": prompt, "task": task, "grade": grade, "tags": labels, "checks": checks,
+        "alternatives": alternatives or [], "reference": reference, "notes": notes,
+    })
+
+
+# Scene set-ups replayed before a prompt (planned=False: the same start for every planner).
+CONES_AT_LOT_B = step("Add four traffic cones at the lot B entrance.",
+                      [call("add_asset", category="traffic_cone", count=4, location=at("parking lot B entrance"))])
+BUS_AHEAD = step("Add a bus 15 m in front of the ego.",
+                 [call("add_asset", category="bus", location=at("ego", "in_front_of", distance=15))])
+TRUCK_IN_LANE = step("Put a truck in the eastbound lane at x=-20.",
+                     [call("add_asset", category="truck", location=xy(-20, -1.75), yaw_deg=0)])
+RUBBLE_ON_CAMPUS = step("Put some rubble in the northbound lane of Campus Drive.",
+                        [call("add_asset", category="cement_rubble", location=xy(1.75, -30))])
+CONES_WESTBOUND = step("Put three cones in the westbound lane near x=30.",
+                       [call("add_asset", category="traffic_cone", count=3, location=xy(30, 1.75)),
+                        ])
+CROWD_AT_CROSSWALK = step("Add five pedestrians at the west crosswalk.",
+                          [call("add_asset", category="pedestrian", count=5, location=at("west crosswalk"))])
+BARRIERS_AT_GATE = step("Add three road barriers at the east gate.",
+                        [call("add_asset", category="road_barrier", count=3, location=at("east gate"))])
+RAIN = step("Make it rain.", [call("set_weather", kind="rain", intensity=0.6)])
+
+# ---------------------------------------------------------------------------------------- search
+S = "search"
+ANSWER = [OK, keep()]
+case(S, "direct", "nearest_landmark_to_ego", "Which landmark is nearest to the ego vehicle?",
+     [call("find_landmarks", nearest_to="ego")], [*ANSWER, says("parking lot A", "lot A")])
+case(S, "direct", "count_street_lights", "How many street lights are there on the campus?",
+     [call("find_assets", category="street_light")], [*ANSWER, says("12", "twelve")])
+case(S, "direct", "lanes_of_main_street", "List the lanes of Main Street.",
+     [call("find_lanes", road="Main Street")],
+     [*ANSWER, says(all_of=("main_eastbound", "main_westbound"), none_of=("campus_northbound",))])
+case(S, "direct", "where_is_hydrant", "Where is the fire hydrant?",
+     [call("find_assets", category="fire_hydrant")], [*ANSWER, says("16", "16.0", all_of=("5.5",))])
+case(S, "direct", "nearest_car_to_ego", "What is the nearest car to the ego vehicle?",
+     [call("find_assets", category="passenger_car", nearest_to="ego")], [*ANSWER, says("passenger_car_1")])
+case(S, "direct", "bus_mass", "How heavy is a bus?",
+     [call("asset_properties", category="bus")], [*ANSWER, says("12000", "12,000", "12 t", "12 tonnes")])
+case(S, "direct", "trees_near_fountain", "Which trees are within 20 m of the fountain?",
+     [call("find_assets", category="tree", near="fountain", within=20)],
+     [*ANSWER, says(all_of=("tree_2", "tree_3"), none_of=("tree_1", "tree_4"))])
+case(S, "direct", "lane_nearest_union", "Which lane is nearest the Student Union entrance?",
+     [call("find_lanes", near="Student Union entrance")], [*ANSWER, says("campus_northbound")])
+case(S, "direct", "ego_mass_and_landmark", "How heavy is the ego vehicle, and which landmark is closest to it?",
+     [call("asset_properties", asset="ego"), call("find_landmarks", nearest_to="ego")],
+     [*ANSWER, says("1600", "1,600", all_of=("parking lot A",))], tags=("compound",))
+case(S, "direct", "impossible_swimming_pool", "Where is the swimming pool?",
+     [call("find_landmarks", query="swimming pool")], refused(), tags=("impossible",))
+
+case(S, "indirect", "bus_stop_distance", "Could you tell me how far the bus stop is from the ego car?",
+     [call("find_landmarks", nearest_to="ego")], [*ANSWER, says("30.2", "30")])
+case(S, "indirect", "bench_near_bus_stop",
+     "I'd like to know whether there's a bench anywhere near the bus stop before I plan the pedestrian test.",
+     [call("find_assets", category="bench", near="bus stop", within=10)], [*ANSWER, says("bench_1")])
+case(S, "indirect", "cars_parked_in_lot_b", "Before I add traffic, tell me which cars are parked in lot B.",
+     [call("find_assets", category="passenger_car", near="parking lot B", within=25)],
+     [*ANSWER, says(all_of=("passenger_car_1", "passenger_car_2"))])
+case(S, "indirect", "anything_on_campus_drive",
+     "The robot will drive up Campus Drive next; is anything in its way there?",
+     [call("find_assets", lane="Campus Drive")], [*ANSWER, says("cement_rubble_1", "rubble", "cement_rubble")],
+     setup=[RUBBLE_ON_CAMPUS])
+case(S, "indirect", "landmark_by_traffic_light_2",
+     "I want to put a sign by whatever landmark sits closest to traffic_light_2; which one is that?",
+     [call("find_landmarks", nearest_to="traffic_light_2")], [*ANSWER, says("main intersection", "intersection")])
+case(S, "indirect", "truck_mass", "It would help my braking calculation to know what a truck weighs.",
+     [call("asset_properties", category="truck")], [*ANSWER, says("9000", "9,000", "9 t")])
+case(S, "indirect", "tree_count_for_report", "For my report I need the number of trees on campus.",
+     [call("find_assets", category="tree")], [*ANSWER, says("4", "four")])
+case(S, "indirect", "lamps_near_bus_stop", "Could you check which lamp posts stand within 15 m of the bus stop?",
+     [call("find_assets", category="street_light", near="bus stop", within=15)],
+     [*ANSWER, says(all_of=("street_light_4", "street_light_5"), none_of=("street_light_6", "street_light_3"))])
+case(S, "indirect", "lanes_and_hydrant",
+     "We're mapping the crossroads: which lanes does Campus Drive have, and where is the hydrant?",
+     [call("find_lanes", road="Campus Drive"), call("find_assets", category="fire_hydrant")],
+     [*ANSWER, says(all_of=("campus_northbound", "campus_southbound", "fire_hydrant_1"))], tags=("compound",))
+
+case(S, "vague", "whats_around_ego", "what's around the ego?",
+     [call("find_assets", nearest_to="ego")], [*ANSWER, says("street_light_2")])
+case(S, "vague", "anything_blocking_road", "anything blocking the road?",
+     [call("find_assets", on_lane=True)], [*ANSWER, says("traffic_cone", "cone", "traffic_cone_1")],
+     setup=[CONES_WESTBOUND])
+case(S, "vague", "where_to_park", "where can I park?",
+     [call("find_landmarks", query="parking")], [*ANSWER, says("parking lot A", "parking lot B")])
+case(S, "vague", "which_way_ego", "ego - which way and how?",
+     [call("asset_properties", asset="ego")], [*ANSWER, says("drive_lane", "yaw 0", "0 deg", "east")])
+case(S, "vague", "the_cars", "the cars - where are they?",
+     [call("find_assets", category="passenger_car")],
+     [*ANSWER, says(all_of=("passenger_car_1", "passenger_car_2"))])
+case(S, "vague", "stuff_near_fountain", "stuff near the fountain?",
+     [call("find_assets", near="fountain", within=20)], [*ANSWER, says("tree_2")])
+case(S, "vague", "near_back_gate", "closest landmark to the back gate?",
+     [call("find_landmarks", nearest_to="east gate")], [*ANSWER, says("fountain")])
+case(S, "vague", "bins_and_benches", "bins? benches? how many of each",
+     [call("find_assets", category="trash_bin"), call("find_assets", category="bench")],
+     [*ANSWER, says("trash_bin_1", "1"), says("bench_1", "1")], tags=("compound",))
+case(S, "vague", "impossible_lamps_by_gym", "any lamps near the gym?",
+     [call("find_assets", category="street_light", near="gym", within=20)], refused(), tags=("impossible",))
+
+case(S, "erroneous", "wich_landmark_nerest", "wich landmark is nerest to ego car",
+     [call("find_landmarks", nearest_to="ego")], [*ANSWER, says("parking lot A", "lot A")])
+case(S, "erroneous", "how_much_lihgts", "how much street lihgts there is?",
+     [call("find_assets", category="street_light")], [*ANSWER, says("12", "twelve")])
+case(S, "erroneous", "were_hydrent", "were is the hydrent",
+     [call("find_assets", category="fire_hydrant")], [*ANSWER, says("fire_hydrant_1", "16.0", "16")])
+case(S, "erroneous", "lanes_campus_driv", "tel me the lanes on campus driv",
+     [call("find_lanes", road="Campus Drive")],
+     [*ANSWER, says(all_of=("campus_northbound", "campus_southbound"), none_of=("main_eastbound",))])
+case(S, "erroneous", "lorry_weigh", "how heavy a lorry is?",
+     [call("asset_properties", category="truck")], [*ANSWER, says("9000", "9,000")])
+case(S, "erroneous", "car_most_near", "what car is most near to the ego",
+     [call("find_assets", category="passenger_car", nearest_to="ego")], [*ANSWER, says("passenger_car_1")])
+case(S, "erroneous", "trees_near_fountian", "tree near fountian, which ones?",
+     [call("find_assets", category="tree", near="fountain", within=20)],
+     [*ANSWER, says(all_of=("tree_2",), none_of=("tree_1", "tree_4"))])
+case(S, "erroneous", "somthing_block_street", "is somthing block the street?",
+     [call("find_assets", on_lane=True)], [*ANSWER, says("traffic_cone", "cone", "traffic_cone_1")],
+     setup=[CONES_WESTBOUND])
+case(S, "erroneous", "bench_near_bus_stp", "bench near bus stp??",
+     [call("find_assets", category="bench", near="bus stop", within=10)], [*ANSWER, says("bench_1")])
+case(S, "erroneous", "impossible_swiming_pool", "wheres the swiming pool",
+     [call("find_landmarks", query="swimming pool")], refused(), tags=("impossible",))
+
+# -------------------------------------------------------------------------------------- addition
+A = "addition"
+case(A, "direct", "bus_ahead_of_ego", "Add a bus 10 m in front of the ego vehicle.",
+     [call("add_asset", category="bus", location=at("ego", "in_front_of", distance=10))],
+     [delta("bus", 1), {"kind": "relative", "category": "bus", "relation": "in_front_of", "target": "ego",
+                        "max_distance": 25}, keep("bus")])
+case(A, "direct", "three_cones_lot_b_entrance", "Place three traffic cones at the entrance of parking lot B.",
+     [call("add_asset", category="traffic_cone", count=3, location=at("parking lot B entrance"))],
+     [delta("traffic_cone", 3), near("parking lot B entrance", 8, category="traffic_cone", require_all=True),
+      keep("traffic_cone")])
+case(A, "direct", "pedestrian_sidewalk_library", "Add a pedestrian on the sidewalk near the Library entrance.",
+     [call("add_asset", category="pedestrian", location=at("Library entrance", "on_sidewalk"))],
+     [delta("pedestrian", 1), {"kind": "on_surface", "category": "pedestrian", "surfaces": ["sidewalk"]},
+      near("Library entrance", 15, category="pedestrian"), keep("pedestrian")])
+case(A, "direct", "car_driving_westbound", "Add a car driving in main_westbound at 6 m/s.",
+     [call("add_asset", category="passenger_car", location=at("main_westbound", "in_lane"),
+           behaviour={"kind": "drive_lane", "lane": "main_westbound", "speed": 6})],
+     [delta("passenger_car", 1), {"kind": "behaviour", "category": "passenger_car", "behaviour": "drive_lane",
+                                  "lane": "main_westbound", "speed_min": 5.5, "speed_max": 6.5},
+      keep("passenger_car")])
+case(A, "direct", "truck_15m_ahead_in_lane", "Put a truck 15 m ahead of the ego in its lane.",
+     [call("add_asset", category="truck", location=at("ego", along_m=15))],
+     [delta("truck", 1), {"kind": "in_lane", "category": "truck", "lane": "main_eastbound"},
+      {"kind": "relative", "category": "truck", "relation": "in_front_of", "target": "ego", "max_distance": 22,
+       "tolerance_deg": 30}, keep("truck")])
+case(A, "direct", "two_benches_fountain", "Add two benches near the fountain.",
+     [call("add_asset", category="bench", count=2, location=at("fountain"))],
+     [delta("bench", 2), near("fountain", 10, category="bench", require_all=True), keep("bench")])
+case(A, "direct", "stop_sign_north_crosswalk", "Add a stop sign at the north crosswalk.",
+     [call("add_asset", category="stop_sign", location=at("north crosswalk"))],
+     [delta("stop_sign", 1), near("north crosswalk", 8, category="stop_sign"), keep("stop_sign")])
+case(A, "direct", "robot_lot_a", "Add an Ackermann robot in parking lot A.",
+     [call("add_asset", category="ackermann_robot", location=at("parking lot A"))],
+     [delta("ackermann_robot", 1), near("parking lot A", 1, category="ackermann_robot"), keep("ackermann_robot")])
+case(A, "direct", "bus_and_pedestrian", "Add a bus in front of the ego and a pedestrian at the west crosswalk.",
+     [call("add_asset", category="bus", location=at("ego", "in_front_of")),
+      call("add_asset", category="pedestrian", location=at("west crosswalk"))],
+     [delta("bus", 1), delta("pedestrian", 1), near("west crosswalk", 6, category="pedestrian"),
+      {"kind": "relative", "category": "bus", "relation": "in_front_of", "target": "ego", "max_distance": 25},
+      keep("bus", "pedestrian")], tags=("compound",))
+case(A, "direct", "impossible_250_cones", "Add 250 traffic cones in parking lot A.",
+     [call("add_asset", category="traffic_cone", count=250, location=at("parking lot A"))], refused(),
+     tags=("impossible",), notes="a scene holds at most 200 cones")
+
+case(A, "indirect", "stalled_van_near_library",
+     "For the next run I need a stalled van blocking the eastbound lane near the library.",
+     [call("add_asset", category="truck", location=xy(-41, -1.75), yaw_deg=0)],
+     [delta("truck", 1), {"kind": "in_lane", "category": "truck", "lane": "main_eastbound"},
+      near("Library entrance", 25, category="truck"),
+      {"kind": "behaviour", "category": "truck", "behaviour": "parked"}, keep("truck")])
+case(A, "indirect", "busier_main_street",
+     "I'd like the street to feel busier - could you add a couple of cars driving along Main Street?",
+     [call("add_asset", category="passenger_car", count=2, location=at("main_westbound", "in_lane"),
+           behaviour={"kind": "drive_lane", "lane": "main_westbound"})],
+     [delta(["passenger_car", "suv"], 2, 3), {"kind": "behaviour", "category": ["passenger_car", "suv"],
+                                             "behaviour": "drive_lane", "min_count": 2},
+      {"kind": "in_lane", "category": ["passenger_car", "suv"]}, keep("passenger_car", "suv")])
+case(A, "indirect", "someone_waiting_crosswalk",
+     "We're testing pedestrian detection, so someone should be waiting at the west crosswalk.",
+     [call("add_asset", category="pedestrian", location=at("west crosswalk"))],
+     [delta("pedestrian", 1, 3), near("west crosswalk", 6, category="pedestrian"), keep("pedestrian")])
+case(A, "indirect", "shade_by_bus_stop", "It would be nice to have some shade near the bus stop.",
+     [call("add_asset", category="tree", location=at("bus stop"))],
+     [delta("tree", 1, 3), near("bus stop", 12, category="tree"), keep("tree")])
+case(A, "indirect", "shuttle_at_stop", "Could you put a shuttle at the bus stop?",
+     [call("add_asset", category="bus", location=at("bus stop"))],
+     [delta("bus", 1), near("bus stop", 10, category="bus"), keep("bus")])
+case(A, "indirect", "rover_westbound",
+     "Our perception team wants one of the small research rovers driving toward the ego in the westbound lane.",
+     [call("add_asset", category="ackermann_robot", location=xy(-30, 1.75),
+           behaviour={"kind": "drive_lane", "lane": "main_westbound", "speed": 3})],
+     [delta("ackermann_robot", 1), {"kind": "in_lane", "category": "ackermann_robot", "lane": "main_westbound"},
+      {"kind": "behaviour", "category": "ackermann_robot", "behaviour": "drive_lane", "lane": "main_westbound"},
+      keep("ackermann_robot")])
+case(A, "indirect", "jaywalker_for_braking",
+     "I want to test emergency braking: have a jaywalker cross about 25 m ahead of the ego.",
+     [call("add_asset", category="pedestrian", location=at("ego", "in_front_of", distance=25),
+           behaviour={"kind": "jaywalk", "ahead": 25})],
+     [delta("pedestrian", 1), {"kind": "behaviour", "category": "pedestrian", "behaviour": ["jaywalk", "cross_road"]},
+      keep("pedestrian")])
+case(A, "indirect", "parking_sign_lot_a", "Please add a parking sign by the lot A entrance so drivers know where to go.",
+     [call("add_asset", category="parking_sign", location=at("parking lot A entrance"))],
+     [delta("parking_sign", 1), near("parking lot A entrance", 8, category="parking_sign"), keep("parking_sign")])
+case(A, "indirect", "roadworks_rubble_campus",
+     "Since we're simulating roadworks, drop a pile of rubble in the northbound lane of Campus Drive.",
+     [call("add_asset", category="cement_rubble", location=at("campus_northbound", "in_lane"))],
+     [delta("cement_rubble", 1, 3), {"kind": "in_lane", "category": "cement_rubble", "lane": "campus_northbound"},
+      keep("cement_rubble")])
+case(A, "indirect", "impossible_helicopter", "For an aerial test I'd need a helicopter landing on the library roof.",
+     [call("add_asset", category="helicopter", location=at("Library entrance"))], refused(),
+     tags=("impossible",))
+
+case(A, "vague", "more_cones", "more cones",
+     [call("add_asset", category="traffic_cone", count=3, location=at("parking lot B entrance"))],
+     [delta("traffic_cone", 1, 50), keep("traffic_cone")], setup=[CONES_AT_LOT_B])
+case(A, "vague", "street_busier", "make the street busier",
+     [call("add_asset", category="passenger_car", count=3, location=at("main_eastbound", "in_lane"),
+           behaviour={"kind": "drive_lane", "lane": "main_eastbound"})],
+     [delta(["passenger_car", "suv", "bus", "truck", "motorcycle", "bicycle"], 1, 50),
+      {"kind": "behaviour", "category": ["passenger_car", "suv", "bus", "truck", "motorcycle", "bicycle"],
+       "behaviour": "drive_lane"},
+      keep("passenger_car", "suv", "bus", "truck", "motorcycle", "bicycle", "pedestrian")])
+case(A, "vague", "someone_at_bus_stop", "someone at the bus stop",
+     [call("add_asset", category="pedestrian", location=at("bus stop"))],
+     [delta("pedestrian", 1, 3), near("bus stop", 8, category="pedestrian"), keep("pedestrian")])
+case(A, "vague", "greenery_engineering", "a bit of greenery by the engineering building",
+     [call("add_asset", category="tree", location=at("Engineering Hall entrance"))],
+     [delta("tree", 1, 5), near("Engineering Hall", 15, category="tree"), keep("tree")])
+case(A, "vague", "something_big_lot_b", "something big parked in lot B",
+     [call("add_asset", category="truck", location=at("parking lot B"))],
+     [delta(["bus", "truck"], 1, 2), near("parking lot B", 1, category=["bus", "truck"]), keep("bus", "truck")])
+case(A, "vague", "dozen_cones_near_ego", "a dozen cones near the ego",
+     [call("add_asset", category="traffic_cone", count=12, location=at("ego", "in_front_of"))],
+     [delta("traffic_cone", 12), near("ego", 25, category="traffic_cone", require_all=True), keep("traffic_cone")])
+case(A, "vague", "barrier_east_gate", "need a barrier at the east gate",
+     [call("add_asset", category="road_barrier", location=at("east gate"))],
+     [delta("road_barrier", 1, 3), near("east gate", 8, category="road_barrier"), keep("road_barrier")])
+case(A, "vague", "bikes_at_union", "bikes at the union",
+     [call("add_asset", category="bicycle", count=3, location=at("Student Union entrance"))],
+     [delta("bicycle", 2, 10), near("Student Union entrance", 12, category="bicycle", require_all=True),
+      keep("bicycle")])
+case(A, "vague", "impossible_car_in_library", "stick a car inside the library",
+     [call("add_asset", category="passenger_car", location=xy(-41, -30))], refused(), tags=("impossible",))
+
+case(A, "erroneous", "ad_cone_lot_b_entrence", "ad 3 traffic cone at lot b entrence",
+     [call("add_asset", category="traffic_cone", count=3, location=at("parking lot B entrance"))],
+     [delta("traffic_cone", 3), near("parking lot B entrance", 8, category="traffic_cone", require_all=True),
+      keep("traffic_cone")])
+case(A, "erroneous", "buss_front_ego", "put a buss in front of ego car",
+     [call("add_asset", category="bus", location=at("ego", "in_front_of"))],
+     [delta("bus", 1), {"kind": "relative", "category": "bus", "relation": "in_front_of", "target": "ego",
+                        "max_distance": 25}, keep("bus")])
+case(A, "erroneous", "pedestrain_side_walk", "add pedestrain on side walk near libary",
+     [call("add_asset", category="pedestrian", location=at("Library entrance", "on_sidewalk"))],
+     [delta("pedestrian", 1), {"kind": "on_surface", "category": "pedestrian", "surfaces": ["sidewalk"]},
+      near("Library entrance", 15, category="pedestrian"), keep("pedestrian")])
+case(A, "erroneous", "car_drive_westbound", "i want car drive on the westbound lane please",
+     [call("add_asset", category="passenger_car", location=at("main_westbound", "in_lane"),
+           behaviour={"kind": "drive_lane", "lane": "main_westbound"})],
+     [delta(["passenger_car", "suv"], 1), {"kind": "behaviour", "category": ["passenger_car", "suv"],
+                                          "behaviour": "drive_lane", "lane": "main_westbound"},
+      keep("passenger_car", "suv")])
+case(A, "erroneous", "bench_near_fontain", "plz add 2 bench near fontain",
+     [call("add_asset", category="bench", count=2, location=at("fountain"))],
+     [delta("bench", 2), near("fountain", 10, category="bench", require_all=True), keep("bench")])
+case(A, "erroneous", "firehydrant_jtekt", "add one firehydrant near the JTEKT entrence",
+     [call("add_asset", category="fire_hydrant", location=at("JTEKT building entrance"))],
+     [delta("fire_hydrant", 1), near("JTEKT building entrance", 10, category="fire_hydrant"), keep("fire_hydrant")])
+case(A, "erroneous", "motorbike_behind_ego", "add motorbike behind of the ego",
+     [call("add_asset", category="motorcycle", location=at("ego", "behind"))],
+     [delta("motorcycle", 1), {"kind": "relative", "category": "motorcycle", "relation": "behind", "target": "ego",
+                               "max_distance": 20}, keep("motorcycle")])
+case(A, "erroneous", "tree_parkin_lot_a", "put tree at parkin lot A",
+     [call("add_asset", category="tree", location=at("parking lot A"))],
+     [delta("tree", 1), near("parking lot A", 1, category="tree"), keep("tree")])
+case(A, "erroneous", "impossible_stripy_barriers_gym", "um can u put like 3 of those stripy barriers by the gym",
+     [call("add_asset", category="road_barrier", count=3, location=at("gym"))], refused(),
+     tags=("impossible",), notes="the campus has no gym")
+
+# --------------------------------------------------------------------------------------- removal
+R = "removal"
+case(R, "direct", "remove_hydrant", "Remove the fire hydrant.",
+     [call("remove_assets", assets=["fire_hydrant_1"])], [gone("fire_hydrant_1"), keep(assets=["fire_hydrant_1"])])
+case(R, "direct", "remove_all_trees", "Remove all the trees.",
+     [call("remove_assets", category="tree")], [count("tree", 0, 0), keep("tree")])
+case(R, "direct", "remove_suv_lot_b", "Delete the SUV in parking lot B.",
+     [call("remove_assets", assets=["suv_1"])], [gone("suv_1"), keep(assets=["suv_1"])])
+case(R, "direct", "two_lights_near_bus_stop", "Remove the two street lights nearest the bus stop.",
+     [call("remove_assets", category="street_light", near="bus stop", count=2)],
+     [gone("street_light_4", "street_light_5"), keep(assets=["street_light_4", "street_light_5"])])
+case(R, "direct", "remove_all_cones", "Remove all traffic cones.",
+     [call("remove_assets", category="traffic_cone")], [count("traffic_cone", 0, 0), keep("traffic_cone")],
+     setup=[CONES_AT_LOT_B])
+case(R, "direct", "tree_next_to_library", "Remove the tree next to the Library.",
+     [call("remove_assets", assets=["tree_1"])], [gone("tree_1"), keep(assets=["tree_1"])])
+case(R, "direct", "remove_stop_sign", "Remove the stop sign.",
+     [call("remove_assets", category="stop_sign")], [gone("stop_sign_1"), keep(assets=["stop_sign_1"])])
+case(R, "direct", "remove_car_2", "Remove passenger_car_2.",
+     [call("remove_assets", assets=["passenger_car_2"])], [gone("passenger_car_2"), keep(assets=["passenger_car_2"])])
+case(R, "direct", "hydrant_and_bin", "Remove the fire hydrant and the trash bin.",
+     [call("remove_assets", assets=["fire_hydrant_1", "trash_bin_1"])],
+     [gone("fire_hydrant_1", "trash_bin_1"), keep(assets=["fire_hydrant_1", "trash_bin_1"])], tags=("compound",))
+case(R, "direct", "impossible_remove_ego", "Remove the ego vehicle.",
+     [call("remove_assets", assets=["ego"])], refused(), tags=("impossible",))
+
+case(R, "indirect", "no_longer_want_cones", "I no longer want the cones.",
+     [call("remove_assets", category="traffic_cone")], [count("traffic_cone", 0, 0), keep("traffic_cone")],
+     setup=[CONES_AT_LOT_B])
+case(R, "indirect", "bench_in_the_way",
+     "The bench by the bus stop is in the way of our sensor rig; could you take it out?",
+     [call("remove_assets", assets=["bench_1"])], [gone("bench_1"), keep(assets=["bench_1"])])
+case(R, "indirect", "empty_lot_b", "We're testing in an empty parking lot, so the vehicles in lot B have to go.",
+     [call("remove_assets", assets=LOT_B_VEHICLES)], [gone(*LOT_B_VEHICLES), keep(assets=LOT_B_VEHICLES)])
+case(R, "indirect", "quad_without_trees", "I'd like the quad without trees.",
+     [call("remove_assets", assets=["tree_2", "tree_3"])], [gone("tree_2"), keep(assets=["tree_2", "tree_3"])])
+case(R, "indirect", "cleaner_without_bin", "It would look cleaner without the trash bin on Main Street.",
+     [call("remove_assets", assets=["trash_bin_1"])], [gone("trash_bin_1"), keep(assets=["trash_bin_1"])])
+case(R, "indirect", "shuttle_blocks_camera", "The shuttle blocks the camera view - get rid of it.",
+     [call("remove_assets", category="bus")], [count("bus", 0, 0), keep("bus")], setup=[BUS_AHEAD])
+case(R, "indirect", "dark_lamps_near_ego",
+     "For a night test without lighting nearby, please remove the lamp posts within 20 m of the ego.",
+     [call("remove_assets", assets=["street_light_2", "street_light_3"])],
+     [gone("street_light_2", "street_light_3"), keep(assets=["street_light_2", "street_light_3"])])
+case(R, "indirect", "keep_just_two_people", "Fewer people at the crosswalk please - keep just two.",
+     [call("remove_assets", category="pedestrian", count=3)], [count("pedestrian", 2, 2), keep("pedestrian")],
+     setup=[CROWD_AT_CROSSWALK])
+case(R, "indirect", "impossible_bus_at_stop", "The bus at the stop is distracting, please delete it.",
+     [call("remove_assets", category="bus")], refused(), tags=("impossible",), notes="there is no bus")
+
+case(R, "vague", "no_more_cones", "no more cones",
+     [call("remove_assets", category="traffic_cone")], [count("traffic_cone", 0, 0), keep("traffic_cone")],
+     setup=[CONES_AT_LOT_B])
+case(R, "vague", "fewer_trees", "fewer trees",
+     [call("remove_assets", category="tree", count=2)], [delta("tree", -3, -1), keep("tree")])
+case(R, "vague", "rid_of_parked_cars", "get rid of the parked cars",
+     [call("remove_assets", category="passenger_car")],
+     [count("passenger_car", 0, 0), keep("passenger_car", "suv")])
+case(R, "vague", "clear_the_road", "clear the road",
+     [call("remove_assets", category="traffic_cone"), call("remove_assets", category="cement_rubble")],
+     [count("traffic_cone", 0, 0), count("cement_rubble", 0, 0), keep("traffic_cone", "cement_rubble")],
+     setup=[CONES_WESTBOUND, RUBBLE_ON_CAMPUS])
+case(R, "vague", "lose_hydrant", "lose the hydrant",
+     [call("remove_assets", category="fire_hydrant")], [gone("fire_hydrant_1"), keep(assets=["fire_hydrant_1"])])
+case(R, "vague", "too_many_people", "too many people",
+     [call("remove_assets", category="pedestrian", count=3)], [delta("pedestrian", -5, -1), keep("pedestrian")],
+     setup=[CROWD_AT_CROSSWALK])
+case(R, "vague", "bin_gone", "the bin. gone.",
+     [call("remove_assets", category="trash_bin")], [gone("trash_bin_1"), keep(assets=["trash_bin_1"])])
+case(R, "vague", "barriers_and_bench", "barriers out, bench too",
+     [call("remove_assets", category="road_barrier"), call("remove_assets", assets=["bench_1"])],
+     [count("road_barrier", 0, 0), gone("bench_1"), keep("road_barrier", assets=["bench_1"])],
+     setup=[BARRIERS_AT_GATE], tags=("compound",))
+case(R, "vague", "impossible_no_more_trucks", "no more trucks",
+     [call("remove_assets", category="truck")], refused(), tags=("impossible",), notes="there is no truck")
+
+case(R, "erroneous", "fire_hydrent", "remove the fire hydrent",
+     [call("remove_assets", category="fire_hydrant")], [gone("fire_hydrant_1"), keep(assets=["fire_hydrant_1"])])
+case(R, "erroneous", "delet_all_tree", "delet all tree",
+     [call("remove_assets", category="tree")], [count("tree", 0, 0), keep("tree")])
+case(R, "erroneous", "remove_cones_pls", "remove cone's pls",
+     [call("remove_assets", category="traffic_cone")], [count("traffic_cone", 0, 0), keep("traffic_cone")],
+     setup=[CONES_AT_LOT_B])
+case(R, "erroneous", "suv_from_parkinglot", "take away the suv from parkinglot B",
+     [call("remove_assets", assets=["suv_1"])], [gone("suv_1"), keep(assets=["suv_1"])])
+case(R, "erroneous", "dont_want_bench", "i dont want anymore the bench",
+     [call("remove_assets", assets=["bench_1"])], [gone("bench_1"), keep(assets=["bench_1"])])
+case(R, "erroneous", "stop_sing", "remove stop sing",
+     [call("remove_assets", category="stop_sign")], [gone("stop_sign_1"), keep(assets=["stop_sign_1"])])
+case(R, "erroneous", "remov_2_lamp_post", "remov 2 lamp post nearest bus stop",
+     [call("remove_assets", category="street_light", near="bus stop", count=2)],
+     [gone("street_light_4", "street_light_5"), keep(assets=["street_light_4", "street_light_5"])])
+case(R, "erroneous", "rid_of_pedestrain", "get rid of pedestrain",
+     [call("remove_assets", category="pedestrian")], [count("pedestrian", 0, 0), keep("pedestrian")],
+     setup=[CROWD_AT_CROSSWALK])
+case(R, "erroneous", "impossible_helicoptr", "remove the helicoptr",
+     [call("remove_assets", category="helicopter")], refused(), tags=("impossible",))
+# (end of cases)
+
+
+def write_suite(path: Path = JSONL_PATH) -> int:
+    """Write every case as one JSON line; returns how many."""
+    path.write_text("".join(json.dumps(c, separators=(",", ":")) + "\n" for c in CASES), encoding="utf-8")
+    return len(CASES)
+
+
+if __name__ == "__main__":
+    print(f"wrote {write_suite()} cases to {JSONL_PATH}")
