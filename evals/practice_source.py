@@ -475,6 +475,269 @@ case(R, "erroneous", "rid_of_pedestrain", "get rid of pedestrain",
      setup=[CROWD_AT_CROSSWALK])
 case(R, "erroneous", "impossible_helicoptr", "remove the helicoptr",
      [call("remove_assets", category="helicopter")], refused(), tags=("impossible",))
+
+# ------------------------------------------------------------------------------------ positioning
+P = "positioning"
+case(P, "direct", "bench_front_of_library", "Put the bench in front of the Library entrance.",
+     [call("place_asset", asset="bench_1", location=at("Library entrance", "in_front_of"))],
+     [near("Library entrance", 6, asset="bench_1"), keep(assets=["bench_1"])])
+case(P, "direct", "ego_into_westbound", "Place the ego vehicle in main_westbound.",
+     [call("place_asset", asset="ego", location=at("main_westbound", "in_lane"))],
+     [{"kind": "in_lane", "asset": "ego", "lane": "main_westbound", "aligned": True}, keep(assets=["ego"])])
+case(P, "direct", "car_1_to_lot_a", "Move passenger_car_1 to parking lot A.",
+     [call("place_asset", asset="passenger_car_1", location=at("parking lot A"))],
+     [near("parking lot A", 1, asset="passenger_car_1"), keep(assets=["passenger_car_1"])])
+case(P, "direct", "bin_next_to_fountain", "Put the trash bin next to the fountain.",
+     [call("place_asset", asset="trash_bin_1", location=at("fountain", "next_to"))],
+     [near("fountain", 5, asset="trash_bin_1"), keep(assets=["trash_bin_1"])])
+case(P, "direct", "suv_10m_behind_ego", "Place the SUV 10 m behind the ego along its lane.",
+     [call("place_asset", asset="suv_1", location=at("ego", "behind", along_m=-10))],
+     [{"kind": "relative", "asset": "suv_1", "relation": "behind", "target": "ego", "max_distance": 14,
+       "tolerance_deg": 30}, {"kind": "in_lane", "asset": "suv_1", "lane": "main_eastbound"},
+      keep(assets=["suv_1"])])
+case(P, "direct", "hydrant_exact_xy", "Put the fire hydrant at x=20, y=-5.5.",
+     [call("place_asset", asset="fire_hydrant_1", location=xy(20, -5.5))],
+     [near_point(20, -5.5, 0.5, asset="fire_hydrant_1"), keep(assets=["fire_hydrant_1"])])
+case(P, "direct", "stop_sign_sidewalk_jtekt", "Put the stop sign on the sidewalk near the JTEKT building entrance.",
+     [call("place_asset", asset="stop_sign_1", location=at("JTEKT building entrance", "on_sidewalk"))],
+     [{"kind": "on_surface", "asset": "stop_sign_1", "surfaces": ["sidewalk"]},
+      near("JTEKT building entrance", 12, asset="stop_sign_1"), keep(assets=["stop_sign_1"])])
+case(P, "direct", "tree_left_of_engineering", "Put tree_4 to the left of the Engineering Hall entrance.",
+     [call("place_asset", asset="tree_4", location=at("Engineering Hall entrance", "left_of"))],
+     [{"kind": "relative", "asset": "tree_4", "relation": "left_of", "target": "Engineering Hall entrance",
+       "max_distance": 15}, keep(assets=["tree_4"])])
+case(P, "direct", "bench_fountain_bin_bus_stop", "Put the bench at the fountain and the trash bin at the bus stop.",
+     [call("place_asset", asset="bench_1", location=at("fountain")),
+      call("place_asset", asset="trash_bin_1", location=at("bus stop"))],
+     [near("fountain", 6, asset="bench_1"), near("bus stop", 4, asset="trash_bin_1"),
+      {"kind": "moved", "asset": "bench_1", "min_distance": 5},
+      keep(assets=["bench_1", "trash_bin_1"])], tags=("compound",))
+case(P, "direct", "impossible_bench_in_jtekt", "Put the bench inside the JTEKT Building.",
+     [call("place_asset", asset="bench_1", location=xy(37, 30))], refused(), tags=("impossible",))
+
+case(P, "indirect", "suv_behind_us_cut_in", "For a cut-in test the SUV should start just behind us in our lane.",
+     [call("place_asset", asset="suv_1", location=at("ego", "behind", along_m=-12))],
+     [{"kind": "relative", "asset": "suv_1", "relation": "behind", "target": "ego", "max_distance": 30,
+       "tolerance_deg": 30}, {"kind": "in_lane", "asset": "suv_1", "lane": "main_eastbound"},
+      keep(assets=["suv_1"])])
+case(P, "indirect", "bench_by_the_quad", "I'd like people to sit by the water - put the bench right next to the quad fountain.",
+     [call("place_asset", asset="bench_1", location=at("fountain", "next_to"))],
+     [near("fountain", 6, asset="bench_1"), keep(assets=["bench_1"])])
+case(P, "indirect", "hydrant_sidewalk_lot_b",
+     "The hydrant would look more realistic on the sidewalk by lot B's entrance.",
+     [call("place_asset", asset="fire_hydrant_1", location=at("parking lot B entrance", "on_sidewalk"))],
+     [{"kind": "on_surface", "asset": "fire_hydrant_1", "surfaces": ["sidewalk"]},
+      near("parking lot B entrance", 10, asset="fire_hydrant_1"), keep(assets=["fire_hydrant_1"])])
+case(P, "indirect", "ego_starts_at_gate", "We need the ego to start the run from the main gate.",
+     [call("place_asset", asset="ego", location=at("main gate"))],
+     [near("main gate", 8, asset="ego"), keep(assets=["ego"])])
+case(P, "indirect", "second_car_in_lot_a", "Could the second car go in lot A instead?",
+     [call("place_asset", asset="passenger_car_2", location=at("parking lot A"))],
+     [near("parking lot A", 1, asset="passenger_car_2"), keep(assets=["passenger_car_2"])])
+case(P, "indirect", "stop_sign_visible_north", "It would be easier to see the stop sign if it stood at the north crosswalk.",
+     [call("place_asset", asset="stop_sign_1", location=at("north crosswalk"))],
+     [near("north crosswalk", 8, asset="stop_sign_1"), keep(assets=["stop_sign_1"])])
+case(P, "indirect", "bin_5m_ahead_right_sidewalk",
+     "Our lidar test needs the trash bin 5 m ahead of the ego on the right-hand sidewalk.",
+     [call("place_asset", asset="trash_bin_1", location=xy(-55, -5.5))],
+     [{"kind": "on_surface", "asset": "trash_bin_1", "surfaces": ["sidewalk"]},
+      near_point(-55, -5.5, 4, asset="trash_bin_1"), keep(assets=["trash_bin_1"])])
+case(P, "indirect", "ego_to_lot_b_entrance", "The run should begin at the lot B entrance, so take the ego there.",
+     [call("place_asset", asset="ego", location=at("parking lot B entrance"))],
+     [near("parking lot B entrance", 8, asset="ego"), keep(assets=["ego"])])
+case(P, "indirect", "impossible_stadium_car_park", "Please put the SUV at the stadium car park.",
+     [call("place_asset", asset="suv_1", location=at("stadium car park"))], refused(), tags=("impossible",))
+
+case(P, "vague", "bench_by_library", "bench over by the library",
+     [call("place_asset", asset="bench_1", location=at("Library entrance", "in_front_of"))],
+     [near("Library entrance", 10, asset="bench_1"), keep(assets=["bench_1"])])
+case(P, "vague", "car_2_lot_a", "car 2 -> lot A",
+     [call("place_asset", asset="passenger_car_2", location=at("parking lot A"))],
+     [near("parking lot A", 1, asset="passenger_car_2"), keep(assets=["passenger_car_2"])])
+case(P, "vague", "ego_at_the_gate", "ego at the gate",
+     [call("place_asset", asset="ego", location=at("main gate"))],
+     [keep(assets=["ego"])], alternatives=[[near("main gate", 8, asset="ego")], [near("east gate", 8, asset="ego")]])
+case(P, "vague", "hydrant_sidewalk_somewhere", "hydrant on a sidewalk somewhere near lot B entrance",
+     [call("place_asset", asset="fire_hydrant_1", location=at("parking lot B entrance", "on_sidewalk"))],
+     [{"kind": "on_surface", "asset": "fire_hydrant_1", "surfaces": ["sidewalk"]},
+      near("parking lot B entrance", 15, asset="fire_hydrant_1"), keep(assets=["fire_hydrant_1"])])
+case(P, "vague", "suv_behind_us", "the SUV behind us",
+     [call("place_asset", asset="suv_1", location=at("ego", "behind"))],
+     [{"kind": "relative", "asset": "suv_1", "relation": "behind", "target": "ego", "max_distance": 30},
+      keep(assets=["suv_1"])])
+case(P, "vague", "tree_1_at_fountain", "tree_1 over at the fountain",
+     [call("place_asset", asset="tree_1", location=at("fountain"))],
+     [near("fountain", 8, asset="tree_1"), keep(assets=["tree_1"])])
+case(P, "vague", "bin_by_stop_sign", "bin by the stop sign",
+     [call("place_asset", asset="trash_bin_1", location=at("stop_sign_1", "next_to"))],
+     [near("stop_sign_1", 3, asset="trash_bin_1"), keep(assets=["trash_bin_1"])])
+case(P, "vague", "bench_gate_bin_union", "bench -> main gate, bin -> union",
+     [call("place_asset", asset="bench_1", location=at("main gate")),
+      call("place_asset", asset="trash_bin_1", location=at("Student Union entrance"))],
+     [near("main gate", 8, asset="bench_1"), near("Student Union entrance", 8, asset="trash_bin_1"),
+      keep(assets=["bench_1", "trash_bin_1"])], tags=("compound",))
+case(P, "vague", "impossible_bench_moon", "bench on the moon",
+     [call("place_asset", asset="bench_1", location=at("moon"))], refused(), tags=("impossible",))
+
+case(P, "erroneous", "bench_infront_libary", "put bench infront the libary entrance",
+     [call("place_asset", asset="bench_1", location=at("Library entrance", "in_front_of"))],
+     [near("Library entrance", 6, asset="bench_1"), keep(assets=["bench_1"])])
+case(P, "erroneous", "ego_westbound_lain", "place ego in westbound lain",
+     [call("place_asset", asset="ego", location=at("main_westbound", "in_lane"))],
+     [{"kind": "in_lane", "asset": "ego", "lane": "main_westbound"}, keep(assets=["ego"])])
+case(P, "erroneous", "car_one_parking_a", "move car one to parking A",
+     [call("place_asset", asset="passenger_car_1", location=at("parking lot A"))],
+     [near("parking lot A", 1, asset="passenger_car_1"), keep(assets=["passenger_car_1"])])
+case(P, "erroneous", "hydrant_x_y", "hydrant put on x 20 y -5.5",
+     [call("place_asset", asset="fire_hydrant_1", location=xy(20, -5.5))],
+     [near_point(20, -5.5, 0.5, asset="fire_hydrant_1"), keep(assets=["fire_hydrant_1"])])
+case(P, "erroneous", "suv_behind_ego_10_meter", "suv go behind ego 10 meter",
+     [call("place_asset", asset="suv_1", location=at("ego", "behind", along_m=-10))],
+     [{"kind": "relative", "asset": "suv_1", "relation": "behind", "target": "ego", "max_distance": 16,
+       "tolerance_deg": 30}, keep(assets=["suv_1"])])
+case(P, "erroneous", "bin_next_fontain", "put the bin next fontain",
+     [call("place_asset", asset="trash_bin_1", location=at("fountain", "next_to"))],
+     [near("fountain", 5, asset="trash_bin_1"), keep(assets=["trash_bin_1"])])
+case(P, "erroneous", "stop_sign_jtekt_entrence", "stop sign put on sidewalk near JTEKT entrence",
+     [call("place_asset", asset="stop_sign_1", location=at("JTEKT building entrance", "on_sidewalk"))],
+     [{"kind": "on_surface", "asset": "stop_sign_1", "surfaces": ["sidewalk"]},
+      near("JTEKT building entrance", 12, asset="stop_sign_1"), keep(assets=["stop_sign_1"])])
+case(P, "erroneous", "tree_4_lot_b", "tree 4 placing at lot B please",
+     [call("place_asset", asset="tree_4", location=at("parking lot B"))],
+     [near("parking lot B", 1, asset="tree_4"), keep(assets=["tree_4"])])
+case(P, "erroneous", "impossible_bench_x500", "put bench at x=500 y=0",
+     [call("place_asset", asset="bench_1", location=xy(500, 0))], refused(), tags=("impossible",))
+
+# ---------------------------------------------------------------------------------------- moving
+M = "moving"
+case(M, "direct", "ego_forward_10", "Move the ego forward 10 m.",
+     [call("move_asset", asset="ego", forward=10)],
+     [moved("ego", 9, 11, direction="forward"), keep(assets=["ego"])])
+case(M, "direct", "suv_forward_5", "Move the SUV 5 m forward.",
+     [call("move_asset", asset="suv_1", forward=5)],
+     [moved("suv_1", 4.5, 5.5, direction="forward"), keep(assets=["suv_1"])])
+case(M, "direct", "car_2_right_3", "Move passenger_car_2 3 m to the right.",
+     [call("move_asset", asset="passenger_car_2", left=-3)],
+     [moved("passenger_car_2", 2.5, 3.5, direction="right"), keep(assets=["passenger_car_2"])])
+case(M, "direct", "turn_bench_90", "Turn the bench 90 degrees.",
+     [call("move_asset", asset="bench_1", turn_deg=90)],
+     [moved("bench_1", 0, 0.5, turn_min_deg=80, turn_max_deg=100), keep(assets=["bench_1"])])
+case(M, "direct", "lot_b_vehicles_north_4", "Move every vehicle in lot B 4 m north.",
+     [call("move_asset", assets=LOT_B_VEHICLES, north=4)],
+     [*[moved(a, 3.5, 4.5, direction="forward") for a in LOT_B_VEHICLES], keep(assets=LOT_B_VEHICLES)])
+case(M, "direct", "suv_drive_westbound", "Make the SUV drive in main_westbound at 5 m/s.",
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "drive_lane", "lane": "main_westbound", "speed": 5})],
+     [{"kind": "behaviour", "asset": "suv_1", "behaviour": "drive_lane", "lane": "main_westbound",
+       "speed_min": 4.5, "speed_max": 5.5}, keep(assets=["suv_1"])])
+case(M, "direct", "truck_8m_ahead", "Put the truck 8 m ahead of the ego along its lane.",
+     [call("move_asset", asset="truck_1", relative_to="ego", along_m=8)],
+     [{"kind": "relative", "asset": "truck_1", "relation": "in_front_of", "target": "ego", "max_distance": 16,
+       "tolerance_deg": 30}, {"kind": "in_lane", "asset": "truck_1", "lane": "main_eastbound"},
+      keep(assets=["truck_1"])], setup=[TRUCK_IN_LANE])
+case(M, "direct", "hydrant_east_2", "Move the fire hydrant 2 m east.",
+     [call("move_asset", asset="fire_hydrant_1", east=2)],
+     [moved("fire_hydrant_1", 1.5, 2.5, direction="forward"), keep(assets=["fire_hydrant_1"])])
+case(M, "direct", "suv_forward_bench_turn", "Move the SUV 5 m forward and turn the bench around.",
+     [call("move_asset", asset="suv_1", forward=5), call("move_asset", asset="bench_1", turn_deg=180)],
+     [moved("suv_1", 4.5, 5.5, direction="forward"), moved("bench_1", 0, 0.5, turn_min_deg=160),
+      keep(assets=["suv_1", "bench_1"])], tags=("compound",))
+case(M, "direct", "impossible_ego_500m", "Move the ego 500 m forward.",
+     [call("move_asset", asset="ego", forward=500)], refused(), tags=("impossible",))
+
+case(M, "indirect", "pull_ego_back_5", "Could you pull the ego back about 5 metres so the sensors see the whole crossing?",
+     [call("move_asset", asset="ego", forward=-5)],
+     [moved("ego", 4, 6, direction="backward"), keep(assets=["ego"])])
+case(M, "indirect", "lot_b_toward_main_street", "I'd like the vehicles in lot B to move up 4 m toward Main Street.",
+     [call("move_asset", assets=LOT_B_VEHICLES, north=4)],
+     [*[moved(a, 3, 5, direction="forward") for a in LOT_B_VEHICLES], keep(assets=LOT_B_VEHICLES)])
+case(M, "indirect", "suv_circles_lot_b", "For the turning test, have the SUV drive circles in lot B.",
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B", "radius": 8})],
+     [{"kind": "behaviour", "asset": "suv_1", "behaviour": "circle", "centre_near": "parking lot B"},
+      keep(assets=["suv_1"])])
+case(M, "indirect", "second_car_drives_north",
+     "It'd be more realistic if the second car drove off north along Campus Drive.",
+     [call("set_behaviour", asset="passenger_car_2",
+           behaviour={"kind": "drive_lane", "lane": "campus_northbound"})],
+     [{"kind": "behaviour", "asset": "passenger_car_2", "behaviour": "drive_lane", "lane": "campus_northbound"},
+      keep(assets=["passenger_car_2"])])
+case(M, "indirect", "ego_facing_other_way", "We want the ego facing the other way for the return leg.",
+     [call("move_asset", asset="ego", turn_deg=180)],
+     [moved("ego", 0, 3, turn_min_deg=160), keep(assets=["ego"])])
+case(M, "indirect", "bench_off_sidewalk",
+     "Since the bench sticks into the walkway, slide it 1.5 m further south onto the grass.",
+     [call("move_asset", asset="bench_1", north=-1.5)],
+     [moved("bench_1", 1, 2, direction="left"), keep(assets=["bench_1"])])
+case(M, "indirect", "truck_closer_15m", "The truck is too far from us; bring it to 15 m ahead of the ego.",
+     [call("move_asset", asset="truck_1", relative_to="ego", along_m=15)],
+     [{"kind": "relative", "asset": "truck_1", "relation": "in_front_of", "target": "ego", "max_distance": 22,
+       "tolerance_deg": 30}, {"kind": "in_lane", "asset": "truck_1", "lane": "main_eastbound"},
+      keep(assets=["truck_1"])], setup=[TRUCK_IN_LANE])
+case(M, "indirect", "car_1_follows_eastbound",
+     "We're testing following distance, so have passenger_car_1 drive in the eastbound lane at 8 m/s.",
+     [call("set_behaviour", asset="passenger_car_1",
+           behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 8})],
+     [{"kind": "behaviour", "asset": "passenger_car_1", "behaviour": "drive_lane", "lane": "main_eastbound",
+       "speed_min": 7.5, "speed_max": 8.5}, keep(assets=["passenger_car_1"])])
+case(M, "indirect", "impossible_move_library", "Please move the library 10 m north, it's too close to the road.",
+     [call("move_asset", asset="library", north=10)], refused(), tags=("impossible",))
+
+case(M, "vague", "ego_bit_forward", "ego a bit forward",
+     [call("move_asset", asset="ego", forward=3)], [moved("ego", 0.5, 10, direction="forward"), keep(assets=["ego"])])
+case(M, "vague", "lot_b_4m_north", "lot B vehicles, 4 m north",
+     [call("move_asset", assets=LOT_B_VEHICLES, north=4)],
+     [*[moved(a, 3.5, 4.5, direction="forward") for a in LOT_B_VEHICLES], keep(assets=LOT_B_VEHICLES)])
+case(M, "vague", "suv_round_lot_b", "suv round and round in lot B",
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B", "radius": 8})],
+     [{"kind": "behaviour", "asset": "suv_1", "behaviour": "circle", "centre_near": "parking lot B"},
+      keep(assets=["suv_1"])])
+case(M, "vague", "nudge_hydrant", "nudge the hydrant",
+     [call("move_asset", asset="fire_hydrant_1", east=1)], [moved("fire_hydrant_1", 0.2, 5),
+                                                            keep(assets=["fire_hydrant_1"])])
+case(M, "vague", "bench_around", "turn the bench around",
+     [call("move_asset", asset="bench_1", turn_deg=180)],
+     [moved("bench_1", 0, 1, turn_min_deg=150), keep(assets=["bench_1"])])
+case(M, "vague", "car_2_driving", "car 2 - driving",
+     [call("set_behaviour", asset="passenger_car_2", behaviour={"kind": "drive_lane"})],
+     [{"kind": "behaviour", "asset": "passenger_car_2", "behaviour": ["drive_lane", "follow_path", "circle"]},
+      keep(assets=["passenger_car_2"])])
+case(M, "vague", "suv_back_a_bit", "the SUV back a bit",
+     [call("move_asset", asset="suv_1", forward=-2)],
+     [moved("suv_1", 0.5, 6, direction="backward"), keep(assets=["suv_1"])])
+case(M, "vague", "quad_trees_west", "trees at the quad, 5 m west",
+     [call("move_asset", assets=["tree_2", "tree_3"], east=-5)],
+     [moved("tree_2", 4, 6, direction="backward"), keep(assets=["tree_2", "tree_3"])])
+case(M, "vague", "impossible_ego_1e3", "ego 1e3 m forward",
+     [call("move_asset", asset="ego", forward=1000)], refused(), tags=("impossible",))
+
+case(M, "erroneous", "ego_foward_10_meter", "move ego foward 10 meter",
+     [call("move_asset", asset="ego", forward=10)],
+     [moved("ego", 9, 11, direction="forward"), keep(assets=["ego"])])
+case(M, "erroneous", "suv_5m_forwad", "suv go 5m forwad",
+     [call("move_asset", asset="suv_1", forward=5)],
+     [moved("suv_1", 4.5, 5.5, direction="forward"), keep(assets=["suv_1"])])
+case(M, "erroneous", "bench_ninety_degree", "turn bench ninety degree",
+     [call("move_asset", asset="bench_1", turn_deg=90)],
+     [moved("bench_1", 0, 0.5, turn_min_deg=80, turn_max_deg=100), keep(assets=["bench_1"])])
+case(M, "erroneous", "all_car_lot_b_north", "move all car in lot B 4m to north",
+     [call("move_asset", assets=LOT_B_VEHICLES, north=4)],
+     [*[moved(a, 3.5, 4.5, direction="forward") for a in ["passenger_car_1", "passenger_car_2"]],
+      keep(assets=LOT_B_VEHICLES)])
+case(M, "erroneous", "suv_drive_westbound_lane", "make suv drive westbound lane 5 m/s",
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "drive_lane", "lane": "main_westbound", "speed": 5})],
+     [{"kind": "behaviour", "asset": "suv_1", "behaviour": "drive_lane", "lane": "main_westbound",
+       "speed_min": 4.5, "speed_max": 5.5}, keep(assets=["suv_1"])])
+case(M, "erroneous", "hydrant_2m_east_side", "move hydrant 2m east side",
+     [call("move_asset", asset="fire_hydrant_1", east=2)],
+     [moved("fire_hydrant_1", 1.5, 2.5, direction="forward"), keep(assets=["fire_hydrant_1"])])
+case(M, "erroneous", "car_2_to_right", "car 2 move to right 3 meters",
+     [call("move_asset", asset="passenger_car_2", left=-3)],
+     [moved("passenger_car_2", 2.5, 3.5, direction="right"), keep(assets=["passenger_car_2"])])
+case(M, "erroneous", "suv_circling_parkinglot", "let the suv circling in parkinglot b",
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B", "radius": 8})],
+     [{"kind": "behaviour", "asset": "suv_1", "behaviour": "circle", "centre_near": "parking lot B"},
+      keep(assets=["suv_1"])])
+case(M, "erroneous", "impossible_move_libary", "move the libary 10m north",
+     [call("move_asset", asset="library", north=10)], refused(), tags=("impossible",))
 # (end of cases)
 
 
