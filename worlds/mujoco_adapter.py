@@ -212,8 +212,11 @@ class MujocoWorld:
         if recompile:
             self._recompile()
         model, data = self.model, self.data
+        # Placing writes qpos/mocap/body_pos and the frames of one-body slots; a vehicle's
+        # wheels need mj_kinematics before anyone renders or ray-casts.
+        kinematics = recompile
         for asset_id in reshaped + added:
-            self.pool.activate(new[asset_id], model, data)
+            kinematics |= not self.pool.activate(new[asset_id], model, data)
         for asset_id in restyled:
             self.pool.restyle(new[asset_id], model)
         for asset_id in moved + restyled:
@@ -221,10 +224,8 @@ class MujocoWorld:
             assert slot is not None
             self.pool.restore_contacts(asset_id, model)  # it may have been dormant
             self.dormancy.wake(slot.body_id)
-            self.pool.place(slot, new[asset_id].pose, model, data)
-        if removed or changed or added:
-            # Placing writes qpos/mocap/body_pos only: frames (xpos) must follow before anyone
-            # renders or ray-casts.
+            kinematics |= not self.pool.place(slot, new[asset_id].pose, model, data)
+        if kinematics:
             _refresh_kinematics(model, data)
         self.scene = scene
         return UpdateStats(

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 
 import mujoco
 import numpy as np
+import numpy.typing as npt
 from drivetwin.worlds.catalog import Category, catalog, category
 from drivetwin.worlds.mujoco_bodies import BodyKind, add_asset_body, body_kind, yaw_quat
 from drivetwin.worlds.scene import Appearance, AssetInstance, PhysicsProps, Pose
@@ -201,8 +202,9 @@ class BodyPool:
                 geom.id = int(mujoco.mj_name2id(model, geom_type, geom.name))
 
     # Assigning (spec and model) ------------------------------------------------------------
-    def activate(self, asset: AssetInstance, model: mujoco.MjModel, data: mujoco.MjData) -> Slot:
-        """Show `asset` in a free slot of its shape (reserve first), at its authored pose."""
+    def activate(self, asset: AssetInstance, model: mujoco.MjModel, data: mujoco.MjData) -> bool:
+        """Show `asset` in a free slot of its shape (reserve first), at its authored pose;
+        False when its frames still need mj_kinematics (see `place`)."""
         slot = self._free[slot_key(asset)].pop()
         self.version += 1
         slot.asset_id = asset.id
@@ -210,8 +212,7 @@ class BodyPool:
         self._set_contacts(slot, model, active=True)
         self._set_weightless(slot, model, False)
         self.restyle(asset, model)
-        self.place(slot, asset.pose, model, data)
-        return slot
+        return self.place(slot, asset.pose, model, data)
 
     def release(self, asset_id: str, model: mujoco.MjModel, data: mujoco.MjData) -> None:
         """Park the slot that shows `asset_id` and give it back to its pool."""
@@ -236,8 +237,12 @@ class BodyPool:
             model.geom_rgba[geom.id] = rgba
             model.geom_friction[geom.id, 0] = friction
 
-    def place(self, slot: Slot, pose: Pose, model: mujoco.MjModel, data: mujoco.MjData) -> None:
-        """Put a slot's body at `pose`, at rest (free joint, mocap or welded body frame)."""
+    def place(self, slot: Slot, pose: Pose, model: mujoco.MjModel, data: mujoco.MjData) -> bool:
+        """Put a slot's body at `pose`, at rest (free joint, mocap or welded body frame).
+
+        The frames renderers and ray casts read follow at once for a one-body slot; returns
+        False for a tree (a vehicle), whose frames need mj_kinematics.
+        """
         body = slot.body_id
         position = [pose.x, pose.y, pose.z]
         quat = yaw_quat(pose.yaw)
@@ -259,6 +264,10 @@ class BodyPool:
         else:
             model.body_pos[body] = position
             model.body_quat[body] = quat
+        if len(slot.body_ids) != 1:
+            return False
+        _set_frames(slot, np.array(position), np.array(quat), model, data)
+        return True
 
     def restore_contacts(self, asset_id: str, model: mujoco.MjModel) -> None:
         """The asset's slot collides as built (a moved prop whose contacts were dormant)."""
@@ -294,3 +303,25 @@ class BodyPool:
         slot.body.pos = list(self.park)
         slot.body.quat = [1.0, 0.0, 0.0, 0.0]
 
+
+def _rotation(quat: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+    mat = np.empty(9)
+    mujoco.mju_quat2Mat(mat, quat)
+    return mat.reshape(3, 3)
+
+
+def _set_frames(
+    slot: Slot, position: npt.NDArray[np.float64], quat: npt.NDArray[np.float64], model: mujoco.MjModel, data: mujoco.MjData
+) -> None:
+    """A one-body slot's world frames (body, inertia, geoms) at `position`, `quat`: what
+    mj_kinematics would compute for it, without a pass over every body of a large world."""
+    body = slot.body_id
+    rotation = _rotation(quat)
+    data.xpos[body] = position
+    data.xquat[body] = quat
+    data.xmat[body] = rotation.ravel()
+    data.xipos[body] = position + rotation @ model.body_ipos[body]
+    data.ximat[body] = (rotation @ _rotation(model.body_iquat[body])).ravel()
+    for geom in slot.geoms:
+        data.geom_xpos[geom.id] = position + rotation @ model.geom_pos[geom.id]
+        data.geom_xmat[geom.id] = (rotation @ _rotation(model.geom_quat[geom.id])).ravel()

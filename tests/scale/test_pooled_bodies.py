@@ -123,3 +123,26 @@ def test_a_resting_prop_far_from_movers_goes_dormant_and_collides_again_when_one
     sim.step(4 * REFRESH_EVERY_TICKS + 4)
     assert not sim.world.dormancy.is_dormant(body) and sim.world.model.body_contype[body] != 0
     assert consistency_problems(near, sim.world) == []
+
+
+def test_frames_set_in_place_for_a_moved_asset_are_those_mj_kinematics_computes() -> None:
+    scene = _scene(_asset("bench_1", "bench", 5.0, 5.0, dynamic=False), _asset("cone_1", "traffic_cone", 8.0, 5.0),
+                   _asset("ped_1", "pedestrian", 11.0, 5.0))  # fmt: skip
+    world = MujocoWorld.from_scene(scene)
+    moved = scene
+    for asset_id, x in (("bench_1", -7.0), ("cone_1", -4.0), ("ped_1", -1.0)):
+        target = moved.asset(asset_id)
+        assert target is not None
+        turned = target.model_copy(update={"pose": Pose(x=x, y=12.0, yaw=0.7)})
+        moved = moved.model_copy(update={"assets": [turned if a.id == asset_id else a for a in moved.assets]})
+    stats = world.update(moved)
+    assert not stats.recompiled
+    model, data = world.model, world.data
+    geoms = [g.id for i in ("bench_1", "cone_1", "ped_1") for g in world.pool.slot_of(i).geoms]  # type: ignore[union-attr]
+    fast = np.array(data.geom_xpos[geoms]), np.array(data.geom_xmat[geoms])
+    flags = int(model.opt.enableflags)
+    model.opt.enableflags = flags & ~int(mujoco.mjtEnableBit.mjENBL_SLEEP)
+    mujoco.mj_kinematics(model, data)
+    model.opt.enableflags = flags
+    np.testing.assert_allclose(fast[0], data.geom_xpos[geoms], atol=1e-12)
+    np.testing.assert_allclose(fast[1], data.geom_xmat[geoms], atol=1e-12)
