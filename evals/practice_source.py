@@ -738,6 +738,332 @@ case(M, "erroneous", "suv_circling_parkinglot", "let the suv circling in parking
       keep(assets=["suv_1"])])
 case(M, "erroneous", "impossible_move_libary", "move the libary 10m north",
      [call("move_asset", asset="library", north=10)], refused(), tags=("impossible",))
+
+# ----------------------------------------------------------------------------------- arrangement
+G = "arrangement"
+
+
+def line(category: str | list[str], n: int, **more: Any) -> Json:
+    return {"kind": "arrangement", "category": category, "shape": "line", "min_count": n, **more}
+
+
+def ring(category: str | list[str], n: int, around: str, **more: Any) -> Json:
+    return {"kind": "arrangement", "category": category, "shape": "ring", "around": around, "min_count": n, **more}
+
+
+case(G, "direct", "six_cones_line_ahead", "Arrange 6 traffic cones in a line in front of the ego.",
+     [call("arrange_assets", categories=["traffic_cone"], shape="line", count=6,
+           location=at("ego", "in_front_of", distance=15), heading_deg=0)],
+     [delta("traffic_cone", 6), line("traffic_cone", 6), near("ego", 40, category="traffic_cone", require_all=True),
+      keep("traffic_cone")])
+case(G, "direct", "cone_ring_crossroads", "Put 8 cones in a ring of radius 5 m around the middle of the crossroads.",
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=8, location=at("main intersection"), radius=5)],
+     [delta("traffic_cone", 8), ring("traffic_cone", 8, "main intersection"), near_point(0, 0, 7, category="traffic_cone",
+                                                                          require_all=True), keep("traffic_cone")])
+case(G, "direct", "barriers_lane_edge", "Line the edge of main_eastbound with 5 road barriers near the Library.",
+     [call("arrange_assets", categories=["road_barrier"], shape="lane_edge", count=5,
+           location=at("Library entrance", "in_lane"))],
+     [delta("road_barrier", 5), line("road_barrier", 5),
+      {"kind": "in_lane", "category": "road_barrier", "lane": "main_eastbound"},
+      near("Library entrance", 30, category="road_barrier", require_all=True), keep("road_barrier")])
+case(G, "direct", "four_cars_row_lot_a", "Park 4 cars in a row in parking lot A.",
+     [call("arrange_assets", categories=["passenger_car"], shape="parking_row", count=4, location=at("parking lot A"))],
+     [delta("passenger_car", 4), line("passenger_car", 4), near("parking lot A", 1, category="passenger_car",
+                                                                require_all=True), keep("passenger_car")])
+case(G, "direct", "close_westbound_cones", "Close main_westbound with cones starting at x=20, y=1.75.",
+     [call("close_lane", lane="main_westbound", at_x=20, at_y=1.75)],
+     [delta("traffic_cone", 2, 20), near_point(20, 1.75, 20, category="traffic_cone", require_all=True),
+      {"kind": "in_lane", "category": "traffic_cone", "lane": "main_westbound", "min_count": 2,
+       "require_all": False}, keep("traffic_cone")])
+case(G, "direct", "tree_grid_lot_a", "Place 6 trees in a grid with 3 columns in parking lot A.",
+     [call("arrange_assets", categories=["tree"], shape="grid", count=6, columns=3, location=at("parking lot A"))],
+     [delta("tree", 6), near("parking lot A", 3, category="tree", require_all=True), keep("tree")])
+case(G, "direct", "bollards_2m_apart", "Arrange 5 bollards in a line at the JTEKT building entrance, 2 m apart.",
+     [call("arrange_assets", categories=["bollard"], shape="line", count=5, spacing=2,
+           location=at("JTEKT building entrance"))],
+     [delta("bollard", 5), line("bollard", 5, spacing_min=1.7, spacing_max=2.3),
+      near("JTEKT building entrance", 12, category="bollard", require_all=True), keep("bollard")])
+case(G, "direct", "pedestrian_ring_bus_stop", "Put a ring of 6 pedestrians around the bus stop.",
+     [call("arrange_assets", categories=["pedestrian"], shape="ring", count=6, location=at("bus stop"), radius=3)],
+     [delta("pedestrian", 6), ring("pedestrian", 6, "bus stop"), keep("pedestrian")])
+case(G, "direct", "cone_line_and_dusk", "Set up a line of 5 cones in front of the ego and make it dusk.",
+     [call("arrange_assets", categories=["traffic_cone"], shape="line", count=5,
+           location=at("ego", "in_front_of", distance=15), heading_deg=0),
+      call("set_time_of_day", time="dusk")],
+     [delta("traffic_cone", 5), line("traffic_cone", 5), env(time_from="17:30", time_to="20:30"),
+      keep("traffic_cone", environment=True)], tags=("compound",))
+case(G, "direct", "impossible_150_cone_line", "Arrange 150 cones in a line along Main Street.",
+     [call("arrange_assets", categories=["traffic_cone"], shape="line", count=150, location=at("main_eastbound"))],
+     refused(), tags=("impossible",))
+
+case(G, "indirect", "close_northbound_from_south_crossing",
+     "For the next run I need the northbound lane of Campus Drive closed off with cones, starting at the south crosswalk.",
+     [call("close_lane", lane="campus_northbound", at_x=1.75, at_y=-12)],
+     [delta("traffic_cone", 2, 20), near_point(1.75, -12, 25, category="traffic_cone", require_all=True),
+      {"kind": "in_lane", "category": "traffic_cone", "lane": "campus_northbound", "min_count": 2,
+       "require_all": False}, keep("traffic_cone")])
+case(G, "indirect", "busy_lot_b_row", "We're simulating a busy car park: could you add a row of 5 parked cars in lot B?",
+     [call("arrange_assets", categories=["passenger_car"], shape="parking_row", count=5, location=at("parking lot B"))],
+     [delta(["passenger_car", "suv"], 5), line(["passenger_car", "suv"], 5, scope="added"),
+      near("parking lot B", 1, category=["passenger_car", "suv"], scope="added", require_all=True),
+      keep("passenger_car", "suv")])
+case(G, "indirect", "barrier_fence_near_gate",
+     "I'd like a line of barriers along the eastbound lane edge near the main gate, to stop cars drifting.",
+     [call("arrange_assets", categories=["road_barrier"], shape="lane_edge", count=5, location=at("main gate", "in_lane"))],
+     [delta("road_barrier", 3, 20), line("road_barrier", 3), near("main gate", 30, category="road_barrier",
+                                                                  require_all=True), keep("road_barrier")])
+case(G, "indirect", "slalom_cones_4m", "For a slalom test, set up 8 cones in a straight line 4 m apart ahead of the ego.",
+     [call("arrange_assets", categories=["traffic_cone"], shape="line", count=8, spacing=4,
+           location=at("ego", "in_front_of", distance=25), heading_deg=0)],
+     [delta("traffic_cone", 8), line("traffic_cone", 8, spacing_min=3.5, spacing_max=4.5),
+      near("ego", 45, category="traffic_cone", require_all=True), keep("traffic_cone")])
+case(G, "indirect", "protect_fountain_bollards", "The fountain needs protecting, so surround it with bollards.",
+     [call("arrange_assets", categories=["bollard"], shape="ring", count=8, location=at("fountain"), radius=4)],
+     [delta("bollard", 4, 40), ring("bollard", 4, "fountain"), keep("bollard")])
+case(G, "indirect", "mixed_row_lot_a", "Our camera team wants cars and SUVs parked side by side in lot A, six in all.",
+     [call("arrange_assets", categories=["passenger_car", "suv"], shape="parking_row", count=6,
+           location=at("parking lot A"))],
+     [delta(["passenger_car", "suv"], 6), delta("suv", 1, 5), delta("passenger_car", 1, 5),
+      line(["passenger_car", "suv"], 6), near("parking lot A", 1, category=["passenger_car", "suv"], require_all=True),
+      keep("passenger_car", "suv")])
+case(G, "indirect", "crowd_grid_union", "We're modelling a crowd leaving the Student Union: ten people in a grid outside it.",
+     [call("arrange_assets", categories=["pedestrian"], shape="grid", count=10,
+           location=at("Student Union entrance", "in_front_of", distance=8))],
+     [delta("pedestrian", 10), near("Student Union entrance", 12, category="pedestrian", require_all=True),
+      keep("pedestrian")])
+case(G, "indirect", "bins_line_and_rain", "Because we're testing in bad weather by the union, line up 4 bins there and make it rain.",
+     [call("arrange_assets", categories=["trash_bin"], shape="line", count=4, location=at("Student Union entrance")),
+      call("set_weather", kind="rain")],
+     [delta("trash_bin", 4), line("trash_bin", 4), near("Student Union entrance", 12, category="trash_bin",
+                                                         require_all=True),
+      env(weather=["rain"]), keep("trash_bin", environment=True)], tags=("compound",))
+case(G, "indirect", "impossible_ring_stadium", "For the parade scene, please put 5 cones in a ring around the stadium.",
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=5, location=at("stadium"))],
+     refused(), tags=("impossible",))
+
+case(G, "vague", "cones_x4_lot_b_entr", "cones x4 lot B entr, in a line",
+     [call("arrange_assets", categories=["traffic_cone"], shape="line", count=4, location=at("parking lot B entrance"))],
+     [delta("traffic_cone", 4), line("traffic_cone", 4), near("parking lot B entrance", 12, category="traffic_cone",
+                                                               require_all=True), keep("traffic_cone")])
+case(G, "vague", "ring_cones_junction", "ring of cones round the junction",
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=8, location=at("main intersection"), radius=5)],
+     [delta("traffic_cone", 4, 40), ring("traffic_cone", 4, "main intersection"), keep("traffic_cone")])
+case(G, "vague", "row_parked_lot_a", "row of parked cars in lot A",
+     [call("arrange_assets", categories=["passenger_car"], shape="parking_row", count=4, location=at("parking lot A"))],
+     [delta(["passenger_car", "suv"], 2, 30), line(["passenger_car", "suv"], 2),
+      near("parking lot A", 1, category=["passenger_car", "suv"], require_all=True), keep("passenger_car", "suv")])
+case(G, "vague", "slalom_ahead", "slalom cones ahead of us",
+     [call("arrange_assets", categories=["traffic_cone"], shape="line", count=6, spacing=4,
+           location=at("ego", "in_front_of", distance=20), heading_deg=0)],
+     [delta("traffic_cone", 3, 30), line("traffic_cone", 3, tolerance=2.0),
+      {"kind": "relative", "category": "traffic_cone", "relation": "in_front_of", "target": "ego",
+       "max_distance": 60, "tolerance_deg": 30, "require_all": True}, keep("traffic_cone")])
+case(G, "vague", "barriers_edge_by_gate", "barriers along the road edge by the gate",
+     [call("arrange_assets", categories=["road_barrier"], shape="lane_edge", count=5, location=at("main gate", "in_lane"))],
+     [delta("road_barrier", 2, 30), line("road_barrier", 2), keep("road_barrier")],
+     alternatives=[[near("main gate", 30, category="road_barrier", require_all=True)],
+                   [near("east gate", 30, category="road_barrier", require_all=True)]])
+case(G, "vague", "bollards_line_jtekt", "some bollards in a line by JTEKT",
+     [call("arrange_assets", categories=["bollard"], shape="line", count=5, location=at("JTEKT building entrance"))],
+     [delta("bollard", 3, 30), line("bollard", 3), near("JTEKT building entrance", 15, category="bollard",
+                                                        require_all=True), keep("bollard")])
+case(G, "vague", "circle_people_bus_stop", "circle of people round the bus stop",
+     [call("arrange_assets", categories=["pedestrian"], shape="ring", count=6, location=at("bus stop"), radius=3)],
+     [delta("pedestrian", 3, 30), ring("pedestrian", 3, "bus stop"), keep("pedestrian")])
+case(G, "vague", "close_westbound_east_gate", "close off the westbound lane near the east gate",
+     [call("close_lane", lane="main_westbound", at_x=90, at_y=1.75)],
+     [delta(["traffic_cone", "road_barrier"], 2, 30),
+      near("east gate", 30, category=["traffic_cone", "road_barrier"], require_all=True),
+      {"kind": "in_lane", "category": ["traffic_cone", "road_barrier"], "lane": "main_westbound", "min_count": 2,
+       "require_all": False}, keep("traffic_cone", "road_barrier")])
+case(G, "vague", "impossible_30_buses_grid", "grid of 30 buses in lot A",
+     [call("arrange_assets", categories=["bus"], shape="grid", count=30, location=at("parking lot A"))],
+     refused(), tags=("impossible",), notes="a scene holds at most 10 buses")
+
+case(G, "erroneous", "arange_cone_line", "arange 6 cone in line front of ego",
+     [call("arrange_assets", categories=["traffic_cone"], shape="line", count=6,
+           location=at("ego", "in_front_of", distance=15), heading_deg=0)],
+     [delta("traffic_cone", 6), line("traffic_cone", 6), near("ego", 40, category="traffic_cone", require_all=True),
+      keep("traffic_cone")])
+case(G, "erroneous", "cone_circle_intersection", "put 8 cone in circle around the intersection",
+     [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=8, location=at("main intersection"), radius=5)],
+     [delta("traffic_cone", 8), ring("traffic_cone", 8, "main intersection"), keep("traffic_cone")])
+case(G, "erroneous", "park_car_row_lot_a", "park 4 car in row at lot A",
+     [call("arrange_assets", categories=["passenger_car"], shape="parking_row", count=4, location=at("parking lot A"))],
+     [delta("passenger_car", 4), line("passenger_car", 4), near("parking lot A", 1, category="passenger_car",
+                                                                require_all=True), keep("passenger_car")])
+case(G, "erroneous", "close_west_bound", "close west bound lane with cone from x 20",
+     [call("close_lane", lane="main_westbound", at_x=20, at_y=1.75)],
+     [delta("traffic_cone", 2, 20), near_point(20, 1.75, 20, category="traffic_cone", require_all=True),
+      {"kind": "in_lane", "category": "traffic_cone", "lane": "main_westbound", "min_count": 2,
+       "require_all": False}, keep("traffic_cone")])
+case(G, "erroneous", "barier_lane_edge", "make line of barier along eastbound lane edge near libary",
+     [call("arrange_assets", categories=["road_barrier"], shape="lane_edge", count=5, location=at("Library entrance", "in_lane"))],
+     [delta("road_barrier", 2, 30), line("road_barrier", 2),
+      {"kind": "in_lane", "category": "road_barrier", "lane": "main_eastbound"}, keep("road_barrier")])
+case(G, "erroneous", "bolards_2m", "bolards 5 in line at JTEKT entrence 2m apart",
+     [call("arrange_assets", categories=["bollard"], shape="line", count=5, spacing=2,
+           location=at("JTEKT building entrance"))],
+     [delta("bollard", 5), line("bollard", 5, spacing_min=1.7, spacing_max=2.3), keep("bollard")])
+case(G, "erroneous", "grid_tree_colum", "grid of tree 6 in parking lot A 3 colum",
+     [call("arrange_assets", categories=["tree"], shape="grid", count=6, columns=3, location=at("parking lot A"))],
+     [delta("tree", 6), near("parking lot A", 3, category="tree", require_all=True), keep("tree")])
+case(G, "erroneous", "ring_people_bus_stop", "ring people around bus stop, 6 of them",
+     [call("arrange_assets", categories=["pedestrian"], shape="ring", count=6, location=at("bus stop"), radius=3)],
+     [delta("pedestrian", 6), ring("pedestrian", 6, "bus stop"), keep("pedestrian")])
+case(G, "erroneous", "impossible_150_cone", "arrange 150 cone in line",
+     [call("arrange_assets", categories=["traffic_cone"], shape="line", count=150, location=at("main_eastbound"))],
+     refused(), tags=("impossible",))
+
+# ------------------------------------------------------------------------------------ appearance
+L = "appearance"
+ENV = keep(environment=True)
+case(L, "direct", "paint_suv_red", "Paint the SUV red.",
+     [call("set_asset_appearance", assets=["suv_1"], colour="red")],
+     [look("red", asset="suv_1"), keep(assets=["suv_1"])])
+case(L, "direct", "heavy_rain", "Make it rain heavily.",
+     [call("set_weather", kind="rain", intensity=0.9)], [env(weather=["rain"], intensity_min=0.75), ENV])
+case(L, "direct", "time_1830", "Set the time to 18:30.",
+     [call("set_time_of_day", time="18:30")], [env(time_from="18:25", time_to="18:35"), ENV])
+case(L, "direct", "street_lights_on", "Turn the street lights on.",
+     [call("set_lighting", street_lights="on")], [env(street_lights="on"), ENV])
+case(L, "direct", "benches_wooden", "Make all the benches wooden.",
+     [call("set_asset_appearance", category="bench", material="wood")],
+     [look(material="wood", category="bench", require_all=True), keep("bench")])
+case(L, "direct", "add_fog", "Add fog.", [call("set_weather", kind="fog")], [env(weather=["fog"], intensity_min=0.1), ENV])
+case(L, "direct", "bus_yellow", "Make the bus yellow.",
+     [call("set_asset_appearance", category="bus", colour="yellow")], [look("yellow", category="bus"), keep("bus")],
+     setup=[BUS_AHEAD])
+case(L, "direct", "midnight", "Set the time to midnight.",
+     [call("set_time_of_day", time="midnight")], [env(night=True, time_from="23:30", time_to="00:30"), ENV])
+case(L, "direct", "suv_red_and_night", "Paint the SUV red and make it night.",
+     [call("set_asset_appearance", assets=["suv_1"], colour="red"), call("set_time_of_day", time="night")],
+     [look("red", asset="suv_1"), env(night=True), keep(assets=["suv_1"], environment=True)], tags=("compound",))
+case(L, "direct", "impossible_sparkly_unicorn", "Paint the ego sparkly unicorn.",
+     [call("set_asset_appearance", assets=["ego"], colour="sparkly unicorn")], refused(), tags=("impossible",))
+
+case(L, "indirect", "test_the_wipers", "I want to test the wipers.",
+     [call("set_weather", kind="rain")], [env(weather=["rain"], intensity_min=0.2), ENV])
+case(L, "indirect", "half_past_ten_night", "Our night-vision camera needs a dark scene; half past ten at night would do.",
+     [call("set_time_of_day", time="22:30")], [env(night=True, time_from="22:25", time_to="22:35"), ENV])
+case(L, "indirect", "suv_bright_orange", "The SUV should be easy to spot from the drone, so make it bright orange.",
+     [call("set_asset_appearance", assets=["suv_1"], colour="orange")],
+     [look("orange", asset="suv_1"), keep(assets=["suv_1"])])
+case(L, "indirect", "simulate_winter", "We're simulating winter, so it should be snowing.",
+     [call("set_weather", kind="snow")], [env(weather=["snow"], intensity_min=0.1), ENV])
+case(L, "indirect", "lot_b_cars_silver", "It would be nice if the cars in lot B were all silver.",
+     [call("set_asset_appearance", assets=["passenger_car_1", "passenger_car_2"], colour="silver")],
+     [look("silver", category="passenger_car", scope="all", require_all=True), keep("passenger_car", "suv")])
+case(L, "indirect", "exposure_down", "Because the sensor saturates, could you bring the exposure down to 0.6?",
+     [call("set_lighting", exposure=0.6)], [env(exposure_min=0.55, exposure_max=0.65), ENV])
+case(L, "indirect", "half_past_six_evening", "For the dusk run, set the clock to half past six in the evening.",
+     [call("set_time_of_day", time="18:30")], [env(time_from="18:25", time_to="18:35"), ENV])
+case(L, "indirect", "headlights_whole_test", "The headlights should be on for the whole test.",
+     [call("set_lighting", vehicle_lights="on")], [env(vehicle_lights="on"), ENV])
+case(L, "indirect", "impossible_tornado", "Could you make the weather a tornado? We're testing extreme wind.",
+     [call("set_weather", kind="tornado")], refused(), tags=("impossible",))
+
+case(L, "vague", "rain", "rain", [call("set_weather", kind="rain")], [env(weather=["rain"]), ENV])
+case(L, "vague", "dusk", "dusk", [call("set_time_of_day", time="dusk")], [env(time_from="17:30", time_to="20:30"), ENV])
+case(L, "vague", "spooky_night", "spooky night vibes", [call("set_time_of_day", time="night")], [env(night=True), ENV])
+case(L, "vague", "suv_in_red", "suv in red",
+     [call("set_asset_appearance", assets=["suv_1"], colour="red")], [look("red", asset="suv_1"), keep(assets=["suv_1"])])
+case(L, "vague", "foggy_morning", "foggy morning",
+     [call("set_weather", kind="fog"), call("set_time_of_day", time="08:00")],
+     [env(weather=["fog"], time_from="05:00", time_to="11:00"), ENV], tags=("compound",))
+case(L, "vague", "cones_blue", "cones blue",
+     [call("set_asset_appearance", category="traffic_cone", colour="blue")],
+     [look("blue", category="traffic_cone", scope="all", require_all=True), keep("traffic_cone")],
+     setup=[CONES_AT_LOT_B])
+case(L, "vague", "lights_on", "lights on",
+     [call("set_lighting", street_lights="on")], [ENV],
+     alternatives=[[env(street_lights="on")], [env(vehicle_lights="on")]])
+case(L, "vague", "clear_skies", "clear skies",
+     [call("set_weather", kind="clear")], [env(weather=["clear"]), ENV], setup=[RAIN])
+case(L, "vague", "impossible_time_2570", "time 25:70",
+     [call("set_time_of_day", time="25:70")], refused(), tags=("impossible",))
+
+case(L, "erroneous", "paint_suv_reed", "paint the suv reed",
+     [call("set_asset_appearance", assets=["suv_1"], colour="red")], [look("red", asset="suv_1"), keep(assets=["suv_1"])])
+case(L, "erroneous", "rainning_hard", "make it rainning hard",
+     [call("set_weather", kind="rain", intensity=0.9)], [env(weather=["rain"], intensity_min=0.75), ENV])
+case(L, "erroneous", "time_18_30_oclock", "set time to 18.30 o clock",
+     [call("set_time_of_day", time="18:30")], [env(time_from="18:25", time_to="18:35"), ENV])
+case(L, "erroneous", "turn_on_streetlight", "turn on the streetlight",
+     [call("set_lighting", street_lights="on")], [env(street_lights="on"), ENV])
+case(L, "erroneous", "bench_wood_made", "make bench wood made",
+     [call("set_asset_appearance", category="bench", material="wood")],
+     [look(material="wood", category="bench", require_all=True), keep("bench")])
+case(L, "erroneous", "put_fogg", "put fogg", [call("set_weather", kind="fog")], [env(weather=["fog"]), ENV])
+case(L, "erroneous", "snowing_please_make", "snowing please make", [call("set_weather", kind="snow")],
+     [env(weather=["snow"]), ENV])
+case(L, "erroneous", "car_1_colour_blu", "the car 1 colour make blu",
+     [call("set_asset_appearance", assets=["passenger_car_1"], colour="blue")],
+     [look("blue", asset="passenger_car_1"), keep(assets=["passenger_car_1"])])
+case(L, "erroneous", "impossible_tornadoe", "make weather tornadoe",
+     [call("set_weather", kind="tornado")], refused(), tags=("impossible",))
+
+# ------------------------------------------- multi-turn: the planner under test plans the first turn too
+ADD_CONES_PLANNED = step("Add three cones at the lot B entrance.",
+                         [call("add_asset", category="traffic_cone", count=3, location=at("parking lot B entrance"))],
+                         planned=True)
+BUS_PLANNED = step("Put a bus 12 m in front of the ego.",
+                   [call("add_asset", category="bus", location=at("ego", "in_front_of", distance=12))], planned=True)
+PED_PLANNED = step("Add a pedestrian at the north crosswalk.",
+                   [call("add_asset", category="pedestrian", location=at("north crosswalk"))], planned=True)
+TRUCK_PLANNED = step("I need a delivery truck parked in the eastbound lane near the library.",
+                     [call("add_asset", category="truck", location=xy(-41, -1.75), yaw_deg=0)], planned=True)
+CONE_LINE_PLANNED = step("Line up 4 cones in front of the ego.",
+                         [call("arrange_assets", categories=["traffic_cone"], shape="line", count=4,
+                               location=at("ego", "in_front_of", distance=15), heading_deg=0)], planned=True)
+RAIN_PLANNED = step("Make it rain lightly.", [call("set_weather", kind="rain", intensity=0.3)], planned=True)
+
+case(A, "vague", "two_more_there", "put two more there",
+     [call("add_asset", category="traffic_cone", count=2, location=at("parking lot B entrance"))],
+     [delta("traffic_cone", 2), near("parking lot B entrance", 10, category="traffic_cone", require_all=True),
+      keep("traffic_cone")], setup=[ADD_CONES_PLANNED])
+case(L, "indirect", "make_it_yellow", "Actually, make it yellow so it looks like a school bus.",
+     [call("set_asset_appearance", category="bus", colour="yellow")], [look("yellow", category="bus"), keep("bus")],
+     setup=[BUS_PLANNED])
+case(M, "vague", "move_them_a_bit_left", "move them a bit left",
+     [call("move_asset", assets=["traffic_cone_1", "traffic_cone_2", "traffic_cone_3", "traffic_cone_4"], left=1.0)],
+     [*[moved(f"traffic_cone_{k}", 0.3, 3, direction="left") for k in range(1, 5)], keep("traffic_cone")],
+     setup=[CONE_LINE_PLANNED])
+case(R, "indirect", "not_the_bus_the_truck", "Hmm, not the bus - remove the truck instead.",
+     [call("remove_assets", category="truck")], [count("truck", 0, 0), count("bus", 1, 1), keep("truck")],
+     setup=[BUS_PLANNED, step("Also add a truck behind the bus.",
+                              [call("add_asset", category="truck", location=at("bus_1", "behind"))])])
+case(L, "direct", "heavier_rain", "Make the rain heavier.",
+     [call("set_weather", kind="rain", intensity=0.8)], [env(weather=["rain"], intensity_min=0.45), ENV],
+     setup=[RAIN_PLANNED])
+case(M, "erroneous", "him_walk_across", "now make him walking across the road",
+     [call("set_behaviour", asset="pedestrian_1", behaviour={"kind": "cross_road"})],
+     [{"kind": "behaviour", "category": "pedestrian", "behaviour": ["cross_road", "jaywalk"]}, keep("pedestrian")],
+     setup=[PED_PLANNED])
+case(P, "indirect", "truck_8m_behind_ego", "Good. Now I'd like that truck 8 m behind the ego instead, same lane.",
+     [call("place_asset", asset="truck_1", location=at("ego", "behind", along_m=-8))],
+     [{"kind": "relative", "category": "truck", "relation": "behind", "target": "ego", "max_distance": 18,
+       "tolerance_deg": 30}, {"kind": "in_lane", "category": "truck", "lane": "main_eastbound"}, keep("truck")],
+     setup=[TRUCK_PLANNED])
+case(S, "vague", "how_many_now", "how many cones now?",
+     [call("find_assets", category="traffic_cone")], [*ANSWER, says("3", "three")], setup=[ADD_CONES_PLANNED])
+case(G, "vague", "same_again_bollard_ring", "same again but bollards, as a ring round the fountain",
+     [call("arrange_assets", categories=["bollard"], shape="ring", count=4, location=at("fountain"))],
+     [delta("bollard", 3, 8), ring("bollard", 3, "fountain"), delta("traffic_cone", 0), keep("bollard")],
+     setup=[CONE_LINE_PLANNED])
+case(L, "erroneous", "them_colour_white", "them cones, colour to white and also the rain stop",
+     [call("set_asset_appearance", category="traffic_cone", colour="white"), call("set_weather", kind="clear")],
+     [look("white", category="traffic_cone", scope="all", require_all=True), env(weather=["clear", "cloudy"]),
+      keep("traffic_cone", environment=True)], setup=[ADD_CONES_PLANNED, RAIN], tags=("compound",))
+case(A, "indirect", "pedestrian_next_to_truck",
+     "For the occlusion test, add a pedestrian on the sidewalk right beside that truck.",
+     [call("add_asset", category="pedestrian", location=at("truck_1", "on_sidewalk"))],
+     [delta("pedestrian", 1), near("truck_1", 8, category="pedestrian"),
+      {"kind": "on_surface", "category": "pedestrian", "surfaces": ["sidewalk"]}, keep("pedestrian")],
+     setup=[TRUCK_PLANNED])
+case(R, "vague", "drop_the_last_two", "actually drop two of those",
+     [call("remove_assets", category="traffic_cone", count=2)], [delta("traffic_cone", -2), keep("traffic_cone")],
+     setup=[ADD_CONES_PLANNED])
 # (end of cases)
 
 
