@@ -10,6 +10,7 @@ from typing import Any
 
 import click
 from drivetwin.orchestrator.cli_plugins import PluginCommandGroup, echo_problems, planners_group
+from drivetwin.orchestrator.logs import open_log as open_request_log
 from drivetwin.orchestrator.repl import ChatOptions, ScriptFileError, dump_tools, interactive, read_script, run_lines
 from drivetwin.orchestrator.session import Session
 from drivetwin.orchestrator.session_setup import command_settings as _settings
@@ -66,6 +67,7 @@ def chat(world: str, planner_name: str | None, backend: str | None, model: str |
     Example: drivetwin chat --world campus --script demo.txt --fail-fast
     """
     settings = _settings(planner_name, backend, model)
+    open_request_log(settings.state_dir, command="chat", world=world)  # drivetwin logs reads it
     opened = open_live_session(world, settings, journal=journal, resume=resume,
                                can_ask=script is None and sys.stdin.isatty(), isolate_plugins=isolate_plugins,
                                simulate=not no_sim, background=script is None, enhance_model=enhance_model)
@@ -355,3 +357,7 @@ from drivetwin.orchestrator.serve.command import serve_command  # noqa: E402  (d
 
 main.add_command(serve_command)
 main.add_command(planners_group)  # drivetwin planners list (cli_plugins)
+
+from drivetwin.orchestrator.cli_logs import logs_group  # noqa: E402  (drivetwin logs list|show|replay|edits)
+
+main.add_command(logs_group)

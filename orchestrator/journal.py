@@ -32,6 +32,7 @@ from drivetwin.orchestrator.journal_events import (
     Event,
     JournalError,
     LoadEvent,
+    PlanFacts,
     StartEvent,
     TurnEvent,
     TxnEvent,
@@ -66,6 +67,8 @@ class Entry:
     prompt: str
     edit: WorldEdit
     accepted: bool = False
+    # Which planner and model made it (None for journals written before they were recorded).
+    facts: PlanFacts | None = None
 
 
 @dataclass
@@ -152,7 +155,8 @@ class Journal:
         self.append("start", scene=scene.model_dump(mode="json"))
 
     def commit(self, entry: Entry) -> None:
-        self.append("commit", txn=entry.txn, prompt=entry.prompt, edit=entry.edit.model_dump(mode="json"))
+        facts = {} if entry.facts is None else {"facts": entry.facts.model_dump(mode="json")}
+        self.append("commit", txn=entry.txn, prompt=entry.prompt, edit=entry.edit.model_dump(mode="json"), **facts)
 
     def end(self) -> None:
         """Mark a clean end of the session and release the lock."""
@@ -271,7 +275,7 @@ class ReplayState:
         if event.txn < history.next_txn:
             raise JournalError(f"change {event.txn} reuses an id (the next is {history.next_txn})")
         self.scene = event.edit.apply(self.scene)
-        history.done.append(Entry(event.txn, event.prompt, event.edit))
+        history.done.append(Entry(event.txn, event.prompt, event.edit, facts=event.facts))
         history.undone.clear()
         history.next_txn = event.txn + 1
 

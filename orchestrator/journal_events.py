@@ -26,11 +26,33 @@ class StartEvent(_Event):
     scene: dict[str, Any]
 
 
+class PlanFacts(BaseModel):
+    """Which planner and model made a turn's plan, and what it cost: for `drivetwin logs edits`.
+
+    Journals written before these facts were recorded replay without them (None).
+    """
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    planner: str
+    # "backend/model" of every model the planner asked, in order; None for a planner with no model.
+    model: str | None = None
+    prompt_version: str | None = None
+    # The planning levels (requirements, calls...), as `--explain` shows them.
+    trace: list[dict[str, Any]] = Field(default_factory=list)
+    tokens: int = 0
+    plan_s: float = 0.0
+    turn_s: float = 0.0
+    # The turn's id in `drivetwin logs` (SESSION:TURN), when the backend calls were logged.
+    log: str | None = None
+
+
 class CommitEvent(_Event):
     event: Literal["commit"]
     txn: TxnId
     prompt: Annotated[str, Field(strict=True)]
     edit: WorldEdit
+    facts: PlanFacts | None = None
 
 
 class TxnEvent(_Event):
@@ -48,6 +70,7 @@ class LoadEvent(_Event):
 class TurnEvent(_Event):
     event: Literal["turn"]
     turn: Turn
+    facts: PlanFacts | None = None
 
 
 class EndEvent(_Event):

@@ -13,7 +13,9 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from drivetwin.orchestrator import logs
 from drivetwin.orchestrator.journal import Entry, EventKind, History, Journal, JournalError, JournalWriteError
+from drivetwin.orchestrator.journal_events import PlanFacts
 from drivetwin.orchestrator.memory import Memory, Turn
 from drivetwin.orchestrator.planning import MAX_PROMPT_CHARS, Plan, PlanContext, Planner, PlanningError, Question
 from drivetwin.orchestrator.planning.check import review
@@ -63,6 +65,9 @@ class Session:
         # The prompt and question of a turn that asked, until a reading is chosen or a new prompt comes.
         self.pending: tuple[str, Question] | None = None
         self.on_change = on_change
+        # Who planned the prompt being handled (journaled with its commit and turn), and since when.
+        self._facts: PlanFacts | None = None
+        self._turn_started = 0.0
         self.journal = Journal(journal_path) if journal_path else None
         if self.journal is not None:
             self.journal.start(scene)
@@ -112,8 +117,12 @@ class Session:
     def _note(self, turn: Turn) -> None:
         """Journal a conversation turn; on a full disk the turn lives on in memory only."""
         if self.journal is not None:
+            facts = {} if self._facts is None else {"facts": self._finished(self._facts).model_dump(mode="json")}
             with contextlib.suppress(JournalWriteError):
-                self.journal.append("turn", turn=turn.model_dump(mode="json"))
+                self.journal.append("turn", turn=turn.model_dump(mode="json"), **facts)
+
+    def _finished(self, facts: PlanFacts) -> PlanFacts:
+        return facts.model_copy(update={"turn_s": round(time.perf_counter() - self._turn_started, 4)})
 
     @property
     def scene(self) -> Scene:
@@ -125,7 +134,7 @@ class Session:
     # Prompts -----------------------------------------------------------------------------
     def submit(self, prompt: str) -> TurnReport:
         """Plan and apply one prompt; on any refusal the scene stays exactly as it was."""
-        started = time.perf_counter()
+        started = self._turn_started = time.perf_counter()
         text = prompt.strip()
         if not text:
             return self._failed(prompt, "the prompt is empty; say what to change", started)
@@ -136,10 +145,27 @@ class Session:
                 started,
             )
         self.pending = None  # a new prompt instead of a number drops an open question
+        planner = getattr(self.planner, "name", type(self.planner).__name__)
+        with logs.turn_scope() as gathered:  # which models the planner asked, for the journal and the log
+            try:
+                plan: Plan | None = self.planner.plan(text, self.context())
+                error = None
+            except PlanningError as exc:
+                plan, error = None, str(exc)
+        self._facts = logs.plan_facts(plan, gathered, planner, time.perf_counter() - started)
         try:
-            plan = self.planner.plan(text, self.context())
-        except PlanningError as exc:
-            return self._failed(text, str(exc), started)
+            report = self._decide(text, plan, started) if plan is not None else self._failed(text, error or "", started)
+        finally:
+            self._facts = None
+        logs.record_turn(gathered, prompt=text, planner=planner if plan is None else plan.planner,
+                         prompt_version=plan.prompt_version if plan else None,
+                         trace=[step.model_dump(mode="json") for step in plan.trace] if plan else [],
+                         calls=[c.model_dump(mode="json") for c in plan.calls] if plan else [],
+                         ok=report.ok, error=report.error, txn=self.history.next_txn - 1 if report.diff else None)
+        return report
+
+    def _decide(self, text: str, plan: Plan, started: float) -> TurnReport:
+        """Check a plan against the request, then apply it, ask, or refuse."""
         if plan.verbatim:
             return self._run(text, plan, started)
         verdict = review(text, plan, self.context())
@@ -213,7 +239,8 @@ class Session:
         self._note(turn)
 
     def _commit(self, prompt: str, edit: WorldEdit, after: Scene) -> None:
-        entry = Entry(self.history.next_txn, prompt, edit)
+        entry = Entry(self.history.next_txn, prompt, edit,
+                      facts=None if self._facts is None else self._finished(self._facts))
         if self.journal is not None:
             self.journal.commit(entry)  # durable before anything reports success
         self.history.next_txn += 1

@@ -4,6 +4,9 @@ from drivetwin.orchestrator.backends import load_backend
 backend = load_backend("embedded", "smollm2-135m")
 result = backend.chat([{"role": "user", "content": "Make it rain."}], schema=WEATHER_SCHEMA)
 result.data  # parsed JSON, already checked against WEATHER_SCHEMA
+
+A backend (built in or a plugin) subclasses Backend and implements `complete` (one request,
+one raw answer), `describe` and `statuses`; Backend.chat does the rest.
 """
 
 from .base import (
@@ -13,12 +16,15 @@ from .base import (
     BackendInfo,
     BackendStatus,
     ChatResult,
+    Completion,
+    CompletionRequest,
     Message,
 )
 from .errors import (
     BackendError,
     BackendTimeout,
     BackendUnavailable,
+    ConnectionDropped,
     InvalidOutput,
     InvalidRequest,
     UnknownBackend,
@@ -44,6 +50,9 @@ __all__ = [
     "BackendTimeout",
     "BackendUnavailable",
     "ChatResult",
+    "Completion",
+    "CompletionRequest",
+    "ConnectionDropped",
     "InvalidOutput",
     "InvalidRequest",
     "Message",

@@ -1,14 +1,24 @@
-"""The one interface every LLM backend implements: chat with an optional JSON Schema."""
+"""The one interface every LLM backend implements: chat with an optional JSON Schema.
+
+`Backend.chat` is written once, here: it checks the request, holds the whole-call deadline,
+retries a dropped connection, times the call, checks the answer against the schema, and
+logs the request and answer (drivetwin.orchestrator.logs). A backend implements only
+`complete`: one request to its model, one raw answer back.
+"""
 
 from __future__ import annotations
 
 import inspect
+import time
 from abc import ABC, abstractmethod
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any, ClassVar, Literal, TypedDict
 
-from .errors import InvalidRequest
+from drivetwin.orchestrator import logs
+from drivetwin.tools.deadline import DeadlineExceeded, call_within
+
+from .errors import BackendError, BackendTimeout, ConnectionDropped, InvalidRequest
 
 Role = Literal["system", "user", "assistant"]
 ROLES: tuple[Role, ...] = ("system", "user", "assistant")
@@ -18,6 +28,10 @@ ROLES: tuple[Role, ...] = ("system", "user", "assistant")
 DEFAULT_MAX_TOKENS = 512
 # A generous bound for one answer from a 7–9B model on a laptop CPU; callers pass less.
 DEFAULT_TIMEOUT_S = 120.0
+# A dropped connection (a server restarting, a proxy closing idle sockets) is tried again this
+# many times, waiting RETRY_BACKOFF_S, then twice that...; timeouts and refusals never are.
+TRANSPORT_RETRIES = 2
+RETRY_BACKOFF_S = 0.25
 
 
 class Message(TypedDict):
@@ -43,6 +57,29 @@ class ChatResult:
     backend: str
     finish_reason: str = "stop"
     data: Any = None
+
+
+@dataclass(frozen=True)
+class CompletionRequest:
+    """One checked request, as `Backend.complete` receives it."""
+
+    messages: list[Message]
+    schema: Mapping[str, Any] | None
+    temperature: float
+    seed: int | None
+    max_tokens: int
+    # The whole call's limit; a backend passes it on as its client's own (per-read) timeout.
+    timeout_s: float | None
+
+
+@dataclass(frozen=True)
+class Completion:
+    """A model's raw answer to one request, before the schema check."""
+
+    text: str
+    finish_reason: str = "stop"
+    prompt_tokens: int = 0
+    completion_tokens: int = 0
 
 
 @dataclass(frozen=True)
@@ -82,13 +119,18 @@ class Backend(ABC):
     # Preset name -> the backend's own model id (or a description for embedded models).
     presets: ClassVar[Mapping[str, str]] = {}
 
+    # True for a backend that stops its own generation at the deadline (in-process llama.cpp:
+    # an abandoned thread would keep the model's lock and the CPU), so chat() does not abandon it.
+    stops_at_deadline: ClassVar[bool] = False
+
     model: str
+    # The limit of a call that gives none; subclasses set it from their `timeout_s` option.
+    timeout_s: float | None = DEFAULT_TIMEOUT_S
 
     def __init__(self, model: str | None = None, **options: Any) -> None:
         """Take a preset name or backend-specific model id (None: the default) and options."""
         self.model = model or self.default_model or ""
 
-    @abstractmethod
     def chat(
         self,
         messages: Sequence[Message],
@@ -99,7 +141,70 @@ class Backend(ABC):
         max_tokens: int = DEFAULT_MAX_TOKENS,
         timeout_s: float | None = None,
     ) -> ChatResult:
-        """Answer the conversation; with `schema`, the text is JSON that matches it."""
+        """Answer the conversation; with `schema`, the text is JSON that matches it.
+
+        Every failure is a BackendError; the request and its answer (or error) are logged.
+        """
+        # structured.py builds ChatResults (defined here): imported at call time.
+        from drivetwin.orchestrator.backends.structured import answer_result, check_schema
+
+        checked = check_request(messages, max_tokens=max_tokens, temperature=temperature, backend=self.name)
+        if schema is not None:
+            check_schema(schema, backend=self.name)
+        limit = timeout_s if timeout_s is not None else self.timeout_s
+        request = CompletionRequest(checked, schema, temperature, seed, max_tokens, limit)
+        self.prepare()
+        start = time.perf_counter()
+        attempts = 0
+        try:
+            completion, attempts = self._complete_within(request, start)
+            result = answer_result(
+                completion.text, schema, finish_reason=completion.finish_reason, max_tokens=max_tokens,
+                prompt_tokens=completion.prompt_tokens, completion_tokens=completion.completion_tokens,
+                latency_s=time.perf_counter() - start, backend=self.name, model=self.model,
+            )
+        except BackendError as error:
+            logs.record_exchange(self.name, self.model, request, None, error, attempts, time.perf_counter() - start)
+            raise
+        logs.record_exchange(self.name, self.model, request, result, None, attempts, result.latency_s)
+        return result
+
+    def _complete_within(self, request: CompletionRequest, start: float) -> tuple[Completion, int]:
+        """`complete`, under the whole-call deadline, tried again after a dropped connection."""
+        limit = request.timeout_s
+        attempt = 1
+        while True:
+            left = None if limit is None else max(0.0, limit - (time.perf_counter() - start))
+            try:
+                if self.stops_at_deadline or left is None:
+                    return self.complete(request), attempt
+                # A client's own timeout counts per read (a server dripping a byte every few
+                # seconds never trips it); this deadline counts for the whole call.
+                return call_within(lambda: self.complete(request), left, f"{self.name} request"), attempt
+            except DeadlineExceeded:
+                raise BackendTimeout(
+                    f"{self.name}/{self.model or '?'} did not answer within {limit:g} s",
+                    timeout_s=limit or 0.0, backend=self.name, model=self.model,
+                ) from None
+            except ConnectionDropped as dropped:
+                wait = RETRY_BACKOFF_S * 2 ** (attempt - 1)
+                out_of_time = limit is not None and time.perf_counter() - start + wait >= limit
+                if attempt > TRANSPORT_RETRIES or out_of_time:
+                    dropped.args = (f"{dropped.message} (after {attempt} attempt(s))",)
+                    raise
+                time.sleep(wait)
+                attempt += 1
+
+    def prepare(self) -> None:  # noqa: B027 - an optional hook, not an abstract method
+        """Get ready for a first answer (load a model file) before the call is timed; by default nothing."""
+
+    @abstractmethod
+    def complete(self, request: CompletionRequest) -> Completion:
+        """Send one checked request to the model and return its raw answer.
+
+        Raise a BackendError for every failure, ConnectionDropped when the connection broke
+        before a whole answer came back (chat() tries again).
+        """
 
     @abstractmethod
     def describe(self) -> BackendInfo:

@@ -8,24 +8,14 @@ import json
 import os
 import threading
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from .base import (
-    DEFAULT_MAX_TOKENS,
-    DEFAULT_TIMEOUT_S,
-    Backend,
-    BackendInfo,
-    BackendStatus,
-    ChatResult,
-    Message,
-    check_request,
-)
+from .base import DEFAULT_TIMEOUT_S, Backend, BackendInfo, BackendStatus, Completion, CompletionRequest, Message
 from .errors import BackendError, BackendTimeout, BackendUnavailable, InvalidRequest
 from .gguf_models import SHIPPED_MODELS, is_installed, resolve_gguf
-from .structured import answer_result, check_schema
 
 if TYPE_CHECKING:
     from llama_cpp import Llama
@@ -146,6 +136,7 @@ class EmbeddedBackend(Backend):
 
     name = NAME
     default_model = "smollm2-135m"
+    stops_at_deadline = True
     presets: ClassVar[Mapping[str, str]] = {m.name: m.description for m in SHIPPED_MODELS.values()}
 
     def __init__(
@@ -160,7 +151,7 @@ class EmbeddedBackend(Backend):
         self.model, self._path = resolve_gguf(requested)
         self._n_ctx = n_ctx
         self._n_threads = n_threads or default_threads()
-        self._timeout_s = timeout_s
+        self.timeout_s = timeout_s
 
     def _loaded(self) -> _LoadedModel:
         return _load(self._path, self._n_ctx, self._n_threads, self.model)
@@ -170,29 +161,20 @@ class EmbeddedBackend(Backend):
         """Seconds it took to load this model's GGUF (once per process)."""
         return self._loaded().load_s
 
-    def chat(
-        self,
-        messages: Sequence[Message],
-        *,
-        schema: Mapping[str, Any] | None = None,
-        temperature: float = 0.0,
-        seed: int | None = 0,
-        max_tokens: int = DEFAULT_MAX_TOKENS,
-        timeout_s: float | None = None,
-    ) -> ChatResult:
-        """Answer in-process; with `schema`, sampling follows a grammar built from it."""
-        checked = check_request(messages, max_tokens=max_tokens, temperature=temperature, backend=NAME)
+    def prepare(self) -> None:
+        """Load the GGUF (once per process) before the first call is timed, like a warm server."""
+        self._loaded()
+
+    def complete(self, request: CompletionRequest) -> Completion:
+        """Answer in-process; with a schema, sampling follows a grammar built from it."""
         loaded = self._loaded()
-        # Timed after the one-time load, like a server that keeps its model warm.
-        start = time.perf_counter()
-        grammar = self._grammar(schema) if schema is not None else None
-        limit = timeout_s if timeout_s is not None else self._timeout_s
-        deadline = _Deadline(limit) if limit is not None else None
+        grammar = self._grammar(request.schema) if request.schema is not None else None
+        deadline = _Deadline(request.timeout_s) if request.timeout_s is not None else None
         with loaded.lock:
-            prompt, stop, stopping = self._format(loaded.llama, checked)
-            if len(prompt) + max_tokens > self._n_ctx:
+            prompt, stop, stopping = self._format(loaded.llama, request.messages)
+            if len(prompt) + request.max_tokens > self._n_ctx:
                 raise InvalidRequest(
-                    f"prompt ({len(prompt)} tokens) plus max_tokens ({max_tokens}) exceeds the "
+                    f"prompt ({len(prompt)} tokens) plus max_tokens ({request.max_tokens}) exceeds the "
                     f"context of {self._n_ctx} tokens; shorten the prompt or pass a larger n_ctx",
                     backend=NAME,
                     model=self.model,
@@ -202,9 +184,9 @@ class EmbeddedBackend(Backend):
             try:
                 completion: Any = loaded.llama.create_completion(
                     prompt=prompt,
-                    temperature=temperature,
-                    seed=seed,
-                    max_tokens=max_tokens,
+                    temperature=request.temperature,
+                    seed=request.seed,
+                    max_tokens=request.max_tokens,
                     stop=stop,
                     stopping_criteria=stopping,
                     grammar=grammar,
@@ -226,20 +208,14 @@ class EmbeddedBackend(Backend):
                 model=self.model,
             )
         usage = completion["usage"]
-        return answer_result(
+        return Completion(
             text,
-            schema,
-            finish_reason=str(choice.get("finish_reason") or "stop"),
-            max_tokens=max_tokens,
-            prompt_tokens=int(usage["prompt_tokens"]),
-            completion_tokens=int(usage["completion_tokens"]),
-            latency_s=time.perf_counter() - start,
-            backend=NAME,
-            model=self.model,
+            str(choice.get("finish_reason") or "stop"),
+            int(usage["prompt_tokens"]),
+            int(usage["completion_tokens"]),
         )
 
     def _grammar(self, schema: Mapping[str, Any]) -> Any:
-        check_schema(schema, backend=NAME)
         try:
             # Key order is kept: the grammar makes the model write properties in schema order.
             return _grammar_for(json.dumps(schema))

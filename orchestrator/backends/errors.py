@@ -68,6 +68,16 @@ class InvalidOutput(BackendError):
         self.reason: InvalidOutputReason = reason
 
 
+class ConnectionDropped(InvalidOutput):
+    """The connection broke before a whole answer arrived (reset, closed, cut off mid-reply).
+
+    The one failure `Backend.chat` retries: the request may well succeed on a new connection.
+    """
+
+    def __init__(self, message: str, *, backend: str = "", model: str = "") -> None:
+        super().__init__(message, raw="", reason="truncated", backend=backend, model=model)
+
+
 class InvalidRequest(BackendError):
     """The caller asked for something no backend can do (bad role, bad schema, bad option)."""
 

@@ -4,26 +4,14 @@ from __future__ import annotations
 
 import json
 import os
-import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping
 from typing import Any, ClassVar
 
 import httpx
 import pydantic
-from drivetwin.tools.deadline import DeadlineExceeded, call_within
 
-from .base import (
-    DEFAULT_MAX_TOKENS,
-    DEFAULT_TIMEOUT_S,
-    Backend,
-    BackendInfo,
-    BackendStatus,
-    ChatResult,
-    Message,
-    check_request,
-)
-from .errors import BackendError, BackendTimeout, BackendUnavailable, InvalidOutput
-from .structured import answer_result, check_schema
+from .base import DEFAULT_TIMEOUT_S, Backend, BackendInfo, BackendStatus, Completion, CompletionRequest
+from .errors import BackendError, BackendTimeout, BackendUnavailable, ConnectionDropped, InvalidOutput
 
 NAME = "ollama"
 OLLAMA_INSTALL = "pip install 'ollama>=0.4'"
@@ -67,7 +55,7 @@ class OllamaBackend(Backend):
         # A preset name maps to the paper's tag; anything else is an Ollama model name as is.
         self.model = PRESETS.get(requested, requested)
         self._host = host
-        self._timeout_s = timeout_s
+        self.timeout_s = timeout_s
         self._keep_alive = keep_alive
 
     def _client(self, timeout_s: float | None) -> Any:
@@ -82,66 +70,37 @@ class OllamaBackend(Backend):
         """The server address in use: configured, else OLLAMA_HOST, else the client default."""
         return self._host or os.environ.get("OLLAMA_HOST") or DEFAULT_HOST
 
-    def chat(
-        self,
-        messages: Sequence[Message],
-        *,
-        schema: Mapping[str, Any] | None = None,
-        temperature: float = 0.0,
-        seed: int | None = 0,
-        max_tokens: int = DEFAULT_MAX_TOKENS,
-        timeout_s: float | None = None,
-    ) -> ChatResult:
-        """Ask the server's `/api/chat` for one non-streamed answer."""
-        checked = check_request(messages, max_tokens=max_tokens, temperature=temperature, backend=NAME)
-        if schema is not None:
-            check_schema(schema, backend=NAME)
-        limit = timeout_s if timeout_s is not None else self._timeout_s
-        options: dict[str, Any] = {"temperature": temperature, "num_predict": max_tokens}
-        if seed is not None:
-            options["seed"] = seed
-        start = time.perf_counter()
-        with self._client(limit) as client:
+    def complete(self, request: CompletionRequest) -> Completion:
+        """Ask the server's `/api/chat` for one non-streamed answer; the schema goes in `format`."""
+        options: dict[str, Any] = {"temperature": request.temperature, "num_predict": request.max_tokens}
+        if request.seed is not None:
+            options["seed"] = request.seed
+        schema = request.schema
+        with self._client(request.timeout_s) as client:
             response = self._call(
                 lambda: client.chat(
                     model=self.model,
-                    messages=[dict(m) for m in checked],
+                    messages=[dict(m) for m in request.messages],
                     format=dict(schema) if schema is not None else None,
                     options=options,
                     stream=False,
                     keep_alive=self._keep_alive,
                 ),
-                limit,
+                request.timeout_s,
             )
-        latency = time.perf_counter() - start
-        text = response.message.content or ""
-        finish_reason = response.done_reason or "stop"
-        return answer_result(
-            text,
-            schema,
-            finish_reason=finish_reason,
-            max_tokens=max_tokens,
-            prompt_tokens=response.prompt_eval_count or 0,
-            completion_tokens=response.eval_count or 0,
-            latency_s=latency,
-            backend=NAME,
-            model=self.model,
+        return Completion(
+            response.message.content or "",
+            response.done_reason or "stop",
+            response.prompt_eval_count or 0,
+            response.eval_count or 0,
         )
 
-    def _call(self, request: Any, timeout_s: float | None) -> Any:
+    def _call(self, request: Callable[[], Any], timeout_s: float | None) -> Any:
         """Run one client call, turning every client/transport failure into a BackendError."""
         import ollama
 
         try:
-            # The client's timeout counts per read; the deadline counts for the whole call.
-            return call_within(request, timeout_s, f"{NAME}/{self.model} request")
-        except DeadlineExceeded:
-            raise BackendTimeout(
-                f"{NAME}/{self.model} did not answer within {timeout_s:g} s",
-                timeout_s=timeout_s or 0.0,
-                backend=NAME,
-                model=self.model,
-            ) from None
+            return request()
         except ConnectionError:
             # The client turns httpx.ConnectError into a bare ConnectionError.
             raise BackendUnavailable(
@@ -171,11 +130,9 @@ class OllamaBackend(Backend):
                 backend=NAME,
                 model=self.model,
             ) from None
-        except httpx.RemoteProtocolError as error:
-            raise InvalidOutput(
-                f"the Ollama server's reply was cut off: {error}",
-                raw="",
-                reason="truncated",
+        except (httpx.RemoteProtocolError, httpx.ReadError, httpx.WriteError) as error:
+            raise ConnectionDropped(
+                f"the connection to the Ollama server at {self.host} broke before a whole reply came back: {error}",
                 backend=NAME,
                 model=self.model,
             ) from None
@@ -198,9 +155,9 @@ class OllamaBackend(Backend):
 
     def describe(self) -> BackendInfo:
         """The model's size, parameter count and quantisation as the server reports them."""
-        with self._client(self._timeout_s) as client:
-            shown = self._call(lambda: client.show(self.model), self._timeout_s)
-            listed = self._call(client.list, self._timeout_s)
+        with self._client(self.timeout_s) as client:
+            shown = self._call(lambda: client.show(self.model), self.timeout_s)
+            listed = self._call(client.list, self.timeout_s)
         size = next((int(m.size) for m in listed.models if m.model == _tag(self.model) and m.size), None)
         details = shown.details
         info: Mapping[str, Any] = shown.modelinfo or {}

@@ -3,25 +3,13 @@
 from __future__ import annotations
 
 import json
-import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from typing import Any, Literal
 
 import httpx
-from drivetwin.tools.deadline import DeadlineExceeded, call_within
 
-from .base import (
-    DEFAULT_MAX_TOKENS,
-    DEFAULT_TIMEOUT_S,
-    Backend,
-    BackendInfo,
-    BackendStatus,
-    ChatResult,
-    Message,
-    check_request,
-)
-from .errors import BackendError, BackendTimeout, BackendUnavailable, InvalidOutput
-from .structured import answer_result, check_schema
+from .base import DEFAULT_TIMEOUT_S, Backend, BackendInfo, BackendStatus, Completion, CompletionRequest
+from .errors import BackendError, BackendTimeout, BackendUnavailable, ConnectionDropped, InvalidOutput
 
 NAME = "openai"
 DEFAULT_BASE_URL = "http://127.0.0.1:8080/v1"
@@ -62,7 +50,7 @@ class OpenAIBackend(Backend):
     ) -> None:
         self._base_url = base_url.rstrip("/")
         self._headers = {"Authorization": f"Bearer {api_key}"} if api_key else {}
-        self._timeout_s = timeout_s
+        self.timeout_s = timeout_s
         self._schema_mode: SchemaMode = schema_mode
         self._requested_model = model
         self.model = model or ""
@@ -88,33 +76,18 @@ class OpenAIBackend(Backend):
             self.model = served[0]
         return self.model
 
-    def chat(
-        self,
-        messages: Sequence[Message],
-        *,
-        schema: Mapping[str, Any] | None = None,
-        temperature: float = 0.0,
-        seed: int | None = 0,
-        max_tokens: int = DEFAULT_MAX_TOKENS,
-        timeout_s: float | None = None,
-    ) -> ChatResult:
-        """POST one non-streamed `/chat/completions` request and check the answer."""
-        checked = check_request(messages, max_tokens=max_tokens, temperature=temperature, backend=NAME)
-        if schema is not None:
-            check_schema(schema, backend=NAME)
-        limit = timeout_s if timeout_s is not None else self._timeout_s
-        start = time.perf_counter()
+    def complete(self, request: CompletionRequest) -> Completion:
+        """POST one non-streamed `/chat/completions` request."""
         payload: dict[str, Any] = {
-            "model": self._resolve_model(limit),
-            "messages": [dict(m) for m in checked],
-            "temperature": temperature,
-            "max_tokens": max_tokens,
+            "model": self._resolve_model(request.timeout_s),
+            "messages": [dict(m) for m in request.messages],
+            "temperature": request.temperature,
+            "max_tokens": request.max_tokens,
             "stream": False,
         }
-        if seed is not None:
-            payload["seed"] = seed
-        body = self._complete(payload, schema, limit)
-        latency = time.perf_counter() - start
+        if request.seed is not None:
+            payload["seed"] = request.seed
+        body = self._complete(payload, request.schema, request.timeout_s)
         try:
             choice = body["choices"][0]
             text = choice["message"]["content"] or ""
@@ -128,16 +101,11 @@ class OpenAIBackend(Backend):
                 backend=NAME,
                 model=self.model,
             ) from None
-        return answer_result(
+        return Completion(
             str(text),
-            schema,
-            finish_reason=finish_reason,
-            max_tokens=max_tokens,
-            prompt_tokens=_token_count(usage, "prompt_tokens"),
-            completion_tokens=_token_count(usage, "completion_tokens"),
-            latency_s=latency,
-            backend=NAME,
-            model=self.model,
+            finish_reason,
+            _token_count(usage, "prompt_tokens"),
+            _token_count(usage, "completion_tokens"),
         )
 
     def _complete(self, payload: dict[str, Any], schema: Mapping[str, Any] | None, timeout_s: float | None) -> Any:
@@ -162,19 +130,7 @@ class OpenAIBackend(Backend):
         """One HTTP exchange; every transport or protocol failure becomes a BackendError."""
         url = f"{self._base_url}{path}"
         try:
-            # httpx's timeout counts per read (a server dripping a byte at a time never trips
-            # it); the deadline counts for the whole exchange.
-            response = call_within(
-                lambda: httpx.request(method, url, json=payload, headers=self._headers, timeout=timeout_s),
-                timeout_s, f"{NAME} {method} {path}",
-            )
-        except DeadlineExceeded:
-            raise BackendTimeout(
-                f"{NAME}/{self.model or '?'} at {self._base_url} did not answer within {timeout_s:g} s",
-                timeout_s=timeout_s or 0.0,
-                backend=NAME,
-                model=self.model,
-            ) from None
+            response = httpx.request(method, url, json=payload, headers=self._headers, timeout=timeout_s)
         except httpx.ConnectError:
             raise BackendUnavailable(
                 f"no OpenAI-compatible server answers at {self._base_url} ({WHERE_HINT})",
@@ -189,11 +145,9 @@ class OpenAIBackend(Backend):
                 backend=NAME,
                 model=self.model,
             ) from None
-        except httpx.RemoteProtocolError as error:
-            raise InvalidOutput(
-                f"the reply from {url} was cut off: {error}",
-                raw="",
-                reason="truncated",
+        except (httpx.RemoteProtocolError, httpx.ReadError, httpx.WriteError) as error:
+            raise ConnectionDropped(
+                f"the connection to {url} broke before a whole reply came back: {error}",
                 backend=NAME,
                 model=self.model,
             ) from None
@@ -251,7 +205,7 @@ class OpenAIBackend(Backend):
 
     def describe(self) -> BackendInfo:
         """The served model id; sizes are not part of the OpenAI API."""
-        model = self._resolve_model(self._timeout_s)
+        model = self._resolve_model(self.timeout_s)
         return BackendInfo(backend=NAME, model=model, detail=f"served by {self._base_url}")
 
     @classmethod

@@ -55,6 +55,8 @@ class Reply:
     delay_s: float = 0.0
     # Announce the full length but send only half, then hang up: a cut-off reply.
     truncate: bool = False
+    # Hang up without a word on the first `drop` requests to this route: a dropped connection.
+    drop: int = 0
 
     def payload(self) -> bytes:
         if isinstance(self.body, bytes):
@@ -85,6 +87,10 @@ class ScriptedServer:
                 reply = script.routes.get((self.command, self.path))
                 if reply is None:
                     reply = Reply({"error": f"no route {self.command} {self.path}"}, status=404)
+                if reply.drop > 0:
+                    reply.drop -= 1
+                    self.close_connection = True
+                    return
                 time.sleep(reply.delay_s)
                 data = reply.payload()
                 try:

@@ -24,7 +24,7 @@ from drivetwin.orchestrator.config import load_settings
 
 ECHO_PLUGIN = '''
 """A test plugin: answers with the last user message."""
-from drivetwin.orchestrator.backends import Backend, BackendInfo, BackendStatus, ChatResult
+from drivetwin.orchestrator.backends import Backend, BackendInfo, BackendStatus, Completion
 
 
 class EchoBackend(Backend):
@@ -35,10 +35,9 @@ class EchoBackend(Backend):
         super().__init__(model)
         self.loud = loud
 
-    def chat(self, messages, *, schema=None, temperature=0.0, seed=0, max_tokens=512,
-             timeout_s=None):
-        text = messages[-1]["content"]
-        return ChatResult(text.upper() if self.loud else text, 0, 0, 0.0, self.model, "echo")
+    def complete(self, request):
+        text = request.messages[-1]["content"]
+        return Completion(text.upper() if self.loud else text)
 
     def describe(self):
         return BackendInfo("echo", self.model)
