@@ -1064,6 +1064,59 @@ case(A, "indirect", "pedestrian_next_to_truck",
 case(R, "vague", "drop_the_last_two", "actually drop two of those",
      [call("remove_assets", category="traffic_cone", count=2)], [delta("traffic_cone", -2), keep("traffic_cone")],
      setup=[ADD_CONES_PLANNED])
+
+# ------------------------------------------------------------------ more compound requests (two at once)
+C2 = ("compound",)
+case(A, "indirect", "van_and_cones_behind",
+     "For the next run I need a stalled van in the eastbound lane 20 m ahead of the ego, with two cones just behind it.",
+     [call("add_asset", category="truck", location=at("ego", along_m=20)),
+      call("add_asset", category="traffic_cone", count=2, location=at("truck_1", "behind"))],
+     [delta("truck", 1), delta("traffic_cone", 2), {"kind": "in_lane", "category": "truck", "lane": "main_eastbound"},
+      {"kind": "relative", "category": "traffic_cone", "relation": "behind", "target": "truck_1", "max_distance": 12,
+       "require_all": True}, keep("truck", "traffic_cone")], tags=C2)
+case(A, "vague", "cones_lot_a_entr_sign", "cones x3 lot A entr + parking sign there",
+     [call("add_asset", category="traffic_cone", count=3, location=at("parking lot A entrance")),
+      call("add_asset", category="parking_sign", location=at("parking lot A entrance"))],
+     [delta("traffic_cone", 3), delta("parking_sign", 1),
+      near("parking lot A entrance", 10, category=["traffic_cone", "parking_sign"], require_all=True),
+      keep("traffic_cone", "parking_sign")], tags=C2)
+case(R, "indirect", "trees_out_benches_in",
+     "I'd like the quad to be a seating area: take the trees there away and put two benches by the fountain.",
+     [call("remove_assets", assets=["tree_2", "tree_3"]),
+      call("add_asset", category="bench", count=2, location=at("fountain"))],
+     [gone("tree_2"), delta("bench", 2), near("fountain", 10, category="bench", require_all=True),
+      keep("bench", assets=["tree_2", "tree_3"])], tags=C2)
+case(R, "erroneous", "remove_bin_and_bench", "remove bin and also bench both please",
+     [call("remove_assets", assets=["trash_bin_1", "bench_1"])],
+     [gone("trash_bin_1", "bench_1"), keep(assets=["trash_bin_1", "bench_1"])], tags=C2)
+case(M, "indirect", "suv_drives_car_turns",
+     "For the intersection test, send the SUV down Campus Drive southbound and turn passenger_car_1 to face west.",
+     [call("set_behaviour", asset="suv_1", behaviour={"kind": "drive_lane", "lane": "campus_southbound"}),
+      call("move_asset", asset="passenger_car_1", turn_deg=90)],
+     [{"kind": "behaviour", "asset": "suv_1", "behaviour": "drive_lane", "lane": "campus_southbound"},
+      moved("passenger_car_1", 0, 1, turn_min_deg=80, turn_max_deg=100),
+      keep(assets=["suv_1", "passenger_car_1"])], tags=C2)
+case(P, "erroneous", "ego_gate_bench_library", "ego put to main gate and bench to libary",
+     [call("place_asset", asset="ego", location=at("main gate")),
+      call("place_asset", asset="bench_1", location=at("Library entrance", "in_front_of"))],
+     [near("main gate", 8, asset="ego"), near("Library entrance", 8, asset="bench_1"),
+      keep(assets=["ego", "bench_1"])], tags=C2)
+case(G, "vague", "row_lot_b_and_cones_entr", "parked row of 4 in lot B, plus cones in a line at its entrance",
+     [call("arrange_assets", categories=["passenger_car"], shape="parking_row", count=4, location=at("parking lot B")),
+      call("arrange_assets", categories=["traffic_cone"], shape="line", count=4, location=at("parking lot B entrance"))],
+     [delta(["passenger_car", "suv"], 4), delta("traffic_cone", 3, 10),
+      near("parking lot B", 1, category=["passenger_car", "suv"], scope="added", require_all=True),
+      line("traffic_cone", 3), keep("passenger_car", "suv", "traffic_cone")], tags=C2)
+case(S, "indirect", "blocking_and_nearest_landmark",
+     "Before the run: is anything standing on the lanes, and which landmark is closest to it?",
+     [call("find_assets", on_lane=True), call("find_landmarks", nearest_to="cement_rubble_1")],
+     [*ANSWER, says("cement_rubble_1", "rubble"), says("parking lot B", "lot B")],
+     setup=[RUBBLE_ON_CAMPUS], tags=C2)
+case(L, "indirect", "dawn_snow_headlights",
+     "We're reproducing a winter commute: light snow at 06:15 with the headlights on.",
+     [call("set_weather", kind="snow", intensity=0.3), call("set_time_of_day", time="06:15"),
+      call("set_lighting", vehicle_lights="on")],
+     [env(weather=["snow"], intensity_max=0.5, time_from="06:10", time_to="06:20", vehicle_lights="on"), ENV], tags=C2)
 # (end of cases)
 
 
