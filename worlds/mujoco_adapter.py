@@ -47,6 +47,9 @@ DEFAULT_TIMESTEP = 0.005
 ARENA_BYTES_PER_SLOT = 64 * 1024
 ARENA_MIN_BYTES = 64 * 1024 * 1024
 
+# Up to this many changed assets, scene_diff finds them by scanning (a whole new scene, as a
+# resumed journal gives, would make that quadratic).
+_FEW_CHANGES = 64
 # Where a body's pose lives: the qpos of its free joint, its mocap slot, or its xpos.
 _FREE, _MOCAP, _WELDED = 0, 1, 2
 
@@ -106,10 +109,17 @@ def scene_diff(old: Scene, new: Scene) -> tuple[dict[str, AssetInstance], dict[s
     (or copied) appears in both."""
     before, after = old.all_assets(), new.all_assets()
     ids_before, ids_after = list(map(id, before)), list(map(id, after))
-    gone, came = set(ids_before).difference(ids_after), set(ids_after).difference(ids_before)
-    by_id = dict(zip(ids_before, before, strict=True))
-    by_id.update(zip(ids_after, after, strict=True))
-    return {by_id[k].id: by_id[k] for k in gone}, {by_id[k].id: by_id[k] for k in came}
+    set_before, set_after = set(ids_before), set(ids_after)
+    gone_ids, came_ids = set_before - set_after, set_after - set_before
+    if len(gone_ids) + len(came_ids) <= _FEW_CHANGES:
+        # Finding each one's place is a scan in C, cheaper than a dict of every asset.
+        gone = [before[ids_before.index(k)] for k in gone_ids]
+        came = [after[ids_after.index(k)] for k in came_ids]
+    else:
+        by_id = dict(zip(ids_before, before, strict=True))
+        by_id.update(zip(ids_after, after, strict=True))
+        gone, came = [by_id[k] for k in gone_ids], [by_id[k] for k in came_ids]
+    return {a.id: a for a in gone}, {a.id: a for a in came}
 
 
 def _arena_bytes(pool: BodyPool) -> int:
