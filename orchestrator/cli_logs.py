@@ -189,12 +189,11 @@ def logs_replay(ident: str, planner_name: str | None, backend: str | None, model
         raise click.ClickException(f"cannot rebuild the world of {session}: {exc}") from exc
     name = planner_name or str(turn.get("planner") or "rules")
     planner = settings_planner(command_settings(name, backend, model))
+    refusal: str | None = None
     try:
         calls = planner.plan(str(turn["prompt"]), PlanContext(scene=scene, registry=registry)).calls
     except PlanningError as exc:
         calls, refusal = [], str(exc)
-    else:
-        refusal = None
     logged = _logged_calls(turn)
     same = [c.model_dump(mode="json") for c in calls] == [c.model_dump(mode="json") for c in logged]
     click.echo(f"prompt: {turn['prompt']}")

@@ -128,7 +128,7 @@ class IsolatedTool(Tool[RemoteArgs]):
 
 def load_isolated_plugins(registry: ToolRegistry) -> PluginProcess:
     """Start the plugin process and register a stand-in for each Worker it loaded."""
-    from drivetwin.tools.registry import PluginProblem
+    from drivetwin.tools.plugins import PluginProblem
 
     process = PluginProcess()
     try:

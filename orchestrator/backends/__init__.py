@@ -9,6 +9,8 @@ A backend (built in or a plugin) subclasses Backend and implements `complete` (o
 one raw answer), `describe` and `statuses`; Backend.chat does the rest.
 """
 
+from drivetwin.tools.plugins import PluginProblem
+
 from .base import (
     DEFAULT_MAX_TOKENS,
     DEFAULT_TIMEOUT_S,
@@ -31,7 +33,6 @@ from .errors import (
     UnknownModel,
 )
 from .registry import (
-    PluginProblem,
     backend_names,
     backends_table,
     list_backends,
