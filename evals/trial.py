@@ -37,7 +37,7 @@ class ScriptedPlanner:
         self.calls = calls
 
     def plan(self, prompt: str, context: PlanContext) -> Plan:
-        return Plan(calls=list(self.calls), planner=self.name)
+        return Plan(calls=list(self.calls), planner=self.name, verbatim=True)
 
 
 class ReferencePlanner:

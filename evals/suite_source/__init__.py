@@ -1,0 +1,1 @@
+"""The development suites as readable case lists; `build.py` writes evals/suites/full.jsonl and smoke.jsonl."""
