@@ -10,7 +10,6 @@ from __future__ import annotations
 import datetime as dt
 import platform
 import subprocess
-import sys
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -21,6 +20,7 @@ from typing import Any, TextIO
 from drivetwin.evals.case import GRADES, TASKS, Case, load_suite
 from drivetwin.evals.executors import EXECUTORS, Job, PlannerLoadError, preflight, run_local
 from drivetwin.evals.records import RecordWriter, RunHeader, TrialRecord
+from drivetwin.worlds.progress import progress_bar
 
 
 @dataclass(frozen=True)
@@ -72,41 +72,6 @@ def _version() -> str | None:
         return version("drivetwin")
     except PackageNotFoundError:
         return None
-
-
-class _Progress:
-    """A tqdm bar when tqdm is installed, else a plain counter on stderr."""
-
-    def __init__(self, total: int, initial: int, enabled: bool, stream: TextIO) -> None:
-        self.total, self.count, self.enabled, self.stream = total, initial, enabled, stream
-        self.passed = 0
-        self._bar: Any = None
-        if enabled:
-            try:
-                from tqdm import tqdm
-
-                self._bar = tqdm(total=total, initial=initial, unit="trial", file=stream, dynamic_ncols=True)
-            except ImportError:
-                self._bar = None
-
-    def update(self, record: TrialRecord) -> None:
-        self.count += 1
-        self.passed += record.outcome == "pass"
-        if not self.enabled:
-            return
-        if self._bar is not None:
-            self._bar.set_postfix_str(f"pass {self.passed}", refresh=False)
-            self._bar.update(1)
-        else:
-            print(
-                f"[{self.count}/{self.total}] {record.case_id}#{record.trial} {record.outcome}",
-                file=self.stream,
-                flush=True,
-            )
-
-    def close(self) -> None:
-        if self._bar is not None:
-            self._bar.close()
 
 
 def select_cases(cases: Sequence[Case], only: Sequence[str]) -> list[Case]:
@@ -185,30 +150,30 @@ def run_suite(
         if (case.id, trial) not in writer.done
     ]
     total = len(cases) * trials
-    bar = _Progress(total, total - len(jobs), progress, stream or sys.stderr)
     counts = {"pass": 0, "fail": 0, "error": 0}
-    ran = 0
-
-    def keep(record: TrialRecord) -> None:
-        nonlocal ran
-        writer.append(record)
-        ran += 1
-        bar.update(record)
-
+    ran = passed = 0
     started = time.perf_counter()
     interrupted = False
-    try:
-        if executor == "ray":
-            from drivetwin.evals.ray_executor import run_ray
+    with progress_bar("eval", total, "trials", initial=total - len(jobs), enabled=progress, stream=stream) as bar:
 
-            run_ray(jobs, planner_name, options, workers, keep)
-        else:
-            run_local(jobs, planner_name, options, workers, keep)
-    except KeyboardInterrupt:
-        interrupted = True
-    finally:
-        bar.close()
-        writer.close()
+        def keep(record: TrialRecord) -> None:
+            nonlocal ran, passed
+            writer.append(record)
+            ran += 1
+            passed += record.outcome == "pass"
+            bar.advance(note=f"pass {passed}")
+
+        try:
+            if executor == "ray":
+                from drivetwin.evals.ray_executor import run_ray
+
+                run_ray(jobs, planner_name, options, workers, keep)
+            else:
+                run_local(jobs, planner_name, options, workers, keep)
+        except KeyboardInterrupt:
+            interrupted = True
+        finally:
+            writer.close()
     from drivetwin.evals.records import read_run
 
     for record in read_run(out_path).records:

@@ -15,9 +15,7 @@ from __future__ import annotations
 
 import json
 import os
-import sys
 import tempfile
-from collections.abc import Iterable, Iterator
 from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any
@@ -26,6 +24,7 @@ import numpy as np
 from drivetwin.worlds.enhance.online import SupportsEnhance
 from drivetwin.worlds.enhance.pipeline import FrameEnhancer
 from drivetwin.worlds.enhance.settings import EnhanceInputError, EnhanceSettings
+from drivetwin.worlds.progress import progress_bar
 from drivetwin.worlds.scene import Environment, Scene
 from numpy.typing import NDArray
 from PIL import Image
@@ -123,22 +122,6 @@ def _environment(src: Path, env: Environment | None) -> Environment | None:
     return Scene.load(src / SCENE_FILE).environment
 
 
-def _progress(items: list[Path], enabled: bool) -> Iterable[Path]:
-    if not enabled:
-        return items
-    try:
-        from tqdm import tqdm
-    except ImportError:
-        return _plain_progress(items)
-    return tqdm(items, desc="enhance", unit="frame")  # type: ignore[no-any-return]
-
-
-def _plain_progress(items: list[Path]) -> Iterator[Path]:
-    for i, item in enumerate(items, 1):
-        print(f"enhance: {i}/{len(items)} {item.name}", file=sys.stderr, flush=True)
-        yield item
-
-
 def _mean(records: list[dict[str, Any]], key: str) -> float | None:
     values = [float(r[key]) for r in records if r.get(key) is not None]
     return float(np.mean(values)) if values else None
@@ -184,8 +167,9 @@ def enhance_folder(
     done_now = 0
     if todo:
         worker = enhancer if enhancer is not None else FrameEnhancer(settings)
-        with records_path.open("a", encoding="utf-8") as log:
-            for file in _progress(todo, progress):
+        with records_path.open("a", encoding="utf-8") as log, \
+                progress_bar("enhance", len(todo), "frames", enabled=progress) as bar:
+            for file in todo:
                 frame, depth = _load_frame(file)
                 result = worker.enhance(frame, depth, _frame_environment(file, environment, env))
                 target = out / f"{file.stem}.png"
@@ -207,6 +191,7 @@ def enhance_folder(
                 log.flush()
                 records[file.stem] = record
                 done_now += 1
+                bar.advance(note=file.name)
     names = {f.stem for f in files}
     finished = [r for name, r in records.items() if name in names]
     rejected = sum(1 for r in finished if not r["accepted"])

@@ -17,6 +17,7 @@ from pathlib import Path
 from typing import Any, cast
 
 import click
+from drivetwin.worlds.progress import progress_bar
 
 # Commands import the reconstruction modules when run, so `drivetwin --help` stays fast.
 
@@ -99,9 +100,10 @@ def mesh_command(scans: tuple[Path, ...], out_dir: Path, kind: str, reference: P
 
     try:
         geometry_kind: GeometryKind = cast("GeometryKind", kind)  # click.Choice checked it
-        result = reconstruct_mesh(
-            list(scans), out_dir, kind=geometry_kind, triangle_budget=budget, voxel_m=voxel, reference=reference
-        )
+        with progress_bar(f"mesh from {len(scans)} scan(s)", None):  # a spinner and the time it has taken
+            result = reconstruct_mesh(
+                list(scans), out_dir, kind=geometry_kind, triangle_budget=budget, voxel_m=voxel, reference=reference
+            )
     except (PointCloudError, ValueError, OSError) as exc:
         raise click.ClickException(str(exc)) from exc
     click.echo(f"mesh: {len(result.mesh.faces)} triangles, {len(result.hulls)} convex parts")
@@ -143,8 +145,10 @@ def splats_command(images_dir: Path, out_dir: Path, colmap_dir: Path | None, pos
         else:
             click.echo(f"no poses given: running structure from motion on {images_dir}")
             images = run_sfm(images_dir, out_dir / "sfm")
-        result = reconstruct_splats(images, out_dir, iterations=iterations or FitConfig().iterations,
-                                    lpips_weights=lpips_weights)  # fmt: skip
+        total = iterations or FitConfig().iterations
+        with progress_bar("fitting splats", total, "iterations") as bar:
+            result = reconstruct_splats(images, out_dir, iterations=total, lpips_weights=lpips_weights,
+                                        progress=lambda step: bar.advance(note=f"loss {step.loss:.4f}, {step.splats} splats"))  # fmt: skip
     except (ValueError, OSError) as exc:
         raise click.ClickException(str(exc)) from exc
     lpips = f", LPIPS {result.lpips:.3f}" if result.lpips is not None else ""
