@@ -6,6 +6,7 @@ replaying a journal of edits rebuilds a Scene exactly.
 
 from __future__ import annotations
 
+import bisect
 from typing import Annotated, Literal
 
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Environment, Scene, asset_order
@@ -137,9 +138,17 @@ class WorldEdit(BaseModel):
                 if environment != op.before:
                     raise EditConflict("the environment is not as this edit expects")
                 environment = op.after
+        # The scene's assets are already in canonical order: keep it for the ones that stay and
+        # insert the added ones in place (a full sort of thousands of assets per edit was most of
+        # an edit's time in a 5,000-asset world).
+        ordered = [assets[a.id] for a in scene.assets if a.id in assets]
+        present = {a.id for a in scene.assets}
+        for asset_id, asset in assets.items():
+            if asset_id not in present:
+                bisect.insort(ordered, asset, key=asset_order)
         return scene.model_copy(
             update={
-                "assets": sorted(assets.values(), key=asset_order),
+                "assets": ordered,
                 "ego": ego,
                 "environment": environment,
                 "storyboard": storyboard,
