@@ -15,7 +15,7 @@ from typing import Literal
 
 from drivetwin.tools.along import Side, TrackPoint, along_point, free_pose_on_track
 from drivetwin.tools.errors import NotFoundError, RuleViolation
-from drivetwin.tools.rules import check_placement, footprints_overlap
+from drivetwin.tools.rules import assets_near, check_placement, footprints_overlap
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.scene import AssetInstance, Finite, Pose, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, surface_at
@@ -313,7 +313,7 @@ def find_free_pose(
         steps = max(steps, int(span / SEARCH_STEP_M) + 1)
     # Only what stands within reach of the searched disc can overlap a candidate.
     reach = steps * SEARCH_STEP_M + category(template.category).footprint_radius * template.scale
-    others = _within(others, anchor.x, anchor.y, reach)
+    others = assets_near(others, anchor.x, anchor.y, reach)  # through the grid index
     keep_clear = _within(keep_clear or [], anchor.x, anchor.y, reach)
     for i in range(steps):
         for dx, dy in _ring(i * SEARCH_STEP_M):
