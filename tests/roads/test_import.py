@@ -89,3 +89,14 @@ def test_importing_over_an_existing_world_needs_replace(user_data, maps):
     with pytest.raises(MapImportError, match="--replace"):
         import_map(maps["crossroads"], "x")
     assert import_map(maps["crossroads"], "x", replace=True).lanes == 20
+
+
+def test_a_road_landmark_is_an_area_covering_all_its_blocks(town):
+    from drivetwin.worlds.surface import point_in_polygon
+
+    main = town.landmark("Main Street")
+    assert main.kind == "area"
+    lanes = [lane for lane in town.roads.lanes if lane.road == "Main Street"]
+    assert len(lanes) == 6  # three blocks between junctions, both ways
+    assert all(point_in_polygon(x, y, main.polygon) for lane in lanes for x, y in lane.centreline[1:-1])
+    assert not point_in_polygon(*town.landmark("Town Hall").position, main.polygon)

@@ -8,8 +8,15 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 from drivetwin.worlds.opendrive.reader import RoadMap
 from drivetwin.worlds.scene import Building, Landmark, RoadNetwork
+from shapely import LineString, Polygon
+
+# Gaps between a road's blocks (junctions) up to this wide are closed in its area, metres.
+JUNCTION_GAP_M = 30.0
+# A road area's outline is simplified to within this, metres.
+AREA_TOLERANCE_M = 0.2
 
 __all__ = ["MapPlace", "place_landmarks"]
 
@@ -91,12 +98,24 @@ def _junctions(road_map: RoadMap, roads: RoadNetwork, taken: set[str]) -> list[L
     return marks
 
 
+def _road_area(lines: Sequence[np.ndarray], width: float) -> list[tuple[float, float]]:
+    """The ground a road's lanes cover, its blocks joined across the junctions between them
+    (so "the car on Main Street" is on it anywhere along it)."""
+    strips = shapely.union_all([LineString(line).buffer(width / 2 + JUNCTION_GAP_M / 2) for line in lines])
+    area = strips.buffer(-JUNCTION_GAP_M / 2).simplify(AREA_TOLERANCE_M)
+    if not isinstance(area, Polygon):  # blocks too far apart to join: the longest names the road
+        area = max(getattr(area, "geoms", [area]), key=lambda part: part.area)
+    return [(round(float(x), 3), round(float(y), 3)) for x, y in list(area.exterior.coords)[:-1]]
+
+
 def _roads(roads: RoadNetwork, taken: set[str]) -> list[Landmark]:
     """The road itself (at its middle) and its two ends, named by compass direction."""
     by_name: dict[str, list[np.ndarray]] = {}
+    widths: dict[str, float] = {}
     for lane in roads.lanes:
         if lane.kind == "driving" and not lane.road.startswith("junction ") and lane.road != "road":
             by_name.setdefault(lane.road, []).append(np.asarray(lane.centreline))
+            widths[lane.road] = max(widths.get(lane.road, 0.0), lane.width)
     marks = []
     for name, lines in sorted(by_name.items()):
         points = np.vstack(lines)
@@ -106,8 +125,9 @@ def _roads(roads: RoadNetwork, taken: set[str]) -> list[Landmark]:
         axis = 0 if span[0] >= span[1] else 1
         low, high = points[int(np.argmin(points[:, axis]))], points[int(np.argmax(points[:, axis]))]
         heading = math.atan2(*(high - low)[::-1])
-        marks.append(Landmark(name=_unique(name, taken), position=(float(middle[0]), float(middle[1])),
-                              heading=heading, description="a road of the source map"))
+        marks.append(Landmark(name=_unique(name, taken), kind="area", polygon=_road_area(lines, widths[name]),
+                              position=(float(middle[0]), float(middle[1])), heading=heading,
+                              description="a road of the source map"))
         for end, point in zip(("west", "east") if axis == 0 else ("south", "north"), (low, high), strict=True):
             end_name = _unique(f"{end} end of {name}", taken)
             marks.append(Landmark(name=end_name, aliases=[f"the {end_name}", f"{name} {end} end"],
