@@ -187,15 +187,28 @@ def test_the_controlnet_enhancer_reads_depth_from_the_folder(
     assert report.frames_done == 1
 
 
-def test_progress_is_shown_on_stderr(
+def test_progress_is_shown_on_a_terminal_and_not_in_a_pipe(
     tmp_path: Path,
     settings: EnhanceSettings,
     enhancer: FrameEnhancer,
     capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    write_frames(tmp_path / "src", 1)
+    import io
+    import sys
+
+    class Terminal(io.StringIO):
+        def isatty(self) -> bool:
+            return True
+
+    monkeypatch.delenv("CI", raising=False)
+    write_frames(tmp_path / "src", 2)
+    enhance_folder(tmp_path / "src", tmp_path / "piped", settings, progress=True, enhancer=enhancer)
+    assert capsys.readouterr().err == ""  # stderr is captured here: a pipe gets no bar
+    screen = Terminal()
+    monkeypatch.setattr(sys, "stderr", screen)
     enhance_folder(tmp_path / "src", tmp_path / "out", settings, progress=True, enhancer=enhancer)
-    assert "enhance" in capsys.readouterr().err
+    assert "enhance" in screen.getvalue() and "2/2" in screen.getvalue()
 
 
 def test_folder_mistakes_are_refused_with_the_reason(tmp_path: Path) -> None:
