@@ -173,14 +173,16 @@ class Session:
             return self._failed(text, verdict.message or "; ".join(verdict.problems), started, plan)
         if verdict.question is not None:
             return self._ask(text, plan, verdict.question, started)
-        return self._run(text, plan, started)
+        return self._run(text, plan, started, verdict.outcome)
 
-    def _run(self, text: str, plan: Plan, started: float) -> TurnReport:
-        """Apply a plan's calls as one transaction (or answer, when they change nothing)."""
-        try:
-            outcome = execute(self.registry, self._scene, plan.calls)
-        except TransactionError as exc:
-            return self._failed(text, str(exc), started, plan)
+    def _run(self, text: str, plan: Plan, started: float, outcome: Outcome | None = None) -> TurnReport:
+        """Apply a plan's calls as one transaction (or answer, when they change nothing).
+        `outcome`: the review's dry run of these calls on the current scene, committed as it is."""
+        if outcome is None or outcome.before is not self._scene:  # reviewed on a scene since changed
+            try:
+                outcome = execute(self.registry, self._scene, plan.calls)
+            except TransactionError as exc:
+                return self._failed(text, str(exc), started, plan)
         results = [r.text for r in outcome.results]
         if outcome.edit.empty:
             self._remember(text, plan, outcome, "answered")

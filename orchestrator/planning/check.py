@@ -20,12 +20,20 @@ from functools import cache
 from typing import Any, Literal
 
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
+from drivetwin.orchestrator.planning.coverage import (
+    Scope,
+    definite_but_added,
+    environment_left_out,
+    missing_categories,
+    partial_removal,
+    unknown_places,
+)
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
 from drivetwin.orchestrator.planning.rules.reading import find_lane, find_place
 from drivetwin.orchestrator.planning.rules.spelling import repair
-from drivetwin.orchestrator.transaction import TransactionError, execute
+from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
@@ -53,6 +61,13 @@ _REMOVE = re.compile(
 )
 _ADD = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
+# Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
+# the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
+_INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|"
+                   r"know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
+# Number words that state an amount; vague ones ("a few", "some", "a couple") are not checked.
+_AMOUNTS = {w: n for w, n in ph.NUMBER_WORDS.items() if w not in ("a", "an", "one", "single", "pair", "couple",
+                                                                   "few", "some", "several")}
 _POLITE = re.compile(r"^(can|could|would|will) (you|we|i)\b|^please\b")
 _PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
 # Command verbs and fillers dropped before grounding a description on its nouns.
@@ -73,6 +88,9 @@ class Verdict:
     problems: list[str] = field(default_factory=list)
     question: Question | None = None
     message: str | None = None
+    # The dry run of the plan's own calls on the scene it was reviewed against: the session
+    # commits it as it is instead of running the same transaction a second time.
+    outcome: Outcome | None = None
 
 
 @dataclass(frozen=True)
@@ -88,6 +106,8 @@ class Request:
     lane: str | None
     state: Literal["parked", "moving"] | None
     about_places: bool = False
+    low: str = ""
+    masked: str = ""
 
 
 @dataclass(frozen=True)
@@ -99,6 +119,7 @@ class Effect:
     removed: tuple[AssetInstance, ...]
     changed: tuple[AssetInstance, ...]
     environment: bool
+    outcome: Outcome | None = None
 
     @property
     def edits(self) -> bool:
@@ -114,17 +135,19 @@ def read_request(prompt: str, scene: Scene) -> Request:
         masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
     lane = find_lane(scene, masked)
     polite = bool(_POLITE.match(low))
-    question = not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?"))
+    question = bool(_INFO.search(low)) or (not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))
     polarity: Literal["add", "remove"] | None = (
         "remove" if _REMOVE.search(low) else "add" if _ADD.search(low) else None
     )
     categories = frozenset(m.category for m in ph.find_categories(masked) if not _DESCRIBING.search(masked[: m.start]))
     numbers = tuple(n.value for n in numbers_in(_without_times(masked)) if not _is_reference(masked, n.start))
+    numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+", _without_times(masked))
+                     if w.group(0) in _AMOUNTS and not _is_reference(masked, w.start()))
     state: Literal["parked", "moving"] | None = (
         "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) else None
     )
     return Request(prompt, question, polarity, categories, numbers, place[0] if place else None,
-                   lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)))
+                   lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)), low, masked)
 
 
 def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
@@ -140,7 +163,8 @@ def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
 
 def _without_times(text: str) -> str:
     # A clock time is checked by what the time tool sets, not number by number.
-    return re.sub(r"\d{1,2}:\d\d|\d{1,2}\s*(am|pm|o'clock)\b", " ", text)
+    return re.sub(r"\d{1,2}:\d\d|\d{1,2}\s*(am|pm|o'clock)\b|\b(half|quarter) (past|to) [a-z0-9]+",
+                  lambda m: " " * len(m.group(0)), text)
 
 
 def _is_reference(text: str, start: int) -> bool:
@@ -162,6 +186,7 @@ def dry_run(plan_calls: list[ToolCall], context: PlanContext) -> Effect | None:
         removed=tuple(op.before for op in ops if op.op == "remove"),
         changed=tuple(op.after for op in ops if op.op == "update"),
         environment=any(op.op in ("environment", "storyboard") for op in ops),
+        outcome=outcome,
     )
 
 
@@ -178,7 +203,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked to take something away, but the plan adds " + _names(effect.added))
     if request.polarity == "add" and effect.removed and not effect.added:
         out.append("you asked for more, but the plan removes " + _names(effect.removed))
-    touched = [*effect.added, *effect.removed]
+    touched = [*effect.added, *effect.removed, *(a for a in effect.changed if a.id != "ego")]
     if request.categories and touched:
         strays = {a.category for a in touched} - request.categories - _companions(effect)
         if strays:
@@ -194,18 +219,35 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
             out.append(f"your words describe a {meant.replace('_', ' ')}, but the plan uses "
                        + ", ".join(sorted(plan_categories)))
     missing = [n for n in request.numbers if not _accounts_for(n, effect)]
-    if missing and effect.edits:
+    if missing and effect.calls:
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
     if request.place is not None and effect.edits and not effect.environment:
         far = [a for a in [*effect.added, *effect.removed, *effect.changed] if a.id != "ego"
                and not _near(scene, a, request.place) and not _names_target(effect, request.place)]
         if far:
             out.append(f"you named {request.place}, but the plan acts on {_names(far)} away from it")
+    out += _coverage(request, effect, scene)
     if request.state is not None and (effect.removed or effect.changed):
         wrong = [a for a in [*effect.removed, *effect.changed] if a.id != "ego"
                  and (a.behaviour.kind == "parked") != (request.state == "parked") and a.category in request.categories]
         if wrong:
             out.append(f"you said {request.state} ones, but the plan also takes {_names(wrong)}")
+    return out
+
+
+def _coverage(request: Request, effect: Effect, scene: Scene) -> list[str]:
+    """What the plan leaves out of the request (see coverage.py): named things, existing ones
+    added anew, weather and times, all of a plural, places the world does not know."""
+    scope = Scope(effect.calls, (*effect.added, *effect.removed, *effect.changed), effect.removed, effect.added)
+    out = [f"you named {c.replace('_', ' ')}, but the plan does nothing with it"
+           for c in missing_categories(request.categories, scope, scene)]
+    out += [f"you referred to the {c.replace('_', ' ')} already there, but the plan adds another"
+            for c in definite_but_added(request.masked, scope, scene)]
+    if not request.question:
+        out += environment_left_out(request.low, effect.calls)
+    limited = bool(request.numbers or request.place or request.lane or request.state)
+    out += partial_removal(request.masked, scope, scene, limited)
+    out += [f"there is no {w!r} in this world" for w in unknown_places(request.masked, effect.calls, scene)]
     return out
 
 
@@ -324,7 +366,7 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
     request = read_request(prompt, context.scene)
     found = problems_of(request, effect, context)
     if not found:
-        return Verdict("apply")
+        return Verdict("apply", outcome=effect.outcome)
     fitting: list[Reading] = []
     for reading in [*repairs(request, effect, context), *plan.alternatives]:
         other = dry_run(reading.calls, context)
