@@ -54,7 +54,7 @@ class _Replay:
         self.calls: list[ToolCall] = []
 
     def plan(self, prompt: str, context: PlanContext) -> Plan:
-        return Plan(calls=self.calls, planner=self.name)
+        return Plan(calls=self.calls, planner=self.name, verbatim=True)
 
 
 def crowded_campus(n: int) -> Scene:
