@@ -31,7 +31,7 @@ MAX_UPDATE_HZ = 120.0
 LIDAR_PERIOD_S = 0.5  # a 16-channel scan of 5,760 rays every half second is plenty to look at
 # Behind and above the ego for the follow camera, metres: a chase view like the rendered frames.
 FOLLOW_BACK_M, FOLLOW_UP_M = 14.0, 6.0
-OVERVIEW_HEIGHT_SHARE = 0.6  # the first view looks down from 0.6 x the world's size
+OVERVIEW_HEIGHT_SHARE = 0.6  # the first view looks down from 0.6 x the world's size: all of it in view
 DEPTH_SHOWN_MAX_M = 80.0  # the depth image fades to black at this distance
 
 
