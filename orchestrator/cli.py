@@ -66,6 +66,8 @@ def chat(world: str, planner_name: str | None, backend: str | None, model: str |
 
     Example: drivetwin chat --world campus --script demo.txt --fail-fast
     """
+    if render_each and no_sim:
+        raise click.UsageError("--render-each draws the simulated world: drop --no-sim")
     settings = _settings(planner_name, backend, model)
     open_request_log(settings.state_dir, command="chat", world=world)  # drivetwin logs reads it
     opened = open_live_session(world, settings, journal=journal, resume=resume,

@@ -47,3 +47,13 @@ def test_enhance_without_weights_fails_in_the_common_error_style(tmp_path: Path)
     result = CliRunner().invoke(main, ["enhance", str(frames), "--model", str(tmp_path / "no-model")])
     assert result.exit_code == 1
     assert result.output.startswith("Error: ") and "Traceback" not in result.output
+
+
+def test_render_each_without_the_simulation_is_a_usage_error(tmp_path: Path) -> None:
+    script = tmp_path / "s.txt"
+    script.write_text("make it rain\n")
+    result = CliRunner().invoke(main, ["chat", "--planner", "rules", "--no-sim", "--render-each", "--out",
+                                       str(tmp_path / "out"), "--script", str(script)],
+                                env={"DRIVETWIN_STATE": str(tmp_path / "state")})
+    assert result.exit_code == 2
+    assert "drop --no-sim" in result.output and "Traceback" not in result.output
