@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 import os
 import re
-import shutil
 import signal
 import socket
 import subprocess
@@ -165,8 +164,6 @@ def test_a_request_typed_in_the_browser_changes_the_world_and_undo_restores_it(
     undone = _screenshot(browser, tmp_path / "undone.png")[:, :-PANEL_WIDTH_PX]
     assert undone.reshape(-1, 3).var(axis=0).sum() > MIN_VIEW_VARIANCE
     assert len(_save_scene(browser, served, "undone.json")["assets"]) == start  # type: ignore[arg-type]
-    if os.environ.get("DRIVETWIN_SERVE_SCREENSHOT"):  # how docs/serve.png is made
-        shutil.copy(tmp_path / "changed.png", os.environ["DRIVETWIN_SERVE_SCREENSHOT"])
 
 
 def test_a_second_tab_watches_the_same_session(served: Served, browser: WebDriver) -> None:
