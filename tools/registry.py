@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Iterable
+from dataclasses import replace
 from typing import Any, cast
 
 from drivetwin.tools.add import AddAssetTool
@@ -25,7 +26,7 @@ from drivetwin.tools.plugin_box import CALL_DEADLINE_S, IMPORT_DEADLINE_S, propo
 from drivetwin.tools.plugins import TOOLS_GROUP, PluginProblem, fix_for, load_group
 from drivetwin.tools.position import PlaceAsset
 from drivetwin.tools.remove import RemoveAssets
-from drivetwin.tools.rules import check_edit
+from drivetwin.tools.rules import check_edit, settle_on_roads
 from drivetwin.tools.scenario import AddEvent, AddManoeuvre, SetLightPhases
 from drivetwin.tools.search import AssetProperties, FindAssets, FindLandmarks, FindLanes
 from drivetwin.worlds.catalog import UnknownCategoryError
@@ -146,6 +147,7 @@ class ToolRegistry:
                 who = f"{source} ({call.tool})"
                 args = run_boxed(lambda: Tool.parse(tool, call.args), who, CALL_DEADLINE_S)
                 result = propose_boxed(tool, args, scene, who, CALL_DEADLINE_S)
+            result = replace(result, edit=settle_on_roads(scene, result.edit))
             check_edit(scene, result.edit)  # the world rules, applied by the host to every proposal
             return result
         except ToolError:

@@ -22,7 +22,7 @@ from drivetwin.tools.footprints import (
 from drivetwin.worlds.catalog import Category, category
 from drivetwin.worlds.edits import AddAsset, EditConflict, RemoveAsset, UpdateAsset, WorldEdit
 from drivetwin.worlds.scene import EGO_ID, MAX_ASSETS, AssetInstance, Scene
-from drivetwin.worlds.surface import DRIVABLE, building_at, surface_at
+from drivetwin.worlds.surface import DRIVABLE, building_at, road_height, surface_at
 
 __all__ = [
     "NON_COLLIDING_MOTION",
@@ -49,6 +49,24 @@ def assets_near(assets: Sequence[AssetInstance], x: float, y: float, reach: floa
     """The assets whose footprints come within `reach` metres of (x, y), in the order given,
     found through the grid index (what a free-spot search must check around its disc)."""
     return near(assets, x, y, reach)
+
+
+def settle_on_roads(scene: Scene, edit: WorldEdit) -> WorldEdit:
+    """The edit with every asset it adds or moves onto a raised road standing on that road's
+    surface (z from the lane's elevation). Workers place in the plane; an imported map's lanes
+    may climb, and a car at z = 0 there would sit inside the road. Flat worlds are unchanged."""
+    if not any(lane.elevation for lane in scene.roads.lanes):
+        return edit
+    ops = []
+    for op in edit.ops:
+        asset = op.asset if isinstance(op, AddAsset) else op.after if isinstance(op, UpdateAsset) else None
+        height = road_height(scene, asset.pose.x, asset.pose.y) if asset is not None else 0.0
+        if asset is None or height == 0.0 or asset.pose.z == height:
+            ops.append(op)
+            continue
+        settled = asset.model_copy(update={"pose": asset.pose.model_copy(update={"z": height})})
+        ops.append(op.model_copy(update={"asset": settled} if isinstance(op, AddAsset) else {"after": settled}))
+    return edit.model_copy(update={"ops": ops})
 
 
 def _placed(edit: WorldEdit) -> list[AssetInstance]:

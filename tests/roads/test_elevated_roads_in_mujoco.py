@@ -70,3 +70,15 @@ def test_a_crest_on_a_straight_road_keeps_its_height(tmp_path):
     lane = scene_from_file(tmp_path / "crest.xodr").roads.lanes[0]
     assert lane.elevation is not None
     assert max(lane.elevation) == pytest.approx(2.5, abs=0.02)  # a straight line in plan, not in height
+
+
+def test_a_worker_adds_a_car_onto_the_raised_road_at_its_height(slope, registry):
+    from drivetwin.tools.base import ToolCall
+
+    lane = next(ln for ln in slope.roads.lanes if ln.elevation and ln.id.endswith("right1_s1"))
+    x, y, _ = point_along(lane.centreline, 30.0)
+    where = {"relation": "absolute", "x": x, "y": y}
+    result = registry.run(ToolCall(tool="add_asset", args={"category": "passenger_car", "location": where}), slope)
+    added = result.edit.ops[0].asset
+    assert added.pose.z == pytest.approx(road_height(slope, added.pose.x, added.pose.y), abs=1e-9)
+    assert added.pose.z > 1.0
