@@ -20,8 +20,8 @@ from drivetwin.orchestrator.planning.retrieval import (
     user_bank,
     world_bank,
 )
-from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.planning.retrieval.bank import bank_path, generate, world_key
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.transaction import first_refusal
 from drivetwin.tools import ToolRegistry
 from drivetwin.tools.base import ToolCall
@@ -152,8 +152,9 @@ def test_learning_from_a_session_reads_the_calls_back_from_memory(
     assert user_bank(world)[0].calls == [call]
 
 
-def test_a_session_of_a_planner_that_reads_no_bank_teaches_nothing(world: Scene, tmp_path: Path,
-                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+def test_a_session_of_a_planner_that_reads_no_bank_teaches_nothing(
+    world: Scene, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     monkeypatch.setenv("DRIVETWIN_CACHE", str(tmp_path))
     memory = Memory()
     memory.record(Turn(prompt="pea soup outside", status="applied", calls=["set_weather(kind='fog')"]))

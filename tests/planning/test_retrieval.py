@@ -7,8 +7,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 from drivetwin.orchestrator.planning import PlanContext, PlanningError, make_planner
+from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.llm.demos import jr_demos
+from drivetwin.orchestrator.planning.llm.sr_manager import SR_EXAMPLES, SrManager
 from drivetwin.orchestrator.planning.retrieval import BankIndex, RetrievalPlanner, bank_index, learn
 from drivetwin.orchestrator.planning.retrieval.slots import adapt, read_slots
+from drivetwin.prompts.templates import sr_examples
 from drivetwin.tools import ToolRegistry
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.defaults import load_world
@@ -110,3 +114,17 @@ def test_a_learned_request_is_retrieved_from_then_on(
 
 def test_retrieval_is_a_planner_by_name() -> None:
     assert make_planner("retrieval").name == "retrieval"
+
+
+def test_the_sr_manager_is_shown_bank_examples_near_the_request(context: PlanContext) -> None:
+    messages = SrManager(None, Grounder()).messages("could the weather turn snowy please", context)  # type: ignore[arg-type]
+    shown = [m["content"] for m in messages if m["role"] == "user"][:-1]
+    assert len(shown) == SR_EXAMPLES and all(text.startswith("Request: ") for text in shown)
+    assert any("snow" in m["content"] for m in messages if m["role"] == "assistant")
+    assert not set(shown) & {f"Request: {e.request}" for e in sr_examples()}
+
+
+def test_a_jr_manager_is_shown_one_call_examples_of_its_own_family(context: PlanContext) -> None:
+    demos = jr_demos("add", "drop a couple of benches near the fountain", context, 3)
+    assert len(demos) == 3 and all(d.call["tool"] == "add_asset" for d in demos)
+    assert all(d.requirement.startswith("add | what: ") for d in demos)

@@ -202,8 +202,8 @@ TIME_VERBS = (
     "let's see it at {t}",
 )
 SEARCH_WHERE = (
-    "where is {place}?",
-    "where's {place}",
+    "whereabouts is {place}?",
+    "point me to {place}",
     "find {place}",
     "show me {place}",
     "locate {place}",
@@ -358,7 +358,7 @@ def add_moving(w: Words) -> Draft:
     place = w.pick([p for p in w.landmarks if "cross" in p.lower()] or w.landmarks)
     form = w.pick(
         (
-            "add a {thing} crossing the road at {place}",
+            "add a {thing} who walks across the street at {place}",
             "a {thing} walking over {place}",
             "have a {thing} use {place} to cross",
             "put a {thing} crossing at {place}",

@@ -31,7 +31,7 @@ from drivetwin.worlds.scene import Scene
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 # Bump when the grammar's frames or words change: cached banks of an older version are rebuilt.
-GENERATOR_VERSION = "2"
+GENERATOR_VERSION = "4"
 BANK_FOLDER = "banks"
 # Tries per wanted draft before a frame gives up (a dry run refuses some draws).
 TRIES_PER_DRAFT = 3
@@ -158,15 +158,14 @@ def generate(scene: Scene, registry: ToolRegistry | None = None, scale: float = 
 
 def _stand_in(call: dict[str, Any]) -> dict[str, Any]:
     """The call whose dry run stands for `call`'s: a placement is refused or accepted for
-    where it goes and the kind of thing it is (where it may stand, how it moves), so one
-    category per kind and a single asset stand for the rest. (Dry runs of placements cost
-    tens of milliseconds each; a bank has thousands.)"""
+    where it goes, how many and the kind of thing it is (where it may stand, how it moves),
+    so one category per kind stands for the rest. (Dry runs of placements cost tens of
+    milliseconds each; a bank has thousands.)"""
     args = dict(call["args"])
     if call["tool"] in ("add_asset", "arrange_assets"):
         names = args.get("categories") or [args.get("category")]
         kind = [_KINDS.get(n, n) for n in names]
         args.pop("colour", None)
-        args["count"] = 1 if call["tool"] == "add_asset" else min(int(args.get("count") or 3), 3)
         if call["tool"] == "add_asset":
             args["category"] = kind[0]
         else:

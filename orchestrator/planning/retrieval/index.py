@@ -68,11 +68,35 @@ def _generated_vectors(path: Path, examples: list[Example]) -> Any:
                 return vectors
         except (OSError, ValueError):
             pass  # damaged or stale: embed again
-    vectors = _embed_all([e.request for e in examples])
+    known = _earlier_vectors(path)
+    missing = [e.request for e in examples if e.request not in known]
+    known.update(zip(missing, _embed_all(missing), strict=True))
+    vectors = np.stack([known[e.request] for e in examples]) if examples else _embed_all([])
     partial = vectors_path.with_suffix(".part.npy")
     np.save(partial, vectors)
     partial.replace(vectors_path)
     return vectors
+
+
+def _earlier_vectors(path: Path) -> dict[str, Any]:
+    """Embeddings of this world's earlier banks (other generator versions) by request text,
+    so a new version embeds only the requests it changed (MiniLM is the slow part)."""
+    world = path.stem.rsplit("-", 1)[0]
+    known: dict[str, Any] = {}
+    for other in path.parent.glob(f"{world}-*.jsonl"):
+        vectors_path = other.with_suffix(".npy")
+        if other == path or not vectors_path.exists():
+            continue
+        try:
+            texts = [
+                Example.model_validate_json(line).request for line in other.read_text(encoding="utf-8").splitlines()
+            ]
+            vectors = np.load(vectors_path)
+        except (OSError, ValueError):
+            continue
+        if len(texts) == len(vectors):
+            known.update(zip(texts, vectors, strict=True))
+    return known
 
 
 # Per process, by world key: the generated bank and its embeddings, and the user bank's.
