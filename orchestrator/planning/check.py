@@ -25,6 +25,7 @@ from drivetwin.orchestrator.planning.coverage import (
     definite_but_added,
     environment_left_out,
     missing_categories,
+    named_things,
     partial_removal,
     unknown_places,
 )
@@ -64,7 +65,7 @@ _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
 _INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|"
-                   r"know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
+                   r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
 # Number words that state an amount; vague ones ("a few", "some", "a couple") are not checked.
 _AMOUNTS = {w: n for w, n in ph.NUMBER_WORDS.items() if w not in ("a", "an", "one", "single", "pair", "couple",
                                                                    "few", "some", "several")}
@@ -75,7 +76,7 @@ _VERB = re.compile(r"\b(please|i'?d like|i want|we need|add|put|place|create|spa
                    r"there should be|could you|can you|a|an|the|some|one|two|three)\b")
 # A category word after these describes the thing asked for ("a vehicle that carries passengers",
 # "a bench for pedestrians") rather than naming it.
-_DESCRIBING = re.compile(r"\b(that|which|who|with|for|carrying|carries|full of)\b[^,.;]*$")
+_DESCRIBING = re.compile(r"[a-z]\s+(that|which|who|with|for|carrying|carries|full of)\b[^,.;]*$")
 _PARKED = re.compile(r"\bparked\b")
 _MOVING = re.compile(r"\b(driving|moving|travelling|traveling)\b")
 
@@ -140,8 +141,9 @@ def read_request(prompt: str, scene: Scene) -> Request:
         "remove" if _REMOVE.search(low) else "add" if _ADD.search(low) else None
     )
     categories = frozenset(m.category for m in ph.find_categories(masked) if not _DESCRIBING.search(masked[: m.start]))
-    numbers = tuple(n.value for n in numbers_in(_without_times(masked)) if not _is_reference(masked, n.start))
-    numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+", _without_times(masked))
+    exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_times(masked))  # "a tree or two"
+    numbers = tuple(n.value for n in numbers_in(exact) if not _is_reference(masked, n.start))
+    numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+", exact)
                      if w.group(0) in _AMOUNTS and not _is_reference(masked, w.start()))
     state: Literal["parked", "moving"] | None = (
         "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) else None
@@ -170,6 +172,8 @@ def _without_times(text: str) -> str:
 def _is_reference(text: str, start: int) -> bool:
     # "car 2", "lot 3", "the 2nd": a number that names something rather than an amount.
     before = text[:start].split()[-1:]
+    if re.match(r"[\d.,e+-]*\s*(m|metres?|meters?|km|kph|mph|degrees?|deg|seconds?|s)\b", text[start:]):
+        return False  # "the truck 8 m ahead": an amount with its unit
     return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in ("lot", "no"))
 
 
@@ -239,8 +243,12 @@ def _coverage(request: Request, effect: Effect, scene: Scene) -> list[str]:
     """What the plan leaves out of the request (see coverage.py): named things, existing ones
     added anew, weather and times, all of a plural, places the world does not know."""
     scope = Scope(effect.calls, (*effect.added, *effect.removed, *effect.changed), effect.removed, effect.added)
+    named = named_things(request.masked, request.categories, scene)
+    single = not re.search(r",|;| and | also ", request.low)
+    if request.question and single and any(c.tool in ("find_lanes", "find_landmarks") for c in effect.calls):
+        named = set()  # "which lane would a car use": the lanes are the topic, the car its setting
     out = [f"you named {c.replace('_', ' ')}, but the plan does nothing with it"
-           for c in missing_categories(request.categories, scope, scene)]
+           for c in missing_categories(named, scope, scene)]
     out += [f"you referred to the {c.replace('_', ' ')} already there, but the plan adds another"
             for c in definite_but_added(request.masked, scope, scene)]
     if not request.question:

@@ -33,9 +33,7 @@ _PLACE_PREPOSITION = re.compile(
 )
 # Words after "the" that are part of a relation, not a place ("on the right", "to the north").
 _RELATION_WORDS = frozenset(
-    "right left north south east west side middle centre center edge end corner way moment front back rear "
-    "top bottom same other first last next road street lane sidewalk pavement kerb curb ground scene world "
-    "campus area spot place crossing intersection junction road's".split()
+    ["right", "left", "north", "south", "east", "west", "side", "middle", "centre", "center", "edge", "end", "corner", "way", "moment", "front", "back", "rear", "top", "bottom", "same", "other", "first", "last", "next", "road", "street", "lane", "sidewalk", "pavement", "kerb", "curb", "ground", "scene", "world", "campus", "area", "spot", "place", "crossing", "intersection", "junction", "road's"]
 )
 # Weather kinds a request names directly (a goal such as "test the wipers" is read by the planner).
 _WEATHER_NAMES = ("rain", "snow", "fog", "cloud", "clear sky", "clear skies", "sunny", "sunshine")

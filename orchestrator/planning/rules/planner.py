@@ -19,7 +19,7 @@ from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningErro
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import behaviour_kind, behaviour_spec, edit_existing, recolour, remove
-from drivetwin.orchestrator.planning.rules.environment import environment
+from drivetwin.orchestrator.planning.rules.environment import environment, lights
 from drivetwin.orchestrator.planning.rules.places import Notes, location, said_a_place
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
 from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
@@ -95,6 +95,12 @@ _STRICT_ADD = (
     "we want",
     "there should be",
     "give me",
+)
+
+# A wish said in the negative ("I don't want the bench any more", "we no longer need cones",
+# "I'd rather not have a bus"): the thing should go, whatever the verb.
+_NEGATED_WISH = re.compile(
+    r"\b(?:don'?t|do not|does not|doesn'?t|no longer|rather not|never)\s+(?:\w+\s+)?(?:want|need|like|have|keep)\b"
 )
 
 
@@ -189,10 +195,16 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return None  # "before I add anything": a circumstance, not a request
     if _is_question(r, asked):
         return _search(r, scene, notes)
-    if r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or r.has(lx.FEWER_WORDS):
+    if r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or r.has(lx.FEWER_WORDS) or _NEGATED_WISH.search(r.low):
         removed = remove(r, scene, memory, notes)
         if removed is not None:
             return removed
+    switch = re.search(r"\b(turn|switch|put|flick)\b.*\b(on|off)\b", r.low)
+    if switch and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
+        if lights(r) is not None:
+            return environment(r)
+        if any(m.category == "street_light" for m in r.mentions):
+            return [ToolCall(tool="set_lighting", args={"street_lights": switch.group(2)})]
     if (not r.mentions and not r.ids and not r.ego) or r.has(("weather", "time of day")):
         env = environment(r)
         if env:
@@ -242,7 +254,10 @@ def _search(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall]:
         args: dict[str, Any] = {"category": r.mentions[0].category}
         if r.landmark:
             args["near"] = r.landmark
-            if r.has(("near", "around", "at", "by", "close to", "next to")):
+            within = re.search(r"\bwithin\s+(?:about\s+)?(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b", r.low)
+            if within:
+                args["within"] = float(within.group(1))
+            elif r.has(("near", "around", "at", "by", "close to", "next to")):
                 args["within"] = SEARCH_NEAR_M
         return [ToolCall(tool="find_assets", args=args)]
     if (

@@ -96,6 +96,12 @@ def english_words() -> frozenset[str]:
     return frozenset(w for w in words if w.isalpha() and w.islower())
 
 
+def _is_english(low: str) -> bool:
+    """An English word, also as written without its apostrophe ("dont", "isnt", "thats")."""
+    words = english_words()
+    return low in words or (low.endswith("nt") and low[:-2] in words) or (low.endswith("s") and low[:-1] in words)
+
+
 @dataclass
 class Repaired:
     """A prompt after spelling repair, and each repair made (as 'was -> now')."""
@@ -200,7 +206,7 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
     low = word.lower()
     if low in _SHORT_SLIPS:
         return _SHORT_SLIPS[low]
-    if len(low) < MIN_REPAIR_LEN or is_known(low, vocab) or low in english_words():
+    if len(low) < MIN_REPAIR_LEN or is_known(low, vocab) or _is_english(low):
         return None
     joined = _joined(vocab)
     for candidate in (low, low[:-1] if low.endswith("s") else low):
