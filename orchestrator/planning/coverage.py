@@ -24,8 +24,10 @@ from drivetwin.worlds.scene import AssetInstance, Scene
 # Words before a category that point at one already in the scene ("the SUV", "those cones").
 _DEFINITE = ("the", "that", "this", "those", "these", "our", "my", "all", "every", "each", "both")
 # Words that ask for a new one even after a definite article ("the new bench", "another").
-_NEW = re.compile(r"\b(add|adds|added|adding|new|another|more|extra|create|spawn|insert|second|additional|"
-                  r"copy|duplicate|row of|line of|ring of|grid of)\b")
+_NEW = re.compile(
+    r"\b(add|adds|added|adding|new|another|more|extra|create|spawn|insert|second|additional|"
+    r"copy|duplicate|row of|line of|ring of|grid of)\b"
+)
 # Prepositions after which a request names a place ("near the gym", "on the moon").
 _PLACE_PREPOSITION = re.compile(
     r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|"
@@ -33,7 +35,51 @@ _PLACE_PREPOSITION = re.compile(
 )
 # Words after "the" that are part of a relation, not a place ("on the right", "to the north").
 _RELATION_WORDS = frozenset(
-    ["right", "left", "north", "south", "east", "west", "side", "middle", "centre", "center", "edge", "end", "corner", "way", "moment", "front", "back", "rear", "top", "bottom", "same", "other", "first", "last", "next", "road", "street", "lane", "sidewalk", "pavement", "kerb", "curb", "ground", "scene", "world", "campus", "area", "spot", "place", "crossing", "intersection", "junction", "road's"]
+    [
+        "right",
+        "left",
+        "north",
+        "south",
+        "east",
+        "west",
+        "side",
+        "middle",
+        "centre",
+        "center",
+        "edge",
+        "end",
+        "corner",
+        "way",
+        "moment",
+        "front",
+        "back",
+        "rear",
+        "top",
+        "bottom",
+        "same",
+        "other",
+        "first",
+        "last",
+        "next",
+        "road",
+        "street",
+        "lane",
+        "sidewalk",
+        "pavement",
+        "kerb",
+        "curb",
+        "ground",
+        "scene",
+        "world",
+        "campus",
+        "area",
+        "spot",
+        "place",
+        "crossing",
+        "intersection",
+        "junction",
+        "road's",
+    ]
 )
 # Weather kinds a request names directly (a goal such as "test the wipers" is read by the planner).
 _WEATHER_NAMES = ("rain", "snow", "fog", "cloud", "clear sky", "clear skies", "sunny", "sunshine")
@@ -45,8 +91,9 @@ _DAY_PART = re.compile(r"(?<!this )\b(morning|afternoon|evening|night|midnight|n
 # a category named after them is circumstance, not something the plan must act on.
 _BACKGROUND = re.compile(r"\b(where|when|while|before|after|because|so that|so|since|until|unless)\b")
 # Category names that are also the planner's verbs ("stop the ego"): not a thing named.
-_VERB_NAMES = frozenset(w for table in (lx.STOP_WORDS, lx.MOVE_WORDS, lx.TURN_WORDS, lx.REMOVE_WORDS)
-                        for w in table if " " not in w)
+_VERB_NAMES = frozenset(
+    w for table in (lx.STOP_WORDS, lx.MOVE_WORDS, lx.TURN_WORDS, lx.REMOVE_WORDS) for w in table if " " not in w
+)
 
 
 @dataclass(frozen=True)
@@ -73,9 +120,10 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
     out = set()
     for i, m in enumerate(mentions):
         said = masked[m.start : m.end].strip()
-        rest = masked[m.start :].split()
-        near_place = any(len(p.split()) > len(said.split()) and edits(" ".join(rest[: len(p.split())]), p) <= 2
-                         for p in places)
+        rest = re.findall(r"[a-z0-9']+", masked[m.start :])
+        near_place = any(
+            len(p.split()) > len(said.split()) and edits(" ".join(rest[: len(p.split())]), p) <= 2 for p in places
+        )
         compound = i > 0 and not masked[mentions[i - 1].end : m.start].strip()
         if m.category not in wanted or _BACKGROUND.search(masked[: m.start]) or said in _VERB_NAMES:
             continue
@@ -173,5 +221,12 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     return list(dict.fromkeys(out))
 
 
-__all__ = ["Scope", "definite_but_added", "environment_left_out", "missing_categories", "named_things", "partial_removal",
-           "unknown_places"]
+__all__ = [
+    "Scope",
+    "definite_but_added",
+    "environment_left_out",
+    "missing_categories",
+    "named_things",
+    "partial_removal",
+    "unknown_places",
+]

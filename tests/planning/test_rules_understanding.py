@@ -12,7 +12,7 @@ def tools_of(context, prompt: str) -> list[tuple[str, dict[str, object]]]:
 
 
 def test_a_negated_wish_removes_instead_of_adding(context):
-    (tool, _args), = tools_of(context, "we really do not need that bench")
+    ((tool, _args),) = tools_of(context, "we really do not need that bench")
     assert tool == "remove_assets"
 
 
@@ -21,9 +21,14 @@ def test_switching_lamps_on_sets_the_lighting_instead_of_rotating_one(context):
 
 
 def test_a_lookup_radius_in_metres_is_passed_to_the_search(context):
-    (tool, args), = tools_of(context, "what benches are within 12 m of the fountain?")
+    ((tool, args),) = tools_of(context, "what benches are within 12 m of the fountain?")
     assert tool == "find_assets" and args["within"] == 12.0
 
 
 def test_a_contraction_without_its_apostrophe_is_not_repaired(campus):
     assert repair("i dont think so, it isnt", campus).repairs == []
+
+
+def test_lamps_named_as_a_circumstance_are_not_switched(context):
+    calls = tools_of(context, "we can drop the cones by the fountain, the street lamps cover that corner anyway")
+    assert all(tool != "set_lighting" for tool, _ in calls)

@@ -95,8 +95,10 @@ def test_an_amount_written_as_a_word_is_checked(context):
 
 
 def test_a_plan_covering_every_phrase_is_still_applied(campus, registry):
-    both = Fixed(call("add_asset", category="bench", count=2, location={"relation": "at", "target": "fountain"}),
-                 call("set_weather", kind="fog"))
+    both = Fixed(
+        call("add_asset", category="bench", count=2, location={"relation": "at", "target": "fountain"}),
+        call("set_weather", kind="fog"),
+    )
     session = Session(campus, both, registry)
     report = session.submit("put 2 benches at the fountain and make it foggy")
     assert report.ok and session.scene.count("bench") == campus.count("bench") + 2

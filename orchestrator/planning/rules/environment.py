@@ -64,6 +64,8 @@ def lights(r: Reading) -> ToolCall | None:
         return None
     if r.has(("light", "lights")) and not r.has((*_LAMP_CONTEXT, "on", "off")):
         return None
+    if not re.search(r"\b(on|off|up|lit|switch|switched|turn|turned|bright|brighter|dark|darker|see|visible)\b", r.low):
+        return None  # "the lights handle it": lamps named as a circumstance, not switched
     state = "off" if r.has(("off", "switch off", "turn off", "no lights", "dark streets")) else "on"
     key = "vehicle_lights" if r.has(("headlights", "vehicle lights", "car lights")) else "street_lights"
     return ToolCall(tool="set_lighting", args={key: state})
