@@ -20,6 +20,7 @@ from typing import Any
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Planner, PlanningError, Question, Reading, TraceStep
 from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 from drivetwin.orchestrator.planning.readings import canonical, describe, dry_run, same_outcome
+from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
 from drivetwin.orchestrator.transaction import Outcome
 
 # Rule plans at least this sure skip the LLM. The rule planner scores 0.95 for a prompt whose
@@ -55,12 +56,15 @@ class HybridPlanner:
         confident: float | None = None,
         fallback: float = RULES_FALLBACK,
         retrieval: Planner | None = None,
+        scenario: Planner | None = None,
     ) -> None:
         """`confident`: how sure a rule plan must be to skip the LLM; None: by the model's size.
         `retrieval`: the second independent planner; None plans with rules and LLM only."""
         self.rules = rules
         self.llm = llm
         self.retrieval = retrieval
+        # Tried first on words that describe behaviour over time (scenario_reading's predicate).
+        self.scenario = scenario
         self.confident = confident
         self.fallback = fallback
         self._by_model_size: float | None = None
@@ -107,6 +111,10 @@ class HybridPlanner:
     def plan(self, prompt: str, context: PlanContext) -> Plan:
         """The agreed plan, a clearly surer one, the LLM's tie-break, or a clarifying question."""
         started = time.perf_counter()
+        if self.scenario is not None and describes_behaviour_over_time(prompt):
+            read, _, read_why = self._candidate(self.scenario, prompt, context)
+            if read is not None and (read.calls or read.question is not None):
+                return self._mark(read, "scenario", started, read_why)
         rule_plan, rule_run, rule_why = self._candidate(self.rules, prompt, context)
         if self.retrieval is None:
             return self._rules_then_llm(prompt, context, rule_plan, rule_why, started)
@@ -226,9 +234,11 @@ def make_hybrid(**options: Any) -> HybridPlanner:
     option `rules_confident` fixes the hand-off threshold (default: by the model's size)."""
     from drivetwin.orchestrator.planning.retrieval import RetrievalPlanner
     from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+    from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
 
     confident = options.pop("rules_confident", None)
-    return HybridPlanner(RulePlanner(), make_llm(**options), confident=confident, retrieval=RetrievalPlanner())
+    return HybridPlanner(RulePlanner(), make_llm(**options), confident=confident, retrieval=RetrievalPlanner(),
+                         scenario=ScenarioReader())
 
 
 def make_llm(**options: Any) -> LlmPlanner:
