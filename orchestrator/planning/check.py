@@ -34,6 +34,7 @@ from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
 from drivetwin.orchestrator.planning.rules.reading import find_lane, find_place
 from drivetwin.orchestrator.planning.rules.spelling import repair
+from drivetwin.orchestrator.planning.scenario_reading import missed_scenario
 from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
@@ -368,6 +369,8 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
     """Apply, ask or refuse: whether `plan` accounts for what `prompt` asks (nothing is applied)."""
     if plan.question is not None:
         return Verdict("ask", ["the planner could not tell which reading was meant"], plan.question)
+    if (missed := missed_scenario(prompt, plan, context)) is not None:  # never a static edit for a scenario
+        return Verdict("ask" if missed.question else "refuse", [missed.problem], missed.question, missed.message)
     effect = dry_run(plan.calls, context)
     if effect is None:
         return Verdict("apply")  # the transaction refuses it in its own words

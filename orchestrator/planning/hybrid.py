@@ -111,7 +111,7 @@ class HybridPlanner:
     def plan(self, prompt: str, context: PlanContext) -> Plan:
         """The agreed plan, a clearly surer one, the LLM's tie-break, or a clarifying question."""
         started = time.perf_counter()
-        if self.scenario is not None and describes_behaviour_over_time(prompt):
+        if self.scenario is not None and describes_behaviour_over_time(prompt, context.scene):
             read, _, read_why = self._candidate(self.scenario, prompt, context)
             if read is not None and (read.calls or read.question is not None):
                 return self._mark(read, "scenario", started, read_why)

@@ -48,7 +48,7 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
     ("light", r"\b(red|amber|yellow|orange|green|cycles?|phases?|work|working|stop|wait|halt)\b"),
     ("stop_mid_road", r"\b(stop|stops|freeze|freezes|stand|stands|halts?|waits?)\b[^,.;]*\b(middle|midle|road|street|there)\b"
                       r"|\b(in|into) the (road|street)\b[^,.;]*\b(stops?|freezes?|stands?)\b"),
-    ("cut_in", r"\bcut(?:s|ting)? (?:in|across)\b|\bswerv\w* into\b|\bmerg\w* (?:in|into)\b|\bpulls? in front\b"),
+    ("cut_in", r"\bcut(?:s|ting)? in\b|\bswerv\w* into\b|\bmerg\w* (?:in|into)\b|\bpulls? in front\b"),
     ("overtake", r"\bovertakes?\b|\bpull\w* out\b[^,.;]*\bpass\b|\bto pass\b"),
     ("lane_change", r"\bchang\w* lanes?\b|\blane change\b|\b(?:move|moves|switch\w*|go|goes)\s+(?:in)?to the (?:left|right)\b"
                     r"|\binto the lane (?:on|to) (?:its|the) (?:left|right)\b|\bchange into the\b"),
@@ -57,17 +57,14 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
     ("reverse", r"\brevers\w*|\bback(?:s|ing)? (?:up|out)\b"),
     ("change_speed", r"\bspeed\w* up\b|\bspeed up\b|\baccelerat\w*|\bgo(?:es)? faster\b|\bslow\w* (?:down|to)\b"
                      r"|\bdecelerat\w*|\bgo(?:es)? slower\b"),
+    ("brake", r"\bbrak\w*|\bslam\w* on\b"),
     ("stop", r"\bbrak\w*|\bstop\w*|\bhalt\w*|\bslam\w*|\bcome\w* to a (?:stop|halt|standstill)\b"),
-    ("cross_road", r"\bcross(?:es|ed|ing)?\b(?! ?roads?| ?walks?)|\bwalk\w* (?:out|across|into)\b|\bsteps? out\b|\b(?:run|runs|dart\w*) (?:out|across)\b"
+    ("cross_road", r"\bcross(?:es|ed|ing)?\b(?! ?roads?| ?walks?)|\bcut(?:s|ting)? across\b|\bwalk\w* (?:out|across|into)\b|\bsteps? out\b|\b(?:run|runs|dart\w*) (?:out|across)\b"
                    r"|\bjaywalk\w*"),
     ("keep_lane", r"\b(?:keep\w* (?:its|their|the) lane|driv\w* on|cruis\w*)\b"),
 )
 _COMPILED = tuple((kind, re.compile(words)) for kind, words in _MANOEUVRES)
 _LIGHT_WORDS = re.compile(r"\b(traffic (lights?|signals?)|lights|light|signals?|traffic_light_\d+)\b")
-_TEMPORAL = re.compile(
-    r"\bbrak\w*|\bcut(?:s|ting)? in\b|\bchang\w* lanes?\b|\blane change\b|\bovertak\w*|\bturns? (?:left|right) at\b"
-    r"|\bspeeds? up\b|\bslows? down\b|\baccelerat\w*|\bdecelerat\w*|\b(?:turns?|goes|go|change\w*) (?:to )?" + _LIGHT_STATE
-    + r"\b|\bcycle\b|\bphases?\b|\btime to collision\b|\bstep\w* out\b")
 
 
 def _unit_number(text: str, units: str) -> Number | None:
@@ -162,6 +159,10 @@ class _Readers:
             faster = not re.search(r"\bslow|\bdecelerat", action)
             return Manoeuvre("change_speed", spec, choices=[("faster" if faster else "slower", spec)])
         return Manoeuvre("change_speed", {**spec, "speed": speed}, defaults=0 if rate else 1)
+
+    @staticmethod
+    def brake(action: str) -> Manoeuvre:
+        return _Readers.stop(action)
 
     @staticmethod
     def stop(action: str) -> Manoeuvre:

@@ -27,7 +27,6 @@ from drivetwin.orchestrator.planning.scenario_manoeuvres import (
     _COMPILED,
     _LIGHT_STATE,
     _LIGHT_WORDS,
-    _TEMPORAL,
     FASTER,
     HOLD_S,
     SLOWER,
@@ -95,20 +94,31 @@ _KNOWN = frozenset({"then", "ones", "wheel", "brake", "once", "seconds", "second
                     "behind", "crossroad", "approach", "approached", "overtake", "collisions", "pedestrians", "junctions"})
 
 
-def describes_behaviour_over_time(text: str) -> bool:
+def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool:
     """Whether the words describe something happening over time: a trigger ("when the ego is
     15 m away", "after 3 seconds") with an action, or a manoeuvre only a storyboard can play
-    (braking, cutting in, changing lanes, turning at a junction, a light changing or cycling).
-    A request to add an asset that only names its behaviour ("add a car overtaking") is not."""
-    low = ph.normalise(text)
+    (braking, cutting in, changing lanes, overtaking, turning at a junction, a traffic light
+    changing or cycling). With the scene, typos are repaired first. A request to add an asset
+    that only names its behaviour ("add a car overtaking") is not, nor is a question."""
+    low = normalised(text, scene) if scene is not None else ph.normalise(text)
+    low = re.sub(r"[a-z]+", lambda m: _SLIPS.get(m.group(0), m.group(0)), low)
     trigger = bool(_TRIGGER.search(low) and re.search(r"\b(ego|it|car|m|metres?|meters?|seconds?|approach\w*)\b", low)) \
         or bool(_DELAY.search(low))
-    manoeuvre = bool(_TEMPORAL.search(low)) or any(words.search(low) for kind, words in _COMPILED[1:])
+    manoeuvre = any(words.search(low) for kind, words in _COMPILED[1:])
     if _ADDING.match(low) and not trigger:
         return False
     if re.match(r"\s*(what|which|where|how|is|are|does|do)\b", low) or low.rstrip().endswith("?"):
         return False
-    return (trigger and manoeuvre) or bool(_TEMPORAL.search(low))
+    light = bool(_LIGHT_WORDS.search(re.sub(r"\bstreet lights?\b", " ", low))) and not re.search(
+        r"\b(paint|colou?r|recolou?r|move|remove|add|put|turn (it )?(on|off))\w*\b", low)
+    light_change = light and bool(re.search(rf"\b{_LIGHT_STATE}\b|\b(cycle|phases?|work|working)\b"
+                                            r"|\b(stop|wait)\w*\b[^,.;]*\bat (the|a) (red )?(traffic )?lights?\b", low))
+    return (trigger and manoeuvre) or light_change or any(
+        words.search(low) for kind, words in _COMPILED if kind in _ONLY_STORYBOARD)
+
+
+# Manoeuvres no static behaviour can stand for (a bare "stop", "cross" or "reverse" can).
+_ONLY_STORYBOARD = frozenset({"cut_in", "overtake", "lane_change", "junction_turn", "change_speed", "brake"})
 
 
 def split(low: str) -> tuple[str, str | None, float | None, bool]:
@@ -353,7 +363,9 @@ class MissedScenario:
 
 def missed_scenario(prompt: str, plan: Plan, context: PlanContext) -> MissedScenario | None:
     """None when the plan may stand; else what to ask or say instead of a static edit."""
-    if not plan.calls or any(c.tool in SCENARIO_TOOLS for c in plan.calls) or not describes_behaviour_over_time(prompt):
+    if not plan.calls or any(c.tool in SCENARIO_TOOLS for c in plan.calls) or not describes_behaviour_over_time(
+        prompt, context.scene
+    ):
         return None
     problem = "you described something that happens over time, but the plan is a static edit"
     try:
