@@ -148,7 +148,7 @@ class FootprintIndex:
                 if (key not in found and other.collides and other.asset.id != probe.asset.id
                         and overlap(probe, other, tolerance)):  # fmt: skip
                     found[key] = other
-        return [found[k] for k in sorted(found, key=self._order.__getitem__)]
+        return [found[k] for k in self._in_order(found)]
 
     def near(self, x: float, y: float, reach: float) -> list[AssetInstance]:
         """Indexed assets whose footprint circle comes within `reach` metres of (x, y), in
@@ -158,7 +158,13 @@ class FootprintIndex:
             for key, other in self._grid.get(cell, {}).items():
                 if key not in found and math.hypot(other.x - x, other.y - y) <= reach + other.radius:
                     found[key] = other
-        return [found[k].asset for k in sorted(found, key=self._order.__getitem__)]
+        return [found[k].asset for k in self._in_order(found)]
+
+    def _in_order(self, found: dict[int, Footprint]) -> list[int]:
+        # Only assets of the last sync answer: an entry the grid still holds for an asset no
+        # longer given (a dry run seen from another list) must neither answer nor raise.
+        order = self._order
+        return sorted((k for k in found if k in order), key=order.__getitem__)
 
 
 _lock = threading.Lock()
