@@ -54,7 +54,8 @@ def ssim_map(a: npt.ArrayLike, b: npt.ArrayLike, data_range: float = 1.0,
     """Per-pixel SSIM [H, W] of two images [H, W] or [H, W, C] (a colour image: mean over channels)."""
     x, y = _checked_pair(a, b)
     planes = [(x, y)] if x.ndim == 2 else [(x[..., c], y[..., c]) for c in range(x.shape[2])]
-    return np.mean([_plane_map(p, q, data_range, padding) for p, q in planes], axis=0).astype(np.float32)
+    mean: npt.NDArray[np.float64] = np.mean([_plane_map(p, q, data_range, padding) for p, q in planes], axis=0)
+    return mean.astype(np.float32)
 
 
 def ssim(a: npt.ArrayLike, b: npt.ArrayLike, data_range: float = 1.0, padding: Padding = "reflect") -> float:
