@@ -1,0 +1,135 @@
+"""The scenario reader turns words about behaviour over time into storyboard calls, and a
+scenario request is never answered with a static edit (asked or refused instead)."""
+
+from __future__ import annotations
+
+import pytest
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError
+from drivetwin.orchestrator.planning.check import review
+from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader, describes_behaviour_over_time
+from drivetwin.orchestrator.transaction import execute
+from drivetwin.tools.base import ToolCall
+from drivetwin.tools.registry import ToolRegistry
+from drivetwin.worlds.campus import build_campus
+from drivetwin.worlds.scene import Scene
+
+REGISTRY = ToolRegistry.default(plugins=False)
+
+
+def _with(*calls: dict[str, object]) -> Scene:
+    scene = build_campus()
+    return execute(REGISTRY, scene, [ToolCall.model_validate(c) for c in calls]).after
+
+
+def _add(category: str, x: float, y: float, yaw_deg: float = 0.0, behaviour: dict[str, object] | None = None) -> dict[str, object]:
+    args: dict[str, object] = {"category": category, "location": {"relation": "absolute", "x": x, "y": y},
+                               "yaw_deg": yaw_deg}
+    if behaviour is not None:
+        args["behaviour"] = behaviour
+    return {"tool": "add_asset", "args": args}
+
+
+def _plan(prompt: str, scene: Scene) -> Plan:
+    return ScenarioReader().plan(prompt, PlanContext(scene=scene, registry=REGISTRY))
+
+
+@pytest.fixture(scope="module")
+def van_ahead() -> Scene:
+    """A car driving in the ego's lane 25 m ahead of it (the campus has two parked cars)."""
+    return _with(_add("passenger_car", -35.0, -1.75, 0.0, {"kind": "drive_lane", "lane": "main_eastbound", "speed": 3.0}))
+
+
+def test_a_braking_lead_car_with_a_distance_trigger_is_an_event_on_that_car(van_ahead: Scene) -> None:
+    plan = _plan("Once our car has closed to twenty metres, the vehicle in front of it jams on the brakes.", van_ahead)
+    (call,) = plan.calls
+    assert call.tool == "add_event"
+    assert call.args["actor"] == "passenger_car_3"
+    assert call.args["manoeuvre"]["kind"] == "stop"
+    assert call.args["when"] == {"kind": "distance", "actor": "ego", "other": "passenger_car_3", "metres": 20.0,
+                                 "rule": "less"}
+
+
+def test_hard_braking_asks_for_an_emergency_deceleration(van_ahead: Scene) -> None:
+    plan = _plan("the car ahead of the ego should brake sharply after 4 s", van_ahead)
+    (call,) = plan.calls
+    assert call.tool == "add_manoeuvre" and call.args["at_time"] == 4.0
+    assert call.args["manoeuvre"]["rate"] >= 6.0
+
+
+def test_a_cut_in_from_the_next_lane_targets_the_ego_with_the_gap_asked() -> None:
+    scene = _with(_add("passenger_car", -50.0, 1.75, 0.0,
+                       {"kind": "follow_path", "waypoints": [[-50.0, 1.75], [90.0, 1.75]], "speed": 8.0}))
+    plan = _plan("three seconds in, the car in the left lane merges in front of the ego with a 6 m gap", scene)
+    (call,) = plan.calls
+    assert call.args["manoeuvre"] == {"kind": "cut_in", "gap": 6.0, "target": "ego"}
+    assert call.args["at_time"] == 3.0
+
+
+def test_a_junction_turn_is_read_for_the_car_on_the_named_road() -> None:
+    scene = _with(_add("passenger_car", 1.75, -40.0, 90.0, {"kind": "drive_lane", "lane": "campus_northbound", "speed": 5.0}))
+    plan = _plan("The vehicle heading up Campus Drive hangs a right at the intersection.", scene)
+    (call,) = plan.calls
+    assert call.args == {"actor": "passenger_car_3", "manoeuvre": {"kind": "junction_turn", "turn": "right"}}
+
+
+def test_a_turn_with_no_direction_is_a_question_not_a_guess() -> None:
+    scene = _with(_add("passenger_car", 1.75, -40.0, 90.0, {"kind": "drive_lane", "lane": "campus_northbound", "speed": 5.0}))
+    plan = _plan("have the car on Campus Drive turn at the intersection", scene)
+    assert plan.calls == [] and plan.question is not None
+    assert {r.calls[0].args["manoeuvre"]["turn"] for r in plan.question.readings} == {"left", "right", "straight"}
+
+
+def test_a_light_turning_red_on_approach_is_an_event_on_the_light_the_ego_meets() -> None:
+    plan = _plan("as our car nears the intersection, the signal switches to red", build_campus())
+    (call,) = plan.calls
+    assert call.tool == "add_event"
+    assert call.args["actor"] == "traffic_light_1"  # ahead of the ego, on its right
+    assert call.args["manoeuvre"] == {"kind": "set_light", "state": "red"}
+    assert call.args["when"]["kind"] == "distance" and call.args["when"]["actor"] == "ego"
+
+
+def test_a_light_cycle_keeps_the_order_and_durations_given() -> None:
+    plan = _plan("traffic light: 20 s green then 4 s amber then 25 s red, on repeat as a cycle", build_campus())
+    (call,) = plan.calls
+    assert call.tool == "set_light_phases"
+    assert call.args["phases"] == [{"state": "green", "duration": 20.0}, {"state": "amber", "duration": 4.0},
+                                   {"state": "red", "duration": 25.0}]
+
+
+def test_a_pedestrian_from_behind_a_parked_bus_crosses_when_the_ego_is_near() -> None:
+    scene = _with(_add("bus", -20.0, 2.0, 180.0), _add("pedestrian", -14.0, 6.0, -90.0))
+    plan = _plan("when the ego is 18 metres from her, the woman hidden behind the parked bus runs across the street", scene)
+    (call,) = plan.calls
+    assert call.args["actor"] == "pedestrian_1"
+    assert call.args["manoeuvre"]["kind"] == "cross_road"
+    assert call.args["when"]["metres"] == 18.0
+
+
+def test_a_manoeuvre_the_actor_cannot_do_is_refused_saying_what_is_possible() -> None:
+    with pytest.raises(PlanningError, match="a bench cannot stop.*a scenario can make"):
+        _plan("the bench slams on its brakes after 2 seconds", build_campus())
+
+
+def test_a_static_plan_for_a_scenario_request_is_never_applied(van_ahead: Scene) -> None:
+    context = PlanContext(scene=van_ahead, registry=REGISTRY)
+    prompt = "the car ahead of the ego brakes hard when the ego is 12 m behind it"
+    static = Plan(calls=[ToolCall(tool="move_asset", args={"asset": "passenger_car_3", "forward": 3})], planner="t")
+    verdict = review(prompt, static, context)
+    assert verdict.action == "ask" and verdict.question is not None
+    assert verdict.question.readings[0].calls[0].tool == "add_event"
+
+
+def test_a_static_plan_for_an_impossible_scenario_is_refused() -> None:
+    context = PlanContext(scene=build_campus(), registry=REGISTRY)
+    static = Plan(calls=[ToolCall(tool="remove_assets", args={"category": "bench"})], planner="t")
+    verdict = review("the bench brakes hard when our car comes close", static, context)
+    assert verdict.action == "refuse"
+    assert verdict.message is not None and "cannot stop" in verdict.message
+
+
+def test_static_requests_are_not_read_as_behaviour_over_time() -> None:
+    scene = build_campus()
+    assert not describes_behaviour_over_time("add a car overtaking in the left lane", scene)
+    assert not describes_behaviour_over_time("move the bench 2 m to the left", scene)
+    assert not describes_behaviour_over_time("the pedestrian should cross the road", scene)
+    assert describes_behaviour_over_time("the car changes lanes to the left after 5 seconds", scene)
