@@ -106,7 +106,7 @@ def test_a_pedestrian_from_behind_a_parked_bus_crosses_when_the_ego_is_near() ->
 
 
 def test_a_manoeuvre_the_actor_cannot_do_is_refused_saying_what_is_possible() -> None:
-    with pytest.raises(PlanningError, match="a bench cannot stop.*a scenario can make"):
+    with pytest.raises(PlanningError, match=r"a bench cannot stop.*a scenario can make"):
         _plan("the bench slams on its brakes after 2 seconds", build_campus())
 
 
