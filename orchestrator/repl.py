@@ -163,7 +163,8 @@ def run_command(session: Session, line: str, options: ChatOptions) -> bool | Non
 
 
 def run_lines(session: Session, lines: Iterable[str], options: ChatOptions) -> int:
-    """Run prompts and commands in order; the exit status (1 if a line failed and fail_fast)."""
+    """Run prompts and commands in order; the exit status: 1 when any line was refused, asked or
+    failed (at the first one with fail_fast), else 0."""
     failures = 0
     step = 0
     for raw in lines:
@@ -198,7 +199,10 @@ def run_lines(session: Session, lines: Iterable[str], options: ChatOptions) -> i
             if options.fail_fast:
                 options.echo("stopping at the first failure (--fail-fast)")
                 return 1
-    return 1 if failures and options.fail_fast else 0
+    if failures:
+        options.echo(f"{failures} line(s) not done (refused, asked or failed)")
+        return 1
+    return 0
 
 
 def interactive(session: Session, options: ChatOptions, history_file: Path) -> int:

@@ -57,3 +57,13 @@ def test_render_each_without_the_simulation_is_a_usage_error(tmp_path: Path) -> 
                                 env={"DRIVETWIN_STATE": str(tmp_path / "state")})
     assert result.exit_code == 2
     assert "drop --no-sim" in result.output and "Traceback" not in result.output
+
+
+def test_a_script_with_a_refused_line_exits_one_after_running_the_rest(tmp_path: Path) -> None:
+    script = tmp_path / "s.txt"
+    script.write_text("add 500 traffic cones inside the library\nmake it rain\n")
+    result = CliRunner().invoke(main, ["chat", "--planner", "rules", "--no-sim", "--script", str(script)],
+                                env={"DRIVETWIN_STATE": str(tmp_path / "state")})
+    assert result.exit_code == 1
+    assert "weather clear -> rain" in result.output  # the line after the refused one still ran
+    assert "1 line(s) not done" in result.output
