@@ -90,6 +90,12 @@ _DAY_PART = re.compile(r"(?<!this )\b(morning|afternoon|evening|night|midnight|n
 # Words that open background ("where people relax", "before I plan the pedestrian test"):
 # a category named after them is circumstance, not something the plan must act on.
 _BACKGROUND = re.compile(r"\b(where|when|while|before|after|because|so that|so|since|until|unless)\b")
+# A thing named after a preposition of place ("from behind the parked bus", "next to a bench")
+# is where something is, not something the plan must act on.
+_LOCATIVE = re.compile(
+    r"\b(behind|beside|next to|in front of|near|around|by|past|alongside|opposite|across from|beyond)\s+"
+    r"(?:(?:the|a|an|that|this|those|these|its|their|our)\s+)?(?:[a-z]+\s+)?$"
+)
 # Category names that are also the planner's verbs ("stop the ego"): not a thing named.
 _VERB_NAMES = frozenset(
     w for table in (lx.STOP_WORDS, lx.MOVE_WORDS, lx.TURN_WORDS, lx.REMOVE_WORDS) for w in table if " " not in w
@@ -126,6 +132,8 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
         )
         compound = i > 0 and not masked[mentions[i - 1].end : m.start].strip()
         if m.category not in wanted or _BACKGROUND.search(masked[: m.start]) or said in _VERB_NAMES:
+            continue
+        if _LOCATIVE.search(masked[max(0, m.start - 40) : m.start]):
             continue
         if not (near_place or compound):
             out.add(m.category)

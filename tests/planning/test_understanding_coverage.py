@@ -102,3 +102,13 @@ def test_a_plan_covering_every_phrase_is_still_applied(campus, registry):
     session = Session(campus, both, registry)
     report = session.submit("put 2 benches at the fountain and make it foggy")
     assert report.ok and session.scene.count("bench") == campus.count("bench") + 2
+
+
+def test_a_thing_named_after_a_preposition_of_place_is_where_not_what() -> None:
+    from drivetwin.evals.trial import fresh_world
+    from drivetwin.orchestrator.planning.coverage import named_things
+
+    scene = fresh_world("campus")
+    named = named_things("put a cone next to the parked bus", ["traffic_cone", "bus"], scene)
+    assert named == {"traffic_cone"}
+    assert named_things("remove the bus and the cone", ["traffic_cone", "bus"], scene) == {"traffic_cone", "bus"}
