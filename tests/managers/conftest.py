@@ -14,6 +14,7 @@ from typing import Any, ClassVar
 
 import pytest
 from drivetwin.orchestrator.backends import Backend, BackendError, BackendInfo, BackendStatus, ChatResult, Message
+from drivetwin.orchestrator.backends.base import Completion, CompletionRequest
 from drivetwin.orchestrator.planning.grounding import Grounder
 from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 from drivetwin.orchestrator.session import Session
@@ -37,7 +38,7 @@ class ScriptedBackend(Backend):
     def calls(self) -> int:
         return len(self.seen)
 
-    def chat(
+    def chat(  # type: ignore[override]
         self,
         messages: Sequence[Message],
         *,
@@ -47,15 +48,22 @@ class ScriptedBackend(Backend):
         max_tokens: int = 512,
         timeout_s: float | None = None,
     ) -> ChatResult:
-        self.seen.append(list(messages))
-        self.schemas.append(schema)
+        # Like a backend without grammar support, the text comes back unvalidated (Backend.chat
+        # would check it against the schema first), so the managers' own checks are exercised.
+        completion = self.complete(CompletionRequest(list(messages), schema, temperature, seed, max_tokens, timeout_s))
+        return ChatResult(completion.text, completion.prompt_tokens, completion.completion_tokens, 0.01, "script",
+                          self.name)
+
+    def complete(self, request: CompletionRequest) -> Completion:
+        self.seen.append(list(request.messages))
+        self.schemas.append(request.schema)
         if not self.answers:
             raise AssertionError("the script has no more answers")
         answer = self.answers.pop(0)
         if isinstance(answer, BackendError):
             raise answer
         text = answer if isinstance(answer, str) else json.dumps(answer)
-        return ChatResult(text, 100, 20, 0.01, "script", self.name)
+        return Completion(text, "stop", 100, 20)
 
     def describe(self) -> BackendInfo:
         return BackendInfo(self.name, self.model)
