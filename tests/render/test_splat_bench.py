@@ -21,8 +21,8 @@ def test_benchmark_writes_fps_and_stage_timings_as_json(tmp_path):
     assert numba_run["backend"] == "numba" and numba_run["splats"] == 500
     assert {"project", "bin", "composite", "total"} <= numba_run["ms"].keys()
     stages = numba_run["ms"]
-    # FPS is the inverse of the measured total, and the total covers every stage.
-    assert numba_run["fps"] == pytest.approx(1000.0 / stages["total"], rel=1e-3)  # ms are rounded to 0.01
+    # FPS is the inverse of the measured total (the JSON rounds milliseconds to 0.01).
+    assert 1000.0 / numba_run["fps"] == pytest.approx(stages["total"], abs=0.0051)
     assert stages["total"] >= 0.9 * (stages["project"] + stages["bin"] + stages["composite"])
     assert numba_run["coverage_alpha_gt_0.5"] > 0.5
     assert torch_run["psnr_vs_numba_db"] > 60  # the same image up to rounding
