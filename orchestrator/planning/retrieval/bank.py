@@ -31,7 +31,7 @@ from drivetwin.worlds.scene import Scene
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 # Bump when the grammar's frames or words change: cached banks of an older version are rebuilt.
-GENERATOR_VERSION = "4"
+GENERATOR_VERSION = "5"
 BANK_FOLDER = "banks"
 # Tries per wanted draft before a frame gives up (a dry run refuses some draws).
 TRIES_PER_DRAFT = 3
@@ -159,7 +159,7 @@ def generate(scene: Scene, registry: ToolRegistry | None = None, scale: float = 
 def _stand_in(call: dict[str, Any]) -> dict[str, Any]:
     """The call whose dry run stands for `call`'s: a placement is refused or accepted for
     where it goes, how many and the kind of thing it is (where it may stand, how it moves),
-    so one category per kind stands for the rest. (Dry runs of placements cost tens of
+    so one category per kind and size stands for the rest. (Dry runs of placements cost tens of
     milliseconds each; a bank has thousands.)"""
     args = dict(call["args"])
     if call["tool"] in ("add_asset", "arrange_assets"):
@@ -176,10 +176,12 @@ def _stand_in(call: dict[str, Any]) -> dict[str, Any]:
 def _kinds() -> dict[str, str]:
     from drivetwin.worlds.catalog import catalog
 
-    first: dict[tuple[str, str], str] = {}
+    first: dict[tuple[str, str, float], str] = {}
     out: dict[str, str] = {}
     for cat in catalog().values():
-        out[cat.name] = first.setdefault((cat.placement, cat.motion), cat.name)
+        # Size decides whether a row or ring of them overlaps: half-metre classes of footprint.
+        size = round(cat.footprint_radius * 2) / 2
+        out[cat.name] = first.setdefault((cat.placement, cat.motion, size), cat.name)
     return out
 
 
