@@ -118,6 +118,7 @@ def demo(out_dir: Path, planner_name: str | None, no_render: bool) -> None:
     finally:
         live.close()
     session.save(out_dir / "scene.json")
+    session.close()  # a clean end: the journal says so
     click.echo(f"demo finished with status {status}; outputs in {out_dir}")
     sys.exit(status)
 

@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import json
+import statistics
 from pathlib import Path
 
+import pytest
 from drivetwin.worlds.bench_physics import benchmark_scene, main
 
 
@@ -19,6 +21,9 @@ def test_benchmark_prints_steps_per_second_and_writes_json(tmp_path: Path, capsy
     out = tmp_path / "bench.json"
     assert main(["--assets", "30", "--steps", "50", "--runs", "2", "--out", str(out)]) == 0
     figures = json.loads(out.read_text())
-    assert figures["assets"] == 30 and figures["steps_per_second"] > 0
+    assert figures["assets"] == 30 and len(figures["steps_per_second_runs"]) == 2
+    # The figure is the median of the timed runs, and real time follows from the step.
+    assert figures["steps_per_second"] == pytest.approx(statistics.median(figures["steps_per_second_runs"]))
+    assert figures["realtime_factor"] == pytest.approx(figures["steps_per_second"] * figures["timestep_s"])
     assert figures["update_add_ms"] > 0 and figures["update_remove_ms"] > 0
     assert "physics steps/s" in capsys.readouterr().out
