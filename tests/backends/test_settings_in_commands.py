@@ -6,6 +6,7 @@ import json
 from collections.abc import Callable
 from pathlib import Path
 
+import platformdirs
 import pytest
 from backend_servers import Reply, ScriptedServer
 from click.testing import CliRunner
@@ -69,7 +70,10 @@ def test_chat_uses_the_openai_server_named_in_the_environment(scripted_server: S
     script.write_text("make it rain\n")
     env = {"DRIVETWIN_BACKEND": "openai", "DRIVETWIN_OPENAI_BASE_URL": f"{server.url}/v1",
            "DRIVETWIN_PLANNER": "llm", "DRIVETWIN_CONFIG": str(tmp_path / "absent.toml"),
-           "DRIVETWIN_STATE": str(tmp_path / "state")}
+           "DRIVETWIN_STATE": str(tmp_path / "state"),
+           # The managers' few-shot examples come from the world's example bank: share the one
+           # the other tests build in the user cache instead of generating it again here.
+           "DRIVETWIN_CACHE": str(platformdirs.user_cache_path("drivetwin"))}
     CliRunner().invoke(main, ["chat", "--no-sim", "--script", str(script)], env=env)
     posted = [r for r in server.requests if r["method"] == "POST"]
     assert posted and posted[0]["path"] == "/v1/chat/completions"
