@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from drivetwin.worlds import paths
 from drivetwin.worlds.scene import Scene
 
 if TYPE_CHECKING:
@@ -58,10 +59,9 @@ def list_worlds() -> list[WorldEntry]:
 
 def _imported_worlds() -> list[WorldEntry]:
     """Road-map worlds in the user's data folder (each a folder holding world.json)."""
-    from drivetwin.worlds.opendrive.package import WORLD_FILE, user_world_folder
-
+    # Only the folder: listing worlds must not import the map reader (the roads extra).
     entries = []
-    for path in sorted(user_world_folder().glob(f"*/{WORLD_FILE}")):
+    for path in sorted(paths.imported_worlds_dir().glob(f"*/{paths.IMPORTED_WORLD_FILE}")):
         try:
             scene = Scene.load(path)
         except ValueError:

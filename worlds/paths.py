@@ -46,3 +46,12 @@ def config_file() -> Path:
     if configured:
         return Path(configured).expanduser()
     return platformdirs.user_config_path(APP) / "config.toml"
+
+
+# An imported road map becomes a folder NAME/ holding this file (drivetwin.worlds.opendrive.package).
+IMPORTED_WORLD_FILE = "world.json"
+
+
+def imported_worlds_dir() -> Path:
+    """Where `drivetwin worlds import` keeps the worlds it builds."""
+    return data_dir() / "worlds"

@@ -70,3 +70,29 @@ def test_the_interpreter_imports_drivetwin_from_one_tree() -> None:
     roots = {Path(drivetwin.orchestrator.__file__).resolve().parents[1],
              Path(drivetwin.worlds.__file__).resolve().parents[1]}
     assert len(roots) == 1 and sys.modules["drivetwin.worlds"].__spec__ is not None
+
+
+# Packages that only the optional extras install (roads, scenarios, serve, enhance, ray, reconstruct, eval).
+OPTIONAL = ("viser", "scenariogeneration", "pyxodr", "xmlschema", "lxml", "selenium", "sumo", "open3d",
+            "diffusers", "ray", "matplotlib")
+
+
+def test_the_command_line_and_the_worlds_load_without_the_optional_extras(tmp_path: Path) -> None:
+    # The README's first command installs only the render and llm extras.
+    script = f"""
+import importlib.abc, sys
+class Block(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path, target=None):
+        if name.split(".")[0] in {OPTIONAL!r}:
+            raise ImportError("not installed: " + name)
+sys.meta_path.insert(0, Block())
+from click.testing import CliRunner
+from drivetwin.orchestrator.cli import main
+result = CliRunner().invoke(main, ["worlds", "list"])
+print(result.output)
+sys.exit(result.exit_code)
+"""
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300,
+                          env={**__import__("os").environ, "DRIVETWIN_DATA": str(tmp_path)})
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-2000:]
+    assert "campus" in done.stdout

@@ -12,7 +12,6 @@ folder, or read one straight into a Scene.
 from __future__ import annotations
 
 import json
-import os
 import pickle
 import re
 import shutil
@@ -22,6 +21,7 @@ from dataclasses import asdict, dataclass
 from functools import lru_cache
 from pathlib import Path
 
+from drivetwin.worlds import paths
 from drivetwin.worlds.opendrive.osm import osm_to_opendrive, read_osm_places
 from drivetwin.worlds.opendrive.reader import MapReadError, read_opendrive
 from drivetwin.worlds.opendrive.world import scene_from_map
@@ -30,9 +30,9 @@ from drivetwin.worlds.scene import Scene
 __all__ = ["DATA_ENV", "MAP_SUFFIXES", "ImportReport", "MapImportError", "import_map", "scene_from_file",
            "user_world_folder"]
 
-DATA_ENV = "DRIVETWIN_DATA"
+DATA_ENV = paths.ENV_DATA
 MAP_SUFFIXES = (".xodr", ".osm")
-WORLD_FILE = "world.json"
+WORLD_FILE = paths.IMPORTED_WORLD_FILE
 MAP_FILE = "map.xodr"
 REPORT_FILE = "import.json"
 _NAME = re.compile(r"^[a-z][a-z0-9_-]{0,39}$")
@@ -60,12 +60,7 @@ class ImportReport:
 
 def user_world_folder() -> Path:
     """Where imported worlds live (see the module docstring)."""
-    configured = os.environ.get(DATA_ENV)
-    if configured:
-        return Path(configured).expanduser() / "worlds"
-    xdg = os.environ.get("XDG_DATA_HOME")
-    base = Path(xdg).expanduser() if xdg else Path.home() / ".local" / "share"
-    return base / "drivetwin" / "worlds"
+    return paths.imported_worlds_dir()
 
 
 def _kind(source: Path) -> str:
