@@ -89,6 +89,10 @@ class TrialRecord(BaseModel):
     retries: int = 0
     tokens: int = 0
     prompt_version: str | None = None
+    # How sure the planner was of the plan it answered with (0-1), and the path a combining
+    # planner took ("fast", "agree", "retrieval", "llm", ...): what calibration is measured on.
+    confidence: float | None = None
+    path: str | None = None
     latency_s: float | None = None
     latency_levels: dict[str, float] = Field(default_factory=dict)
     wall_s: float = 0.0

@@ -154,6 +154,14 @@ def _fill(record: TrialRecord, report: TurnReport, passed: bool) -> None:
         record.retries = plan.retries
         record.tokens = plan.tokens
         record.prompt_version = plan.prompt_version
+        record.confidence = plan.confidence
+        record.path = _path(plan)
+
+
+def _path(plan: Plan) -> str | None:
+    # A combining planner names the path it took in its first trace step ("path: agree").
+    first = plan.trace[0].input if plan.trace else ""
+    return first.removeprefix("path: ") if first.startswith("path: ") else None
 
 
 def _finish(record: TrialRecord, started: float) -> TrialRecord:
