@@ -395,7 +395,7 @@ class Scene(SceneModel):
     environment: Environment = Field(default_factory=Environment)
     # What happens over time (OpenSCENARIO-like); empty for a still scene.
     storyboard: Storyboard = Field(default_factory=Storyboard)
-    # The world package folder (drivetwin.worlds.reconstruct.package) this world was loaded
+    # The world package folder (drivetwin.worlds.packages) this world was loaded
     # from: its terrain collides in MuJoCo and its splats are the renderer's background.
     package: str | None = None
 
