@@ -7,8 +7,11 @@ replaying a journal of edits rebuilds a Scene exactly.
 from __future__ import annotations
 
 import bisect
+import weakref
+from dataclasses import dataclass
 from typing import Annotated, Literal
 
+from drivetwin.worlds.asset_table import asset_table, keep_table
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Environment, Scene, asset_order
 from drivetwin.worlds.storyboard import Storyboard
 from pydantic import BaseModel, ConfigDict, Field
@@ -106,30 +109,43 @@ class WorldEdit(BaseModel):
         return ids
 
     def apply(self, scene: Scene) -> Scene:
-        """A new Scene with the operations applied in order; `scene` is not changed."""
-        assets = {a.id: a for a in scene.assets}
+        """A new Scene with the operations applied in order; `scene` is not changed.
+
+        Copy-on-write: the new scene shares every asset the edit leaves alone, its asset list
+        is a copy patched in place (the canonical order kept), and its id lookups come from
+        `scene`'s patched (drivetwin.worlds.asset_table), so an edit costs what it changes, not
+        the size of the world. How the scene was made is kept (`derivation`) for the views
+        that follow edits instead of re-reading every asset.
+        """
+        by_id = asset_table(scene.assets).by_id
+        # The assets this edit changes, by id: the asset now, or None once removed.
+        changed: dict[str, AssetInstance | None] = {}
+
+        def current(asset_id: str) -> AssetInstance | None:
+            return changed[asset_id] if asset_id in changed else by_id.get(asset_id)
+
         ego = scene.ego
         environment = scene.environment
         storyboard = scene.storyboard
         for op in self.ops:
             if isinstance(op, AddAsset):
-                if op.asset.id in assets or op.asset.id == EGO_ID:
+                if op.asset.id == EGO_ID or current(op.asset.id) is not None:
                     raise EditConflict(f"an asset with id {op.asset.id!r} already exists")
-                assets[op.asset.id] = op.asset
+                changed[op.asset.id] = op.asset
             elif isinstance(op, RemoveAsset):
                 if op.before.id == EGO_ID:
                     raise EditConflict("the ego vehicle cannot be removed")
-                if assets.get(op.before.id) != op.before:
+                if current(op.before.id) != op.before:
                     raise EditConflict(f"asset {op.before.id!r} is not as this edit expects")
-                del assets[op.before.id]
+                changed[op.before.id] = None
             elif isinstance(op, UpdateAsset):
-                current = ego if op.before.id == EGO_ID else assets.get(op.before.id)
-                if current != op.before or op.after.id != op.before.id:
+                now = ego if op.before.id == EGO_ID else current(op.before.id)
+                if now != op.before or op.after.id != op.before.id:
                     raise EditConflict(f"asset {op.before.id!r} is not as this edit expects")
                 if op.before.id == EGO_ID:
                     ego = op.after
                 else:
-                    assets[op.before.id] = op.after
+                    changed[op.before.id] = op.after
             elif isinstance(op, SetStoryboard):
                 if storyboard != op.before:
                     raise EditConflict("the storyboard is not as this edit expects")
@@ -138,22 +154,19 @@ class WorldEdit(BaseModel):
                 if environment != op.before:
                     raise EditConflict("the environment is not as this edit expects")
                 environment = op.after
-        # The scene's assets are already in canonical order: keep it for the ones that stay and
-        # insert the added ones in place (a full sort of thousands of assets per edit was most of
-        # an edit's time in a 5,000-asset world).
-        ordered = [assets[a.id] for a in scene.assets if a.id in assets]
-        present = {a.id for a in scene.assets}
-        for asset_id, asset in assets.items():
-            if asset_id not in present:
-                bisect.insort(ordered, asset, key=asset_order)
-        return scene.model_copy(
-            update={
-                "assets": ordered,
-                "ego": ego,
-                "environment": environment,
-                "storyboard": storyboard,
-            }
+        gone = [by_id[k] for k, a in changed.items() if k in by_id and by_id[k] is not a]
+        came = [a for k, a in changed.items() if a is not None and by_id.get(k) is not a]
+        assets = _patched_list(scene.assets, gone, came) if gone or came else scene.assets
+        after = scene.model_copy(
+            update={"assets": assets, "ego": ego, "environment": environment, "storyboard": storyboard}
         )
+        if assets is not scene.assets:
+            keep_table(assets, asset_table(scene.assets).patched(gone, came))
+        if ego is not scene.ego:
+            gone.append(scene.ego)
+            came.append(ego)
+        _remember_derivation(scene, after, gone, came)
+        return after
 
     def summary(self) -> list[str]:
         """One line per operation, in words, for the REPL's diff."""
@@ -174,6 +187,72 @@ class WorldEdit(BaseModel):
                 lines.append(f"~ environment: {', '.join(_env_changes(op.before, op.after))}")
         return lines
 
+
+@dataclass(frozen=True)
+class Derivation:
+    """How `WorldEdit.apply` made a Scene from another: the assets (the ego included) that
+    left and came, matched by identity; every other asset object is shared with the parent."""
+
+    parent: weakref.ref[Scene]
+    gone: tuple[AssetInstance, ...]
+    came: tuple[AssetInstance, ...]
+    # What the made scene held then: a scene changed in place since no longer derives this way.
+    assets: list[AssetInstance]
+    length: int
+    ego: AssetInstance
+
+
+# id(made scene) -> (a weak reference whose callback drops the entry, the derivation)
+_derivations: dict[int, tuple[weakref.ref[Scene], Derivation]] = {}
+
+
+def _remember_derivation(parent: Scene, made: Scene, gone: list[AssetInstance], came: list[AssetInstance]) -> None:
+    key = id(made)
+    ref = weakref.ref(made, lambda _: _derivations.pop(key, None))
+    _derivations[key] = (ref, Derivation(weakref.ref(parent), tuple(gone), tuple(came), made.assets,
+                                          len(made.assets), made.ego))  # fmt: skip
+
+
+def derivation(scene: Scene) -> Derivation | None:
+    """How `WorldEdit.apply` made `scene` from its parent, or None (not made by an edit, or
+    changed in place since)."""
+    entry = _derivations.get(id(scene))
+    if entry is None:
+        return None
+    ref, made = entry
+    if ref() is not scene or made.assets is not scene.assets or made.length != len(scene.assets) or made.ego is not scene.ego:
+        return None
+    return made
+
+
+def _patched_list(assets: list[AssetInstance], gone: list[AssetInstance], came: list[AssetInstance]) -> list[AssetInstance]:
+    """A copy of `assets` without `gone` and with `came`: a replaced asset keeps its place and an
+    added one is inserted in canonical order (a full sort of thousands of assets per edit was
+    most of an edit's time in a 5,000-asset world)."""
+    out = list(assets)
+    arriving = {a.id: a for a in came}
+    leaving = []
+    for old in gone:
+        at = _position(out, old)
+        new = arriving.pop(old.id, None)
+        if new is None:
+            leaving.append(at)
+        else:
+            out[at] = new
+    for at in sorted(leaving, reverse=True):
+        del out[at]
+    for asset in arriving.values():
+        bisect.insort(out, asset, key=asset_order)
+    return out
+
+
+def _position(assets: list[AssetInstance], asset: AssetInstance) -> int:
+    """Where `asset` (this object) stands in `assets`: a binary search in canonical order, or a
+    scan by identity for a list made without validation (not in that order)."""
+    at = bisect.bisect_left(assets, asset_order(asset), key=asset_order)
+    if at < len(assets) and assets[at] is asset:
+        return at
+    return list(map(id, assets)).index(id(asset))
 
 def _changed(before: AssetInstance, after: AssetInstance) -> list[str]:
     out = []

@@ -12,6 +12,7 @@ import re
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
+from drivetwin.worlds.asset_table import asset_table
 from drivetwin.worlds.json_input import MAX_SCENE_FILE_BYTES, JsonInputError, parse_json, read_text_file
 from drivetwin.worlds.storyboard import Storyboard
 from pydantic import (
@@ -417,7 +418,7 @@ class Scene(SceneModel):
         """The asset (or the ego) with this id, or None."""
         if asset_id == EGO_ID:
             return self.ego
-        return next((a for a in self.assets if a.id == asset_id), None)
+        return asset_table(self.assets).by_id.get(asset_id)  # a table beside the list, not a scan
 
     def all_assets(self) -> list[AssetInstance]:
         """Every asset including the ego vehicle, ego first."""
@@ -432,11 +433,11 @@ class Scene(SceneModel):
         return None
 
     def count(self, category: str) -> int:
-        return sum(1 for a in self.assets if a.category == category)
+        return asset_table(self.assets).count(category)
 
     def next_id(self, category: str) -> str:
         """A fresh id for a new asset of `category`: category_N with the smallest free N."""
-        taken = {a.id for a in self.assets}
+        taken = asset_table(self.assets).by_id
         n = 1
         while f"{category}_{n}" in taken:
             n += 1
