@@ -20,7 +20,7 @@ from drivetwin.evals.case import (
 from drivetwin.evals.check_base import CheckResult
 from drivetwin.evals.checks import CHECK_KINDS, Check
 from drivetwin.evals.metrics import Rate, RunMetrics, compute_metrics, pass_hat_k, wilson
-from drivetwin.evals.outcome import Outcome
+from drivetwin.evals.outcome import CaseOutcome
 from drivetwin.evals.records import RecordsError, RunHeader, TrialRecord, read_run
 from drivetwin.evals.report import PAPER_TABLE4, write_report
 from drivetwin.evals.runner import RunError, RunSummary, run_suite
@@ -33,10 +33,10 @@ __all__ = [
     "REFERENCE_PLANNER",
     "TASKS",
     "Case",
+    "CaseOutcome",
     "Check",
     "CheckResult",
     "Grade",
-    "Outcome",
     "Rate",
     "RecordsError",
     "RunError",

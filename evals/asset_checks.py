@@ -19,7 +19,7 @@ from drivetwin.evals.geometry import (
     matches_colour,
 )
 from drivetwin.evals.outcome import (
-    Outcome,
+    CaseOutcome,
     TargetNotFound,
     angle_between,
     describe_selection,
@@ -67,7 +67,7 @@ class NearCheck(SelectingCheck):
             raise ValueError("a near check needs exactly one of target and point")
         return self
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         if self.point is not None:
             x, y = self.point
             target = Target(f"({x:g}, {y:g})", "centre", x, y, 0.0)
@@ -93,7 +93,7 @@ class RelativeCheck(SelectingCheck):
     max_distance: float = Field(15.0, gt=0.0)
     tolerance_deg: float = Field(60.0, gt=0.0, le=90.0, description="off the exact direction")
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         try:
             target = find_target(outcome, self.target)
         except TargetNotFound as exc:
@@ -121,7 +121,7 @@ class OnSurfaceCheck(SelectingCheck):
     surfaces: list[SurfaceName] = Field(min_length=1)
     require_all: bool = True
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         allowed = set(self.surfaces)
         if "drivable" in allowed:
             allowed |= set(DRIVABLE)
@@ -141,7 +141,7 @@ class InLaneCheck(SelectingCheck):
     aligned: bool = False
     require_all: bool = True
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         lanes = outcome.after.roads.lanes
         if self.lane is not None:
             lanes = [ln for ln in lanes if ln.id == self.lane]
@@ -174,7 +174,7 @@ class ArrangementCheck(SelectingCheck):
     spacing_min: float | None = Field(None, ge=0.0)
     spacing_max: float | None = Field(None, gt=0.0)
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         chosen = select(outcome, self.categories, self.asset, self.scope)
         if len(chosen) < self.min_count:
             who = describe_selection(self.categories, self.asset, self.scope)
@@ -212,7 +212,7 @@ class BehaviourCheck(SelectingCheck):
     centre_near: str | None = Field(None, description="circle centre within centre_within")
     centre_within: float = Field(20.0, gt=0.0)
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         kinds = [self.behaviour] if isinstance(self.behaviour, str) else self.behaviour
         centre = None
         if self.centre_near is not None:
@@ -247,7 +247,7 @@ class AppearanceCheck(SelectingCheck):
     colour_tolerance: float = Field(0.2, gt=0.0, le=1.0, description="per RGB channel")
     material: str | None = None
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         colours = [self.colour] if isinstance(self.colour, str) else list(self.colour or [])
 
         def test(a: AssetInstance) -> tuple[bool, str]:
@@ -272,7 +272,7 @@ class MovedCheck(BaseCheck):
     turn_min_deg: float | None = Field(None, ge=0.0, le=180.0)
     turn_max_deg: float | None = Field(None, ge=0.0, le=180.0)
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         a, b = outcome.before.asset(self.asset), outcome.after.asset(self.asset)
         if a is None or b is None:
             return self._result(False, f"asset {self.asset} is not in the scene before and after")

@@ -14,7 +14,7 @@ from typing import Any, Literal
 
 from drivetwin.evals.check_base import CheckResult
 from drivetwin.evals.checks import Check
-from drivetwin.evals.outcome import Outcome
+from drivetwin.evals.outcome import CaseOutcome
 from drivetwin.tools.base import ToolCall
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
@@ -78,7 +78,7 @@ class Case(BaseModel):
             raise ValueError(f"case {self.id!r} has an empty alternative; each needs checks")
         return self
 
-    def judge(self, outcome: Outcome) -> tuple[bool, list[CheckResult]]:
+    def judge(self, outcome: CaseOutcome) -> tuple[bool, list[CheckResult]]:
         """Whether the outcome passes, and the results of the checks that decided it."""
         results = [check.evaluate(outcome) for check in self.checks]
         passed = all(r.passed for r in results)

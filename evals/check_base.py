@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from typing import Annotated, Literal, TypeVar
 
 from drivetwin.evals.outcome import (
-    Outcome,
+    CaseOutcome,
     describe_selection,
     select,
 )
@@ -32,7 +32,7 @@ class CheckResult:
 class BaseCheck(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:  # pragma: no cover - abstract
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:  # pragma: no cover - abstract
         raise NotImplementedError
 
     def _result(self, passed: bool, reason: str) -> CheckResult:
@@ -67,7 +67,7 @@ class SelectingCheck(BaseCheck):
             return []
         return [self.category] if isinstance(self.category, str) else list(self.category)
 
-    def _judge(self, outcome: Outcome, test: Callable[[AssetInstance], tuple[bool, str]], what: str) -> CheckResult:
+    def _judge(self, outcome: CaseOutcome, test: Callable[[AssetInstance], tuple[bool, str]], what: str) -> CheckResult:
         chosen = select(outcome, self.categories, self.asset, self.scope)
         who = describe_selection(self.categories, self.asset, self.scope)
         if not chosen:

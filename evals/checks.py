@@ -27,7 +27,7 @@ from drivetwin.evals.check_base import (
     known_categories,
 )
 from drivetwin.evals.outcome import (
-    Outcome,
+    CaseOutcome,
 )
 from drivetwin.evals.scenario_checks import ScenarioCheck
 from drivetwin.worlds.scene import AssetInstance, WeatherKind
@@ -46,7 +46,7 @@ class CountCheck(BaseCheck):
     min: int | None = Field(None, ge=0)
     max: int | None = Field(None, ge=0)
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         cats = [self.category] if isinstance(self.category, str) else list(self.category or [])
         n = _count(outcome.after.assets, cats)
         ok = (self.min is None or n >= self.min) and (self.max is None or n <= self.max)
@@ -61,7 +61,7 @@ class CountDeltaCheck(BaseCheck):
     min: int | None = None
     max: int | None = None
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         cats = [self.category] if isinstance(self.category, str) else list(self.category or [])
         delta = _count(outcome.after.assets, cats) - _count(outcome.before.assets, cats)
         ok = (self.min is None or delta >= self.min) and (self.max is None or delta <= self.max)
@@ -86,7 +86,7 @@ class EnvironmentCheck(BaseCheck):
     exposure_min: float | None = None
     exposure_max: float | None = None
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         env = outcome.after.environment
         w, light = env.weather, env.lighting
         problems = []
@@ -128,7 +128,7 @@ class ExistsCheck(BaseCheck):
     assets: list[str] = Field(min_length=1)
     present: bool = True
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         wrong = [i for i in self.assets if (outcome.after.asset(i) is not None) != self.present]
         state = "present" if self.present else "gone"
         return self._result(not wrong, f"not {state}: {', '.join(wrong)}" if wrong else f"all {state}")
@@ -142,7 +142,7 @@ class UnchangedExceptCheck(BaseCheck):
     assets: list[str] = Field(default_factory=list)
     environment: bool = False
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         by_id = {a.id: a for a in [*outcome.before.all_assets(), *outcome.after.all_assets()]}
         moved = outcome.added_ids() | outcome.removed_ids() | outcome.changed_ids()
         extra = sorted(i for i in moved if i not in self.assets and by_id[i].category not in self.categories)
@@ -159,7 +159,7 @@ class AnswerContainsCheck(BaseCheck):
     any_of: list[str] = Field(default_factory=list)
     none_of: list[str] = Field(default_factory=list)
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         from drivetwin.evals.geometry import mentions
 
         text = outcome.answer_text
@@ -180,7 +180,7 @@ class StatusCheck(BaseCheck):
     kind: Literal["status"] = "status"
     accepted: bool = True
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         got = "accepted" if outcome.accepted else f"refused ({outcome.error})"
         return self._result(outcome.accepted == self.accepted, f"the prompt was {got}")
 

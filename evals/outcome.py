@@ -18,7 +18,7 @@ from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon
 
 
 @dataclass(frozen=True)
-class Outcome:
+class CaseOutcome:
     """The scene before and after a case's prompt, whether it was accepted, and its answer."""
 
     before: Scene
@@ -58,7 +58,7 @@ class TargetNotFound(LookupError):
     """A check names a landmark, asset, lane or building that the scene does not have."""
 
 
-def find_target(outcome: Outcome, name: str) -> Target:
+def find_target(outcome: CaseOutcome, name: str) -> Target:
     """The named target in the scene after the prompt, or before it if it has since gone."""
     for scene in (outcome.after, outcome.before):
         try:
@@ -90,7 +90,7 @@ def angle_between(a: float, b: float) -> float:
 
 
 def select(
-    outcome: Outcome,
+    outcome: CaseOutcome,
     categories: Sequence[str],
     asset: str | None,
     scope: str,

@@ -14,7 +14,7 @@ import math
 from typing import TYPE_CHECKING, Annotated, Literal
 
 from drivetwin.evals.check_base import BaseCheck, CheckResult
-from drivetwin.evals.outcome import Outcome
+from drivetwin.evals.outcome import CaseOutcome
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
 from drivetwin.worlds.catalog import category
@@ -91,7 +91,7 @@ class ScenarioCheck(BaseCheck):
     seconds: float = Field(gt=0.0, le=60.0)
     expect: list[Assertion] = Field(min_length=1)
 
-    def evaluate(self, outcome: Outcome) -> CheckResult:
+    def evaluate(self, outcome: CaseOutcome) -> CheckResult:
         # MuJoCo loads only when a scenario check runs (reading a suite stays light).
         from drivetwin.worlds.simulation import Simulation
 

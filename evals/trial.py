@@ -13,7 +13,7 @@ from functools import cache
 from typing import Any
 
 from drivetwin.evals.case import Case
-from drivetwin.evals.outcome import Outcome
+from drivetwin.evals.outcome import CaseOutcome
 from drivetwin.evals.records import FailedCheck, TrialRecord
 from drivetwin.orchestrator.planning import Plan, PlanContext, Planner, PlanningError
 from drivetwin.orchestrator.session import Session, TurnReport
@@ -129,7 +129,7 @@ def run_trial(case: Case, planner: Planner, trial: int, registry: ToolRegistry |
     except Exception as exc:  # a crashing planner is recorded, not fatal to the run
         record.error = f"{type(exc).__name__}: {exc}"
         return _finish(record, started)
-    outcome = Outcome(before, session.scene, report.ok, report.answer or "", report.error, tuple(report.results))
+    outcome = CaseOutcome(before, session.scene, report.ok, report.answer or "", report.error, tuple(report.results))
     passed, results = case.judge(outcome)
     _fill(record, report, passed)
     record.failed_checks = [FailedCheck(kind=r.kind, reason=r.reason) for r in results if not r.passed]

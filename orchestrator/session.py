@@ -19,7 +19,7 @@ from drivetwin.orchestrator.journal_events import PlanFacts
 from drivetwin.orchestrator.memory import Memory, Turn
 from drivetwin.orchestrator.planning import MAX_PROMPT_CHARS, Plan, PlanContext, Planner, PlanningError, Question
 from drivetwin.orchestrator.planning.check import review
-from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute
+from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.edits import EditConflict, WorldEdit
 from drivetwin.worlds.scene import Scene
@@ -175,7 +175,7 @@ class Session:
             return self._ask(text, plan, verdict.question, started)
         return self._run(text, plan, started, verdict.outcome)
 
-    def _run(self, text: str, plan: Plan, started: float, outcome: Outcome | None = None) -> TurnReport:
+    def _run(self, text: str, plan: Plan, started: float, outcome: TransactionResult | None = None) -> TurnReport:
         """Apply a plan's calls as one transaction (or answer, when they change nothing).
         `outcome`: the review's dry run of these calls on the current scene, committed as it is."""
         if outcome is None or outcome.before is not self._scene:  # reviewed on a scene since changed
@@ -222,7 +222,7 @@ class Session:
         self._note(turn)
         return TurnReport(prompt, False, plan, [], [], error, time.perf_counter() - started)
 
-    def _remember(self, prompt: str, plan: Plan, outcome: Outcome, status: str) -> None:
+    def _remember(self, prompt: str, plan: Plan, outcome: TransactionResult, status: str) -> None:
         edit = outcome.edit
         added = [op.asset.id for op in edit.ops if op.op == "add"]
         removed = [op.before.id for op in edit.ops if op.op == "remove"]

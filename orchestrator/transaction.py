@@ -22,7 +22,7 @@ class TransactionError(Exception):
 
 
 @dataclass(frozen=True)
-class Outcome:
+class TransactionResult:
     """The scene after a transaction, the combined edit and each call's result."""
 
     before: Scene
@@ -31,7 +31,7 @@ class Outcome:
     results: list[ToolResult]
 
 
-def execute(registry: ToolRegistry, scene: Scene, calls: list[ToolCall]) -> Outcome:
+def execute(registry: ToolRegistry, scene: Scene, calls: list[ToolCall]) -> TransactionResult:
     """Run `calls` in order, each seeing the edits before it; `scene` itself is never changed."""
     current = scene
     edit = WorldEdit()
@@ -46,7 +46,7 @@ def execute(registry: ToolRegistry, scene: Scene, calls: list[ToolCall]) -> Outc
             raise TransactionError(index, call, ToolError(str(exc))) from exc
         edit = edit + result.edit
         results.append(result)
-    return Outcome(scene, current, edit, results)
+    return TransactionResult(scene, current, edit, results)
 
 
 def first_refusal(registry: ToolRegistry, scene: Scene, calls: list[ToolCall]) -> str | None:

@@ -35,7 +35,7 @@ from drivetwin.orchestrator.planning.rules.numbers import numbers_in
 from drivetwin.orchestrator.planning.rules.reading import find_lane, find_place
 from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.orchestrator.planning.scenario_reading import missed_scenario
-from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute
+from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
@@ -92,7 +92,7 @@ class Verdict:
     message: str | None = None
     # The dry run of the plan's own calls on the scene it was reviewed against: the session
     # commits it as it is instead of running the same transaction a second time.
-    outcome: Outcome | None = None
+    outcome: TransactionResult | None = None
 
 
 @dataclass(frozen=True)
@@ -121,7 +121,7 @@ class Effect:
     removed: tuple[AssetInstance, ...]
     changed: tuple[AssetInstance, ...]
     environment: bool
-    outcome: Outcome | None = None
+    outcome: TransactionResult | None = None
 
     @property
     def edits(self) -> bool:

@@ -21,7 +21,7 @@ from drivetwin.orchestrator.planning.base import Plan, PlanContext, Planner, Pla
 from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 from drivetwin.orchestrator.planning.readings import canonical, describe, dry_run, same_outcome
 from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
-from drivetwin.orchestrator.transaction import Outcome
+from drivetwin.orchestrator.transaction import TransactionResult
 
 # Rule plans at least this sure skip the LLM. The rule planner scores 0.95 for a prompt whose
 # every content word it knows, 0.15 less per unknown word and 0.2 less per guess (a repaired
@@ -90,7 +90,7 @@ class HybridPlanner:
 
     def _candidate(
         self, planner: Planner, prompt: str, context: PlanContext
-    ) -> tuple[Plan | None, Outcome | None, str]:
+    ) -> tuple[Plan | None, TransactionResult | None, str]:
         try:
             plan = planner.plan(prompt, context)
         except PlanningError as exc:
@@ -102,7 +102,7 @@ class HybridPlanner:
             return None, None, f"a dry run refused the {planner.name} plan: {outcome}"
         return plan, outcome, f"{planner.name} confidence {plan.confidence:.2f}"
 
-    def agree(self, a: Plan, a_run: Outcome | None, b: Plan, b_run: Outcome | None, context: PlanContext) -> bool:
+    def agree(self, a: Plan, a_run: TransactionResult | None, b: Plan, b_run: TransactionResult | None, context: PlanContext) -> bool:
         """Whether two candidates mean the same: equal calls up to defaults, or equal outcomes."""
         if canonical(a.calls, context.registry) == canonical(b.calls, context.registry):
             return True

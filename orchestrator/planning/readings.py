@@ -12,7 +12,7 @@ import json
 import math
 from typing import Any
 
-from drivetwin.orchestrator.transaction import Outcome, TransactionError, execute
+from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.registry import ToolRegistry
@@ -37,7 +37,7 @@ def canonical(calls: list[ToolCall], registry: ToolRegistry) -> list[str]:
     return sorted(out)
 
 
-def dry_run(calls: list[ToolCall], registry: ToolRegistry, scene: Scene) -> Outcome | str:
+def dry_run(calls: list[ToolCall], registry: ToolRegistry, scene: Scene) -> TransactionResult | str:
     """The outcome of `calls` on a copy of `scene`, or the refusal's message."""
     try:
         return execute(registry, scene, calls)
@@ -75,7 +75,7 @@ def _close(a: Any, b: Any) -> bool:
     return bool(a == b)
 
 
-def same_outcome(a: Outcome, b: Outcome) -> bool:
+def same_outcome(a: TransactionResult, b: TransactionResult) -> bool:
     """Whether two dry runs did the same thing (see the module's note); questions (no edit)
     agree when they asked the same tools."""
     if a.edit.empty and b.edit.empty:

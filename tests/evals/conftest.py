@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from drivetwin.evals.outcome import Outcome
+from drivetwin.evals.outcome import CaseOutcome
 from drivetwin.evals.trial import fresh_world
 from drivetwin.orchestrator.transaction import execute
 from drivetwin.tools.base import ToolCall
@@ -19,24 +19,24 @@ HERE = Path(__file__).resolve().parent
 
 
 
-OutcomeOf = Callable[..., Outcome]
+OutcomeOf = Callable[..., CaseOutcome]
 
 
 @pytest.fixture()
 def outcome_of(registry: ToolRegistry) -> OutcomeOf:
-    """Outcome of running calls (tool, args) on the campus, after optional setup calls."""
+    """CaseOutcome of running calls (tool, args) on the campus, after optional setup calls."""
 
     def make(
         *calls: tuple[str, dict[str, Any]],
         setup: tuple[tuple[str, dict[str, Any]], ...] = (),
         answer: str = "",
         accepted: bool = True,
-    ) -> Outcome:
+    ) -> CaseOutcome:
         scene = fresh_world("campus")
         if setup:
             scene = execute(registry, scene, [ToolCall(tool=t, args=a) for t, a in setup]).after
         done = execute(registry, scene, [ToolCall(tool=t, args=a) for t, a in calls])
-        return Outcome(scene, done.after, accepted, answer, None, tuple(r.text for r in done.results))
+        return CaseOutcome(scene, done.after, accepted, answer, None, tuple(r.text for r in done.results))
 
     return make
 

@@ -9,7 +9,7 @@ from pathlib import Path
 import jsonschema
 from drivetwin.evals import heldout_source
 from drivetwin.evals.case import GRADES, SCHEMA_PATH, SUITES_DIR, TASKS, load_suite
-from drivetwin.evals.outcome import Outcome
+from drivetwin.evals.outcome import CaseOutcome
 from drivetwin.evals.trial import fresh_world
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
@@ -78,7 +78,7 @@ def test_every_place_a_heldout_check_names_is_in_the_campus_or_made_by_the_case(
                 resolve_target(campus, name)  # raises NotFoundError on a typo
 
 
-def _replay(calls: list[ToolCall], scene: Scene, registry: ToolRegistry) -> Outcome:
+def _replay(calls: list[ToolCall], scene: Scene, registry: ToolRegistry) -> CaseOutcome:
     """The outcome of running calls as one all-or-nothing prompt, straight through the Workers."""
     after, texts = scene, []
     try:
@@ -87,8 +87,8 @@ def _replay(calls: list[ToolCall], scene: Scene, registry: ToolRegistry) -> Outc
             after = result.edit.apply(after)
             texts.append(result.text)
     except ToolError as exc:
-        return Outcome(scene, scene, accepted=False, error=str(exc))
-    return Outcome(scene, after, results=tuple(texts))
+        return CaseOutcome(scene, scene, accepted=False, error=str(exc))
+    return CaseOutcome(scene, after, results=tuple(texts))
 
 
 def test_the_reference_calls_build_an_outcome_every_heldout_case_accepts() -> None:

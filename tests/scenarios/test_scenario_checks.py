@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from drivetwin.evals.case import load_suite
 from drivetwin.evals.checks import CHECK_KINDS
-from drivetwin.evals.outcome import Outcome
+from drivetwin.evals.outcome import CaseOutcome
 from drivetwin.evals.scenario_checks import ScenarioCheck
 from drivetwin.evals.trial import REFERENCE_PLANNER, ReferencePlanner, run_trial
 from drivetwin.worlds.campus import build_campus
@@ -29,8 +29,8 @@ def test_scenario_is_a_check_kind_a_suite_line_can_use() -> None:
 def test_stopped_before_passes_at_a_red_light_and_fails_without_one() -> None:
     still = campus_with(ego_x=-40.0)
     red = still.model_copy(update={"storyboard": Storyboard(lights=[RED])})
-    assert STOPS_AT_RED.evaluate(Outcome(still, red)).passed
-    failed = STOPS_AT_RED.evaluate(Outcome(still, still))
+    assert STOPS_AT_RED.evaluate(CaseOutcome(still, red)).passed
+    failed = STOPS_AT_RED.evaluate(CaseOutcome(still, still))
     assert not failed.passed and "short of the line" in failed.reason
 
 
@@ -43,7 +43,7 @@ def test_a_collision_is_seen_and_a_min_gap_measured() -> None:
         {"kind": "collision", "happens": True},
         {"kind": "min_gap", "other": "passenger_car_9", "metres": 0.0},
     ]})
-    result = check.evaluate(Outcome(scene, scene))
+    result = check.evaluate(CaseOutcome(scene, scene))
     assert result.passed, result.reason
     assert "ego touched passenger_car_9" in result.reason
 
@@ -52,7 +52,7 @@ def test_an_event_assertion_fails_when_the_storyboard_lacks_it() -> None:
     campus = build_campus()
     check = ScenarioCheck.model_validate({"kind": "scenario", "seconds": 0.5, "expect": [
         {"kind": "event", "actor": "ego", "manoeuvre": "stop"}]})
-    result = check.evaluate(Outcome(campus, campus))
+    result = check.evaluate(CaseOutcome(campus, campus))
     assert not result.passed and result.reason == "no stop event for ego"
 
 
@@ -62,7 +62,7 @@ def test_reached_is_judged_on_the_simulated_path_not_the_authored_pose() -> None
     scene = build_campus().model_copy(update={"ego": ego})
     check = ScenarioCheck.model_validate({"kind": "scenario", "seconds": 6.0, "expect": [
         {"kind": "reached", "actor": "ego", "place": "-30, -1.75", "within": 2.0}]})
-    assert check.evaluate(Outcome(scene, scene)).passed
+    assert check.evaluate(CaseOutcome(scene, scene)).passed
 
 
 @pytest.mark.parametrize("case_id", [
