@@ -6,7 +6,7 @@ the category's trimesh mesh (for rendering and export) and its MuJoCo geoms (for
 what is drawn is what collides.
 
 Reconstructed assets join the catalog too: every asset package found on DRIVETWIN_ASSETS and in
-the user's asset folder (see drivetwin.worlds.reconstruct.package) becomes a Category whose
+the user's asset folder (see drivetwin.worlds.packages) becomes a Category whose
 `package` names its folder. Its one box part is the bounding box (for footprints and overlap
 checks); MuJoCo collides its convex hulls and the hybrid renderer draws its fitted splats.
 """
@@ -20,10 +20,12 @@ from functools import cache, lru_cache
 from pathlib import Path
 from typing import Literal
 
+import numpy as np
+from drivetwin.worlds.packages import AssetPackage, AssetPackageError, Placement, discover_packages, package_splats
+from drivetwin.worlds.render.splats import SH_C0
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 PartShape = Literal["box", "cylinder", "sphere"]
-Placement = Literal["road", "sidewalk", "drivable", "anywhere"]
 Motion = Literal["static", "vehicle", "walker", "prop"]
 
 
@@ -110,12 +112,55 @@ def _builtin() -> dict[str, Category]:
 _DISCOVERY_ENV = ("DRIVETWIN_ASSETS", "DRIVETWIN_CACHE", "HOME")
 
 
+def package_category(package: AssetPackage) -> Category:
+    """The catalog category an asset package provides: its manifest's words and sizes, and one
+    box part (its bounding box, coloured like its splats) for footprints and overlap checks."""
+    m = package.manifest
+    size = m.dimensions
+    box = Part(shape="box", size=(size.length / 2, size.width / 2, size.height / 2),
+               pos=(0.0, 0.0, size.height / 2), rgba=(*_mean_colour(package), 1.0))  # fmt: skip
+    words = tuple(dict.fromkeys([*m.synonyms, m.name.replace("_", " ")]))
+    return Category(
+        name=m.name,
+        description=m.description or f"a reconstructed {m.name.replace('_', ' ')}",
+        length=size.length,
+        width=size.width,
+        height=size.height,
+        mass=m.mass,
+        synonyms=words,
+        tags=tuple(dict.fromkeys(["reconstructed", *m.tags])),
+        placement=m.placement,
+        motion=m.motion,
+        max_count=m.max_count,
+        parts=(box,),
+        package=str(package.root.resolve()),
+    )
+
+
+def _mean_colour(package: AssetPackage) -> tuple[float, float, float]:
+    """The splats' mean base colour (0..1), used for the collision proxy's rgba."""
+    sh = package_splats(package.root).sh  # cached: the catalog asks on every discovery
+    if not len(sh):
+        return (0.5, 0.5, 0.5)
+    r, g, b = (float(v) for v in np.clip(0.5 + SH_C0 * sh[:, 0].mean(axis=0), 0.0, 1.0))
+    return (r, g, b)
+
+
+def _packaged_categories() -> list[Category]:
+    """A category for every asset package found; one whose splats cannot be read stays out."""
+    categories = []
+    for package in discover_packages("asset"):
+        try:
+            categories.append(package_category(package))
+        except AssetPackageError:
+            continue
+    return categories
+
+
 @lru_cache(maxsize=8)
 def _catalog_for(discovery_key: tuple[str, ...]) -> dict[str, Category]:
-    from drivetwin.worlds.reconstruct.package import packaged_categories
-
     merged = dict(_builtin())
-    for cat in packaged_categories():
+    for cat in _packaged_categories():
         # A package may not shadow a built-in category (the Workers' rules rely on those).
         merged.setdefault(cat.name, cat)
     return merged

@@ -1,6 +1,6 @@
 """Worlds that can be loaded by name: the shipped ones, any in the user's world folders,
 road maps imported with `drivetwin worlds import` (drivetwin.worlds.opendrive.package), and
-reconstructed world packages (drivetwin.worlds.reconstruct.package) on the asset search path.
+reconstructed world packages (drivetwin.worlds.packages) on the asset search path.
 A world name may also be the path of a map file (.xodr or .osm), read in place."""
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from drivetwin.worlds import paths
+from drivetwin.worlds.packages import WORLD_SCENE, AssetPackage, AssetPackageError, discover_packages
 from drivetwin.worlds.scene import Scene
 
 if TYPE_CHECKING:
@@ -89,8 +90,6 @@ def plugin_worlds() -> tuple[list[WorldEntry], list[PluginProblem]]:
 
 
 def _packaged_worlds() -> list[WorldEntry]:
-    from drivetwin.worlds.reconstruct.package import WORLD_SCENE, discover_packages
-
     entries = []
     for package in discover_packages("world"):
         path = package.root / WORLD_SCENE
@@ -120,8 +119,6 @@ def load_world(name: str) -> Scene:
 
 def _package_of(scene_file: Path) -> Path | None:
     """The world package holding `scene_file` (its world.json), or None for a plain world file."""
-    from drivetwin.worlds.reconstruct.package import WORLD_SCENE, AssetPackage, AssetPackageError
-
     if scene_file.name != WORLD_SCENE:
         return None
     try:

@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import trimesh
 from drivetwin.worlds.catalog import Part, catalog, category
+from drivetwin.worlds.packages import AssetPackage
 
 __all__ = ["category_mesh", "export_catalog_meshes", "part_mesh"]
 
@@ -54,8 +55,6 @@ def part_mesh(part: Part) -> trimesh.Trimesh:
 def _category_mesh(category_name: str) -> trimesh.Trimesh:
     cat = category(category_name)
     if cat.package is not None:  # a reconstructed asset: its surface mesh, package frame
-        from drivetwin.worlds.reconstruct.package import AssetPackage
-
         surface: trimesh.Trimesh = AssetPackage.load(cat.package).mesh()
         return surface
     parts = cat.parts

@@ -19,6 +19,7 @@ from typing import Literal
 
 import mujoco
 from drivetwin.worlds.catalog import Category, Part, category
+from drivetwin.worlds.packages import package_hulls
 from drivetwin.worlds.scene import AssetInstance, Pose
 
 __all__ = [
@@ -190,8 +191,6 @@ def _add_hull_geoms(
 ) -> None:
     """A reconstructed asset collides as its convex parts: one mesh geom per hull, the mass
     shared by hull volume (the splats, not these geoms, are what the renderer draws)."""
-    from drivetwin.worlds.reconstruct.package import package_hulls
-
     hulls = package_hulls(package, asset.scale)
     volumes = [_hull_volume(vertices) for vertices in hulls]
     total = sum(volumes)

@@ -13,6 +13,7 @@ import numpy as np
 from drivetwin.worlds.catalog import UnknownCategoryError, category
 from drivetwin.worlds.mujoco_bodies import WHEEL_CORNERS, body_kind, geom_size, part_rgba
 from drivetwin.worlds.mujoco_pool import PARKED_GROUP, POOL_ANCHOR, Slot
+from drivetwin.worlds.packages import package_hulls
 from drivetwin.worlds.scene import AssetInstance, Scene
 
 if TYPE_CHECKING:
@@ -43,8 +44,6 @@ def _expected_geoms(asset: AssetInstance, name: str) -> list[_Expected]:
     """
     cat = category(asset.category)
     if cat.package is not None:
-        from drivetwin.worlds.reconstruct.package import package_hulls
-
         hulls = package_hulls(cat.package, asset.scale)
         mesh = int(mujoco.mjtGeom.mjGEOM_MESH)
         return [(f"{name}/hull{k}", mesh, None, None) for k in range(len(hulls))]

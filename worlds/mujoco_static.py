@@ -13,15 +13,13 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import mujoco
 import numpy as np
+from drivetwin.worlds.heightfield import Heightfield, add_collision_geoms, load_heightfield
+from drivetwin.worlds.packages import HEIGHTFIELD_FILE
 from drivetwin.worlds.road_marks import road_marks
 from drivetwin.worlds.scene import Building, Scene
-
-if TYPE_CHECKING:
-    from drivetwin.worlds.reconstruct.collision import Heightfield
 
 __all__ = [
     "OFFSCREEN_HEIGHT",
@@ -159,18 +157,12 @@ def _terrain_of(scene: Scene) -> Heightfield | None:
     """The height field of the scene's world package, None without one."""
     if scene.package is None:
         return None
-    # Imported here: reconstruction pulls in trimesh and scipy, which worlds without a package never need.
-    from drivetwin.worlds.reconstruct.collision import load_heightfield
-    from drivetwin.worlds.reconstruct.package import HEIGHTFIELD_FILE
-
     path = Path(scene.package) / HEIGHTFIELD_FILE
     return load_heightfield(path) if path.is_file() else None
 
 
 def _add_terrain(spec: mujoco.MjSpec, terrain: Heightfield, scene: Scene) -> None:
     """The terrain height field, colliding like the ground plane (same colour and friction)."""
-    from drivetwin.worlds.reconstruct.collision import add_collision_geoms
-
     (geom,) = add_collision_geoms(spec, heightfield=terrain, prefix=TERRAIN_PREFIX)
     geom.rgba = list(scene.ground.rgba)
     geom.friction = [scene.ground.friction, 0.005, 0.0001]

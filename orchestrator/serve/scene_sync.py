@@ -23,6 +23,7 @@ from drivetwin.orchestrator.serve.world_layer import environment_view, sun_posit
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.meshes import part_mesh
 from drivetwin.worlds.mujoco_bodies import part_rgba
+from drivetwin.worlds.packages import SPLATS_FILE, package_splats
 from drivetwin.worlds.render.splats import SH_C0, Splats
 from drivetwin.worlds.scene import AssetInstance, Environment, Scene
 
@@ -136,13 +137,10 @@ class SceneSync:
             self._world_nodes.append(self.api.add_mesh_simple(
                 f"/world/{surface.name}", surface.mesh.vertices, surface.mesh.faces, color=surface.rgb,
                 flat_shading=True, side="double", cast_shadow=False))  # fmt: skip
-        if scene.package is not None:
-            from drivetwin.worlds.reconstruct.package import SPLATS_FILE, package_splats
-
-            if (Path(scene.package) / SPLATS_FILE).is_file():
-                centres, covariances, colours, opacities = splat_arrays(package_splats(scene.package))
-                self._world_nodes.append(
-                    self.api.add_gaussian_splats("/world/background_splats", centres, covariances, colours, opacities))
+        if scene.package is not None and (Path(scene.package) / SPLATS_FILE).is_file():
+            centres, covariances, colours, opacities = splat_arrays(package_splats(scene.package))
+            self._world_nodes.append(
+                self.api.add_gaussian_splats("/world/background_splats", centres, covariances, colours, opacities))
 
     def _build_assets(self, scene: Scene) -> None:
         for batch in self._batches.values():

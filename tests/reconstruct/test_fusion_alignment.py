@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from drivetwin.worlds.packages import AssetPackage, file_digest
 from drivetwin.worlds.reconstruct.alignment import apply_transform
 from drivetwin.worlds.reconstruct.fusion import FusionError, fuse, fuse_if_complete
-from drivetwin.worlds.reconstruct.package import AssetPackage, file_digest
 from fusion_capture import CAPTURE_OFFSET, fused_package, object_splats, similarity, write_appearance, write_geometry
 
 # Bounds for a 1.6 m object from 6,000 surface splats (measured: 0.13°, 0.2 %, 4.3 mm).

@@ -9,14 +9,9 @@ import mujoco
 import numpy as np
 import pytest
 import trimesh
+from drivetwin.worlds.heightfield import CollisionError, Heightfield, add_collision_geoms, load_heightfield
 from drivetwin.worlds.meshes import category_mesh
 from drivetwin.worlds.reconstruct.capture_lidar import LidarCapture, capture_scene
-from drivetwin.worlds.reconstruct.collision import (
-    CollisionError,
-    Heightfield,
-    add_collision_geoms,
-    load_heightfield,
-)
 from drivetwin.worlds.reconstruct.lidar_mesh import GeometryResult, reconstruct_mesh
 from drivetwin.worlds.reconstruct.pointclouds import PointCloudError
 from drivetwin.worlds.reconstruct.poisson import SurfaceError, simplify_mesh

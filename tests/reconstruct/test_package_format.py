@@ -8,14 +8,10 @@ import shutil
 import numpy as np
 import pytest
 from click.testing import CliRunner
-from drivetwin.worlds.catalog import catalog, placeable_categories, resolve_category
+from drivetwin.worlds.catalog import catalog, package_category, placeable_categories, resolve_category
+from drivetwin.worlds.packages import AssetPackage, AssetPackageError, discover_packages
 from drivetwin.worlds.reconstruct.fusion import fuse
-from drivetwin.worlds.reconstruct.package import (
-    DENSITY_KG_M3,
-    AssetPackage,
-    AssetPackageError,
-    discover_packages,
-)
+from drivetwin.worlds.reconstruct.materials import DENSITY_KG_M3
 from fusion_capture import PIECES, fused_package, write_world_halves
 
 
@@ -54,7 +50,7 @@ def test_a_fused_package_loads_back_with_its_catalog_fields(package_dir):
     assert (low[:2] + high[:2]) / 2 == pytest.approx([0.0, 0.0], abs=1e-9)
     assert len(package.hulls()) == len(PIECES)
     assert set(m.files) >= {"collision/mesh.obj", "visual/splats.ply", "collision/hull_000.obj"}
-    cat = package.category()
+    cat = package_category(package)
     assert cat.package == str(package_dir.resolve()) and "reconstructed" in cat.tags
     assert cat.parts[0].size == pytest.approx((0.8, 0.375, 0.65))
 

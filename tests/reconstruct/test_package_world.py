@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 import trimesh
 from drivetwin.worlds.defaults import load_world
+from drivetwin.worlds.heightfield import load_heightfield
 from drivetwin.worlds.mujoco_adapter import MujocoWorld
 from drivetwin.worlds.mujoco_static import STATIC_PREFIXES, TERRAIN_PREFIX
-from drivetwin.worlds.reconstruct.collision import load_heightfield
+from drivetwin.worlds.packages import HEIGHTFIELD_FILE
 from drivetwin.worlds.reconstruct.fusion import fuse
-from drivetwin.worlds.reconstruct.package import HEIGHTFIELD_FILE
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.hybrid import HybridRenderer
 from drivetwin.worlds.render.splats import Splats

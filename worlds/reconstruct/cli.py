@@ -47,8 +47,9 @@ def _fuse_options(name: str | None, material: str | None, tags: tuple[str, ...])
 
 def _finish(out_dir: Path, options: dict[str, Any]) -> None:
     """Fuse when the other half is there already; say what is missing otherwise."""
+    from drivetwin.worlds.packages import AssetPackageError
+
     from .fusion import FusionError, fuse_if_complete, halves_present
-    from .package import AssetPackageError
 
     try:
         package = fuse_if_complete(out_dir, **options)
@@ -64,7 +65,7 @@ def _finish(out_dir: Path, options: dict[str, Any]) -> None:
 
 def _summary(package: Any, out_dir: Path) -> None:
     """Say what the package is and how to use it."""
-    from .package import user_asset_folder
+    from drivetwin.worlds.packages import user_asset_folder
 
     m = package.manifest
     size = m.dimensions
@@ -171,8 +172,9 @@ def fuse_command(package_dir: Path, kind: str | None, name: str | None, material
 
     Example: drivetwin reconstruct fuse pkg/kerb_stone --material concrete --tag kerb
     """
+    from drivetwin.worlds.packages import AssetPackageError
+
     from .fusion import FusionError, fuse
-    from .package import AssetPackageError
 
     try:
         package = fuse(package_dir, kind=kind, description=description, **_fuse_options(name, material, tags))  # type: ignore[arg-type]
@@ -191,7 +193,8 @@ def report_command(package_dir: Path, out_dir: Path | None, frames: int) -> None
 
     Example: drivetwin reconstruct report pkg/kerb_stone
     """
-    from .package import AssetPackageError
+    from drivetwin.worlds.packages import AssetPackageError
+
     from .report import write_report
 
     try:
@@ -210,7 +213,7 @@ def show_command(package_dir: Path) -> None:
 
     Example: drivetwin reconstruct show pkg/kerb_stone
     """
-    from .package import AssetPackage, AssetPackageError
+    from drivetwin.worlds.packages import AssetPackage, AssetPackageError
 
     try:
         package = AssetPackage.load(package_dir)

@@ -1,22 +1,22 @@
-"""Collision geometry MuJoCo can use: a height field for the ground, convex hulls for objects.
+"""Building collision geometry MuJoCo can use: a height field for the ground, convex hulls for objects.
 
 MuJoCo collides a mesh geom by its convex hull, so a reconstructed scene mesh would collide
 as one big blob. The ground becomes a height field (a regular grid of heights, holes under
 objects filled from their surroundings) and each object is split into convex parts by
-CoACD; `add_collision_geoms` puts both into an MjSpec.
+CoACD. The height field itself, and `add_collision_geoms` that puts both into an MjSpec,
+are core: drivetwin.worlds.heightfield.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
 from pathlib import Path
 
-import mujoco
 import numpy as np
 import numpy.typing as npt
 import trimesh
+from drivetwin.worlds.heightfield import CollisionError, Heightfield
 from drivetwin.worlds.reconstruct import poisson
 from drivetwin.worlds.reconstruct.pointclouds import PointCloud
 from scipy import ndimage
@@ -24,15 +24,11 @@ from scipy.interpolate import griddata
 from scipy.spatial import cKDTree
 
 __all__ = [
-    "CollisionError",
-    "Heightfield",
-    "add_collision_geoms",
     "closed_object_mesh",
     "convex_parts",
     "ground_mask",
     "heightfield_from_mesh",
     "heightfield_from_points",
-    "load_heightfield",
     "write_hulls",
 ]
 
@@ -45,9 +41,6 @@ GROUND_MIN_NORMAL_Z = 0.8
 GROUND_WINDOW_M = 3.0
 # Terrain may rise this much per metre across the window and still count as ground.
 GROUND_MAX_SLOPE = 0.1
-# MuJoCo needs a positive elevation range even for flat ground, and a solid base under it.
-MIN_ELEVATION_RANGE_M = 1e-3
-HEIGHTFIELD_BASE_M = 0.5
 # CoACD's concavity threshold: 0.05 is its default, fine enough for cars at a few hulls each.
 COACD_THRESHOLD = 0.05
 DEFAULT_MAX_HULLS = 8
@@ -62,51 +55,6 @@ COACD_PREPROCESS_RESOLUTION = 20
 COACD_INPUT_FACES = 1000
 # Floor samples under an object lie within this many voxels of one of its points.
 FLOOR_REACH_VOXELS = 2.0
-
-
-class CollisionError(ValueError):
-    """Collision geometry that cannot be built from what was given, and what is allowed."""
-
-
-@dataclass
-class Heightfield:
-    """Ground heights on a regular grid: ``heights[r, c]`` is at (x0 + c·cell, y0 + r·cell).
-
-    ``heights`` is float32 [rows, cols] in metres (absolute, z up); ``origin`` is
-    (x0, y0, z0) with z0 the lowest height; ``cell`` the grid spacing in metres.
-    """
-
-    heights: npt.NDArray[np.float32]
-    origin: F64
-    cell: float
-
-    def height_at(self, x: float, y: float) -> float:
-        """The bilinearly interpolated height at (x, y), clamped to the grid."""
-        rows, cols = self.heights.shape
-        u = float(np.clip((x - self.origin[0]) / self.cell, 0, cols - 1))
-        v = float(np.clip((y - self.origin[1]) / self.cell, 0, rows - 1))
-        return float(ndimage.map_coordinates(self.heights.astype(np.float64), [[v], [u]], order=1)[0])
-
-    def save(self, path: str | Path) -> Path:
-        """Write ``heights``, ``origin`` and ``cell`` to an .npz file; the path."""
-        target = Path(path)
-        target.parent.mkdir(parents=True, exist_ok=True)
-        np.savez(target, heights=self.heights.astype(np.float32), origin=self.origin.astype(np.float64),
-                 cell=np.float64(self.cell))  # fmt: skip
-        return target
-
-
-def load_heightfield(path: str | Path) -> Heightfield:
-    """Read a height field written by `Heightfield.save`."""
-    source = Path(path)
-    if not source.is_file():
-        raise CollisionError(f"height field file not found: {source}")
-    with np.load(source) as archive:
-        missing = {"heights", "origin", "cell"} - set(archive.files)
-        if missing:
-            raise CollisionError(f"{source.name} lacks {sorted(missing)}; a height field has heights, origin, cell")
-        return Heightfield(archive["heights"].astype(np.float32), archive["origin"].astype(np.float64),
-                           float(archive["cell"]))  # fmt: skip
 
 
 def _grid_index(xy: F64, origin: F64, cell: float) -> npt.NDArray[np.intp]:
@@ -264,47 +212,3 @@ def write_hulls(hulls: Sequence[trimesh.Trimesh], folder: str | Path) -> list[Pa
         hull.export(path, file_type="obj")
         paths.append(path)
     return paths
-
-
-def add_collision_geoms(
-    spec: mujoco.MjSpec,
-    *,
-    heightfield: Heightfield | None = None,
-    hulls: Sequence[trimesh.Trimesh] = (),
-    prefix: str = "reconstructed",
-    body: mujoco.MjsBody | None = None,
-) -> list[mujoco.MjsGeom]:
-    """Add a height field geom and one mesh geom per convex hull to `spec` (world body by default).
-
-    Hull vertices are in the body's frame (the world frame for the world body). The height
-    field keeps its absolute heights: its geom sits at z0 with a `HEIGHTFIELD_BASE_M` base.
-    """
-    parent = spec.worldbody if body is None else body
-    geoms: list[mujoco.MjsGeom] = []
-    if heightfield is not None:
-        geoms.append(_add_heightfield(spec, parent, heightfield, f"{prefix}/ground"))
-    for number, hull in enumerate(hulls):
-        name = f"{prefix}/hull_{number:03d}"
-        vertices = np.asarray(hull.vertices, dtype=np.float64)
-        if len(vertices) < 4:
-            raise CollisionError(f"hull {number} has {len(vertices)} vertices; a convex hull needs at least 4")
-        spec.add_mesh(name=name, uservert=vertices.ravel().tolist(), userface=np.asarray(hull.faces).ravel().tolist())
-        geoms.append(parent.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_MESH, meshname=name))
-    if not geoms:
-        raise CollisionError("nothing to add: give a height field, hulls or both")
-    return geoms
-
-
-def _add_heightfield(spec: mujoco.MjSpec, parent: mujoco.MjsBody, field: Heightfield, name: str) -> mujoco.MjsGeom:
-    rows, cols = field.heights.shape
-    if rows < 2 or cols < 2:
-        raise CollisionError(f"a height field needs at least 2 x 2 cells, got {rows} x {cols}")
-    heights = field.heights.astype(np.float64)
-    low = float(heights.min())
-    span = max(float(heights.max()) - low, MIN_ELEVATION_RANGE_M)
-    # MuJoCo's hfield spans [-rx, rx] x [-ry, ry] around its geom, nodes on the corners, row 0 at -y.
-    half_x, half_y = (cols - 1) * field.cell / 2, (rows - 1) * field.cell / 2
-    spec.add_hfield(name=name, size=[half_x, half_y, span, HEIGHTFIELD_BASE_M], nrow=rows, ncol=cols,
-                    userdata=((heights - low) / span).ravel().tolist())  # fmt: skip
-    centre = [field.origin[0] + half_x, field.origin[1] + half_y, low]
-    return parent.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_HFIELD, hfieldname=name, pos=centre)

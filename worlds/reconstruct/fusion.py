@@ -1,6 +1,6 @@
 """Fusion: the geometry half and the appearance half of one capture become one package.
 
-The halves arrive in one folder in the capture frame (see package.py for the layout). Fusion
+The halves arrive in one folder in the capture frame (see drivetwin.worlds.packages for the layout). Fusion
 (1) keeps each half as reconstruction wrote it under `capture/`, (2) checks that the splat
 means lie on the mesh and, when they do not (splats in an SfM frame of unknown scale),
 estimates the similarity that puts them there and applies it to the splats (means,
@@ -23,12 +23,9 @@ from typing import Any, Literal
 import numpy as np
 import numpy.typing as npt
 import trimesh
-from drivetwin.worlds.catalog import Placement, refresh_catalog
-from drivetwin.worlds.render.splats import Splats
-from drivetwin.worlds.scene import EGO_ID, AssetInstance, Bounds, PhysicsProps, Pose, Scene
-
-from .alignment import MIN_COVERAGE, apply_transform, check_alignment, estimate_similarity, surface_samples
-from .package import (
+from drivetwin.worlds.catalog import refresh_catalog
+from drivetwin.worlds.heightfield import load_heightfield
+from drivetwin.worlds.packages import (
     APPEARANCE_REPORT,
     CAMERAS_FILE,
     CAPTURE_DIR,
@@ -43,9 +40,14 @@ from .package import (
     AssetManifest,
     AssetPackage,
     Dimensions,
-    density_for,
+    Placement,
     file_digest,
 )
+from drivetwin.worlds.render.splats import Splats
+from drivetwin.worlds.scene import EGO_ID, AssetInstance, Bounds, PhysicsProps, Pose, Scene
+
+from .alignment import MIN_COVERAGE, apply_transform, check_alignment, estimate_similarity, surface_samples
+from .materials import density_for
 
 __all__ = ["FusionError", "fuse", "fuse_if_complete", "halves_present", "package_name"]
 
@@ -175,7 +177,7 @@ def fuse(
     """Fuse the halves in `out_dir` into a package there and return it (loaded, validated).
 
     kind: "asset" (default when convex hulls exist) or "world"; material or a tag picks the
-    density of the mass estimate (package.DENSITY_KG_M3).
+    density of the mass estimate (materials.DENSITY_KG_M3).
     """
     started = time.perf_counter()
     root = Path(out_dir)
@@ -366,8 +368,6 @@ def _write_world(root: Path, manifest: AssetManifest, mesh: trimesh.Trimesh) -> 
     cx, cy = float((low[0] + high[0]) / 2), float((low[1] + high[1]) / 2)
     cz = 0.0
     if (root / HEIGHTFIELD_FILE).is_file():  # the ego stands on the terrain, not buried in it
-        from .collision import load_heightfield
-
         cz = float(load_heightfield(root / HEIGHTFIELD_FILE).height_at(cx, cy))
     scene = Scene(
         name=manifest.name,

@@ -27,6 +27,7 @@ import numpy as np
 import numpy.typing as npt
 import open3d as o3d
 import trimesh
+from drivetwin.worlds.heightfield import Heightfield
 from drivetwin.worlds.reconstruct import collision, geometry_metrics, poisson, registration
 from drivetwin.worlds.reconstruct.pointclouds import PointCloud, PointCloudError, read_point_cloud, write_ply
 
@@ -57,7 +58,7 @@ class GeometryResult:
     hull_paths: list[Path] = field(default_factory=list)
     hulls: list[trimesh.Trimesh] = field(default_factory=list)
     heightfield_path: Path | None = None
-    heightfield: collision.Heightfield | None = None
+    heightfield: Heightfield | None = None
     report: dict[str, Any] = field(default_factory=dict)
 
 
@@ -197,7 +198,7 @@ def _load_mesh(path: Path) -> trimesh.Trimesh:
 
 
 def _object_meshes(
-    cloud: PointCloud, objects: npt.NDArray[np.bool_], ground: collision.Heightfield | None, voxel_m: float
+    cloud: PointCloud, objects: npt.NDArray[np.bool_], ground: Heightfield | None, voxel_m: float
 ) -> list[trimesh.Trimesh]:
     """A closed mesh per cluster of object points, standing on the ground beneath it."""
     if not objects.any():

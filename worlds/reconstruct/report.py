@@ -15,11 +15,10 @@ from typing import Any
 
 from drivetwin.worlds.catalog import category, refresh_catalog
 from drivetwin.worlds.mujoco_adapter import MujocoWorld
+from drivetwin.worlds.packages import ASSETS_ENV, POINTS_FILE, WORLD_SCENE, AssetPackage
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.hybrid import HybridRenderer
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Bounds, PhysicsProps, Pose, Scene
-
-from .package import ASSETS_ENV, POINTS_FILE, WORLD_SCENE, AssetPackage
 
 __all__ = ["measure_fps", "preview_scene", "write_report"]
 

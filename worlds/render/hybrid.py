@@ -33,6 +33,7 @@ import numpy as np
 import numpy.typing as npt
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.mujoco_adapter import MujocoWorld, UnknownBodyError
+from drivetwin.worlds.packages import SPLATS_FILE, package_splats
 from drivetwin.worlds.scene import Environment, Scene
 
 from ._numba_post import blend_layers
@@ -372,13 +373,9 @@ _facade_cache: dict[int, tuple[object, Splats]] = {}
 
 def _facades_of(scene: Scene) -> Splats | None:
     """The splats of ``scene``'s world package, else facade splats of its buildings (made once per set)."""
-    if scene.package is not None:
-        # Imported here: the package module imports this renderer's splats module.
-        from drivetwin.worlds.reconstruct.package import SPLATS_FILE, package_splats
-
-        if (Path(scene.package) / SPLATS_FILE).is_file():
-            background = package_splats(scene.package)  # cached per file and modification time
-            return background if len(background) else None
+    if scene.package is not None and (Path(scene.package) / SPLATS_FILE).is_file():
+        background = package_splats(scene.package)  # cached per file and modification time
+        return background if len(background) else None
     buildings = tuple(scene.buildings)
     cached = _facade_cache.get(id(scene))
     if cached is None or cached[0] != buildings:

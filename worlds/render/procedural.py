@@ -13,6 +13,7 @@ import math
 import numpy as np
 import numpy.typing as npt
 from drivetwin.worlds.catalog import category
+from drivetwin.worlds.packages import package_splats
 from drivetwin.worlds.scene import Scene
 
 from .splats import SH_C0, Splats
@@ -84,11 +85,9 @@ def asset_splats(category_name: str, *, scale: float = 1.0, spacing_m: float = 0
                  seed: int = 0) -> Splats:  # fmt: skip
     """Body-frame splats covering a catalog category's parts (for `attachments`), so an
     asset can be drawn as splats while its MuJoCo geoms stay its collision proxy."""
-    # Reconstructed asset package: its own fitted splats (drivetwin.worlds.reconstruct.package).
+    # Reconstructed asset package: its own fitted splats.
     package = category(category_name).package
     if package is not None:
-        from drivetwin.worlds.reconstruct.package import package_splats
-
         return package_splats(package, scale=scale)
     rng = np.random.default_rng(seed)
     points, colours = [], []

@@ -20,7 +20,8 @@ frame, so its Scene, background splats and terrain share coordinates.
 
 Packages are found in the folders on DRIVETWIN_ASSETS (os.pathsep-separated; each entry a
 package or a folder of packages) and in the user's asset folder, `<cache>/assets` (cache:
-DRIVETWIN_CACHE, default ~/.cache/drivetwin). Each asset package becomes a catalog category.
+DRIVETWIN_CACHE, default ~/.cache/drivetwin). Each asset package becomes a catalog category
+(drivetwin.worlds.catalog); reconstruction (drivetwin.worlds.reconstruct) writes packages.
 """
 
 from __future__ import annotations
@@ -28,7 +29,6 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -37,8 +37,8 @@ from typing import TYPE_CHECKING, Any, Literal
 import numpy as np
 import numpy.typing as npt
 from drivetwin.worlds import paths
-from drivetwin.worlds.catalog import Category, Part, Placement
-from drivetwin.worlds.render.splats import SH_C0, Splats, SplatsError
+from drivetwin.worlds.heightfield import CollisionError, Heightfield, load_heightfield
+from drivetwin.worlds.render.splats import Splats, SplatsError
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
 if TYPE_CHECKING:
@@ -48,7 +48,6 @@ __all__ = [
     "APPEARANCE_REPORT",
     "ASSETS_ENV",
     "CAMERAS_FILE",
-    "DENSITY_KG_M3",
     "GEOMETRY_REPORT",
     "HEIGHTFIELD_FILE",
     "MANIFEST",
@@ -59,13 +58,12 @@ __all__ = [
     "AssetPackage",
     "AssetPackageError",
     "Dimensions",
-    "density_for",
+    "Placement",
     "discover_packages",
     "file_digest",
     "package_folders",
     "package_hulls",
     "package_splats",
-    "packaged_categories",
     "user_asset_folder",
 ]
 
@@ -84,27 +82,8 @@ ASSETS_ENV = "DRIVETWIN_ASSETS"
 FORMAT_VERSION: Literal[1] = 1
 # A hull thinner than this (m³) is a sliver MuJoCo cannot compute inertia for; it is skipped.
 MIN_HULL_VOLUME_M3 = 1e-9
-# Bulk densities (kg/m³) of what a scanned object is mostly made of. Hollow things (vehicles,
-# furniture, bins) use the mass of the object over the volume of its convex hull.
-DENSITY_KG_M3: dict[str, float] = {
-    "concrete": 2400.0,
-    "stone": 2600.0,
-    "rock": 2600.0,
-    "asphalt": 2300.0,
-    "brick": 1900.0,
-    "metal": 7850.0,
-    "wood": 600.0,
-    "plastic": 950.0,
-    "rubber": 1100.0,
-    "foam": 30.0,
-    "soil": 1500.0,
-    "vegetation": 400.0,
-    "vehicle": 180.0,
-    "furniture": 250.0,
-    "container": 150.0,
-    "default": 1000.0,  # water: a neutral guess when nothing is known
-}
-
+# Where an asset may stand; the catalog's categories use the same words.
+Placement = Literal["road", "sidewalk", "drivable", "anywhere"]
 Matrix4 = list[list[float]]
 _IDENTITY: Matrix4 = [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)]
 
@@ -164,17 +143,6 @@ class AssetManifest(BaseModel):
         if matrix.shape != (4, 4) or not np.all(np.isfinite(matrix)):
             raise ValueError("must be a 4x4 matrix of finite numbers")
         return value
-
-
-def density_for(material: str | None, tags: Iterable[str] = ()) -> tuple[str, float]:
-    """(material, density) for a material name or, failing that, the first tag with a density."""
-    for key in (material, *tags):
-        if key is not None and key.lower() in DENSITY_KG_M3:
-            return key.lower(), DENSITY_KG_M3[key.lower()]
-    if material is not None:
-        known = ", ".join(sorted(DENSITY_KG_M3))
-        raise AssetPackageError(Path("."), [f"unknown material {material!r}; known: {known}"])
-    return "default", DENSITY_KG_M3["default"]
 
 
 def file_digest(path: Path) -> str:
@@ -254,13 +222,14 @@ class AssetPackage:
         """The surface mesh."""
         return _load_mesh(self.root / MESH_FILE)
 
-    def heightfield(self) -> dict[str, npt.NDArray[np.float64]]:
-        """Terrain: heights [rows, cols] (m), origin [x0, y0, z0] (m) and cell (m)."""
+    def heightfield(self) -> Heightfield | None:
+        """The terrain of a world package, None when it has none (a mesh-only world)."""
         path = self.root / HEIGHTFIELD_FILE
+        if not path.is_file():
+            return None
         try:
-            with np.load(path) as data:
-                return {k: np.asarray(data[k], dtype=np.float64) for k in ("heights", "origin", "cell")}
-        except (OSError, KeyError, ValueError) as exc:
+            return load_heightfield(path)
+        except (OSError, ValueError, CollisionError) as exc:
             raise AssetPackageError(self.root, [f"{HEIGHTFIELD_FILE}: {exc}"]) from None
 
     def report(self, which: str) -> dict[str, Any]:
@@ -270,39 +239,6 @@ class AssetPackage:
                 loaded: dict[str, Any] = json.loads(path.read_text(encoding="utf-8"))
                 return loaded
         return {}
-
-    # Catalog ----------------------------------------------------------------------------
-    def category(self) -> Category:
-        """The catalog category this asset package provides."""
-        m = self.manifest
-        size = m.dimensions
-        box = Part(shape="box", size=(size.length / 2, size.width / 2, size.height / 2),
-                   pos=(0.0, 0.0, size.height / 2), rgba=(*self.mean_colour(), 1.0))  # fmt: skip
-        words = tuple(dict.fromkeys([*m.synonyms, m.name.replace("_", " ")]))
-        return Category(
-            name=m.name,
-            description=m.description or f"a reconstructed {m.name.replace('_', ' ')}",
-            length=size.length,
-            width=size.width,
-            height=size.height,
-            mass=m.mass,
-            synonyms=words,
-            tags=tuple(dict.fromkeys(["reconstructed", *m.tags])),
-            placement=m.placement,
-            motion=m.motion,
-            max_count=m.max_count,
-            parts=(box,),
-            package=str(self.root.resolve()),
-        )
-
-    def mean_colour(self) -> tuple[float, float, float]:
-        """The splats' mean base colour (0..1), used for the collision proxy's rgba."""
-        sh = package_splats(self.root).sh  # cached: the catalog asks on every discovery
-        if not len(sh):
-            return (0.5, 0.5, 0.5)
-        r, g, b = (float(v) for v in np.clip(0.5 + SH_C0 * sh[:, 0].mean(axis=0), 0.0, 1.0))
-        return (r, g, b)
-
 
 def _mtime_key(paths: list[Path]) -> tuple[tuple[str, int], ...]:
     return tuple((p.name, p.stat().st_mtime_ns) for p in paths)
@@ -403,14 +339,3 @@ def discover_packages(
             if kind is None or package.manifest.kind == kind:
                 found.setdefault(package.name, package)
     return list(found.values())
-
-
-def packaged_categories() -> list[Category]:
-    """A catalog category for every asset package found (the catalog merges these)."""
-    categories = []
-    for package in discover_packages("asset"):
-        try:
-            categories.append(package.category())
-        except AssetPackageError:
-            continue  # unreadable splats: the package stays out of the catalog
-    return categories
