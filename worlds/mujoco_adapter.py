@@ -10,7 +10,6 @@ scene (used by property tests of random edit sequences).
 
 from __future__ import annotations
 
-import math
 import time
 from dataclasses import dataclass
 
@@ -26,6 +25,7 @@ from drivetwin.worlds.mujoco_static import (
     configure_spec,
     static_signature,
 )
+from drivetwin.worlds.rotation import yaw_of_quat
 from drivetwin.worlds.scene import AssetInstance, Pose, Scene
 
 __all__ = [
@@ -124,12 +124,6 @@ def scene_diff(old: Scene, new: Scene) -> tuple[dict[str, AssetInstance], dict[s
 
 def _arena_bytes(pool: BodyPool) -> int:
     return max(ARENA_MIN_BYTES, ARENA_BYTES_PER_SLOT * len(pool.slots))
-
-
-def yaw_of_quat(quat: np.ndarray) -> float:
-    """The heading (rotation about z) of a unit quaternion (w, x, y, z)."""
-    w, x, y, z = (float(v) for v in quat)
-    return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
 
 
 class MujocoWorld:
@@ -308,7 +302,7 @@ class MujocoWorld:
         else:
             x, y, z = data.xpos[index].tolist()
             w, qx, qy, qz = data.xquat[index].tolist()
-        return x, y, z, math.atan2(2.0 * (w * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz))
+        return x, y, z, yaw_of_quat((w, qx, qy, qz))
 
     def _pose_source(self, body: int) -> tuple[int, int]:
         model = self.model

@@ -20,6 +20,7 @@ from typing import Literal
 import mujoco
 from drivetwin.worlds.catalog import Category, Part, category
 from drivetwin.worlds.packages import package_hulls
+from drivetwin.worlds.rotation import yaw_quat
 from drivetwin.worlds.scene import AssetInstance, Pose
 
 __all__ = [
@@ -33,7 +34,6 @@ __all__ = [
     "part_volume",
     "set_body_frame",
     "wheel_corner",
-    "yaw_quat",
 ]
 
 BodyKind = Literal["vehicle", "mocap", "free", "welded"]
@@ -129,11 +129,6 @@ def part_rgba(part: Part, asset: AssetInstance) -> tuple[float, float, float, fl
     if part.role == "body" and asset.appearance.rgba is not None:
         return asset.appearance.rgba
     return part.rgba
-
-
-def yaw_quat(yaw: float) -> list[float]:
-    """The unit quaternion (w, x, y, z) of a rotation by `yaw` about z."""
-    return [math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)]
 
 
 def set_body_frame(body: mujoco.MjsBody, pose: Pose) -> None:

@@ -21,7 +21,8 @@ import mujoco
 import numpy as np
 import numpy.typing as npt
 from drivetwin.worlds.catalog import Category, catalog, category
-from drivetwin.worlds.mujoco_bodies import BodyKind, add_asset_body, body_kind, yaw_quat
+from drivetwin.worlds.mujoco_bodies import BodyKind, add_asset_body, body_kind
+from drivetwin.worlds.rotation import quat_to_matrix, yaw_quat
 from drivetwin.worlds.scene import Appearance, AssetInstance, PhysicsProps, Pose
 
 __all__ = [
@@ -304,24 +305,18 @@ class BodyPool:
         slot.body.quat = [1.0, 0.0, 0.0, 0.0]
 
 
-def _rotation(quat: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
-    mat = np.empty(9)
-    mujoco.mju_quat2Mat(mat, quat)
-    return mat.reshape(3, 3)
-
-
 def _set_frames(
     slot: Slot, position: npt.NDArray[np.float64], quat: npt.NDArray[np.float64], model: mujoco.MjModel, data: mujoco.MjData
 ) -> None:
     """A one-body slot's world frames (body, inertia, geoms) at `position`, `quat`: what
     mj_kinematics would compute for it, without a pass over every body of a large world."""
     body = slot.body_id
-    rotation = _rotation(quat)
+    rotation = quat_to_matrix(quat)
     data.xpos[body] = position
     data.xquat[body] = quat
     data.xmat[body] = rotation.ravel()
     data.xipos[body] = position + rotation @ model.body_ipos[body]
-    data.ximat[body] = (rotation @ _rotation(model.body_iquat[body])).ravel()
+    data.ximat[body] = (rotation @ quat_to_matrix(model.body_iquat[body])).ravel()
     for geom in slot.geoms:
         data.geom_xpos[geom.id] = position + rotation @ model.geom_pos[geom.id]
-        data.geom_xmat[geom.id] = (rotation @ _rotation(model.geom_quat[geom.id])).ravel()
+        data.geom_xmat[geom.id] = (rotation @ quat_to_matrix(model.geom_quat[geom.id])).ravel()

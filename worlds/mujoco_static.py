@@ -19,6 +19,7 @@ import numpy as np
 from drivetwin.worlds.heightfield import Heightfield, add_collision_geoms, load_heightfield
 from drivetwin.worlds.packages import HEIGHTFIELD_FILE
 from drivetwin.worlds.road_marks import road_marks
+from drivetwin.worlds.rotation import look_at_quat, yaw_pitch_quat, yaw_quat
 from drivetwin.worlds.scene import Building, Scene
 
 __all__ = [
@@ -69,19 +70,6 @@ def static_signature(scene: Scene) -> tuple[object, ...]:
     return (scene.bounds, scene.ground, scene.roads, tuple(scene.buildings), scene.package)
 
 
-def _look_at_quat(eye: Sequence[float], target: Sequence[float]) -> list[float]:
-    """A camera quaternion looking from `eye` at `target` with z up (camera looks along -z)."""
-    forward = np.asarray(target, float) - np.asarray(eye, float)
-    forward /= np.linalg.norm(forward)
-    right = np.cross(forward, (0.0, 0.0, 1.0))
-    right /= np.linalg.norm(right)
-    up = np.cross(right, forward)
-    rotation = np.stack([right, up, -forward], axis=1)
-    quat = np.zeros(4)
-    mujoco.mju_mat2Quat(quat, rotation.flatten())
-    return [float(q) for q in quat]
-
-
 def configure_spec(spec: mujoco.MjSpec, scene: Scene) -> None:
     """Options and visuals that do not depend on edits: buffer, clip, lights, view camera."""
     bounds = scene.bounds
@@ -106,7 +94,7 @@ def configure_spec(spec: mujoco.MjSpec, scene: Scene) -> None:
     heading = (math.cos(ego.yaw), math.sin(ego.yaw))
     eye = (ego.x - 8.0 * heading[0], ego.y - 8.0 * heading[1], 4.0)
     target = (ego.x + 10.0 * heading[0], ego.y + 10.0 * heading[1], 0.5)
-    spec.worldbody.add_camera(name=VIEW_CAMERA, pos=list(eye), quat=_look_at_quat(eye, target), fovy=60.0)
+    spec.worldbody.add_camera(name=VIEW_CAMERA, pos=list(eye), quat=look_at_quat(eye, target), fovy=60.0)
 
 
 def add_static_geoms(spec: mujoco.MjSpec, scene: Scene) -> None:
@@ -179,8 +167,7 @@ def _segment_frame(
         return None
     dz = rise[1] - rise[0]
     yaw, pitch = math.atan2(dy, dx), -math.atan2(dz, flat)  # MuJoCo's +y rotation tips +x down
-    cy, sy, cp, sp = math.cos(yaw / 2), math.sin(yaw / 2), math.cos(pitch / 2), math.sin(pitch / 2)
-    quat = [cy * cp, -sy * sp, cy * sp, sy * cp]  # yaw about z, then pitch about the new y
+    quat = list(yaw_pitch_quat(yaw, pitch))
     return math.hypot(flat, dz) / 2, -dy / flat, dx / flat, (rise[0] + rise[1]) / 2, quat
 
 
@@ -330,7 +317,7 @@ def _add_building(spec: mujoco.MjSpec, building: Building) -> None:
         name=f"building/{building.id}",
         type=mujoco.mjtGeom.mjGEOM_BOX,
         pos=[cx, cy, building.height / 2],
-        quat=[math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)],
+        quat=list(yaw_quat(yaw)),
         size=[half_length, half_width, building.height / 2],
         rgba=rgba,
     )

@@ -22,6 +22,7 @@ import numpy.typing as npt
 from drivetwin.worlds.mujoco_adapter import MujocoWorld, collision_groups
 from drivetwin.worlds.render.camera import Camera
 from drivetwin.worlds.render.hybrid import Frame, HybridRenderer
+from drivetwin.worlds.rotation import yaw_pitch_matrix
 
 __all__ = ["CameraSensor", "Lidar", "Mount", "Reading", "SensorError", "SensorRig",
            "save_pointcloud"]  # fmt: skip
@@ -42,15 +43,6 @@ class SensorError(ValueError):
     """A sensor was configured with values it cannot work with."""
 
 
-def _rotation(yaw: float, pitch: float) -> F64:
-    """Rotation of yaw about z, then pitch about the new y (positive pitch looks down)."""
-    cy, sy, cp, sp = math.cos(yaw), math.sin(yaw), math.cos(pitch), math.sin(pitch)
-    rz = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
-    ry = np.array([[cp, 0.0, sp], [0.0, 1.0, 0.0], [-sp, 0.0, cp]])
-    rotation: F64 = rz @ ry
-    return rotation
-
-
 @dataclass(frozen=True)
 class Mount:
     """Where a sensor sits: on an asset's body (``asset_id``) or fixed in the world (None).
@@ -67,7 +59,7 @@ class Mount:
     def sensor_to_world(self, world: MujocoWorld) -> F64:
         """The [4,4] sensor-to-world transform at the world's current state."""
         local = np.eye(4)
-        local[:3, :3] = _rotation(self.yaw, self.pitch)
+        local[:3, :3] = yaw_pitch_matrix(self.yaw, self.pitch)
         local[:3, 3] = self.offset
         if self.asset_id is None:
             return local

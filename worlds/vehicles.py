@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 import mujoco
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.mujoco_adapter import MujocoWorld
+from drivetwin.worlds.rotation import yaw_of_quat, yaw_quat
 from drivetwin.worlds.scene import AssetInstance
 
 __all__ = [
@@ -152,8 +153,7 @@ class VehicleController:
     def state(self, data: mujoco.MjData) -> VehicleState:
         """Rear-axle position, heading and forward speed from the chassis free joint."""
         q = data.qpos[self._qpos : self._qpos + 7]
-        w, qx, qy, qz = (float(v) for v in q[3:7])
-        yaw = math.atan2(2.0 * (w * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz))
+        yaw = yaw_of_quat(q[3:7])
         half = self.geometry.wheelbase / 2.0
         x = float(q[0]) - half * math.cos(yaw)
         y = float(q[1]) - half * math.sin(yaw)
@@ -184,7 +184,7 @@ class VehicleController:
         q = data.qpos
         q[self._qpos] = x
         q[self._qpos + 1] = y
-        q[self._qpos + 3 : self._qpos + 7] = (math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2))
+        q[self._qpos + 3 : self._qpos + 7] = yaw_quat(yaw)
         v = data.qvel
         v[self._qvel : self._qvel + 6] = 0.0
         v[self._qvel] = speed * math.cos(yaw)

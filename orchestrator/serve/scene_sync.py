@@ -19,12 +19,13 @@ import numpy as np
 import numpy.typing as npt
 import viser
 import viser.transforms as vtf
-from drivetwin.orchestrator.serve.world_layer import environment_view, sun_position, world_surfaces, yaw_wxyz
+from drivetwin.orchestrator.serve.world_layer import environment_view, sun_position, world_surfaces
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.meshes import part_mesh
 from drivetwin.worlds.mujoco_bodies import part_rgba
 from drivetwin.worlds.packages import SPLATS_FILE, package_splats
 from drivetwin.worlds.render.splats import SH_C0, Splats
+from drivetwin.worlds.rotation import yaw_quats
 from drivetwin.worlds.scene import AssetInstance, Environment, Scene
 
 __all__ = ["PlanarPose", "SceneSync", "SyncStats", "splat_arrays"]
@@ -168,7 +169,7 @@ class SceneSync:
                 node = f"/assets/{name}/part_{index}"
                 handle = self.api.add_batched_meshes_simple(
                     node, mesh.vertices, mesh.faces,
-                    batched_wxyzs=yaw_wxyz(self._layout.yaws[rows]),
+                    batched_wxyzs=yaw_quats(self._layout.yaws[rows]),
                     batched_positions=self._layout.positions[rows],
                     batched_scales=np.asarray([a.scale for a in members], dtype=np.float64),
                     batched_colors=np.round(colours * 255).astype(np.uint8), lod="off")  # fmt: skip
@@ -182,7 +183,7 @@ class SceneSync:
         node = f"/splat_assets/{asset.id}"
         handle = self.api.add_gaussian_splats(
             node, centres, covariances, colours, opacities,
-            wxyz=yaw_wxyz(self._layout.yaws[row : row + 1])[0], position=self._layout.positions[row])  # fmt: skip
+            wxyz=yaw_quats(self._layout.yaws[row : row + 1])[0], position=self._layout.positions[row])  # fmt: skip
         self._batches[node] = _Batch(handle, np.asarray([row], dtype=np.intp), [asset.id])
         handle.on_click(self._clicked(node))
 
@@ -242,10 +243,10 @@ class SceneSync:
                 handle = batch.handle
                 if isinstance(handle, viser.BatchedMeshHandle):
                     handle.batched_positions = new_positions[batch.rows].astype(np.float32)
-                    handle.batched_wxyzs = yaw_wxyz(new_yaws[batch.rows]).astype(np.float32)
+                    handle.batched_wxyzs = yaw_quats(new_yaws[batch.rows]).astype(np.float32)
                 else:
                     handle.position = new_positions[batch.rows[0]]
-                    handle.wxyz = yaw_wxyz(new_yaws[batch.rows[:1]])[0]
+                    handle.wxyz = yaw_quats(new_yaws[batch.rows[:1]])[0]
                 sent += 1
             self._place_selection()
         self.stats.batches_sent += sent

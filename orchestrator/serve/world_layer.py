@@ -18,7 +18,7 @@ import trimesh
 from drivetwin.worlds.render.look import look_of
 from drivetwin.worlds.scene import Environment, Lane, Scene
 
-__all__ = ["EnvironmentView", "Surface", "environment_view", "lane_z", "sun_position", "world_surfaces", "yaw_wxyz"]
+__all__ = ["EnvironmentView", "Surface", "environment_view", "lane_z", "sun_position", "world_surfaces"]
 
 F64 = npt.NDArray[np.float64]
 RGB = tuple[int, int, int]
@@ -179,13 +179,6 @@ def environment_view(environment: Environment) -> EnvironmentView:
         fog_rgb=_rgb(look.fog_rgb),
         caption=caption,
     )
-
-
-def yaw_wxyz(yaw: F64) -> F64:
-    """Quaternions (w, x, y, z) [N,4] of rotations by `yaw` [N] radians about +z."""
-    half = np.asarray(yaw, dtype=np.float64) / 2.0
-    zeros = np.zeros_like(half)
-    return np.stack([np.cos(half), zeros, zeros, np.sin(half)], axis=-1)
 
 
 def sun_position(to_sun: tuple[float, float, float], distance: float) -> tuple[float, float, float]:

@@ -93,7 +93,8 @@ def project(
         )
         qn = math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz)
         qw, qx, qy, qz = qw / qn, qx / qn, qy / qn, qz / qn
-        # Rows of R (quaternion rotation); R S columns are R[:, c] * scale_c.
+        # Rows of R (quaternion rotation, inline for Numba: drivetwin.worlds.rotation.quat_to_matrix
+        # is the one definition); R S columns are R[:, c] * scale_c.
         r00, r01, r02 = (
             1 - 2 * (qy * qy + qz * qz),
             2 * (qx * qy - qw * qz),

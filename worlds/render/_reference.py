@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
+from drivetwin.worlds.rotation import quat_to_matrix
 
 from .camera import Camera
 from .rasterize import (
@@ -38,17 +39,6 @@ class ProjectedSplat:
     colour: npt.NDArray[np.float64]
 
 
-def _rotation(q: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
-    w, x, y, z = q / np.linalg.norm(q)
-    return np.array(
-        [
-            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
-        ]
-    )
-
-
 def project_reference(splats: Splats, camera: Camera) -> list[ProjectedSplat]:
     """Project each splat; return the ones in front of the camera, in (depth, id) order."""
     view = camera.world_to_camera
@@ -64,7 +54,7 @@ def project_reference(splats: Splats, camera: Camera) -> list[ProjectedSplat]:
         if not camera.near < z < camera.far:
             continue
         scale = np.diag(np.exp(splats.log_scales[i].astype(np.float64)))
-        rs = _rotation(splats.quats[i].astype(np.float64)) @ scale
+        rs = quat_to_matrix(splats.quats[i]) @ scale
         cov_world = rs @ rs.T
         cov_cam = rot_w @ cov_world @ rot_w.T
         # Jacobian of the pinhole projection, x/z and y/z clamped just outside the view.

@@ -54,7 +54,11 @@ class TorchRaster:
 
 
 def rotation_matrices(quats: torch.Tensor) -> torch.Tensor:
-    """Rotation matrices [N,3,3] of wxyz quaternions [N,4] (normalised here), differentiable."""
+    """Rotation matrices [N,3,3] of wxyz quaternions [N,4] (normalised here), differentiable.
+
+    The tensor twin of drivetwin.worlds.rotation.quat_to_matrix (kept here: autograd needs torch
+    operations); tests/worlds/test_rotation.py holds the two to the same answer.
+    """
     q = quats / quats.norm(dim=-1, keepdim=True)
     w, x, y, z = q.unbind(-1)
     rows = [

@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 import numpy.typing as npt
+from drivetwin.worlds.rotation import matrix_to_quat, quat_multiply
 
 __all__ = [
     "SH_C0",
@@ -99,53 +100,6 @@ def eval_sh_colors(sh: npt.NDArray[Any], directions: npt.NDArray[Any]) -> F64:
     basis: F64 = np.stack(sh_basis(d[:, 0], d[:, 1], d[:, 2], degree), axis=1)  # [N, K]
     rgb: F64 = np.einsum("nk,nkc->nc", basis, sh.astype(np.float64)) + 0.5
     return np.maximum(rgb, 0.0)
-
-
-def _quat_to_matrix(q: F64) -> F64:
-    """Rotation matrices [N,3,3] of wxyz quaternions [N,4] (normalised here)."""
-    q = q / np.linalg.norm(q, axis=1, keepdims=True)
-    w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    return np.stack(
-        [
-            np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)], -1),
-            np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], -1),
-            np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], -1),
-        ],
-        axis=1,
-    )
-
-
-def _matrix_to_quat(r: F64) -> F64:
-    """A wxyz quaternion [4] of a rotation matrix [3,3] (Shepperd's method)."""
-    trace = np.trace(r)
-    if trace > 0:
-        s = 2.0 * np.sqrt(trace + 1.0)
-        q = [0.25 * s, (r[2, 1] - r[1, 2]) / s, (r[0, 2] - r[2, 0]) / s, (r[1, 0] - r[0, 1]) / s]
-    else:
-        i = int(np.argmax(np.diag(r)))
-        j, k = (i + 1) % 3, (i + 2) % 3
-        s = 2.0 * np.sqrt(1.0 + r[i, i] - r[j, j] - r[k, k])
-        q = [0.0, 0.0, 0.0, 0.0]
-        q[0] = (r[k, j] - r[j, k]) / s
-        q[1 + i] = 0.25 * s
-        q[1 + j] = (r[j, i] + r[i, j]) / s
-        q[1 + k] = (r[k, i] + r[i, k]) / s
-    return np.asarray(q, dtype=np.float64)
-
-
-def _quat_multiply(a: F64, b: F64) -> F64:
-    """Hamilton product a * b of wxyz quaternions (a [4] broadcast over b [N,4])."""
-    aw, ax, ay, az = a
-    bw, bx, by, bz = b[:, 0], b[:, 1], b[:, 2], b[:, 3]
-    return np.stack(
-        [
-            aw * bw - ax * bx - ay * by - az * bz,
-            aw * bx + ax * bw + ay * bz - az * by,
-            aw * by - ax * bz + ay * bw + az * bx,
-            aw * bz + ax * by - ay * bx + az * bw,
-        ],
-        axis=1,
-    )
 
 
 def _sh_band_rotations(rotation: F64, degree: int) -> list[F64]:
@@ -308,7 +262,7 @@ class Splats:
         if scale <= 0 or not np.allclose(rotation.T @ rotation, np.eye(3), atol=1e-5):
             raise SplatsError("transform must be rotation * uniform positive scale + translation")
         means = self.means.astype(np.float64) @ linear.T + matrix[:3, 3]
-        q = _quat_multiply(_matrix_to_quat(rotation), self.quats.astype(np.float64))
+        q = quat_multiply(matrix_to_quat(rotation), self.quats)
         sh = self.sh.astype(np.float64)
         for band, m in enumerate(_sh_band_rotations(rotation, self.sh_degree), start=1):
             cols = slice(band * band, (band + 1) ** 2)
