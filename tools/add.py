@@ -9,12 +9,15 @@ from drivetwin.tools.along import LANE_ENTRY_M, driving_start
 from drivetwin.tools.appearance import resolve_colour
 from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, RuleViolation
+from drivetwin.tools.footprints import track
 from drivetwin.tools.locate import SEARCH_RADIUS_M, Anchor, Location, find_free_pose, resolve_anchor
 from drivetwin.tools.move import BehaviourSpec, resolve_behaviour
 from drivetwin.tools.rules import NON_COLLIDING_MOTION, check_placement
+from drivetwin.worlds import edits
+from drivetwin.worlds.asset_table import asset_table
 from drivetwin.worlds.catalog import category, placeable_categories
-from drivetwin.worlds.edits import AddAsset, WorldEdit
-from drivetwin.worlds.scene import Appearance, AssetInstance, Lane, PhysicsProps, Pose, Scene
+from drivetwin.worlds.edits import WorldEdit
+from drivetwin.worlds.scene import Appearance, AssetInstance, Lane, PhysicsProps, Pose, Scene, asset_order
 from drivetwin.worlds.surface import lane_at, nearest_on_polyline
 from pydantic import Field
 
@@ -54,7 +57,7 @@ class AddArgs(ToolArgs):
     label: str = Field("", max_length=80, description="the user's words for it")
 
 
-class AddAssetTool(Tool[AddArgs]):
+class AddAsset(Tool[AddArgs]):
     name = "add_asset"
     description = (
         "Add new assets of one category at a location (relative to a landmark, asset, lane, "
@@ -70,6 +73,7 @@ class AddAssetTool(Tool[AddArgs]):
             raise RuleViolation("protected", f"{cat.name} cannot be added; the world has exactly one")
         placed: list[AssetInstance] = []
         others = scene.all_assets()
+        track(scene)  # the free-spot searches below pass lists of its assets: its index answers them
         anchor = resolve_anchor(scene, args.location, cat.length / 2, cat.name)
         located = "location" in args.model_fields_set
         # A behaviour that decides where the asset starts (a skidpad circle, a crossing) uses
@@ -77,7 +81,7 @@ class AddAssetTool(Tool[AddArgs]):
         hint = (anchor.x, anchor.y) if located else None
         yaw = math.radians(args.yaw_deg) if args.yaw_deg is not None else None
         # Walkers may stand among furniture, but not on each other.
-        walkers = [a for a in others if category(a.category).motion in NON_COLLIDING_MOTION]
+        walkers = _walkers(scene)
         for _ in range(args.count):
             template = new_asset(scene, cat.name, {a.id for a in placed}, args.label, args.colour)
             start: Pose | None = None
@@ -104,13 +108,22 @@ class AddAssetTool(Tool[AddArgs]):
                 except RuleViolation as exc:
                     raise _fewer_fit(exc, args.count, len(placed), cat.name, anchor) from exc
             placed.append(template.model_copy(update={"pose": pose}))
-        edit = WorldEdit(ops=tuple(AddAsset(asset=a) for a in placed))
+        edit = WorldEdit(ops=tuple(edits.AddAsset(asset=a) for a in placed))
         cx = sum(a.pose.x for a in placed) / len(placed)
         cy = sum(a.pose.y for a in placed) / len(placed)
         where = f" {anchor.spot.label}" if anchor.spot else f" near {anchor.near.name}" if anchor.near else ""
         ids = ", ".join(a.id for a in placed)
         return ToolResult(edit, f"added {ids}{where} around ({cx:.1f}, {cy:.1f})", (cx, cy),
                           {"ids": [a.id for a in placed]})
+
+
+def _walkers(scene: Scene) -> list[AssetInstance]:
+    """The scene's walkers (by category, not a scan of every asset), in canonical order."""
+    groups = asset_table(scene.assets).by_category()
+    walking = [a for name, group in groups.items() if category(name).motion in NON_COLLIDING_MOTION for a in group]
+    if category(scene.ego.category).motion in NON_COLLIDING_MOTION:
+        walking.append(scene.ego)
+    return sorted(walking, key=asset_order)
 
 
 def _fewer_fit(exc: RuleViolation, wanted: int, fitted: int, name: str, anchor: Anchor) -> RuleViolation:

@@ -16,7 +16,7 @@ from collections.abc import Iterable
 from dataclasses import replace
 from typing import Any, cast
 
-from drivetwin.tools.add import AddAssetTool
+from drivetwin.tools.add import AddAsset
 from drivetwin.tools.appearance import SetAssetAppearance, SetLighting, SetTimeOfDay, SetWeather
 from drivetwin.tools.arrange import ArrangeAssets
 from drivetwin.tools.base import FAMILIES, Family, Tool, ToolCall, ToolResult, overridden_host_methods
@@ -37,7 +37,7 @@ def builtin_tools() -> list[Tool[Any]]:
     """One instance of every built-in Worker, in family order."""
     return [
         FindAssets(), FindLandmarks(), FindLanes(), AssetProperties(),
-        AddAssetTool(),
+        AddAsset(),
         RemoveAssets(),
         PlaceAsset(),
         MoveAsset(), SetBehaviour(),

@@ -8,7 +8,7 @@ from pathlib import Path
 
 PLUGIN_TEMPLATE = '''
 import os, sys, time
-from drivetwin.tools.add import AddArgs, AddAssetTool
+from drivetwin.tools.add import AddArgs, AddAsset
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.worlds.scene import Pose
 {module_level}
@@ -24,7 +24,7 @@ class Plug(Tool[Args]):
     Args = Args
 
     def propose(self, args, scene):
-        result = AddAssetTool().propose(AddArgs(category="traffic_cone"), scene)
+        result = AddAsset().propose(AddArgs(category="traffic_cone"), scene)
 {body}
         return result
 {extra}
