@@ -24,7 +24,7 @@ from drivetwin.tools import ToolCall
 from drivetwin.worlds.bench_physics import PROP_MIX
 from drivetwin.worlds.campus import build_campus
 from drivetwin.worlds.catalog import category
-from drivetwin.worlds.scene import MAX_ASSETS, AssetInstance, PhysicsProps, Pose, Scene
+from drivetwin.worlds.scene import MAX_ASSETS, AssetInstance, PhysicsProps, Pose, Scene, asset_order
 from drivetwin.worlds.simulation import Simulation
 from drivetwin.worlds.surface import building_at
 
@@ -90,7 +90,8 @@ def crowded_campus(n: int) -> Scene:
         cat, dynamic = CROWD_MIX[k % len(CROWD_MIX)]
         extra.append(AssetInstance(id=f"crowd_{cat}_{k}", category=cat, pose=Pose(x=x, y=y),
                                    physics=PhysicsProps(mass=category(cat).mass, dynamic=dynamic)))  # fmt: skip
-    return scene.model_copy(update={"assets": [*scene.assets, *extra]})
+    # In canonical order, as every scene that was validated (loaded, built) holds its assets.
+    return scene.model_copy(update={"assets": sorted([*scene.assets, *extra], key=asset_order)})
 
 
 def _edits() -> list[tuple[str, str, ToolCall]]:

@@ -45,10 +45,12 @@ def footprints_overlap(a: AssetInstance, b: AssetInstance, tolerance: float = OV
     return overlap(footprint_of(a), footprint_of(b), tolerance)
 
 
-def assets_near(assets: Sequence[AssetInstance], x: float, y: float, reach: float) -> list[AssetInstance]:
+def assets_near(assets: Sequence[AssetInstance], x: float, y: float, reach: float,
+                scene: Scene | None = None) -> list[AssetInstance]:
     """The assets whose footprints come within `reach` metres of (x, y), in the order given,
-    found through the grid index (what a free-spot search must check around its disc)."""
-    return near(assets, x, y, reach)
+    found through the grid index (what a free-spot search must check around its disc).
+    `scene`: the scene whose assets `assets` mostly are, if known (its index answers)."""
+    return near(assets, x, y, reach, scene)
 
 
 def settle_on_roads(scene: Scene, edit: WorldEdit) -> WorldEdit:
@@ -106,7 +108,7 @@ def check_placement(scene: Scene, asset: AssetInstance, others: Iterable[AssetIn
     _check_surface(scene, asset, cat)
     if cat.motion in NON_COLLIDING_MOTION:
         return
-    hits = overlapping(others if isinstance(others, Sequence) else list(others), probe)
+    hits = overlapping(others if isinstance(others, Sequence) else list(others), probe, scene)
     if hits:
         raise RuleViolation(
             "overlap",

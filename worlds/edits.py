@@ -114,7 +114,7 @@ class WorldEdit(BaseModel):
         Copy-on-write: the new scene shares every asset the edit leaves alone, its asset list
         is a copy patched in place (the canonical order kept), and its id lookups come from
         `scene`'s patched (drivetwin.worlds.asset_table), so an edit costs what it changes, not
-        the size of the world. How the scene was made is kept (`derivation`) for the views
+        the size of the world. How the scene was made is kept (`lineage`) for the views
         that follow edits instead of re-reading every asset.
         """
         by_id = asset_table(scene.assets).by_id
@@ -165,7 +165,7 @@ class WorldEdit(BaseModel):
         if ego is not scene.ego:
             gone.append(scene.ego)
             came.append(ego)
-        _remember_derivation(scene, after, gone, came)
+        _made(scene, after, gone, came)
         return after
 
     def summary(self) -> list[str]:
@@ -188,41 +188,53 @@ class WorldEdit(BaseModel):
         return lines
 
 
-@dataclass(frozen=True)
-class Derivation:
-    """How `WorldEdit.apply` made a Scene from another: the assets (the ego included) that
-    left and came, matched by identity; every other asset object is shared with the parent."""
+@dataclass(eq=False)
+class Lineage:
+    """A scene's place among the scenes that edits made from one another: its parent's place
+    and the assets (the ego included) that left and came, matched by identity; every other
+    asset object is shared with the parent. Views of a scene (the placement rules' footprint
+    index) follow these steps instead of re-reading thousands of assets."""
 
-    parent: weakref.ref[Scene]
-    gone: tuple[AssetInstance, ...]
-    came: tuple[AssetInstance, ...]
-    # What the made scene held then: a scene changed in place since no longer derives this way.
-    assets: list[AssetInstance]
-    length: int
-    ego: AssetInstance
+    parent: Lineage | None
+    gone: tuple[AssetInstance, ...] = ()
+    came: tuple[AssetInstance, ...] = ()
 
 
-# id(made scene) -> (a weak reference whose callback drops the entry, the derivation)
-_derivations: dict[int, tuple[weakref.ref[Scene], Derivation]] = {}
+# Steps of history kept behind each scene: enough to go from a dry run to its sibling commit,
+# or back through a few undos; older places are let go (a view then re-reads the scene).
+LINEAGE_STEPS = 16
+# id(scene) -> (a weak reference whose callback drops the entry, its lineage, and what the
+# scene held then: one changed in place since is a new root)
+_lineages: dict[int, tuple[weakref.ref[Scene], Lineage, list[AssetInstance], int, AssetInstance]] = {}
 
 
-def _remember_derivation(parent: Scene, made: Scene, gone: list[AssetInstance], came: list[AssetInstance]) -> None:
-    key = id(made)
-    ref = weakref.ref(made, lambda _: _derivations.pop(key, None))
-    _derivations[key] = (ref, Derivation(weakref.ref(parent), tuple(gone), tuple(came), made.assets,
-                                          len(made.assets), made.ego))  # fmt: skip
-
-
-def derivation(scene: Scene) -> Derivation | None:
-    """How `WorldEdit.apply` made `scene` from its parent, or None (not made by an edit, or
+def lineage(scene: Scene) -> Lineage:
+    """`scene`'s place in the history of edits (a new root for a scene no edit made, or one
     changed in place since)."""
-    entry = _derivations.get(id(scene))
-    if entry is None:
-        return None
-    ref, made = entry
-    if ref() is not scene or made.assets is not scene.assets or made.length != len(scene.assets) or made.ego is not scene.ego:
-        return None
-    return made
+    entry = _lineages.get(id(scene))
+    if entry is not None:
+        ref, place, assets, length, ego = entry
+        if ref() is scene and assets is scene.assets and length == len(scene.assets) and ego is scene.ego:
+            return place
+    place = Lineage(None)
+    _remember(scene, place)
+    return place
+
+
+def _remember(scene: Scene, place: Lineage) -> None:
+    key = id(scene)
+    ref = weakref.ref(scene, lambda _: _lineages.pop(key, None))
+    _lineages[key] = (ref, place, scene.assets, len(scene.assets), scene.ego)
+
+
+def _made(parent: Scene, made: Scene, gone: list[AssetInstance], came: list[AssetInstance]) -> None:
+    place = Lineage(lineage(parent), tuple(gone), tuple(came))
+    _remember(made, place)
+    older: Lineage | None = place
+    for _ in range(LINEAGE_STEPS):
+        older = older.parent if older is not None else None
+    if older is not None:
+        older.parent = None  # history this old is not followed: let its assets go
 
 
 def _patched_list(assets: list[AssetInstance], gone: list[AssetInstance], came: list[AssetInstance]) -> list[AssetInstance]:
