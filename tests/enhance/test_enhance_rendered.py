@@ -32,7 +32,7 @@ class Rendered:
     depth: np.ndarray
 
 
-def campus(
+def campus_with_a_car_ahead(
     car_ahead: float = 10.0,
     car_left: float = OPPOSITE_LANE_M,
     cone: bool = False,
@@ -70,11 +70,11 @@ def render(scene: Scene) -> Rendered:
 @pytest.fixture(scope="module")
 def frames() -> dict[str, Rendered]:
     return {
-        "baseline": render(campus()),
-        "car 1 m sideways": render(campus(car_left=OPPOSITE_LANE_M + 1.0)),
-        "car 2 m sideways": render(campus(car_left=OPPOSITE_LANE_M + 2.0)),
-        "with cone": render(campus(cone=True)),
-        "ego 0.3 m left": render(campus(ego_left=0.3)),
+        "baseline": render(campus_with_a_car_ahead()),
+        "car 1 m sideways": render(campus_with_a_car_ahead(car_left=OPPOSITE_LANE_M + 1.0)),
+        "car 2 m sideways": render(campus_with_a_car_ahead(car_left=OPPOSITE_LANE_M + 2.0)),
+        "with cone": render(campus_with_a_car_ahead(cone=True)),
+        "ego 0.3 m left": render(campus_with_a_car_ahead(ego_left=0.3)),
     }
 
 

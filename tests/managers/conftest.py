@@ -18,7 +18,6 @@ from drivetwin.orchestrator.backends.base import Completion, CompletionRequest
 from drivetwin.orchestrator.planning.grounding import Grounder
 from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 from drivetwin.orchestrator.session import Session
-from drivetwin.worlds.defaults import load_world
 from drivetwin.worlds.scene import Scene
 
 
@@ -81,11 +80,6 @@ def requirement(kind: str, what: str = "", where: str = "", how: str = "") -> di
 def call(tool: str, **args: Any) -> dict[str, Any]:
     """A Jr. manager answer."""
     return {"tool": tool, "args": args}
-
-
-@pytest.fixture(scope="session")
-def campus() -> Scene:
-    return load_world("campus")
 
 
 @pytest.fixture

@@ -19,7 +19,7 @@ def _luminance(rgb: np.ndarray) -> np.ndarray:
 
 
 @pytest.fixture(scope="module")
-def campus() -> tuple[MujocoWorld, HybridRenderer]:
+def campus_view() -> tuple[MujocoWorld, HybridRenderer]:
     world = MujocoWorld.from_scene(load_world("campus"))
     return world, HybridRenderer(world, seed=7)
 
@@ -30,16 +30,16 @@ def test_the_sun_is_high_at_noon_low_at_dusk_and_down_at_midnight() -> None:
     assert look_of(Environment(time_of_day="12:30")).to_sun[1] < 0  # due south at noon
 
 
-def test_a_night_frame_is_darker_than_a_noon_frame(campus) -> None:  # type: ignore[no-untyped-def]
-    world, renderer = campus
+def test_a_night_frame_is_darker_than_a_noon_frame(campus_view) -> None:  # type: ignore[no-untyped-def]
+    world, renderer = campus_view
     camera = default_camera(world.scene, WIDTH, HEIGHT)
     noon = renderer.render(camera, Environment(time_of_day="12:00")).rgb
     night = renderer.render(camera, Environment(time_of_day="23:00")).rgb
     assert _luminance(night).mean() < 0.4 * _luminance(noon).mean()
 
 
-def test_street_lights_glow_at_night_only_when_they_are_on(campus) -> None:  # type: ignore[no-untyped-def]
-    world, renderer = campus
+def test_street_lights_glow_at_night_only_when_they_are_on(campus_view) -> None:  # type: ignore[no-untyped-def]
+    world, renderer = campus_view
     camera = chase_camera(world, width=WIDTH, height=HEIGHT)
     on = Environment(time_of_day="23:00", lighting=Lighting(street_lights="on"))
     off = Environment(time_of_day="23:00", lighting=Lighting(street_lights="off", vehicle_lights="off"))
@@ -48,8 +48,8 @@ def test_street_lights_glow_at_night_only_when_they_are_on(campus) -> None:  # t
     assert _luminance(lit).mean() > _luminance(dark).mean()
 
 
-def test_rain_changes_the_frame_the_same_way_every_time_for_a_seed(campus) -> None:  # type: ignore[no-untyped-def]
-    world, renderer = campus
+def test_rain_changes_the_frame_the_same_way_every_time_for_a_seed(campus_view) -> None:  # type: ignore[no-untyped-def]
+    world, renderer = campus_view
     camera = chase_camera(world, width=WIDTH, height=HEIGHT)
     rain = Environment(weather=Weather(kind="rain", intensity=0.8))
     clear = renderer.render(camera, Environment(), time_s=1.0).rgb

@@ -3,17 +3,11 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from drivetwin.tools import ToolRegistry
 from drivetwin.worlds.opendrive import samples
 from drivetwin.worlds.opendrive.package import scene_from_file
 from drivetwin.worlds.scene import Scene
 
 DATA = Path(__file__).parents[1] / "data"
-
-
-@pytest.fixture(scope="session")
-def registry() -> ToolRegistry:
-    return ToolRegistry.default(plugins=False)
 
 
 @pytest.fixture(scope="session")

@@ -18,7 +18,6 @@ from drivetwin.orchestrator.serve.scene_sync import SceneSync, splat_arrays
 from drivetwin.orchestrator.serve.world_layer import environment_view, world_surfaces
 from drivetwin.orchestrator.session import Session
 from drivetwin.worlds.catalog import category
-from drivetwin.worlds.defaults import load_world
 from drivetwin.worlds.render.splats import SH_C0, Splats
 from drivetwin.worlds.scene import Environment, FollowPath, Scene, Weather
 
@@ -28,11 +27,6 @@ def server() -> Iterator[viser.ViserServer]:
     server = viser.ViserServer(host="127.0.0.1", port=0, verbose=False)
     yield server
     server.stop()
-
-
-@pytest.fixture
-def campus() -> Scene:
-    return load_world("campus")
 
 
 @pytest.fixture
