@@ -280,8 +280,9 @@ def eval_group() -> None:
 @click.option("--out", "out_path", type=click.Path(dir_okay=False, path_type=Path), required=True,
               help="records file (JSON Lines); an existing one is resumed")
 @click.option("--only", multiple=True, help="run only cases of this grade or task (repeatable), e.g. --only direct")
+@click.option("--quiet", "-q", is_flag=True, help="no progress bar (one is drawn only on a terminal anyway)")
 def eval_run(suite: str, planner_name: str, backend: str | None, model: str | None, trials: int,
-             workers: int, executor: str, out_path: Path, only: tuple[str, ...]) -> None:
+             workers: int, executor: str, out_path: Path, only: tuple[str, ...], quiet: bool) -> None:
     """Run a suite against a planner, resumably.
 
     Example: drivetwin eval run --suite full --planner rules --trials 3 --out runs/rules.jsonl
@@ -296,7 +297,7 @@ def eval_run(suite: str, planner_name: str, backend: str | None, model: str | No
         k: v for k, v in settings.planner_options().items() if v is not None}
     try:
         summary = run_suite(suite, planner_name, planner_options=options, trials=trials, out_path=out_path,
-                            executor=executor, workers=workers, progress=True, only=only)
+                            executor=executor, workers=workers, progress=not quiet, only=only)
     except (RunError, SuiteError, RecordsError) as exc:
         raise click.ClickException(str(exc)) from exc
     click.echo(f"{summary.passed} passed, {summary.failed} failed, {summary.errors} errors; records in {out_path}")
@@ -309,14 +310,20 @@ def eval_run(suite: str, planner_name: str, backend: str | None, model: str | No
 @click.argument("runs", nargs=-1, required=True, type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=Path("eval_report"),
               show_default=True)
-def eval_report(runs: tuple[Path, ...], out_dir: Path) -> None:
+@click.option("--json", "as_json", is_flag=True, help="print the report's figures (report.json) and the files written")
+def eval_report(runs: tuple[Path, ...], out_dir: Path, as_json: bool) -> None:
     """Write Markdown, JSON and PNG reports (Tables 4 and 5) for one or more runs.
 
     Example: drivetwin eval report runs/rules.jsonl runs/llm.jsonl --out report
     """
     from drivetwin.evals import write_report
 
-    for path in write_report(list(runs), out_dir):
+    written = write_report(list(runs), out_dir)
+    if as_json:
+        figures = json.loads((out_dir / "report.json").read_text(encoding="utf-8"))
+        click.echo(json.dumps({"written": [str(p) for p in written], **figures}, indent=2))
+        return
+    for path in written:
         click.echo(f"wrote {path}")
 
 
@@ -325,7 +332,8 @@ def eval_report(runs: tuple[Path, ...], out_dir: Path) -> None:
 @click.option("--model", required=True, help="SDXL folder or cached model id")
 @click.option("--controlnet", default=None, help="SDXL depth ControlNet folder")
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None)
-def enhance(src_dir: Path, model: str, controlnet: str | None, out_dir: Path | None) -> None:
+@click.option("--quiet", "-q", is_flag=True, help="no progress bar (one is drawn only on a terminal anyway)")
+def enhance(src_dir: Path, model: str, controlnet: str | None, out_dir: Path | None, quiet: bool) -> None:
     """Enhance a folder of rendered frames with SDXL img2img; resumes where it stopped.
 
     Example: drivetwin enhance demo_out --model models/sdxl
@@ -335,7 +343,7 @@ def enhance(src_dir: Path, model: str, controlnet: str | None, out_dir: Path | N
 
     target = out_dir or default_output_dir(src_dir)
     try:
-        report = enhance_folder(src_dir, target, EnhanceSettings(model=model, controlnet=controlnet))
+        report = enhance_folder(src_dir, target, EnhanceSettings(model=model, controlnet=controlnet), progress=not quiet)
     except EnhancerError as exc:
         raise click.ClickException(str(exc)) from exc
     click.echo(f"enhanced frames in {target}: {report}")

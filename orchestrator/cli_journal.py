@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import sys
 from pathlib import Path
 
@@ -17,7 +18,8 @@ def journal_group() -> None:
 
 @journal_group.command("check")
 @click.argument("path", type=click.Path(exists=True, dir_okay=False, path_type=Path))
-def journal_check(path: Path) -> None:
+@click.option("--json", "as_json", is_flag=True, help="print the check as JSON (same exit code)")
+def journal_check(path: Path, as_json: bool) -> None:
     """Say whether a journal replays whole; exit 1 if it does not.
 
     Example: drivetwin journal check ~/.local/state/drivetwin/journals/session-20250101-120000-42.jsonl
@@ -26,7 +28,12 @@ def journal_check(path: Path) -> None:
         report = check_journal(path)
     except JournalError as exc:
         raise click.ClickException(str(exc)) from exc
-    click.echo(report.describe())
+    if as_json:
+        fields = {"path": str(report.path), "healthy": report.healthy, "lines": report.lines, "kept": report.kept,
+                  "changes": report.changes, "torn_tail": report.torn_tail, "problem": report.problem}
+        click.echo(json.dumps(fields, indent=2))
+    else:
+        click.echo(report.describe())
     sys.exit(0 if report.healthy else 1)
 
 

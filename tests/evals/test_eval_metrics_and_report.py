@@ -6,10 +6,12 @@ import json
 from pathlib import Path
 
 import pytest
+from click.testing import CliRunner
 from drivetwin.evals.metrics import compute_metrics, pass_hat_k, wilson
 from drivetwin.evals.records import TrialRecord, read_run
 from drivetwin.evals.report import ReportError, write_report
 from drivetwin.evals.runner import run_suite
+from drivetwin.orchestrator.cli import main
 from tiny_planner import TINY_CASES, write_suite
 
 TINY = "tiny_planner:make"
@@ -83,3 +85,14 @@ def test_report_writes_table_4_table_5_json_and_plots_for_runs_side_by_side(tiny
 def test_a_report_needs_at_least_one_run(tmp_path: Path) -> None:
     with pytest.raises(ReportError, match="at least one"):
         write_report([], tmp_path)
+
+
+def test_eval_report_as_json_prints_the_figures_it_wrote(tiny_suite: Path, tmp_path: Path) -> None:
+    run = tmp_path / "run.jsonl"
+    run_suite(tiny_suite, TINY, trials=1, out_path=run, progress=False, label="tiny")
+    result = CliRunner().invoke(main, ["eval", "report", str(run), "--out", str(tmp_path / "report"), "--json"])
+    assert result.exit_code == 0, result.output
+    printed = json.loads(result.output)
+    written = json.loads((tmp_path / "report" / "report.json").read_text(encoding="utf-8"))
+    assert printed["runs"] == written["runs"] and printed["runs"][0]["label"] == "tiny"
+    assert str(tmp_path / "report" / "report.md") in printed["written"]

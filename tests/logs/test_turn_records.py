@@ -145,6 +145,18 @@ def test_logs_list_and_show_give_the_turn_its_request_and_answer(campus: Scene, 
     assert 'set_weather({"kind": "fog"})' in shown.stdout
 
 
+def test_logs_list_as_json_gives_each_session_its_turns(campus: Scene, state: Path) -> None:
+    session = _session(campus, state, ModelPlanner())
+    session.submit("make it foggy")
+    session.close()
+    result = CliRunner().invoke(main, ["logs", "list", "--json"])
+    assert result.exit_code == 0, result.output
+    [listed] = json.loads(result.stdout)
+    [turn] = listed["turns"]
+    assert listed["exchanges"] >= 1 and turn["prompt"] == "make it foggy" and turn["ok"]
+    assert (turn["planner"], turn["model"], turn["prompt_version"]) == ("model-weather", "weather-model/tiny", "weather-1")
+
+
 def test_logs_replay_says_whether_another_planner_makes_the_same_calls(campus: Scene, state: Path) -> None:
     session = _session(campus, state, ModelPlanner())
     session.submit("make it rain")

@@ -58,3 +58,18 @@ def test_an_eval_run_draws_its_bar_on_a_terminal_only(monkeypatch: pytest.Monkey
     run_suite("smoke", "reference", out_path=tmp_path / "b.jsonl", stream=pipe, only=("direct",))
     assert "trials" in screen.getvalue() and "pass" in screen.getvalue()
     assert pipe.getvalue() == ""
+
+
+def test_eval_run_quiet_draws_no_bar_even_on_a_terminal(monkeypatch: pytest.MonkeyPatch, tmp_path) -> None:
+    from click.testing import CliRunner
+    from drivetwin.orchestrator.cli import main
+    from drivetwin.worlds import progress
+
+    monkeypatch.setattr(progress, "on_terminal", lambda stream=None: True)  # as if stderr were a terminal
+    runner = CliRunner()
+    command = ["eval", "run", "--suite", "smoke", "--planner", "reference", "--only", "direct"]
+    drawn = runner.invoke(main, [*command, "--out", str(tmp_path / "a.jsonl")])
+    quiet = runner.invoke(main, [*command, "--out", str(tmp_path / "b.jsonl"), "--quiet"])
+    assert drawn.exit_code == 0 and quiet.exit_code == 0, drawn.output + quiet.output
+    assert "trials" in drawn.stderr and "passed" in drawn.stdout
+    assert "trials" not in quiet.stderr and "passed" in quiet.stdout

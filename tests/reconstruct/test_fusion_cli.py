@@ -55,6 +55,9 @@ def test_the_splats_command_fuses_with_the_geometry_half_and_report_measures_it(
     figures = json.loads((package / "reconstruction_report.json").read_text())
     assert figures["render"]["fps"] > 0 and figures["appearance"]["psnr_db"] > MIN_PSNR_DB
     assert "hybrid renderer FPS" in (package / "reconstruction_report.md").read_text()
+    as_json = runner.invoke(main, ["reconstruct", "report", str(package), "--frames", "1", "--json"])
+    assert as_json.exit_code == 0, as_json.output
+    assert json.loads(as_json.output)["appearance"] == figures["appearance"]  # the same held-out views
 
 
 def test_the_mesh_command_writes_its_half_and_names_the_other_command(tmp_path):

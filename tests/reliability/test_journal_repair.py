@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from click.testing import CliRunner
 from drivetwin.orchestrator.cli import main
@@ -72,3 +74,17 @@ def test_the_cli_checks_and_repairs_and_says_what_it_dropped(written):
     assert repaired.exit_code == 0 and "dropped" in repaired.output and ".bak" in repaired.output
     assert runner.invoke(main, ["journal", "check", str(written)]).exit_code == 0
     assert Journal(written).replay().history.done
+
+
+def test_journal_check_as_json_says_what_it_found_with_the_same_exit_code(written):
+    runner = CliRunner()
+    healthy = runner.invoke(main, ["journal", "check", str(written), "--json"])
+    assert healthy.exit_code == 0, healthy.output
+    found = json.loads(healthy.output)
+    assert found["healthy"] and found["problem"] is None and found["kept"] == found["lines"] > 0
+    assert found["changes"] == 3 and found["path"] == str(written)
+    _corrupt(written, "duplicate")
+    damaged = runner.invoke(main, ["journal", "check", str(written), "--json"])
+    assert damaged.exit_code == 1
+    broken = json.loads(damaged.output)
+    assert not broken["healthy"] and "reuses an id" in broken["problem"] and broken["kept"] < broken["lines"]

@@ -31,6 +31,7 @@ _MATERIAL = click.option(
     "--material", default=None, help="what it is made of, for the mass estimate (e.g. concrete, wood)"
 )
 _TAGS = click.option("--tag", "tags", multiple=True, help="a tag (repeatable); a tag with a density sets the mass too")
+_QUIET = click.option("--quiet", "-q", is_flag=True, help="no progress bar (one is drawn only on a terminal anyway)")
 
 
 @click.group(name="reconstruct")
@@ -89,9 +90,10 @@ def _summary(package: Any, out_dir: Path) -> None:
 @_NAME
 @_MATERIAL
 @_TAGS
+@_QUIET
 def mesh_command(scans: tuple[Path, ...], out_dir: Path, kind: str, reference: Path | None, voxel: float, budget: int,
                  name: str | None,
-                 material: str | None, tags: tuple[str, ...]) -> None:  # fmt: skip
+                 material: str | None, tags: tuple[str, ...], quiet: bool) -> None:  # fmt: skip
     """Point clouds (PLY, PCD, LAS, NumPy) to a collision mesh, convex parts and a height field.
 
     Example: drivetwin reconstruct mesh scan_0.ply scan_1.ply --out pkg/kerb_stone --kind object
@@ -101,7 +103,7 @@ def mesh_command(scans: tuple[Path, ...], out_dir: Path, kind: str, reference: P
 
     try:
         geometry_kind: GeometryKind = cast("GeometryKind", kind)  # click.Choice checked it
-        with progress_bar(f"mesh from {len(scans)} scan(s)", None):  # a spinner and the time it has taken
+        with progress_bar(f"mesh from {len(scans)} scan(s)", None, enabled=not quiet):  # a spinner and the time it has taken
             result = reconstruct_mesh(
                 list(scans), out_dir, kind=geometry_kind, triangle_budget=budget, voxel_m=voxel, reference=reference
             )
@@ -124,9 +126,10 @@ def mesh_command(scans: tuple[Path, ...], out_dir: Path, kind: str, reference: P
 @_NAME
 @_MATERIAL
 @_TAGS
+@_QUIET
 def splats_command(images_dir: Path, out_dir: Path, colmap_dir: Path | None, poses_json: Path | None,
                    iterations: int | None, lpips_weights: Path | None, name: str | None, material: str | None,
-                   tags: tuple[str, ...]) -> None:  # fmt: skip
+                   tags: tuple[str, ...], quiet: bool) -> None:  # fmt: skip
     """Photographs to fitted Gaussian splats (posed by COLMAP, a poses file, or SfM when neither).
 
     Example: drivetwin reconstruct splats photos/ --out pkg/kerb_stone --colmap photos/sparse/0
@@ -147,7 +150,7 @@ def splats_command(images_dir: Path, out_dir: Path, colmap_dir: Path | None, pos
             click.echo(f"no poses given: running structure from motion on {images_dir}")
             images = run_sfm(images_dir, out_dir / "sfm")
         total = iterations or FitConfig().iterations
-        with progress_bar("fitting splats", total, "iterations") as bar:
+        with progress_bar("fitting splats", total, "iterations", enabled=not quiet) as bar:
             result = reconstruct_splats(images, out_dir, iterations=total, lpips_weights=lpips_weights,
                                         progress=lambda step: bar.advance(note=f"loss {step.loss:.4f}, {step.splats} splats"))  # fmt: skip
     except (ValueError, OSError) as exc:
@@ -188,7 +191,8 @@ def fuse_command(package_dir: Path, kind: str | None, name: str | None, material
 @click.option("--out", "out_dir", type=click.Path(file_okay=False, path_type=Path), default=None,
               help="folder for the report (default: the package)")  # fmt: skip
 @click.option("--frames", default=5, show_default=True, type=click.IntRange(1, 1000), help="frames timed for FPS")
-def report_command(package_dir: Path, out_dir: Path | None, frames: int) -> None:
+@click.option("--json", "as_json", is_flag=True, help="print the report's figures as JSON instead of Markdown")
+def report_command(package_dir: Path, out_dir: Path | None, frames: int, as_json: bool) -> None:
     """Write the metrics report (Markdown and JSON): cloud-to-mesh, PSNR/SSIM/LPIPS, FPS.
 
     Example: drivetwin reconstruct report pkg/kerb_stone
@@ -202,6 +206,9 @@ def report_command(package_dir: Path, out_dir: Path | None, frames: int) -> None
     except AssetPackageError as exc:
         raise click.ClickException(str(exc)) from exc
     target = out_dir or package_dir
+    if as_json:
+        click.echo(json.dumps(report, indent=2))
+        return
     click.echo((target / "reconstruction_report.md").read_text(encoding="utf-8"))
     click.echo(f"wrote {target / 'reconstruction_report.json'} ({report['render']['fps']:.1f} FPS)")
 
