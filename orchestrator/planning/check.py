@@ -19,18 +19,23 @@ from dataclasses import dataclass, field
 from functools import cache
 from typing import Any, Literal
 
+from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
 from drivetwin.orchestrator.planning.coverage import (
     Scope,
+    back_reference,
     definite_but_added,
     environment_left_out,
     missing_categories,
     named_things,
     partial_removal,
     unknown_places,
+    wrong_direction,
 )
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
+from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
 from drivetwin.orchestrator.planning.rules.reading import find_lane, find_place
 from drivetwin.orchestrator.planning.rules.spelling import repair
@@ -70,7 +75,13 @@ _INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|nu
 # Number words that state an amount; vague ones ("a few", "some", "a couple") are not checked.
 _AMOUNTS = {w: n for w, n in ph.NUMBER_WORDS.items() if w not in ("a", "an", "one", "single", "pair", "couple",
                                                                    "few", "some", "several")}
-_POLITE = re.compile(r"^(can|could|would|will) (you|we|i)\b|^please\b")
+# Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
+# in the mood of a command, whatever the politeness around them.
+_LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
+                     r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show)\b")
+# A request put politely, at the start of the sentence or of a clause ("..., could you add two
+# cars?"): a command even when it ends with a question mark.
+_POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^please\b")
 _PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
 # Command verbs and fillers dropped before grounding a description on its nouns.
 _VERB = re.compile(r"\b(please|i'?d like|i want|we need|add|put|place|create|spawn|remove|delete|get rid of|"
@@ -136,8 +147,9 @@ def read_request(prompt: str, scene: Scene) -> Request:
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
         masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
     lane = find_lane(scene, masked)
-    polite = bool(_POLITE.match(low))
-    question = bool(_INFO.search(low)) or (not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))
+    polite = bool(_POLITE.search(low))
+    question = bool(_INFO.search(low) or _LOOKUP.match(low)) or (
+        not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))
     polarity: Literal["add", "remove"] | None = (
         "remove" if _REMOVE.search(low) else "add" if _ADD.search(low) else None
     )
@@ -165,9 +177,9 @@ def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
 
 
 def _without_times(text: str) -> str:
-    # A clock time is checked by what the time tool sets, not number by number.
-    return re.sub(r"\d{1,2}:\d\d|\d{1,2}\s*(am|pm|o'clock)\b|\b(half|quarter) (past|to) [a-z0-9]+",
-                  lambda m: " " * len(m.group(0)), text)
+    # A clock time is checked by what the time tool sets (coverage.py), not number by number.
+    said = clock_time(text)
+    return text if said is None else text[: said.start] + " " * (said.end - said.start) + text[said.end :]
 
 
 def _is_reference(text: str, start: int) -> bool:
@@ -189,7 +201,7 @@ def dry_run(plan_calls: list[ToolCall], context: PlanContext) -> Effect | None:
         calls=tuple(plan_calls),
         added=tuple(op.asset for op in ops if op.op == "add"),
         removed=tuple(op.before for op in ops if op.op == "remove"),
-        changed=tuple(op.after for op in ops if op.op == "update"),
+        changed=tuple(op.after for op in ops if op.op == "update" and op.after != op.before),
         environment=any(op.op in ("environment", "storyboard") for op in ops),
         outcome=outcome,
     )
@@ -204,9 +216,21 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     looks_up_places = any(c.tool == "find_landmarks" or "nearest_to" in c.args for c in effect.calls)
     if request.question and request.about_places and not effect.edits and not looks_up_places:
         out.append("you asked about places, but the plan looks up something else")
-    if request.polarity == "remove" and effect.added and not effect.removed:
-        out.append("you asked to take something away, but the plan adds " + _names(effect.added))
-    if request.polarity == "add" and effect.removed and not effect.added:
+    if not request.question and effect.calls and not effect.edits:
+        out.append("you asked for a change, but the plan changes nothing")
+    if request.question and not effect.edits:
+        said = " ".join(str(c.args) for c in effect.calls).lower().replace("_", " ")
+        out += [f"you asked about {name}, but the plan looks up something else"
+                for name in _topics(request, scene) if name.lower().replace("_", " ") not in said]
+    # A request that only takes away never adds, and one that only adds never removes; with
+    # words of both ("swap", "replace", "instead"), each half is judged by what it names.
+    says_add = bool(_ADD.search(request.low))
+    added = [a for a in effect.added if a.category not in _companions(effect)]
+    if request.polarity == "remove" and added and (not effect.removed or not says_add):
+        out.append("you asked to take something away, but the plan adds " + _names(added))
+    elif request.polarity == "remove" and not effect.removed and not added and _moved(effect):
+        out.append("you asked to take something away, but the plan only moves " + _names(_moved(effect)))
+    if request.polarity == "add" and effect.removed and (not effect.added or not _REMOVE.search(request.low)):
         out.append("you asked for more, but the plan removes " + _names(effect.removed))
     touched = [*effect.added, *effect.removed, *(a for a in effect.changed if a.id != "ego")]
     if request.categories and touched:
@@ -231,7 +255,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                and not _near(scene, a, request.place) and not _names_target(effect, request.place)]
         if far:
             out.append(f"you named {request.place}, but the plan acts on {_names(far)} away from it")
-    out += _coverage(request, effect, scene)
+    out += _coverage(request, effect, scene, context.memory)
+    out += wrong_direction(request.masked, scene, _moved(effect))
     if request.state is not None and (effect.removed or effect.changed):
         wrong = [a for a in [*effect.removed, *effect.changed] if a.id != "ego"
                  and (a.behaviour.kind == "parked") != (request.state == "parked") and a.category in request.categories]
@@ -240,7 +265,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     return out
 
 
-def _coverage(request: Request, effect: Effect, scene: Scene) -> list[str]:
+def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) -> list[str]:
     """What the plan leaves out of the request (see coverage.py): named things, existing ones
     added anew, weather and times, all of a plural, places the world does not know."""
     scope = Scope(effect.calls, (*effect.added, *effect.removed, *effect.changed), effect.removed, effect.added)
@@ -256,6 +281,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene) -> list[str]:
         out += environment_left_out(request.low, effect.calls)
     limited = bool(request.numbers or request.place or request.lane or request.state)
     out += partial_removal(request.masked, scope, scene, limited)
+    out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
     out += [f"there is no {w!r} in this world" for w in unknown_places(request.masked, effect.calls, scene)]
     return out
 
@@ -285,6 +311,20 @@ def _category_descriptions() -> tuple[tuple[str, ...], Any]:
 def _companions(effect: Effect) -> set[str]:
     # Arrangements add what a layout needs; the check only weighs what was asked for by name.
     return {a.category for a in effect.added} if any(c.tool == "arrange_assets" for c in effect.calls) else set()
+
+
+def _topics(request: Request, scene: Scene) -> list[str]:
+    """The place and the roads a request names in full: what a question is about."""
+    roads = sorted({lane.road for lane in scene.roads.lanes if lane.road})
+    named = [road for road in roads if re.search(rf"\b{re.escape(ph.normalise(road).strip())}\b", request.low)]
+    return [*([request.place] if request.place else []), *named]
+
+
+def _moved(effect: Effect) -> list[AssetInstance]:
+    """The existing assets (the ego included) whose place the plan changes."""
+    before = effect.outcome.before if effect.outcome else None
+    return [a for a in effect.changed if before is not None and (old := before.asset(a.id)) is not None
+            and a.pose != old.pose]
 
 
 def _names(assets: tuple[AssetInstance, ...] | list[AssetInstance]) -> str:
@@ -340,17 +380,16 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
     if request.question and effect.edits:
         queries = [c for c in effect.calls if c.tool in QUERY_TOOLS]
         if request.categories and not queries:
-            queries = [ToolCall(tool="find_assets", args={"category": sorted(request.categories)[0]})]
+            near = {"near": request.place} if request.place else {}
+            queries = [ToolCall(tool="find_assets", args={"category": sorted(request.categories)[0], **near})]
         if queries:
             out.append(Reading(text="only answer the question, change nothing", calls=queries))
-    if request.polarity == "remove" and effect.added and not effect.removed:
-        for category in dict.fromkeys(a.category for a in effect.added):
-            if scene.count(category):
-                args: dict[str, Any] = {"category": category}
-                if request.place:
-                    args["near"] = request.place
-                out.append(Reading(text=f"remove the {category.replace('_', ' ')}", calls=[
-                    ToolCall(tool="remove_assets", args=args)]))
+    if request.polarity == "remove" and effect.added:
+        # Each addition turned into a removal of that kind, the rest of the plan kept.
+        flipped = [_removal(c, request, scene) if c.tool == "add_asset" else c for c in effect.calls]
+        if flipped != list(effect.calls) and all(flipped):
+            calls = [c for c in flipped if c is not None]
+            out.append(Reading(text=describe(calls), calls=calls))
     if request.polarity == "add" and effect.removed and not effect.added:
         category = sorted(request.categories)[0] if request.categories else effect.removed[0].category
         out.append(Reading(text=f"add a {category.replace('_', ' ')}", calls=[
@@ -363,6 +402,15 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
             out.append(Reading(text="remove only " + ", ".join(keep), calls=[
                 ToolCall(tool="remove_assets", args={"assets": keep})]))
     return out
+
+
+def _removal(call: ToolCall, request: Request, scene: Scene) -> ToolCall | None:
+    """The removal of what `call` would add, near the place named; None when none is there."""
+    category = str(call.args.get("category", ""))
+    if not scene.count(category):
+        return None
+    args: dict[str, Any] = {"category": category, **({"near": request.place} if request.place else {})}
+    return ToolCall(tool="remove_assets", args=args)
 
 
 def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:

@@ -11,12 +11,15 @@ sentence in plain words; check.py turns findings into a question or a refusal.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.scene import AssetInstance, Scene
@@ -83,8 +86,8 @@ _RELATION_WORDS = frozenset(
 )
 # Weather kinds a request names directly (a goal such as "test the wipers" is read by the planner).
 _WEATHER_NAMES = ("rain", "snow", "fog", "cloud", "clear sky", "clear skies", "sunny", "sunshine")
-# A clock time: "18:30", "7 pm", "7 o'clock", "half past six", "quarter to nine".
-_CLOCK = re.compile(r"\b(\d{1,2}:\d\d|\d{1,2}\s*(?:am|pm|o'clock)|(?:half|quarter) (?:past|to) \w+)\b")
+# Clock times said by name: the time tool has presets for them, checked as parts of the day.
+_NAMED_TIMES = ("midnight", "noon", "midday")
 # Parts of the day a request names as a time to set; "this morning" is when, not what.
 _DAY_PART = re.compile(r"(?<!this )\b(morning|afternoon|evening|night|midnight|noon|midday|dusk|dawn|sunset|sunrise)\b")
 # Words that open background ("where people relax", "before I plan the pedestrian test"):
@@ -100,6 +103,25 @@ _LOCATIVE = re.compile(
 _VERB_NAMES = frozenset(
     w for table in (lx.STOP_WORDS, lx.MOVE_WORDS, lx.TURN_WORDS, lx.REMOVE_WORDS) for w in table if " " not in w
 )
+
+
+# A compass direction said as a way to go ("2 m east", "eastward", "to the north"), not as part of
+# a lane's or a place's name ("the northbound lane", "the east gate": find_place masks places),
+# a side of something else ("east of the fountain") or a heading ("facing north").
+_COMPASS = re.compile(r"(?<!facing )(?<!face )\b(north|south|east|west)(?:wards?)?\b"
+                      r"(?!-| ?bound| gate| side| entrance| crosswalk| crossing| of\b)")
+_COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
+# A move shorter than this has no direction worth judging (a nudge to clear an overlap).
+MIN_MOVE_M = 0.2
+# How far from the named direction a move may point: settling onto a lane or a free spot bends it.
+DIRECTION_SLACK_DEG = 50.0
+
+
+# Words that point back at what the last turn made or touched, when a request names nothing.
+_BACK = re.compile(r"\b(them|those|these|they|it|there|the same|same again|that one|more|another|again)\b")
+_PLURAL_POINTERS = ("them", "those", "these", "they")
+# "There" is where the last turn worked, give or take a parking lot or a crossing.
+THERE_RADIUS_M = 30.0
 
 
 @dataclass(frozen=True)
@@ -177,15 +199,14 @@ def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     weather = [w for w in _WEATHER_NAMES if re.search(rf"\b{w}", low)]
     if weather and "set_weather" not in tools:
         out.append(f"you mentioned {weather[0]}, but the plan does not set the weather")
-    clock = _CLOCK.search(low)
+    clock = clock_time(low)
     day = _DAY_PART.search(low)
     day_part = day.group(1) if day else None
     if (clock or day_part) and "set_time_of_day" not in tools and "set_lighting" not in tools:
-        out.append(f"you mentioned {clock.group(1) if clock else day_part}, but the plan does not set the time")
-    exact = re.search(r"\b(\d{1,2}):(\d\d)\b", low)
+        out.append(f"you mentioned {clock.text if clock else day_part}, but the plan does not set the time")
     times = [str(c.args.get("time")) for c in calls if c.tool == "set_time_of_day"]
-    if exact and times and f"{int(exact.group(1)):02d}:{exact.group(2)}" not in times:
-        out.append(f"you said {exact.group(0)}, but the plan sets the time to {times[0]}")
+    if clock is not None and clock.text not in _NAMED_TIMES and times and str(clock) not in times:
+        out.append(f"you said {clock.text} ({clock}), but the plan sets the time to {times[0]}")
     return out
 
 
@@ -207,6 +228,66 @@ def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> l
         if 0 < gone < there:
             out.append(f"you named {m.category.replace('_', ' ')}s, but the plan removes {gone} of the {there}")
     return out
+
+
+def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory: Memory, scene: Scene,
+                   counted: bool) -> list[str]:
+    """A request that names nothing itself but points back ("move them left", "two more there",
+    "drop two of those") done on other things, on fewer than all of them, or somewhere else."""
+    pointer = _BACK.search(masked)
+    live = memory.live_turns()
+    if pointer is None or set(categories) or not live or not scope.touched:
+        return []
+    last = live[-1]
+    earlier = [*last.added, *last.touched]
+    kinds = {_category_of(i, scene) for i in earlier} - {None}
+    if not kinds:
+        return []
+    said = pointer.group(1)
+    out = []
+    strays = sorted({a.category for a in scope.touched if a.category not in kinds and a.id != "ego"})
+    if strays:
+        out.append(f"you said {said!r} after a turn about {', '.join(sorted(str(k) for k in kinds))}, "
+                   f"but the plan acts on {', '.join(strays)}")
+    existing = [i for i in dict.fromkeys(earlier) if scene.asset(i) is not None]
+    acted = {a.id for a in scope.touched}
+    if said in _PLURAL_POINTERS and not scope.added and not counted and 0 < len(acted & set(existing)) < len(existing):
+        out.append(f"you said {said!r} ({len(existing)} of them), but the plan acts on {len(acted & set(existing))}")
+    if said == "there" and last.focus is not None and scope.added:
+        fx, fy = last.focus
+        far = [a.id for a in scope.added if math.hypot(a.pose.x - fx, a.pose.y - fy) > THERE_RADIUS_M]
+        if far:
+            out.append(f"you said 'there' (where the last turn worked), but the plan puts {', '.join(far)} elsewhere")
+    return out
+
+
+def _category_of(asset_id: str, scene: Scene) -> str | None:
+    asset = scene.asset(asset_id)
+    return asset.category if asset is not None else None
+
+
+def wrong_direction(masked: str, scene: Scene, moved: Iterable[AssetInstance]) -> list[str]:
+    """Assets a plan moves away from the one compass direction the request names ("2 m east")."""
+    said = {m.group(1) for m in _COMPASS.finditer(masked)}
+    if len(said) != 1:
+        return []  # none, or "north-east" / "east then north": not one direction to hold it to
+    word = said.pop()
+    want_x, want_y = _COMPASS_VECTORS[word]
+    out = []
+    for after in moved:
+        before = scene.asset(after.id)
+        if before is None:
+            continue
+        dx, dy = after.pose.x - before.pose.x, after.pose.y - before.pose.y
+        length = math.hypot(dx, dy)
+        if length > MIN_MOVE_M and (dx * want_x + dy * want_y) / length < math.cos(math.radians(DIRECTION_SLACK_DEG)):
+            out.append(f"you said {word}, but the plan moves {after.id} {_compass_of(dx, dy)}")
+    return out
+
+
+def _compass_of(dx: float, dy: float) -> str:
+    names = ("east", "north-east", "north", "north-west", "west", "south-west", "south", "south-east")
+    return names[round(math.degrees(math.atan2(dy, dx)) / 45.0) % 8]
 
 
 def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
@@ -231,10 +312,12 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
 
 __all__ = [
     "Scope",
+    "back_reference",
     "definite_but_added",
     "environment_left_out",
     "missing_categories",
     "named_things",
     "partial_removal",
     "unknown_places",
+    "wrong_direction",
 ]

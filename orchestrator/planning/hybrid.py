@@ -67,21 +67,24 @@ class HybridPlanner:
         self.scenario = scenario
         self.confident = confident
         self.fallback = fallback
-        self._by_model_size: float | None = None
+        self._small: bool | None = None
 
     def confidence_needed(self) -> float:
         """The rule confidence that skips the LLM: as given, else by the model's size (a small
         or unknown-size model is asked about its size once, which opens it)."""
         if self.confident is not None:
             return self.confident
-        if self._by_model_size is None:
+        return RULES_CONFIDENT_SMALL_MODEL if self.small_model() else RULES_CONFIDENT
+
+    def small_model(self) -> bool:
+        """Whether the LLM is below SMALL_MODEL_PARAMETERS (asked once, which opens it)."""
+        if self._small is None:
             try:
                 parameters = self.llm.backend.describe().parameters
             except Exception:  # a model that cannot say its size is not assumed small
                 parameters = None
-            small = parameters is not None and parameters < SMALL_MODEL_PARAMETERS
-            self._by_model_size = RULES_CONFIDENT_SMALL_MODEL if small else RULES_CONFIDENT
-        return self._by_model_size
+            self._small = parameters is not None and parameters < SMALL_MODEL_PARAMETERS
+        return self._small
 
     def _needed(self, confidence: float) -> float:
         if self.confident is None and confidence >= RULES_CONFIDENT:
@@ -181,12 +184,20 @@ class HybridPlanner:
                     context,
                 ):
                     others = [c for c in candidates if c is not candidate]
+                    if self.small_model():
+                        # A small model's answer copies its few-shot demonstrations, which are
+                        # the retrieval planner's own nearest examples: not an independent vote.
+                        # Its agreement puts that reading first; the person decides.
+                        candidates = [candidate, *others]
+                        why = f"{why}; the small LLM sides with {candidate.planner}"
+                        break
                     return self._mark(
                         candidate, "tie-break", started, f"{why}; the LLM agrees with {candidate.planner}", others
                     )
-            if not candidates:
-                return self._mark(llm_plan, "llm", started, why)
-            candidates = [*candidates, llm_plan]
+            else:
+                if not candidates:
+                    return self._mark(llm_plan, "llm", started, why)
+                candidates = [*candidates, llm_plan]
         readings = [
             c for c in candidates if c.calls and (c.planner != "retrieval" or c.confidence >= RETRIEVAL_READING)
         ]

@@ -74,6 +74,22 @@ def test_the_llm_breaks_a_tie_between_two_sure_candidates(context: PlanContext) 
     assert path(plan) == "path: tie-break" and plan.calls == SNOW and llm.asked == 1
 
 
+class SmallModel(Fixed):
+    """An LLM that says it has 135M parameters, like the embedded SmolLM2."""
+
+    class backend:  # the attribute the hybrid reads
+        @staticmethod
+        def describe() -> Any:
+            return type("Facts", (), {"parameters": 135_000_000})()
+
+
+def test_a_small_models_agreement_orders_the_readings_but_asks(context: PlanContext) -> None:
+    llm = SmallModel("llm", SNOW)
+    plan = hybrid(Fixed("rules", RAIN, 0.9), Fixed("retrieval", SNOW, 0.9), llm).plan("x", context)
+    assert plan.calls == [] and plan.question is not None and llm.asked == 1
+    assert [r.calls for r in plan.question.readings] == [SNOW, RAIN]
+
+
 def test_disagreement_nobody_settles_becomes_a_question_with_plain_readings(context: PlanContext) -> None:
     plan = hybrid(Fixed("rules", RAIN, 0.9), Fixed("retrieval", SNOW, 0.9), Fixed("llm", None)).plan("x", context)
     assert plan.calls == [] and plan.question is not None

@@ -11,6 +11,7 @@ import re
 from typing import Any
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.reading import Reading
 from drivetwin.tools.base import ToolCall
 
@@ -42,14 +43,9 @@ def weather(r: Reading) -> ToolCall | None:
 
 def time_of_day(r: Reading) -> ToolCall | None:
     """The time a clause asks for ("at 7 pm", "18:30", "dusk", "lunchtime"), or None."""
-    m = re.search(r"(\d{1,2})(?::(\d\d))?\s*(am|pm|o'clock|h\b)?", r.masked)
-    if m and (m.group(2) or m.group(3)) and r.has(("time", "make it", "set", "at", "clock", "change", "to")):
-        hour = int(m.group(1)) % 24
-        if m.group(3) == "pm" and hour < 12:
-            hour += 12
-        if m.group(3) == "am" and hour == 12:
-            hour = 0
-        return ToolCall(tool="set_time_of_day", args={"time": f"{hour:02d}:{m.group(2) or '00'}"})
+    said = clock_time(r.masked)
+    if said is not None and r.has(("time", "make it", "set", "at", "clock", "change", "to", "past")):
+        return ToolCall(tool="set_time_of_day", args={"time": str(said)})  # the tool refuses "25:70"
     if r.has(("lunchtime", "lunch time", "lunch")):
         return ToolCall(tool="set_time_of_day", args={"time": "12:30"})
     for words, preset in lx.TIME_PRESETS:

@@ -15,11 +15,14 @@ from dataclasses import dataclass
 
 from drivetwin.orchestrator.planning.base import PlanningError
 
+# Units people type straight after a figure ("5m", "30kmh", "2s", "90deg"): a number may end
+# at one of these; any other letter makes it part of a word or an id ("2nd", "car_2").
+GLUED_UNITS = r"(?:m|km|kmh|kph|mph|ms|s|sec|secs|deg)"
 # A written number: digits with optional thousands separators, decimals and an exponent, or
 # the words that parse as floats but are no amount. Not part of an id ("car_2") or a word.
 NUMBER = (
     r"(?<![\w.])(?:[-+]?(?:\d{1,3}(?:,\d{3})+(?![\d,])|\d+(?:\.\d+)?|\.\d+)(?:e[-+]?\d+)?"
-    r"|[-+]?(?:nan|infinity|inf))(?![\w])"
+    rf"(?={GLUED_UNITS}?(?!\w))|[-+]?(?:nan|infinity|inf)(?![\w]))"
 )
 _NUMBER = re.compile(NUMBER, re.IGNORECASE)
 # The most of anything one request may count: far above what a scene can hold, so a larger

@@ -1,0 +1,96 @@
+"""Clock times as people say them: "18:30", "6.15 pm", "7 o'clock", "half past ten at night",
+"quarter to seven", "twenty past six in the evening", "midnight".
+
+One reader for the rule planner (which sets the time) and the plan check (which compares the
+time a plan sets with the one the words name), so the two cannot disagree about what a
+sentence means. A time that cannot be on a clock ("25:70") is read as such and refused by
+the caller rather than dropped.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+# Hours and minutes said in words; "a quarter", "half" are minutes in their own phrases.
+_WORD_NUMBERS = {
+    "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9,
+    "ten": 10, "eleven": 11, "twelve": 12, "fifteen": 15, "twenty": 20, "twenty-five": 25,
+    "twenty five": 25, "thirty": 30,
+}
+_HOUR = r"(\d{1,2}|" + "|".join(sorted(_WORD_NUMBERS, key=len, reverse=True)) + ")"
+# Words after a time that say which half of the day it is in.
+_AFTERNOON = re.compile(r"^\s*(pm|p\.m\.|in the (afternoon|evening)|at night|tonight|in the night)\b")
+_MORNING = re.compile(r"^\s*(am|a\.m\.|in the morning)\b")
+# "18:30", "18.30" (with a time word near), "6 pm", "7 o'clock", "0630 hours".
+_DIGITAL = re.compile(r"(?<![\w.:])(\d{1,2})\s*(?:([:.])\s*(\d\d))?\s*(am|pm|a\.m\.|p\.m\.|o'?\s?clock|h|hrs|hours)?(?![\w:])")
+# "half past ten", "a quarter to seven", "twenty past six", "10 past 4".
+_SPOKEN = re.compile(rf"\b(half|(?:a )?quarter|{_HOUR}(?: minutes)?) (past|after|to|before) {_HOUR}\b")
+_NAMED = {"midnight": (0, 0), "noon": (12, 0), "midday": (12, 0)}
+# "18.30" without a suffix is a clock time only when the sentence is about time.
+_TIME_TOPIC = re.compile(r"\b(time|clock)\b")
+
+
+@dataclass(frozen=True)
+class ClockTime:
+    """A time read from words: hour and minute as said (possibly impossible), and the words."""
+
+    hour: int
+    minute: int
+    text: str
+    start: int = 0
+    end: int = 0
+
+    @property
+    def valid(self) -> bool:
+        return 0 <= self.hour <= 23 and 0 <= self.minute <= 59
+
+    def __str__(self) -> str:
+        return f"{self.hour:02d}:{self.minute:02d}"
+
+
+def _number(word: str) -> int:
+    return int(word) if word.isdigit() else _WORD_NUMBERS[word]
+
+
+def _in_half_of_day(hour: int, after: str) -> int:
+    """The 24-hour hour for a 12-hour `hour` given the words after it ("pm", "at night")."""
+    if _AFTERNOON.match(after):
+        night_small_hours = hour <= 4 and re.match(r"^\s*(at|in the) night", after) is not None
+        return hour if hour >= 12 or night_small_hours else hour + 12
+    if _MORNING.match(after):
+        return 0 if hour == 12 else hour
+    return hour
+
+
+def clock_time(text: str) -> ClockTime | None:
+    """The clock time `text` names, or None. Lower-case input is expected."""
+    for name, (hour, minute) in _NAMED.items():
+        if (named := re.search(rf"\b{name}\b", text)) is not None:
+            return ClockTime(hour, minute, name, named.start(), named.end())
+    spoken = _SPOKEN.search(text)
+    if spoken is not None:
+        said, relation, target = spoken.group(1), spoken.group(3), spoken.group(4)
+        minutes = 30 if said == "half" else 15 if said.endswith("quarter") else _number(said.split()[0])
+        hour = _number(target)
+        if relation in ("to", "before"):
+            hour, minute = (hour - 1) % 12 or 12, 60 - minutes
+        else:
+            minute = minutes
+        return ClockTime(_in_half_of_day(hour, text[spoken.end():]), minute, spoken.group(0), *spoken.span())
+    for m in _DIGITAL.finditer(text):
+        separator, said_minutes, suffix = m.group(2), m.group(3), m.group(4)
+        if separator == "." and suffix is None and not _TIME_TOPIC.search(text):
+            continue  # "2.50 m" is a number, not ten to three
+        if separator is None and suffix in (None, "h", "hrs", "hours"):
+            continue  # a bare "7" or "7 hours" is an amount
+        after = text[m.end():]
+        if suffix is not None and suffix.startswith(("am", "a.m", "pm", "p.m")):
+            after = suffix
+        said_hour = int(m.group(1))
+        hour = _in_half_of_day(said_hour, after) if said_hour <= 12 else said_hour
+        return ClockTime(hour, int(said_minutes or 0), m.group(0).strip(), *m.span())
+    return None
+
+
+__all__ = ["ClockTime", "clock_time"]

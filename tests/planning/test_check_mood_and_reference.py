@@ -1,0 +1,150 @@
+"""The plan check, continued: the mood of a request, where it points and which way it goes.
+
+Like test_check.py, each test hands the session a planner whose plan misreads the request and
+asserts it becomes a question or a refusal with the scene unchanged (worded unlike any suite
+prompt), plus the readings a person is offered where one can be built.
+"""
+
+from __future__ import annotations
+
+import pytest
+from drivetwin.orchestrator.planning.check import read_request
+from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.numbers import numbers_in
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.session import Session
+from drivetwin.tools.base import ToolCall
+from test_check import Fixed, add  # pytest puts this folder on sys.path (no __init__.py)
+
+
+def call(tool: str, **args: object) -> ToolCall:
+    return ToolCall(tool=tool, args=dict(args))
+
+
+def refused_unchanged(campus, registry, planner, prompt, setup=None):
+    session = Session(campus, setup or planner, registry)
+    if setup is not None:
+        assert session.submit("set the stage").ok
+        session.planner = planner
+    before = session.scene
+    report = session.submit(prompt)
+    assert not report.ok, f"{prompt!r} was applied: {report.plan.calls if report.plan else None}"
+    assert session.scene == before
+    return report
+
+
+def test_a_command_answered_by_a_lookup_is_not_reported_done(campus, registry):
+    refused_unchanged(campus, registry, Fixed(call("find_assets", category="bench")),
+                      "two more benches by the fountain, could you?")
+
+
+def test_a_move_that_moves_nothing_is_not_reported_done(campus, registry):
+    refused_unchanged(campus, registry, Fixed(call("move_asset", asset="ego")), "nudge the ego a little")
+
+
+def test_a_question_is_answered_about_the_place_it_names(campus, registry):
+    report = refused_unchanged(campus, registry, Fixed(call("asset_properties", asset="ego")),
+                               "roughly what distance separates the fountain and our car?")
+    assert "fountain" in (report.error or report.question.text if report.question else report.error or "")
+
+
+def test_a_question_about_a_road_looks_up_that_road(campus, registry):
+    refused_unchanged(campus, registry, Fixed(call("find_lanes")), "name every lane on Campus Drive")
+
+
+def test_a_lookup_said_as_a_command_is_a_question():
+    assert read_request("list the trees", _campus()).question
+    assert read_request("could you locate the hydrant", _campus()).question
+    assert not read_request("the street is quiet, can you add two cars?", _campus()).question
+
+
+def test_a_move_the_wrong_way_is_not_applied(campus, registry):
+    refused_unchanged(campus, registry, Fixed(call("move_asset", asset="ego", east=-3.0)), "roll the ego 3 m eastwards")
+
+
+def test_a_move_the_named_way_is_applied(campus, registry):
+    session = Session(campus, Fixed(call("move_asset", asset="ego", east=3.0)), registry)
+    assert session.submit("roll the ego 3 m eastwards").ok
+
+
+def test_a_removal_only_request_never_adds(campus, registry):
+    plan = Fixed(call("remove_assets", category="trash_bin", count=1), add("bench"))
+    report = refused_unchanged(campus, registry, plan, "clear out the trash bin as well as the bench")
+    assert report.question is not None
+    offered = [c.tool for r in report.question.readings[:-1] for c in r.calls]
+    assert offered and set(offered) == {"remove_assets"}
+
+
+def test_a_removal_done_as_a_move_is_not_applied(campus, registry):
+    plan = Fixed(call("place_asset", asset="tree_1", location={"relation": "at", "target": "fountain"}))
+    refused_unchanged(campus, registry, plan, "I'd prefer the lawn without that tree")
+
+
+def test_pointing_back_at_cones_does_not_add_bollards(campus, registry):
+    cones = Fixed(add("traffic_cone", count=3, location={"relation": "in_front_of", "target": "ego", "distance": 12}))
+    plan = Fixed(add("bollard", count=2, location={"relation": "in_front_of", "target": "ego", "distance": 20}))
+    refused_unchanged(campus, registry, plan, "pop another two in", setup=cones)
+
+
+def test_them_means_all_of_what_the_last_turn_made(campus, registry):
+    cones = Fixed(add("traffic_cone", count=3, location={"relation": "in_front_of", "target": "ego", "distance": 12}))
+    one = Fixed(call("move_asset", asset="traffic_cone_1", left=1.0))
+    refused_unchanged(campus, registry, one, "shove them over a touch", setup=cones)
+
+
+def test_a_spoken_time_is_set_as_said(campus, registry):
+    refused_unchanged(campus, registry, Fixed(call("set_time_of_day", time="evening")),
+                      "wind the clock to a quarter past seven in the evening")
+    session = Session(campus, Fixed(call("set_time_of_day", time="19:15")), registry)
+    assert session.submit("wind the clock to a quarter past seven in the evening").ok
+
+
+def test_a_distance_typed_against_its_unit_is_accounted_for(campus, registry):
+    plan = Fixed(call("set_behaviour", asset="suv_1", behaviour={"kind": "drive_lane"}))
+    refused_unchanged(campus, registry, plan, "back the suv up 7m")
+
+
+@pytest.mark.parametrize(
+    ("words", "time"),
+    [
+        ("switch to 21:05", "21:05"),
+        ("a quarter to eight in the evening please", "19:45"),
+        ("ten past nine at night", "21:10"),
+        ("set time 7.45 o clock", "07:45"),
+        ("make it 4 pm", "16:00"),
+        ("12 am", "00:00"),
+        ("around midnight", "00:00"),
+        ("1:30 at night", "01:30"),
+    ],
+)
+def test_clock_times_read_as_said(words, time):
+    said = clock_time(words)
+    assert said is not None and str(said) == time
+
+
+@pytest.mark.parametrize("words", ["move it 2.5 m", "add 7 cones", "the 3 benches at 12 m", "car_12"])
+def test_amounts_are_not_clock_times(words):
+    assert clock_time(words) is None
+
+
+def test_an_impossible_clock_time_is_read_as_impossible():
+    said = clock_time("time 26:61")
+    assert said is not None and not said.valid
+
+
+def test_numbers_glued_to_units_are_read():
+    assert [n.value for n in numbers_in("go 12m then 30kmh for 4s")] == [12.0, 30.0, 4.0]
+    assert numbers_in("the 2nd car_3") == []
+
+
+def test_the_rule_planner_sets_a_spoken_time(campus, registry):
+    from drivetwin.orchestrator.planning import PlanContext
+
+    plan = RulePlanner().plan("set the clock to twenty past six in the evening", PlanContext(campus, registry))
+    assert [(c.tool, c.args) for c in plan.calls] == [("set_time_of_day", {"time": "18:20"})]
+
+
+def _campus():
+    from drivetwin.worlds.campus import build_campus
+
+    return build_campus()
