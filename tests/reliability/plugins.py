@@ -8,7 +8,7 @@ from pathlib import Path
 
 PLUGIN_TEMPLATE = '''
 import os, sys, time
-from drivetwin.tools.add import AddArgs, AddAsset
+from drivetwin.tools import add  # its Worker AddAsset shares a name with the WorldEdit op a body may import
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.worlds.scene import Pose
 {module_level}
@@ -24,7 +24,7 @@ class Plug(Tool[Args]):
     Args = Args
 
     def propose(self, args, scene):
-        result = AddAsset().propose(AddArgs(category="traffic_cone"), scene)
+        result = add.AddAsset().propose(add.AddArgs(category="traffic_cone"), scene)
 {body}
         return result
 {extra}
