@@ -199,8 +199,9 @@ def _driving_arcs(scene: Scene, lane: Lane, others: list[AssetInstance]) -> list
     out = []
     for other in others:
         drives_here = isinstance(other.behaviour, DriveLane) and other.behaviour.lane == lane.id
-        under = lane_at(scene, other.pose.x, other.pose.y)
-        stands_here = category(other.category).motion == "vehicle" and under is not None and under.id == lane.id
+        # The lane lookup (a spatial query) only for vehicles: a world's thousands of props skip it.
+        stands_here = not drives_here and category(other.category).motion == "vehicle" and (
+            (under := lane_at(scene, other.pose.x, other.pose.y)) is not None and under.id == lane.id)
         if drives_here or stands_here:
             near = nearest_on_polyline(other.pose.x, other.pose.y, lane.centreline)
             out.append((near.arc_length, category(other.category).length * other.scale / 2))
