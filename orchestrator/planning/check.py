@@ -26,19 +26,20 @@ from drivetwin.orchestrator.planning.coverage import (
     back_reference,
     definite_but_added,
     environment_left_out,
+    indefinite_but_moved,
+    inside_building,
     missing_categories,
     named_things,
     partial_removal,
+    shape_left_out,
     unknown_places,
     wrong_direction,
 )
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
 from drivetwin.orchestrator.planning.readings import describe
+from drivetwin.orchestrator.planning.request import ADD_WORDS, REMOVE_WORDS, Request, read_request
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
-from drivetwin.orchestrator.planning.rules.reading import find_lane, find_place
-from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.orchestrator.planning.scenario_reading import missed_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.base import ToolCall
@@ -61,36 +62,9 @@ UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704)
 QUERY_TOOLS = ("find_assets", "find_landmarks", "find_lanes", "asset_properties")
 MAX_READINGS = 3
 
-# The small general vocabulary the check reads polarity and questions with.
-_REMOVE = re.compile(
-    r"\b(remove|delete|get rid of|take (away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
-    r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
-)
-_ADD = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
-_QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
-# Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
-# the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
-_INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|"
-                   r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
-# Number words that state an amount; vague ones ("a few", "some", "a couple") are not checked.
-_AMOUNTS = {w: n for w, n in ph.NUMBER_WORDS.items() if w not in ("a", "an", "one", "single", "pair", "couple",
-                                                                   "few", "some", "several")}
-# Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
-# in the mood of a command, whatever the politeness around them.
-_LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
-                     r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show)\b")
-# A request put politely, at the start of the sentence or of a clause ("..., could you add two
-# cars?"): a command even when it ends with a question mark.
-_POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^please\b")
-_PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
 # Command verbs and fillers dropped before grounding a description on its nouns.
 _VERB = re.compile(r"\b(please|i'?d like|i want|we need|add|put|place|create|spawn|remove|delete|get rid of|"
                    r"there should be|could you|can you|a|an|the|some|one|two|three)\b")
-# A category word after these describes the thing asked for ("a vehicle that carries passengers",
-# "a bench for pedestrians") rather than naming it.
-_DESCRIBING = re.compile(r"[a-z]\s+(that|which|who|with|for|carrying|carries|full of)\b[^,.;]*$")
-_PARKED = re.compile(r"\bparked\b")
-_MOVING = re.compile(r"\b(driving|moving|travelling|traveling)\b")
 
 
 @dataclass
@@ -107,23 +81,6 @@ class Verdict:
 
 
 @dataclass(frozen=True)
-class Request:
-    """The signals read from a request's words."""
-
-    text: str
-    question: bool
-    polarity: Literal["add", "remove"] | None
-    categories: frozenset[str]
-    numbers: tuple[float, ...]
-    place: str | None
-    lane: str | None
-    state: Literal["parked", "moving"] | None
-    about_places: bool = False
-    low: str = ""
-    masked: str = ""
-
-
-@dataclass(frozen=True)
 class Effect:
     """What a plan does, from a dry run: assets added, removed and changed, and its numbers."""
 
@@ -137,57 +94,6 @@ class Effect:
     @property
     def edits(self) -> bool:
         return bool(self.added or self.removed or self.changed or self.environment)
-
-
-def read_request(prompt: str, scene: Scene) -> Request:
-    """The request's signals: polarity, categories, numbers, place, lane, state and mood."""
-    low = ph.normalise(repair(prompt, scene).text).strip()
-    place = _named_place(scene, low)
-    masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
-    for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
-        masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
-    lane = find_lane(scene, masked)
-    polite = bool(_POLITE.search(low))
-    question = bool(_INFO.search(low) or _LOOKUP.match(low)) or (
-        not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))
-    polarity: Literal["add", "remove"] | None = (
-        "remove" if _REMOVE.search(low) else "add" if _ADD.search(low) else None
-    )
-    categories = frozenset(m.category for m in ph.find_categories(masked) if not _DESCRIBING.search(masked[: m.start]))
-    exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_times(masked))  # "a tree or two"
-    numbers = tuple(n.value for n in numbers_in(exact) if not _is_reference(masked, n.start))
-    numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+", exact)
-                     if w.group(0) in _AMOUNTS and not _is_reference(masked, w.start()))
-    state: Literal["parked", "moving"] | None = (
-        "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) else None
-    )
-    return Request(prompt, question, polarity, categories, numbers, place[0] if place else None,
-                   lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)), low, masked)
-
-
-def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
-    """A place the request names in full (a name or alias), not one guessed from a single word."""
-    found = find_place(scene, f" {low} ")
-    if found is None:
-        return None
-    said = re.sub(r"\b(the|a|an)\s+(?=[a-z0-9])", "", f" {low} "[found[1] : found[2]].strip())
-    landmark = scene.landmark(found[0])
-    names = [re.sub(r"\b(the|a|an)\s+(?=[a-z0-9])", "", ph.normalise(n).strip()) for n in (landmark.names() if landmark else [])]
-    return (found[0], max(0, found[1] - 1), max(0, found[2] - 1)) if said in names else None
-
-
-def _without_times(text: str) -> str:
-    # A clock time is checked by what the time tool sets (coverage.py), not number by number.
-    said = clock_time(text)
-    return text if said is None else text[: said.start] + " " * (said.end - said.start) + text[said.end :]
-
-
-def _is_reference(text: str, start: int) -> bool:
-    # "car 2", "lot 3", "the 2nd": a number that names something rather than an amount.
-    before = text[:start].split()[-1:]
-    if re.match(r"[\d.,e+-]*\s*(m|metres?|meters?|km|kph|mph|degrees?|deg|seconds?|s)\b", text[start:]):
-        return False  # "the truck 8 m ahead": an amount with its unit
-    return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in ("lot", "no"))
 
 
 def dry_run(plan_calls: list[ToolCall], context: PlanContext) -> Effect | None:
@@ -224,13 +130,13 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                 for name in _topics(request, scene) if name.lower().replace("_", " ") not in said]
     # A request that only takes away never adds, and one that only adds never removes; with
     # words of both ("swap", "replace", "instead"), each half is judged by what it names.
-    says_add = bool(_ADD.search(request.low))
+    says_add = bool(ADD_WORDS.search(request.low))
     added = [a for a in effect.added if a.category not in _companions(effect)]
     if request.polarity == "remove" and added and (not effect.removed or not says_add):
         out.append("you asked to take something away, but the plan adds " + _names(added))
     elif request.polarity == "remove" and not effect.removed and not added and _moved(effect):
         out.append("you asked to take something away, but the plan only moves " + _names(_moved(effect)))
-    if request.polarity == "add" and effect.removed and (not effect.added or not _REMOVE.search(request.low)):
+    if request.polarity == "add" and effect.removed and (not effect.added or not REMOVE_WORDS.search(request.low)):
         out.append("you asked for more, but the plan removes " + _names(effect.removed))
     touched = [*effect.added, *effect.removed, *(a for a in effect.changed if a.id != "ego")]
     if request.categories and touched:
@@ -281,6 +187,11 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
         out += environment_left_out(request.low, effect.calls)
     limited = bool(request.numbers or request.place or request.lane or request.state)
     out += partial_removal(request.masked, scope, scene, limited)
+    out += [f"you asked for a new {c.replace('_', ' ')}, but the plan moves one that is there"
+            for c in indefinite_but_moved(request.masked, scope, scene)]
+    out += shape_left_out(request.masked, effect.calls, len(effect.added))
+    if effect.added or effect.changed:
+        out += inside_building(request.low, scene)
     out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
     out += [f"there is no {w!r} in this world" for w in unknown_places(request.masked, effect.calls, scene)]
     return out
@@ -321,10 +232,11 @@ def _topics(request: Request, scene: Scene) -> list[str]:
 
 
 def _moved(effect: Effect) -> list[AssetInstance]:
-    """The existing assets (the ego included) whose place the plan changes."""
+    """The existing assets (the ego included) the plan moves; one given a new behaviour is put
+    where its route starts, which is no move in a direction the person named."""
     before = effect.outcome.before if effect.outcome else None
     return [a for a in effect.changed if before is not None and (old := before.asset(a.id)) is not None
-            and a.pose != old.pose]
+            and a.pose != old.pose and a.behaviour == old.behaviour]
 
 
 def _names(assets: tuple[AssetInstance, ...] | list[AssetInstance]) -> str:
@@ -394,6 +306,11 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
         category = sorted(request.categories)[0] if request.categories else effect.removed[0].category
         out.append(Reading(text=f"add a {category.replace('_', ' ')}", calls=[
             ToolCall(tool="add_asset", args={"category": category, "count": 1})]))
+    fresh = [ToolCall(tool="add_asset", args={"category": asset.category, "count": 1, "location": c.args["location"]})
+             for c in effect.calls if c.tool == "place_asset" and "location" in c.args
+             and (asset := scene.asset(str(c.args.get("asset")))) is not None and asset.category in request.categories]
+    if fresh and not effect.added:
+        out.append(Reading(text=describe(fresh), calls=fresh))
     if effect.removed and (request.place or request.state):
         keep = [a.id for a in effect.removed
                 if (request.place is None or _near(scene, a, request.place))
@@ -446,4 +363,4 @@ def refusal(problems: list[str], context: PlanContext) -> str:
             "say it another way, e.g. naming the thing and the place")
 
 
-__all__ = ["Effect", "Request", "Verdict", "dry_run", "problems_of", "read_request", "refusal", "repairs", "review"]
+__all__ = ["Effect", "Verdict", "dry_run", "problems_of", "refusal", "repairs", "review"]

@@ -124,6 +124,14 @@ _PLURAL_POINTERS = ("them", "those", "these", "they")
 THERE_RADIUS_M = 30.0
 
 
+# Words before a category that ask for one not there yet ("a tree", "some cones", "another").
+_INDEFINITE = frozenset(["a", "an", "some", "another", "new", "extra", "more", "additional"])
+# A layout named in words: the arrange Worker's shapes and their everyday names.
+_SHAPE = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|slalom|zig-?zag)\b")
+# "Inside the library", "into the JTEKT building": a building named after a word of containment.
+_INSIDE = re.compile(r"\b(?:inside|into|within)(?: of)?\s+(?:the\s+)?([a-z][a-z ]*)")
+
+
 @dataclass(frozen=True)
 class Scope:
     """What a plan touches, as the coverage checks need it."""
@@ -190,6 +198,43 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
         if any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)
     return out
+
+
+def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
+    """Categories asked for as new ("a tree at lot A", "two benches by the fountain") that the
+    plan takes from elsewhere in the scene, moving existing ones and adding none."""
+    if scope.added or scope.removed:
+        return []
+    moved = {a.category for a in scope.touched if a.id != "ego"}
+    out = []
+    mentions = ph.find_categories(masked)
+    masked = ph.normalise(masked)  # the text find_categories indexes
+    for m in mentions:
+        before = masked[: m.start].split()[-1:]
+        asked_new = bool(before) and (before[0] in _INDEFINITE or before[0] in ph.NUMBER_WORDS or before[0].isdigit())
+        if asked_new and m.category in moved and m.category not in out:
+            out.append(m.category)
+    return out
+
+
+def shape_left_out(masked: str, calls: tuple[ToolCall, ...], added: int) -> list[str]:
+    """A layout the request names ("in a row", "as a ring") for several new things that the
+    plan does not arrange (the arrange Worker's shapes are what a layout can be)."""
+    said = _SHAPE.search(masked)
+    if said is None or added < 2 or any(c.tool == "arrange_assets" for c in calls):
+        return []
+    return [f"you asked for a {said.group(1)}, but the plan does not arrange them"]
+
+
+def inside_building(masked: str, scene: Scene) -> list[str]:
+    """Putting something inside a building, which this world's buildings cannot hold."""
+    for m in _INSIDE.finditer(masked):
+        for building in scene.buildings:
+            name = ph.normalise(building.name).strip()
+            if name and (m.group(1).startswith(name) or name.startswith(m.group(1).strip())):
+                return [f"things cannot go inside the {building.name} in this world, only around it "
+                        "(its entrance is the nearest place)"]
+    return []
 
 
 def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
@@ -315,9 +360,12 @@ __all__ = [
     "back_reference",
     "definite_but_added",
     "environment_left_out",
+    "indefinite_but_moved",
+    "inside_building",
     "missing_categories",
     "named_things",
     "partial_removal",
+    "shape_left_out",
     "unknown_places",
     "wrong_direction",
 ]

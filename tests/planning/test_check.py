@@ -7,7 +7,8 @@ planners did) and asserts the outcome is a question or a refusal, never a silent
 from __future__ import annotations
 
 from drivetwin.orchestrator.planning import Plan, PlanContext
-from drivetwin.orchestrator.planning.check import read_request, review
+from drivetwin.orchestrator.planning.check import review
+from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools.base import ToolCall
 

@@ -8,7 +8,7 @@ prompt), plus the readings a person is offered where one can be built.
 from __future__ import annotations
 
 import pytest
-from drivetwin.orchestrator.planning.check import read_request
+from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
@@ -148,3 +148,22 @@ def _campus():
     from drivetwin.worlds.campus import build_campus
 
     return build_campus()
+
+
+def test_a_new_thing_asked_for_is_not_taken_from_elsewhere(campus, registry):
+    moved = Fixed(call("place_asset", asset="tree_1", location={"relation": "at", "target": "parking lot A"}))
+    report = refused_unchanged(campus, registry, moved, "stick a tree over at parking lot A")
+    assert report.question is not None
+    assert report.question.readings[0].calls[0].tool == "add_asset"
+
+
+def test_a_layout_named_is_arranged(campus, registry):
+    loose = Fixed(add("traffic_cone", count=5, location={"relation": "in_front_of", "target": "ego", "distance": 10}))
+    refused_unchanged(campus, registry, loose, "five cones ahead of the ego, set out in a row")
+
+
+def test_nothing_is_put_inside_a_building(campus, registry):
+    at_door = Fixed(add("bench", location={"relation": "at", "target": "Library entrance"}))
+    report = refused_unchanged(campus, registry, at_door, "could you fit a bench into the library")
+    said = report.error or (report.question.text if report.question else "")
+    assert "inside the Library" in said

@@ -9,7 +9,8 @@ session a planner whose plan misreads the request, worded in this file's own voi
 from __future__ import annotations
 
 from drivetwin.orchestrator.planning import Plan, PlanContext
-from drivetwin.orchestrator.planning.check import read_request, review
+from drivetwin.orchestrator.planning.check import review
+from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools.base import ToolCall
 

@@ -1,0 +1,120 @@
+"""What a request says, read from its words: the signals the plan check holds a plan to.
+
+Polarity (add or take away), whether it asks a question (in any mood: "which ...", "list
+the lanes", "could you tell me ..."), the categories and numbers it names, the place, lane and
+state (parked, moving) it limits itself to. A small general vocabulary, not the planners'
+phrase lists: the check must read a request the planners misread, so it cannot share their
+reading of it.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Literal
+
+from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.numbers import numbers_in
+from drivetwin.orchestrator.planning.rules.reading import find_lane, find_place
+from drivetwin.orchestrator.planning.rules.spelling import repair
+from drivetwin.worlds.scene import Scene
+
+# The small general vocabulary the check reads polarity and questions with.
+REMOVE_WORDS = re.compile(
+    r"\b(remove|delete|get rid of|take (away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
+    r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
+)
+ADD_WORDS = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
+_QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
+# Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
+# the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
+_INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|"
+                   r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
+# Number words that state an amount; vague ones ("a few", "some", "a couple") are not checked.
+_AMOUNTS = {w: n for w, n in ph.NUMBER_WORDS.items() if w not in ("a", "an", "one", "single", "pair", "couple",
+                                                                   "few", "some", "several")}
+# Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
+# in the mood of a command, whatever the politeness around them.
+_LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
+                     r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show)\b")
+# A request put politely, at the start of the sentence or of a clause ("..., could you add two
+# cars?"): a command even when it ends with a question mark.
+_POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^please\b")
+_PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
+# A category word after these describes the thing asked for ("a vehicle that carries passengers",
+# "a bench for pedestrians") rather than naming it.
+_DESCRIBING = re.compile(r"[a-z]\s+(that|which|who|with|for|carrying|carries|full of)\b[^,.;]*$")
+_PARKED = re.compile(r"\bparked\b")
+_MOVING = re.compile(r"\b(driving|moving|travelling|traveling)\b")
+
+
+@dataclass(frozen=True)
+class Request:
+    """The signals read from a request's words."""
+
+    text: str
+    question: bool
+    polarity: Literal["add", "remove"] | None
+    categories: frozenset[str]
+    numbers: tuple[float, ...]
+    place: str | None
+    lane: str | None
+    state: Literal["parked", "moving"] | None
+    about_places: bool = False
+    low: str = ""
+    masked: str = ""
+
+
+def read_request(prompt: str, scene: Scene) -> Request:
+    """The request's signals: polarity, categories, numbers, place, lane, state and mood."""
+    low = ph.normalise(repair(prompt, scene).text).strip()
+    place = _named_place(scene, low)
+    masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
+    for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
+        masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
+    lane = find_lane(scene, masked)
+    polite = bool(_POLITE.search(low))
+    question = bool(_INFO.search(low) or _LOOKUP.match(low)) or (
+        not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))
+    polarity: Literal["add", "remove"] | None = (
+        "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None
+    )
+    categories = frozenset(m.category for m in ph.find_categories(masked) if not _DESCRIBING.search(masked[: m.start]))
+    exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_times(masked))  # "a tree or two"
+    numbers = tuple(n.value for n in numbers_in(exact) if not _is_reference(masked, n.start))
+    numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+", exact)
+                     if w.group(0) in _AMOUNTS and not _is_reference(masked, w.start()))
+    state: Literal["parked", "moving"] | None = (
+        "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) else None
+    )
+    return Request(prompt, question, polarity, categories, numbers, place[0] if place else None,
+                   lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)), low, masked)
+
+
+def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
+    """A place the request names in full (a name or alias), not one guessed from a single word."""
+    found = find_place(scene, f" {low} ")
+    if found is None:
+        return None
+    said = re.sub(r"\b(the|a|an)\s+(?=[a-z0-9])", "", f" {low} "[found[1] : found[2]].strip())
+    landmark = scene.landmark(found[0])
+    names = [re.sub(r"\b(the|a|an)\s+(?=[a-z0-9])", "", ph.normalise(n).strip()) for n in (landmark.names() if landmark else [])]
+    return (found[0], max(0, found[1] - 1), max(0, found[2] - 1)) if said in names else None
+
+
+def _without_times(text: str) -> str:
+    # A clock time is checked by what the time tool sets (coverage.py), not number by number.
+    said = clock_time(text)
+    return text if said is None else text[: said.start] + " " * (said.end - said.start) + text[said.end :]
+
+
+def _is_reference(text: str, start: int) -> bool:
+    # "car 2", "lot 3", "the 2nd": a number that names something rather than an amount.
+    before = text[:start].split()[-1:]
+    if re.match(r"[\d.,e+-]*\s*(m|metres?|meters?|km|kph|mph|degrees?|deg|seconds?|s)\b", text[start:]):
+        return False  # "the truck 8 m ahead": an amount with its unit
+    return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in ("lot", "no"))
+
+
+__all__ = ["ADD_WORDS", "REMOVE_WORDS", "Request", "read_request"]
