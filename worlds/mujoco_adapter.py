@@ -17,6 +17,7 @@ import mujoco
 import numpy as np
 import numpy.typing as npt
 from drivetwin.worlds.catalog import category
+from drivetwin.worlds.edits import lineage
 from drivetwin.worlds.mujoco_dormancy import ContactDormancy
 from drivetwin.worlds.mujoco_pool import LOAD_HEADROOM_SHARE, BodyPool, slot_key
 from drivetwin.worlds.mujoco_static import (
@@ -106,7 +107,11 @@ def scene_diff(old: Scene, new: Scene) -> tuple[dict[str, AssetInstance], dict[s
     """The assets of `old` that `new` does not hold and those of `new` that `old` does not,
     each by id, matched by identity: edits share every unchanged AssetInstance between
     scenes, so this costs set operations (C), not a comparison per asset. An asset changed
-    (or copied) appears in both."""
+    (or copied) appears in both. When `new` is an edit applied to `old`, the edit's own record
+    of what left and came (its lineage) is the answer, without looking at the other assets."""
+    step = lineage(new)
+    if step.parent is not None and step.parent is lineage(old):
+        return {a.id: a for a in step.gone}, {a.id: a for a in step.came}
     before, after = old.all_assets(), new.all_assets()
     ids_before, ids_after = list(map(id, before)), list(map(id, after))
     set_before, set_after = set(ids_before), set(ids_after)
