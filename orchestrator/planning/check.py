@@ -20,6 +20,13 @@ from functools import cache
 from typing import Any, Literal
 
 from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning.attributes import (
+    look_left_out,
+    off_lane,
+    off_surface,
+    weather_strength,
+    wrong_counts,
+)
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
 from drivetwin.orchestrator.planning.coverage import (
     Scope,
@@ -162,6 +169,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         if far:
             out.append(f"you named {request.place}, but the plan acts on {_names(far)} away from it")
     out += _coverage(request, effect, scene, context.memory)
+    out += _attributes(request, effect, scene)
     out += wrong_direction(request.masked, scene, _moved(effect))
     if request.state is not None and (effect.removed or effect.changed):
         wrong = [a for a in [*effect.removed, *effect.changed] if a.id != "ego"
@@ -195,6 +203,19 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
     out += [f"there is no {w!r} in this world" for w in unknown_places(request.masked, effect.calls, scene)]
     return out
+
+
+def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
+    """What the plan gives the things named (see attributes.py): counts, lane, surface, look,
+    weather strength."""
+    placed = [*effect.added, *_moved(effect)]
+    out = wrong_counts(request.masked, [a for a in effect.added if a.category not in _companions(effect)])
+    if request.lane is not None and placed and not request.question:
+        out += off_lane(request.lane, scene, placed)
+    out += off_surface(request.low, scene, placed)
+    if not request.question:
+        out += look_left_out(request.low, effect.calls)
+    return out + weather_strength(request.low, effect.calls)
 
 
 def described_category(text: str, plan_categories: set[str]) -> str | None:

@@ -22,7 +22,7 @@ from drivetwin.worlds.scene import Scene
 
 # The small general vocabulary the check reads polarity and questions with.
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|get rid of|take (away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
+    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
 )
 ADD_WORDS = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")

@@ -167,3 +167,33 @@ def test_nothing_is_put_inside_a_building(campus, registry):
     report = refused_unchanged(campus, registry, at_door, "could you fit a bench into the library")
     said = report.error or (report.question.text if report.question else "")
     assert "inside the Library" in said
+
+
+def test_the_number_said_before_a_thing_is_how_many_are_added(campus, registry):
+    three = Fixed(add("traffic_cone", count=3, location={"relation": "in_front_of", "target": "ego", "distance": 2}))
+    refused_unchanged(campus, registry, three, "two cones 2 m in front of our car")
+
+
+def test_a_lane_named_holds_what_is_placed(campus, registry):
+    eastbound = Fixed(add("traffic_cone", count=2, location={"relation": "in_front_of", "target": "ego", "distance": 12}))
+    refused_unchanged(campus, registry, eastbound, "two cones in the westbound lane of Main Street")
+
+
+def test_on_the_sidewalk_means_on_the_sidewalk(campus, registry):
+    at_door = Fixed(add("pedestrian", location={"relation": "at", "target": "Library entrance"}))
+    refused_unchanged(campus, registry, at_door, "a walker on the pavement outside the library")
+
+
+def test_a_material_asked_for_is_set(campus, registry):
+    refused_unchanged(campus, registry, Fixed(add("bench")), "add a wooden bench")
+
+
+def test_light_weather_is_not_set_heavy(campus, registry):
+    refused_unchanged(campus, registry, Fixed(call("set_weather", kind="snow", intensity=0.9)), "light snow for the next run")
+    session = Session(campus, Fixed(call("set_weather", kind="snow", intensity=0.3)), registry)
+    assert session.submit("light snow for the next run").ok
+
+
+def test_an_exact_time_is_set_even_beside_the_lights(campus, registry):
+    plan = Fixed(call("set_lighting", vehicle_lights="on"), call("set_weather", kind="snow", intensity=0.3))
+    refused_unchanged(campus, registry, plan, "flurries at 05:40 with the headlights on")

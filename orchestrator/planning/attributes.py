@@ -1,0 +1,117 @@
+"""What a request says about the things it names, held against what a plan makes of them.
+
+coverage.py asks whether a plan acts on each thing named at all; this module asks whether it
+gives them what the words ask: how many ("ten people"), on which lane or surface ("in the
+westbound lane", "on the sidewalk"), in what look ("wooden", "paint it red"), and how strong
+the weather is ("light snow", "raining hard"). The vocabularies come from the Workers' own
+argument types and the world (lanes, surfaces, colours, materials), not from a suite's
+wording. Each finding is a sentence in plain words; check.py turns them into a question.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import typing
+from collections import Counter
+from collections.abc import Iterable
+
+from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.tools.appearance import COLOURS, AssetLookArgs
+from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.scene import AssetInstance, Scene
+from drivetwin.worlds.surface import lane_at, nearest_on_polyline, surface_at
+
+# Surfaces a request can put things on, by the words people use for them.
+_ON_SURFACE = re.compile(r"\b(?:on|onto|along) (?:the |a )?(sidewalk|side walk|pavement|footpath|kerb|curb)\b")
+# How far (m) from a lane's centre line an asset still counts as in that lane.
+LANE_SLACK_M = 0.5
+# Weather strength: words that ask for little or for much, and where the tool's scale splits.
+_LIGHT = re.compile(r"\b(light|gentle|slight|soft|a bit of|a little)\s+(rain|snow|fog|drizzle|shower|mist)|\bdrizzl")
+_HEAVY = re.compile(r"\b(heavy|hard|strong|thick|dense|torrential|pouring|downpour|blizzard)\b")
+STRENGTH_SPLIT = 0.5
+# Words that ask for a look change when a colour is named ("paint the bus red", "make it blue").
+_RECOLOUR = re.compile(r"\b(paint|repaint|colou?r|recolou?r|make|turn|change|spray)\b")
+_MATERIALS = frozenset(m for m in typing.get_args(typing.get_args(AssetLookArgs.model_fields["material"].annotation)[0])
+                       if m != "default")
+# Adjective forms of the materials ("wooden bench", "metallic car").
+_MATERIAL_WORDS = {**{m: m for m in _MATERIALS}, "wooden": "wood", "metallic": "metal", "shiny": "glossy"}
+
+
+def counts_named(masked: str) -> dict[str, int]:
+    """The number said right before each category named ("ten people", "4 bins"): how many of
+    that category the request asks for."""
+    out: dict[str, int] = {}
+    low = ph.normalise(masked)
+    for m in ph.find_categories(masked):
+        before = low[: m.start].split()[-1:]
+        if not before:
+            continue
+        word = before[0]
+        amount = int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
+        if amount is not None and amount >= 2 and word not in ("pair", "couple", "few", "several", "some"):
+            out[m.category] = amount
+    return out
+
+
+def wrong_counts(masked: str, added: Iterable[AssetInstance]) -> list[str]:
+    """Categories the plan adds a different number of than the request says."""
+    made = Counter(a.category for a in added)
+    return [f"you asked for {n} {c.replace('_', ' ')}, but the plan adds {made[c]}"
+            for c, n in counts_named(masked).items() if made[c] and made[c] != n]
+
+
+def off_lane(lane_id: str, scene: Scene, placed: Iterable[AssetInstance]) -> list[str]:
+    """Assets placed away from the one lane the request names."""
+    lane = scene.roads.lane(lane_id)
+    if lane is None:
+        return []
+    far = [a.id for a in placed if a.id != "ego" and not _in_lane(scene, a, lane_id)]
+    return [f"you named lane {lane_id}, but the plan puts {', '.join(far)} outside it"] if far else []
+
+
+def _in_lane(scene: Scene, asset: AssetInstance, lane_id: str) -> bool:
+    found = lane_at(scene, asset.pose.x, asset.pose.y)
+    if found is not None:
+        return found.id == lane_id
+    lane = scene.roads.lane(lane_id)
+    near = nearest_on_polyline(asset.pose.x, asset.pose.y, lane.centreline) if lane is not None else None
+    return near is None or lane is None or near.distance <= lane.width / 2 + LANE_SLACK_M
+
+
+def off_surface(low: str, scene: Scene, placed: Iterable[AssetInstance]) -> list[str]:
+    """Assets not on the sidewalk that the request puts on one."""
+    if _ON_SURFACE.search(low) is None:
+        return []
+    wrong = [a.id for a in placed if a.id != "ego" and surface_at(scene, a.pose.x, a.pose.y) != "sidewalk"]
+    return [f"you said on the sidewalk, but the plan puts {', '.join(wrong)} elsewhere"] if wrong else []
+
+
+def look_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
+    """A material, or a colour asked for as a change, that no call sets."""
+    if any(c.tool == "set_asset_appearance" or c.args.get("colour") for c in calls):
+        return []
+    words = re.findall(r"[a-z]+", low)
+    materials = [_MATERIAL_WORDS[w] for w in words if w in _MATERIAL_WORDS]
+    if materials:
+        return [f"you asked for {materials[0]}, but the plan does not change how anything looks"]
+    colours = [w for w in words if w in COLOURS]
+    if colours and _RECOLOUR.search(low):
+        return [f"you asked for {colours[0]}, but the plan does not change how anything looks"]
+    return []
+
+
+def weather_strength(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
+    """Weather said to be light or heavy that the plan sets at the other end of the scale."""
+    set_to = [c.args.get("intensity") for c in calls if c.tool == "set_weather"]
+    strengths = [float(s) for s in set_to if isinstance(s, int | float) and math.isfinite(s)]
+    if not strengths:
+        return []
+    if _LIGHT.search(low) and strengths[-1] > STRENGTH_SPLIT:
+        return [f"you asked for light weather, but the plan sets intensity {strengths[-1]:g}"]
+    if _HEAVY.search(low) and strengths[-1] < STRENGTH_SPLIT:
+        return [f"you asked for heavy weather, but the plan sets intensity {strengths[-1]:g}"]
+    return []
+
+
+__all__ = ["counts_named", "look_left_out", "off_lane", "off_surface", "weather_strength", "wrong_counts"]
