@@ -5,8 +5,10 @@ request in milliseconds. When their plans agree (the same calls once defaults ar
 or the same dry-run outcome), that is the plan. When they disagree, a candidate that is
 clearly surer wins: a retrieval plan below RETRIEVAL_CONFIDENT overrules nothing (the rules'
 path below applies), a sure one beats unsure rules; when both are sure the LLM hierarchy is
-asked (it is slow, so only then) and a candidate it agrees with wins; failing that the person
-is asked one short question with the readings in plain words (`Plan.question`). The losing candidates go in `Plan.alternatives`.
+asked (it is slow, so only then) and a candidate it agrees with wins, unless the model is small
+(its few-shot answer echoes the retrieval planner's own examples, so its agreement is no
+evidence); failing that the person is asked one short question with the readings in plain
+words (`Plan.question`). The losing candidates go in `Plan.alternatives`.
 When only the rules can plan it, the old rule applies: a sure rule plan is used, an unsure one
 goes to the LLM unless the model is small (SMALL_MODEL_PARAMETERS), whose edits spoil more
 unsure rule plans than they repair. Which path was taken, and why, is the first trace line.
@@ -168,10 +170,17 @@ class HybridPlanner:
 
     def _llm_or_ask(self, prompt: str, context: PlanContext, candidates: list[Plan], why: str, started: float) -> Plan:
         """Candidates that disagree (or none sure): the LLM's plan breaks the tie, else ask."""
-        try:
-            llm_plan: Plan | None = self.llm.plan(prompt, context)
-        except PlanningError as exc:
-            llm_plan, why = None, f"{why}; the LLM failed ({exc})"
+        llm_plan: Plan | None = None
+        if candidates and self.small_model():
+            # A small model's answer copies its few-shot demonstrations, which are the retrieval
+            # planner's own nearest examples: no independent vote, for seconds of CPU. The
+            # person chooses between the candidates instead.
+            why = f"{why}; the LLM is too small to break the tie"
+        else:
+            try:
+                llm_plan = self.llm.plan(prompt, context)
+            except PlanningError as exc:
+                why = f"{why}; the LLM failed ({exc})"
         if llm_plan is not None:
             llm_run = dry_run(llm_plan.calls, context.registry, context.scene)
             for candidate in candidates:
@@ -184,20 +193,12 @@ class HybridPlanner:
                     context,
                 ):
                     others = [c for c in candidates if c is not candidate]
-                    if self.small_model():
-                        # A small model's answer copies its few-shot demonstrations, which are
-                        # the retrieval planner's own nearest examples: not an independent vote.
-                        # Its agreement puts that reading first; the person decides.
-                        candidates = [candidate, *others]
-                        why = f"{why}; the small LLM sides with {candidate.planner}"
-                        break
                     return self._mark(
                         candidate, "tie-break", started, f"{why}; the LLM agrees with {candidate.planner}", others
                     )
-            else:
-                if not candidates:
-                    return self._mark(llm_plan, "llm", started, why)
-                candidates = [*candidates, llm_plan]
+            if not candidates:
+                return self._mark(llm_plan, "llm", started, why)
+            candidates = [*candidates, llm_plan]
         readings = [
             c for c in candidates if c.calls and (c.planner != "retrieval" or c.confidence >= RETRIEVAL_READING)
         ]

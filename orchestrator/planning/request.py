@@ -24,6 +24,7 @@ from drivetwin.worlds.scene import Scene
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
+    r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
 )
 ADD_WORDS = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")

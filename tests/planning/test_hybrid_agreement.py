@@ -83,11 +83,17 @@ class SmallModel(Fixed):
             return type("Facts", (), {"parameters": 135_000_000})()
 
 
-def test_a_small_models_agreement_orders_the_readings_but_asks(context: PlanContext) -> None:
+def test_a_small_model_breaks_no_tie_the_person_chooses(context: PlanContext) -> None:
     llm = SmallModel("llm", SNOW)
     plan = hybrid(Fixed("rules", RAIN, 0.9), Fixed("retrieval", SNOW, 0.9), llm).plan("x", context)
-    assert plan.calls == [] and plan.question is not None and llm.asked == 1
-    assert [r.calls for r in plan.question.readings] == [SNOW, RAIN]
+    assert plan.calls == [] and plan.question is not None and llm.asked == 0
+    assert [r.calls for r in plan.question.readings] == [RAIN, SNOW]
+
+
+def test_a_small_model_still_plans_what_nothing_else_could(context: PlanContext) -> None:
+    llm = SmallModel("llm", SNOW)
+    plan = hybrid(Fixed("rules", None), Fixed("retrieval", None), llm).plan("x", context)
+    assert path(plan) == "path: llm" and plan.calls == SNOW and llm.asked == 1
 
 
 def test_disagreement_nobody_settles_becomes_a_question_with_plain_readings(context: PlanContext) -> None:
