@@ -15,10 +15,12 @@ import re
 import typing
 from collections import Counter
 from collections.abc import Iterable
+from functools import cache
 
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.tools.appearance import COLOURS, AssetLookArgs
 from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import lane_at, nearest_on_polyline, surface_at
 
@@ -101,6 +103,34 @@ def look_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     return []
 
 
+def group_left_behind(low: str, removed: Iterable[AssetInstance], candidates: Iterable[AssetInstance]) -> list[str]:
+    """A removal of a group named by its catalog tag in the plural ("the vehicles in lot B",
+    "all the signs") that leaves members of other categories of that group among `candidates`
+    (the assets in the named scope)."""
+    gone = list(removed)
+    if not gone:
+        return []
+    out = []
+    for tag, members in _groups().items():
+        if not re.search(rf"\b{re.escape(tag)}s\b", low):
+            continue
+        ids = {a.id for a in gone}
+        left = [a.id for a in candidates if a.category in members and a.id not in ids and a.id != "ego"]
+        if left and any(a.category in members for a in gone):
+            out.append(f"you said {tag}s, but the plan leaves {', '.join(left)}")
+    return out
+
+
+@cache
+def _groups() -> dict[str, frozenset[str]]:
+    """Catalog tags shared by several categories, each with its categories."""
+    members: dict[str, set[str]] = {}
+    for name, entry in catalog().items():
+        for tag in entry.tags:
+            members.setdefault(tag, set()).add(name)
+    return {tag: frozenset(names) for tag, names in members.items() if len(names) > 1}
+
+
 def weather_strength(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     """Weather said to be light or heavy that the plan sets at the other end of the scale."""
     set_to = [c.args.get("intensity") for c in calls if c.tool == "set_weather"]
@@ -114,4 +144,12 @@ def weather_strength(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     return []
 
 
-__all__ = ["counts_named", "look_left_out", "off_lane", "off_surface", "weather_strength", "wrong_counts"]
+__all__ = [
+    "counts_named",
+    "group_left_behind",
+    "look_left_out",
+    "off_lane",
+    "off_surface",
+    "weather_strength",
+    "wrong_counts",
+]

@@ -21,6 +21,7 @@ from typing import Any, Literal
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.attributes import (
+    group_left_behind,
     look_left_out,
     off_lane,
     off_surface,
@@ -215,6 +216,9 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     out += off_surface(request.low, scene, placed)
     if not request.question:
         out += look_left_out(request.low, effect.calls)
+    if request.place is not None:
+        scoped = [a for a in scene.all_assets() if _near(scene, a, request.place)]
+        out += group_left_behind(request.low, effect.removed, scoped)
     return out + weather_strength(request.low, effect.calls)
 
 

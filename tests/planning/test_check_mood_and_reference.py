@@ -197,3 +197,10 @@ def test_light_weather_is_not_set_heavy(campus, registry):
 def test_an_exact_time_is_set_even_beside_the_lights(campus, registry):
     plan = Fixed(call("set_lighting", vehicle_lights="on"), call("set_weather", kind="snow", intensity=0.3))
     refused_unchanged(campus, registry, plan, "flurries at 05:40 with the headlights on")
+
+
+def test_a_group_named_by_its_kind_is_removed_whole(campus, registry):
+    cars_only = Fixed(call("remove_assets", category="passenger_car", near="parking lot B"))
+    report = refused_unchanged(campus, registry, cars_only, "all the vehicles parked over in parking lot B can go")
+    said = report.error or (report.question.text if report.question else "")
+    assert "suv_1" in said
