@@ -68,6 +68,8 @@ NUMBER_TOLERANCE = 0.02
 # Unit conversions a planner may apply to a number: km/h and mph to m/s.
 UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704)
 QUERY_TOOLS = ("find_assets", "find_landmarks", "find_lanes", "asset_properties")
+# Workers that write the storyboard: their readings are the scenario reader's to judge.
+SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 MAX_READINGS = 3
 
 # Command verbs and fillers dropped before grounding a description on its nouns.
@@ -358,7 +360,7 @@ def _removal(call: ToolCall, request: Request, scene: Scene) -> ToolCall | None:
 def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
     """Apply, ask or refuse: whether `plan` accounts for what `prompt` asks (nothing is applied)."""
     if plan.question is not None:
-        return Verdict("ask", ["the planner could not tell which reading was meant"], plan.question)
+        return _screened(prompt, plan.question, context)
     if (missed := missed_scenario(prompt, plan, context)) is not None:  # never a static edit for a scenario
         return Verdict("ask" if missed.question else "refuse", [missed.problem], missed.question, missed.message)
     effect = dry_run(plan.calls, context)
@@ -379,6 +381,25 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
     readings = [*fitting[: MAX_READINGS - 1], mine]
     text = f"I am not sure what you meant: {found[0]}. Which did you mean?"
     return Verdict("ask", found, Question(text=text, readings=readings))
+
+
+def _screened(prompt: str, question: Question, context: PlanContext) -> Verdict:
+    """A planner's question with the readings this check knows to misread the request taken
+    out; when none is left, a refusal that says why the best of them was wrong."""
+    if any(c.tool in SCENARIO_TOOLS for r in question.readings for c in r.calls):
+        return Verdict("ask", ["the planner could not tell which reading was meant"], question)
+    request = read_request(prompt, context.scene)
+    kept, first_problems = [], []
+    for reading in question.readings:
+        effect = dry_run(reading.calls, context)
+        found = ["a dry run refuses it"] if effect is None else problems_of(request, effect, context)
+        if not found:
+            kept.append(reading)
+        first_problems = first_problems or found
+    if not kept:
+        return Verdict("refuse", first_problems, None, refusal(first_problems, context))
+    return Verdict("ask", ["the planner could not tell which reading was meant"],
+                   question.model_copy(update={"readings": kept}))
 
 
 def refusal(problems: list[str], context: PlanContext) -> str:

@@ -204,3 +204,30 @@ def test_a_group_named_by_its_kind_is_removed_whole(campus, registry):
     report = refused_unchanged(campus, registry, cars_only, "all the vehicles parked over in parking lot B can go")
     said = report.error or (report.question.text if report.question else "")
     assert "suv_1" in said
+
+
+class Asking:
+    """A planner that asks which of fixed readings was meant."""
+
+    name = "asking"
+
+    def __init__(self, *readings: list[ToolCall]) -> None:
+        self.readings = readings
+
+    def plan(self, prompt, context):
+        from drivetwin.orchestrator.planning import Plan, Question, Reading
+
+        question = Question(text="which?", readings=[Reading(text=str(r), calls=r) for r in self.readings])
+        return Plan(calls=[], planner=self.name, question=question)
+
+
+def test_a_planners_question_never_offers_a_reading_the_check_knows_is_wrong(campus, registry):
+    west, east = [call("move_asset", asset="ego", east=-3.0)], [call("move_asset", asset="ego", east=3.0)]
+    report = Session(campus, Asking(west, east), registry).submit("roll the ego 3 m eastwards")
+    assert report.question is not None and [r.calls for r in report.question.readings] == [east]
+
+
+def test_a_question_whose_every_reading_is_wrong_becomes_a_refusal_saying_why(campus, registry):
+    west = [call("move_asset", asset="ego", east=-3.0)]
+    report = refused_unchanged(campus, registry, Asking(west), "roll the ego 3 m eastwards")
+    assert report.question is None and "east" in (report.error or "")
