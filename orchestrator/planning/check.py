@@ -389,7 +389,8 @@ def _screened(prompt: str, question: Question, context: PlanContext) -> Verdict:
     if any(c.tool in SCENARIO_TOOLS for r in question.readings for c in r.calls):
         return Verdict("ask", ["the planner could not tell which reading was meant"], question)
     request = read_request(prompt, context.scene)
-    kept, first_problems = [], []
+    kept: list[Reading] = []
+    first_problems: list[str] = []
     for reading in question.readings:
         effect = dry_run(reading.calls, context)
         found = ["a dry run refuses it"] if effect is None else problems_of(request, effect, context)
