@@ -17,6 +17,7 @@ from collections import Counter
 from collections.abc import Iterable
 from functools import cache
 
+import numpy as np
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.tools.appearance import COLOURS, AssetLookArgs
 from drivetwin.tools.base import ToolCall
@@ -28,6 +29,13 @@ from drivetwin.worlds.surface import lane_at, nearest_on_polyline, surface_at
 _ON_SURFACE = re.compile(r"\b(?:on|onto|along) (?:the |a )?(sidewalk|side walk|pavement|footpath|kerb|curb)\b")
 # How far (m) from a lane's centre line an asset still counts as in that lane.
 LANE_SLACK_M = 0.5
+# Layouts named in words (the arrange Worker's line and ring) and spacings ("4 m apart"), judged
+# on three or more new things: the smaller spread of a line is at most LINE_SPREAD of its
+# length, a ring's radii vary by at most RING_SPREAD, a spacing is held within a quarter.
+_SHAPE = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle)\b")
+_APART = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+apart\b")
+MIN_LAYOUT = 3
+LINE_SPREAD, RING_SPREAD, SPACING_TOLERANCE = 0.25, 0.25, 0.25
 # Weather strength: words that ask for little or for much, and where the tool's scale splits.
 _LIGHT = re.compile(r"\b(light|gentle|slight|soft|a bit of|a little)\s+(rain|snow|fog|drizzle|shower|mist)|\bdrizzl")
 _HEAVY = re.compile(r"\b(heavy|hard|strong|thick|dense|torrential|pouring|downpour|blizzard)\b")
@@ -131,6 +139,34 @@ def _groups() -> dict[str, frozenset[str]]:
     return {tag: frozenset(names) for tag, names in members.items() if len(names) > 1}
 
 
+def wrong_layout(masked: str, added: Iterable[AssetInstance]) -> list[str]:
+    """New things the request lays out ("in a row", "a ring of", "4 m apart") that the plan
+    places otherwise: judged on where they end up, whichever Worker put them there."""
+    placed = [a for a in added if a.id != "ego"]
+    if len(placed) < MIN_LAYOUT:
+        return []
+    points = np.array([[a.pose.x, a.pose.y] for a in placed])
+    centred = points - points.mean(axis=0)
+    out = []
+    said = _SHAPE.search(masked)
+    if said is not None and said.group(1) in ("line", "row"):
+        spread = np.linalg.svd(centred, compute_uv=False)
+        if spread[0] <= 0 or spread[1] / spread[0] > LINE_SPREAD:
+            out.append(f"you asked for a {said.group(1)}, but the plan scatters them")
+    if said is not None and said.group(1) in ("ring", "circle"):
+        radii = np.hypot(centred[:, 0], centred[:, 1])
+        if radii.mean() <= 0 or radii.std() / radii.mean() > RING_SPREAD:
+            out.append(f"you asked for a {said.group(1)}, but the plan does not put them round a centre")
+    apart = _APART.search(masked)
+    if apart is not None:
+        wanted = float(apart.group(1))
+        axis = np.linalg.svd(centred)[2][0]
+        gaps = np.diff(np.sort(centred @ axis))
+        if abs(float(np.median(gaps)) - wanted) > SPACING_TOLERANCE * wanted:
+            out.append(f"you asked for {wanted:g} m apart, but the plan spaces them {float(np.median(gaps)):.1f} m")
+    return out
+
+
 def weather_strength(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     """Weather said to be light or heavy that the plan sets at the other end of the scale."""
     set_to = [c.args.get("intensity") for c in calls if c.tool == "set_weather"]
@@ -152,4 +188,5 @@ __all__ = [
     "off_surface",
     "weather_strength",
     "wrong_counts",
+    "wrong_layout",
 ]

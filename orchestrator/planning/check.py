@@ -27,6 +27,7 @@ from drivetwin.orchestrator.planning.attributes import (
     off_surface,
     weather_strength,
     wrong_counts,
+    wrong_layout,
 )
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
 from drivetwin.orchestrator.planning.coverage import (
@@ -39,7 +40,6 @@ from drivetwin.orchestrator.planning.coverage import (
     missing_categories,
     named_things,
     partial_removal,
-    shape_left_out,
     unknown_places,
     wrong_direction,
 )
@@ -200,7 +200,6 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += partial_removal(request.masked, scope, scene, limited)
     out += [f"you asked for a new {c.replace('_', ' ')}, but the plan moves one that is there"
             for c in indefinite_but_moved(request.masked, scope, scene)]
-    out += shape_left_out(request.masked, effect.calls, len(effect.added))
     if effect.added or effect.changed:
         out += inside_building(request.low, scene)
     out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
@@ -213,6 +212,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     weather strength."""
     placed = [*effect.added, *_moved(effect)]
     out = wrong_counts(request.masked, [a for a in effect.added if a.category not in _companions(effect)])
+    out += wrong_layout(request.masked, effect.added)
     if request.lane is not None and placed and not request.question:
         out += off_lane(request.lane, scene, placed)
     out += off_surface(request.low, scene, placed)

@@ -126,8 +126,6 @@ THERE_RADIUS_M = 30.0
 
 # Words before a category that ask for one not there yet ("a tree", "some cones", "another").
 _INDEFINITE = frozenset(["a", "an", "some", "another", "new", "extra", "more", "additional"])
-# A layout named in words: the arrange Worker's shapes and their everyday names.
-_SHAPE = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|slalom|zig-?zag)\b")
 # "Inside the library", "into the JTEKT building": a building named after a word of containment.
 _INSIDE = re.compile(r"\b(?:inside|into|within)(?: of)?\s+(?:the\s+)?([a-z][a-z ]*)")
 
@@ -215,15 +213,6 @@ def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
         if asked_new and m.category in moved and m.category not in out:
             out.append(m.category)
     return out
-
-
-def shape_left_out(masked: str, calls: tuple[ToolCall, ...], added: int) -> list[str]:
-    """A layout the request names ("in a row", "as a ring") for several new things that the
-    plan does not arrange (the arrange Worker's shapes are what a layout can be)."""
-    said = _SHAPE.search(masked)
-    if said is None or added < 2 or any(c.tool == "arrange_assets" for c in calls):
-        return []
-    return [f"you asked for a {said.group(1)}, but the plan does not arrange them"]
 
 
 def inside_building(masked: str, scene: Scene) -> list[str]:
@@ -365,7 +354,6 @@ __all__ = [
     "missing_categories",
     "named_things",
     "partial_removal",
-    "shape_left_out",
     "unknown_places",
     "wrong_direction",
 ]

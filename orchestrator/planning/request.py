@@ -105,7 +105,9 @@ def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
 
 
 def _without_times(text: str) -> str:
-    # A clock time is checked by what the time tool sets (coverage.py), not number by number.
+    # A clock time is checked by what the time tool sets (coverage.py), and a spacing ("4 m
+    # apart") by where things end up (attributes.py), not number by number.
+    text = re.sub(r"\d+(?:\.\d+)?\s*(?:m|metres?|meters?)\s+apart\b", lambda m: " " * len(m.group(0)), text)
     said = clock_time(text)
     return text if said is None else text[: said.start] + " " * (said.end - said.start) + text[said.end :]
 

@@ -157,9 +157,21 @@ def test_a_new_thing_asked_for_is_not_taken_from_elsewhere(campus, registry):
     assert report.question.readings[0].calls[0].tool == "add_asset"
 
 
-def test_a_layout_named_is_arranged(campus, registry):
-    loose = Fixed(add("traffic_cone", count=5, location={"relation": "in_front_of", "target": "ego", "distance": 10}))
-    refused_unchanged(campus, registry, loose, "five cones ahead of the ego, set out in a row")
+def cones_at(*points: tuple[float, float]) -> Fixed:
+    return Fixed(*(add("traffic_cone", location={"relation": "absolute", "x": x, "y": y}) for x, y in points))
+
+
+def test_a_layout_named_is_judged_by_where_things_end_up(campus, registry):
+    triangle = cones_at((-40.0, -1.8), (-35.0, -1.8), (-37.5, 1.8))
+    refused_unchanged(campus, registry, triangle, "three cones down the road, set out in a row")
+    in_a_row = cones_at((-40.0, -1.8), (-35.0, -1.8), (-30.0, -1.8))
+    assert Session(campus, in_a_row, registry).submit("three cones down the road, set out in a row").ok
+
+
+def test_a_spacing_named_is_kept(campus, registry):
+    five_apart = cones_at((-40.0, -1.8), (-35.0, -1.8), (-30.0, -1.8))
+    refused_unchanged(campus, registry, five_apart, "three cones down the road, 2 m apart")
+    assert Session(campus, five_apart, registry).submit("three cones down the road, 5 m apart").ok
 
 
 def test_nothing_is_put_inside_a_building(campus, registry):
