@@ -25,6 +25,7 @@ from drivetwin.tools.footprints import track
 from drivetwin.worlds.bench_physics import PROP_MIX
 from drivetwin.worlds.campus import build_campus
 from drivetwin.worlds.catalog import category
+from drivetwin.worlds.progress import progress_bar
 from drivetwin.worlds.scene import MAX_ASSETS, AssetInstance, PhysicsProps, Pose, Scene, asset_order
 from drivetwin.worlds.simulation import Simulation
 from drivetwin.worlds.surface import building_at
@@ -147,19 +148,21 @@ def measure(n: int, repeats: int) -> dict[str, Any]:
     cpu: dict[str, list[float]] = {"add": [], "move": [], "remove": []}
     mujoco_ms: list[float] = []
     recompiles = 0
-    for _ in range(repeats):
-        for kind, prompt, call in _edits():
-            planner.calls = [call]
-            clocks = _Clocks()
-            report = session.submit(prompt)
-            wall_ms, cpu_ms = clocks.ms()
-            wall[kind].append(wall_ms)
-            cpu[kind].append(cpu_ms)
-            if not report.ok:
-                raise SystemExit(f"{kind} failed at {n} assets: {report.error}")
-            if sim.last_update is not None:
-                recompiles += sim.last_update.recompiled
-                mujoco_ms.append(sim.last_update.ms)
+    with progress_bar(f"edits, {n} assets", total=repeats * len(_edits()), unit="edits") as bar:
+        for _ in range(repeats):
+            for kind, prompt, call in _edits():
+                planner.calls = [call]
+                clocks = _Clocks()
+                report = session.submit(prompt)
+                wall_ms, cpu_ms = clocks.ms()
+                wall[kind].append(wall_ms)
+                cpu[kind].append(cpu_ms)
+                if not report.ok:
+                    raise SystemExit(f"{kind} failed at {n} assets: {report.error}")
+                if sim.last_update is not None:
+                    recompiles += sim.last_update.recompiled
+                    mujoco_ms.append(sim.last_update.ms)
+                bar.advance(note=kind)
     sim.step(WARMUP_STEPS)
     wall_rates, cpu_rates = [], []
     for _ in range(PHYSICS_RUNS):

@@ -26,6 +26,7 @@ from drivetwin.orchestrator.planning.registry import make_planner
 from drivetwin.orchestrator.session import Session
 from drivetwin.prompts.templates import prompt_version
 from drivetwin.worlds.defaults import load_world
+from drivetwin.worlds.progress import progress_bar
 
 # Vague or misspelled requests the rules are unsure of: they exercise the hybrid's LLM path.
 VAGUE_PROMPTS = (
@@ -64,14 +65,16 @@ def run_config(planner: Planner, prompts: list[str], repeats: int) -> dict[str, 
     # By position: the script repeats some prompts ("make it daytime") on purpose.
     samples: dict[int, list[float]] = {i: [] for i in range(len(prompts))}
     outcomes: dict[int, list[str]] = {i: [] for i in range(len(prompts))}
-    for _ in range(repeats):
-        session = Session(load_world("campus"), planner)
-        for p, prompt in enumerate(prompts):
-            started = time.perf_counter()
-            report = session.submit(prompt)
-            samples[p].append(time.perf_counter() - started)
-            path = report.plan.trace[0].input if report.plan and report.plan.trace else ""
-            outcomes[p].append(("ok" if report.ok else f"failed: {report.error}")[:200] + f" {path}")
+    with progress_bar(planner.name, total=repeats * len(prompts), unit="prompts") as bar:
+        for _ in range(repeats):
+            session = Session(load_world("campus"), planner)
+            for p, prompt in enumerate(prompts):
+                started = time.perf_counter()
+                report = session.submit(prompt)
+                samples[p].append(time.perf_counter() - started)
+                path = report.plan.trace[0].input if report.plan and report.plan.trace else ""
+                outcomes[p].append(("ok" if report.ok else f"failed: {report.error}")[:200] + f" {path}")
+                bar.advance()
     rows = [
         {
             "prompt": prompts[p],

@@ -73,3 +73,13 @@ def test_eval_run_quiet_draws_no_bar_even_on_a_terminal(monkeypatch: pytest.Monk
     assert drawn.exit_code == 0 and quiet.exit_code == 0, drawn.output + quiet.output
     assert "trials" in drawn.stderr and "passed" in drawn.stdout
     assert "trials" not in quiet.stderr and "passed" in quiet.stdout
+
+
+def test_the_edit_benchmark_draws_its_bar_on_a_terminal(monkeypatch: pytest.MonkeyPatch) -> None:
+    from drivetwin.orchestrator import bench_edits
+
+    monkeypatch.delenv("CI", raising=False)
+    screen = Terminal()
+    monkeypatch.setattr("sys.stderr", screen)
+    row = bench_edits.measure(0, 1)
+    assert row["assets"] > 0 and "edits, 0 assets" in screen.getvalue() and "3/3" in screen.getvalue()

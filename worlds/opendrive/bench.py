@@ -18,6 +18,7 @@ from drivetwin.worlds.opendrive import samples
 from drivetwin.worlds.opendrive.package import scene_from_file
 from drivetwin.worlds.opendrive.reader import read_opendrive
 from drivetwin.worlds.opendrive.world import lane_id
+from drivetwin.worlds.progress import progress_bar
 from shapely import LineString, Point
 
 # The library's evaluation step the Scene's lanes are measured against, metres.
@@ -81,7 +82,12 @@ def main() -> None:
         paths = [samples.geometry_tour(folder / "tour.xodr"), samples.crossroads(folder / "crossroads.xodr"),
                  samples.grid_town(folder / f"grid{args.grid}.xodr", args.grid),
                  DATA / "town.osm", DATA / "spreewaldring.osm"]
-        rows = [measure(path) for path in paths if path.is_file()]
+        present = [path for path in paths if path.is_file()]
+        rows = []
+        with progress_bar("road maps", total=len(present), unit="maps") as bar:
+            for path in present:
+                rows.append(measure(path))
+                bar.advance(note=path.name)
     print(f"{'map':22s} {'km²':>7s} {'lanes':>6s} {'import s':>9s} {'max dev cm':>11s}")
     for row in rows:
         print(f"{row['map']!s:22s} {row['area_km2']:>7} {row['lanes']:>6} {row['import_s']:>9} {row['max_deviation_cm']:>11}")
