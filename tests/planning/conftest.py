@@ -1,3 +1,5 @@
+"""Planning fixtures on top of the root ones (tests/conftest.py: campus, registry)."""
+
 from __future__ import annotations
 
 import pytest
@@ -5,18 +7,7 @@ from drivetwin.orchestrator.planning import PlanContext
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools import ToolRegistry
-from drivetwin.worlds.campus import build_campus
 from drivetwin.worlds.scene import Scene
-
-
-@pytest.fixture(scope="session")
-def registry() -> ToolRegistry:
-    return ToolRegistry.default(plugins=False)
-
-
-@pytest.fixture
-def campus() -> Scene:
-    return build_campus()
 
 
 @pytest.fixture
