@@ -111,6 +111,11 @@ def look_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     return []
 
 
+def names_group(low: str) -> bool:
+    """Whether the words name a group by its catalog tag in the plural ("the vehicles")."""
+    return any(re.search(rf"\b{re.escape(tag)}s\b", low) for tag in _groups())
+
+
 def group_left_behind(low: str, removed: Iterable[AssetInstance], candidates: Iterable[AssetInstance]) -> list[str]:
     """A removal of a group named by its catalog tag in the plural ("the vehicles in lot B",
     "all the signs") that leaves members of other categories of that group among `candidates`
@@ -184,6 +189,7 @@ __all__ = [
     "counts_named",
     "group_left_behind",
     "look_left_out",
+    "names_group",
     "off_lane",
     "off_surface",
     "weather_strength",

@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 import re
 from collections import Counter
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import cache
 from typing import Any, Literal
@@ -23,6 +24,7 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.attributes import (
     group_left_behind,
     look_left_out,
+    names_group,
     off_lane,
     off_surface,
     weather_strength,
@@ -55,6 +57,7 @@ from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
 from drivetwin.worlds.catalog import catalog, placeable_categories
 from drivetwin.worlds.scene import AssetInstance, Scene
+from drivetwin.worlds.surface import point_in_polygon
 
 Action = Literal["apply", "ask", "refuse"]
 # Metres from a named place within which an edit counts as "at" it (a parking lot or a building
@@ -218,9 +221,9 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     out += off_surface(request.low, scene, placed)
     if not request.question:
         out += look_left_out(request.low, effect.calls)
-    if request.place is not None:
-        scoped = [a for a in scene.all_assets() if _near(scene, a, request.place)]
-        out += group_left_behind(request.low, effect.removed, scoped)
+    if request.place is not None and effect.removed and names_group(request.low):
+        near = _nearness(scene, request.place)
+        out += group_left_behind(request.low, effect.removed, [a for a in scene.all_assets() if near(a)])
     return out + weather_strength(request.low, effect.calls)
 
 
@@ -295,16 +298,24 @@ def _accounts_for(number: float, effect: Effect) -> bool:
 
 
 def _near(scene: Scene, asset: AssetInstance, place: str) -> bool:
+    return _nearness(scene, place)(asset)
+
+
+def _nearness(scene: Scene, place: str) -> Callable[[AssetInstance], bool]:
+    """Whether an asset is at `place` (inside its area, or within PLACE_RADIUS_M), the place
+    resolved once; a place the tools cannot resolve cannot be judged against: all are near."""
     try:
         target = resolve_target(scene, place)
     except ToolError:
-        return True  # a place the tools cannot resolve cannot be judged against
-    if target.polygon is not None:
-        from drivetwin.worlds.surface import point_in_polygon
+        return lambda asset: True
+    polygon = target.polygon
 
-        if point_in_polygon(asset.pose.x, asset.pose.y, target.polygon):
+    def near(asset: AssetInstance) -> bool:
+        if polygon is not None and point_in_polygon(asset.pose.x, asset.pose.y, polygon):
             return True
-    return math.hypot(asset.pose.x - target.x, asset.pose.y - target.y) <= PLACE_RADIUS_M
+        return math.hypot(asset.pose.x - target.x, asset.pose.y - target.y) <= PLACE_RADIUS_M
+
+    return near
 
 
 def _names_target(effect: Effect, place: str) -> bool:
