@@ -36,6 +36,15 @@ _SHAPE = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle)\b")
 _APART = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+apart\b")
 MIN_LAYOUT = 3
 LINE_SPREAD, RING_SPREAD, SPACING_TOLERANCE = 0.25, 0.25, 0.25
+# "Facing east": a heading said as a compass direction; a heading may be off by this much.
+_FACING = re.compile(r"\b(?:facing|face|pointing|heading|pointed)\s+(?:to(?:wards?)?\s+)?(?:the\s+)?(north|south|east|west)\b")
+_COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
+HEADING_SLACK_DEG = 30.0
+# "In front of the SUV", "behind us": the side of an asset, judged for things more than this
+# far from it (closer, the side of a footprint is a matter of metres' rounding).
+_SIDE = re.compile(r"\b(in front of|ahead of|behind)\s+(?:the\s+|our\s+)?([a-z0-9_]+(?: [a-z0-9_]+)?)")
+MIN_SIDE_M = 1.0
+_EGO_WORDS = ("ego", "us", "me", "ego_vehicle", "ego_car", "car_under_test")
 # Weather strength: words that ask for little or for much, and where the tool's scale splits.
 _LIGHT = re.compile(r"\b(light|gentle|slight|soft|a bit of|a little)\s+(rain|snow|fog|drizzle|shower|mist)|\bdrizzl")
 _HEAVY = re.compile(r"\b(heavy|hard|strong|thick|dense|torrential|pouring|downpour|blizzard)\b")
@@ -172,6 +181,69 @@ def wrong_layout(masked: str, added: Iterable[AssetInstance]) -> list[str]:
     return out
 
 
+def wrong_heading(low: str, placed: Iterable[AssetInstance]) -> list[str]:
+    """Things the request has face a compass direction ("facing east") that the plan turns
+    elsewhere."""
+    said = _FACING.search(low)
+    if said is None:
+        return []
+    east, north = _COMPASS_VECTORS[said.group(1)]
+    want = math.atan2(north, east)
+    slack = math.radians(HEADING_SLACK_DEG)
+    off = [a.id for a in placed if abs(math.remainder(a.pose.yaw - want, math.tau)) > slack]
+    return [f"you said facing {said.group(1)}, but the plan turns {', '.join(off)} another way"] if off else []
+
+
+def wrong_side(low: str, scene: Scene, added: Iterable[AssetInstance]) -> list[str]:
+    """New things put "in front of" or "behind" an asset (a car, the ego: assets face a way)
+    that end up on its other side."""
+    out = []
+    for m in _SIDE.finditer(low):
+        anchor = _asset_named(scene, m.group(2))
+        if anchor is None:
+            continue
+        ahead = m.group(1) in ("in front of", "ahead of")
+        for a in added:
+            dx, dy = a.pose.x - anchor.pose.x, a.pose.y - anchor.pose.y
+            along = dx * math.cos(anchor.pose.yaw) + dy * math.sin(anchor.pose.yaw)
+            if math.hypot(dx, dy) > MIN_SIDE_M and (along < 0) == ahead:
+                out.append(f"you said {m.group(1)} {anchor.id}, but the plan puts {a.id} on its other side")
+    return out
+
+
+def _asset_named(scene: Scene, words: str) -> AssetInstance | None:
+    """The asset the words after "in front of" name: an id ("passenger_car_2"), the ego, or a
+    category of which the world holds exactly one ("the bus", not "the bus stop")."""
+    said = words.split()
+    for phrase in (" ".join(said), said[0]):
+        key = phrase.replace(" ", "_")
+        if key in _EGO_WORDS:
+            return scene.asset("ego")
+        if (found := scene.asset(key)) is not None:
+            return found
+        indexed = ph.normalise(phrase)  # the text find_categories indexes
+        kinds = [m.category for m in ph.find_categories(phrase) if indexed[m.start : m.end] == indexed.strip()]
+        same = [a for a in scene.all_assets() if kinds and a.category == kinds[0]]
+        if len(same) == 1:
+            return same[0]
+    return None
+
+
+def some_of_all(masked: str, changed: Iterable[AssetInstance], scene: Scene) -> list[str]:
+    """A change asked of all of a category ("make every bench wooden", "all the cars red") that
+    the plan makes to only some of them."""
+    done = Counter(a.category for a in changed)
+    low = ph.normalise(masked)  # the text find_categories indexes
+    out = []
+    for m in ph.find_categories(masked):
+        if not re.search(r"\b(all|every|each)( one)?( of)?( the| those| these)?\s*$", low[: m.start]):
+            continue
+        there = scene.count(m.category)
+        if 0 < done[m.category] < there:
+            out.append(f"you said all {m.category.replace('_', ' ')}s, but the plan changes {done[m.category]} of the {there}")
+    return out
+
+
 def weather_strength(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     """Weather said to be light or heavy that the plan sets at the other end of the scale."""
     set_to = [c.args.get("intensity") for c in calls if c.tool == "set_weather"]
@@ -192,7 +264,10 @@ __all__ = [
     "names_group",
     "off_lane",
     "off_surface",
+    "some_of_all",
     "weather_strength",
     "wrong_counts",
+    "wrong_heading",
     "wrong_layout",
+    "wrong_side",
 ]

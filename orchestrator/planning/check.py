@@ -27,9 +27,12 @@ from drivetwin.orchestrator.planning.attributes import (
     names_group,
     off_lane,
     off_surface,
+    some_of_all,
     weather_strength,
     wrong_counts,
+    wrong_heading,
     wrong_layout,
+    wrong_side,
 )
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
 from drivetwin.orchestrator.planning.coverage import (
@@ -216,6 +219,10 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     placed = [*effect.added, *_moved(effect)]
     out = wrong_counts(request.masked, [a for a in effect.added if a.category not in _companions(effect)])
     out += wrong_layout(request.masked, effect.added)
+    out += wrong_heading(request.low, placed)
+    out += wrong_side(request.low, scene, effect.added)
+    if not effect.removed and not effect.added:
+        out += some_of_all(request.masked, [a for a in effect.changed if a.id != "ego"], scene)
     if request.lane is not None and placed and not request.question:
         out += off_lane(request.lane, scene, placed)
     out += off_surface(request.low, scene, placed)

@@ -243,3 +243,22 @@ def test_a_question_whose_every_reading_is_wrong_becomes_a_refusal_saying_why(ca
     west = [call("move_asset", asset="ego", east=-3.0)]
     report = refused_unchanged(campus, registry, Asking(west), "roll the ego 3 m eastwards")
     assert report.question is None and "east" in (report.error or "")
+
+
+def test_a_heading_said_as_a_compass_direction_is_kept(campus, registry):
+    refused_unchanged(campus, registry, Fixed(add("bench", yaw_deg=90.0)), "add a bench facing east")
+    assert Session(campus, Fixed(add("bench", yaw_deg=0.0)), registry).submit("add a bench facing east").ok
+
+
+def test_in_front_of_an_asset_is_on_the_side_it_faces(campus, registry):
+    behind = Fixed(add("traffic_cone", location={"relation": "absolute", "x": -70.0, "y": -1.8}))
+    refused_unchanged(campus, registry, behind, "a cone in front of the ego")
+    ahead = Fixed(add("traffic_cone", location={"relation": "absolute", "x": -50.0, "y": -1.8}))
+    assert Session(campus, ahead, registry).submit("a cone in front of the ego").ok
+
+
+def test_a_change_to_all_of_a_kind_is_made_to_all_of_them(campus, registry):
+    one = Fixed(call("set_asset_appearance", assets=["tree_1"], colour="red"))
+    refused_unchanged(campus, registry, one, "every one of the trees should turn red")
+    every = Fixed(call("set_asset_appearance", category="tree", colour="red"))
+    assert Session(campus, every, registry).submit("make all the trees red").ok
