@@ -42,6 +42,8 @@ RULES_CONFIDENT_SMALL_MODEL = 0.0
 RETRIEVAL_CONFIDENT = 0.85
 # Below this, a retrieval plan is not offered as a reading to choose from.
 RETRIEVAL_READING = 0.45
+# The rule planner's name, which leads the hybrid's path log (see _candidate).
+RULES_PLANNER = "rules"
 # Readings offered in a clarifying question (the interface allows 1-3).
 MAX_READINGS = 3
 
@@ -130,7 +132,7 @@ class HybridPlanner:
                 return self._rules_then_llm(prompt, context, rule_plan, why, started, [found] if found else [])
             if found is not None and found.confidence >= RETRIEVAL_CONFIDENT:
                 return self._mark(found, "retrieval", started, f"{why}; retrieval alone is sure")
-            return self._llm_or_ask(prompt, context, [found] if found else [], why, started)
+            return self._llm_or_ask(prompt, context, [found] if found else [], why, started, rule_why)
         if self.agree(rule_plan, rule_run, found, found_run, context):
             best = rule_plan.model_copy(update={"confidence": max(rule_plan.confidence, found.confidence)})
             return self._mark(best, "agree", started, f"{why}; rules and retrieval agree")
@@ -168,8 +170,11 @@ class HybridPlanner:
         rule_steps = rule_plan.trace if rule_plan is not None else []
         return self._mark(llm_plan, "llm", started, why, [p for p in [rule_plan] if p is not None], rule_steps)
 
-    def _llm_or_ask(self, prompt: str, context: PlanContext, candidates: list[Plan], why: str, started: float) -> Plan:
-        """Candidates that disagree (or none sure): the LLM's plan breaks the tie, else ask."""
+    def _llm_or_ask(
+        self, prompt: str, context: PlanContext, candidates: list[Plan], why: str, started: float, rules_said: str = ""
+    ) -> Plan:
+        """Candidates that disagree (or none sure): the LLM's plan breaks the tie, else ask;
+        `rules_said`: why the rule planner had no plan, for the refusal when nothing fits."""
         llm_plan: Plan | None = None
         if candidates and self.small_model():
             # A small model's answer copies its few-shot demonstrations, which are the retrieval
@@ -203,7 +208,7 @@ class HybridPlanner:
             c for c in candidates if c.calls and (c.planner != "retrieval" or c.confidence >= RETRIEVAL_READING)
         ]
         if not readings:
-            raise PlanningError(f"I did not understand the request ({why})")
+            raise PlanningError(_not_understood(rules_said))
         question = Question(
             text="I am not sure what you mean. Did you mean:",
             readings=[Reading(text=describe(c.calls), calls=c.calls) for c in readings[:MAX_READINGS]],
@@ -234,6 +239,18 @@ class HybridPlanner:
                 "alternatives": [*plan.alternatives, *alternatives],
             }
         )
+
+
+def _not_understood(rules_said: str) -> str:
+    """The refusal a person reads: what the rule planner could not read (or why the world
+    refused its plan), which says what is possible, rather than the log of every planner tried."""
+    cannot = f"{RULES_PLANNER} could not plan it ("
+    if rules_said.startswith(cannot) and rules_said.endswith(")"):
+        return rules_said[len(cannot) : -1]
+    refused = f"a dry run refused the {RULES_PLANNER} plan: "
+    if rules_said.startswith(refused):
+        return "I could not do it: " + rules_said[len(refused) :]
+    return "I did not understand the request; say what to add, move, remove or change, and where"
 
 
 def _version(plan: Plan, path: str) -> str | None:

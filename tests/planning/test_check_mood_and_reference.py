@@ -262,3 +262,22 @@ def test_a_change_to_all_of_a_kind_is_made_to_all_of_them(campus, registry):
     refused_unchanged(campus, registry, one, "every one of the trees should turn red")
     every = Fixed(call("set_asset_appearance", category="tree", colour="red"))
     assert Session(campus, every, registry).submit("make all the trees red").ok
+
+
+def test_a_refusal_says_first_what_was_not_understood_and_what_is_possible(campus, registry):
+    from drivetwin.orchestrator.planning.hybrid import HybridPlanner
+    from drivetwin.orchestrator.planning.retrieval import RetrievalPlanner
+
+    class NoModel:
+        name = "llm"
+
+        def plan(self, prompt, context):
+            from drivetwin.orchestrator.planning import PlanningError
+
+            raise PlanningError("no model here")
+
+    planner = HybridPlanner(RulePlanner(), NoModel(), retrieval=RetrievalPlanner())  # type: ignore[arg-type]
+    report = Session(campus, planner, registry).submit("get rid of the zeppelin")
+    assert not report.ok and report.error is not None
+    assert report.error.startswith("there is no 'zeppelin' in this world")
+    assert "I can add, move, remove" in report.error and "confidence" not in report.error

@@ -147,8 +147,11 @@ class RulePlanner:
             calls.extend(clause_calls)
             unknown += _unknown_words(clause, scene)
         if not calls and skipped:
+            strange = [w for clause in skipped for w in _unknown_words(clause, scene)]
+            first = f"there is no {strange[0]!r} in this world that I know of; " if strange else ""
             raise PlanningError(
-                f"I could not tell what to do with {skipped[0]!r}; try e.g. 'add 3 traffic cones "
+                f"{first}I could not tell what to do with {skipped[0]!r}; I can add, move, remove, arrange and "
+                "restyle things, find them, and set the weather and time, e.g. 'add 3 traffic cones "
                 "in front of the JTEKT building entrance', 'make it rain', 'remove the bus'"
             )
         for clause in skipped:
