@@ -10,6 +10,7 @@ wording. Each finding is a sentence in plain words; check.py turns them into a q
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 import typing
@@ -35,6 +36,7 @@ LANE_SLACK_M = 0.5
 _SHAPE = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle)\b")
 _APART = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+apart\b")
 MIN_LAYOUT = 3
+_AROUND = re.compile(r"\b(around|round|surround\w*|encircl\w*|ring(?:ed)? off|cordon(?:ed)? off)\b")
 LINE_SPREAD, RING_SPREAD, SPACING_TOLERANCE = 0.25, 0.25, 0.25
 # "Facing east": a heading said as a compass direction; a heading may be off by this much.
 _FACING = re.compile(r"\b(?:facing|face|pointing|heading|pointed)\s+(?:to(?:wards?)?\s+)?(?:the\s+)?(north|south|east|west)\b")
@@ -181,6 +183,20 @@ def wrong_layout(masked: str, added: Iterable[AssetInstance]) -> list[str]:
     return out
 
 
+def not_around(low: str, centre: tuple[float, float] | None, added: Iterable[AssetInstance]) -> list[str]:
+    """New things put "around" a place or thing (a ring, a cordon) that stand on one side of it:
+    the widest empty arc seen from its centre must be under half a turn."""
+    placed = [a for a in added if a.id != "ego"]
+    if centre is None or len(placed) < MIN_LAYOUT or _AROUND.search(low) is None:
+        return []
+    angles = sorted(math.atan2(a.pose.y - centre[1], a.pose.x - centre[0]) for a in placed)
+    gaps = [b - a for a, b in itertools.pairwise(angles)] + [angles[0] + math.tau - angles[-1]]
+    if max(gaps) >= math.pi:
+        empty = math.degrees(max(gaps))
+        return [f"you asked for them around it, but the plan leaves an empty side of {empty:.0f} degrees"]
+    return []
+
+
 def wrong_heading(low: str, placed: Iterable[AssetInstance]) -> list[str]:
     """Things the request has face a compass direction ("facing east") that the plan turns
     elsewhere."""
@@ -262,6 +278,7 @@ __all__ = [
     "group_left_behind",
     "look_left_out",
     "names_group",
+    "not_around",
     "off_lane",
     "off_surface",
     "some_of_all",

@@ -25,6 +25,7 @@ from drivetwin.orchestrator.planning.attributes import (
     group_left_behind,
     look_left_out,
     names_group,
+    not_around,
     off_lane,
     off_surface,
     some_of_all,
@@ -219,6 +220,8 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     placed = [*effect.added, *_moved(effect)]
     out = wrong_counts(request.masked, [a for a in effect.added if a.category not in _companions(effect)])
     out += wrong_layout(request.masked, effect.added)
+    if request.place is not None and effect.added:
+        out += not_around(request.low, _centre(scene, request.place), effect.added)
     out += wrong_heading(request.low, placed)
     out += wrong_side(request.low, scene, effect.added)
     if not effect.removed and not effect.added:
@@ -302,6 +305,14 @@ def _accounts_for(number: float, effect: Effect) -> bool:
     used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + counts
     return any(math.isclose(abs(number) * f, abs(u), rel_tol=NUMBER_TOLERANCE, abs_tol=NUMBER_TOLERANCE)
                for u in used for f in UNIT_FACTORS)
+
+
+def _centre(scene: Scene, place: str) -> tuple[float, float] | None:
+    try:
+        target = resolve_target(scene, place)
+    except ToolError:
+        return None
+    return target.x, target.y
 
 
 def _near(scene: Scene, asset: AssetInstance, place: str) -> bool:

@@ -281,3 +281,11 @@ def test_a_refusal_says_first_what_was_not_understood_and_what_is_possible(campu
     assert not report.ok and report.error is not None
     assert report.error.startswith("there is no 'zeppelin' in this world")
     assert "I can add, move, remove" in report.error and "confidence" not in report.error
+
+
+def test_things_put_around_a_place_surround_it(campus, registry):
+    north_side = Fixed(*(add("tree", location={"relation": "absolute", "x": x, "y": 48.0}) for x in (70.0, 75.0, 80.0)))
+    refused_unchanged(campus, registry, north_side, "plant trees all around the fountain")
+    ring = Fixed(call("arrange_assets", categories=["tree"], count=4, shape="ring",
+                      location={"relation": "at", "target": "fountain"}))
+    assert Session(campus, ring, registry).submit("plant trees all around the fountain").ok
