@@ -69,6 +69,10 @@ def open_live_session(world: str, settings: Settings, *, journal: Path | None, r
     for problem in registry.problems:
         click.echo(f"warning: plugin {problem.entry_point} skipped: {problem.error}", err=True)
     session = open_chat_session(world, planner, registry, settings.state_dir, journal, resume, can_ask=can_ask)
+    if planner.name in ("hybrid", "retrieval"):
+        from drivetwin.orchestrator.planning.retrieval import warm_bank
+
+        warm_bank(session.scene)  # the example bank builds while the person types
     try:
         enhance = None
         if enhance_model:

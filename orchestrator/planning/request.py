@@ -46,6 +46,7 @@ _PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
 # A category word after these describes the thing asked for ("a vehicle that carries passengers",
 # "a bench for pedestrians") rather than naming it.
 _DESCRIBING = re.compile(r"[a-z]\s+(that|which|who|with|for|carrying|carries|full of)\b[^,.;]*$")
+_LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west)bound)\b")
 _PARKED = re.compile(r"\bparked\b")
 _MOVING = re.compile(r"\b(driving|moving|travelling|traveling)\b")
 
@@ -74,7 +75,9 @@ def read_request(prompt: str, scene: Scene) -> Request:
     masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
         masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
-    lane = find_lane(scene, masked)
+    # A lane is named by its id, or by a direction said of a lane ("the westbound lane"), not by a
+    # compass word alone ("2 m east", "facing north").
+    lane = find_lane(scene, masked) if _LANE_WORDS.search(masked) else None
     polite = bool(_POLITE.search(low))
     question = bool(_INFO.search(low) or _LOOKUP.match(low)) or (
         not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))

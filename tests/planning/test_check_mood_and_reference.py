@@ -289,3 +289,10 @@ def test_things_put_around_a_place_surround_it(campus, registry):
     ring = Fixed(call("arrange_assets", categories=["tree"], count=4, shape="ring",
                       location={"relation": "at", "target": "fountain"}))
     assert Session(campus, ring, registry).submit("plant trees all around the fountain").ok
+
+
+def test_a_compass_word_alone_names_no_lane(campus, registry):
+    north = Fixed(call("move_asset", asset="bench_1", north=2.0))
+    assert Session(campus, north, registry).submit("shift the bench 2 m north").ok
+    assert read_request("park it facing east", campus).lane is None
+    assert read_request("cones in the eastbound lane", campus).lane == "main_eastbound"

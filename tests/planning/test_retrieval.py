@@ -128,3 +128,14 @@ def test_a_jr_manager_is_shown_one_call_examples_of_its_own_family(context: Plan
     demos = jr_demos("add", "drop a couple of benches near the fountain", context, 3)
     assert len(demos) == 3 and all(d.call["tool"] == "add_asset" for d in demos)
     assert all(d.requirement.startswith("add | what: ") for d in demos)
+
+
+def test_warming_the_bank_in_the_background_leaves_it_ready_for_the_first_prompt(world: Scene) -> None:
+    from drivetwin.orchestrator.planning.retrieval import index, warm_bank
+    from drivetwin.orchestrator.planning.retrieval.bank import world_key
+
+    thread = warm_bank(world)
+    assert thread.daemon and thread.name == "drivetwin-bank-warmup"
+    thread.join(timeout=900)
+    assert not thread.is_alive() and world_key(world) in index._generated_cache
+    assert bank_index(world).nearest("put two benches by the library", k=1)

@@ -8,7 +8,7 @@ that adapts the nearest examples' calls to the request's own names and numbers.
 """
 
 from drivetwin.orchestrator.planning.retrieval.bank import Example, learn, learn_accepted, user_bank, world_bank
-from drivetwin.orchestrator.planning.retrieval.index import BankIndex, Hit, bank_index
+from drivetwin.orchestrator.planning.retrieval.index import BankIndex, Hit, bank_index, warm_bank
 from drivetwin.orchestrator.planning.retrieval.planner import RetrievalPlanner
 
 __all__ = [
@@ -20,5 +20,6 @@ __all__ = [
     "learn",
     "learn_accepted",
     "user_bank",
+    "warm_bank",
     "world_bank",
 ]

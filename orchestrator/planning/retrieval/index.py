@@ -126,4 +126,12 @@ def bank_index(scene: Scene) -> BankIndex:
         return BankIndex(examples, vectors)
 
 
-__all__ = ["BankIndex", "Hit", "bank_index"]
+def warm_bank(scene: Scene) -> threading.Thread:
+    """Build (or load) this world's bank on a background thread, so that a person's first prompt
+    finds it ready, or waits only for what is left (`bank_index` takes the same lock)."""
+    thread = threading.Thread(target=bank_index, args=(scene,), name="drivetwin-bank-warmup", daemon=True)
+    thread.start()
+    return thread
+
+
+__all__ = ["BankIndex", "Hit", "bank_index", "warm_bank"]
