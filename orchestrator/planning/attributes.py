@@ -19,6 +19,7 @@ from collections.abc import Iterable
 from functools import cache
 
 import numpy as np
+from drivetwin.orchestrator.planning.coverage import named_in
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.tools.appearance import COLOURS, AssetLookArgs
 from drivetwin.tools.base import ToolCall
@@ -63,9 +64,8 @@ def counts_named(masked: str) -> dict[str, int]:
     """The number said right before each category named ("ten people", "4 bins"): how many of
     that category the request asks for."""
     out: dict[str, int] = {}
-    low = ph.normalise(masked)
-    for m in ph.find_categories(masked):
-        before = low[: m.start].split()[-1:]
+    for m in named_in(masked):
+        before = m.last_words(1)
         if not before:
             continue
         word = before[0]
@@ -249,10 +249,9 @@ def some_of_all(masked: str, changed: Iterable[AssetInstance], scene: Scene) -> 
     """A change asked of all of a category ("make every bench wooden", "all the cars red") that
     the plan makes to only some of them."""
     done = Counter(a.category for a in changed)
-    low = ph.normalise(masked)  # the text find_categories indexes
     out = []
-    for m in ph.find_categories(masked):
-        if not re.search(r"\b(all|every|each)( one)?( of)?( the| those| these)?\s*$", low[: m.start]):
+    for m in named_in(masked):
+        if not re.search(r"\b(all|every|each)( one)?( of)?( the| those| these)?\s*$", m.before):
             continue
         there = scene.count(m.category)
         if 0 < done[m.category] < there:

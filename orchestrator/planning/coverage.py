@@ -140,6 +140,24 @@ class Scope:
     added: tuple[AssetInstance, ...]
 
 
+@dataclass(frozen=True)
+class Named:
+    """A category the words name, with the text before it (in find_categories' own spelling)."""
+
+    category: str
+    plural: bool
+    before: str
+
+    def last_words(self, n: int) -> list[str]:
+        return self.before.split()[-n:]
+
+
+def named_in(masked: str) -> list[Named]:
+    """Each category the words name, in order, with what comes before it ("the", "ten", "all")."""
+    indexed = ph.normalise(masked)  # the text find_categories indexes
+    return [Named(m.category, m.plural, indexed[: m.start]) for m in ph.find_categories(masked)]
+
+
 def _ids_of(scene: Scene, category: str) -> set[str]:
     return {a.id for a in scene.all_assets() if a.category == category}
 
@@ -187,11 +205,8 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     if _NEW.search(masked) or any(c.tool == "arrange_assets" for c in scope.calls):
         return []
     out = []
-    mentions = ph.find_categories(masked)
-    masked = ph.normalise(masked)  # the text find_categories indexes
-    for m in mentions:
-        before = masked[: m.start].split()[-2:]
-        if not any(w in _DEFINITE for w in before) or not scene.count(m.category):
+    for m in named_in(masked):
+        if not any(w in _DEFINITE for w in m.last_words(2)) or not scene.count(m.category):
             continue
         if any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)
@@ -205,10 +220,8 @@ def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
         return []
     moved = {a.category for a in scope.touched if a.id != "ego"}
     out = []
-    mentions = ph.find_categories(masked)
-    masked = ph.normalise(masked)  # the text find_categories indexes
-    for m in mentions:
-        before = masked[: m.start].split()[-1:]
+    for m in named_in(masked):
+        before = m.last_words(1)
         asked_new = bool(before) and (before[0] in _INDEFINITE or before[0] in ph.NUMBER_WORDS or before[0].isdigit())
         if asked_new and m.category in moved and m.category not in out:
             out.append(m.category)
@@ -250,10 +263,8 @@ def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> l
     if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some of|one of|a few)\b", masked):
         return []
     out = []
-    mentions = ph.find_categories(masked)
-    masked = ph.normalise(masked)  # the text find_categories indexes
-    for m in mentions:
-        before = masked[: m.start].split()[-1:]
+    for m in named_in(masked):
+        before = m.last_words(1)
         single = bool(before) and before[0] in ("a", "an", "one", "the", "that", "this")
         if single and not m.plural:
             continue
@@ -345,6 +356,7 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
 
 
 __all__ = [
+    "Named",
     "Scope",
     "back_reference",
     "definite_but_added",
@@ -352,6 +364,7 @@ __all__ = [
     "indefinite_but_moved",
     "inside_building",
     "missing_categories",
+    "named_in",
     "named_things",
     "partial_removal",
     "unknown_places",
