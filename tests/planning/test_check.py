@@ -6,27 +6,12 @@ planners did) and asserts the outcome is a question or a refusal, never a silent
 
 from __future__ import annotations
 
-from drivetwin.orchestrator.planning import Plan, PlanContext
+from drivetwin.orchestrator.planning import Plan
 from drivetwin.orchestrator.planning.check import review
 from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools.base import ToolCall
-
-
-class Fixed:
-    """A planner that always answers with the same (misread) calls."""
-
-    name = "fixed"
-
-    def __init__(self, *calls: ToolCall) -> None:
-        self.calls = list(calls)
-
-    def plan(self, prompt: str, context: PlanContext) -> Plan:
-        return Plan(calls=list(self.calls), planner=self.name)
-
-
-def add(category: str, **extra: object) -> ToolCall:
-    return ToolCall(tool="add_asset", args={"category": category, "count": 1, **extra})
+from misreading import Fixed, add  # this folder is on sys.path (no __init__.py)
 
 
 def submit(campus, registry, planner, prompt):

@@ -14,11 +14,7 @@ from drivetwin.orchestrator.planning.rules.numbers import numbers_in
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools.base import ToolCall
-from test_check import Fixed, add  # pytest puts this folder on sys.path (no __init__.py)
-
-
-def call(tool: str, **args: object) -> ToolCall:
-    return ToolCall(tool=tool, args=dict(args))
+from misreading import Fixed, add, call  # this folder is on sys.path (no __init__.py)
 
 
 def refused_unchanged(campus, registry, planner, prompt, setup=None):

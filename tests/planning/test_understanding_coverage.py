@@ -8,27 +8,11 @@ session a planner whose plan misreads the request, worded in this file's own voi
 
 from __future__ import annotations
 
-from drivetwin.orchestrator.planning import Plan, PlanContext
+from drivetwin.orchestrator.planning import Plan
 from drivetwin.orchestrator.planning.check import review
 from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.session import Session
-from drivetwin.tools.base import ToolCall
-
-
-class Fixed:
-    """A planner that always answers with the same (misread) calls."""
-
-    name = "fixed"
-
-    def __init__(self, *calls: ToolCall) -> None:
-        self.calls = list(calls)
-
-    def plan(self, prompt: str, context: PlanContext) -> Plan:
-        return Plan(calls=list(self.calls), planner=self.name)
-
-
-def call(tool: str, **args: object) -> ToolCall:
-    return ToolCall(tool=tool, args=dict(args))
+from misreading import Fixed, call  # this folder is on sys.path (no __init__.py)
 
 
 def test_a_second_thing_named_in_a_compound_request_is_not_dropped(campus, registry):
