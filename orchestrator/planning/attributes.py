@@ -19,7 +19,7 @@ from collections.abc import Iterable
 from functools import cache
 
 import numpy as np
-from drivetwin.orchestrator.planning.coverage import named_in
+from drivetwin.orchestrator.planning.coverage import COMPASS_VECTORS, named_in
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.tools.appearance import COLOURS, AssetLookArgs
 from drivetwin.tools.base import ToolCall
@@ -41,7 +41,6 @@ _AROUND = re.compile(r"\b(around|round|surround\w*|encircl\w*|ring(?:ed)? off|co
 LINE_SPREAD, RING_SPREAD, SPACING_TOLERANCE = 0.25, 0.25, 0.25
 # "Facing east": a heading said as a compass direction; a heading may be off by this much.
 _FACING = re.compile(r"\b(?:facing|face|pointing|heading|pointed)\s+(?:to(?:wards?)?\s+)?(?:the\s+)?(north|south|east|west)\b")
-_COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
 HEADING_SLACK_DEG = 30.0
 # "In front of the SUV", "behind us": the side of an asset, judged for things more than this
 # far from it (closer, the side of a footprint is a matter of metres' rounding).
@@ -203,7 +202,7 @@ def wrong_heading(low: str, placed: Iterable[AssetInstance]) -> list[str]:
     said = _FACING.search(low)
     if said is None:
         return []
-    east, north = _COMPASS_VECTORS[said.group(1)]
+    east, north = COMPASS_VECTORS[said.group(1)]
     want = math.atan2(north, east)
     slack = math.radians(HEADING_SLACK_DEG)
     off = [a.id for a in placed if abs(math.remainder(a.pose.yaw - want, math.tau)) > slack]

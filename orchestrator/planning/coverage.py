@@ -110,7 +110,7 @@ _VERB_NAMES = frozenset(
 # a side of something else ("east of the fountain") or a heading ("facing north").
 _COMPASS = re.compile(r"(?<!facing )(?<!face )\b(north|south|east|west)(?:wards?)?\b"
                       r"(?!-| ?bound| gate| side| entrance| crosswalk| crossing| of\b)")
-_COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
+COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
 # A move shorter than this has no direction worth judging (a nudge to clear an overlap).
 MIN_MOVE_M = 0.2
 # How far from the named direction a move may point: settling onto a lane or a free spot bends it.
@@ -317,7 +317,7 @@ def wrong_direction(masked: str, scene: Scene, moved: Iterable[AssetInstance]) -
     if len(said) != 1:
         return []  # none, or "north-east" / "east then north": not one direction to hold it to
     word = said.pop()
-    want_x, want_y = _COMPASS_VECTORS[word]
+    want_x, want_y = COMPASS_VECTORS[word]
     out = []
     for after in moved:
         before = scene.asset(after.id)
@@ -356,6 +356,7 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
 
 
 __all__ = [
+    "COMPASS_VECTORS",
     "Named",
     "Scope",
     "back_reference",

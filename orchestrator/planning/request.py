@@ -85,7 +85,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
         "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None
     )
     categories = frozenset(m.category for m in ph.find_categories(masked) if not _DESCRIBING.search(masked[: m.start]))
-    exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_times(masked))  # "a tree or two"
+    exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_checked_amounts(masked))  # "a tree or two"
     numbers = tuple(n.value for n in numbers_in(exact) if not _is_reference(masked, n.start))
     numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+", exact)
                      if w.group(0) in _AMOUNTS and not _is_reference(masked, w.start()))
@@ -107,7 +107,7 @@ def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
     return (found[0], max(0, found[1] - 1), max(0, found[2] - 1)) if said in names else None
 
 
-def _without_times(text: str) -> str:
+def _without_checked_amounts(text: str) -> str:
     # A clock time is checked by what the time tool sets (coverage.py), and a spacing ("4 m
     # apart") by where things end up (attributes.py), not number by number.
     text = re.sub(r"\d+(?:\.\d+)?\s*(?:m|metres?|meters?)\s+apart\b", lambda m: " " * len(m.group(0)), text)
