@@ -96,13 +96,27 @@ def _line(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[floa
     across = args.location.relation in ("in_front_of", "behind")
     # A line in front of something runs across its path (a cordon), elsewhere along it.
     default = anchor.heading + (math.pi / 2 if across else 0.0)
+    return _line_at(args, anchor.x, anchor.y, default, sizes, from_anchor=False)
+
+
+def _turned_line(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[float]) -> list[Pose]:
+    """The same line turned a quarter: along a path where across it does not fit, and back."""
+    anchor = resolve_anchor(scene, args.location, max(sizes) / 2)
+    across = args.location.relation in ("in_front_of", "behind")
+    # Along the path in front of (behind) something, the line starts there and runs away from it.
+    heading = anchor.heading + (math.pi if args.location.relation == "behind" else 0.0)
+    return _line_at(args, anchor.x, anchor.y, heading if across else anchor.heading + math.pi / 2, sizes, across)
+
+
+def _line_at(
+    args: ArrangeArgs, x: float, y: float, default: float, sizes: list[float], from_anchor: bool
+) -> list[Pose]:
     heading = math.radians(args.heading_deg) if args.heading_deg is not None else default
     spacing = args.spacing or max(sizes) + 0.5
     count = args.count or 5
-    start = -(count - 1) / 2 * spacing
+    start = 0.0 if from_anchor else -(count - 1) / 2 * spacing
     c, s = math.cos(heading), math.sin(heading)
-    return [Pose(x=anchor.x + (start + k * spacing) * c, y=anchor.y + (start + k * spacing) * s, yaw=heading)
-            for k in range(count)]
+    return [Pose(x=x + (start + k * spacing) * c, y=y + (start + k * spacing) * s, yaw=heading) for k in range(count)]
 
 
 def _grid(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[float]) -> list[Pose]:
@@ -222,7 +236,30 @@ class ArrangeAssets(Tool[ArrangeArgs]):
                 raise RuleViolation("protected", f"{name} cannot be arranged")
         cats = [category(c) for c in args.categories]
         sizes = [c.length for c in cats]
-        poses = LAYOUTS[args.shape](args, scene, sizes, [c.width for c in cats])
+        layouts = [LAYOUTS[args.shape]]
+        if args.shape == "line" and args.heading_deg is None:
+            layouts.append(_turned_line)  # no direction said: the other way round if this one does not fit
+        refusals: list[RuleViolation] = []
+        for layout in layouts:
+            poses = layout(args, scene, sizes, [c.width for c in cats])
+            try:
+                placed = self._placed(args, scene, poses)
+                break
+            except RuleViolation as exc:
+                refusals.append(exc)
+        else:
+            raise refusals[0]
+        edit = WorldEdit(ops=tuple(AddAsset(asset=a) for a in placed))
+        cx = sum(p.x for p in poses) / len(poses)
+        cy = sum(p.y for p in poses) / len(poses)
+        kinds = "/".join(c.name for c in cats)
+        return ToolResult(edit, f"arranged {len(placed)} {kinds} as a {args.shape} at ({cx:.1f}, {cy:.1f})",
+                          (cx, cy), {"ids": [a.id for a in placed]})
+
+    @staticmethod
+    def _placed(args: ArrangeArgs, scene: Scene, poses: list[Pose]) -> list[AssetInstance]:
+        """The new assets at `poses`, each checked against the scene and the ones before it."""
+        cats = [category(c) for c in args.categories]
         placed: list[AssetInstance] = []
         others = scene.all_assets()
         for k, pose in enumerate(poses):
@@ -231,13 +268,6 @@ class ArrangeAssets(Tool[ArrangeArgs]):
             try:
                 check_placement(scene, asset, [*others, *placed])
             except RuleViolation as exc:
-                raise RuleViolation(
-                    exc.rule, f"{args.shape} position {k + 1} of {len(poses)}: {exc}"
-                ) from exc
+                raise RuleViolation(exc.rule, f"{args.shape} position {k + 1} of {len(poses)}: {exc}") from exc
             placed.append(asset)
-        edit = WorldEdit(ops=tuple(AddAsset(asset=a) for a in placed))
-        cx = sum(p.x for p in poses) / len(poses)
-        cy = sum(p.y for p in poses) / len(poses)
-        kinds = "/".join(c.name for c in cats)
-        return ToolResult(edit, f"arranged {len(placed)} {kinds} as a {args.shape} at ({cx:.1f}, {cy:.1f})",
-                          (cx, cy), {"ids": [a.id for a in placed]})
+        return placed

@@ -16,14 +16,14 @@ import re
 import typing
 from collections import Counter
 from collections.abc import Iterable
-from functools import cache
 
 import numpy as np
-from drivetwin.orchestrator.planning.coverage import COMPASS_VECTORS, named_in
+from drivetwin.orchestrator.planning.coverage import named_in
+from drivetwin.orchestrator.planning.rules import modifiers as md
+from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.tools.appearance import COLOURS, AssetLookArgs
 from drivetwin.tools.base import ToolCall
-from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import lane_at, nearest_on_polyline, surface_at
 
@@ -34,8 +34,6 @@ LANE_SLACK_M = 0.5
 # Layouts named in words (the arrange Worker's line and ring) and spacings ("4 m apart"), judged
 # on three or more new things: the smaller spread of a line is at most LINE_SPREAD of its
 # length, a ring's radii vary by at most RING_SPREAD, a spacing is held within a quarter.
-_SHAPE = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle)\b")
-_APART = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+apart\b")
 MIN_LAYOUT = 3
 _AROUND = re.compile(r"\b(around|round|surround\w*|encircl\w*|ring(?:ed)? off|cordon(?:ed)? off)\b")
 LINE_SPREAD, RING_SPREAD, SPACING_TOLERANCE = 0.25, 0.25, 0.25
@@ -64,6 +62,10 @@ def counts_named(masked: str) -> dict[str, int]:
     that category the request asks for."""
     out: dict[str, int] = {}
     for m in named_in(masked):
+        partitive = md.partitive_count(m.before)
+        if partitive is not None:
+            out[m.category] = partitive
+            continue
         before = m.last_words(1)
         if not before:
             continue
@@ -123,7 +125,7 @@ def look_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
 
 def names_group(low: str) -> bool:
     """Whether the words name a group by its catalog tag in the plural ("the vehicles")."""
-    return any(re.search(rf"\b{re.escape(tag)}s\b", low) for tag in _groups())
+    return bool(md.groups_said(low))
 
 
 def group_left_behind(low: str, removed: Iterable[AssetInstance], candidates: Iterable[AssetInstance]) -> list[str]:
@@ -134,24 +136,12 @@ def group_left_behind(low: str, removed: Iterable[AssetInstance], candidates: It
     if not gone:
         return []
     out = []
-    for tag, members in _groups().items():
-        if not re.search(rf"\b{re.escape(tag)}s\b", low):
-            continue
+    for tag, members in md.groups_said(low).items():
         ids = {a.id for a in gone}
         left = [a.id for a in candidates if a.category in members and a.id not in ids and a.id != "ego"]
         if left and any(a.category in members for a in gone):
             out.append(f"you said {tag}s, but the plan leaves {', '.join(left)}")
     return out
-
-
-@cache
-def _groups() -> dict[str, frozenset[str]]:
-    """Catalog tags shared by several categories, each with its categories."""
-    members: dict[str, set[str]] = {}
-    for name, entry in catalog().items():
-        for tag in entry.tags:
-            members.setdefault(tag, set()).add(name)
-    return {tag: frozenset(names) for tag, names in members.items() if len(names) > 1}
 
 
 def wrong_layout(masked: str, added: Iterable[AssetInstance]) -> list[str]:
@@ -163,18 +153,17 @@ def wrong_layout(masked: str, added: Iterable[AssetInstance]) -> list[str]:
     points = np.array([[a.pose.x, a.pose.y] for a in placed])
     centred = points - points.mean(axis=0)
     out = []
-    said = _SHAPE.search(masked)
-    if said is not None and said.group(1) in ("line", "row"):
+    said = md.layout_said(masked)
+    if said in ("line", "row"):
         spread = np.linalg.svd(centred, compute_uv=False)
         if spread[0] <= 0 or spread[1] / spread[0] > LINE_SPREAD:
-            out.append(f"you asked for a {said.group(1)}, but the plan scatters them")
-    if said is not None and said.group(1) in ("ring", "circle"):
+            out.append(f"you asked for a {said}, but the plan scatters them")
+    if said in ("ring", "circle"):
         radii = np.hypot(centred[:, 0], centred[:, 1])
         if radii.mean() <= 0 or radii.std() / radii.mean() > RING_SPREAD:
-            out.append(f"you asked for a {said.group(1)}, but the plan does not put them round a centre")
-    apart = _APART.search(masked)
-    if apart is not None:
-        wanted = float(apart.group(1))
+            out.append(f"you asked for a {said}, but the plan does not put them round a centre")
+    wanted = nb.spacing_said(masked)
+    if wanted is not None:
         axis = np.linalg.svd(centred)[2][0]
         gaps = np.diff(np.sort(centred @ axis))
         if abs(float(np.median(gaps)) - wanted) > SPACING_TOLERANCE * wanted:
@@ -202,7 +191,7 @@ def wrong_heading(low: str, placed: Iterable[AssetInstance]) -> list[str]:
     said = _FACING.search(low)
     if said is None:
         return []
-    east, north = COMPASS_VECTORS[said.group(1)]
+    east, north = md.COMPASS_VECTORS[said.group(1)]
     want = math.atan2(north, east)
     slack = math.radians(HEADING_SLACK_DEG)
     off = [a.id for a in placed if abs(math.remainder(a.pose.yaw - want, math.tau)) > slack]

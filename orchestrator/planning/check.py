@@ -52,6 +52,7 @@ from drivetwin.orchestrator.planning.coverage import (
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.request import ADD_WORDS, REMOVE_WORDS, Request, read_request
+from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
 from drivetwin.orchestrator.planning.scenario_reading import missed_scenario
@@ -157,7 +158,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked for more, but the plan removes " + _names(effect.removed))
     touched = [*effect.added, *effect.removed, *(a for a in effect.changed if a.id != "ego")]
     if request.categories and touched:
-        strays = {a.category for a in touched} - request.categories - _companions(effect)
+        grouped = {c for members in md.groups_said(request.low).values() for c in members}  # "the vehicles"
+        strays = {a.category for a in touched} - request.categories - grouped - _companions(effect)
         if strays:
             out.append(f"you named {', '.join(sorted(request.categories))}, but the plan touches {', '.join(sorted(strays))}")
     if not request.categories and effect.added and not _companions(effect):

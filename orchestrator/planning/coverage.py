@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
@@ -105,12 +106,6 @@ _VERB_NAMES = frozenset(
 )
 
 
-# A compass direction said as a way to go ("2 m east", "eastward", "to the north"), not as part of
-# a lane's or a place's name ("the northbound lane", "the east gate": find_place masks places),
-# a side of something else ("east of the fountain") or a heading ("facing north").
-_COMPASS = re.compile(r"(?<!facing )(?<!face )\b(north|south|east|west)(?:wards?)?\b"
-                      r"(?!-| ?bound| gate| side| entrance| crosswalk| crossing| of\b)")
-COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
 # A move shorter than this has no direction worth judging (a nudge to clear an overlap).
 MIN_MOVE_M = 0.2
 # How far from the named direction a move may point: settling onto a lane or a free spot bends it.
@@ -313,11 +308,10 @@ def _category_of(asset_id: str, scene: Scene) -> str | None:
 
 def wrong_direction(masked: str, scene: Scene, moved: Iterable[AssetInstance]) -> list[str]:
     """Assets a plan moves away from the one compass direction the request names ("2 m east")."""
-    said = {m.group(1) for m in _COMPASS.finditer(masked)}
-    if len(said) != 1:
-        return []  # none, or "north-east" / "east then north": not one direction to hold it to
-    word = said.pop()
-    want_x, want_y = COMPASS_VECTORS[word]
+    word = md.compass_direction(masked)
+    if word is None:
+        return []
+    want_x, want_y = md.COMPASS_VECTORS[word]
     out = []
     for after in moved:
         before = scene.asset(after.id)
@@ -356,7 +350,6 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
 
 
 __all__ = [
-    "COMPASS_VECTORS",
     "Named",
     "Scope",
     "back_reference",

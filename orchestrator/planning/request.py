@@ -13,6 +13,7 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
+from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
@@ -110,7 +111,7 @@ def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
 def _without_checked_amounts(text: str) -> str:
     # A clock time is checked by what the time tool sets (coverage.py), and a spacing ("4 m
     # apart") by where things end up (attributes.py), not number by number.
-    text = re.sub(r"\d+(?:\.\d+)?\s*(?:m|metres?|meters?)\s+apart\b", lambda m: " " * len(m.group(0)), text)
+    text = nb.SPACING.sub(lambda m: " " * len(m.group(0)), text)
     said = clock_time(text)
     return text if said is None else text[: said.start] + " " * (said.end - said.start) + text[said.end :]
 

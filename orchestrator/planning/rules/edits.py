@@ -14,6 +14,7 @@ from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.places import Notes, location
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
@@ -42,7 +43,9 @@ def referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[s
 def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[str]:
     if r.ids:
         return r.ids
-    if r.ego and not r.has(lx.BEHAVIOUR_WORDS["jaywalk"]):
+    # "put the SUV behind the ego": the thing named first is what moves, the ego where it goes.
+    ego_anchors = bool(r.mentions) and r.mentions[0].start < r.ego_at
+    if r.ego and not ego_anchors and not r.has(lx.BEHAVIOUR_WORDS["jaywalk"]):
         return ["ego"]
     if r.mentions:
         mention = r.mentions[0]
@@ -50,7 +53,12 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         recent = [i for i in memory.last_added(name) if scene.asset(i) is not None]
         if recent and r.has(_RECENT):
             return recent if mention.plural else recent[-1:]
-        present = [a.id for a in scene.assets if a.category == name]
+        # "the vehicles": every category of the group the catalog tags so, not only the one named
+        kinds = next((set(m) for m in md.groups_said(r.low).values() if name in m), {name})
+        present = [a.id for a in scene.assets if a.category in kinds]
+        if _scoped_by_place(r, mention):
+            around = set(_near(scene, str(r.landmark), NEAR_PLACE_M, keep_permanent=True))
+            present = [i for i in present if i in around]
         if not present:
             return []
         if mention.plural or r.has(("all", "every", "each")):
@@ -61,6 +69,20 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             return notes.subject
         return [i for i in memory.last_added() if scene.asset(i) is not None]
     return []
+
+
+# Between a thing and a place, words that make the place where the thing is ("the cars in lot B"),
+# not where it should go ("move the cars to lot B").
+_SCOPE = re.compile(r"\s*(?:that are |which are |standing |parked )?(?:in|at|inside|by|near|on|around|from|of)\s+(?:the\s+)?$")
+
+
+def _scoped_by_place(r: Reading, mention: ph.Mention) -> bool:
+    """Whether the clause names its things by where they are ("every vehicle in lot B")."""
+    if r.landmark is None or r.landmark_at < mention.end:
+        return False
+    return bool(_SCOPE.fullmatch(r.low[mention.end : r.landmark_at] + " ")) and (
+        mention.plural or r.has(("all", "every", "each"))
+    )
 
 
 def _near(scene: Scene, place: str, radius: float, keep_permanent: bool) -> list[str]:
@@ -108,6 +130,11 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         return [ToolCall(tool="remove_assets", args={"assets": recent})]
     args: dict[str, Any] = {"category": name}
     count = find_count(r, mention)
+    grouped = any(name in members for members in md.groups_said(r.low).values())
+    if (grouped or _scoped_by_place(r, mention)) and count is None and not fewer:
+        # "the vehicles in lot B": every one there, of every category the words cover
+        ids = referenced(r, scene, memory, notes)
+        return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
     if fewer:
         count = count or 1
     elif gone or r.has(("all", "every", "none", "no more")):
@@ -213,9 +240,18 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if kind is not None and kind != "parked":
         notes.subject = [asset]
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": behaviour_spec(kind, r)})]
+    # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
+    scoped = bool(r.mentions) and _scoped_by_place(r, r.mentions[0])
+    anchored = (r.landmark and not scoped) or (r.ego and "ego" not in ids) or any(i not in ids for i in r.ids)
+    step = metres if metres is not None else (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else None)
+    moved: dict[str, Any] = {"asset": asset} if len(ids) == 1 else {"assets": ids}
+    compass = md.compass_direction(r.masked)
+    if compass is not None and step is not None and not anchored:
+        east, north = md.COMPASS_VECTORS[compass]
+        return [ToolCall(tool="move_asset", args={**moved, "east": east * step, "north": north * step})]
     for word, key, sign in lx.SIDE_WORDS:
-        if metres is not None and r.has((word,)) and not r.landmark:
-            return [ToolCall(tool="move_asset", args={"asset": asset, key: sign * metres})]
+        if step is not None and r.has((word,)) and not anchored:
+            return [ToolCall(tool="move_asset", args={**moved, key: sign * step})]
     where = location(r, scene, memory, notes, exclude=ids)
     if where is not None:
         notes.subject = [asset]

@@ -75,4 +75,15 @@ def count(number: Number, what: str) -> int:
     return int(value)
 
 
-__all__ = ["MAX_COUNT", "NUMBER", "Number", "NumberError", "count", "finite", "numbers_in", "parse"]
+
+# A spacing between things laid out ("4 m apart"): not a distance to a place.
+SPACING = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+apart\b")
+
+
+def spacing_said(text: str) -> float | None:
+    """The spacing the words ask for between things laid out ("4 m apart"), in metres."""
+    said = SPACING.search(text.lower())
+    return float(said.group(1)) if said else None
+
+
+__all__ = ["MAX_COUNT", "NUMBER", "SPACING", "Number", "NumberError", "count", "finite", "numbers_in", "parse", "spacing_said"]

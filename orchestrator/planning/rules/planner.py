@@ -17,6 +17,8 @@ from typing import Any
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
 from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import modifiers as md
+from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import behaviour_kind, behaviour_spec, edit_existing, recolour, remove
 from drivetwin.orchestrator.planning.rules.environment import environment, lights
@@ -114,8 +116,36 @@ def _clauses(prompt: str) -> list[tuple[str, bool]]:
             continue
         asked = i + 1 < len(parts) and "?" in parts[i + 1]
         pieces = re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text)
-        out.extend((p.strip(" ,"), asked) for p in pieces if p.strip(" ,"))
+        out.extend((c, asked) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,")))
     return out
+
+
+# "and the trash bin", "plus a pedestrian", "+ two cones": a second thing for the same verb.
+_CONJUNCT = re.compile(r"\s*(?:,\s*)?(?:\band\b|\bplus\b|\+|&)\s+(?=(?:the|a|an|some|two|three|four|five|six|\d+)\s)")
+_VERB_AT = re.compile(rf"\b(?:{'|'.join(_VERBS)})\b")
+
+
+def _conjuncts(clause: str) -> list[str]:
+    """A clause whose verb governs two things ("remove the hydrant and the bin", "put the bench at
+    the fountain and the bin at the bus stop"), as one clause per thing, each with the verb.
+
+    Only where both parts name a category and nothing lays them out together ("a ring of cones and
+    barriers", "between the bus and the truck" stay one clause).
+    """
+    low = clause.lower()
+    verb = _VERB_AT.search(low)
+    if verb is None or any(w in low for w in (*lx.ARRANGE_WORDS, "between", " line", " row", " grid", "mix")):
+        return [clause]
+    cuts = [m for m in _CONJUNCT.finditer(clause) if m.start() > verb.end()]
+    parts, start = [], 0
+    for cut in cuts:
+        parts.append(clause[start : cut.start()])
+        start = cut.end()
+    parts.append(clause[start:])
+    if len(parts) < 2 or not all(ph.find_categories(p) for p in parts):
+        return [clause]
+    lead = clause[: verb.end()]
+    return [parts[0], *(f"{lead} {p}" for p in parts[1:])]
 
 
 class RulePlanner:
@@ -235,7 +265,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             raise PlanningError(f"unknown asset {noun!r}; nearest: {', '.join(nearest_categories(noun))}")
         env = environment(r)
         return env or None
-    if (r.has(lx.ARRANGE_WORDS) and not behaviour_kind(r, catalog()[mention.category].motion)) or r.has(("to mark",)):
+    laid_out = r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
+    if (laid_out and not behaviour_kind(r, catalog()[mention.category].motion)) or r.has(("to mark",)):
         return [_arrange(r, scene, memory, notes)]
     return _add(r, scene, memory, notes)
 
@@ -348,9 +379,9 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
             if focus_target is not None and where is None:
                 where = {"relation": "at", "target": focus_target}
     args["location"] = where or _fallback_place(memory)
-    spacing = re.search(r"(\d+(?:\.\d+)?)\s*(?:m|metres?)\s*apart", r.low)
-    if spacing:
-        args["spacing"] = float(spacing.group(1))
+    spacing = nb.spacing_said(r.low)
+    if spacing is not None:
+        args["spacing"] = spacing
     radius = re.search(r"radius (?:of )?(\d+(?:\.\d+)?)", r.low)
     if radius:
         args["radius"] = float(radius.group(1))

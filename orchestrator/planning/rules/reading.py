@@ -11,6 +11,7 @@ import re
 from dataclasses import dataclass, field
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import Scene
@@ -37,6 +38,7 @@ class Reading:
     lane_guessed: bool = False
     ids: list[str] = field(default_factory=list)
     ego: bool = False
+    ego_at: int = -1  # where the ego is named: a thing named before it is the subject, the ego an anchor
 
     def has(self, words: tuple[str, ...] | list[str]) -> bool:
         """Whether any of `words` occurs outside the place names of the clause."""
@@ -198,6 +200,7 @@ def read(text: str, scene: Scene) -> Reading:
         lane_guessed=bool(lane and lane[3]),
         ids=list(dict.fromkeys(ids + numbered)),
         ego=ego is not None,
+        ego_at=ego[0] if ego is not None else -1,
     )
 
 
@@ -205,8 +208,14 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
     """The number quantifying a mention; collective nouns ("a row of") are not "one"; a number
     that cannot be a count ("nan", "2.5") is refused rather than replaced by a default."""
     before = reading.low[: mention.start]
-    for word in reversed(ph.tokens(before)[-4:]):
-        if word in lx.COLLECTIVE_COUNTS:
+    partitive = md.partitive_count(before)
+    if partitive is not None:
+        return partitive
+    words = ph.tokens(before)
+    for k in range(len(words) - 1, max(-1, len(words) - 5), -1):
+        word = words[k]
+        # "a lot of cones", but not the lot of "parking lot, so the cars"
+        if word in lx.COLLECTIVE_COUNTS and (word not in ("lot", "lots") or words[k + 1 : k + 2] == ["of"]):
             return lx.COLLECTIVE_COUNTS[word] or None
         if word.isdigit() or word in ph.NUMBER_WORDS or any(c.isdigit() for c in word) or word in ("nan", "inf"):
             break

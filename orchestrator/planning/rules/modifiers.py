@@ -1,0 +1,85 @@
+"""What a request says about the things it names beyond their category: the compass direction
+to move them, the shape to lay them out in, a group named by a catalog tag ("the vehicles"), and
+a share of them ("one of the rovers").
+
+Shared by the rule planner, which acts on it, and the plan-versus-request check, which holds a
+plan to it, so that both read the words the same way.
+"""
+
+from __future__ import annotations
+
+import re
+from functools import cache
+
+from drivetwin.orchestrator.planning.rules.phrases import NUMBER_WORDS, find_categories, normalise
+from drivetwin.worlds.catalog import catalog
+
+# A compass direction said as a way to go ("2 m east", "eastward", "to the north"), not as part of
+# a lane's or a place's name ("the northbound lane", "the east gate": find_place masks places),
+# a side of something else ("east of the fountain") or a heading ("facing north").
+_COMPASS = re.compile(r"(?<!facing )(?<!face )\b(north|south|east|west)(?:wards?)?\b"
+                      r"(?!-| ?bound| gate| side| entrance| crosswalk| crossing| of\b)")
+COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
+
+
+def compass_direction(text: str) -> str | None:
+    """The one compass direction the words say to go ("2 m east"); None for none, or for two
+    ("north-east", "east then north"): not one direction."""
+    said = {m.group(1) for m in _COMPASS.finditer(text)}
+    return said.pop() if len(said) == 1 else None
+
+
+@cache
+def _catalog_groups() -> dict[str, frozenset[str]]:
+    """Catalog tags shared by several categories, each with its categories."""
+    members: dict[str, set[str]] = {}
+    for name, entry in catalog().items():
+        for tag in entry.tags:
+            members.setdefault(tag, set()).add(name)
+    return {tag: frozenset(names) for tag, names in members.items() if len(names) > 1}
+
+
+def groups_said(text: str) -> dict[str, frozenset[str]]:
+    """The groups the words name by a catalog tag in the plural or after "every" ("the vehicles",
+    "all the signs", "every vehicle"), each with its categories; not the "lights" of "the street
+    lights", a category's own name."""
+    low = normalise(text)
+    names = [(m.start, m.end) for m in find_categories(text)]
+
+    def inside_a_name(said: re.Match[str]) -> bool:
+        return any(s <= said.start() and said.end() <= e and e - s > len(said.group(0)) for s, e in names)
+
+    return {
+        tag: members
+        for tag, members in _catalog_groups().items()
+        if any(
+            not inside_a_name(said)
+            for said in re.finditer(rf"\b(?:{re.escape(tag)}s|(?:(?<=every )|(?<=each )){re.escape(tag)})\b", low)
+        )
+    }
+
+
+# A layout said by its shape; "stop line" and "lane line" are road markings, not layouts.
+_LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid)\b")
+
+
+def layout_said(text: str) -> str | None:
+    """The shape of layout the words ask for ("in a line", "a row of", "a ring"), if any."""
+    said = _LAYOUT.search(text)
+    return said.group(1) if said else None
+
+
+# "one of the small research rovers", "two of those cones": the number counts the thing named.
+_PARTITIVE = re.compile(r"\b(\w+)\s+of\s+(?:the|those|these|our|your|its|their)\s+(?:[a-z-]+\s+){0,3}$")
+
+
+def partitive_count(before: str) -> int | None:
+    """The number of a partitive ("one of the ...") right before a thing named, if there is one."""
+    said = _PARTITIVE.search(before)
+    if said is None:
+        return None
+    word = said.group(1)
+    return int(word) if word.isdigit() else NUMBER_WORDS.get(word)
+
+
+__all__ = ["COMPASS_VECTORS", "compass_direction", "groups_said", "layout_said", "partitive_count"]
