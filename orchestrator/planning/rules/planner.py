@@ -23,6 +23,7 @@ from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import behaviour_kind, behaviour_spec, edit_existing, recolour, remove
 from drivetwin.orchestrator.planning.rules.environment import environment, lights
 from drivetwin.orchestrator.planning.rules.places import Notes, location, said_a_place
+from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
 from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
@@ -39,8 +40,6 @@ UNKNOWN_WORD_PENALTY = 0.15
 GUESS_PENALTY = 0.2
 # Lowest confidence a plan reports (it did produce calls, so not zero).
 MIN_CONFIDENCE = 0.05
-# Radius of a search "around" a place when the prompt gives none, metres.
-SEARCH_NEAR_M = 20.0
 
 # Clause breaks: a stop or colon between digits is part of a number or a clock time ("2.5 m",
 # "18:30"), not a break.
@@ -227,7 +226,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if re.match(rf"\s*({'|'.join(lx.FILLER_STARTS)})\b", r.low) and not r.mentions and not r.ids:
         return None  # "before I add anything": a circumstance, not a request
     if _is_question(r, asked):
-        return _search(r, scene, notes)
+        return plan_question(r, scene, memory, notes)
     if r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or r.has(lx.FEWER_WORDS) or _NEGATED_WISH.search(r.low):
         removed = remove(r, scene, memory, notes)
         if removed is not None:
@@ -269,48 +268,6 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if (laid_out and not behaviour_kind(r, catalog()[mention.category].motion)) or r.has(("to mark",)):
         return [_arrange(r, scene, memory, notes)]
     return _add(r, scene, memory, notes)
-
-
-def _search(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall]:
-    if r.has(lx.PROPERTY_WORDS) and (r.mentions or r.ids or r.ego):
-        what = (
-            {"asset": (r.ids or ["ego"])[0]}
-            if (r.ids or (r.ego and not r.mentions))
-            else {"category": r.mentions[0].category}
-        )
-        return [ToolCall(tool="asset_properties", args=what)]
-    if r.has(("lane", "lanes")):
-        near = r.landmark or (r.ids[0] if r.ids else None)
-        return [ToolCall(tool="find_lanes", args={"near": near} if near else {})]
-    if r.ids or (r.ego and not r.mentions):
-        return [ToolCall(tool="asset_properties", args={"asset": (r.ids or ["ego"])[0]})]
-    if r.mentions:
-        args: dict[str, Any] = {"category": r.mentions[0].category}
-        if r.landmark:
-            args["near"] = r.landmark
-            within = re.search(r"\bwithin\s+(?:about\s+)?(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b", r.low)
-            if within:
-                args["within"] = float(within.group(1))
-            elif r.has(("near", "around", "at", "by", "close to", "next to")):
-                args["within"] = SEARCH_NEAR_M
-        return [ToolCall(tool="find_assets", args=args)]
-    if (
-        r.landmark
-        and (r.has(lx.GENERIC_THINGS) or r.has(("around", "near", "standing", "at", "close to", "by")))
-        and not r.has(("where is", "where's", "where it", "where exactly", "located"))
-    ):
-        return [ToolCall(tool="find_assets", args={"near": r.landmark, "within": SEARCH_NEAR_M})]
-    if r.landmark:
-        return [ToolCall(tool="find_landmarks", args={"query": r.landmark})]
-    if r.landmark_word:
-        return [ToolCall(tool="find_landmarks", args={"query": r.landmark_word})]
-    if r.has(("landmark", "landmarks", "places", "buildings", "entrances")):
-        return [ToolCall(tool="find_landmarks", args={})]
-    if r.has(("road", "roads")):
-        return [ToolCall(tool="find_lanes", args={})]
-    if notes.place is not None and notes.place.get("target"):
-        return [ToolCall(tool="find_landmarks", args={"query": notes.place["target"]})]
-    return [ToolCall(tool="find_assets", args={})]
 
 
 def _maintenance_target(scene: Scene, memory: Memory) -> str | None:

@@ -1,0 +1,355 @@
+"""Planning a question: what it asks for, in what relation, to what anchor; search calls only.
+
+A question names what it wants (a landmark, assets of a category or any, lanes, a property such
+as mass, size, colour or position), often a relation (nearest or closest to X, around or near X
+within N m, on or blocking a lane or road, the lanes of a road) and an anchor (an asset id, the
+ego, a landmark, a category with one instance there, the place of an earlier clause or turn). The
+structure is read from the clause's `Reading` (rules/reading.py) and a few relation words; what
+it names is never guessed from a phrase list. A compound question ("how heavy is X, and which Y is
+nearest to it?") is one search per part, and a later part's "it" is what an earlier part was about
+or found. A question never changes the scene: every call here is a search Worker's.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Any, Literal
+
+from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.places import Notes
+from drivetwin.orchestrator.planning.rules.reading import Reading, read
+from drivetwin.tools.base import ToolCall
+from drivetwin.tools.errors import ToolError
+from drivetwin.tools.search import FindAssets, FindAssetsArgs
+from drivetwin.worlds.scene import EGO_ID, Scene
+
+# Radius of a search "around" a place when the question gives none, metres: the campus's things
+# that belong to a place (a bench at a stop, trees at a fountain) stand within it.
+SEARCH_NEAR_M = 20.0
+
+# A new question inside a clause: "..., and which landmark is closest to it".
+_NEXT_PART = re.compile(r",?\s+(?:and|also|plus)\s+(?=(?:which|what|where|how|is|are|does|do|who|any)\b)")
+# Relations, strongest first. Each is structure (a comparison, an obstruction, a neighbourhood),
+# not a phrasing of a particular request.
+_NEAREST = re.compile(r"\b(?:nearest|closest|most near|most close|nearer|closer|how far)\b")
+_ON_LANE = re.compile(
+    r"\b(?:block\w*|obstruct\w*|in (?:the|its|our|their|my|his|her) way"
+    r"|(?:on|in|across|standing on|parked on) (?:the |a |any |our )?(?:lanes?|roads?|streets?|carriageway))\b"
+)
+_AROUND = re.compile(r"\b(?:around|near|nearby|close to|next to|beside|by|at|in|inside|within|of)\b")
+_WITHIN = re.compile(r"\bwithin\s+(?:about\s+)?(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b")
+_PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
+# What a question can ask for by kind rather than by name.
+_LANE_KIND = re.compile(r"\blanes?\b")
+_ROAD_KIND = re.compile(r"\b(?:roads?|streets?)\b")
+_PLACE_KIND = re.compile(r"\b(?:landmarks?|places?|buildings?|entrances?|locations?|spots?)\b")
+_ANY_KIND = re.compile(rf"\b(?:{'|'.join(lx.GENERIC_THINGS)}|what|what's|whats|who)\b")
+_WHERE = re.compile(r"\b(?:where|located|location|position|coordinates)\b")
+# Properties beyond the size and mass words of the lexicon: look, pose and motion.
+_PROPERTY = re.compile(r"\b(?:colou?r|which way|heading|facing|how fast|speed|behaviou?r|doing|pose|yaw)\b")
+# Words that point back: to an earlier part or clause ("it", "there") or to the asker ("us").
+_BACK = re.compile(r"\b(?:it|its|them|they|those ones|that one|that spot|that place|here)\b"
+                   r"|(?<!is )(?<!are )(?<!was )(?<!were )\bthere\b(?!\s*(?:is|are|was|were|'s|be)\b)")
+# A clause that only points back at what earlier ones asked about ("how many of each").
+_OF_EACH = re.compile(r"\b(?:each|both|them|they|those|these)\b")
+_ASKER = re.compile(r"\b(?:(?:to|from|near|around|by|of|beside) (?:me|us)|where am i|where are we)\b")
+_DEFINITE = re.compile(r"\b(?:the|that|this|our|my|your)\s+(?:[a-z]+\s+){0,2}$")
+
+Kind = Literal["asset", "landmark", "lane", "point"]
+
+
+@dataclass(frozen=True)
+class Anchor:
+    """What a relation is measured from: an asset id (the ego included), a landmark, a lane, x,y."""
+
+    kind: Kind
+    name: str
+
+
+@dataclass(frozen=True)
+class Part:
+    """One question's search, what a later "it" refers to, and the assets it finds."""
+
+    call: ToolCall
+    referent: Anchor | None
+    found: tuple[str, ...] = ()
+
+
+def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
+    """The search calls that answer a question clause: one per part of a compound question."""
+    texts = [t for t in _NEXT_PART.split(r.text) if t.strip(" ,")]
+    if len(texts) > 1:  # "which way and how": a part that names nothing belongs to the question before
+        readings = [read(t, scene) for t in texts]
+        kept = [t for t, reading in zip(texts, readings, strict=True) if not _names_nothing(reading)
+                or _BACK.search(reading.masked) or reading.has(lx.PROPERTY_WORDS) or _PROPERTY.search(reading.low)]
+        texts = kept if kept else texts[:1]
+    earlier: Anchor | None = None
+    calls: list[ToolCall] = []
+    for text in texts:
+        reading = r if len(texts) == 1 else read(text, scene)
+        part = _plan_part(reading, scene, memory, notes, earlier)
+        if part is None:
+            continue
+        calls.append(part.call)
+        earlier = part.referent or earlier
+        if part.found:
+            notes.subject = list(part.found)  # what a later clause's "them" or "each" means
+    return calls
+
+
+def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None) -> Part | None:
+    low = r.low
+    named = _named(r, scene)
+    back = _back_reference(r, scene, memory, notes, earlier)
+    if _names_nothing(r) and _OF_EACH.search(r.masked) and notes.subject:
+        return None  # "bins? benches? how many of each": the earlier clauses already ask it
+    if r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low):
+        return _property(r, scene, named or back)
+    nearest = _NEAREST.search(low)
+    if nearest is not None:
+        anchor = _anchor_after(r, scene, nearest.end(), back, prefer_preposition=True)
+        if anchor is not None:
+            return _nearest(r, scene, anchor)
+    if _ON_LANE.search(low) is not None and not _asks_for_lanes(r):
+        args: dict[str, Any] = {"on_lane": True}
+        road = _road_named(r, scene) or (back.name if back is not None and back.kind == "lane" else None)
+        if road is not None:
+            args["lane"] = road
+        if r.mentions:
+            args["category"] = r.mentions[0].category
+        return _found(ToolCall(tool="find_assets", args=args), scene)
+    if _asks_for_lanes(r) or (_ROAD_KIND.search(r.masked) and not r.mentions and not r.landmark):
+        return Part(_lanes(r, scene, back), None)
+    around = _AROUND.search(low)
+    anchor = _anchor_after(r, scene, around.end(), back) if around is not None else None
+    if anchor is None and r.landmark and (r.mentions or _ANY_KIND.search(r.masked)):
+        anchor = Anchor("landmark", r.landmark)  # "what signals control the crossroads"
+    if anchor is not None and not _WHERE.search(low):
+        if _PLACE_KIND.search(r.masked) and not r.mentions:  # "which buildings are near the fountain"
+            return Part(ToolCall(tool="find_landmarks", args={"nearest_to": anchor.name}), anchor)
+        if r.mentions or _ANY_KIND.search(r.masked) or anchor.kind != "landmark":
+            return _around(r, scene, anchor)
+    return _what_or_where(r, scene, named, back)
+
+
+def _names_nothing(r: Reading) -> bool:
+    return not (r.mentions or r.ids or r.ego or r.landmark or r.landmark_word or r.lane
+                or _LANE_KIND.search(r.masked) or _PLACE_KIND.search(r.masked))
+
+
+def _named(r: Reading, scene: Scene) -> Anchor | None:
+    """The one thing a clause names outright: an asset id, the ego, a landmark."""
+    if r.ids:
+        return Anchor("asset", r.ids[0])
+    if r.ego or _ASKER.search(r.low):
+        return Anchor("asset", EGO_ID)
+    if r.landmark:
+        return Anchor("landmark", r.landmark)
+    return None
+
+
+def _back_reference(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None) -> Anchor | None:
+    """What "it" or "there" refers to: an earlier part, an earlier clause's place or assets,
+    then the last turn's additions or its place."""
+    if not _BACK.search(r.masked):
+        return None
+    if earlier is not None:
+        return earlier
+    if notes.place is not None and notes.place.get("target"):
+        target = str(notes.place["target"])
+        kind: Kind = "landmark" if scene.landmark(target) else "lane" if scene.roads.lane(target) else "asset"
+        return Anchor(kind, target)
+    if notes.subject:
+        return Anchor("asset", notes.subject[0])
+    added = [i for i in memory.last_added() if scene.asset(i) is not None]
+    if added:
+        return Anchor("asset", added[0])
+    focus = memory.last_focus()
+    if focus is not None:
+        return Anchor("point", f"{focus[0]:.2f},{focus[1]:.2f}")
+    return None
+
+
+def _entities(r: Reading, scene: Scene, back: Anchor | None) -> list[tuple[int, Anchor]]:
+    """Everything a relation could be measured from, with where the clause names it."""
+    found: list[tuple[int, Anchor]] = []
+    for asset_id in r.ids:
+        found.append((max(0, r.low.find(asset_id)), Anchor("asset", asset_id)))
+    if r.ego:
+        found.append((r.ego_at, Anchor("asset", EGO_ID)))
+    asker = _ASKER.search(r.low)
+    if asker is not None and not r.ego:
+        found.append((asker.start(), Anchor("asset", EGO_ID)))
+    if r.landmark:
+        found.append((r.landmark_at, Anchor("landmark", r.landmark)))
+    for mention in r.mentions:
+        only = _only_instance(r, scene, mention)
+        if only is not None:
+            found.append((mention.start, Anchor("asset", only)))
+    pointer = _BACK.search(r.masked)
+    if back is not None and pointer is not None:
+        found.append((pointer.start(), back))
+    return sorted(found, key=lambda f: f[0])
+
+
+def _only_instance(r: Reading, scene: Scene, mention: ph.Mention) -> str | None:
+    """The asset a definite mention names when the scene holds exactly one of its category."""
+    present = [a.id for a in scene.assets if a.category == mention.category]
+    return present[0] if len(present) == 1 and _DEFINITE.search(r.low[: mention.start]) else None
+
+
+def _anchor_after(r: Reading, scene: Scene, at: int, back: Anchor | None,
+                  prefer_preposition: bool = False) -> Anchor | None:
+    """The thing a relation at `at` is measured from: named after its "to/from" ("nearest car
+    to the ego"), else right after it, else (for "which landmark is the ego closest to") before."""
+    entities = _entities(r, scene, back)
+    if prefer_preposition:
+        prep = _PREPOSITION.search(r.low, at)
+        if prep is not None:
+            after = [e for pos, e in entities if pos >= prep.start()]
+            if after:
+                return after[0]
+    after = [e for pos, e in entities if pos >= at]
+    if after:
+        return after[0]
+    before = [e for pos, e in entities if pos < at and prefer_preposition]
+    return before[-1] if before else None
+
+
+def _property(r: Reading, scene: Scene, subject: Anchor | None) -> Part:
+    """asset_properties of the thing asked about: an asset named or the only one of a category
+    named with "the", else the category; a place's position is its landmark."""
+    if r.mentions and not r.ids:
+        mention = r.mentions[0]
+        only = _only_instance(r, scene, mention)
+        if only is not None:
+            return Part(ToolCall(tool="asset_properties", args={"asset": only}), Anchor("asset", only))
+        return Part(ToolCall(tool="asset_properties", args={"category": mention.category}), None)
+    if subject is not None and subject.kind == "landmark":
+        return Part(ToolCall(tool="find_landmarks", args={"query": subject.name}), subject)
+    asset = subject.name if subject is not None and subject.kind == "asset" else EGO_ID
+    return Part(ToolCall(tool="asset_properties", args={"asset": asset}), Anchor("asset", asset))
+
+
+def _nearest(r: Reading, scene: Scene, anchor: Anchor) -> Part:
+    """What is nearest the anchor, of the kind asked for: a landmark, a lane, assets."""
+    kind_at = {m.start: m for m in r.mentions}
+    lane = _LANE_KIND.search(r.masked)
+    place = _PLACE_KIND.search(r.masked) or (re.search(re.escape(r.landmark_word), r.masked) if r.landmark_word else None)
+    subject_landmark = r.landmark if r.landmark and r.landmark != anchor.name else None
+    firsts = [(m.start, "category") for m in kind_at.values() if _only_instance(r, scene, m) != anchor.name]
+    firsts += [(lane.start(), "lane")] if lane else []
+    firsts += [(place.start(), "landmark")] if place else []
+    firsts += [(r.landmark_at, "landmark")] if subject_landmark else []
+    kind = min(firsts)[1] if firsts else "any"
+    if kind == "lane":
+        return Part(ToolCall(tool="find_lanes", args={"near": anchor.name}), anchor)
+    if kind == "landmark":
+        args: dict[str, Any] = {"nearest_to": anchor.name}
+        if subject_landmark:
+            args["query"] = subject_landmark  # "how far is the bus stop from us"
+        return Part(ToolCall(tool="find_landmarks", args=args), anchor)
+    args = {"nearest_to": anchor.name}
+    category = next((m.category for m in r.mentions if _only_instance(r, scene, m) != anchor.name), None)
+    if category is not None:
+        args = {"category": category, **args}
+    within = _WITHIN.search(r.low)
+    if within is not None:
+        args["within"] = float(within.group(1))
+    return _found(ToolCall(tool="find_assets", args=args), scene)
+
+
+def _around(r: Reading, scene: Scene, anchor: Anchor) -> Part:
+    """Assets (of the category named, if any) within a radius of the anchor, nearest first."""
+    args: dict[str, Any] = {}
+    category = next((m.category for m in r.mentions if _only_instance(r, scene, m) != anchor.name), None)
+    if category is not None:
+        args["category"] = category
+    # An asset is left out of its own neighbourhood: nearest_to excludes it, near would list it.
+    args["nearest_to" if anchor.kind == "asset" else "near"] = anchor.name
+    within = _WITHIN.search(r.low)
+    args["within"] = float(within.group(1)) if within else _radius(scene, anchor)
+    return _found(ToolCall(tool="find_assets", args=args), scene)
+
+
+def _radius(scene: Scene, anchor: Anchor) -> float:
+    """How far "around" a place reaches: an area's own extent when it is wider than the default."""
+    landmark = scene.landmark(anchor.name) if anchor.kind == "landmark" else None
+    if landmark is None or not landmark.polygon:
+        return SEARCH_NEAR_M
+    extent = max(math.dist(landmark.position, corner) for corner in landmark.polygon)
+    return max(SEARCH_NEAR_M, round(extent, 1))
+
+
+def _asks_for_lanes(r: Reading) -> bool:
+    """Whether the lanes themselves are what is asked for ("which lanes does X have"), not
+    what stands on them ("is anything on the lanes")."""
+    lane = _LANE_KIND.search(r.masked)
+    if lane is None:
+        return False
+    things = [m.start for m in r.mentions] + [m.start() for m in _ANY_KIND.finditer(r.masked) if m.group(0) not in
+                                                    ("what", "what's", "whats", "who")]
+    return not any(t < lane.start() for t in things)
+
+
+def _road_named(r: Reading, scene: Scene) -> str | None:
+    """The road a clause names ("Campus Drive"), or the lane id when it names one lane."""
+    if r.lane is None:
+        return None
+    lane = scene.roads.lane(r.lane)
+    if lane is None or not r.lane_guessed:
+        return r.lane
+    return lane.road or r.lane
+
+
+def _lanes(r: Reading, scene: Scene, back: Anchor | None) -> ToolCall:
+    """find_lanes: the lanes of a road named, else the lane nearest a place or asset named."""
+    road = _road_named(r, scene)
+    if road is not None:
+        lane = scene.roads.lane(road)
+        return ToolCall(tool="find_lanes", args={"road": lane.road if lane is not None and lane.road else road})
+    near = _named(r, scene) or back
+    return ToolCall(tool="find_lanes", args={"near": near.name} if near is not None else {})
+
+
+def _what_or_where(r: Reading, scene: Scene, named: Anchor | None, back: Anchor | None) -> Part:
+    """A question with no relation: the thing named, where it is or how many there are."""
+    if r.mentions:
+        args: dict[str, Any] = {"category": r.mentions[0].category}
+        if r.landmark:
+            args.update(near=r.landmark, within=_radius(scene, Anchor("landmark", r.landmark)))
+        return _found(ToolCall(tool="find_assets", args=args), scene)
+    if named is not None and named.kind == "asset":
+        return Part(ToolCall(tool="asset_properties", args={"asset": named.name}), named)
+    if named is not None:
+        return Part(ToolCall(tool="find_landmarks", args={"query": named.name}), named)
+    if r.landmark_word:
+        return Part(ToolCall(tool="find_landmarks", args={"query": r.landmark_word}), None)
+    if _PLACE_KIND.search(r.masked):
+        return Part(ToolCall(tool="find_landmarks", args={}), None)
+    if back is not None and back.kind == "asset" and not _ANY_KIND.search(r.masked):
+        return Part(ToolCall(tool="asset_properties", args={"asset": back.name}), back)  # "where is it now"
+    if back is not None and back.kind == "landmark" and _WHERE.search(r.low):
+        return Part(ToolCall(tool="find_landmarks", args={"query": back.name}), back)  # "where exactly is it"
+    if back is not None:  # "anything around there": the earlier place
+        return _around(r, scene, back)
+    return Part(ToolCall(tool="find_assets", args={}), None)
+
+
+def _found(call: ToolCall, scene: Scene) -> Part:
+    """An asset search, with the first asset it finds as what a later "it" refers to."""
+    try:
+        result = FindAssets().propose(FindAssetsArgs.model_validate(call.args), scene)
+    except (ToolError, KeyError, ValueError):
+        return Part(call, None)  # the Worker will refuse it in its own words when it runs
+    ids = result.data.get("ids") if result.data else None
+    # The ego is the asker, not what "it" means ("is anything on the lanes, and what is near it").
+    found = tuple(str(i) for i in ids if i != EGO_ID) if isinstance(ids, list) else ()
+    return Part(call, Anchor("asset", found[0]) if found else None, found)
+
+
+__all__ = ["SEARCH_NEAR_M", "plan_question"]
