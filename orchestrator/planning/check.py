@@ -21,6 +21,7 @@ from functools import cache
 from typing import Any, Literal
 
 from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning.answers import unanswered
 from drivetwin.orchestrator.planning.attributes import (
     group_left_behind,
     look_left_out,
@@ -146,6 +147,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         said = " ".join(str(c.args) for c in effect.calls).lower().replace("_", " ")
         out += [f"you asked about {name}, but the plan looks up something else"
                 for name in _topics(request, scene) if name.lower().replace("_", " ") not in said]
+    out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
     # A request that only takes away never adds, and one that only adds never removes; with
     # words of both ("swap", "replace", "instead"), each half is judged by what it names.
     says_add = bool(ADD_WORDS.search(request.low))
