@@ -54,9 +54,10 @@ _PROPERTY = re.compile(r"\b(?:colou?r|which way|heading|facing|how fast|speed|be
 # Words that point back: to an earlier part or clause ("it", "there") or to the asker ("us").
 _BACK = re.compile(r"\b(?:it|its|them|they|those ones|that one|that spot|that place|here)\b"
                    r"|(?<!is )(?<!are )(?<!was )(?<!were )\bthere\b(?!\s*(?:is|are|was|were|'s|be)\b)")
+_PLACE_POINTERS = frozenset({"there", "here", "that spot", "that place"})
 # A clause that only points back at what earlier ones asked about ("how many of each").
 _OF_EACH = re.compile(r"\b(?:each|both|them|they|those|these)\b")
-_ASKER = re.compile(r"\b(?:(?:to|from|near|around|by|of|beside) (?:me|us)|where am i|where are we)\b")
+_ASKER = re.compile(r"\b(?:(?:to|from|near|around|by|of|beside) (me|us)|where am i|where are we)\b")
 _DEFINITE = re.compile(r"\b(?:the|that|this|our|my|your)\s+(?:[a-z]+\s+){0,2}$")
 
 Kind = Literal["asset", "landmark", "lane", "point"]
@@ -153,25 +154,34 @@ def _named(r: Reading, scene: Scene) -> Anchor | None:
 
 
 def _back_reference(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None) -> Anchor | None:
-    """What "it" or "there" refers to: an earlier part, an earlier clause's place or assets,
-    then the last turn's additions or its place."""
-    if not _BACK.search(r.masked):
+    """What "it" or "there" refers to: an earlier part of the question, else for a place word
+    ("there") the place an earlier clause or the last edit was at, for a thing ("it", "them")
+    the assets an earlier clause found or the last turn added."""
+    pointer = _BACK.search(r.masked)
+    if pointer is None:
         return None
     if earlier is not None:
         return earlier
+    place_meant = pointer.group(0).strip() in _PLACE_POINTERS
+    for reference in (_place_referent, _thing_referent) if place_meant else (_thing_referent, _place_referent):
+        found = reference(scene, memory, notes)
+        if found is not None:
+            return found
+    return None
+
+
+def _place_referent(scene: Scene, memory: Memory, notes: Notes) -> Anchor | None:
     if notes.place is not None and notes.place.get("target"):
         target = str(notes.place["target"])
         kind: Kind = "landmark" if scene.landmark(target) else "lane" if scene.roads.lane(target) else "asset"
         return Anchor(kind, target)
-    if notes.subject:
-        return Anchor("asset", notes.subject[0])
-    added = [i for i in memory.last_added() if scene.asset(i) is not None]
-    if added:
-        return Anchor("asset", added[0])
     focus = memory.last_focus()
-    if focus is not None:
-        return Anchor("point", f"{focus[0]:.2f},{focus[1]:.2f}")
-    return None
+    return Anchor("point", f"{focus[0]:.2f},{focus[1]:.2f}") if focus is not None else None
+
+
+def _thing_referent(scene: Scene, memory: Memory, notes: Notes) -> Anchor | None:
+    present = [i for i in [*notes.subject, *memory.last_added()] if scene.asset(i) is not None]
+    return Anchor("asset", present[0]) if present else None
 
 
 def _entities(r: Reading, scene: Scene, back: Anchor | None) -> list[tuple[int, Anchor]]:
@@ -183,7 +193,7 @@ def _entities(r: Reading, scene: Scene, back: Anchor | None) -> list[tuple[int, 
         found.append((r.ego_at, Anchor("asset", EGO_ID)))
     asker = _ASKER.search(r.low)
     if asker is not None and not r.ego:
-        found.append((asker.start(), Anchor("asset", EGO_ID)))
+        found.append((asker.start(1) if asker.group(1) else asker.start(), Anchor("asset", EGO_ID)))
     if r.landmark:
         found.append((r.landmark_at, Anchor("landmark", r.landmark)))
     for mention in r.mentions:
@@ -282,7 +292,7 @@ def _radius(scene: Scene, anchor: Anchor) -> float:
     if landmark is None or not landmark.polygon:
         return SEARCH_NEAR_M
     extent = max(math.dist(landmark.position, corner) for corner in landmark.polygon)
-    return max(SEARCH_NEAR_M, round(extent, 1))
+    return max(SEARCH_NEAR_M, math.ceil(extent * 10) / 10)  # to 0.1 m, never short of a corner
 
 
 def _asks_for_lanes(r: Reading) -> bool:

@@ -1,0 +1,137 @@
+"""Questions are answered about what they ask: the kind of thing wanted, the relation and the
+anchor, one search per part; and the review stops a plan that answers a neighbouring question.
+Every prompt here is worded for this file, not taken from a suite."""
+
+from __future__ import annotations
+
+import math
+
+from drivetwin.orchestrator.planning import Plan
+from drivetwin.orchestrator.planning.check import review
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.session import Session
+from misreading import Fixed, call  # this folder is on sys.path (no __init__.py)
+
+
+def planned(context, prompt):
+    return [(c.tool, c.args) for c in RulePlanner().plan(prompt, context).calls]
+
+
+def problems(context, prompt, *calls):
+    verdict = review(prompt, Plan(calls=list(calls), planner="fixed"), context)
+    return verdict.action, " ".join(verdict.problems)
+
+
+# What the rule planner asks the search Workers for, by question shape.
+
+
+def test_a_landmark_closest_to_a_named_asset_is_ranked_from_that_asset(context):
+    assert planned(context, "which named place lies closest to traffic_light_1?") == [
+        ("find_landmarks", {"nearest_to": "traffic_light_1"})]
+
+
+def test_the_nearest_thing_of_a_kind_is_ranked_from_the_ego(context):
+    assert planned(context, "which tree stands closest to our car?") == [
+        ("find_assets", {"category": "tree", "nearest_to": "ego"})]
+
+
+def test_how_far_a_place_is_from_the_ego_ranks_that_place_from_the_ego(context):
+    assert planned(context, "how far away is the fountain from the ego vehicle?") == [
+        ("find_landmarks", {"nearest_to": "ego", "query": "fountain"})]
+
+
+def test_things_within_a_stated_radius_of_a_place_use_that_radius(context):
+    assert planned(context, "which street lights stand within 12 m of the library?") == [
+        ("find_assets", {"category": "street_light", "near": "Library entrance", "within": 12.0})]
+
+
+def test_things_in_an_area_are_searched_over_the_whole_area(context):
+    [(tool, args)] = planned(context, "how many cars sit in parking lot A?")
+    lot = context.scene.landmark("parking lot A")
+    corner = max(math.dist(lot.position, point) for point in lot.polygon)
+    assert tool == "find_assets" and args["category"] == "passenger_car" and args["near"] == "parking lot A"
+    assert args["within"] >= corner
+
+
+def test_what_blocks_a_named_road_searches_what_stands_on_that_road(context):
+    assert planned(context, "is something obstructing Main Street?") == [
+        ("find_assets", {"on_lane": True, "lane": "Main Street"})]
+
+
+def test_the_lanes_of_a_road_are_listed_by_that_road(context):
+    assert planned(context, "what lanes make up Campus Drive?") == [("find_lanes", {"road": "Campus Drive"})]
+
+
+def test_a_property_of_the_only_one_there_describes_that_asset(context):
+    assert planned(context, "how heavy is the fire hydrant?") == [("asset_properties", {"asset": "fire_hydrant_1"})]
+
+
+def test_a_property_of_a_kind_describes_its_catalog_entry(context):
+    assert planned(context, "how tall would a bus be?") == [("asset_properties", {"category": "bus"})]
+
+
+def test_around_us_means_around_the_ego_and_leaves_the_ego_out(context):
+    [(tool, args)] = planned(context, "anything close to us?")
+    assert tool == "find_assets" and args["nearest_to"] == "ego" and "near" not in args
+
+
+def test_a_compound_question_gets_one_search_per_part_and_it_means_the_first_subject(context):
+    assert planned(context, "what does the SUV weigh, and which landmark is nearest to it?") == [
+        ("asset_properties", {"asset": "suv_1"}), ("find_landmarks", {"nearest_to": "suv_1"})]
+
+
+def test_it_in_a_later_part_is_what_the_first_part_found(session):
+    assert session.submit("put a traffic cone in the westbound lane").ok
+    cone = next(a.id for a in session.scene.assets if a.category == "traffic_cone")
+    calls = planned(session.context(), "are any objects lying on the lanes, and what place is closest to it?")
+    assert calls == [("find_assets", {"on_lane": True}), ("find_landmarks", {"nearest_to": cone})]
+
+
+def test_there_in_a_later_turn_is_the_place_of_the_last_edit(session):
+    assert session.submit("put a bench at the fountain").ok
+    [(tool, args)] = planned(session.context(), "what else stands around there?")
+    x, y = (float(v) for v in args["near"].split(","))
+    fountain = session.scene.landmark("fountain").position
+    assert tool == "find_assets" and abs(x - fountain[0]) < 10 and abs(y - fountain[1]) < 10
+
+
+def test_a_question_is_answered_and_changes_nothing(session):
+    before = session.scene.model_copy(deep=True)
+    report = session.submit("which landmark is closest to the SUV?")
+    assert report.ok and "nearest landmark to suv_1" in (report.answer or " ".join(report.results))
+    assert session.scene.assets == before.assets
+
+
+# The review stops a plan that answers a neighbouring question.
+
+
+def test_a_nearest_question_answered_without_distances_is_not_given(context):
+    action, why = problems(context, "which tree stands closest to our car?", call("find_assets", category="tree"))
+    assert action != "apply" and "nearest" in why
+
+
+def test_a_blocking_question_answered_by_listing_lanes_is_not_given(context):
+    action, why = problems(context, "is anything obstructing the eastbound lane?", call("find_lanes"))
+    assert action != "apply" and "stands on the lanes" in why
+
+
+def test_a_property_question_answered_about_another_thing_is_not_given(context):
+    action, why = problems(context, "what does the SUV weigh?", call("asset_properties", asset="ego"))
+    assert action != "apply" and "suv" in why
+
+
+def test_a_two_part_question_answered_once_is_not_given(context):
+    prompt = "what does the SUV weigh, and which landmark is nearest to it?"
+    action, why = problems(context, prompt, call("asset_properties", asset="suv_1"))
+    assert action != "apply" and "2 things" in why
+
+
+def test_a_plan_that_answers_the_question_asked_is_given(context):
+    prompt = "which tree stands closest to our car?"
+    assert problems(context, prompt, call("find_assets", category="tree", nearest_to="ego")) == ("apply", "")
+
+
+def test_a_session_asks_or_refuses_rather_than_answering_about_the_wrong_thing(campus, registry):
+    session = Session(campus, Fixed(call("asset_properties", asset="ego")), registry)
+    report = session.submit("what does the SUV weigh?")
+    assert not report.ok and not report.results
