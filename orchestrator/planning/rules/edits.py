@@ -64,7 +64,7 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         if mention.plural or r.has(("all", "every", "each")):
             return present
         return recent[-1:] if recent else present[:1]
-    if r.has(("it", "them", "that one", "those", "they", "its")):
+    if r.has(("it", "them", "that one", "those", "they", "its", "him", "her")):
         if notes.subject:
             return notes.subject
         return [i for i in memory.last_added() if scene.asset(i) is not None]

@@ -35,7 +35,10 @@ def weather(r: Reading) -> ToolCall | None:
                 continue  # "clear the roadworks away" is a removal
             args: dict[str, Any] = {"kind": kind}
             if kind != "clear":
-                heavy, light = r.has(lx.HEAVY), r.has(lx.LIGHT) and not r.has(_LAMP_CONTEXT)
+                # "light snow with the headlights on": light said of the weather is its strength
+                said_of_weather = re.search(rf"\blight\s+(?:{'|'.join(map(re.escape, lx.WEATHER_WORDS[kind]))})\b", r.low)
+                heavy = r.has(lx.HEAVY)
+                light = r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT))
                 args["intensity"] = HEAVY_INTENSITY if heavy else LIGHT_INTENSITY if light else DEFAULT_INTENSITY
             return ToolCall(tool="set_weather", args=args)
     return None
@@ -81,9 +84,7 @@ def environment(r: Reading) -> list[ToolCall]:
     if weather_call is not None:
         calls.append(weather_call)
     when = time_of_day(masked_for_time)
-    # "visibility should be poor this morning": the time is a circumstance, not a request,
-    # unless it is the only thing asked.
-    if when is not None and (weather_call is None or r.has(("night", "nighttime", "dark", "dusk", "dawn", "evening"))):
+    if when is not None:  # "a foggy morning" is a weather and a time
         calls.append(when)
     return calls
 

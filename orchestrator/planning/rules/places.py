@@ -87,7 +87,9 @@ def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str |
             if pos < 0:
                 continue
             later = [m for m in r.mentions if m.start > pos]
-            if not later:
+            # The thing right after the relation is its object: not one a place or words come between.
+            between = r.low[pos + len(word) + 2 : later[0].start] if later else ""
+            if not later or len(between.split()) > 3 or pos < r.landmark_at < later[0].start:
                 continue
             present = [a for a in scene.assets if a.category == later[0].category and a.id not in exclude]
             if not present:

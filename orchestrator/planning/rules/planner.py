@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import re
 import time
+from dataclasses import replace
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
@@ -212,7 +213,9 @@ def _unknown_words(clause: str, scene: Scene) -> list[str]:
 def _is_question(r: Reading, asked: bool) -> bool:
     words = r.low.strip().removeprefix("so ").removeprefix("ok ").removeprefix("now ").strip()
     starts = any(re.match(rf"{re.escape(w)}\b", words) for w in lx.SEARCH_STARTS)
-    if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", words):
+    # "Could you put a shuttle at the stop?" is a command put politely, question mark or not.
+    command = re.sub(r"^(?:(?:please|pls|kindly|can|could|would|will)\s+(?:you\s+)?(?:please\s+)?)+", "", words)
+    if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command):
         return False
     within = re.search(r"(\s,\s*(where|which|what)|how many|how much)\b", r.low)
     return starts or asked or bool(within)
@@ -256,6 +259,13 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         existing = edit_existing(r, scene, memory, notes)
         if existing is not None:
             return existing
+    recent = [i for i in memory.last_added() if scene.asset(i) is not None]
+    if mention is None and recent and r.has(("more", "another")):
+        # "put two more there": more of what the last turn added
+        last = scene.asset(recent[-1])
+        assert last is not None
+        named = ph.Mention(last.category, len(r.low), len(r.low), plural=True)
+        return _add(replace(r, mentions=[named]), scene, memory, notes)
     if mention is None:
         if r.has(lx.GENERIC_THINGS):
             return environment(r) or None  # "we want to put something there": an intention
@@ -295,6 +305,12 @@ def _fallback_place(memory: Memory) -> dict[str, Any]:
     )
 
 
+def _beside_last(scene: Scene, memory: Memory) -> dict[str, Any] | None:
+    """Beside the last thing added and still there: where "more cones" go (the Worker spreads them)."""
+    recent = [i for i in memory.last_added() if scene.asset(i) is not None]
+    return {"relation": "next_to", "target": recent[-1]} if recent else None
+
+
 def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     """A line of barriers (or the named things) across the road at the place named."""
     layout = [m.category for m in r.mentions if catalog()[m.category].placement != "sidewalk"] or ["road_barrier"]
@@ -306,13 +322,17 @@ def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     return ToolCall(tool="arrange_assets", args=args)
 
 
+# "Same again but bollards": the last turn's amount, of what this turn names.
+_SAME_AGAIN = re.compile(r"\b(?:same (?:again|as before|thing)|the same but|again but)\b")
+
+
 def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     mentions = r.mentions
     around_pos = r.low.find(" around ")
     layout = [m.category for m in mentions if around_pos < 0 or m.start < around_pos] or [mentions[0].category]
     layout = list(dict.fromkeys(layout))
     args: dict[str, Any] = {"categories": layout[:4]}
-    count = find_count(r, mentions[0])
+    count = find_count(r, mentions[0]) or (len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None)
     if count:
         args["count"] = count
     if r.has(("line", "row", "rows", "across")):
@@ -351,7 +371,8 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCal
     mention = r.mentions[0]
     word = r.low[mention.start : mention.end].strip()
     mass = word.endswith(("ing", "ery"))  # "seating", "greenery": more than one
-    count = find_count(r, mention) or (3 if mention.plural or mass else 1)
+    again = len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None
+    count = find_count(r, mention) or again or (3 if mention.plural or mass else 1)
     # The count is passed as said: the Worker refuses what is too many, in words.
     args: dict[str, Any] = {"category": mention.category, "count": count}
     category = catalog()[mention.category]
@@ -369,7 +390,7 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCal
     ):
         where = {"relation": "on_sidewalk", "target": where["target"]}
     if where is None and kind is None and memory.last_focus() is not None and r.has(("also", "more", "another")):
-        where = _fallback_place(memory)
+        where = _beside_last(scene, memory) or _fallback_place(memory)
     if where is None and notes.place is not None and r.has(("there", "instead")):
         where = dict(notes.place)
     if where is None and said_a_place(r) and kind is None:
