@@ -56,7 +56,7 @@ from drivetwin.orchestrator.planning.request import ADD_WORDS, REMOVE_WORDS, Req
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
-from drivetwin.orchestrator.planning.scenario_reading import missed_scenario
+from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
@@ -396,6 +396,8 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
         return _screened(prompt, plan.question, context)
     if (missed := missed_scenario(prompt, plan, context)) is not None:  # never a static edit for a scenario
         return Verdict("ask" if missed.question else "refuse", [missed.problem], missed.question, missed.message)
+    if read_as_scenario(prompt, plan, context):  # the storyboard's readings are the scenario reader's to judge
+        return Verdict("apply")
     effect = dry_run(plan.calls, context)
     if effect is None:
         return Verdict("apply")  # the transaction refuses it in its own words

@@ -64,12 +64,15 @@ def motion(asset: AssetInstance) -> str:
 
 
 def head_category(words: str) -> str | None:
-    """The category a noun phrase names: a catalog name or synonym, else a role word."""
-    for role, name in sorted(ROLE_WORDS.items(), key=lambda r: -len(r[0])):
-        if re.search(rf"\b{role}\b", words) and not re.search(r"\bstreet lights?\b", words):
-            return name
-    found = ph.find_categories(words)
-    return found[0].category if found else None
+    """The category a noun phrase names: the first catalog name, synonym or role word in it
+    ("the car on the side road runs the red light" names a car, not a light)."""
+    named: list[tuple[int, str]] = []
+    if not re.search(r"\bstreet lights?\b", words):
+        for role, name in sorted(ROLE_WORDS.items(), key=lambda r: -len(r[0])):
+            named += [(m.start(), name) for m in re.finditer(rf"\b{role}\b", words)]
+    # find_categories reads its own normalised copy (one leading space): its spans are one on.
+    named += [(m.start - 1, m.category) for m in ph.find_categories(words)]
+    return min(named)[1] if named else None
 
 
 def own_words(words: str) -> str:

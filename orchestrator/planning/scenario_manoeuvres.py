@@ -43,6 +43,8 @@ class Manoeuvre:
     verb_at: int = 0
 
 
+# Verbs of moving sideways into a lane ("drifts into the ego's lane", "changes into the left lane").
+_SIDEWAYS = r"(?:mov|drift|veer|pull|steer|wander|chang|switch|go|goe|head)\w*"
 # Each manoeuvre: its words (a regex over the action clause) and whether walkers or vehicles do it.
 _MANOEUVRES: tuple[tuple[str, str], ...] = (
     ("light", r"\b(red|amber|yellow|orange|green|cycles?|phases?|work|working|stop|wait|halt)\b"),
@@ -50,10 +52,11 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
                       r"|\b(in|into) the (road|street)\b[^,.;]*\b(stops?|freezes?|stands?)\b"),
     ("cut_in", r"\bcut(?:s|ting)? in\b|\bswerv\w* into\b|\bmerg\w* (?:in|into)\b|\bpulls? in front\b"),
     ("overtake", r"\bovertakes?\b|\bpull\w* out\b[^,.;]*\bpass\b|\bto pass\b"),
-    ("lane_change", r"\bchang\w* lanes?\b|\blane change\b|\b(?:move|moves|switch\w*|go|goes)\s+(?:in)?to the (?:left|right)\b"
-                    r"|\binto the lane (?:on|to) (?:its|the) (?:left|right)\b|\bchange into the\b"),
+    ("lane_change", r"\bchang\w* lanes?\b|\blane change\b|\binto the lane (?:on|to) (?:its|the) (?:left|right)\b"
+                    rf"|\b{_SIDEWAYS}(?: over| back)? (?:in)?to (?:the |its |their |our )?(?:left|right)\b"
+                    rf"|\b{_SIDEWAYS}(?: over| back)? (?:in)?to (?:the |its |their |our )?(?:[a-z_0-9]+'s |lane of )?(?:lane|path)\b"),
     ("junction_turn", r"\b(?:turn\w*|take\w*|hang\w*)(?: a| off)?\s+(?:left|right|off)\b|\bturn\w* at\b"
-                      r"|\bgo(?:es)? straight\b"),
+                      r"|\bgo(?:es)? straight\b|\bstraight (?:on|through|across|over|ahead)\b"),
     ("reverse", r"\brevers\w*|\bback(?:s|ing)? (?:up|out)\b"),
     ("change_speed", r"\bspeed\w* up\b|\bspeed up\b|\baccelerat\w*|\bgo(?:es)? faster\b|\bslow\w* (?:down|to)\b"
                      r"|\bdecelerat\w*|\bgo(?:es)? slower\b"),
@@ -138,9 +141,9 @@ class _Readers:
         speed = _speed(action)
         if speed is not None:
             spec["speed"] = speed
-        if turn is None:
-            return Manoeuvre("junction_turn", choices=[
-                (f"turn {t} at the junction", {**spec, "turn": t}) for t in ("left", "right", "straight")])
+        if turn is None:  # "turns off" leaves the road it is on: not straight on
+            ways = ("left", "right") if re.search(r"\bturn\w* off\b", action) else ("left", "right", "straight")
+            return Manoeuvre("junction_turn", choices=[(f"turn {t} at the junction", {**spec, "turn": t}) for t in ways])
         return Manoeuvre("junction_turn", {**spec, "turn": turn.group(1)})
 
     @staticmethod
@@ -155,6 +158,8 @@ class _Readers:
     def change_speed(action: str) -> Manoeuvre:
         speed, rate = _speed(action), _rate(action)
         spec: dict[str, Any] = {"kind": "change_speed", **({"rate": rate} if rate is not None else {})}
+        if speed is None and rate is not None and re.search(r"\bdecelerat", action):
+            return Manoeuvre("stop", {"kind": "stop", "rate": rate})  # a deceleration with no end speed ends at rest
         if speed is None:
             faster = not re.search(r"\bslow|\bdecelerat", action)
             return Manoeuvre("change_speed", spec, choices=[("faster" if faster else "slower", spec)])
@@ -233,3 +238,32 @@ def _phases(action: str, states: list[tuple[str, re.Match[str] | None]], numbers
     return phases
 
 
+# Things scenario descriptions ask for that no Worker can play, each with what is possible instead.
+_UNSUPPORTED: tuple[tuple[re.Pattern[str], str], ...] = (
+    (re.compile(r"\b(?:runs?|running|jumps?|jumping|ignor\w*|go(?:es)? through|driv\w* through|blows?) (?:the |a )?red\b"
+                r"|\bred.light runner\b"),
+     "vehicles on their routes always stop at a red light, so none can run one; a light can be held red, turn "
+     "red at a time or distance, or cycle"),
+    (re.compile(r"\bu.?turn\w*|\bturn\w* (?:a)?round\b|\bthree.point turn\b"),
+     "a vehicle cannot turn round; it can turn left or right or go straight at the junction, or reverse"),
+    (re.compile(r"\b(?:onto|on to|up onto|up on|mounts?|mounting) (?:the )?(?:pavement|sidewalk|kerb|curb|verge|grass)\b"),
+     "a vehicle stays on the road; it can brake, change speed, change lanes, cut in, turn at the junction or reverse"),
+    (re.compile(r"\b(?:honk\w*|hoot\w*|sounds? (?:its|the) horn|flash\w* (?:its |the )?(?:head)?lights|signals? left|signals? right)\b"),
+     "actors have no horn or indicators in this simulation; they can only move"),
+    (re.compile(r"\b(?:crash\w*|collid\w*|smash\w*|ram\w*|slams?) into\b|\b(?:hits?|rear.ends?) the\b"),
+     "a collision is an outcome, not a manoeuvre: I can set up the manoeuvres that lead to one (a lead car braking, "
+     "a cut-in, a walker stepping out) and the simulation shows whether they collide"),
+)
+
+
+def refuse_unsupported(action: str) -> None:
+    """PlanningError naming what is possible when the words ask for a manoeuvre no Worker can play."""
+    for words, instead in _UNSUPPORTED:
+        found = words.search(action)
+        if found:
+            raise PlanningError(f"I cannot make anything {found.group(0)!r}: {instead}")
+
+
+def asks_unsupported(action: str) -> bool:
+    """Whether the words ask for a manoeuvre no Worker can play (see refuse_unsupported)."""
+    return any(words.search(action) for words, _ in _UNSUPPORTED)

@@ -14,13 +14,11 @@ from __future__ import annotations
 
 import re
 import time
-from dataclasses import dataclass
 from typing import Any
 
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, Reading, TraceStep
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.numbers import finite
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, repair
 from drivetwin.orchestrator.planning.scenario_actors import ROLE_WORDS, candidates, frame, head_category, motion
 from drivetwin.orchestrator.planning.scenario_manoeuvres import (
@@ -31,8 +29,20 @@ from drivetwin.orchestrator.planning.scenario_manoeuvres import (
     HOLD_S,
     SLOWER,
     Manoeuvre,
-    _unit_number,
+    asks_unsupported,
     read_manoeuvre,
+    refuse_unsupported,
+)
+from drivetwin.orchestrator.planning.scenario_triggers import (
+    DELAY,
+    NOT_POSSIBLE_DELAY,
+    TRIGGER,
+    Timing,
+    approach,
+    mentions,
+    read_trigger,
+    split,
+    steps,
 )
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Scene
@@ -41,13 +51,6 @@ SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 # Confidence of a reading whose every part was stated; each default the reader had to supply
 # ("brakes" with no rate, "as the ego approaches" with no distance) costs DEFAULT_COST.
 STATED_CONFIDENCE, DEFAULT_COST = 0.95, 0.1
-# "As the ego approaches" / "gets close": the distance at which it counts as approaching or
-# close; at the campus's 5 m/s an approach of 30 m leaves 6 s, close 15 m leaves 3 s.
-APPROACH_M, CLOSE_M = 30.0, 15.0
-# "Dangerously close": a time to collision this short (s) is the usual critical threshold.
-DANGER_TTC_S = 2.0
-# "After a bit" / "shortly": a delay long enough to see the scene settle first (s).
-VAGUE_DELAY_S = 3.0
 _NUMBER_WORDS = {w: n for w, n in ph.NUMBER_WORDS.items()
                  if w not in ("a", "an", "single", "pair", "couple", "few", "some", "several")}
 _NUMBER_WORDS |= {"thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "eleven": 11, "eighteen": 18}
@@ -55,18 +58,12 @@ _NUMBER_WORDS |= {"thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "eleven":
 _VOCABULARY = ("when", "once", "collision", "oncoming", "middle", "approaches", "overtakes", "seconds",
                "junction", "crossroads", "brakes", "pedestrian", "reverses", "accelerates", "behind")
 _UNIT = r"(?:m|metres?|meters?|s|secs?|seconds?|km/h|kph|mph|m/s)"
-_TRIGGER = re.compile(r"\b(as soon as|whenever|when|once|as|if|until)\b|\b(?:just\s+)?before\b"
-                      r"(?=[^,.;]*\b(?:gets?|reach(?:es)?|arrives?|comes?)\b)")
-_DELAY = re.compile(r"\b(?:after|in|at)\s+(?:t\s*=\s*)?(\d+(?:\.\d+)?)\s*(?:s|secs?|seconds?)\b"
-                    r"|\b(\d+(?:\.\d+)?)\s*(?:s|secs?|seconds?)\s+in\b"
-                    r"|\b(after a (?:bit|while|moment)|shortly|in a (?:bit|moment|while)|a bit later|soon)\b")
-_MODAL = re.compile(r"\b(should|will|must|has to|needs to|is to|to)\b")
 _ADDING = re.compile(r"^\s*(please\s+)?(add|put|place|spawn|create|insert|bring in)\b")
 
 
 def normalised(prompt: str, scene: Scene) -> str:
     """Lower-case words with typos repaired, number words as digits and units spaced ("15m")."""
-    repaired = repair(prompt, scene)
+    repaired = repair(re.sub(r"\b[uU][\s-]?turn", "uturn", prompt), scene)  # "U-turn" is one word, not "a turn"
     text = repaired.text
     for change in repaired.repairs:  # the lexicon's repair does not know manoeuvre verbs ("swerve")
         was, _, now = change.partition(" -> ")
@@ -83,6 +80,8 @@ def normalised(prompt: str, scene: Scene) -> str:
 def _repair_word(word: str) -> str:
     if word in _SLIPS:
         return _SLIPS[word]
+    if word.startswith(_MANOEUVRE_STEMS):  # "decelerates" is two edits from "accelerates"
+        return word
     if word in _VOCABULARY or len(word) < 3 or word in english_words():
         return word
     close = [v for v in _VOCABULARY if edits(word, v) <= (1 if len(word) < 6 else 2) and abs(len(v) - len(word)) <= 2]
@@ -102,8 +101,8 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
     that only names its behaviour ("add a car overtaking") is not, nor is a question."""
     low = normalised(text, scene) if scene is not None else ph.normalise(text)
     low = re.sub(r"[a-z]+", lambda m: _SLIPS.get(m.group(0), m.group(0)), low)
-    trigger = bool(_TRIGGER.search(low) and re.search(r"\b(ego|it|car|m|metres?|meters?|seconds?|approach\w*)\b", low)) \
-        or bool(_DELAY.search(low))
+    trigger = bool(TRIGGER.search(low) and re.search(r"\b(ego|it|car|m|metres?|meters?|seconds?|approach\w*)\b", low)) \
+        or bool(DELAY.search(low))
     manoeuvre = any(words.search(low) for kind, words in _COMPILED[1:])
     if _ADDING.match(low) and not trigger:
         return False
@@ -113,120 +112,29 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
         r"\b(paint|colou?r|recolou?r|move|remove|add|put|turn (it )?(on|off))\w*\b", low)
     light_change = light and bool(re.search(rf"\b{_LIGHT_STATE}\b|\b(cycle|phases?|work|working)\b"
                                             r"|\b(stop|wait)\w*\b[^,.;]*\bat (the|a) (red )?(traffic )?lights?\b", low))
-    return (trigger and manoeuvre) or light_change or any(
+    # A crossing aimed at the ego ("in front of the ego", "out from behind the bus") is timed
+    # against the ego's approach, which only a storyboard event can do.
+    at_the_ego = bool(_AT_THE_EGO.search(low)) and any(
+        words.search(low) for kind, words in _COMPILED if kind in ("cross_road", "stop_mid_road"))
+    return (trigger and manoeuvre) or light_change or at_the_ego or asks_unsupported(low) or any(
         words.search(low) for kind, words in _COMPILED if kind in _ONLY_STORYBOARD)
 
 
 # Manoeuvres no static behaviour can stand for (a bare "stop", "cross" or "reverse" can).
-_ONLY_STORYBOARD = frozenset({"cut_in", "overtake", "lane_change", "junction_turn", "change_speed", "brake"})
-
-
-def split(low: str) -> tuple[str, str | None, float | None, bool]:
-    """(action clause, trigger clause or None, delay in seconds or None, whether the delay is vague)."""
-    delay: float | None = None
-    vague = False
-    found = _DELAY.search(low)
-    if found:
-        delay = float(found.group(1) or found.group(2)) if not found.group(3) else VAGUE_DELAY_S
-        vague = found.group(3) is not None
-        low = (low[: found.start()] + " " + low[found.end():]).strip(" ,")
-    marker = _TRIGGER.search(low)
-    while marker is not None and marker.group(1) == "as" and re.match(r"\s*(well|a|an|soon|much|far)\b", low[marker.end():]):
-        marker = _TRIGGER.search(low, marker.end())
-    if marker is None:
-        return low, None, delay, vague
-    before, after = low[: marker.start()].strip(" ,"), low[marker.end():].strip()
-    if before and re.search(r"[a-z]", before) and not re.fullmatch(r"(then|and|so|but)", before):
-        return before, re.split(r"\s*[,;.]\s*|\bthen\b", after)[0], delay, vague
-    comma = re.search(r"\s*[,;]\s*|\bthen\b", after)
-    if comma:
-        return after[comma.end():].strip(), after[: comma.start()], delay, vague
-    modal = [m for m in _MODAL.finditer(after)]
-    if modal:
-        articles = [a for a in re.finditer(r"\b(the|a|an|that)\b", after[: modal[0].start()])]
-        if len(articles) > 1:
-            cut = articles[-1].start()
-            return after[cut:], after[:cut], delay, vague
-    raise PlanningError(f"I could not tell where the condition ends in {low!r}; put a comma after it, "
-                        "e.g. 'when the ego is 20 m away, the car brakes'")
+_ONLY_STORYBOARD = frozenset({"cut_in", "overtake", "lane_change", "junction_turn", "change_speed", "brake",
+                              "stop_mid_road"})
+_AT_THE_EGO = re.compile(r"\b(?:in front of|ahead of|into the path of|across the path of) (?:the )?ego\b|\bego's (?:path|lane)\b"
+                         r"|\bout from behind\b|\bfrom behind (?:the|a|an)\b")
 
 
 # Slips that are words of their own ("wen"), so only a trigger reader would repair them.
 _SLIPS = {"wen": "when", "whn": "when", "wehn": "when", "onse": "once", "aftr": "after", "untill": "until"}
 # Stems of manoeuvre verbs the rule lexicon's spelling repair would turn into other words.
-_MANOEUVRE_STEMS = ("swerv", "merg", "brak", "overtak", "revers", "accelerat", "decelerat", "jaywalk", "dart", "slam")
+_MANOEUVRE_STEMS = ("swerv", "merg", "brak", "overtak", "revers", "accelerat", "decelerat", "jaywalk", "dart", "slam",
+                    "drift", "veer", "uturn")
+
+
 _ROLE = re.compile(r"\b(" + "|".join(sorted(ROLE_WORDS, key=len, reverse=True)) + r")\b")
-
-
-def _mask_ego(text: str) -> str:
-    for word in ph.EGO_WORDS:
-        text = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", text)
-    return re.sub(r"\s+", " ", text)
-
-
-def mentions(text: str, actor: AssetInstance, scene: Scene) -> list[str]:
-    """The asset ids a clause names, in order: the ego, ids, pronouns (the actor), categories."""
-    text = _mask_ego(text)
-    found: list[tuple[int, str]] = [(m.start(), EGO_ID) for m in re.finditer(r"\bego\b", text)]
-    found += [(m.start(), actor.id) for m in re.finditer(r"\b(it|its|itself|that one)\b", text)]
-    found += [(m.start(), m.group(1)) for m in re.finditer(r"\b([a-z]+(?:_[a-z]+)*_\d+)\b", text)
-              if scene.asset(m.group(1)) is not None]
-    # find_categories reads its own normalised copy (one leading space): its spans are one on.
-    named = [(m.start - 1, m.category) for m in ph.find_categories(text)]
-    named += [(m.start(), ROLE_WORDS[m.group(1)]) for m in _ROLE.finditer(text)]
-    for start, head in named:
-        if any(abs(start - s) < 2 for s, _ in found):
-            continue
-        if actor.category == head:
-            found.append((start, actor.id))
-        else:
-            pool, _ = candidates(text[start:], scene, moving_manoeuvre=False)
-            if pool:
-                found.append((start, pool[0].id))
-    ordered = [i for _, i in sorted(found)]
-    return [i for n, i in enumerate(ordered) if n == 0 or ordered[n - 1] != i]
-
-
-_TTC = re.compile(r"time.to.collision|\bttc\b|from (?:hitting|colliding|crashing|reaching|impact)|dangerously close"
-                  r"|about to (?:hit|collide)")
-_APPROACH = re.compile(r"\bapproach\w*|\b(?:gets?|comes?|is|draws?) (?:close|near|nearer|closer)\b|\bnears\b|\bcloses in\b"
-                       r"|\bgets? there\b|\bcomes? near\b|\bgets? within\b|\bclos\w* (?:to|on)\b")
-_REACH = re.compile(r"\b(?:reach\w*|gets? to|arriv\w* at|enters?|passes)\b")
-_ENDED = re.compile(r"\b(?:has )?(?:stopp?ed|stops|finish\w*|ends|is done|has ended)\b")
-
-
-def read_trigger(trigger: str, actor: AssetInstance, scene: Scene) -> tuple[dict[str, Any], int]:
-    """The add_event `when` for a trigger clause, and how many defaults it needed."""
-    named = mentions(trigger, actor, scene)
-    watched = named[0] if named else EGO_ID
-    other = next((i for i in named[1:] if i != watched), actor.id if watched != actor.id else EGO_ID)
-    seconds = _unit_number(trigger, r"s|secs?|seconds?")
-    metres = _unit_number(trigger, r"m|metres?|meters?")
-    if _TTC.search(trigger):
-        stated = seconds is not None
-        value = finite(seconds, "a time to collision in seconds") if seconds is not None else DANGER_TTC_S
-        return {"kind": "time_to_collision", "actor": watched, "other": other, "seconds": value}, 0 if stated else 1
-    if metres is not None:
-        rule = "greater" if re.search(r"\b(more than|further|farther|beyond|over|at least)\b", trigger) else "less"
-        return {"kind": "distance", "actor": watched, "other": other,
-                "metres": finite(metres, "a distance in metres"), "rule": rule}, 0
-    from drivetwin.orchestrator.planning.rules.reading import find_place
-
-    place = find_place(scene, f" {trigger} ")
-    if _REACH.search(trigger) and place is not None and not _APPROACH.search(trigger):
-        return {"kind": "reach", "actor": watched, "place": place[0]}, 0
-    if _ENDED.search(trigger) and watched != actor.id:
-        earlier = [e.name for a, e in scene.storyboard.events() if a == watched]
-        if earlier:
-            return {"kind": "after_event", "event": earlier[-1]}, 0
-    if _APPROACH.search(trigger):
-        near = APPROACH_M if re.search(r"\bapproach|\bthere\b", trigger) else CLOSE_M
-        return {"kind": "distance", "actor": watched, "other": other, "metres": near}, 1
-    raise PlanningError(f"I could not tell when it should happen from {trigger!r}; a manoeuvre can start after a "
-                        "number of seconds, when two actors are a distance apart or a time to collision away, "
-                        "when an actor reaches a place, or when another event ends")
-
-
 # What the scenario Workers can do, for refusals.
 POSSIBLE = ("a scenario can make a vehicle brake, change speed, change lanes, cut in, turn at the junction or "
             "reverse, a pedestrian cross the road or stop in it, and a traffic light change or cycle, each at a "
@@ -251,41 +159,74 @@ class ScenarioReader:
         low = normalised(prompt, scene)
         if _ADDING.match(low):
             raise PlanningError("this adds an asset; add it first, then describe what it does over time")
-        action, trigger, delay, vague = split(low)
-        action = _LEADING.sub("", action.strip(" ,.")).strip()
-        if _is_light_request(action):
-            actors, verb_at = _lights_meant(action, scene), 0
-            kind = "light"
-        else:
-            verb_at = _first_verb(action)
-            subject = _TRAILING_MODAL.sub("", action[:verb_at]).strip() or "the ego"
-            verb_at = len(_TRAILING_MODAL.sub("", action[:verb_at]))  # "should suddenly brake": the adverb counts
-            actors, what = candidates(subject, scene, moving_manoeuvre=True)
-            if not actors:
-                raise PlanningError(f"there is no {what} in the scene to act; {POSSIBLE}")
-            kind = motion(actors[0])
-        manoeuvre = read_manoeuvre(action[verb_at:] if kind != "light" else action, kind)
-        readings: list[tuple[str, list[ToolCall], int]] = []
-        for actor in actors[:3]:
-            for text, spec in manoeuvre.choices or [("", manoeuvre.spec)]:
-                spec = _with_speed(spec, actor, text)
-                calls, defaults = _calls(actor, manoeuvre, spec, trigger, delay, action, scene)
-                readings.append((text, calls, defaults + manoeuvre.defaults + int(vague)))
-        fine = [(t, c, d) for t, c, d in readings if context.check(c) is None]
-        step = TraceStep(level="scenario", input=f"action {action!r}; trigger {trigger!r}; delay {delay}",
-                         output=f"{len(fine)} of {len(readings)} readings accepted by a dry run",
+        timing = split(low)
+        refuse_unsupported(timing.action)
+        first, later = steps(_LEADING.sub("", timing.action.strip(" ,.")).strip())
+        readings: list[tuple[list[ToolCall], int]] = []
+        for actor, manoeuvre, spec, done_to in _readings(first, scene):
+            calls, defaults = _calls(actor, manoeuvre, spec, timing, done_to, scene)
+            for words, gap in later:
+                calls = _followed_by(calls, actor, words, gap, scene)
+            readings.append((calls, defaults + manoeuvre.defaults + int(timing.vague)))
+        fine = [(c, d) for c, d in readings if context.check(c) is None]
+        step = TraceStep(level="scenario", input=f"action {first!r}; then {later}; trigger {timing.trigger!r}; "
+                         f"delay {timing.delay}", output=f"{len(fine)} of {len(readings)} readings accepted by a dry run",
                          seconds=time.perf_counter() - started)
         if not fine:
-            refused = context.check(readings[0][1]) or "refused"
+            refused = context.check(readings[0][0]) or "refused"
             raise PlanningError(f"{refused}; {POSSIBLE}")
         if len(fine) > 1:
             question = Question(text="Which did you mean?", readings=[
-                Reading(text=describe(c), calls=c) for _, c, _ in fine[:3]])
+                Reading(text=describe(c), calls=c) for c, _ in fine[:3]])
             return Plan(calls=[], planner=self.name, confidence=0.0, question=question, trace=[step])
-        _, calls, defaults = fine[0]
+        calls, defaults = fine[0]
         guessed = defaults + int(len(readings) > 1)
         return Plan(calls=calls, planner=self.name, confidence=max(0.0, STATED_CONFIDENCE - DEFAULT_COST * guessed),
                     trace=[step])
+
+
+def _readings(action: str, scene: Scene, doer: AssetInstance | None = None
+              ) -> list[tuple[AssetInstance, Manoeuvre, dict[str, Any], str | None]]:
+    """Each (actor, manoeuvre, spec, what it is done to) the action clause may mean, up to three
+    actors; a clause with no subject is done by `doer` (the actor of the step before), else the ego."""
+    if _is_light_request(action):
+        actors, verb_at, kind = _lights_meant(action, scene), 0, "light"
+    else:
+        verb_at = _first_verb(action)
+        subject = _TRAILING_MODAL.sub("", action[:verb_at]).strip()
+        verb_at = len(_TRAILING_MODAL.sub("", action[:verb_at]))  # "should suddenly brake": the adverb counts
+        if not subject and doer is not None:
+            actors, what = [doer], doer.id
+        else:
+            actors, what = candidates(subject or "the ego", scene, moving_manoeuvre=True)
+        if not actors:
+            raise PlanningError(f"there is no {what} in the scene to act; {POSSIBLE}")
+        kind = motion(actors[0])
+    manoeuvre = read_manoeuvre(action[verb_at:] if kind != "light" else action, kind)
+    out = []
+    for actor in actors[:3]:
+        done_to = _done_to(action, verb_at, actor, scene) if kind != "light" else None
+        choices = manoeuvre.choices or [("", manoeuvre.spec)]
+        if manoeuvre.kind == "lane_change" and manoeuvre.choices and done_to is not None:
+            choices = [c for c in choices if c[1]["side"] == _side_of(done_to, actor, scene)] or choices
+        out += [(actor, manoeuvre, _with_speed(spec, actor, text), done_to) for text, spec in choices]
+    return out
+
+
+def _done_to(action: str, verb_at: int, actor: AssetInstance, scene: Scene) -> str | None:
+    """What the action is done to ("overtakes it", "into the ego's lane"): the first thing named
+    after the verb; a pronoun there is the last thing the subject named besides the actor."""
+    named_in_subject = [i for i in mentions(action[:verb_at], actor, scene) if i != actor.id]
+    pronoun = named_in_subject[-1] if named_in_subject else None
+    after = [i for i in mentions(action[verb_at:], actor, scene, pronoun=pronoun) if i != actor.id]
+    return after[0] if after else None
+
+
+def _side_of(other_id: str, actor: AssetInstance, scene: Scene) -> str | None:
+    other = scene.asset(other_id)
+    if other is None:
+        return None
+    return "left" if frame(other, actor).left > 0 else "right"
 
 
 def _is_light_request(action: str) -> bool:
@@ -300,7 +241,14 @@ def _is_light_request(action: str) -> bool:
 
 
 def _first_verb(action: str, strict: bool = True) -> int:
-    starts = [m.start() for kind, words in _COMPILED if kind != "light" for m in [words.search(action)] if m]
+    # A verb word before the subject's noun describes it ("the crossing car", "the braking truck").
+    noun = re.search(r"\b(?:the|a|an|that|this) (?:[a-z]+ )?(?=ego\b|[a-z]+_\d+\b)", action)
+    found = ph.find_categories(action)
+    role = _ROLE.search(action)
+    head = min([*(m.start - 1 for m in found[:1]), *(m.end() for m in [noun] if m), *(m.start() for m in [role] if m)],
+               default=0)
+    starts = [m.start() for kind, words in _COMPILED if kind != "light" for m in words.finditer(action)
+              if m.start() >= head]
     if not starts:
         if not strict:
             return len(action)
@@ -331,53 +279,54 @@ def _with_speed(spec: dict[str, Any], actor: AssetInstance, choice: str) -> dict
     return {**spec, "speed": round(now * (SLOWER if choice == "slower" else FASTER), 1)}
 
 
-def _calls(actor: AssetInstance, manoeuvre: Manoeuvre, spec: dict[str, Any], trigger: str | None,
-           delay: float | None, action: str, scene: Scene) -> tuple[list[ToolCall], int]:
+def _followed_by(calls: list[ToolCall], actor: AssetInstance, words: str, gap: float | None,
+                 scene: Scene) -> list[ToolCall]:
+    """`calls` with the next step of the story added: `gap` seconds after a timed step, or
+    right when the step before ends (the same actor's next manoeuvre, or another actor's
+    event on the end of it). A time after a step that waits for a condition cannot be played."""
+    (doer, _, spec, _), *_ = _readings(words, scene, doer=actor)
+    before = calls[-1]
+    if gap is not None:
+        if before.tool != "add_manoeuvre" or before.args.get("after_previous"):
+            raise PlanningError(NOT_POSSIBLE_DELAY)
+        at = float(before.args.get("at_time", 0.0)) + gap
+        return [*calls, ToolCall(tool="add_manoeuvre", args={"actor": doer.id, "manoeuvre": spec, "at_time": at})]
+    if before.tool == "set_light_phases":
+        raise PlanningError("a light's cycle has no end to wait for; say when the next step starts")
+    if doer.id == str(before.args["actor"]):
+        return [*calls, ToolCall(tool="add_manoeuvre", args={"actor": doer.id, "manoeuvre": spec, "after_previous": True})]
+    name = scene.storyboard.next_event_name(f"{before.args['actor']}_{before.args['manoeuvre']['kind']}")
+    named = ToolCall(tool=before.tool, args={**before.args, "name": name})
+    return [*calls[:-1], named, ToolCall(tool="add_event", args={
+        "actor": doer.id, "manoeuvre": spec, "when": {"kind": "after_event", "event": name}})]
+
+
+def _calls(actor: AssetInstance, manoeuvre: Manoeuvre, spec: dict[str, Any], timing: Timing, done_to: str | None,
+           scene: Scene) -> tuple[list[ToolCall], int]:
+    """The first step's call and how many defaults its trigger needed."""
+    trigger, delay = timing.trigger, timing.delay
     if manoeuvre.kind == "light" and manoeuvre.phases is not None:
         return [ToolCall(tool="set_light_phases", args={"light": actor.id, "phases": manoeuvre.phases})], 0
     if manoeuvre.kind == "set_light" and trigger is None and delay is None:
         phases = [{"state": spec["state"], "duration": HOLD_S}]
         return [ToolCall(tool="set_light_phases", args={"light": actor.id, "phases": phases})], 0
     if spec.get("kind") == "cut_in":
-        after = action[action.find("in front of"):] if "in front of" in action else ""
-        targets = [i for i in mentions(after, actor, scene) if i != actor.id]
-        spec = {**spec, "target": targets[0] if targets else EGO_ID}
+        spec = {**spec, "target": done_to or EGO_ID}
     if trigger is not None:
-        when, defaults = read_trigger(trigger, actor, scene)
+        when, defaults = read_trigger(trigger, actor, scene, done_to)
         return [ToolCall(tool="add_event", args={"actor": actor.id, "manoeuvre": spec, "when": when})], defaults
+    if delay is None and spec.get("kind") in _INTO_THE_ROAD and scene.asset(EGO_ID) is not None:
+        # A walker stepping into the road in a scenario does it as the ego comes, not at once.
+        when = approach(EGO_ID, actor.id)
+        return [ToolCall(tool="add_event", args={"actor": actor.id, "manoeuvre": spec, "when": when})], 1
     args: dict[str, Any] = {"actor": actor.id, "manoeuvre": spec}
     if delay:
         args["at_time"] = delay
     return [ToolCall(tool="add_manoeuvre", args=args)], 0
 
 
-@dataclass(frozen=True)
-class MissedScenario:
-    """A plan that answers a scenario request with a static edit: the problem, and either a
-    question offering the scenario reading or a refusal saying what is possible."""
-
-    problem: str
-    question: Question | None
-    message: str | None
+# Walker manoeuvres into the ego's road; with no time said they start on the ego's approach.
+_INTO_THE_ROAD = frozenset({"cross_road", "stop_mid_road"})
 
 
-def missed_scenario(prompt: str, plan: Plan, context: PlanContext) -> MissedScenario | None:
-    """None when the plan may stand; else what to ask or say instead of a static edit."""
-    if not plan.calls or any(c.tool in SCENARIO_TOOLS for c in plan.calls) or not describes_behaviour_over_time(
-        prompt, context.scene
-    ):
-        return None
-    problem = "you described something that happens over time, but the plan is a static edit"
-    try:
-        reading = ScenarioReader().plan(prompt, context)
-    except PlanningError as exc:
-        return MissedScenario(problem, None, f"I did not do it: {problem}, and {exc}")
-    if reading.question is not None:
-        return MissedScenario(problem, reading.question, None)
-    text = f"I am not sure what you meant: {problem}. Did you mean this?"
-    return MissedScenario(problem, Question(text=text, readings=[Reading(text=describe(reading.calls),
-                                                                         calls=reading.calls)]), None)
-
-
-__all__ = ["POSSIBLE", "SCENARIO_TOOLS", "MissedScenario", "ScenarioReader", "describes_behaviour_over_time",
-           "missed_scenario", "read_trigger", "split"]
+__all__ = ["POSSIBLE", "SCENARIO_TOOLS", "ScenarioReader", "describes_behaviour_over_time", "normalised"]

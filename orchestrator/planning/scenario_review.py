@@ -1,0 +1,65 @@
+"""How the plan-versus-request review treats a request that describes behaviour over time.
+
+Two rules, both the scenario reader's to apply because it is the one that reads such words:
+a static edit never stands for a scenario (the review asks with the scenario reading, or
+refuses saying what is possible), and a storyboard plan that is exactly what the scenario
+reader reads from the request stands as it is. The static checks (a colour named, a
+category named) misread scenario words ("turns red", "cycles", "stops"), so they are not
+the judge of a storyboard plan the reader agrees with; a storyboard plan it does not agree
+with is left to them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, Reading
+from drivetwin.orchestrator.planning.readings import canonical, describe
+from drivetwin.orchestrator.planning.scenario_reading import (
+    SCENARIO_TOOLS,
+    ScenarioReader,
+    describes_behaviour_over_time,
+)
+
+
+@dataclass(frozen=True)
+class MissedScenario:
+    """A plan that answers a scenario request with a static edit: the problem, and either a
+    question offering the scenario reading or a refusal saying what is possible."""
+
+    problem: str
+    question: Question | None
+    message: str | None
+
+
+def missed_scenario(prompt: str, plan: Plan, context: PlanContext) -> MissedScenario | None:
+    """None when the plan may stand; else what to ask or say instead of a static edit."""
+    if not plan.calls or any(c.tool in SCENARIO_TOOLS for c in plan.calls) or not describes_behaviour_over_time(
+        prompt, context.scene
+    ):
+        return None
+    problem = "you described something that happens over time, but the plan is a static edit"
+    try:
+        reading = ScenarioReader().plan(prompt, context)
+    except PlanningError as exc:
+        return MissedScenario(problem, None, f"I did not do it: {problem}, and {exc}")
+    if reading.question is not None:
+        return MissedScenario(problem, reading.question, None)
+    text = f"I am not sure what you meant: {problem}. Did you mean this?"
+    return MissedScenario(problem, Question(text=text, readings=[Reading(text=describe(reading.calls),
+                                                                         calls=reading.calls)]), None)
+
+
+def read_as_scenario(prompt: str, plan: Plan, context: PlanContext) -> bool:
+    """Whether `plan` only writes the storyboard and is what the scenario reader reads from
+    `prompt` (the same calls up to defaults): such a plan needs no static check."""
+    if not plan.calls or any(c.tool not in SCENARIO_TOOLS for c in plan.calls):
+        return False
+    try:
+        reading = ScenarioReader().plan(prompt, context)
+    except PlanningError:
+        return False
+    return bool(reading.calls) and canonical(reading.calls, context.registry) == canonical(plan.calls, context.registry)
+
+
+__all__ = ["MissedScenario", "missed_scenario", "read_as_scenario"]
