@@ -16,11 +16,20 @@ from drivetwin.orchestrator.backends import Backend, Message
 from drivetwin.orchestrator.planning.base import PlanContext, PlanningError, TraceStep
 from drivetwin.orchestrator.planning.grounding import Grounder, Match
 from drivetwin.orchestrator.planning.llm.demos import jr_demos
-from drivetwin.orchestrator.planning.llm.jr_schema import WorldNames, call_schema, signature
+from drivetwin.orchestrator.planning.llm.jr_schema import (
+    NUMBER_FIELDS,
+    TURN_FIELDS,
+    WorldNames,
+    call_schema,
+    signature,
+)
 from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S, Answer, Requirement, ask
+from drivetwin.orchestrator.planning.llm.request_names import RequestNames, read_names
+from drivetwin.orchestrator.planning.llm.review_hint import review_problems
 from drivetwin.prompts.templates import as_json, jr_examples, render
 from drivetwin.tools.base import Family, ToolCall
 from drivetwin.tools.errors import ToolError
+from drivetwin.worlds.scene import Scene
 
 JR_MAX_TOKENS = 200
 # Few-shot examples per call, chosen by meaning from the family's bank.
@@ -44,6 +53,8 @@ RELATION_WORDS: tuple[tuple[str, str], ...] = (
     (r"in (the )?lane|on the road", "in_lane"),
     (r"\bat\b|\bin\b", "at"),
 )
+# move_asset's displacement fields, one per axis a direction word can name.
+MOVE_DIRECTIONS = ("forward", "left", "east", "north")
 _PLACE_FAMILIES: tuple[Family, ...] = ("add", "arrange", "position", "move", "search")
 _ASSET_FAMILIES: tuple[Family, ...] = ("remove", "position", "move", "appearance", "search")
 
@@ -68,9 +79,13 @@ def _narrow(full: list[str], matches: list[Match]) -> list[str]:
     return list(dict.fromkeys(strong)) if strong else full
 
 
-def ground_requirement(requirement: Requirement, prompt: str, context: PlanContext, grounder: Grounder) -> Grounding:
-    """Ground the requirement's words and narrow the world's names where grounding is sure."""
+def ground_requirement(
+    requirement: Requirement, prompt: str, context: PlanContext, grounder: Grounder, said: RequestNames | None = None
+) -> Grounding:
+    """Ground the requirement's words and narrow the world's names where grounding is sure;
+    then narrow again to what the request itself names (`said`, read from `prompt` if None)."""
     scene, memory = context.scene, context.memory
+    said = said if said is not None else read_names(prompt, scene)
     names = WorldNames.of(scene)
     matches: list[Match] = []
     kind = requirement.kind
@@ -82,33 +97,103 @@ def ground_requirement(requirement: Requirement, prompt: str, context: PlanConte
         category = [m for m in category if m.score >= floor]
         matches += category
         names.categories = _narrow(names.categories, category)
+    referred: list[str] = []
     if what and kind in _ASSET_FAMILIES:
         assets = grounder.asset_reference(what, memory, scene)
         matches += assets[:NARROW_KEEP]
+        referred = [m.name for m in assets if m.how == "memory"]
         names.assets = _narrow(names.assets, assets) if assets else names.assets
+    pointed: list[str] = []
     if where and kind in _PLACE_FAMILIES:
         place = grounder.place_reference(where, memory, scene)
+        pointed = [place.name] if place is not None else []
         ranked = [place] if place is not None else grounder.rank(where, "place", scene, NARROW_KEEP)
         ranked += [] if place is not None else grounder.rank(where, "asset", scene, 1)
         ranked = [m for m in ranked if m.score >= MATCH_FLOOR]
         matches += ranked
         names.places = _narrow(names.places, ranked)
+    _narrow_to_request(names, said, scene, referred, pointed)
+    names.omitted = names.omitted | _unasked_fields(kind, said)
+    names.required = _stated_fields(kind, said)
+    if kind == "move" and len(names.assets) == 1:  # the one thing named is the one to move
+        names.required = names.required | {"asset"}
     relation = next((rel for pattern, rel in RELATION_WORDS if re.search(pattern, prompt.lower())), None)
     return Grounding(names, matches, relation)
 
 
+def _unasked_fields(kind: Family, said: RequestNames) -> frozenset[str]:
+    """Optional fields the request gives no words for, which a small model fills anyway (a
+    beige stop sign that drives a lane; "2 m east" as 2 m left)."""
+    unasked: set[str] = set()
+    if not said.colours and kind != "appearance":
+        unasked.add("colour")
+    if not said.behaviour and kind == "add":
+        unasked.add("behaviour")
+    if said.directions and kind == "move":
+        unasked |= set(MOVE_DIRECTIONS) - {name for name, _ in said.directions}
+    if not said.numbers:
+        unasked |= NUMBER_FIELDS
+    if not said.turning:
+        unasked |= TURN_FIELDS
+    return frozenset(unasked)
+
+
+def _stated_fields(kind: Family, said: RequestNames) -> frozenset[str]:
+    """Fields the request states a value for, which a small model still leaves out
+    ("move the hydrant 2 m east" as a move of nothing)."""
+    if not said.numbers:
+        return frozenset()
+    if kind == "move" and said.directions:
+        return frozenset(name for name, _ in said.directions)
+    if kind in ("add", "arrange") and any(n.is_integer() and n > 1 for n in said.numbers):
+        return frozenset({"count"})
+    return frozenset()
+
+
+def _narrow_to_request(
+    names: WorldNames, said: RequestNames, scene: Scene, referred: list[str], pointed: list[str]
+) -> None:
+    """Keep only the names the request states, where it states any of that kind; what the
+    conversation points at ("them", "there") is kept too, the request cannot name it. Grounding
+    the manager's paraphrase narrowed `names` already: the request's own words win over it."""
+    world = WorldNames.of(scene)
+
+    def keep(narrowed: list[str], stated: list[str], every: list[str]) -> list[str]:
+        stated = [n for n in dict.fromkeys(stated) if n in every]
+        if not stated:
+            return narrowed
+        return [n for n in narrowed if n in stated] or stated
+
+    of_categories = [a.id for a in scene.all_assets() if a.category in said.categories]
+    names.categories = keep(names.categories, list(said.categories), world.categories)
+    names.assets = keep(names.assets, [*said.assets, *of_categories, *referred], world.assets)
+    names.places = keep(names.places, [*said.places, *pointed], world.places)
+    names.relations = list(said.relations)
+    names.numbers = list(said.numbers)
+    names.colours = list(said.colours)
+    names.shapes = list(said.shapes)
+    names.signs = dict(said.directions)
+
+
 def render_requirement(requirement: Requirement, grounding: Grounding) -> str:
-    """The requirement as the Jr. manager reads it, grounded names after arrows."""
+    """The requirement as the Jr. manager reads it, after arrows the names its schema allows
+    for each side (the grounded ones first), so the prompt never points at a name it forbids."""
+    names = grounding.names
+    allowed = {"category": names.categories, "asset": names.assets, "place": names.places}
 
     def side(label: str, text: str, kinds: tuple[str, ...]) -> str:
-        hits = [m.name for m in grounding.matches if m.text == text and m.kind in kinds]
-        return f"{label}: {text}" + (f" -> {', '.join(hits[:NARROW_KEEP])}" if hits else "")
+        hits = [m.name for m in grounding.matches if m.text == text and m.kind in kinds and m.name in allowed[m.kind]]
+        for kind in kinds:
+            if not hits and len(allowed[kind]) <= NARROW_KEEP:
+                hits = list(allowed[kind])
+        return f"{label}: {text}" + (f" -> {', '.join(dict.fromkeys(hits[:NARROW_KEEP]))}" if hits else "")
 
+    what = ("category",) if requirement.kind in ("add", "arrange") else ("category", "asset")
     return " | ".join(
         [
             requirement.kind,
-            side("what", requirement.what, ("category", "asset")),
-            side("where", requirement.where, ("place", "asset")),
+            side("what", requirement.what, what),
+            side("where", requirement.where, ("place",)),
             f"how: {requirement.how}",
         ]
     )
@@ -153,10 +238,14 @@ class JrManager:
         prompt: str,
         context: PlanContext,
         planned: list[ToolCall],
+        said: RequestNames | None = None,
+        last: bool = False,
     ) -> tuple[ToolCall, list[TraceStep]]:
-        """The call for `requirement`, valid and accepted by a dry run after `planned`."""
+        """The call for `requirement`, valid and accepted by a dry run after `planned`. When it
+        is the `last` call of the plan, a plan the plan-vs-request review would not apply goes
+        back to the model once, with the review's reasons (then it is left to the session)."""
         started = time.perf_counter()
-        grounding = ground_requirement(requirement, prompt, context, self.grounder)
+        grounding = ground_requirement(requirement, prompt, context, self.grounder, said)
         text = render_requirement(requirement, grounding)
         grounded = TraceStep(
             level=f"grounding:{self.family}",
@@ -184,7 +273,14 @@ class JrManager:
             refusal = context.check([*planned, checked])
             if refusal is not None:
                 raise ValueError(f"the world refused it: {refusal}")
+            if last and not reviewed:
+                problems = review_problems(prompt, [*planned, checked], context)
+                if problems:
+                    reviewed.append(checked)
+                    raise ValueError(f"it does not do what the request says: {'; '.join(problems)}")
             return checked
+
+        reviewed: list[ToolCall] = []  # the call the review sent back (once per plan)
 
         answer: Answer[ToolCall] = ask(
             self.backend,

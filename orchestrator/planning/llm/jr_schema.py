@@ -9,6 +9,7 @@ constrained decoder then cannot name what does not exist.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -23,6 +24,16 @@ OMITTED_FIELDS = frozenset({"waypoints", "start_time", "label", "exposure", "ahe
 # Longest free string the model may write where no enum applies.
 FREE_TEXT_CHARS = 40
 CLOCK_PATTERN = "^([01][0-9]|2[0-3]):[0-5][0-9]$"
+# Fields that hold an amount the request states (metres, a count, degrees, coordinates): where
+# the request states numbers, these may hold only those (see WorldNames.numbers).
+NUMBER_FIELDS = frozenset({
+    "count", "columns", "cones", "distance", "along_m", "radius", "spacing", "within", "speed",
+    "forward", "left", "east", "north", "turn_deg", "yaw_deg", "heading_deg", "x", "y", "at_x", "at_y",
+})
+# Of those, the ones that turn a thing: offered only when the request speaks of turning.
+TURN_FIELDS = frozenset({"yaw_deg", "turn_deg", "heading_deg"})
+# Of those, the ones a direction word can turn negative ("1.5 m south" is north -1.5).
+SIGNED_FIELDS = frozenset({"forward", "left", "east", "north", "turn_deg", "along_m", "x", "y", "at_x", "at_y"})
 
 
 @dataclass
@@ -34,6 +45,16 @@ class WorldNames:
     assets: list[str]
     lanes: list[str]
     notes: list[str] = field(default_factory=list)
+    # Set from what the request itself says (llm/request_names.py); empty means not narrowed.
+    relations: list[str] = field(default_factory=list)
+    numbers: list[float] = field(default_factory=list)
+    colours: list[str] = field(default_factory=list)
+    shapes: list[str] = field(default_factory=list)
+    # The sign a direction word gives a move field ("south" makes north negative).
+    signs: dict[str, int] = field(default_factory=dict)
+    # Fields left out of this request's schema on top of OMITTED_FIELDS, and fields it must fill.
+    omitted: frozenset[str] = frozenset()
+    required: frozenset[str] = frozenset()
 
     @classmethod
     def of(cls, scene: Scene) -> WorldNames:
@@ -63,7 +84,11 @@ def _named(prop: str, names: WorldNames) -> dict[str, Any] | None:
     if prop == "lane":
         return _enum(names.lanes)
     if prop == "colour":
-        return _enum(list(COLOURS))
+        return _enum(names.colours or list(COLOURS))
+    if prop == "shape" and names.shapes:
+        return _enum(names.shapes)
+    if prop == "relation" and names.relations:
+        return _enum(names.relations)
     if prop == "time":
         return {"anyOf": [_enum(list(TIME_PRESETS)), {"type": "string", "pattern": CLOCK_PATTERN}]}
     return None
@@ -89,20 +114,40 @@ def _slim(node: Any, defs: dict[str, Any], names: WorldNames, prop: str | None =
         if key in ("title", "description", "default", "$defs", "examples"):
             continue
         if key == "properties":
-            out[key] = {
-                name: _slim(sub, defs, names, name) for name, sub in value.items() if name not in OMITTED_FIELDS
-            }
+            left_out = OMITTED_FIELDS | names.omitted
+            out[key] = {name: _slim(sub, defs, names, name) for name, sub in value.items() if name not in left_out}
         elif key == "items":
             out[key] = _slim(value, defs, names)
         elif key == "required":
-            out[key] = [r for r in value if r not in OMITTED_FIELDS]
+            out[key] = [r for r in value if r not in OMITTED_FIELDS | names.omitted]
         else:
             out[key] = value
+    if prop in NUMBER_FIELDS and names.numbers and out.get("type") in ("number", "integer"):
+        said = _said_numbers(out, names.numbers, prop in SIGNED_FIELDS, names.signs.get(prop))
+        if said:
+            return {"type": out["type"], "enum": said}
     if out.get("type") == "string" and "enum" not in out and "pattern" not in out:
         out.setdefault("maxLength", FREE_TEXT_CHARS)
     if out.get("type") == "object":
         out["additionalProperties"] = False
+        must = [r for r in names.required if r in out.get("properties", {}) and r not in out.get("required", [])]
+        if must:
+            out["required"] = [*out.get("required", []), *sorted(must)]
     return out
+
+
+def _said_numbers(node: dict[str, Any], numbers: list[float], signed: bool, sign: int | None) -> list[float | int]:
+    """The request's numbers (and their negatives where a direction can flip them; only the
+    direction's sign where one was said) that fit the field's type and bounds, so the model
+    copies an amount instead of making one up."""
+    values = [sign * abs(n) for n in numbers] if sign else [*numbers, *(-n for n in numbers if signed and n)]
+    if node["type"] == "integer":
+        values = [v for v in values if float(v).is_integer()]
+    low = max(node.get("minimum", -math.inf), node.get("exclusiveMinimum", -math.inf))
+    high = min(node.get("maximum", math.inf), node.get("exclusiveMaximum", math.inf))
+    fitting = [v for v in values if low <= v <= high and v != node.get("exclusiveMinimum")]
+    as_type: list[float | int] = [int(v) if node["type"] == "integer" else v for v in fitting]
+    return list(dict.fromkeys(as_type))
 
 
 def args_schema(tool: Tool[Any], names: WorldNames) -> dict[str, Any]:
@@ -147,4 +192,4 @@ def _arg(name: str, sub: dict[str, Any]) -> str:
     return name
 
 
-__all__ = ["OMITTED_FIELDS", "WorldNames", "args_schema", "call_schema", "signature"]
+__all__ = ["NUMBER_FIELDS", "OMITTED_FIELDS", "TURN_FIELDS", "WorldNames", "args_schema", "call_schema", "signature"]

@@ -59,12 +59,13 @@ class Requirements(BaseModel):
     requirements: list[Requirement] = Field(min_length=1, max_length=MAX_REQUIREMENTS)
 
 
-def requirements_schema() -> dict[str, Any]:
-    """The Sr. manager's answer schema: flat and small, for grammar-constrained decoding."""
+def requirements_schema(kinds: list[Family] | None = None) -> dict[str, Any]:
+    """The Sr. manager's answer schema: flat and small, for grammar-constrained decoding;
+    `kinds` narrows the requirement kinds (to what the request's mood allows)."""
     text = {"type": "string", "maxLength": FIELD_CHARS}
     item = {
         "type": "object",
-        "properties": {"kind": {"enum": list(FAMILIES)}, "what": text, "where": text, "how": text},
+        "properties": {"kind": {"enum": list(kinds or FAMILIES)}, "what": text, "where": text, "how": text},
         "required": ["kind", "what", "where", "how"],
         "additionalProperties": False,
     }

@@ -21,6 +21,7 @@ from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningErro
 from drivetwin.orchestrator.planning.grounding import Grounder
 from drivetwin.orchestrator.planning.llm.jr_manager import JrManager
 from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S
+from drivetwin.orchestrator.planning.llm.request_names import read_names
 from drivetwin.orchestrator.planning.llm.sr_manager import SrManager
 from drivetwin.prompts.templates import prompt_version
 from drivetwin.tools.base import Family, ToolCall
@@ -98,15 +99,17 @@ class LlmPlanner:
         backend = self.backend
         trace: list[TraceStep] = []
         started = time.perf_counter()
-        requirements, sr_step = SrManager(backend, self.grounder, self.call_timeout_s).requirements(prompt, context)
+        said = read_names(prompt, context.scene)
+        senior = SrManager(backend, self.grounder, self.call_timeout_s)
+        requirements, sr_step = senior.requirements(prompt, context, said.kinds())
         trace.append(sr_step)
         calls: list[ToolCall] = []
         juniors: dict[Family, JrManager] = {}
-        for requirement in requirements:
+        for number, requirement in enumerate(requirements, start=1):
             junior = juniors.setdefault(
                 requirement.kind, JrManager(requirement.kind, backend, self.grounder, self.call_timeout_s)
             )
-            call, steps = junior.call(requirement, prompt, context, calls)
+            call, steps = junior.call(requirement, prompt, context, calls, said, last=number == len(requirements))
             calls.append(call)
             trace += steps
         retries = sum(step.retries for step in trace)

@@ -21,6 +21,7 @@ from drivetwin.orchestrator.planning.llm.managers import (
     requirements_schema,
 )
 from drivetwin.prompts.templates import as_json, render, sr_examples
+from drivetwin.tools.base import Family
 
 # Few-shot examples per prompt: enough to show the pattern, few enough for a 4k context.
 SR_EXAMPLES = 4
@@ -66,12 +67,14 @@ class SrManager:
         messages.append(Message(role="user", content=f"Request: {prompt}"))
         return messages
 
-    def requirements(self, prompt: str, context: PlanContext) -> tuple[list[Requirement], TraceStep]:
-        """The prompt's requirements and the trace step that explains them."""
+    def requirements(
+        self, prompt: str, context: PlanContext, kinds: list[Family] | None = None
+    ) -> tuple[list[Requirement], TraceStep]:
+        """The prompt's requirements (of `kinds` only, when given) and the trace step that explains them."""
         answer: Answer[Requirements] = ask(
             self.backend,
             self.messages(prompt, context),
-            requirements_schema(),
+            requirements_schema(kinds),
             Requirements.model_validate,
             step="Sr. manager",
             max_tokens=SR_MAX_TOKENS,

@@ -1,0 +1,154 @@
+"""What the request itself names, read once per prompt, to ground the managers' grammars.
+
+A 135M model given every category, place and number of the world picks a plausible wrong
+one ("a stop sign at the north crosswalk" became a pedestrian sign right of it; "2 m east"
+became 2 m left). The request's own words say which categories, places, assets, relations
+and numbers it names; where it names some, the Jr. manager's schema offers only those, and
+the Sr. manager's requirement kinds follow what the words ask for (a question is a search,
+a command is not). Where the request names none of a kind, nothing is narrowed.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Literal
+
+from drivetwin.orchestrator.planning.request import ADD_WORDS, REMOVE_WORDS, read_request
+from drivetwin.orchestrator.planning.retrieval.slots import read_slots
+from drivetwin.tools.base import FAMILIES, Family
+from drivetwin.worlds.scene import Scene
+
+# Slot kinds whose value is a number said in the request, and what they measure.
+_NUMBER_SLOTS = ("count", "distance", "radius", "speed", "angle", "x", "y")
+# Relation words the slot reader leaves out as too vague for adapting an example ("at",
+# "around", "by"), still worth a relation here; first match wins.
+_PLAIN_RELATIONS: tuple[tuple[str, str], ...] = (
+    (r"\baround\b|\bring\b|\bcircle\b|\bsurround", "at"),
+    (r"\b(sidewalk|pavement|footpath|kerb)\b", "on_sidewalk"),
+    (r"\b(centre|center|middle) of the (scene|world|map|campus)\b", "scene_centre"),
+    (r"\bx\s*=|\bcoordinates?\b", "absolute"),
+    (r"\b(in|on) (the )?(lane|road|street)\b|\w+bound\b", "in_lane"),
+    (r"\bby\b|\bnear\b|\bclose to\b", "next_to"),
+    (r"\bat\b", "at"),
+)
+# Families that change the scene; a question never needs them, a command never needs search.
+_CHANGES: tuple[Family, ...] = tuple(f for f in FAMILIES if f != "search")
+# Families that take something away or restyle it: all a plain removal can need.
+_TAKING_AWAY: tuple[Family, ...] = ("remove", "appearance", "move", "position")
+# Families a request that adds or puts something can need (never a removal).
+_PUTTING: tuple[Family, ...] = ("add", "arrange", "position", "move", "appearance")
+# Direction words -> the move field they set and its sign ("1.5 m south" is north -1.5).
+DIRECTIONS: tuple[tuple[str, str, int], ...] = (
+    (r"\beast(ward)?s?\b", "east", 1),
+    (r"\bwest(ward)?s?\b", "east", -1),
+    (r"\bnorth(ward)?s?\b", "north", 1),
+    (r"\bsouth(ward)?s?\b", "north", -1),
+    (r"\b(forwards?|ahead|further on)\b", "forward", 1),
+    (r"\b(back(wards?)?|reverse)\b", "forward", -1),
+    (r"\bleft\b", "left", 1),
+    (r"\bright\b", "left", -1),
+)
+# Words that ask for a behaviour; without one, a new asset just stands where it is put.
+_BEHAVIOUR = re.compile(
+    r"\b(driv\w*|mov(e|es|ing)|park(ed|s)?|stall\w*|circl\w*|loop\w*|skidpad|cross(es|ing)?|jaywalk\w*|walk(s|ing)?"
+    r"|cut\w*|follow\w*|patrol\w*|lap\w*|cruis\w*|travel\w*|speed|km/h|mph|m/s)\b"
+)
+# Words that ask for a heading or a turn.
+_TURNING = re.compile(r"\b(turn\w*|rotat\w*|fac(e|es|ing)|head(ing)?|degrees?|deg|yaw|spin\w*|angle)\b|°")
+# Layout words -> the arrange shapes they mean.
+SHAPES: tuple[tuple[str, tuple[str, ...]], ...] = (
+    (r"\b(ring|circle|around|surround\w*|encircl\w*)\b", ("ring",)),
+    (r"\b(grid|block|rows and columns|square)\b", ("grid",)),
+    (r"\b(side by side|parking row|parked in a row)\b", ("parking_row",)),
+    (r"\b(line|row|column|queue|file)\b", ("line", "parking_row")),
+    (r"\b(edge|kerb|curb|along the lane)\b", ("lane_edge",)),
+)
+
+
+@dataclass(frozen=True)
+class RequestNames:
+    """The world's names and the numbers a request states, in the order it states them."""
+
+    categories: tuple[str, ...] = ()
+    # Asset ids named as the thing acted on ("the car 1", "the SUV's" ids come from categories).
+    assets: tuple[str, ...] = ()
+    # Landmarks, lanes and asset ids named as a place (after a relation word, or as a landmark).
+    places: tuple[str, ...] = ()
+    relations: tuple[str, ...] = ()
+    numbers: tuple[float, ...] = ()
+    colours: tuple[str, ...] = ()
+    # Move fields the request's direction words set, with their sign.
+    directions: tuple[tuple[str, int], ...] = ()
+    shapes: tuple[str, ...] = ()
+    behaviour: bool = False
+    turning: bool = False
+    question: bool = False
+    polarity: Literal["add", "remove"] | None = None
+
+    def kinds(self) -> list[Family]:
+        """The requirement kinds the request's mood allows, in the Sr. manager's order."""
+        if self.question:
+            return ["search"]
+        if self.polarity == "remove":
+            return list(_TAKING_AWAY)
+        if self.polarity == "add":
+            return list(_PUTTING)
+        return list(_CHANGES)
+
+
+def _relation(low: str, said: list[str]) -> list[str]:
+    if said:
+        return list(dict.fromkeys(said))
+    found = next((rel for pattern, rel in _PLAIN_RELATIONS if re.search(pattern, low)), None)
+    return [found] if found else []
+
+
+def read_names(prompt: str, scene: Scene) -> RequestNames:
+    """What `prompt` names in `scene`: categories, assets, places, relations, numbers, mood."""
+    slots = read_slots(prompt, scene).found
+    request = read_request(prompt, scene)
+    categories: list[str] = []
+    assets: list[str] = []
+    places: list[str] = []
+    relations: list[str] = []
+    numbers: list[float] = list(request.numbers)
+    colours: list[str] = []
+    for kind, value in slots:
+        if kind == "category":
+            categories.append(value)
+        elif kind == "asset":
+            # An asset after a relation word is where something goes ("in front of the ego").
+            (places if relations else assets).append(value)
+        elif kind in ("place", "lane"):
+            places.append(value)
+        elif kind == "relation":
+            relations.append(value)
+        elif kind in _NUMBER_SLOTS:
+            numbers.append(float(value))
+        elif kind == "colour" and re.search(rf"\b{value}\b", prompt.lower()):  # said, not implied by a thing
+            colours.append(value)
+    categories += sorted(request.categories - set(categories))
+    if request.place is not None:
+        places.append(request.place)
+    low = prompt.lower()
+    removal = REMOVE_WORDS.search(request.low) is not None and ADD_WORDS.search(request.low) is None
+    shapes = next((shape for pattern, shape in SHAPES if re.search(pattern, low)), ())
+    directions = tuple(dict.fromkeys((name, sign) for pattern, name, sign in DIRECTIONS if re.search(pattern, low)))
+    return RequestNames(
+        categories=tuple(dict.fromkeys(categories)),
+        assets=tuple(dict.fromkeys(assets)),
+        places=tuple(dict.fromkeys(places)),
+        relations=tuple(_relation(low, relations)),
+        numbers=tuple(dict.fromkeys(numbers)),
+        colours=tuple(dict.fromkeys(colours)),
+        directions=directions,
+        shapes=shapes,
+        behaviour=_BEHAVIOUR.search(low) is not None,
+        turning=_TURNING.search(low) is not None,
+        question=request.question,
+        polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
+    )
+
+
+__all__ = ["DIRECTIONS", "SHAPES", "RequestNames", "read_names"]
