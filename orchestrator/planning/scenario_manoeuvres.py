@@ -156,6 +156,8 @@ class _Readers:
 
     @staticmethod
     def change_speed(action: str) -> Manoeuvre:
+        if re.search(r"\bto (?:a )?(?:stop|halt|standstill|rest)\b", action):  # "slows to a stop"
+            return _Readers.stop(action)
         speed, rate = _speed(action), _rate(action)
         spec: dict[str, Any] = {"kind": "change_speed", **({"rate": rate} if rate is not None else {})}
         if speed is None and rate is not None and re.search(r"\bdecelerat", action):

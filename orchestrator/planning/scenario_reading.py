@@ -243,12 +243,12 @@ def _is_light_request(action: str) -> bool:
 def _first_verb(action: str, strict: bool = True) -> int:
     # A verb word before the subject's noun describes it ("the crossing car", "the braking truck").
     noun = re.search(r"\b(?:the|a|an|that|this) (?:[a-z]+ )?(?=ego\b|[a-z]+_\d+\b)", action)
-    found = ph.find_categories(action)
+    verbs = [m for kind, words in _COMPILED if kind != "light" for m in words.finditer(action)]
+    # A noun inside a verb's own words ("slows to a stop") is not the subject.
+    found = [m.start - 1 for m in ph.find_categories(action) if not any(v.start() <= m.start - 1 < v.end() for v in verbs)]
     role = _ROLE.search(action)
-    head = min([*(m.start - 1 for m in found[:1]), *(m.end() for m in [noun] if m), *(m.start() for m in [role] if m)],
-               default=0)
-    starts = [m.start() for kind, words in _COMPILED if kind != "light" for m in words.finditer(action)
-              if m.start() >= head]
+    head = min([*found[:1], *(m.end() for m in [noun] if m), *(m.start() for m in [role] if m)], default=0)
+    starts = [m.start() for m in verbs if m.start() >= head]
     if not starts:
         if not strict:
             return len(action)

@@ -14,7 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, Reading
-from drivetwin.orchestrator.planning.readings import canonical, describe
+from drivetwin.orchestrator.planning.readings import canonical, describe, dry_run, same_outcome
 from drivetwin.orchestrator.planning.scenario_reading import (
     SCENARIO_TOOLS,
     ScenarioReader,
@@ -33,7 +33,10 @@ class MissedScenario:
 
 
 def missed_scenario(prompt: str, plan: Plan, context: PlanContext) -> MissedScenario | None:
-    """None when the plan may stand; else what to ask or say instead of a static edit."""
+    """None when the plan may stand; else what to ask or say instead of a static edit, or
+    instead of a storyboard edit other than the one the request describes."""
+    if plan.calls and all(c.tool in SCENARIO_TOOLS for c in plan.calls):
+        return _other_story(prompt, plan, context)
     if not plan.calls or any(c.tool in SCENARIO_TOOLS for c in plan.calls) or not describes_behaviour_over_time(
         prompt, context.scene
     ):
@@ -48,6 +51,25 @@ def missed_scenario(prompt: str, plan: Plan, context: PlanContext) -> MissedScen
     text = f"I am not sure what you meant: {problem}. Did you mean this?"
     return MissedScenario(problem, Question(text=text, readings=[Reading(text=describe(reading.calls),
                                                                          calls=reading.calls)]), None)
+
+
+def _other_story(prompt: str, plan: Plan, context: PlanContext) -> MissedScenario | None:
+    """A question offering the scenario reader's reading beside the plan's own, when the reader
+    reads the request as a different story ("goes red" planned as a green light); None when it
+    reads the same story, or none."""
+    try:
+        reading = ScenarioReader().plan(prompt, context)
+    except PlanningError:
+        return None
+    if not reading.calls or canonical(reading.calls, context.registry) == canonical(plan.calls, context.registry):
+        return None
+    ours, theirs = dry_run(reading.calls, context.registry, context.scene), dry_run(plan.calls, context.registry, context.scene)
+    if not isinstance(ours, str) and not isinstance(theirs, str) and same_outcome(ours, theirs):
+        return None
+    problem = "the plan's storyboard is not the one the request describes"
+    return MissedScenario(problem, Question(text=f"I am not sure what you meant: {problem}. Which did you mean?", readings=[
+        Reading(text=describe(reading.calls), calls=reading.calls),
+        Reading(text="as planned: " + describe(plan.calls), calls=list(plan.calls))]), None)
 
 
 def read_as_scenario(prompt: str, plan: Plan, context: PlanContext) -> bool:

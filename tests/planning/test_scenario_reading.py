@@ -133,3 +133,127 @@ def test_static_requests_are_not_read_as_behaviour_over_time() -> None:
     assert not describes_behaviour_over_time("move the bench 2 m to the left", scene)
     assert not describes_behaviour_over_time("the pedestrian should cross the road", scene)
     assert describes_behaviour_over_time("the car changes lanes to the left after 5 seconds", scene)
+
+
+# Reading by structure: who acts, what it does, when, and against whom.
+
+def _oncoming_truck_and_follower() -> Scene:
+    return _with(_add("truck", 45.0, 1.75, 180.0, {"kind": "drive_lane", "lane": "main_westbound", "speed": 2.5}),
+                 _add("passenger_car", 62.0, 1.75, 180.0, {"kind": "drive_lane", "lane": "main_westbound", "speed": 6.0}))
+
+
+def test_a_condition_that_names_nobody_is_measured_from_the_actor_to_what_it_acts_on() -> None:
+    plan = _plan("the car behind the truck overtakes it once twelve metres behind", _oncoming_truck_and_follower())
+    (call,) = plan.calls
+    assert call.args["when"]["actor"] == "passenger_car_3" and call.args["when"]["other"] == "truck_1"
+    assert call.args["when"]["metres"] == 12.0
+
+
+def test_a_walker_stepping_out_in_front_of_the_ego_waits_for_the_ego_to_approach() -> None:
+    scene = _with(_add("pedestrian", -20.0, 6.0, -90.0))
+    plan = _plan("a man steps out in front of the ego", scene)
+    (call,) = plan.calls
+    assert call.tool == "add_event" and call.args["manoeuvre"]["kind"] == "cross_road"
+    assert call.args["when"]["kind"] == "distance" and call.args["when"]["actor"] == "ego"
+
+
+def test_standing_still_in_the_road_is_behaviour_over_time() -> None:
+    scene = _with(_add("pedestrian", -20.0, -6.0, 90.0))
+    assert describes_behaviour_over_time("the ped should drift into the street and stand there", scene)
+    (call,) = _plan("the ped should drift into the street and stand there", scene).calls
+    assert call.args["manoeuvre"]["kind"] == "stop_mid_road"
+
+
+def test_a_verb_word_before_the_subjects_noun_describes_it() -> None:
+    scene = _with(_add("passenger_car", 1.75, -40.0, 90.0, {"kind": "drive_lane", "lane": "campus_northbound", "speed": 5.0}))
+    (call,) = _plan("the crossing car turns right after 2 s", scene).calls
+    assert call.args == {"actor": "passenger_car_3", "manoeuvre": {"kind": "junction_turn", "turn": "right"}, "at_time": 2.0}
+
+
+def test_the_actor_is_the_first_thing_named_not_a_thing_it_acts_on() -> None:
+    scene = _with(_add("passenger_car", 1.75, -40.0, 90.0, {"kind": "drive_lane", "lane": "campus_northbound", "speed": 5.0}))
+    with pytest.raises(PlanningError, match="red light"):  # the car acts; it is not a request to change the light
+        _plan("the car on Campus Drive jumps the red light", scene)
+
+
+def test_a_lane_named_by_whose_it_is_is_entered_on_the_side_they_are() -> None:
+    scene = _with(_add("passenger_car", 30.0, 1.75, 180.0, {"kind": "drive_lane", "lane": "main_westbound", "speed": 5.0}))
+    (call,) = _plan("after 1 s the oncoming car veers into the ego's lane", scene).calls
+    assert call.args["manoeuvre"] == {"kind": "lane_change", "side": "left"}  # heading west, the ego's lane is south
+
+
+def test_straight_through_the_junction_is_a_junction_turn_straight() -> None:
+    scene = _with(_add("passenger_car", 1.75, -40.0, 90.0, {"kind": "drive_lane", "lane": "campus_northbound", "speed": 5.0}))
+    (call,) = _plan("the car on Campus Drive carries straight on over the crossroads", scene).calls
+    assert call.args["manoeuvre"]["turn"] == "straight"
+
+
+def test_turning_off_with_no_side_asks_between_left_and_right_only() -> None:
+    scene = _with(_add("passenger_car", 30.0, 1.75, 180.0, {"kind": "drive_lane", "lane": "main_westbound", "speed": 5.0}))
+    plan = _plan("the oncoming car turns off at the intersection", scene)
+    assert plan.question is not None
+    assert {r.calls[0].args["manoeuvre"]["turn"] for r in plan.question.readings} == {"left", "right"}
+
+
+def test_a_deceleration_with_no_end_speed_brakes_to_a_stop(van_ahead: Scene) -> None:
+    (call,) = _plan("the car ahead decelerates at 5 m/s² after 2 s", van_ahead).calls
+    assert call.args["manoeuvre"] == {"kind": "stop", "rate": 5.0}
+
+
+def test_a_delay_counted_from_the_start_of_the_run_is_a_start_time(van_ahead: Scene) -> None:
+    (call,) = _plan("6 seconds into the scenario, the car ahead stops", van_ahead).calls
+    assert call.tool == "add_manoeuvre" and call.args["at_time"] == 6.0
+
+
+def test_a_delay_counted_from_a_condition_is_refused_saying_what_can_start_a_manoeuvre(van_ahead: Scene) -> None:
+    with pytest.raises(PlanningError, match=r"cannot wait a time after a condition.*seconds after the scenario starts"):
+        _plan("the car ahead stops 2 s after the ego gets within 25 m", van_ahead)
+
+
+def test_a_distance_from_a_place_is_refused_not_read_as_a_distance_between_actors() -> None:
+    scene = _with(_add("passenger_car", 1.75, -40.0, 90.0, {"kind": "drive_lane", "lane": "campus_northbound", "speed": 5.0}))
+    with pytest.raises(PlanningError, match="distance from a place"):
+        _plan("once the ego is 25 m from the main intersection, the car on Campus Drive turns left", scene)
+
+
+def test_a_step_some_seconds_later_starts_that_long_after_the_timed_step_before(van_ahead: Scene) -> None:
+    first, second = _plan("after 2 s the car ahead speeds up to 9 m/s and slows to a stop 3 s later", van_ahead).calls
+    assert first.args["at_time"] == 2.0 and first.args["manoeuvre"]["kind"] == "change_speed"
+    assert second.args["at_time"] == 5.0 and second.args["manoeuvre"]["kind"] == "stop"
+
+
+def test_a_next_step_by_another_actor_waits_for_the_first_event_to_end(van_ahead: Scene) -> None:
+    first, second = _plan("when the ego is 20 m behind it, the car ahead brakes, then the ego moves into the left lane",
+                          van_ahead).calls
+    assert first.tool == "add_event" and first.args["name"]
+    assert second.args["actor"] == "ego" and second.args["when"] == {"kind": "after_event", "event": first.args["name"]}
+
+
+@pytest.mark.parametrize("prompt", [
+    "the oncoming car makes a U-turn after 3 s",
+    "after 2 s the car ahead mounts the pavement",
+    "the car ahead honks when the ego is 10 m behind",
+    "the car ahead rams into the bench after 4 s",
+])
+def test_what_no_worker_can_play_is_refused_naming_what_is_possible(prompt: str) -> None:
+    scene = _with(_add("passenger_car", -35.0, -1.75, 0.0, {"kind": "drive_lane", "lane": "main_eastbound", "speed": 3.0}),
+                  _add("passenger_car", 30.0, 1.75, 180.0, {"kind": "drive_lane", "lane": "main_westbound", "speed": 5.0}))
+    assert describes_behaviour_over_time(prompt, scene)
+    with pytest.raises(PlanningError, match=r"I cannot make anything .*: .*(can|only|outcome)"):
+        _plan(prompt, scene)
+
+
+def test_a_storyboard_plan_the_reader_agrees_with_is_applied_despite_colour_words() -> None:
+    context = PlanContext(scene=build_campus(), registry=REGISTRY)
+    prompt = "the traffic light goes red as the ego approaches it"
+    plan = _plan(prompt, context.scene)
+    assert review(prompt, plan, context).action == "apply"
+
+
+def test_a_storyboard_plan_other_than_the_story_described_is_asked_about_offering_the_reading(van_ahead: Scene) -> None:
+    context = PlanContext(scene=van_ahead, registry=REGISTRY)
+    other = Plan(calls=[ToolCall(tool="set_light_phases", args={
+        "light": "traffic_light_1", "phases": [{"state": "green", "duration": 60.0}]})], planner="t")
+    verdict = review("the traffic light goes red as the ego approaches it", other, context)
+    assert verdict.action == "ask" and verdict.question is not None
+    assert verdict.question.readings[0].calls[0].args["manoeuvre"] == {"kind": "set_light", "state": "red"}
