@@ -58,6 +58,20 @@ def test_what_blocks_a_named_road_searches_what_stands_on_that_road(context):
         ("find_assets", {"on_lane": True, "lane": "Main Street"})]
 
 
+def test_a_lane_named_as_a_place_searches_what_stands_in_it(context):
+    assert planned(context, "what is stopped in the southbound lane?") == [
+        ("find_assets", {"on_lane": True, "lane": "campus_southbound"})]
+
+
+def test_an_obstruction_near_a_place_is_searched_only_there(context):
+    [(tool, args)] = planned(context, "is the road blocked by the west gate?")
+    assert tool == "find_assets" and args["on_lane"] and args["near"] == "main gate"
+
+
+def test_the_lane_an_asset_is_in_is_the_lane_nearest_it(context):
+    assert planned(context, "which lane is the SUV in?") == [("find_lanes", {"near": "suv_1"})]
+
+
 def test_the_lanes_of_a_road_are_listed_by_that_road(context):
     assert planned(context, "what lanes make up Campus Drive?") == [("find_lanes", {"road": "Campus Drive"})]
 

@@ -38,13 +38,15 @@ _NEXT_PART = re.compile(r",?\s+(?:and|also|plus)\s+(?=(?:which|what|where|how|is
 _NEAREST = re.compile(r"\b(?:nearest|closest|most near|most close|nearer|closer|how far)\b")
 _ON_LANE = re.compile(
     r"\b(?:block\w*|obstruct\w*|in (?:the|its|our|their|my|his|her) way"
-    r"|(?:on|in|across|standing on|parked on) (?:the |a |any |our )?(?:lanes?|roads?|streets?|carriageway))\b"
+    r"|(?:on|in|across|along) (?:the |a |any |our )?(?:[a-z]+ )?(?:lanes?|roads?|streets?|carriageway))\b"
 )
 _AROUND = re.compile(r"\b(?:around|near|nearby|close to|next to|beside|by|at|in|inside|within|of)\b")
 _WITHIN = re.compile(r"\bwithin\s+(?:about\s+)?(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b")
 _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
 # What a question can ask for by kind rather than by name.
 _LANE_KIND = re.compile(r"\blanes?\b")
+# A lane named as where something is: the object of "on", "in", "along" ("in the northbound lane").
+_LANE_AS_PLACE = re.compile(r"\b(?:on|in|along|across|into|onto|block\w*)\s+(?:(?:the|a|any|our|its|either)\s+)?(?:\S+\s+)?$")
 _ROAD_KIND = re.compile(r"\b(?:roads?|streets?)\b")
 _PLACE_KIND = re.compile(r"\b(?:landmarks?|places?|buildings?|entrances?|locations?|spots?)\b")
 _ANY_KIND = re.compile(rf"\b(?:{'|'.join(lx.GENERIC_THINGS)}|what|what's|whats|who)\b")
@@ -57,7 +59,7 @@ _BACK = re.compile(r"\b(?:it|its|them|they|those ones|that one|that spot|that pl
 _PLACE_POINTERS = frozenset({"there", "here", "that spot", "that place"})
 # A clause that only points back at what earlier ones asked about ("how many of each").
 _OF_EACH = re.compile(r"\b(?:each|both|them|they|those|these)\b")
-_ASKER = re.compile(r"\b(?:(?:to|from|near|around|by|of|beside) (me|us)|where am i|where are we)\b")
+_ASKER = re.compile(r"\b(?:(?:to|from|near|nearest|closest|around|by|of|beside) (me|us)|where am i|where are we)\b")
 _DEFINITE = re.compile(r"\b(?:the|that|this|our|my|your)\s+(?:[a-z]+\s+){0,2}$")
 
 Kind = Literal["asset", "landmark", "lane", "point"]
@@ -122,6 +124,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
             args["lane"] = road
         if r.mentions:
             args["category"] = r.mentions[0].category
+        if r.landmark:  # "is the road blocked near the east gate": only that stretch
+            args.update(near=r.landmark, within=_radius(scene, Anchor("landmark", r.landmark)))
         return _found(ToolCall(tool="find_assets", args=args), scene)
     if _asks_for_lanes(r) or (_ROAD_KIND.search(r.masked) and not r.mentions and not r.landmark):
         return Part(_lanes(r, scene, back), None)
@@ -260,8 +264,8 @@ def _nearest(r: Reading, scene: Scene, anchor: Anchor) -> Part:
         return Part(ToolCall(tool="find_lanes", args={"near": anchor.name}), anchor)
     if kind == "landmark":
         args: dict[str, Any] = {"nearest_to": anchor.name}
-        if subject_landmark:
-            args["query"] = subject_landmark  # "how far is the bus stop from us"
+        if subject_landmark or r.landmark_word:  # "how far is the bus stop from us", "which gate is nearest"
+            args["query"] = subject_landmark or r.landmark_word
         return Part(ToolCall(tool="find_landmarks", args=args), anchor)
     args = {"nearest_to": anchor.name}
     category = next((m.category for m in r.mentions if _only_instance(r, scene, m) != anchor.name), None)
@@ -296,14 +300,10 @@ def _radius(scene: Scene, anchor: Anchor) -> float:
 
 
 def _asks_for_lanes(r: Reading) -> bool:
-    """Whether the lanes themselves are what is asked for ("which lanes does X have"), not
-    what stands on them ("is anything on the lanes")."""
+    """Whether the lanes themselves are what is asked for ("which lanes does X have", "the lanes
+    of X"), not the place of what stands on them ("is anything in the northbound lane")."""
     lane = _LANE_KIND.search(r.masked)
-    if lane is None:
-        return False
-    things = [m.start for m in r.mentions] + [m.start() for m in _ANY_KIND.finditer(r.masked) if m.group(0) not in
-                                                    ("what", "what's", "whats", "who")]
-    return not any(t < lane.start() for t in things)
+    return lane is not None and not _LANE_AS_PLACE.search(r.masked[: lane.start()])
 
 
 def _road_named(r: Reading, scene: Scene) -> str | None:
@@ -322,7 +322,8 @@ def _lanes(r: Reading, scene: Scene, back: Anchor | None) -> ToolCall:
     if road is not None:
         lane = scene.roads.lane(road)
         return ToolCall(tool="find_lanes", args={"road": lane.road if lane is not None and lane.road else road})
-    near = _named(r, scene) or back
+    only = next((i for m in r.mentions if (i := _only_instance(r, scene, m)) is not None), None)
+    near = _named(r, scene) or (Anchor("asset", only) if only else None) or back  # "which lane is the SUV in"
     return ToolCall(tool="find_lanes", args={"near": near.name} if near is not None else {})
 
 
