@@ -89,6 +89,15 @@ def test_around_us_means_around_the_ego_and_leaves_the_ego_out(context):
     assert tool == "find_assets" and args["nearest_to"] == "ego" and "near" not in args
 
 
+def test_where_am_i_is_asked_of_the_ego(context):
+    assert planned(context, "where am i right now?") == [("asset_properties", {"asset": "ego"})]
+
+
+def test_a_clause_that_only_points_back_at_earlier_questions_adds_no_search(context):
+    assert planned(context, "hydrants? bins? count both") == [
+        ("find_assets", {"category": "fire_hydrant"}), ("find_assets", {"category": "trash_bin"})]
+
+
 def test_a_compound_question_gets_one_search_per_part_and_it_means_the_first_subject(context):
     assert planned(context, "what does the SUV weigh, and which landmark is nearest to it?") == [
         ("asset_properties", {"asset": "suv_1"}), ("find_landmarks", {"nearest_to": "suv_1"})]
