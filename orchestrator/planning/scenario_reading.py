@@ -241,14 +241,15 @@ def _is_light_request(action: str) -> bool:
 
 
 def _first_verb(action: str, strict: bool = True) -> int:
-    # A verb word before the subject's noun describes it ("the crossing car", "the braking truck").
+    # A verb word between an article and the subject's noun describes it ("the crossing car").
     noun = re.search(r"\b(?:the|a|an|that|this) (?:[a-z]+ )?(?=ego\b|[a-z]+_\d+\b)", action)
     verbs = [m for kind, words in _COMPILED if kind != "light" for m in words.finditer(action)]
     # A noun inside a verb's own words ("slows to a stop") is not the subject.
     found = [m.start - 1 for m in ph.find_categories(action) if not any(v.start() <= m.start - 1 < v.end() for v in verbs)]
     role = _ROLE.search(action)
     head = min([*found[:1], *(m.end() for m in [noun] if m), *(m.start() for m in [role] if m)], default=0)
-    starts = [m.start() for m in verbs if m.start() >= head]
+    starts = [m.start() for m in verbs
+              if m.start() >= head or not re.search(r"\b(?:the|a|an|that|this)\s+(?:[a-z]+\s+)?$", action[: m.start()])]
     if not starts:
         if not strict:
             return len(action)

@@ -257,3 +257,8 @@ def test_a_storyboard_plan_other_than_the_story_described_is_asked_about_offerin
     verdict = review("the traffic light goes red as the ego approaches it", other, context)
     assert verdict.action == "ask" and verdict.question is not None
     assert verdict.question.readings[0].calls[0].args["manoeuvre"] == {"kind": "set_light", "state": "red"}
+
+
+def test_a_request_opening_with_a_verb_keeps_that_verb_as_the_action() -> None:
+    (call,) = _plan("halt our car at the traffic signal", build_campus()).calls
+    assert call.tool == "set_light_phases" and call.args["phases"][0]["state"] == "red"
