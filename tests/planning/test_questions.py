@@ -140,7 +140,12 @@ def test_a_blocking_question_answered_by_listing_lanes_is_not_given(context):
 
 def test_a_property_question_answered_about_another_thing_is_not_given(context):
     action, why = problems(context, "what does the SUV weigh?", call("asset_properties", asset="ego"))
-    assert action != "apply" and "suv" in why
+    assert action != "apply" and "the suv, but the plan describes ego" in why
+
+
+def test_a_property_question_answered_by_a_list_is_not_given(context):
+    action, why = problems(context, "what colour is the SUV?", call("find_assets", category="suv"))
+    assert action != "apply" and "describes nothing" in why
 
 
 def test_a_two_part_question_answered_once_is_not_given(context):
