@@ -113,7 +113,8 @@ def ground_requirement(
         matches += ranked
         names.places = _narrow(names.places, ranked)
     _narrow_to_request(names, said, scene, referred, pointed)
-    names.omitted = names.omitted | _unasked_fields(kind, said)
+    sure_category = len(names.categories) < len(WorldNames.of(scene).categories)
+    names.omitted = names.omitted | _unasked_fields(kind, said, sure_category)
     names.required = _stated_fields(kind, said)
     if kind == "move" and len(names.assets) == 1:  # the one thing named is the one to move
         names.required = names.required | {"asset"}
@@ -121,7 +122,7 @@ def ground_requirement(
     return Grounding(names, matches, relation)
 
 
-def _unasked_fields(kind: Family, said: RequestNames) -> frozenset[str]:
+def _unasked_fields(kind: Family, said: RequestNames, sure_category: bool) -> frozenset[str]:
     """Optional fields the request gives no words for, which a small model fills anyway (a
     beige stop sign that drives a lane; "2 m east" as 2 m left)."""
     unasked: set[str] = set()
@@ -135,6 +136,10 @@ def _unasked_fields(kind: Family, said: RequestNames) -> frozenset[str]:
         unasked |= NUMBER_FIELDS
     if not said.turning:
         unasked |= TURN_FIELDS
+    if said.assets and not said.categories and kind in ("appearance", "remove"):
+        unasked.add("category")  # "car 1", not every car
+    if not said.categories and kind == "search" and not sure_category:
+        unasked.add("category")  # "what is around the ego?" asks about everything there
     return frozenset(unasked)
 
 

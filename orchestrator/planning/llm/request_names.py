@@ -32,12 +32,14 @@ _PLAIN_RELATIONS: tuple[tuple[str, str], ...] = (
     (r"\bby\b|\bnear\b|\bclose to\b", "next_to"),
     (r"\bat\b", "at"),
 )
-# Families that change the scene; a question never needs them, a command never needs search.
-_CHANGES: tuple[Family, ...] = tuple(f for f in FAMILIES if f != "search")
 # Families that take something away or restyle it: all a plain removal can need.
 _TAKING_AWAY: tuple[Family, ...] = ("remove", "appearance", "move", "position")
 # Families a request that adds or puts something can need (never a removal).
 _PUTTING: tuple[Family, ...] = ("add", "arrange", "position", "move", "appearance")
+# Families for a thing that is already there (the ego, "car 1"): it is not added again.
+_EXISTING: tuple[Family, ...] = ("position", "move", "appearance", "search")
+# Questions the request reader misses: misspelt openers ("wheres", "were is").
+_QUESTION = re.compile(r"^\s*(wheres|were (is|are)|whats|wat|wich|hw|how (many|much)|is (there|any|some)\w*|are there)\b")
 # Direction words -> the move field they set and its sign ("1.5 m south" is north -1.5).
 DIRECTIONS: tuple[tuple[str, str, int], ...] = (
     (r"\beast(ward)?s?\b", "east", 1),
@@ -87,21 +89,26 @@ class RequestNames:
     polarity: Literal["add", "remove"] | None = None
 
     def kinds(self) -> list[Family]:
-        """The requirement kinds the request's mood allows, in the Sr. manager's order."""
+        """The requirement kinds the request's mood allows, in the Sr. manager's order. A
+        request read as neither a question nor an add or a removal keeps every kind: the
+        question reader misses some questions ("wheres the pool"), and such a question must
+        still be able to become a search."""
         if self.question:
             return ["search"]
         if self.polarity == "remove":
             return list(_TAKING_AWAY)
+        if self.assets and not self.categories:
+            return list(_EXISTING)
         if self.polarity == "add":
             return list(_PUTTING)
-        return list(_CHANGES)
+        return [f for f in FAMILIES if f != "remove"]  # no removal word: nothing is taken away
 
 
 def _relation(low: str, said: list[str]) -> list[str]:
-    if said:
-        return list(dict.fromkeys(said))
+    """The relations said, with the plainer one the slot reader leaves out ("at the west
+    crossing" beside "in front of the ego")."""
     found = next((rel for pattern, rel in _PLAIN_RELATIONS if re.search(pattern, low)), None)
-    return [found] if found else []
+    return list(dict.fromkeys([*said, *([found] if found else [])]))
 
 
 def read_names(prompt: str, scene: Scene) -> RequestNames:
@@ -128,7 +135,9 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
             numbers.append(float(value))
         elif kind == "colour" and re.search(rf"\b{value}\b", prompt.lower()):  # said, not implied by a thing
             colours.append(value)
-    categories += sorted(request.categories - set(categories))
+    # The request reader also reads "car" in "car 1" as a category: that car is an asset named.
+    named_kinds = {found.category for a in assets if (found := scene.asset(a)) is not None}
+    categories += sorted(request.categories - set(categories) - named_kinds)
     if request.place is not None:
         places.append(request.place)
     low = prompt.lower()
@@ -146,7 +155,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         shapes=shapes,
         behaviour=_BEHAVIOUR.search(low) is not None,
         turning=_TURNING.search(low) is not None,
-        question=request.question,
+        question=request.question or _QUESTION.match(low) is not None,
         polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
     )
 

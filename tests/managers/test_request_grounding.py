@@ -1,0 +1,133 @@
+"""The managers' grammars offer only what the request names, and a plan the review would not
+apply goes back to the model once with the review's reasons."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from drivetwin.orchestrator.planning.base import PlanContext
+from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.llm.jr_manager import ground_requirement
+from drivetwin.orchestrator.planning.llm.jr_schema import call_schema
+from drivetwin.orchestrator.planning.llm.managers import Requirement
+from drivetwin.orchestrator.planning.llm.request_names import read_names
+from drivetwin.tools.registry import ToolRegistry
+from drivetwin.worlds.scene import Scene
+
+from .conftest import call, requirement, scripted_session
+
+
+def _args(prompt: str, need: Requirement, campus: Scene, tool: str, grounder: Grounder) -> dict[str, Any]:
+    """The argument schema of `tool` that the Jr. manager for `need` would decode with."""
+    registry = ToolRegistry.default(plugins=False)
+    context = PlanContext(campus, registry)
+    names = ground_requirement(need, prompt, context, grounder).names
+    schema = call_schema(registry.family(need.kind), names)
+    options = schema.get("anyOf", [schema])
+    found: dict[str, Any] = next(o["properties"]["args"] for o in options if o["properties"]["tool"]["const"] == tool)
+    return found
+
+
+def _props(args: dict[str, Any]) -> dict[str, Any]:
+    properties: dict[str, Any] = args["properties"]
+    return properties
+
+
+def test_a_category_the_request_names_wins_over_the_managers_paraphrase(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    # The Sr. manager wrote "pedestrian sign"; the request said "stop sign".
+    need = Requirement(kind="add", what="pedestrian sign", where="north crosswalk")
+    args = _args("Add a stop sign at the north crosswalk.", need, campus, "add_asset", spelling_grounder)
+    location = _props(_props(args)["location"])
+    assert _props(args)["category"]["enum"] == ["stop_sign"]
+    assert location["target"]["enum"] == ["north crosswalk"]
+    assert location["relation"]["enum"] == ["at"]
+
+
+def test_a_place_after_a_relation_word_is_the_target_even_when_it_is_an_asset(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    need = Requirement(kind="add", what="buses", where="ahead of parking lot B entrance")
+    args = _args("put a buss in front of ego car", need, campus, "add_asset", spelling_grounder)
+    location = _props(_props(args)["location"])
+    assert location["target"]["enum"] == ["ego"]
+    assert location["relation"]["enum"] == ["in_front_of"]
+
+
+def test_numbers_are_copied_from_the_request_with_the_sign_its_direction_gives(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    need = Requirement(kind="move", what="bench")
+    args = _args("slide the bench 1.5 m further south", need, campus, "move_asset", spelling_grounder)
+    assert args["properties"]["north"]["enum"] == [-1.5]
+    assert not {"east", "forward", "left"} & set(args["properties"])
+    assert {"asset", "north"} <= set(args["required"])
+
+
+def test_fields_the_request_gives_no_words_for_are_not_offered(campus: Scene, spelling_grounder: Grounder) -> None:
+    need = Requirement(kind="add", what="stop sign", where="north crosswalk")
+    args = _args("Add a stop sign at the north crosswalk.", need, campus, "add_asset", spelling_grounder)
+    assert not {"colour", "behaviour", "yaw_deg", "count"} & set(args["properties"])
+
+
+def test_a_stated_count_must_be_written_and_is_the_only_count_allowed(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    need = Requirement(kind="arrange", what="cones", where="ego", how="line")
+    args = _args("Arrange 6 traffic cones in a line in front of the ego.", need, campus, "arrange_assets",
+                 spelling_grounder)
+    assert args["properties"]["count"] == {"type": "integer", "enum": [6]}
+    assert "count" in args["required"]
+    assert args["properties"]["shape"]["enum"] == ["line", "parking_row"]
+
+
+def test_the_request_mood_limits_the_requirement_kinds(campus: Scene) -> None:
+    assert read_names("where is the nearest fire hydrant?", campus).kinds() == ["search"]
+    assert "search" not in read_names("add a bench by the fountain", campus).kinds()
+    assert "search" in read_names("wheres the swiming pool", campus).kinds()  # a question the reader misses
+    assert "add" not in read_names("I no longer want the trees", campus).kinds()
+    assert "remove" not in read_names("put the bench in front of the library", campus).kinds()
+
+
+def test_the_sr_schema_offers_only_the_kinds_the_mood_allows(campus: Scene, spelling_grounder: Grounder) -> None:
+    session, backend = scripted_session(
+        campus,
+        [requirement("search", "hydrant"), call("find_assets", category="fire_hydrant")],
+        spelling_grounder,
+    )
+    session.submit("where is the fire hydrant?")
+    sr_schema = backend.schemas[0]
+    assert sr_schema is not None
+    assert sr_schema["properties"]["requirements"]["items"]["properties"]["kind"]["enum"] == ["search"]
+
+
+def test_a_plan_the_review_would_not_apply_goes_back_once_with_its_reasons(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    session, backend = scripted_session(
+        campus,
+        [
+            requirement("move", "hydrant"),
+            call("move_asset", asset="fire_hydrant_1", north=2.0),  # the request said east
+            call("move_asset", asset="fire_hydrant_1", east=2.0),
+        ],
+        spelling_grounder,
+    )
+    before = campus.asset("fire_hydrant_1")
+    report = session.submit("move the fire hydrant 2 m east")
+    assert report.ok, report.error
+    hint = backend.seen[2][-1]["content"]
+    assert "does not do what the request says" in hint and "east" in hint
+    after = session.scene.asset("fire_hydrant_1")
+    assert before is not None and after is not None
+    assert after.pose.x - before.pose.x == 2.0
+
+
+def test_the_review_sends_a_plan_back_only_once(campus: Scene, spelling_grounder: Grounder) -> None:
+    wrong = call("move_asset", asset="fire_hydrant_1", north=2.0)
+    session, backend = scripted_session(campus, [requirement("move", "hydrant"), wrong, wrong], spelling_grounder)
+    report = session.submit("move the fire hydrant 2 m east")
+    assert backend.calls == 3  # Sr., the first answer, one retry: the second wrong answer is kept
+    assert not report.ok  # and the session's own review does not apply it
+    assert session.scene.asset("fire_hydrant_1") == campus.asset("fire_hydrant_1")
