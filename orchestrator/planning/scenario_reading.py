@@ -101,6 +101,8 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
     that only names its behaviour ("add a car overtaking") is not, nor is a question."""
     low = normalised(text, scene) if scene is not None else ph.normalise(text)
     low = re.sub(r"[a-z]+", lambda m: _SLIPS.get(m.group(0), m.group(0)), low)
+    for name in (n for place in (scene.landmarks if scene is not None else []) for n in place.names()):
+        low = re.sub(rf"\b{re.escape(ph.normalise(name).strip())}\b", " place ", low)  # "bus stop" is no stop
     trigger = bool(TRIGGER.search(low) and re.search(r"\b(ego|it|car|m|metres?|meters?|seconds?|approach\w*)\b", low)) \
         or bool(DELAY.search(low))
     manoeuvre = any(words.search(low) for kind, words in _COMPILED[1:])
@@ -114,8 +116,10 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
                                             r"|\b(stop|wait)\w*\b[^,.;]*\bat (the|a) (red )?(traffic )?lights?\b", low))
     # A crossing aimed at the ego ("in front of the ego", "out from behind the bus") is timed
     # against the ego's approach, which only a storyboard event can do.
+    # "Jaywalk" names the static behaviour that already waits for the ego (set_behaviour).
+    crossing = re.sub(r"\bjaywalk\w*", " ", low)
     at_the_ego = bool(_AT_THE_EGO.search(low)) and any(
-        words.search(low) for kind, words in _COMPILED if kind in ("cross_road", "stop_mid_road"))
+        words.search(crossing) for kind, words in _COMPILED if kind in ("cross_road", "stop_mid_road"))
     return (trigger and manoeuvre) or light_change or at_the_ego or asks_unsupported(low) or any(
         words.search(low) for kind, words in _COMPILED if kind in _ONLY_STORYBOARD)
 

@@ -262,3 +262,13 @@ def test_a_storyboard_plan_other_than_the_story_described_is_asked_about_offerin
 def test_a_request_opening_with_a_verb_keeps_that_verb_as_the_action() -> None:
     (call,) = _plan("halt our car at the traffic signal", build_campus()).calls
     assert call.tool == "set_light_phases" and call.args["phases"][0]["state"] == "red"
+
+
+def test_a_place_name_with_a_verb_in_it_is_not_a_manoeuvre() -> None:
+    assert not describes_behaviour_over_time("take the bench away from the bus stop and put a bin there", build_campus())
+
+
+def test_naming_the_jaywalk_behaviour_is_a_static_behaviour_request() -> None:
+    scene = _with(_add("pedestrian", -20.0, -6.0, 90.0))
+    assert not describes_behaviour_over_time("have pedestrian_1 jaywalk ahead of the ego", scene)
+    assert describes_behaviour_over_time("have pedestrian_1 dart out ahead of the ego", scene)
