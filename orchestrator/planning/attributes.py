@@ -13,7 +13,6 @@ from __future__ import annotations
 import itertools
 import math
 import re
-import typing
 from collections import Counter
 from collections.abc import Iterable
 
@@ -22,7 +21,7 @@ from drivetwin.orchestrator.planning.coverage import named_in
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.tools.appearance import COLOURS, AssetLookArgs
+from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import lane_at, nearest_on_polyline, surface_at
@@ -51,10 +50,6 @@ _HEAVY = re.compile(r"\b(heavy|hard|strong|thick|dense|torrential|pouring|downpo
 STRENGTH_SPLIT = 0.5
 # Words that ask for a look change when a colour is named ("paint the bus red", "make it blue").
 _RECOLOUR = re.compile(r"\b(paint|repaint|colou?r|recolou?r|make|turn|change|spray)\b")
-_MATERIALS = frozenset(m for m in typing.get_args(typing.get_args(AssetLookArgs.model_fields["material"].annotation)[0])
-                       if m != "default")
-# Adjective forms of the materials ("wooden bench", "metallic car").
-_MATERIAL_WORDS = {**{m: m for m in _MATERIALS}, "wooden": "wood", "metallic": "metal", "shiny": "glossy"}
 
 
 def counts_named(masked: str) -> dict[str, int]:
@@ -114,9 +109,9 @@ def look_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     if any(c.tool == "set_asset_appearance" or c.args.get("colour") for c in calls):
         return []
     words = re.findall(r"[a-z]+", low)
-    materials = [_MATERIAL_WORDS[w] for w in words if w in _MATERIAL_WORDS]
-    if materials:
-        return [f"you asked for {materials[0]}, but the plan does not change how anything looks"]
+    material = md.material_said(low)
+    if material is not None:
+        return [f"you asked for {material}, but the plan does not change how anything looks"]
     colours = [w for w in words if w in COLOURS]
     if colours and _RECOLOUR.search(low):
         return [f"you asked for {colours[0]}, but the plan does not change how anything looks"]

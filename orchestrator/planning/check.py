@@ -52,7 +52,8 @@ from drivetwin.orchestrator.planning.coverage import (
 )
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
 from drivetwin.orchestrator.planning.readings import describe
-from drivetwin.orchestrator.planning.request import ADD_WORDS, REMOVE_WORDS, Request, read_request
+from drivetwin.orchestrator.planning.polarity import ADD_WORDS, REMOVE_WORDS
+from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in

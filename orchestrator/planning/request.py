@@ -13,21 +13,17 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
+from drivetwin.orchestrator.planning.polarity import ADD_WORDS as ADD_WORDS  # TODO(lead): llm/request_names.py -> polarity
+from drivetwin.orchestrator.planning.polarity import REMOVE_WORDS as REMOVE_WORDS
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
-from drivetwin.orchestrator.planning.rules.reading import find_lane, find_place
+from drivetwin.orchestrator.planning.rules.reading import FIRST_PERSON_EGO, find_lane, find_place
 from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.worlds.scene import Scene
 
-# The small general vocabulary the check reads polarity and questions with.
-REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
-    r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
-    r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
-)
-ADD_WORDS = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
+# The small general vocabulary the check reads questions with (polarity: polarity.py).
 _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
@@ -76,6 +72,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
         masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
+    masked = FIRST_PERSON_EGO.sub(lambda m: m.group(0)[: m.start(1) - m.start()] + "ego", masked)  # "behind us"
     # A lane is named by its id, or by a direction said of a lane ("the westbound lane"), not by a
     # compass word alone ("2 m east", "facing north").
     lane = find_lane(scene, masked) if _LANE_WORDS.search(masked) else None

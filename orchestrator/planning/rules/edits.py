@@ -13,6 +13,7 @@ import re
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning.polarity import REMOVE_WORDS
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -25,6 +26,8 @@ from drivetwin.worlds.scene import Scene
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
 NEAR_PLACE_M = 8.0
+# How far from a place without an area its things stand ("the trees at the fountain").
+SCOPE_RADIUS_M = 20.0
 # Defaults for amounts a person leaves out ("back it up", "shift the bin", "spin it").
 DEFAULT_STEP_M = 3.0
 SMALL_STEP_M = 1.5
@@ -56,9 +59,8 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         # "the vehicles": every category of the group the catalog tags so, not only the one named
         kinds = next((set(m) for m in md.groups_said(r.low).values() if name in m), {name})
         present = [a.id for a in scene.assets if a.category in kinds]
-        if _scoped_by_place(r, mention):
-            around = set(_near(scene, str(r.landmark), NEAR_PLACE_M, keep_permanent=True))
-            present = [i for i in present if i in around]
+        if _scoped_by_place(r, mention, anywhere=bool(REMOVE_WORDS.search(r.low))):
+            present = _at_place(scene, str(r.landmark), present)
         if not present:
             return []
         if mention.plural or r.has(("all", "every", "each")):
@@ -76,13 +78,32 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
 _SCOPE = re.compile(r"\s*(?:that are |which are |standing |parked )?(?:in|at|inside|by|near|on|around|from|of)\s+(?:the\s+)?$")
 
 
-def _scoped_by_place(r: Reading, mention: ph.Mention) -> bool:
-    """Whether the clause names its things by where they are ("every vehicle in lot B")."""
-    if r.landmark is None or r.landmark_at < mention.end:
+def _scoped_by_place(r: Reading, mention: ph.Mention, anywhere: bool = False) -> bool:
+    """Whether the clause names its things by where they are ("every vehicle in lot B"); with
+    `anywhere`, a place said anywhere in it does ("the quad without trees": a removal has no
+    destination)."""
+    if r.landmark is None or not (mention.plural or r.has(("all", "every", "each"))):
         return False
-    return bool(_SCOPE.fullmatch(r.low[mention.end : r.landmark_at] + " ")) and (
-        mention.plural or r.has(("all", "every", "each"))
-    )
+    if anywhere:
+        return True
+    return r.landmark_at >= mention.end and bool(_SCOPE.fullmatch(r.low[mention.end : r.landmark_at] + " "))
+
+
+def _at_place(scene: Scene, place: str, ids: list[str]) -> list[str]:
+    """Those of `ids` standing at a place: inside its area, or near its point, nearest first."""
+    landmark = scene.landmark(place)
+    if landmark is None:
+        return []
+    reach = NEAR_PLACE_M if landmark.polygon is not None else SCOPE_RADIUS_M
+    out = []
+    for i in ids:
+        a = scene.asset(i)
+        if a is None:
+            continue
+        distance = math.dist((a.pose.x, a.pose.y), landmark.position)
+        if (landmark.polygon is not None and _inside((a.pose.x, a.pose.y), landmark.polygon)) or distance <= reach:
+            out.append((distance, i))
+    return [i for _, i in sorted(out)]
 
 
 def _near(scene: Scene, place: str, radius: float, keep_permanent: bool) -> list[str]:
@@ -131,7 +152,7 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     args: dict[str, Any] = {"category": name}
     count = find_count(r, mention)
     grouped = any(name in members for members in md.groups_said(r.low).values())
-    if (grouped or _scoped_by_place(r, mention)) and count is None and not fewer:
+    if (grouped or _scoped_by_place(r, mention, anywhere=True)) and count is None and not fewer:
         # "the vehicles in lot B": every one there, of every category the words cover
         ids = referenced(r, scene, memory, notes)
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
@@ -151,20 +172,23 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
 
 
 def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall | None:
-    """set_asset_appearance for "paint the bus red", "the bins should blend in with the grass"."""
+    """set_asset_appearance for "paint the bus red", "the bins should blend in with the grass",
+    "make the benches wooden"."""
     colour = next((c for c in COLOURS if r.has((c,))), None)
     if colour is None and r.has(("blend in", "match", "same colour as", "colour of", "coloured like")):
         colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
-    if colour is None:
+    material = md.material_said(r.masked)
+    if colour is None and material is None:
         return None
     ids = referenced(r, scene, memory, notes)
     if not ids:
         if r.mentions and r.has(("paint", "recolour", "colour")):
             raise ph_error(f"there is no {r.mentions[0].category} in the scene to recolour")
         return None
+    look = {k: v for k, v in (("colour", colour), ("material", material)) if v is not None}
     if r.mentions and r.mentions[0].plural and not r.ids and len(ids) > 1:
-        return ToolCall(tool="set_asset_appearance", args={"category": r.mentions[0].category, "colour": colour})
-    return ToolCall(tool="set_asset_appearance", args={"assets": ids, "colour": colour})
+        return ToolCall(tool="set_asset_appearance", args={"category": r.mentions[0].category, **look})
+    return ToolCall(tool="set_asset_appearance", args={"assets": ids, **look})
 
 
 def ph_error(message: str) -> Exception:

@@ -1,6 +1,6 @@
 """What a request says about the things it names beyond their category: the compass direction
-to move them, the shape to lay them out in, a group named by a catalog tag ("the vehicles"), and
-a share of them ("one of the rovers").
+to move them, the shape to lay them out in, the material to make them of, a group named by a
+catalog tag ("the vehicles"), and a share of them ("one of the rovers").
 
 Shared by the rule planner, which acts on it, and the plan-versus-request check, which holds a
 plan to it, so that both read the words the same way.
@@ -9,9 +9,11 @@ plan to it, so that both read the words the same way.
 from __future__ import annotations
 
 import re
+import typing
 from functools import cache
 
 from drivetwin.orchestrator.planning.rules.phrases import NUMBER_WORDS, find_categories, normalise
+from drivetwin.tools.appearance import AssetLookArgs
 from drivetwin.worlds.catalog import catalog
 
 # A compass direction said as a way to go ("2 m east", "eastward", "to the north"), not as part of
@@ -69,6 +71,18 @@ def layout_said(text: str) -> str | None:
     return said.group(1) if said else None
 
 
+_MATERIALS = frozenset(m for m in typing.get_args(typing.get_args(AssetLookArgs.model_fields["material"].annotation)[0])
+                       if m != "default")
+# Adjective forms of the materials ("wooden bench", "metallic car").
+_MATERIAL_WORDS = {**{m: m for m in _MATERIALS}, "wooden": "wood", "metallic": "metal", "shiny": "glossy"}
+
+
+def material_said(text: str) -> str | None:
+    """The material the words ask a thing to look like ("wooden benches"), as the appearance
+    Worker names it."""
+    return next((_MATERIAL_WORDS[w] for w in re.findall(r"[a-z]+", text.lower()) if w in _MATERIAL_WORDS), None)
+
+
 # "one of the small research rovers", "two of those cones": the number counts the thing named.
 _PARTITIVE = re.compile(r"\b(\w+)\s+of\s+(?:the|those|these|our|your|its|their)\s+(?:[a-z-]+\s+){0,3}$")
 
@@ -82,4 +96,4 @@ def partitive_count(before: str) -> int | None:
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word)
 
 
-__all__ = ["COMPASS_VECTORS", "compass_direction", "groups_said", "layout_said", "partitive_count"]
+__all__ = ["COMPASS_VECTORS", "compass_direction", "groups_said", "layout_said", "material_said", "partitive_count"]

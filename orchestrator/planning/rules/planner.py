@@ -17,6 +17,7 @@ from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.polarity import REMOVE_WORDS
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
@@ -106,6 +107,10 @@ _NEGATED_WISH = re.compile(
 )
 
 
+# A clause that says how things are ("the bench by the stop is in the way"), not what to do.
+_STATEMENT = re.compile(r"\s*(?:the|this|that|these|those|it|they|there)\b[^,;]*?\b(?:is|are|was|were)\b")
+
+
 def _clauses(prompt: str) -> list[tuple[str, bool]]:
     """The clauses of a prompt, each with whether it was asked as a question."""
     parts = _SPLIT.split(prompt)
@@ -166,6 +171,7 @@ class RulePlanner:
         calls: list[ToolCall] = []
         unknown: list[str] = []
         skipped: list[str] = []
+        described: list[ToolCall] = []
         for clause, asked in clauses:
             reading = read(clause, scene)
             clause_calls = _plan_clause(reading, asked, scene, context.memory, notes)
@@ -174,8 +180,13 @@ class RulePlanner:
             if clause_calls is None:
                 skipped.append(clause)
                 continue
+            if _STATEMENT.match(reading.low) and not asked:
+                described.extend(clause_calls)  # "the bench by the stop is in the way": context, unless all there is
+                continue
             calls.extend(clause_calls)
             unknown += _unknown_words(clause, scene)
+        if not calls:
+            calls = described
         if not calls and skipped:
             strange = [w for clause in skipped for w in _unknown_words(clause, scene)]
             first = f"there is no {strange[0]!r} in this world that I know of; " if strange else ""
@@ -217,6 +228,8 @@ def _is_question(r: Reading, asked: bool) -> bool:
     command = re.sub(r"^(?:(?:please|pls|kindly|can|could|would|will)\s+(?:you\s+)?(?:please\s+)?)+", "", words)
     if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command):
         return False
+    if command != words and REMOVE_WORDS.match(command):  # "could you take it out?"
+        return False
     within = re.search(r"(\s,\s*(where|which|what)|how many|how much)\b", r.low)
     return starts or asked or bool(within)
 
@@ -230,7 +243,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return None  # "before I add anything": a circumstance, not a request
     if _is_question(r, asked):
         return plan_question(r, scene, memory, notes)
-    if r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or r.has(lx.FEWER_WORDS) or _NEGATED_WISH.search(r.low):
+    # The removal words the plan check reads polarity by ("take it out", "without the bin") count too.
+    taken_away = bool(REMOVE_WORDS.search(r.low.strip()))
+    if r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or r.has(lx.FEWER_WORDS) or _NEGATED_WISH.search(r.low) or taken_away:
         removed = remove(r, scene, memory, notes)
         if removed is not None:
             return removed
@@ -322,6 +337,8 @@ def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     return ToolCall(tool="arrange_assets", args=args)
 
 
+# "a grid with 3 columns"; "colum" is how the word is often typed.
+_COLUMNS = re.compile(r"\b(\d+|[a-z]+)\s+(?:columns?|colums?|cols?)\b")
 # "Same again but bollards": the last turn's amount, of what this turn names.
 _SAME_AGAIN = re.compile(r"\b(?:same (?:again|as before|thing)|the same but|again but)\b")
 
@@ -339,6 +356,10 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         args["shape"] = "line"
     elif r.has(("grid",)):
         args["shape"] = "grid"
+        columns = _COLUMNS.search(r.low)
+        if columns is not None:
+            said = columns.group(1)
+            args["columns"] = int(said) if said.isdigit() else ph.NUMBER_WORDS.get(said, 0) or None
     elif r.has(("along the lane", "along the road", "lane edge", "along the edge", "along the kerb")):
         args["shape"] = "lane_edge"
     else:

@@ -112,12 +112,19 @@ def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
     return None
 
 
+# "behind us", "ahead of me": said from the driver's seat, the first person is the ego vehicle.
+FIRST_PERSON_EGO = re.compile(
+    r"\b(?:behind|ahead of|in front of|front of|beside|next to|near|past|alongside|towards?|from|around|at) (us|me)\b"
+)
+
+
 def _ego_span(low: str) -> tuple[int, int] | None:
     for word in ph.EGO_WORDS:
         m = re.search(rf"(?<![a-z]){re.escape(word)}(?![a-z])", low)
         if m:
             return m.start(), m.end()
-    return None
+    said = FIRST_PERSON_EGO.search(low)
+    return (said.start(1), said.end(1)) if said else None
 
 
 def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[str], list[ph.Mention]]:
@@ -204,6 +211,10 @@ def read(text: str, scene: Scene) -> Reading:
     )
 
 
+# A count said after the thing: "cones x4", "... 6 of them".
+_COUNT_AFTER = re.compile(r"^\s*[x×]\s?(\d+)\b|\b(\d+|[a-z]+) of them\b")
+
+
 def find_count(reading: Reading, mention: ph.Mention) -> int | None:
     """The number quantifying a mention; collective nouns ("a row of") are not "one"; a number
     that cannot be a count ("nan", "2.5") is refused rather than replaced by a default."""
@@ -211,6 +222,10 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
     partitive = md.partitive_count(before)
     if partitive is not None:
         return partitive
+    after = _COUNT_AFTER.search(reading.low[mention.end :])  # "cones x4", "a ring of people, 6 of them"
+    if after is not None:
+        word = after.group(1) or after.group(2)
+        return int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
     words = ph.tokens(before)
     for k in range(len(words) - 1, max(-1, len(words) - 5), -1):
         word = words[k]
@@ -239,4 +254,4 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
     return not present  # a bare noun: the one there is, if there is one
 
 
-__all__ = ["Reading", "find_count", "find_lane", "find_place", "is_new", "read"]
+__all__ = ["FIRST_PERSON_EGO", "Reading", "find_count", "find_lane", "find_place", "is_new", "read"]
