@@ -7,6 +7,7 @@ from typing import Any
 
 from drivetwin.orchestrator.planning.base import PlanContext
 from drivetwin.orchestrator.planning.grounding import Grounder
+from drivetwin.orchestrator.planning.llm.demos import fits
 from drivetwin.orchestrator.planning.llm.jr_manager import ground_requirement
 from drivetwin.orchestrator.planning.llm.jr_schema import call_schema
 from drivetwin.orchestrator.planning.llm.managers import Requirement
@@ -85,7 +86,8 @@ def test_a_stated_count_must_be_written_and_is_the_only_count_allowed(
 def test_the_request_mood_limits_the_requirement_kinds(campus: Scene) -> None:
     assert read_names("where is the nearest fire hydrant?", campus).kinds() == ["search"]
     assert "search" not in read_names("add a bench by the fountain", campus).kinds()
-    assert "search" in read_names("wheres the swiming pool", campus).kinds()  # a question the reader misses
+    assert read_names("wheres the swiming pool", campus).kinds() == ["search"]  # a misspelt question
+    assert "add" not in read_names("Place the ego vehicle in main_westbound.", campus).kinds()
     assert "add" not in read_names("I no longer want the trees", campus).kinds()
     assert "remove" not in read_names("put the bench in front of the library", campus).kinds()
 
@@ -96,10 +98,23 @@ def test_the_sr_schema_offers_only_the_kinds_the_mood_allows(campus: Scene, spel
         [requirement("search", "hydrant"), call("find_assets", category="fire_hydrant")],
         spelling_grounder,
     )
-    session.submit("where is the fire hydrant?")
+    session.submit("where are the fire hydrant and the bus?")  # two clauses: the Sr. manager splits them
     sr_schema = backend.schemas[0]
     assert sr_schema is not None
     assert sr_schema["properties"]["requirements"]["items"]["properties"]["kind"]["enum"] == ["search"]
+
+
+def test_a_one_clause_question_goes_straight_to_the_search_manager(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    session, backend = scripted_session(campus, [call("find_assets", category="fire_hydrant")], spelling_grounder)
+    report = session.submit("where is the fire hydrant?")
+    assert report.ok, report.error
+    assert backend.calls == 1
+    schema = backend.schemas[0]
+    assert schema is not None
+    assert {o["properties"]["tool"]["const"] for o in schema["anyOf"]} >= {"find_assets", "find_landmarks"}
+    assert report.answer and "fire_hydrant_1" in report.answer
 
 
 def test_a_plan_the_review_would_not_apply_goes_back_once_with_its_reasons(
@@ -131,3 +146,20 @@ def test_the_review_sends_a_plan_back_only_once(campus: Scene, spelling_grounder
     assert backend.calls == 3  # Sr., the first answer, one retry: the second wrong answer is kept
     assert not report.ok  # and the session's own review does not apply it
     assert session.scene.asset("fire_hydrant_1") == campus.asset("fire_hydrant_1")
+
+
+def test_a_demonstration_is_shown_only_if_this_requests_grammar_allows_its_fields(campus: Scene) -> None:
+    registry = ToolRegistry.default(plugins=False)
+    names = ground_requirement(
+        Requirement(kind="add", what="stop sign", where="north crosswalk"),
+        "Add a stop sign at the north crosswalk.",
+        PlanContext(campus, registry),
+        Grounder(use_embeddings=False),
+    ).names
+    schema = call_schema(registry.family("add"), names)
+    plain = {"tool": "add_asset", "args": {"category": "bench", "location": {"relation": "next_to", "target": "fountain"}}}
+    counted = {"tool": "add_asset", "args": {**plain["args"], "count": 2}}  # type: ignore[dict-item]
+    coloured = {"tool": "add_asset", "args": {**plain["args"], "colour": "beige"}}  # type: ignore[dict-item]
+    assert fits(plain, schema)
+    assert not fits(counted, schema) and not fits(coloured, schema)
+    assert not fits({"tool": "remove_assets", "args": {"category": "bench"}}, schema)

@@ -9,6 +9,7 @@ bank cannot be read (no embedding model), the managers keep their static example
 from __future__ import annotations
 
 import logging
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -63,6 +64,27 @@ def jr_demos(family: Family, prompt: str, context: PlanContext, k: int) -> list[
     return demos
 
 
+def fits(value: Any, schema: Mapping[str, Any]) -> bool:
+    """Whether `value` has the shape `schema` (a slimmed Jr. schema) allows: the same tool,
+    only fields it offers, every field it requires. A demonstration that fills a field this
+    request's grammar leaves out teaches the model to want it. Names and numbers may differ:
+    those are the request's own."""
+    if "anyOf" in schema:
+        return any(fits(value, branch) for branch in schema["anyOf"])
+    if "const" in schema:
+        return bool(value == schema["const"])
+    if "properties" in schema:
+        props = schema["properties"]
+        return (
+            isinstance(value, dict)
+            and all(k in props and fits(v, props[k]) for k, v in value.items())
+            and all(r in value for r in schema.get("required", ()))
+        )
+    if schema.get("type") == "array":
+        return isinstance(value, list)
+    return not isinstance(value, dict)
+
+
 def _render(need: dict[str, str], args: dict[str, Any]) -> str:
     """A requirement the way render_requirement shows it, grounded names after arrows."""
     what = args.get("category") or args.get("asset") or ", ".join(args.get("categories", []) or args.get("assets", []))
@@ -82,4 +104,4 @@ def _render(need: dict[str, str], args: dict[str, Any]) -> str:
     )
 
 
-__all__ = ["JrDemo", "SrDemo", "jr_demos", "sr_demos"]
+__all__ = ["JrDemo", "SrDemo", "fits", "jr_demos", "sr_demos"]

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from drivetwin.orchestrator.backends import Backend, Message
 from drivetwin.orchestrator.planning.base import PlanContext, PlanningError, TraceStep
 from drivetwin.orchestrator.planning.grounding import Grounder, Match
-from drivetwin.orchestrator.planning.llm.demos import jr_demos
+from drivetwin.orchestrator.planning.llm.demos import fits, jr_demos
 from drivetwin.orchestrator.planning.llm.jr_schema import (
     NUMBER_FIELDS,
     TURN_FIELDS,
@@ -34,6 +34,8 @@ from drivetwin.worlds.scene import Scene
 JR_MAX_TOKENS = 200
 # Few-shot examples per call, chosen by meaning from the family's bank.
 JR_EXAMPLES = 3
+# Nearest demonstrations looked at per example shown, to find ones the grammar allows.
+DEMO_POOL = 4
 # A grounded name this sure narrows the enum to the grounded names; below it, it is a hint.
 NARROW_SCORE = 0.75
 # Grounded alternatives kept in a narrowed enum (the best one plus near misses).
@@ -225,7 +227,11 @@ class JrManager:
             hints="\n".join(hints),
         )
         messages: list[Message] = [Message(role="system", content=system)]
-        demos = [(d.requirement, d.call) for d in jr_demos(self.family, prompt or requirement_text, context, JR_EXAMPLES)]
+        schema = call_schema(tools, grounding.names)
+        near = jr_demos(self.family, prompt or requirement_text, context, JR_EXAMPLES * DEMO_POOL)
+        # Only demonstrations this request's grammar allows; the nearest ones if none does.
+        demos = [(d.requirement, d.call) for d in near if fits(d.call, schema)][:JR_EXAMPLES]
+        demos = demos or [(d.requirement, d.call) for d in near[:JR_EXAMPLES]]
         if not demos:  # no bank, or nothing of this family near: the static examples
             bank = jr_examples().get(self.family, ())
             chosen = self.grounder.nearest(requirement_text, [e.requirement for e in bank], JR_EXAMPLES)

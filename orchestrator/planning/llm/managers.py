@@ -178,6 +178,7 @@ def _fix(problem: str) -> Message:
 
 __all__ = [
     "CALL_TIMEOUT_S",
+    "FIELD_CHARS",
     "MAX_REQUIREMENTS",
     "RETRY_BUDGET",
     "Answer",

@@ -37,7 +37,7 @@ _TAKING_AWAY: tuple[Family, ...] = ("remove", "appearance", "move", "position")
 # Families a request that adds or puts something can need (never a removal).
 _PUTTING: tuple[Family, ...] = ("add", "arrange", "position", "move", "appearance")
 # Families for a thing that is already there (the ego, "car 1"): it is not added again.
-_EXISTING: tuple[Family, ...] = ("position", "move", "appearance", "search")
+_EXISTING: tuple[Family, ...] = ("position", "move", "appearance")
 # Questions the request reader misses: misspelt openers ("wheres", "were is").
 _QUESTION = re.compile(r"^\s*(wheres|were (is|are)|whats|wat|wich|hw|how (many|much)|is (there|any|some)\w*|are there)\b")
 # Direction words -> the move field they set and its sign ("1.5 m south" is north -1.5).
@@ -89,10 +89,10 @@ class RequestNames:
     polarity: Literal["add", "remove"] | None = None
 
     def kinds(self) -> list[Family]:
-        """The requirement kinds the request's mood allows, in the Sr. manager's order. A
-        request read as neither a question nor an add or a removal keeps every kind: the
-        question reader misses some questions ("wheres the pool"), and such a question must
-        still be able to become a search."""
+        """The requirement kinds the request's mood allows, in the Sr. manager's order: a
+        question is a search (misspelt openers, "wheres the pool", are read as questions here
+        too), a command without a removal word takes nothing away, an asset that exists is
+        not added again."""
         if self.question:
             return ["search"]
         if self.polarity == "remove":
@@ -101,14 +101,16 @@ class RequestNames:
             return list(_EXISTING)
         if self.polarity == "add":
             return list(_PUTTING)
-        return [f for f in FAMILIES if f != "remove"]  # no removal word: nothing is taken away
+        # No removal word: nothing is taken away; not read as a question: nothing is only looked up.
+        return [f for f in FAMILIES if f not in ("remove", "search")]
 
 
 def _relation(low: str, said: list[str]) -> list[str]:
     """The relations said, with the plainer one the slot reader leaves out ("at the west
     crossing" beside "in front of the ego")."""
     found = next((rel for pattern, rel in _PLAIN_RELATIONS if re.search(pattern, low)), None)
-    return list(dict.fromkeys([*said, *([found] if found else [])]))
+    # No relation word at all ("cones x3 lot A"): the thing goes at the place named.
+    return list(dict.fromkeys([*said, *([found] if found else [])])) or ["at"]
 
 
 def read_names(prompt: str, scene: Scene) -> RequestNames:

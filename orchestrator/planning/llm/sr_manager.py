@@ -7,6 +7,8 @@ the world's example bank (llm/demos.py; the static prompts/sr_examples.json with
 
 from __future__ import annotations
 
+import re
+
 from drivetwin.orchestrator.backends import Backend, Message
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import PlanContext, TraceStep
@@ -14,6 +16,7 @@ from drivetwin.orchestrator.planning.grounding import Grounder
 from drivetwin.orchestrator.planning.llm.demos import sr_demos
 from drivetwin.orchestrator.planning.llm.managers import (
     CALL_TIMEOUT_S,
+    FIELD_CHARS,
     Answer,
     Requirement,
     Requirements,
@@ -26,6 +29,8 @@ from drivetwin.tools.base import Family
 # Few-shot examples per prompt: enough to show the pattern, few enough for a 4k context.
 SR_EXAMPLES = 4
 SR_MAX_TOKENS = 160
+# Words and marks that join clauses: a request with one may hold several requirements.
+_CLAUSE_JOINS = re.compile(r"\b(and|also|then|plus|as well)\b|[,;+&]")
 # Characters of conversation memory shown to the Sr. manager (the rest is summarised).
 MEMORY_CHARS = 600
 
@@ -70,7 +75,14 @@ class SrManager:
     def requirements(
         self, prompt: str, context: PlanContext, kinds: list[Family] | None = None
     ) -> tuple[list[Requirement], TraceStep]:
-        """The prompt's requirements (of `kinds` only, when given) and the trace step that explains them."""
+        """The prompt's requirements (of `kinds` only, when given) and the trace step that explains them.
+
+        A one-clause request whose mood allows one kind only ("where is the hydrant?") is one
+        requirement of that kind: the model is not asked (it could only copy the words).
+        """
+        if kinds is not None and len(kinds) == 1 and _CLAUSE_JOINS.search(prompt.lower()) is None:
+            only = Requirement(kind=kinds[0], what=prompt.strip()[:FIELD_CHARS])
+            return [only], TraceStep(level="sr_manager", input=prompt, output=f"{only}\n(one clause, one kind: not asked)")
         answer: Answer[Requirements] = ask(
             self.backend,
             self.messages(prompt, context),
