@@ -267,15 +267,15 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
     scoped = bool(r.mentions) and _scoped_by_place(r, r.mentions[0])
     anchored = (r.landmark and not scoped) or (r.ego and "ego" not in ids) or any(i not in ids for i in r.ids)
-    step = metres if metres is not None else (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else None)
+    shift = metres if metres is not None else (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else None)
     moved: dict[str, Any] = {"asset": asset} if len(ids) == 1 else {"assets": ids}
     compass = md.compass_direction(r.masked)
-    if compass is not None and step is not None and not anchored:
+    if compass is not None and shift is not None and not anchored:
         east, north = md.COMPASS_VECTORS[compass]
-        return [ToolCall(tool="move_asset", args={**moved, "east": east * step, "north": north * step})]
+        return [ToolCall(tool="move_asset", args={**moved, "east": east * shift, "north": north * shift})]
     for word, key, sign in lx.SIDE_WORDS:
-        if step is not None and r.has((word,)) and not anchored:
-            return [ToolCall(tool="move_asset", args={**moved, key: sign * step})]
+        if shift is not None and r.has((word,)) and not anchored:
+            return [ToolCall(tool="move_asset", args={**moved, key: sign * shift})]
     where = location(r, scene, memory, notes, exclude=ids)
     if where is not None:
         notes.subject = [asset]
