@@ -51,8 +51,8 @@ from drivetwin.orchestrator.planning.coverage import (
     wrong_direction,
 )
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks
 from drivetwin.orchestrator.planning.readings import describe
-from drivetwin.orchestrator.planning.polarity import ADD_WORDS, REMOVE_WORDS
 from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -395,7 +395,9 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
     """Apply, ask or refuse: whether `plan` accounts for what `prompt` asks (nothing is applied)."""
     if plan.question is not None:
         return _screened(prompt, plan.question, context)
-    if (missed := missed_scenario(prompt, plan, context)) is not None:  # never a static edit for a scenario
+    # "to know what a truck weighs for my braking calculation" asks; it describes no scenario
+    answers = bool(plan.calls) and all(c.tool in QUERY_TOOLS for c in plan.calls) and asks(ph.normalise(prompt).strip())
+    if not answers and (missed := missed_scenario(prompt, plan, context)) is not None:  # never a static edit for a scenario
         return Verdict("ask" if missed.question else "refuse", [missed.problem], missed.question, missed.message)
     if read_as_scenario(prompt, plan, context):  # the storyboard's readings are the scenario reader's to judge
         return Verdict("apply")

@@ -13,8 +13,9 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-from drivetwin.orchestrator.planning.polarity import ADD_WORDS as ADD_WORDS  # TODO(lead): llm/request_names.py -> polarity
-from drivetwin.orchestrator.planning.polarity import REMOVE_WORDS as REMOVE_WORDS
+from drivetwin.orchestrator.planning.intent import ADD_WORDS as ADD_WORDS  # TODO(lead): llm/request_names.py -> intent
+from drivetwin.orchestrator.planning.intent import REMOVE_WORDS as REMOVE_WORDS
+from drivetwin.orchestrator.planning.intent import asks
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
@@ -23,22 +24,9 @@ from drivetwin.orchestrator.planning.rules.reading import FIRST_PERSON_EGO, find
 from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.worlds.scene import Scene
 
-# The small general vocabulary the check reads questions with (polarity: polarity.py).
-_QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
-# Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
-# the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
-_INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|"
-                   r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
 # Number words that state an amount; vague ones ("a few", "some", "a couple") are not checked.
 _AMOUNTS = {w: n for w, n in ph.NUMBER_WORDS.items() if w not in ("a", "an", "one", "single", "pair", "couple",
                                                                    "few", "some", "several")}
-# Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
-# in the mood of a command, whatever the politeness around them.
-_LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
-                     r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show)\b")
-# A request put politely, at the start of the sentence or of a clause ("..., could you add two
-# cars?"): a command even when it ends with a question mark.
-_POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^please\b")
 _PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
 # A category word after these describes the thing asked for ("a vehicle that carries passengers",
 # "a bench for pedestrians") rather than naming it.
@@ -76,9 +64,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     # A lane is named by its id, or by a direction said of a lane ("the westbound lane"), not by a
     # compass word alone ("2 m east", "facing north").
     lane = find_lane(scene, masked) if _LANE_WORDS.search(masked) else None
-    polite = bool(_POLITE.search(low))
-    question = bool(_INFO.search(low) or _LOOKUP.match(low)) or (
-        not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))
+    question = asks(low)
     polarity: Literal["add", "remove"] | None = (
         "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None
     )

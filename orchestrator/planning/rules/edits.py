@@ -13,7 +13,7 @@ import re
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.polarity import REMOVE_WORDS
+from drivetwin.orchestrator.planning.intent import REMOVE_WORDS
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph

@@ -17,7 +17,7 @@ from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
-from drivetwin.orchestrator.planning.polarity import REMOVE_WORDS
+from drivetwin.orchestrator.planning.intent import REMOVE_WORDS, asks
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
@@ -231,7 +231,8 @@ def _is_question(r: Reading, asked: bool) -> bool:
     if command != words and REMOVE_WORDS.match(command):  # "could you take it out?"
         return False
     within = re.search(r"(\s,\s*(where|which|what)|how many|how much)\b", r.low)
-    return starts or asked or bool(within)
+    # "I need the number of trees", "tell me which cars ...": the check's reading of a question
+    return starts or asked or bool(within) or asks(words)
 
 
 def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:

@@ -1,0 +1,40 @@
+"""What a request wants, read from a small general vocabulary: whether it adds or takes away
+("take it out", "without the bin", "no hydrant"), and whether it asks for information ("which
+...", "list the lanes", "I need the number of trees") or, however politely, for a change ("could
+you add two cars?"). Read by the plan-versus-request check (request.py) and by the rule planner,
+so that the two never disagree on what kind of request they hold.
+"""
+
+from __future__ import annotations
+
+import re
+
+REMOVE_WORDS = re.compile(
+    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
+    r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
+    r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
+)
+ADD_WORDS = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
+
+_QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
+# Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
+# the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
+_INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|"
+                   r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
+# Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
+# in the mood of a command, whatever the politeness around them.
+_LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
+                     r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show)\b")
+# A request put politely, at the start of the sentence or of a clause ("..., could you add two
+# cars?"): a command even when it ends with a question mark.
+_POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^please\b")
+
+
+def asks(low: str) -> bool:
+    """Whether the (lower-case) words ask for information rather than for a change."""
+    polite = bool(_POLITE.search(low))
+    return bool(_INFO.search(low) or _LOOKUP.match(low)) or (
+        not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))
+
+
+__all__ = ["ADD_WORDS", "REMOVE_WORDS", "asks"]
