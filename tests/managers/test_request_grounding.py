@@ -163,3 +163,10 @@ def test_a_demonstration_is_shown_only_if_this_requests_grammar_allows_its_field
     assert fits(plain, schema)
     assert not fits(counted, schema) and not fits(coloured, schema)
     assert not fits({"tool": "remove_assets", "args": {"category": "bench"}}, schema)
+
+
+def test_an_angle_said_is_offered_only_to_a_turn_never_as_metres(campus: Scene, spelling_grounder: Grounder) -> None:
+    need = Requirement(kind="move", what="bench")
+    props = _props(_args("Turn the bench 90 degrees.", need, campus, "move_asset", spelling_grounder))
+    assert props["turn_deg"]["enum"] == [90.0, -90.0]
+    assert not {"forward", "left", "east", "north"} & set(props)

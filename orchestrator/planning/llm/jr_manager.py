@@ -135,8 +135,8 @@ def _unasked_fields(kind: Family, said: RequestNames, sure_category: bool) -> fr
     if said.directions and kind == "move":
         unasked |= set(MOVE_DIRECTIONS) - {name for name, _ in said.directions}
     if not said.numbers:
-        unasked |= NUMBER_FIELDS
-    if not said.turning:
+        unasked |= NUMBER_FIELDS - TURN_FIELDS
+    if not said.turning and not said.angles:
         unasked |= TURN_FIELDS
     if said.assets and not said.categories and kind in ("appearance", "remove"):
         unasked.add("category")  # "car 1", not every car
@@ -148,6 +148,8 @@ def _unasked_fields(kind: Family, said: RequestNames, sure_category: bool) -> fr
 def _stated_fields(kind: Family, said: RequestNames) -> frozenset[str]:
     """Fields the request states a value for, which a small model still leaves out
     ("move the hydrant 2 m east" as a move of nothing)."""
+    if kind == "move" and said.angles and not said.numbers:
+        return frozenset({"turn_deg"})
     if not said.numbers:
         return frozenset()
     if kind == "move" and said.directions:
@@ -177,6 +179,7 @@ def _narrow_to_request(
     names.places = keep(names.places, [*said.places, *pointed], world.places)
     names.relations = list(said.relations)
     names.numbers = list(said.numbers)
+    names.angles = list(said.angles)
     names.colours = list(said.colours)
     names.shapes = list(said.shapes)
     names.signs = dict(said.directions)

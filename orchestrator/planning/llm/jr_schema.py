@@ -48,6 +48,7 @@ class WorldNames:
     # Set from what the request itself says (llm/request_names.py); empty means not narrowed.
     relations: list[str] = field(default_factory=list)
     numbers: list[float] = field(default_factory=list)
+    angles: list[float] = field(default_factory=list)
     colours: list[str] = field(default_factory=list)
     shapes: list[str] = field(default_factory=list)
     # The sign a direction word gives a move field ("south" makes north negative).
@@ -122,8 +123,9 @@ def _slim(node: Any, defs: dict[str, Any], names: WorldNames, prop: str | None =
             out[key] = [r for r in value if r not in OMITTED_FIELDS | names.omitted]
         else:
             out[key] = value
-    if prop in NUMBER_FIELDS and names.numbers and out.get("type") in ("number", "integer"):
-        said = _said_numbers(out, names.numbers, prop in SIGNED_FIELDS, names.signs.get(prop))
+    amounts = names.angles if prop in TURN_FIELDS else names.numbers
+    if prop in NUMBER_FIELDS and amounts and out.get("type") in ("number", "integer"):
+        said = _said_numbers(out, amounts, prop in SIGNED_FIELDS | TURN_FIELDS, names.signs.get(prop))
         if said:
             return {"type": out["type"], "enum": said}
     if out.get("type") == "string" and "enum" not in out and "pattern" not in out:

@@ -20,7 +20,7 @@ from drivetwin.tools.base import FAMILIES, Family
 from drivetwin.worlds.scene import Scene
 
 # Slot kinds whose value is a number said in the request, and what they measure.
-_NUMBER_SLOTS = ("count", "distance", "radius", "speed", "angle", "x", "y")
+_NUMBER_SLOTS = ("count", "distance", "radius", "speed", "x", "y")
 # Relation words the slot reader leaves out as too vague for adapting an example ("at",
 # "around", "by"), still worth a relation here; first match wins.
 _PLAIN_RELATIONS: tuple[tuple[str, str], ...] = (
@@ -39,7 +39,9 @@ _PUTTING: tuple[Family, ...] = ("add", "arrange", "position", "move", "appearanc
 # Families for a thing that is already there (the ego, "car 1"): it is not added again.
 _EXISTING: tuple[Family, ...] = ("position", "move", "appearance")
 # Questions the request reader misses: misspelt openers ("wheres", "were is").
-_QUESTION = re.compile(r"^\s*(wheres|were (is|are)|whats|wat|wich|hw|how (many|much)|is (there|any|some)\w*|are there)\b")
+_QUESTION = re.compile(
+    r"^\s*(wheres|were (is|are)|whats|wat|wich|hw|how (many|much)|is (there|any|some)\w*|are there|tel+ me|list)\b"
+)
 # Direction words -> the move field they set and its sign ("1.5 m south" is north -1.5).
 DIRECTIONS: tuple[tuple[str, str, int], ...] = (
     (r"\beast(ward)?s?\b", "east", 1),
@@ -79,6 +81,8 @@ class RequestNames:
     places: tuple[str, ...] = ()
     relations: tuple[str, ...] = ()
     numbers: tuple[float, ...] = ()
+    # Numbers said as angles ("90 degrees"): only a heading or a turn takes them.
+    angles: tuple[float, ...] = ()
     colours: tuple[str, ...] = ()
     # Move fields the request's direction words set, with their sign.
     directions: tuple[tuple[str, int], ...] = ()
@@ -101,8 +105,9 @@ class RequestNames:
             return list(_EXISTING)
         if self.polarity == "add":
             return list(_PUTTING)
-        # No removal word: nothing is taken away; not read as a question: nothing is only looked up.
-        return [f for f in FAMILIES if f not in ("remove", "search")]
+        # No removal word: nothing is taken away. A search stays: a question the readers miss
+        # must not be forced into an edit ("tel me the lanes" became a tree).
+        return [f for f in FAMILIES if f != "remove"]
 
 
 def _relation(low: str, said: list[str]) -> list[str]:
@@ -122,6 +127,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     places: list[str] = []
     relations: list[str] = []
     numbers: list[float] = list(request.numbers)
+    angles: list[float] = []
     colours: list[str] = []
     for kind, value in slots:
         if kind == "category":
@@ -133,10 +139,13 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
             places.append(value)
         elif kind == "relation":
             relations.append(value)
+        elif kind == "angle":
+            angles.append(float(value))
         elif kind in _NUMBER_SLOTS:
             numbers.append(float(value))
         elif kind == "colour" and re.search(rf"\b{value}\b", prompt.lower()):  # said, not implied by a thing
             colours.append(value)
+    numbers = [n for n in numbers if n not in angles]
     # The request reader also reads "car" in "car 1" as a category: that car is an asset named.
     named_kinds = {found.category for a in assets if (found := scene.asset(a)) is not None}
     categories += sorted(request.categories - set(categories) - named_kinds)
@@ -158,6 +167,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         behaviour=_BEHAVIOUR.search(low) is not None,
         turning=_TURNING.search(low) is not None,
         question=request.question or _QUESTION.match(low) is not None,
+        angles=tuple(dict.fromkeys(angles)),
         polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
     )
 
