@@ -170,3 +170,16 @@ def test_an_angle_said_is_offered_only_to_a_turn_never_as_metres(campus: Scene, 
     props = _props(_args("Turn the bench 90 degrees.", need, campus, "move_asset", spelling_grounder))
     assert props["turn_deg"]["enum"] == [90.0, -90.0]
     assert not {"forward", "left", "east", "north"} & set(props)
+
+
+def test_a_speed_said_is_offered_only_as_a_speed_never_as_a_count(campus: Scene, spelling_grounder: Grounder) -> None:
+    need = Requirement(kind="add", what="car", where="main_westbound", how="driving")
+    props = _props(_args("Add a car driving in main_westbound at 6 m/s.", need, campus, "add_asset", spelling_grounder))
+    assert "count" not in props
+    assert _props(props["behaviour"])["speed"]["enum"] == [6.0]
+
+
+def test_a_weather_word_is_the_only_weather_offered(campus: Scene, spelling_grounder: Grounder) -> None:
+    need = Requirement(kind="appearance", what="skies")
+    props = _props(_args("clear skies", need, campus, "set_weather", spelling_grounder))
+    assert props["kind"]["enum"] == ["clear"]

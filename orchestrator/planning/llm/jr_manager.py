@@ -135,7 +135,7 @@ def _unasked_fields(kind: Family, said: RequestNames, sure_category: bool) -> fr
     if said.directions and kind == "move":
         unasked |= set(MOVE_DIRECTIONS) - {name for name, _ in said.directions}
     if not said.numbers:
-        unasked |= NUMBER_FIELDS - TURN_FIELDS
+        unasked |= NUMBER_FIELDS - TURN_FIELDS - ({"speed"} if said.speeds else set())
     if not said.turning and not said.angles:
         unasked |= TURN_FIELDS
     if said.assets and not said.categories and kind in ("appearance", "remove"):
@@ -180,6 +180,8 @@ def _narrow_to_request(
     names.relations = list(said.relations)
     names.numbers = list(said.numbers)
     names.angles = list(said.angles)
+    names.speeds = list(said.speeds)
+    names.weathers = list(said.weathers)
     names.colours = list(said.colours)
     names.shapes = list(said.shapes)
     names.signs = dict(said.directions)

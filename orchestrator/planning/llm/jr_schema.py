@@ -49,6 +49,8 @@ class WorldNames:
     relations: list[str] = field(default_factory=list)
     numbers: list[float] = field(default_factory=list)
     angles: list[float] = field(default_factory=list)
+    speeds: list[float] = field(default_factory=list)
+    weathers: list[str] = field(default_factory=list)
     colours: list[str] = field(default_factory=list)
     shapes: list[str] = field(default_factory=list)
     # The sign a direction word gives a move field ("south" makes north negative).
@@ -123,11 +125,13 @@ def _slim(node: Any, defs: dict[str, Any], names: WorldNames, prop: str | None =
             out[key] = [r for r in value if r not in OMITTED_FIELDS | names.omitted]
         else:
             out[key] = value
-    amounts = names.angles if prop in TURN_FIELDS else names.numbers
+    amounts = names.angles if prop in TURN_FIELDS else names.speeds if prop == "speed" else names.numbers
     if prop in NUMBER_FIELDS and amounts and out.get("type") in ("number", "integer"):
         said = _said_numbers(out, amounts, prop in SIGNED_FIELDS | TURN_FIELDS, names.signs.get(prop))
         if said:
             return {"type": out["type"], "enum": said}
+    if prop == "kind" and names.weathers and set(names.weathers) <= set(out.get("enum", ())):
+        return {**out, "enum": list(names.weathers)}  # the weather's kind, not a behaviour's
     if out.get("type") == "string" and "enum" not in out and "pattern" not in out:
         out.setdefault("maxLength", FREE_TEXT_CHARS)
     if out.get("type") == "object":

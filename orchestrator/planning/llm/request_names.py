@@ -58,6 +58,8 @@ _BEHAVIOUR = re.compile(
     r"\b(driv\w*|mov(e|es|ing)|park(ed|s)?|stall\w*|circl\w*|loop\w*|skidpad|cross(es|ing)?|jaywalk\w*|walk(s|ing)?"
     r"|cut\w*|follow\w*|patrol\w*|lap\w*|cruis\w*|travel\w*|speed|km/h|mph|m/s)\b"
 )
+# A speed as said, before conversion to m/s: its number is no count or distance.
+_SPEED = re.compile(r"(\d+(?:\.\d+)?)\s*(m/s|km/h|kmh|kph|mph)")
 # Words that ask for a heading or a turn.
 _TURNING = re.compile(r"\b(turn\w*|rotat\w*|fac(e|es|ing)|head(ing)?|degrees?|deg|yaw|spin\w*|angle)\b|°")
 # Layout words -> the arrange shapes they mean.
@@ -81,8 +83,11 @@ class RequestNames:
     places: tuple[str, ...] = ()
     relations: tuple[str, ...] = ()
     numbers: tuple[float, ...] = ()
-    # Numbers said as angles ("90 degrees"): only a heading or a turn takes them.
+    # Numbers said as angles ("90 degrees"): only a heading or a turn takes them; speeds
+    # ("6 m/s", "20 km/h", as m/s) only a speed.
     angles: tuple[float, ...] = ()
+    speeds: tuple[float, ...] = ()
+    weathers: tuple[str, ...] = ()
     colours: tuple[str, ...] = ()
     # Move fields the request's direction words set, with their sign.
     directions: tuple[tuple[str, int], ...] = ()
@@ -128,6 +133,8 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     relations: list[str] = []
     numbers: list[float] = list(request.numbers)
     angles: list[float] = []
+    speeds: list[float] = []
+    weathers: list[str] = []
     colours: list[str] = []
     for kind, value in slots:
         if kind == "category":
@@ -141,11 +148,16 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
             relations.append(value)
         elif kind == "angle":
             angles.append(float(value))
+        elif kind == "speed":
+            speeds.append(float(value))
+        elif kind == "weather":
+            weathers.append(str(value))
         elif kind in _NUMBER_SLOTS:
             numbers.append(float(value))
         elif kind == "colour" and re.search(rf"\b{value}\b", prompt.lower()):  # said, not implied by a thing
             colours.append(value)
-    numbers = [n for n in numbers if n not in angles]
+    said_speeds = [float(m.group(1)) for m in _SPEED.finditer(prompt.lower())]
+    numbers = [n for n in numbers if n not in angles and n not in said_speeds and n not in speeds]
     # The request reader also reads "car" in "car 1" as a category: that car is an asset named.
     named_kinds = {found.category for a in assets if (found := scene.asset(a)) is not None}
     categories += sorted(request.categories - set(categories) - named_kinds)
@@ -168,6 +180,8 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         turning=_TURNING.search(low) is not None,
         question=request.question or _QUESTION.match(low) is not None,
         angles=tuple(dict.fromkeys(angles)),
+        speeds=tuple(dict.fromkeys(speeds)),
+        weathers=tuple(dict.fromkeys(weathers)),
         polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
     )
 
