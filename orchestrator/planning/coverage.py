@@ -217,7 +217,9 @@ def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
     out = []
     for m in named_in(masked):
         before = m.last_words(1)
-        asked_new = bool(before) and (before[0] in _INDEFINITE or before[0] in ph.NUMBER_WORDS or before[0].isdigit())
+        # "put tree at lot A": a bare noun after a placing verb may be a new one; the plan may not assume
+        asked_new = bool(before) and (before[0] in _INDEFINITE or before[0] in ph.NUMBER_WORDS or before[0].isdigit()
+                                      or before[0] in ("put", "place", "plant", "stick"))
         if asked_new and m.category in moved and m.category not in out:
             out.append(m.category)
     return out

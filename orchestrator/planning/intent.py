@@ -26,8 +26,10 @@ _INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|nu
 _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
                      r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show)\b")
 # A request put politely, at the start of the sentence or of a clause ("..., could you add two
-# cars?"): a command even when it ends with a question mark.
-_POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^please\b")
+# cars?", "could the bus go ..."): a command even when it ends with a question mark.
+_POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^please\b"
+                     # "could the second car go in lot A?": a wish for where a thing should be
+                     r"|^(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive)\b")
 
 
 def asks(low: str) -> bool:

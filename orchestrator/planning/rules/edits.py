@@ -261,6 +261,8 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
             angle = DEFAULT_SPIN_DEG
         return [ToolCall(tool="move_asset", args={"asset": asset, "turn_deg": angle})]
     kind = behaviour_kind(r, motion)
+    if kind == "drive_lane" and r.landmark and not r.lane and r.has(("go", "goes")):
+        kind = None  # "could the car go in lot A?": a place to be, not a lane to drive
     if kind is not None and kind != "parked":
         notes.subject = [asset]
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": behaviour_spec(kind, r)})]

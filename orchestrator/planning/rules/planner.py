@@ -221,6 +221,18 @@ def _unknown_words(clause: str, scene: Scene) -> list[str]:
     return [w for w in content if w not in ids and not is_known(w.strip("'-."), vocab)]
 
 
+def _more_of_a_thing(r: Reading) -> bool:
+    """Whether "more" asks for more things ("more cones", "two more there"), not more of a quality
+    ("more realistic")."""
+    for said in re.finditer(r"\bmore\b", r.low):
+        after = r.low[said.end() :]
+        if not after.strip() or re.match(r"\s+(?:of|there|here|please|too|like)\b", after):
+            return True
+        if any(0 <= m.start - said.end() <= 2 for m in r.mentions):
+            return True
+    return False
+
+
 def _is_question(r: Reading, asked: bool) -> bool:
     words = r.low.strip().removeprefix("so ").removeprefix("ok ").removeprefix("now ").strip()
     starts = any(re.match(rf"{re.escape(w)}\b", words) for w in lx.SEARCH_STARTS)
@@ -232,7 +244,7 @@ def _is_question(r: Reading, asked: bool) -> bool:
         return False
     within = re.search(r"(\s,\s*(where|which|what)|how many|how much)\b", r.low)
     # "I need the number of trees", "tell me which cars ...": the check's reading of a question
-    return starts or asked or bool(within) or asks(words)
+    return starts or (asked and asks(words + " ?")) or bool(within) or asks(words)
 
 
 def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
@@ -262,7 +274,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             return env
     if r.has(lx.BLOCK_WORDS) and not r.ids:
         return [_block(r, scene, memory, notes)]
-    strict_add = r.has(_STRICT_ADD)
+    strict_add = r.has(tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r)
     mention = r.mentions[0] if r.mentions else None
     # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
     present = mention is not None and scene.count(mention.category) >= (2 if mention.plural else 1)

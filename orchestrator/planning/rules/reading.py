@@ -63,11 +63,16 @@ def _unique_place_words(scene: Scene) -> dict[str, str]:
 def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
     """The landmark named in normalised text (articles ignored; longest name wins), and its span."""
     best: tuple[int, str, int, int] | None = None
+    low = re.sub(r"(?<=[a-z0-9])'s\b", "  ", low)  # "lot B's entrance" is the lot B entrance
     bare = _ARTICLES.sub("", low)
     for landmark in scene.landmarks:
         for name in landmark.names():
             key = _ARTICLES.sub("", ph.normalise(name)).strip()
-            m = re.search(rf"(?<![a-z0-9]){re.escape(key)}(?![a-z0-9])", bare)
+            spaced = r"\s+".join(map(re.escape, key.split()))
+            # as written first: the "a" of "lot a instead" is the lot's letter, not an article
+            m = re.search(rf"(?<![a-z0-9]){spaced}(?![a-z0-9])", low) or re.search(
+                rf"(?<![a-z0-9]){spaced}(?![a-z0-9])", bare
+            )
             if m and (best is None or len(key) > best[0]):
                 # Map the span back to `low` by finding the same words there.
                 words = r"\s+(?:(?:the|a|an)\s+)?".join(re.escape(w) for w in key.split())
