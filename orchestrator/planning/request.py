@@ -13,9 +13,7 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-from drivetwin.orchestrator.planning.intent import ADD_WORDS as ADD_WORDS  # TODO(lead): llm/request_names.py -> intent
-from drivetwin.orchestrator.planning.intent import REMOVE_WORDS as REMOVE_WORDS
-from drivetwin.orchestrator.planning.intent import asks
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
@@ -107,4 +105,4 @@ def _is_reference(text: str, start: int) -> bool:
     return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in ("lot", "no"))
 
 
-__all__ = ["ADD_WORDS", "REMOVE_WORDS", "Request", "read_request"]
+__all__ = ["Request", "read_request"]

@@ -14,7 +14,8 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-from drivetwin.orchestrator.planning.request import ADD_WORDS, REMOVE_WORDS, read_request
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS
+from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.retrieval.slots import read_slots
 from drivetwin.tools.base import FAMILIES, Family
 from drivetwin.worlds.scene import Scene
