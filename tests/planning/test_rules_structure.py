@@ -1,0 +1,147 @@
+"""The rule planner reads the structure of a request: which verb governs which things, which thing
+moves and which is only where it goes, the scope a place gives, a direction, a layout, a count
+said after the thing, and what kind of request it is. Worded for this file, unlike any suite."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from drivetwin.orchestrator.planning.check import review
+from drivetwin.orchestrator.planning.intent import asks
+from drivetwin.orchestrator.planning.rules import modifiers as md
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.planning.rules.reading import find_place
+from misreading import Fixed, call  # this folder is on sys.path (no __init__.py)
+
+
+def calls_of(context, prompt: str) -> list[tuple[str, dict[str, object]]]:
+    return [(c.tool, c.args) for c in RulePlanner().plan(prompt, context).calls]
+
+
+def test_one_verb_governs_each_thing_joined_to_it(context):
+    calls = calls_of(context, "delete the bench plus the stop sign")
+    assert [(tool, args.get("category")) for tool, args in calls] == [
+        ("remove_assets", "bench"),
+        ("remove_assets", "stop_sign"),
+    ]
+
+
+def test_things_joined_inside_a_layout_stay_one_clause(context):
+    ((tool, args),) = calls_of(context, "a ring of cones and a barrier round the fountain")
+    assert tool == "arrange_assets" and set(args["categories"]) == {"traffic_cone", "road_barrier"}
+
+
+def test_the_thing_named_first_moves_and_the_ego_is_where_it_goes(context):
+    ((tool, args),) = calls_of(context, "set the suv 6 m behind the ego")
+    assert tool == "place_asset" and args["asset"] == "suv_1"
+    assert args["location"] == {"relation": "behind", "target": "ego", "distance": 6.0}
+
+
+def test_behind_us_names_the_ego(context):
+    ((tool, args),) = calls_of(context, "the suv just behind us please")
+    assert tool == "place_asset" and args["location"]["target"] == "ego"
+
+
+def test_a_compass_move_shifts_east_and_north(context):
+    assert calls_of(context, "shove the bench 3 m west") == [
+        ("move_asset", {"asset": "bench_1", "east": -3.0, "north": 0.0})
+    ]
+
+
+def test_a_bit_is_a_small_step(context):
+    ((tool, args),) = calls_of(context, "could the suv roll back a little")
+    assert tool == "move_asset" and args["forward"] < 0
+
+
+def test_every_member_of_a_catalog_group_in_a_place_moves_together(context, campus):
+    ((tool, args),) = calls_of(context, "shift every vehicle in parking lot B 2 m south")
+    in_lot_b = {a.id for a in campus.assets if a.category in ("passenger_car", "suv")
+                and math.dist((a.pose.x, a.pose.y), campus.landmark("parking lot B").position) < 40}
+    assert tool == "move_asset" and set(args["assets"]) == in_lot_b and args["north"] == -2.0
+
+
+def test_a_removal_takes_only_the_things_at_the_place_it_names(context, campus):
+    ((tool, args),) = calls_of(context, "I'd like the fountain area without any trees")
+    fountain = campus.landmark("fountain").position
+    removed = [campus.asset(i) for i in args["assets"]]
+    assert tool == "remove_assets" and removed
+    assert all(math.dist((a.pose.x, a.pose.y), fountain) <= 20.0 for a in removed)
+    assert len(removed) < campus.count("tree")
+
+
+def test_one_of_the_plural_is_one(context):
+    ((_, args),) = calls_of(context, "add one of those little research rovers")
+    assert args["count"] == 1
+
+
+def test_a_count_may_follow_the_thing(context):
+    ((_, args),) = calls_of(context, "bollards x5 at the fountain, as a ring")
+    assert args["count"] == 5
+
+
+def test_a_grid_takes_its_columns(context):
+    ((tool, args),) = calls_of(context, "8 benches as a grid of 4 columns in lot A")
+    assert tool == "arrange_assets" and args["shape"] == "grid" and args["columns"] == 4
+
+
+def test_lining_things_up_lays_out_a_line(context):
+    ((tool, args),) = calls_of(context, "line up five bins at the library")
+    assert tool == "arrange_assets" and args["shape"] == "line" and args["count"] == 5
+
+
+def test_a_material_changes_the_look_of_what_is_there(context):
+    assert calls_of(context, "make the bench metallic") == [
+        ("set_asset_appearance", {"assets": ["bench_1"], "material": "metal"})
+    ]
+
+
+def test_more_of_a_quality_is_not_more_things(context):
+    ((tool, _),) = calls_of(context, "the hydrant looks more natural on the sidewalk by the library")
+    assert tool == "place_asset"
+
+
+def test_a_wish_for_where_a_thing_should_be_places_it(context):
+    ((tool, args),) = calls_of(context, "could the first car go in lot B?")
+    assert tool == "place_asset" and args["location"]["target"] == "parking lot B"
+
+
+def test_a_statement_of_how_things_are_is_context_for_the_clause_that_acts(context):
+    calls = calls_of(context, "the trash bin next to the stop is a problem; could you take it away?")
+    assert calls == [("remove_assets", {"assets": ["trash_bin_1"]})]
+
+
+def test_a_letter_that_names_a_lot_is_not_an_article(campus):
+    assert find_place(campus, " leave it in lot a for now ")[0] == "parking lot A"
+    assert find_place(campus, " by lot b's entrance ")[0] == "parking lot B entrance"
+
+
+@pytest.mark.parametrize(
+    ("words", "question"),
+    [
+        ("i need to know how many benches there are", True),
+        ("tell me where the hydrant is", True),
+        ("could you add two bins by the library?", False),
+        ("could the suv park in lot a?", False),
+        ("is the bus near the stop?", True),
+    ],
+)
+def test_intent_tells_a_question_from_a_polite_command(words, question):
+    assert asks(words) is question
+
+
+def test_modifiers_read_direction_layout_groups_and_shares():
+    assert md.compass_direction("slide it 2 m northwards") == "north"
+    assert md.compass_direction("the north gate") is None  # a place's name, not a way to go
+    assert md.layout_said("stand them in a row") == "row"
+    assert md.layout_said("wait at the stop line") is None
+    assert "vehicle" in md.groups_said("all the vehicles")
+    assert md.groups_said("the street lights") == {}  # the lights of a category's own name
+    assert md.partitive_count("move two of the ") == 2
+
+
+def test_a_bare_noun_after_put_that_moves_the_one_there_is_asked_about(context):
+    plan = Fixed(call("place_asset", asset="bench_1", location={"relation": "at", "target": "fountain"}))
+    verdict = review("put bench at the fountain", plan.plan("put bench at the fountain", context), context)
+    assert verdict.action in ("ask", "refuse")
+    assert "new bench" in verdict.problems[0]
