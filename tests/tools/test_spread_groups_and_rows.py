@@ -104,3 +104,22 @@ def test_a_parking_row_longer_than_the_lot_is_refused_saying_how_many_fit(call: 
     with pytest.raises(RuleViolation, match=r"no free row for 14 parked passenger_car .* 11 fit side by side"):
         call(campus, "arrange_assets", categories=["passenger_car"], shape="parking_row", count=14,
              location={"relation": "at", "target": "parking lot A"})
+
+
+def test_a_line_in_front_of_a_vehicle_runs_along_its_lane_where_across_it_does_not_fit(
+    call: Caller, campus: Scene
+) -> None:
+    """Six cones across a 3.5 m lane would stand on the verge; without a direction said, the line
+    turns to run ahead of the ego, starting in front of it, all on the road."""
+    _, cones = _added(call, campus, "arrange_assets", categories=["traffic_cone"], count=6, shape="line",
+                      location={"relation": "in_front_of", "target": "ego"})
+    ego = campus.asset("ego")
+    assert ego is not None and len(cones) == 6
+    assert all(abs(c.pose.y - ego.pose.y) < 0.5 for c in cones)  # along the eastbound lane
+    assert all(c.pose.x > ego.pose.x + 2.0 for c in cones)  # ahead of the ego, not through it
+
+
+def test_a_line_with_a_direction_said_is_not_turned(call: Caller, campus: Scene) -> None:
+    with pytest.raises(RuleViolation, match="line position"):
+        call(campus, "arrange_assets", categories=["traffic_cone"], count=6, shape="line", heading_deg=90.0,
+             location={"relation": "in_front_of", "target": "ego"})
