@@ -796,8 +796,8 @@ REMOVAL: list[Json] = [
     case("removal.erroneous.cones_all", "now remove cone all of them", [count("traffic_cone", 0, 0), only("traffic_cone")],
          [call("remove_assets", category="traffic_cone")], setup=(ADD_THREE_CONES_PLANNED,)),
     case("removal.erroneous.hydrant_and_bin", "remove hydrant and trash bin both",
-         [gone("fire_hydrant_1", "trash_bin_1"), only(assets=("fire_hydrant_1", "trash_bin_1"))],
-         [call("remove_assets", assets=["fire_hydrant_1", "trash_bin_1"])], tags=COMPOUND),
+         [gone("fire_hydrant_1"), gone("trash_bin_1"), only(assets=("fire_hydrant_1", "trash_bin_1"))],
+         [call("remove_assets", assets=["fire_hydrant_1"]), call("remove_assets", assets=["trash_bin_1"])], tags=COMPOUND),
     case("removal.erroneous.helicopter", "remove the helicoptr from roof", REFUSED,
          [call("remove_assets", category="helicopter")], tags=IMPOSSIBLE, notes="no such category"),
 ]
@@ -855,7 +855,7 @@ APPEARANCE: list[Json] = [
          [call("set_weather", kind="snow", intensity=0.6)]),
     case("appearance.vague.drizzle", "a bit of drizzle", [env(weather=["rain"], intensity_min=0.05, intensity_max=0.5), only(environment=True)],
          [call("set_weather", kind="rain", intensity=0.3)]),
-    case("appearance.vague.dusk_and_mist", "dusk, and a little mist", 
+    case("appearance.vague.dusk_and_mist", "dusk, and a little mist",
          [env(weather=["fog"], intensity_max=0.6, time_from="17:30", time_to="21:30"), only(environment=True)],
          [call("set_weather", kind="fog", intensity=0.3), call("set_time_of_day", time="dusk")], tags=COMPOUND),
     # erroneous
