@@ -225,6 +225,8 @@ def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
             spec["radius"] = float(m.group(1))
         if r.has(("clockwise",)) and not r.has(("anticlockwise", "counterclockwise", "counter-clockwise")):
             spec["clockwise"] = True
+        if r.landmark:
+            spec["centre"] = r.landmark  # "circles in lot B": round that place, not where it stands
     if kind == "drive_lane" and r.lane:
         spec["lane"] = r.lane
     return spec

@@ -62,13 +62,14 @@ def groups_said(text: str) -> dict[str, frozenset[str]]:
 
 
 # A layout said by its shape; "stop line" and "lane line" are road markings, not layouts.
-_LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid)\b")
+_LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|side by side)\b")
 
 
 def layout_said(text: str) -> str | None:
-    """The shape of layout the words ask for ("in a line", "a row of", "a ring"), if any."""
+    """The shape of layout the words ask for ("in a line", "a row of", "a ring", "side by side"
+    is a row), if any."""
     said = _LAYOUT.search(text)
-    return said.group(1) if said else None
+    return None if said is None else "row" if said.group(1) == "side by side" else said.group(1)
 
 
 _MATERIALS = frozenset(m for m in typing.get_args(typing.get_args(AssetLookArgs.model_fields["material"].annotation)[0])

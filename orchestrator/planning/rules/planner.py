@@ -303,7 +303,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         env = environment(r)
         return env or None
     laid_out = r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
-    if (laid_out and not behaviour_kind(r, catalog()[mention.category].motion)) or r.has(("to mark",)):
+    moving = behaviour_kind(r, catalog()[mention.category].motion) not in (None, "parked")  # a row may be parked
+    if (laid_out and not moving) or r.has(("to mark",)):
         return [_arrange(r, scene, memory, notes)]
     return _add(r, scene, memory, notes)
 
@@ -365,7 +366,11 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     count = find_count(r, mentions[0]) or (len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None)
     if count:
         args["count"] = count
-    if r.has(("line", "row", "rows", "across")):
+    vehicles = all(catalog()[c].motion == "vehicle" for c in layout)
+    parking = r.has(("parked", "side by side", "car park", "parking")) or "parking" in str(r.landmark)
+    if vehicles and parking and (r.has(("row", "rows", "line", "side by side")) or r.has(lx.ARRANGE_WORDS)):
+        args["shape"] = "parking_row"  # "a row of parked cars in lot B": side by side in bays
+    elif r.has(("line", "row", "rows", "across")):
         args["shape"] = "line"
     elif r.has(("grid",)):
         args["shape"] = "grid"
