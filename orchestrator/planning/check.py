@@ -51,7 +51,7 @@ from drivetwin.orchestrator.planning.coverage import (
     wrong_direction,
 )
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, REMOVE_WORDS, asks
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import modifiers as md
@@ -208,7 +208,8 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
             for c in definite_but_added(request.masked, scope, scene)]
     if not request.question:
         out += environment_left_out(request.low, effect.calls)
-    limited = bool(request.numbers or request.place or request.lane or request.state)
+    # a number, a place, a lane, a state or "fewer" limits how many go
+    limited = bool(request.numbers or request.place or request.lane or request.state or FEWER_WORDS.search(request.low))
     out += partial_removal(request.masked, scope, scene, limited)
     out += [f"you asked for a new {c.replace('_', ' ')}, but the plan moves one that is there"
             for c in indefinite_but_moved(request.masked, scope, scene)]

@@ -11,9 +11,12 @@ import re
 
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
-    r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap)\b"
+    r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap"
+    r"|not (?:quite |nearly )?(?:so|as|that) many|too many|too much)\b"
     r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
 )
+# Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
+FEWER_WORDS = re.compile(r"\b(fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|too much|thin out|cut down on|reduce)\b")
 ADD_WORDS = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
 _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
@@ -39,4 +42,4 @@ def asks(low: str) -> bool:
         not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))
 
 
-__all__ = ["ADD_WORDS", "REMOVE_WORDS", "asks"]
+__all__ = ["ADD_WORDS", "FEWER_WORDS", "REMOVE_WORDS", "asks"]

@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 
 import pytest
+from drivetwin.orchestrator.planning.base import PlanningError
 from drivetwin.orchestrator.planning.check import review
 from drivetwin.orchestrator.planning.intent import asks
 from drivetwin.orchestrator.planning.rules import modifiers as md
@@ -145,3 +146,29 @@ def test_a_bare_noun_after_put_that_moves_the_one_there_is_asked_about(context):
     verdict = review("put bench at the fountain", plan.plan("put bench at the fountain", context), context)
     assert verdict.action in ("ask", "refuse")
     assert "new bench" in verdict.problems[0]
+
+
+def test_a_contraction_with_its_apostrophe_is_not_repaired_into_a_word(campus):
+    from drivetwin.orchestrator.planning.rules.spelling import repair
+
+    assert repair("we don't want it and can't keep it", campus).repairs == []
+
+
+def test_not_so_many_removes_some_not_all(context, campus):
+    ((tool, args),) = calls_of(context, "not quite so many benches, thanks")
+    assert tool == "remove_assets" and 0 < args.get("count", 0) < max(2, campus.count("bench") + 1)
+
+
+def test_a_colour_not_understood_is_asked_about_never_added(context):
+    with pytest.raises(PlanningError, match="which colour"):
+        RulePlanner().plan("paint the bench mauvish", context)
+
+
+def test_the_nearest_to_the_ego_are_the_ones_removed(context):
+    ((_, args),) = calls_of(context, "take away the 2 lamp posts nearest the ego")
+    assert args["count"] == 2 and args["near"] == "ego"
+
+
+def test_its_entrance_is_the_entrance_of_the_place_just_named(context):
+    calls = calls_of(context, "three parked cars in a row in lot B, then a parking sign by its entrance")
+    assert calls[-1][1]["location"]["target"] == "parking lot B entrance"

@@ -13,7 +13,7 @@ import re
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.intent import REMOVE_WORDS
+from drivetwin.orchestrator.planning.intent import FEWER_WORDS, REMOVE_WORDS
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -128,7 +128,7 @@ def _inside(point: tuple[float, float], polygon: list[tuple[float, float]]) -> b
 
 def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """remove_assets calls for a clause that asks for removal, or None when it names nothing."""
-    fewer = r.has(lx.FEWER_WORDS)
+    fewer = r.has(lx.FEWER_WORDS) or bool(FEWER_WORDS.search(r.low))
     gone = r.has(lx.GONE_WORDS)
     if r.ids or (r.ego and not r.mentions):
         return [ToolCall(tool="remove_assets", args={"assets": r.ids or ["ego"]})]
@@ -166,6 +166,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         args["count"] = count
     if r.landmark:
         args["near"] = r.landmark
+    elif count and r.ego and name != "ego_vehicle":
+        args["near"] = "ego"  # "the two lamps closest to the ego"
     elif count and memory.last_focus() is not None and recent:
         args["near"] = recent[0]
     return [ToolCall(tool="remove_assets", args=args)]

@@ -18,7 +18,7 @@ from drivetwin.orchestrator.planning.rules.reading import Reading
 from drivetwin.worlds.scene import Scene
 
 RELATIONS = (
-    (("in front of", "ahead of", "front of"), "in_front_of"),
+    (("in front of", "ahead of", "front of", "infront"), "in_front_of"),
     (("behind",), "behind"),
     (("left of", "to the left"), "left_of"),
     (("right of", "to the right"), "right_of"),
@@ -125,6 +125,10 @@ def location(
             "target": r.landmark if r.landmark and r.has(("outside", "front of", "near", "at")) else r.lane,
         }
     target: str | None = _asset_after_relation(r, scene, exclude)
+    if target is None and r.landmark is None and notes.place is not None and r.has(("its entrance", "the entrance")):
+        # "... in lot A and a sign at its entrance": the entrance of the place just named
+        entrance = scene.landmark(f"{notes.place.get('target')} entrance")
+        target = entrance.name if entrance is not None else None
     ids = [i for i in r.ids if i not in exclude]
     if target is None and r.landmark:
         target = r.landmark

@@ -294,6 +294,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         assert last is not None
         named = ph.Mention(last.category, len(r.low), len(r.low), plural=True)
         return _add(replace(r, mentions=[named]), scene, memory, notes)
+    if r.has(("paint", "repaint", "recolour", "recolor")) and not fresh:
+        # a thing to paint is one that is there; a colour not understood is asked, never an add
+        raise PlanningError(f"which colour? I know {', '.join(COLOURS)}")
     if mention is None:
         if r.has(lx.GENERIC_THINGS):
             return environment(r) or None  # "we want to put something there": an intention
@@ -364,6 +367,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     layout = list(dict.fromkeys(layout))
     args: dict[str, Any] = {"categories": layout[:4]}
     count = find_count(r, mentions[0]) or (len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None)
+    if count == 1:
+        count = None  # "a little grid of benches": the article counts the layout, not the benches
     if count:
         args["count"] = count
     vehicles = all(catalog()[c].motion == "vehicle" for c in layout)

@@ -99,6 +99,7 @@ def english_words() -> frozenset[str]:
 def _is_english(low: str) -> bool:
     """An English word, also as written without its apostrophe ("dont", "isnt", "thats")."""
     words = english_words()
+    low = low.replace("'", "")  # "don't" is "dont": a contraction, not a misspelt "donut"
     return low in words or (low.endswith("nt") and low[:-2] in words) or (low.endswith("s") and low[:-1] in words)
 
 
