@@ -172,3 +172,9 @@ def test_the_nearest_to_the_ego_are_the_ones_removed(context):
 def test_its_entrance_is_the_entrance_of_the_place_just_named(context):
     calls = calls_of(context, "three parked cars in a row in lot B, then a parking sign by its entrance")
     assert calls[-1][1]["location"]["target"] == "parking lot B entrance"
+
+
+def test_what_a_perception_test_is_about_is_not_added(context):
+    assert calls_of(context, "we are running a night test of cyclist detection") == [
+        ("set_time_of_day", {"time": "night"})
+    ]

@@ -367,7 +367,7 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     layout = list(dict.fromkeys(layout))
     args: dict[str, Any] = {"categories": layout[:4]}
     count = find_count(r, mentions[0]) or (len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None)
-    if count == 1:
+    if count == 1 and md.layout_said(" ".join(r.low[: mentions[0].start].split()[-3:])):
         count = None  # "a little grid of benches": the article counts the layout, not the benches
     if count:
         args["count"] = count

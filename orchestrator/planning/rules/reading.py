@@ -117,6 +117,7 @@ def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
     return None
 
 
+_PERCEPTION_TASK = re.compile(r"\s*(?:detection|detector|tracking|recognition|classification|perception)\b")
 # "behind us", "ahead of me": said from the driver's seat, the first person is the ego vehicle.
 FIRST_PERSON_EGO = re.compile(
     r"\b(?:behind|ahead of|in front of|front of|beside|next to|near|past|alongside|towards?|from|around|at) (us|me)\b"
@@ -198,6 +199,8 @@ def read(text: str, scene: Scene) -> Reading:
     if len(mentions) > 1 or place is not None:
         kept = [m for m in mentions if not re.search(r"\bfor\s+(the\s+|a\s+|an\s+)?$", low[: m.start])]
         mentions = kept if kept or place is not None else mentions
+    # "a night test of pedestrian detection": what a sensor task is about is its topic, not a thing asked for
+    mentions = [m for m in mentions if not _PERCEPTION_TASK.match(low[m.end :])]
     ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in ph.tokens(low)]
     numbered, mentions = _numbered(scene, low, mentions)
     return Reading(
