@@ -178,3 +178,9 @@ def test_what_a_perception_test_is_about_is_not_added(context):
     assert calls_of(context, "we are running a night test of cyclist detection") == [
         ("set_time_of_day", {"time": "night"})
     ]
+
+
+def test_the_world_named_by_its_own_name_is_no_place_in_it(campus):
+    assert find_place(campus, " two people at union ")[0] == "Student Union entrance"
+    named_union = campus.model_copy(update={"name": "union"})  # "in town" in a world called town
+    assert find_place(named_union, " how many people are in union ") is None

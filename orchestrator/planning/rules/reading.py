@@ -81,9 +81,10 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
                 best = (len(key), landmark.name, start, end)
     if best is not None:
         return best[1], best[2], best[3]
+    world = set(ph.tokens(scene.name))  # "in town", "on campus": the whole world, not its Town Hall
     for word, name in _unique_place_words(scene).items():
         m = re.search(rf"(?<![a-z0-9]){re.escape(word)}(?![a-z0-9])", low)
-        if m:
+        if m and word not in world:
             return name, m.start(), m.end()
     return None
 
