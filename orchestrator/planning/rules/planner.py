@@ -240,8 +240,6 @@ def _is_question(r: Reading, asked: bool) -> bool:
     command = re.sub(r"^(?:(?:please|pls|kindly|can|could|would|will)\s+(?:you\s+)?(?:please\s+)?)+", "", words)
     if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command):
         return False
-    if command != words and REMOVE_WORDS.match(command):  # "could you take it out?"
-        return False
     within = re.search(r"(\s,\s*(where|which|what)|how many|how much)\b", r.low)
     # "I need the number of trees", "tell me which cars ...": the check's reading of a question
     return starts or (asked and asks(words + " ?")) or bool(within) or asks(words)
