@@ -89,12 +89,14 @@ def _scoped_by_place(r: Reading, mention: ph.Mention, anywhere: bool = False) ->
     return r.landmark_at >= mention.end and bool(_SCOPE.fullmatch(r.low[mention.end : r.landmark_at] + " "))
 
 
-def _at_place(scene: Scene, place: str, ids: list[str]) -> list[str]:
-    """Those of `ids` standing at a place: inside its area, or near its point, nearest first."""
+def _at_place(scene: Scene, place: str, ids: list[str], reach: float | None = None) -> list[str]:
+    """Those of `ids` standing at a place: inside its area, or within `reach` of its point (by
+    default near an area's point, further from a place without one), nearest first."""
     landmark = scene.landmark(place)
     if landmark is None:
         return []
-    reach = NEAR_PLACE_M if landmark.polygon is not None else SCOPE_RADIUS_M
+    if reach is None:
+        reach = NEAR_PLACE_M if landmark.polygon is not None else SCOPE_RADIUS_M
     out = []
     for i in ids:
         a = scene.asset(i)
@@ -106,21 +108,6 @@ def _at_place(scene: Scene, place: str, ids: list[str]) -> list[str]:
     return [i for _, i in sorted(out)]
 
 
-def _near(scene: Scene, place: str, radius: float, keep_permanent: bool) -> list[str]:
-    landmark = scene.landmark(place)
-    if landmark is None:
-        return []
-    out = []
-    for a in scene.assets:
-        tags = catalog()[a.category].tags
-        if "light" in tags or (not keep_permanent and "permanent" in tags):
-            continue
-        inside = landmark.polygon is not None and _inside((a.pose.x, a.pose.y), landmark.polygon)
-        if inside or math.dist((a.pose.x, a.pose.y), landmark.position) <= radius:
-            out.append((math.dist((a.pose.x, a.pose.y), landmark.position), a.id))
-    return [i for _, i in sorted(out)]
-
-
 def _inside(point: tuple[float, float], polygon: list[tuple[float, float]]) -> bool:
     xs, ys = [p[0] for p in polygon], [p[1] for p in polygon]
     return min(xs) <= point[0] <= max(xs) and min(ys) <= point[1] <= max(ys)
@@ -128,7 +115,7 @@ def _inside(point: tuple[float, float], polygon: list[tuple[float, float]]) -> b
 
 def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """remove_assets calls for a clause that asks for removal, or None when it names nothing."""
-    fewer = r.has(lx.FEWER_WORDS) or bool(FEWER_WORDS.search(r.low))
+    fewer = bool(FEWER_WORDS.search(r.low))
     gone = r.has(lx.GONE_WORDS)
     if r.ids or (r.ego and not r.mentions):
         return [ToolCall(tool="remove_assets", args={"assets": r.ids or ["ego"]})]
@@ -137,7 +124,10 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             works = [c.name for c in catalog().values() if "maintenance" in c.tags and scene.count(c.name)]
             return [ToolCall(tool="remove_assets", args={"category": c}) for c in works] or None
         if r.landmark and (r.has(lx.GENERIC_THINGS) or gone or r.has(("empty", "clear"))):
-            ids = _near(scene, r.landmark, NEAR_PLACE_M, keep_permanent=fewer or r.has(("everything",)))
+            keep_permanent = fewer or r.has(("everything",))
+            clutter = [a.id for a in scene.assets if "light" not in (tags := catalog()[a.category].tags)
+                       and (keep_permanent or "permanent" not in tags)]
+            ids = _at_place(scene, r.landmark, clutter, reach=NEAR_PLACE_M)
             notes.guess(f"what counts as the things at {r.landmark}")
             if not ids:
                 return None

@@ -17,7 +17,7 @@ from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
-from drivetwin.orchestrator.planning.intent import REMOVE_WORDS, asks
+from drivetwin.orchestrator.planning.intent import FEWER_WORDS, REMOVE_WORDS, asks
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
@@ -256,7 +256,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return plan_question(r, scene, memory, notes)
     # The removal words the plan check reads polarity by ("take it out", "without the bin") count too.
     taken_away = bool(REMOVE_WORDS.search(r.low.strip()))
-    if r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or r.has(lx.FEWER_WORDS) or _NEGATED_WISH.search(r.low) or taken_away:
+    fewer = bool(FEWER_WORDS.search(r.low))
+    if r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or fewer or _NEGATED_WISH.search(r.low) or taken_away:
         removed = remove(r, scene, memory, notes)
         if removed is not None:
             return removed
