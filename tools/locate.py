@@ -70,6 +70,10 @@ class Location(BaseModel):
     offset_m: float | None = Field(
         None, ge=0.0, le=10.0, description="with side: metres from the centreline (default: at the edge)"
     )
+    lane: str | None = Field(
+        None, description="with relation 'in_lane' and a landmark or asset target: the lane id to stand "
+        "in, at its point nearest the target (default: the lane nearest the target)",
+    )
 
 
 @dataclass(frozen=True)
@@ -193,7 +197,7 @@ def resolve_anchor(scene: Scene, location: Location, new_half_length: float,
     else:
         target = resolve_target(scene, location.target)
     if rel == "in_lane":
-        return _lane_anchor(scene, target, location.distance)
+        return _lane_anchor(scene, target, location.distance, location.lane)
     if rel == "on_sidewalk":
         return _sidewalk_anchor(scene, target)
     if rel == "at":
@@ -239,12 +243,15 @@ def _along_anchor(scene: Scene, location: Location, category_name: str | None) -
     return Anchor(pose.x, pose.y, spot.yaw, near=target, spot=spot)
 
 
-def _lane_anchor(scene: Scene, target: Target, distance: float | None) -> Anchor:
+def _lane_anchor(scene: Scene, target: Target, distance: float | None, lane_id: str | None = None) -> Anchor:
     lanes = scene.roads.lanes
     if not lanes:
         raise NotFoundError("this world has no lanes")
-    if target.lane_id is not None:
-        lane = next(lane for lane in lanes if lane.id == target.lane_id)
+    lane_id = target.lane_id or lane_id
+    if lane_id is not None:
+        lane = next((lane for lane in lanes if lane.id == lane_id), None)
+        if lane is None:
+            raise NotFoundError(f"no lane {lane_id!r}; lanes: {', '.join(ln.id for ln in lanes)}")
     else:
         lane = min(lanes, key=lambda ln: nearest_on_polyline(target.x, target.y, ln.centreline).distance)
     near = nearest_on_polyline(target.x, target.y, lane.centreline)

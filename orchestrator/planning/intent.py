@@ -12,14 +12,19 @@ import re
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap"
+    # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
+    r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)"
     r"|not (?:quite |nearly )?(?:so|as|that) many|too many|too much)\b"
     r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
+    r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to)"  # "nobody should be parked there"
 )
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
 FEWER_WORDS = re.compile(r"\b(fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|too much|thin out|cut down on|reduce)\b")
 ADD_WORDS = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
-_QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b")
+_QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b"
+                             # "the gates, where are they": the thing first, the question after it
+                             r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
 _INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|"
@@ -35,11 +40,25 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      r"|^(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive)\b")
 
 
+# A clause saying why ("... so traffic can flow again", "... so that the ego has to stop", "in
+# order to test the wipers"): the reason for a request, not a second request.
+_REASON = re.compile(
+    r",?\s+(?:so that|so as to|in order to|in order that|so)\s+(?:(?:the |a |our |we |they |it |cars |traffic |people )?\w*\s*)?"
+    r"(?:can|could|will|would|may|might|won'?t|can'?t|cannot|doesn'?t|don'?t|has to|have to|gets?|is|are)\b[^.;!?]*",
+    re.IGNORECASE,
+)
+
+
+def without_reason(text: str) -> str:
+    """`text` without the clauses that only say why ("so buses can pass")."""
+    return _REASON.sub("", text)
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
     polite = bool(_POLITE.search(low))
     return bool(_INFO.search(low) or _LOOKUP.match(low)) or (
-        not polite and (bool(_QUESTION_START.match(low)) or low.rstrip().endswith("?")))
+        not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")))
 
 
-__all__ = ["ADD_WORDS", "FEWER_WORDS", "REMOVE_WORDS", "asks"]
+__all__ = ["ADD_WORDS", "FEWER_WORDS", "REMOVE_WORDS", "asks", "without_reason"]

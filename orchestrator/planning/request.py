@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks, without_reason
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
@@ -53,7 +53,7 @@ class Request:
 
 def read_request(prompt: str, scene: Scene) -> Request:
     """The request's signals: polarity, categories, numbers, place, lane, state and mood."""
-    low = ph.normalise(repair(prompt, scene).text).strip()
+    low = ph.normalise(without_reason(repair(prompt, scene).text)).strip()
     place = _named_place(scene, low)
     masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for

@@ -32,6 +32,19 @@ SCOPE_RADIUS_M = 20.0
 DEFAULT_STEP_M = 3.0
 SMALL_STEP_M = 1.5
 DEFAULT_SPIN_DEG = 90.0
+# Words that point at what the conversation is about: pronouns, and a demonstrative with a word
+# for any thing ("remove that thing").
+_POINTING = ("it", "them", "that one", "those", "they", "its", "him", "her", "that thing", "this thing",
+             "that object", "this object", "those things", "these things")
+# "make the suv stand out": a look meant to be seen, in the colour of safety clothing.
+_CONSPICUOUS = ("stand out", "stands out", "eye-catching", "conspicuous", "easy to spot", "easier to spot", "hi-vis", "high-vis")
+CONSPICUOUS_COLOUR = "orange"
+# A motion verb with a side and no amount ("pull forward", "nudge it left", "roll back"), not a
+# relation ("left of the bench") or a lane ("the right lane").
+_SIDE_MOVE = re.compile(
+    r"\b(?:pull|nudge|move|shift|push|roll|inch|edge|creep|slide|budge|bump|scoot|go|come|drive)s?\b(?:\s+[\w']+){0,3}?"
+    r"\s+(?:forwards?|ahead|back|backwards?|left|right)\b(?!\s+(?:of|lane|side|hand))"
+)
 _RECENT = ("you added", "you just added", "that", "those", "these", "the new", "last", "it", "them")
 
 
@@ -66,7 +79,7 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         if mention.plural or r.has(("all", "every", "each")):
             return present
         return recent[-1:] if recent else present[:1]
-    if r.has(("it", "them", "that one", "those", "they", "its", "him", "her")):
+    if r.has(_POINTING):
         if notes.subject:
             return notes.subject
         return [i for i in memory.last_added() if scene.asset(i) is not None]
@@ -123,6 +136,12 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         if r.has(lx.WORKS_WORDS):
             works = [c.name for c in catalog().values() if "maintenance" in c.tags and scene.count(c.name)]
             return [ToolCall(tool="remove_assets", args={"category": c}) for c in works] or None
+        if r.landmark and r.has(("nobody", "no one", "no-one")):
+            # "nobody should be parked at X": the vehicles there; "... standing at X": the walkers
+            motion = "vehicle" if r.has(lx.BEHAVIOUR_WORDS["parked"]) else "walker"
+            there = [a.id for a in scene.assets if catalog()[a.category].motion == motion and a.category != "ego_vehicle"]
+            ids = _at_place(scene, r.landmark, there, reach=NEAR_PLACE_M)
+            return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
         if r.landmark and (r.has(lx.GENERIC_THINGS) or gone or r.has(("empty", "clear"))):
             keep_permanent = fewer or r.has(("everything",))
             clutter = [a.id for a in scene.assets if "light" not in (tags := catalog()[a.category].tags)
@@ -169,6 +188,8 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     colour = next((c for c in COLOURS if r.has((c,))), None)
     if colour is None and r.has(("blend in", "match", "same colour as", "colour of", "coloured like")):
         colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
+    if colour is None and r.has(_CONSPICUOUS):
+        colour = CONSPICUOUS_COLOUR
     material = md.material_said(r.masked)
     if colour is None and material is None:
         return None
@@ -263,7 +284,11 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
     scoped = bool(r.mentions) and _scoped_by_place(r, r.mentions[0])
     anchored = (r.landmark and not scoped) or (r.ego and "ego" not in ids) or any(i not in ids for i in r.ids)
-    shift = metres if metres is not None else (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else None)
+    small = r.has(("a bit", "slightly", "a little", "nudge", "inch", "budge"))
+    shift = metres if metres is not None else (SMALL_STEP_M if small else None)
+    if shift is None and _SIDE_MOVE.search(r.low):
+        notes.guess("how far to move")  # "the SUV should pull forward a few metres"
+        shift = DEFAULT_STEP_M
     moved: dict[str, Any] = {"asset": asset} if len(ids) == 1 else {"assets": ids}
     compass = md.compass_direction(r.masked)
     if compass is not None and shift is not None and not anchored:

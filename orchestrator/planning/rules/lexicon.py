@@ -45,7 +45,7 @@ WEATHER_WORDS: dict[str, tuple[str, ...]] = {
     "rain": ("rain", "raining", "rainy", "drizzle", "drizzling", "downpour", "storm", "stormy", "wet",
              "showers", "pouring", "wipers", "wiper", "umbrella", "puddles"),
     "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy", "visibility", "murky", "smog"),
-    "snow": ("snow", "snowy", "snowing", "blizzard", "snowfall", "wintry", "icy", "sleet"),
+    "snow": ("snow", "snowy", "snowing", "blizzard", "snowfall", "wintry", "winter", "icy", "sleet"),
     "cloudy": ("cloudy", "overcast", "clouds", "grey sky", "gloomy"),
     "clear": ("clear weather", "clear the weather", "clear sky", "sunny", "make it clear", "sun",
               "sunshine", "stop raining", "stop the rain", "no rain", "fine weather", "clear skies",
@@ -59,7 +59,7 @@ LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "s
 # (words, preset) in order: the first that matches wins, so "midnight" beats "night".
 TIME_PRESETS = ((("midnight",), "midnight"), (("night", "nighttime", "night time", "nite", "dark",
                  "darker", "late at night"), "night"), (("evening", "after work"), "evening"),
-                (("dusk", "twilight", "getting dark"), "dusk"), (("sunset",), "sunset"),
+                (("dusk", "twilight", "getting dark"), "dusk"), (("sunset", "golden hour", "golden-hour"), "sunset"),
                 (("dawn", "first light"), "dawn"), (("sunrise",), "sunrise"),
                 (("morning", "breakfast"), "morning"), (("afternoon",), "afternoon"),
                 (("noon", "midday", "lunchtime", "lunch time", "lunch"), "noon"),

@@ -62,14 +62,16 @@ def groups_said(text: str) -> dict[str, frozenset[str]]:
 
 
 # A layout said by its shape; "stop line" and "lane line" are road markings, not layouts.
-_LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|side by side)\b")
+_LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|side by side|avenue)\b")
 
 
 def layout_said(text: str) -> str | None:
     """The shape of layout the words ask for ("in a line", "a row of", "a ring", "side by side"
     is a row), if any."""
     said = _LAYOUT.search(text)
-    return None if said is None else "row" if said.group(1) == "side by side" else said.group(1)
+    if said is None:
+        return None
+    return {"side by side": "row", "avenue": "line"}.get(said.group(1), said.group(1))  # an avenue: trees in a line
 
 
 _MATERIALS = frozenset(m for m in typing.get_args(typing.get_args(AssetLookArgs.model_fields["material"].annotation)[0])

@@ -192,7 +192,7 @@ def find_coordinates(text: str) -> tuple[float, float] | None:
     low = text.lower()
     m = re.search(r"(?:\bat\b|\bto\b|\()\s*" + _COORDS.pattern, low)
     if m is None:
-        m = re.search(rf"x\s*=\s*{_COORD}\s*,?\s*y\s*=\s*{_COORD}", low)
+        m = re.search(rf"\bx\s*[=:]?\s*{_COORD}\s*(?:,|and)?\s*\by\s*[=:]?\s*{_COORD}", low)  # "x 40 y -20" too
     if m is None:
         return None
     x, y = (nb.Number(nb.parse(m.group(i)), m.group(i), m.start(i), m.end(i)) for i in (1, 2))

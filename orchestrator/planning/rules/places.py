@@ -120,10 +120,9 @@ def location(
     ):
         if r.lane_guessed:
             notes.guess(f"which lane of the road ({r.lane})")
-        return {
-            "relation": "in_lane",
-            "target": r.landmark if r.landmark and r.has(("outside", "front of", "near", "at")) else r.lane,
-        }
+        if r.landmark:  # "the eastbound lane by the east gate": that lane, where it passes the place
+            return {"relation": "in_lane", "target": r.landmark, **({} if r.lane_guessed else {"lane": r.lane})}
+        return {"relation": "in_lane", "target": r.lane}
     target: str | None = _asset_after_relation(r, scene, exclude)
     if target is None and r.landmark is None and notes.place is not None and r.has(("its entrance", "the entrance")):
         # "... in lot A and a sign at its entrance": the entrance of the place just named

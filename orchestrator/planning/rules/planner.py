@@ -17,7 +17,7 @@ from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
-from drivetwin.orchestrator.planning.intent import FEWER_WORDS, REMOVE_WORDS, asks
+from drivetwin.orchestrator.planning.intent import FEWER_WORDS, REMOVE_WORDS, asks, without_reason
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
@@ -100,6 +100,11 @@ _STRICT_ADD = (
     "give me",
 )
 
+# Closing a road by its name or kind ("close Main Street at the east gate", "shut the lane").
+_CLOSE_ROAD = re.compile(r"^\s*(?:please )?(?:close|block|shut|seal)(?: off)? (?:the )?(?:[\w-]+ )?(?:road|street|lane|avenue|drive)\b")
+# A layout named as the means of a request ("... with a row of bollards", "using a line of cones").
+_WITH_LAYOUT = re.compile(r"\b(?:with|using|by putting|by placing) (?:a |an )?(?:[\w-]+ )?(?:row|line|ring|circle|wall|grid) of\b")
+
 # A wish said in the negative ("I don't want the bench any more", "we no longer need cones",
 # "I'd rather not have a bus"): the thing should go, whatever the verb.
 _NEGATED_WISH = re.compile(
@@ -117,6 +122,7 @@ def _clauses(prompt: str) -> list[tuple[str, bool]]:
     out: list[tuple[str, bool]] = []
     for i in range(0, len(parts), 2):
         text = parts[i].strip()
+        text = without_reason(text).strip() or text
         if not text:
             continue
         asked = i + 1 < len(parts) and "?" in parts[i + 1]
@@ -271,8 +277,13 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         env = environment(r)
         if env:
             return env
-    if r.has(lx.BLOCK_WORDS) and not r.ids:
+    if (r.has(lx.BLOCK_WORDS) or _CLOSE_ROAD.search(r.low)) and not r.ids:
         return [_block(r, scene, memory, notes)]
+    instrument = _WITH_LAYOUT.search(r.low)
+    if instrument is not None and any(m.start > instrument.start() for m in r.mentions):
+        # "stop cars driving in through the gate with a row of bollards": the row is what to build
+        laid = [m for m in r.mentions if m.start > instrument.start()]
+        return [_arrange(replace(r, mentions=laid), scene, memory, notes)]
     strict_add = r.has(tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r)
     mention = r.mentions[0] if r.mentions else None
     # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
@@ -359,13 +370,25 @@ _COLUMNS = re.compile(r"\b(\d+|[a-z]+)\s+(?:columns?|colums?|cols?)\b")
 _SAME_AGAIN = re.compile(r"\b(?:same (?:again|as before|thing)|the same but|again but)\b")
 
 
+# "... with barriers", "with a few cones": what a layout is made of, named after its place.
+_WITH = re.compile(r"\bwith\s+(?:[\w-]+\s+){0,3}$")
+_VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
+
+
 def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     mentions = r.mentions
     around_pos = r.low.find(" around ")
-    layout = [m.category for m in mentions if around_pos < 0 or m.start < around_pos] or [mentions[0].category]
+
+    def laid_out(m: ph.Mention) -> bool:  # "around the rubble with barriers": the barriers are laid out
+        return around_pos < 0 or m.start < around_pos or bool(_WITH.search(r.low[: m.start]))
+
+    layout = [m.category for m in mentions if laid_out(m)] or [mentions[0].category]
     layout = list(dict.fromkeys(layout))
     args: dict[str, Any] = {"categories": layout[:4]}
-    count = find_count(r, mentions[0]) or (len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None)
+    first = next(m for m in mentions if m.category == layout[0]) if any(laid_out(m) for m in mentions) else mentions[0]
+    count = find_count(r, first) or (len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None)
+    if _VAGUE_AMOUNT.search(r.low[: first.start]) and r.has(("all the way", "all around", "surround", "encircle")):
+        count = None  # "some bollards all the way around it": as many as the ring needs
     if count == 1 and md.layout_said(" ".join(r.low[: mentions[0].start].split()[-3:])):
         count = None  # "a little grid of benches": the article counts the layout, not the benches
     if count:
@@ -374,7 +397,7 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     parking = r.has(("parked", "side by side", "car park", "parking")) or "parking" in str(r.landmark)
     if vehicles and parking and (r.has(("row", "rows", "line", "side by side")) or r.has(lx.ARRANGE_WORDS)):
         args["shape"] = "parking_row"  # "a row of parked cars in lot B": side by side in bays
-    elif r.has(("line", "row", "rows", "across")):
+    elif r.has(("rows", "across")) or md.layout_said(r.low) in ("line", "row"):
         args["shape"] = "line"
     elif r.has(("grid",)):
         args["shape"] = "grid"

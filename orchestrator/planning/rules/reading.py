@@ -60,6 +60,11 @@ def _unique_place_words(scene: Scene) -> dict[str, str]:
     return {w: next(iter(o)) for w, o in owners.items() if len(o) == 1 and w not in taken and len(w) > 3}
 
 
+# A place name ending in an -ing word and followed by its object ("a pedestrian crossing the
+# road") reads as a verb phrase, not as the place.
+_VERB_OBJECT = re.compile(r"\s+(?:the|a|an|this|that|over)\b")
+
+
 def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
     """The landmark named in normalised text (articles ignored; longest name wins), and its span."""
     best: tuple[int, str, int, int] | None = None
@@ -73,6 +78,8 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
             m = re.search(rf"(?<![a-z0-9]){spaced}(?![a-z0-9])", low) or re.search(
                 rf"(?<![a-z0-9]){spaced}(?![a-z0-9])", bare
             )
+            if m and key.endswith("ing") and _VERB_OBJECT.match(m.string[m.end() :]):
+                continue  # "a pedestrian crossing the road": a walker crossing, not the crossing
             if m and (best is None or len(key) > best[0]):
                 # Map the span back to `low` by finding the same words there.
                 words = r"\s+(?:(?:the|a|an)\s+)?".join(re.escape(w) for w in key.split())
@@ -81,12 +88,33 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
                 best = (len(key), landmark.name, start, end)
     if best is not None:
         return best[1], best[2], best[3]
+    shortened = _shortened_name(scene, low)
+    if shortened is not None:
+        return shortened
     world = set(ph.tokens(scene.name))  # "in town", "on campus": the whole world, not its Town Hall
     for word, name in _unique_place_words(scene).items():
         m = re.search(rf"(?<![a-z0-9]){re.escape(word)}(?![a-z0-9])", low)
         if m and word not in world:
             return name, m.start(), m.end()
     return None
+
+
+def _shortened_name(scene: Scene, low: str) -> tuple[str, int, int] | None:
+    """A place said by the first and last words of a longer name ("the west lot" for "west
+    parking lot"), when exactly one place's names shorten so."""
+    found: dict[str, tuple[int, int]] = {}
+    for landmark in scene.landmarks:
+        for name in landmark.names():
+            words = ph.tokens(ph.normalise(name))
+            if len(words) < 3:
+                continue
+            m = re.search(rf"(?<![a-z0-9]){re.escape(words[0])}\s+{re.escape(words[-1])}(?![a-z0-9])", low)
+            if m:
+                found[landmark.name] = (m.start(), m.end())
+    if len(found) != 1:
+        return None
+    (name, (start, end)), = found.items()
+    return name, start, end
 
 
 def _place_head_word(scene: Scene, low: str) -> str | None:
@@ -158,12 +186,21 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
     return ids, rest
 
 
+# Catalog words that are also verbs of the requests people make.
+_VERB_NOUNS = ("stop", "plant", "post", "signal", "seat", "cycle", "park")
+
+# Words for a person who does something to a thing named beside them.
+_AGENTS = ("someone", "somebody")
+
+
 def _concepts(low: str, taken: list[ph.Mention]) -> list[ph.Mention]:
     found: list[ph.Mention] = []
     for category, words in lx.CONCEPTS.items():
         for word in words:
             m = re.search(rf"(?<![a-z]){re.escape(word)}(?![a-z])", low)
             if m and not any(t.start < m.end() and m.start() < t.end for t in taken + found):
+                if word in _AGENTS and taken:
+                    continue  # "someone left their car there": the car is the thing, not the someone
                 found.append(ph.Mention(category, m.start(), m.end(), True))
     return found
 
@@ -186,12 +223,14 @@ def read(text: str, scene: Scene) -> Reading:
     for start, end in spans:
         masked = _blank(masked, start, end)
     mentions = [m for m in ph.find_categories(text) if not any(m.start < e and s < m.end for s, e in spans)]
-    # "stop" is a verb before a noun phrase or at the start ("stop the ego"), a sign otherwise.
+    # A catalog word that is also a verb ("stop the ego", "plant an avenue of trees", "post a
+    # sign") is the verb before a noun phrase or at the start, the thing otherwise.
     mentions = [
         m
         for m in mentions
         if not (
-            low[m.start : m.end] == "stop" and (m.start <= 1 or re.match(r"\s+(the|our|it|that|ego)\b", low[m.end :]))
+            low[m.start : m.end] in _VERB_NOUNS
+            and (m.start <= 1 or re.match(r"\s+(the|our|it|that|ego|an?|some|\d+|two|three|four|five|six)\b", low[m.end :]))
         )
     ]
     mentions += _concepts(masked, mentions)
@@ -243,7 +282,9 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
             return lx.COLLECTIVE_COUNTS[word] or None
         if word.isdigit() or word in ph.NUMBER_WORDS or any(c.isdigit() for c in word) or word in ("nan", "inf"):
             break
-    return ph.count_in_window(before, ph.singular(reading.low[mention.start : mention.end].strip()) + "s")
+    count = ph.count_in_window(before, ph.singular(reading.low[mention.start : mention.end].strip()) + "s")
+    # "a no-go zone with cones": an "a" belongs to a singular noun, never to the plural one
+    return None if count == 1 and mention.plural and not re.search(r"\b1\s*$", before) else count
 
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:

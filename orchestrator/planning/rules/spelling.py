@@ -264,9 +264,33 @@ def edits(a: str, b: str) -> int:
     return prev[len(b)]
 
 
+# An action verb's -ing form used as the command itself ("removing the rubble on the junction",
+# "adding two cones there"), as non-native writers often do: read as the verb. Only where a thing
+# follows, so "the moving car" stays an adjective. Verbs whose -ing form is a noun or a state in
+# this domain ("parking", "crossing", "building", "driving") are not among them.
+_COMMAND_VERBS = ("remove", "delete", "erase", "eliminate", "add", "create", "spawn", "insert", "place", "put",
+                  "move", "shift", "relocate", "rotate", "paint", "change", "make", "set", "get", "take", "bring")
+_GERUND = re.compile(
+    r"\b(remov|delet|eras|eliminat|add|creat|spawn|insert|plac|putt|mov|shift|relocat|rotat|paint|chang|mak|sett"
+    r"|gett|tak|bring)ing(?= (?:the|a|an|all|every|some|that|those|this|these|it|them|\d|one|two|three|four|five)\b)",
+    re.IGNORECASE,
+)
+
+
+# "were is the lot": "were" before "is" is never the verb, always a slip for "where".
+_WHERE_SLIP = re.compile(r"\bwere(?= (?:is|are|can|do|does|did|was)\b)", re.IGNORECASE)
+
+
+def _verb_of(m: re.Match[str]) -> str:
+    stem = m.group(1).lower()
+    return next(v for v in _COMMAND_VERBS if v in (stem, stem + "e", stem[:-1]))
+
+
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
+    text = _GERUND.sub(_verb_of, text)
+    text = _WHERE_SLIP.sub("where", text)
     repairs: list[str] = []
 
     def fix(m: re.Match[str]) -> str:

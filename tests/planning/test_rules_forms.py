@@ -1,0 +1,146 @@
+"""The rule planner reads the forms a request takes beyond the plain imperative: a gerund used as
+the command, a reason added with "so ...", a thing pointed at with "that thing", "out of here",
+"nobody should ...", a layout named as the means, a place said by part of its name, a lane where
+it passes a place, a catalog word used as a verb, and an "a" that cannot count a plural. Worded
+for this file, unlike any suite."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from drivetwin.orchestrator.planning.intent import asks
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.planning.rules.reading import find_place
+from drivetwin.orchestrator.planning.rules.spelling import repair
+from drivetwin.tools.errors import NotFoundError
+from drivetwin.tools.locate import Location, resolve_anchor
+
+
+def calls_of(context, prompt: str) -> list[tuple[str, dict[str, object]]]:
+    return [(c.tool, c.args) for c in RulePlanner().plan(prompt, context).calls]
+
+
+def test_a_gerund_before_a_thing_is_the_command(context):
+    assert calls_of(context, "deleting the hydrant near the library")[0][0] == "remove_assets"
+    assert repair("the moving car", context.scene).text == "the moving car"  # an adjective stays
+
+
+def test_a_reason_after_so_is_not_a_second_request(session):
+    assert session.submit("add cement rubble at the junction").ok
+    report = session.submit("empty the crossroads so buses can pass again")
+    assert report.ok and session.scene.count("cement_rubble") == 0 and session.scene.count("bus") == 0
+
+
+def test_that_thing_points_at_what_the_last_turn_added(session):
+    assert session.submit("drop a cement rubble at lot B").ok
+    added = [a.id for a in session.scene.assets if a.category == "cement_rubble"]
+    report = session.submit("now delete that thing")
+    assert report.ok and all(session.scene.asset(i) is None for i in added[-1:])
+
+
+def test_out_of_here_takes_a_thing_away(context):
+    ((tool, args),) = calls_of(context, "take the bus out of the scene")
+    assert tool == "remove_assets" and "bus" in str(args)
+
+
+def test_coordinates_without_equals_signs_are_read(context):
+    ((tool, args),) = calls_of(context, "put the bench to x 12 y -7")
+    assert tool == "place_asset" and args["location"] == {"relation": "absolute", "x": 12.0, "y": -7.0}
+
+
+def test_a_side_move_with_no_amount_takes_a_default_step(context):
+    ((tool, args),) = calls_of(context, "the suv should roll back a bit")
+    assert tool == "move_asset" and args["forward"] < 0
+    ((tool, args),) = calls_of(context, "the suv ought to edge forward")
+    assert tool == "move_asset" and args["forward"] > 0
+
+
+def test_a_lane_said_with_a_place_stands_in_that_lane_by_that_place(context, campus):
+    ((tool, args),) = calls_of(context, "a van stalled in the westbound lane by the library")
+    assert tool == "add_asset" and args["location"] == {
+        "relation": "in_lane", "target": "Library entrance", "lane": "main_westbound"}
+    anchor = resolve_anchor(campus, Location(**args["location"]), 3.0)
+    assert anchor.lane_id == "main_westbound"
+
+
+def test_an_a_in_front_of_another_noun_does_not_count_a_plural(context):
+    ((tool, args),) = calls_of(context, "give lot A a safe corner with bollards")
+    assert tool == "add_asset" and args.get("count") != 1
+
+
+def test_someone_doing_something_to_a_thing_is_not_a_pedestrian_to_add(context):
+    ((tool, args),) = calls_of(context, "somebody abandoned a bicycle at the fountain")
+    assert tool == "add_asset" and args["category"] == "bicycle"
+
+
+def test_a_place_name_read_as_a_verb_phrase_is_not_the_place(context, campus):
+    place = find_place(campus, " a pedestrian crossing the road by the north crosswalk ")
+    assert place is not None and place[0] == "north crosswalk"
+
+
+def test_a_place_said_by_the_first_and_last_words_of_its_name(campus):
+    place = find_place(campus, " leave it in the west lot ")
+    assert place is not None and place[0] == "parking lot A"
+
+
+def test_where_slips_and_a_question_after_the_thing_are_questions(context):
+    assert repair("were is the fountain", context.scene).text.startswith("where is")
+    assert asks("the hydrants, where are they")
+    assert not asks("remove the bench, which is in the way")
+
+
+def test_a_catalog_word_used_as_the_verb_is_not_the_thing(context):
+    ((tool, args),) = calls_of(context, "plant a row of bins along lot B")
+    assert tool == "arrange_assets" and args.get("categories", [args.get("category")]) == ["trash_bin"]
+
+
+def test_a_layout_named_as_the_means_is_what_is_built(context):
+    ((tool, args),) = calls_of(context, "keep buses out of lot A using a line of barriers")
+    assert tool == "arrange_assets" and args["categories"] == ["road_barrier"] and args["shape"] == "line"
+
+
+def test_things_laid_out_with_are_the_layout_not_its_centre(session):
+    assert session.submit("put some rubble in lot B").ok
+    report = session.submit("surround the rubble with cones")
+    assert report.ok and [a.category for a in session.scene.assets].count("traffic_cone") >= 3
+
+
+def test_nobody_should_be_somewhere_removes_who_is_there(session):
+    assert session.submit("add a pedestrian at the fountain").ok
+    walkers = [a.id for a in session.scene.assets if a.category == "pedestrian"]
+    report = session.submit("no one should be standing at the fountain")
+    assert report.ok and session.scene.asset(walkers[-1]) is None
+
+
+def test_closing_a_road_by_its_name_lays_barriers_across_it(context):
+    ((tool, args),) = calls_of(context, "shut Main Street near the library")
+    assert tool == "arrange_assets" and args["shape"] == "line" and "road_barrier" in args["categories"]
+
+
+def test_standing_out_asks_for_a_conspicuous_colour(context):
+    ((tool, args),) = calls_of(context, "the suv needs to stand out")
+    assert tool == "set_asset_appearance" and args["colour"] == "orange"
+
+
+def test_an_avenue_is_a_line(context):
+    ((tool, args),) = calls_of(context, "an avenue of benches along lot B")
+    assert tool == "arrange_assets" and args["shape"] == "line"
+
+
+def test_a_ring_of_some_things_all_the_way_round_takes_as_many_as_it_needs(context):
+    ((tool, args),) = calls_of(context, "some bollards all the way around the fountain")
+    assert tool == "arrange_assets" and "count" not in args
+
+
+def test_lane_field_names_a_lane_unknown_to_the_world_in_one_line(campus):
+    with pytest.raises(NotFoundError, match="no lane 'main_sideways'"):
+        resolve_anchor(campus, Location(relation="in_lane", target="fountain", lane="main_sideways"), 3.0)
+
+
+def test_a_lane_by_a_place_is_nearer_the_place_than_the_lane_start(campus):
+    lib = campus.landmark("Library entrance")
+    assert lib is not None
+    anchor = resolve_anchor(campus, Location(relation="in_lane", target="Library entrance", lane="main_eastbound"), 3.0)
+    start = next(ln for ln in campus.roads.lanes if ln.id == "main_eastbound").centreline[0]
+    assert math.dist((anchor.x, anchor.y), lib.position) < math.dist(start, lib.position)
