@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 import pytest
+from drivetwin.orchestrator.planning.base import PlanningError
 from drivetwin.orchestrator.planning.intent import asks
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.planning.rules.reading import find_place
@@ -144,3 +145,17 @@ def test_a_lane_by_a_place_is_nearer_the_place_than_the_lane_start(campus):
     anchor = resolve_anchor(campus, Location(relation="in_lane", target="Library entrance", lane="main_eastbound"), 3.0)
     start = next(ln for ln in campus.roads.lanes if ln.id == "main_eastbound").centreline[0]
     assert math.dist((anchor.x, anchor.y), lib.position) < math.dist(start, lib.position)
+
+
+def test_a_question_about_a_thing_this_world_has_no_word_for_is_refused_by_name(context):
+    with pytest.raises(PlanningError, match="no 'airships'"):
+        RulePlanner().plan("how many airships are hovering over the quad?", context)
+
+
+def test_turn_of_before_the_lights_is_a_slip_for_off(context):
+    assert calls_of(context, "switch of the street lamps") == [("set_lighting", {"street_lights": "off"})]
+
+
+def test_a_colour_said_after_the_thing_in_another_clause_is_for_that_thing(context):
+    calls = calls_of(context, "the suv must be easy to spot; bright green works")
+    assert calls[-1] == ("set_asset_appearance", {"assets": ["suv_1"], "colour": "green"})

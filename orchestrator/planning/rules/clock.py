@@ -20,7 +20,7 @@ _WORD_NUMBERS = {
 }
 _HOUR = r"(\d{1,2}|" + "|".join(sorted(_WORD_NUMBERS, key=len, reverse=True)) + ")"
 # Words after a time that say which half of the day it is in.
-_AFTERNOON = re.compile(r"^\s*(pm|p\.m\.|in the (afternoon|evening)|at night|tonight|in the night)\b")
+_AFTERNOON = re.compile(r"^\s*(pm|p\.m\.|(?:in|of|during) (?:the )?(afternoon|evening)|at night|tonight|in the night)\b")
 _MORNING = re.compile(r"^\s*(am|a\.m\.|in the morning)\b")
 # "18:30", "18.30" (with a time word near), "6 pm", "7 o'clock", "0630 hours".
 _DIGITAL = re.compile(r"(?<![\w.:])(\d{1,2})\s*(?:([:.])\s*(\d\d))?\s*(am|pm|a\.m\.|p\.m\.|o'?\s?clock|h|hrs|hours)?(?![\w:])")

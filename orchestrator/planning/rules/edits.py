@@ -37,7 +37,7 @@ DEFAULT_SPIN_DEG = 90.0
 _POINTING = ("it", "them", "that one", "those", "they", "its", "him", "her", "that thing", "this thing",
              "that object", "this object", "those things", "these things")
 # "make the suv stand out": a look meant to be seen, in the colour of safety clothing.
-_CONSPICUOUS = ("stand out", "stands out", "eye-catching", "conspicuous", "easy to spot", "easier to spot", "hi-vis", "high-vis")
+_CONSPICUOUS = ("stand out", "stands out", "hard to miss", "eye-catching", "conspicuous", "easy to spot", "easier to spot", "hi-vis", "high-vis")
 CONSPICUOUS_COLOUR = "orange"
 # A motion verb with a side and no amount ("pull forward", "nudge it left", "roll back"), not a
 # relation ("left of the bench") or a lane ("the right lane").
@@ -194,6 +194,8 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     if colour is None and material is None:
         return None
     ids = referenced(r, scene, memory, notes)
+    if not ids and not r.mentions and notes.subject:
+        ids = notes.subject  # "the ego should be hard to miss; bright yellow would do": the earlier clause's thing
     if not ids:
         if r.mentions and r.has(("paint", "recolour", "colour")):
             raise ph_error(f"there is no {r.mentions[0].category} in the scene to recolour")

@@ -43,7 +43,7 @@ SIDE_WORDS = (("forward", "forward", 1), ("forwards", "forward", 1), ("ahead", "
               ("right", "left", -1), ("aside", "left", 1), ("over", "left", 1))
 WEATHER_WORDS: dict[str, tuple[str, ...]] = {
     "rain": ("rain", "raining", "rainy", "drizzle", "drizzling", "downpour", "storm", "stormy", "wet",
-             "showers", "pouring", "wipers", "wiper", "umbrella", "puddles"),
+             "showers", "pouring", "wipers", "wiper", "umbrella", "puddles", "precipitation"),
     "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy", "visibility", "murky", "smog"),
     "snow": ("snow", "snowy", "snowing", "blizzard", "snowfall", "wintry", "winter", "icy", "sleet"),
     "cloudy": ("cloudy", "overcast", "clouds", "grey sky", "gloomy"),

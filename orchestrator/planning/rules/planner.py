@@ -273,6 +273,10 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             return environment(r)
         if any(m.category == "street_light" for m in r.mentions):
             return [ToolCall(tool="set_lighting", args={"street_lights": switch.group(2)})]
+    if not (r.mentions or r.ids or r.ego) and notes.subject and any(r.has((c,)) for c in COLOURS):
+        colour = recolour(r, scene, memory, notes)  # "...; bright yellow would do": a look for the thing just named
+        if colour is not None:
+            return [colour]
     if (not r.mentions and not r.ids and not r.ego) or r.has(("weather", "time of day")):
         env = environment(r)
         if env:

@@ -22,6 +22,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.places import Notes
 from drivetwin.orchestrator.planning.rules.reading import Reading, read
+from drivetwin.orchestrator.planning.rules.spelling import is_known, vocabulary
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.search import FindAssets, FindAssetsArgs
@@ -82,6 +83,11 @@ class Part:
     found: tuple[str, ...] = ()
 
 
+# The thing a question asks about, right after its question words ("how many helicopters", "where
+# is the zeppelin", "are there any trams").
+_ASKED_ABOUT = re.compile(r"\b(?:how many|where (?:is|are)(?: the| a| an| my| our)?|(?:is|are) there(?: any| an?| some)?) ([a-z]{3,})\b")
+
+
 def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
     """The search calls that answer a question clause: one per part of a compound question."""
     texts = [t for t in _NEXT_PART.split(r.text) if t.strip(" ,")]
@@ -106,6 +112,13 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
 
 def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None) -> Part | None:
     low = r.low
+    asked_about = _ASKED_ABOUT.search(r.masked)
+    if asked_about and not (r.mentions or r.ids or r.ego) and not is_known(asked_about.group(1), vocabulary(scene)):
+        # "how many helicopters are parked?": about a thing this world has no word for, so no count
+        from drivetwin.orchestrator.planning.base import PlanningError  # rules/__init__ imports the planner
+
+        raise PlanningError(f"there is no {asked_about.group(1)!r} in this world; things here are such as "
+                            f"{', '.join(sorted({a.category for a in scene.assets})[:8])}")
     named = _named(r, scene)
     back = _back_reference(r, scene, memory, notes, earlier)
     if _names_nothing(r) and _OF_EACH.search(r.masked) and notes.subject:

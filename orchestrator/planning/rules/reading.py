@@ -284,7 +284,8 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
             break
     count = ph.count_in_window(before, ph.singular(reading.low[mention.start : mention.end].strip()) + "s")
     # "a no-go zone with cones": an "a" belongs to a singular noun, never to the plural one
-    return None if count == 1 and mention.plural and not re.search(r"\b1\s*$", before) else count
+    # ("a buss" right before is a singular misspelt, and stays one)
+    return None if count == 1 and mention.plural and not re.search(r"\b(?:1|an?)\s*$", before) else count
 
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:

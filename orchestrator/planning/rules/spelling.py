@@ -281,6 +281,10 @@ _GERUND = re.compile(
 _WHERE_SLIP = re.compile(r"\bwere(?= (?:is|are|can|do|does|did|was)\b)", re.IGNORECASE)
 
 
+# "turn of the street light": "of" right after a switching verb is a slip for "off".
+_OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
+
+
 def _verb_of(m: re.Match[str]) -> str:
     stem = m.group(1).lower()
     return next(v for v in _COMMAND_VERBS if v in (stem, stem + "e", stem[:-1]))
@@ -291,6 +295,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     vocab = vocabulary(scene)
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
+    text = _OFF_SLIP.sub(r"\1 off", text)
     repairs: list[str] = []
 
     def fix(m: re.Match[str]) -> str:
