@@ -217,6 +217,14 @@ def _parking_row(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: li
     )
 
 
+# Shifts of a whole layout tried where it does not fit as anchored: none first, then nearest first
+# in eight directions, up to LAYOUT_SHIFT_MAX_M.
+LAYOUT_SHIFT_MAX_M = 6.0
+_SHIFTS = [(0.0, 0.0)] + [
+    (d * math.cos(k * math.pi / 4), d * math.sin(k * math.pi / 4))
+    for d in (1.0, 2.0, 3.0, 4.0, 5.0, LAYOUT_SHIFT_MAX_M) for k in range(8)
+]
+
 LAYOUTS = {"ring": _ring, "line": _line, "grid": _grid, "lane_edge": _lane_edge, "parking_row": _parking_row}
 
 
@@ -240,13 +248,23 @@ class ArrangeAssets(Tool[ArrangeArgs]):
         if args.shape == "line" and args.heading_deg is None:
             layouts.append(_turned_line)  # no direction said: the other way round if this one does not fit
         refusals: list[RuleViolation] = []
-        for layout in layouts:
-            poses = layout(args, scene, sizes, [c.width for c in cats])
-            try:
-                placed = self._placed(args, scene, poses)
-                break
-            except RuleViolation as exc:
-                refusals.append(exc)
+        tried = [layout(args, scene, sizes, [c.width for c in cats]) for layout in layouts]
+        # Where a line or grid does not fit as anchored (a line at an entrance running into the
+        # wall), the nearest shift of the whole layout that does, unless coordinates pinned it; a
+        # ring stays round its centre.
+        movable = args.shape in ("line", "grid") and args.location.relation != "absolute"
+        shifts = _SHIFTS if movable else [(0.0, 0.0)]
+        for dx, dy in shifts:
+            for candidate in tried:
+                poses = [p.model_copy(update={"x": p.x + dx, "y": p.y + dy}) for p in candidate]
+                try:
+                    placed = self._placed(args, scene, poses)
+                    break
+                except RuleViolation as exc:
+                    refusals.append(exc)
+            else:
+                continue
+            break
         else:
             raise refusals[0]
         edit = WorldEdit(ops=tuple(AddAsset(asset=a) for a in placed))

@@ -159,3 +159,9 @@ def test_turn_of_before_the_lights_is_a_slip_for_off(context):
 def test_a_colour_said_after_the_thing_in_another_clause_is_for_that_thing(context):
     calls = calls_of(context, "the suv must be easy to spot; bright green works")
     assert calls[-1] == ("set_asset_appearance", {"assets": ["suv_1"], "colour": "green"})
+
+
+def test_a_radius_is_read_however_it_is_said_and_is_no_distance(context):
+    for said in ("at a 4 m radius", "with a radius of 4 metres", "radius 4"):
+        ((tool, args),) = calls_of(context, f"ring the fountain with six cones {said}")
+        assert tool == "arrange_assets" and args["radius"] == 4.0 and "distance" not in args["location"]

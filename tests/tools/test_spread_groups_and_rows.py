@@ -120,6 +120,16 @@ def test_a_line_in_front_of_a_vehicle_runs_along_its_lane_where_across_it_does_n
 
 
 def test_a_line_with_a_direction_said_is_not_turned(call: Caller, campus: Scene) -> None:
-    with pytest.raises(RuleViolation, match="line position"):
-        call(campus, "arrange_assets", categories=["traffic_cone"], count=6, shape="line", heading_deg=90.0,
-             location={"relation": "in_front_of", "target": "ego"})
+    _, cones = _added(call, campus, "arrange_assets", categories=["traffic_cone"], count=6, shape="line",
+                      heading_deg=90.0, location={"relation": "in_front_of", "target": "ego"})
+    assert len(cones) == 6 and all(abs(c.pose.yaw - math.pi / 2) < 1e-6 for c in cones)
+
+
+def test_a_line_that_runs_into_a_building_moves_out_whole_and_keeps_its_spacing(call: Caller, campus: Scene) -> None:
+    _, barriers = _added(call, campus, "arrange_assets", categories=["road_barrier"], count=4, shape="line",
+                         spacing=3.0, location={"relation": "next_to", "target": "JTEKT building entrance"})
+    gaps = [math.dist((a.pose.x, a.pose.y), (b.pose.x, b.pose.y)) for a, b in itertools.pairwise(barriers)]
+    entrance = campus.landmark("JTEKT building entrance")
+    assert entrance is not None and all(abs(g - 3.0) < 1e-6 for g in gaps)
+    assert all(math.dist((b.pose.x, b.pose.y), entrance.position) < 15.0 for b in barriers)
+

@@ -16,6 +16,7 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.intent import FEWER_WORDS, REMOVE_WORDS
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
+from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.places import Notes, location
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
@@ -233,11 +234,9 @@ def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
     if speed:
         spec["speed"] = speed
     if kind == "circle":
-        m = re.search(r"radius (?:of )?(\d+(?:\.\d+)?)", r.low) or re.search(
-            r"(\d+(?:\.\d+)?)\s*(?:m|metre)s?\s*radius", r.low
-        )
-        if m:
-            spec["radius"] = float(m.group(1))
+        radius = nb.radius_said(r.low)
+        if radius is not None:
+            spec["radius"] = radius
         if r.has(("clockwise",)) and not r.has(("anticlockwise", "counterclockwise", "counter-clockwise")):
             spec["clockwise"] = True
         if r.landmark:

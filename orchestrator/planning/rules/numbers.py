@@ -86,4 +86,15 @@ def spacing_said(text: str) -> float | None:
     return float(said.group(1)) if said else None
 
 
-__all__ = ["MAX_COUNT", "NUMBER", "SPACING", "Number", "NumberError", "count", "finite", "numbers_in", "parse", "spacing_said"]
+# The radius of a ring or a circle driven ("a radius of 3 m", "at a 3 m radius", "radius 5").
+RADIUS = re.compile(r"\bradius (?:of )?(\d+(?:\.\d+)?)(?:\s*(?:m|metres?|meters?)\b)?|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?\s*radius\b")
+
+
+def radius_said(text: str) -> float | None:
+    """The radius the words ask for, in metres."""
+    said = RADIUS.search(text.lower())
+    return float(said.group(1) or said.group(2)) if said else None
+
+
+__all__ = ["MAX_COUNT", "NUMBER", "RADIUS", "SPACING", "Number", "NumberError", "count", "finite", "numbers_in", "parse",
+           "radius_said", "spacing_said"]

@@ -200,8 +200,8 @@ def find_coordinates(text: str) -> tuple[float, float] | None:
 
 
 def find_distance(text: str) -> float | None:
-    """A distance in metres ('5 m', '10 metres', '3 meters'); a spacing ('4 m apart') is not one."""
-    low = nb.SPACING.sub(lambda m: " " * len(m.group(0)), text.lower())
+    """A distance in metres ('5 m', '10 metres'); a spacing ('4 m apart') or a radius is not one."""
+    low = nb.RADIUS.sub(lambda m: " " * len(m.group(0)), nb.SPACING.sub(lambda m: " " * len(m.group(0)), text.lower()))
     m = re.search(rf"({nb.NUMBER})\s*(?:m\b|metres?\b|meters?\b)", low)
     if m is None:
         return None

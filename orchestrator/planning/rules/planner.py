@@ -429,9 +429,9 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     spacing = nb.spacing_said(r.low)
     if spacing is not None:
         args["spacing"] = spacing
-    radius = re.search(r"radius (?:of )?(\d+(?:\.\d+)?)", r.low)
-    if radius:
-        args["radius"] = float(radius.group(1))
+    radius = nb.radius_said(r.low)
+    if radius is not None:
+        args["radius"] = radius
     if r.has(("maintenance", "construction")):
         args["label"] = "maintenance"
     return ToolCall(tool="arrange_assets", args=args)
