@@ -147,7 +147,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.question and not effect.edits:
         said = " ".join(str(c.args) for c in effect.calls).lower().replace("_", " ")
         out += [f"you asked about {name}, but the plan looks up something else"
-                for name in _topics(request, scene) if name.lower().replace("_", " ") not in said]
+                for name in _topics(request, scene) if not _looked_up(name, said, effect.calls, scene)]
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
     # A request that only takes away never adds, and one that only adds never removes; with
     # words of both ("swap", "replace", "instead"), each half is judged by what it names.
@@ -275,6 +275,20 @@ def _topics(request: Request, scene: Scene) -> list[str]:
     roads = sorted({lane.road for lane in scene.roads.lanes if lane.road})
     named = [road for road in roads if re.search(rf"\b{re.escape(ph.normalise(road).strip())}\b", request.low)]
     return [*([request.place] if request.place else []), *named]
+
+
+def _looked_up(topic: str, said: str, calls: tuple[ToolCall, ...], scene: Scene) -> bool:
+    """Whether the plan's lookups are about `topic`: name it, name one of its lanes (a road), or
+    look at a thing standing there (a place: "how heavy is the SUV in lot B")."""
+    names = [topic, *(lane.id for lane in scene.roads.lanes if lane.road == topic)]
+    if any(n.lower().replace("_", " ") in said for n in names):
+        return True
+    place = scene.landmark(topic)
+    if place is None:
+        return False
+    looked_at = [str(i) for c in calls for i in ([c.args["asset"]] if "asset" in c.args else c.args.get("assets", []))]
+    return any((a := scene.asset(i)) is not None and math.dist((a.pose.x, a.pose.y), place.position) <= PLACE_RADIUS_M
+               for i in looked_at)
 
 
 def _moved(effect: Effect) -> list[AssetInstance]:

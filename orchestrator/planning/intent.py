@@ -28,6 +28,7 @@ _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
 _INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|"
+                   r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
                    r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
 # Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
 # in the mood of a command, whatever the politeness around them.

@@ -165,3 +165,15 @@ def test_a_radius_is_read_however_it_is_said_and_is_no_distance(context):
     for said in ("at a 4 m radius", "with a radius of 4 metres", "radius 4"):
         ((tool, args),) = calls_of(context, f"ring the fountain with six cones {said}")
         assert tool == "arrange_assets" and args["radius"] == 4.0 and "distance" not in args["location"]
+
+
+def test_the_weights_of_two_kinds_are_two_lookups_and_change_nothing(session):
+    before = len(session.scene.assets)
+    report = session.submit("I'd need the masses of a bus and a motorcycle for my notes")
+    assert report.ok and len(session.scene.assets) == before
+    assert [c.args.get("category") for c in report.plan.calls] == ["bus", "motorcycle"]
+
+
+def test_a_question_about_a_road_is_answered_by_a_lookup_of_its_lane(session):
+    report = session.submit("could you tell me if something blocks the westbound lane of Main Street?")
+    assert report.ok and report.plan.calls[0].args.get("lane") == "main_westbound"

@@ -14,7 +14,7 @@ SEARCH_STARTS = ("where", "remind me", "how many", "how much", "find", "list", "
                  "is there", "are there", "locate", "search", "tell me", "i'd like to know",
                  "i would like to know", "do we have", "do you see", "any", "count", "give me",
                  "can you tell", "could you tell", "can you show")
-PROPERTY_WORDS = ("mass", "weight", "weigh", "weighs", "how heavy", "size", "how big", "how long",
+PROPERTY_WORDS = ("mass", "masses", "weight", "weights", "weigh", "weighs", "how heavy", "size", "how big", "how long",
                   "how tall", "how wide", "dimensions", "properties", "length", "width", "height")
 REMOVE_WORDS = ("remove", "delete", "get rid of", "take away", "take out", "clear away", "erase",
                 "eliminate", "despawn", "clear out", "destroy", "lose", "ditch", "scrap",

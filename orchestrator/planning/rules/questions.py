@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Literal
 
 from drivetwin.orchestrator.memory import Memory
@@ -96,6 +96,11 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         kept = [t for t, reading in zip(texts, readings, strict=True) if not _names_nothing(reading)
                 or _BACK.search(reading.masked) or reading.has(lx.PROPERTY_WORDS) or _PROPERTY.search(reading.low)]
         texts = kept if kept else texts[:1]
+    kinds = list(dict.fromkeys(m.category for m in r.mentions))
+    if len(texts) == 1 and len(kinds) > 1 and not r.ids and (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(r.low)):
+        # "the weights of both a truck and a bus": the property of each thing named
+        return [_property(replace(r, mentions=[m for m in r.mentions if m.category == k][:1]), scene, None).call
+                for k in kinds]
     earlier: Anchor | None = None
     calls: list[ToolCall] = []
     for text in texts:
