@@ -228,15 +228,19 @@ def _asset_named(scene: Scene, words: str) -> AssetInstance | None:
     return None
 
 
-def some_of_all(masked: str, changed: Iterable[AssetInstance], scene: Scene) -> list[str]:
+def some_of_all(masked: str, changed: Iterable[AssetInstance], scene: Scene, place: str | None = None,
+                reach: float = 30.0) -> list[str]:
     """A change asked of all of a category ("make every bench wooden", "all the cars red") that
-    the plan makes to only some of them."""
+    the plan makes to only some of them; with a place named, all of them there (within `reach`)."""
     done = Counter(a.category for a in changed)
+    landmark = scene.landmark(place) if place else None
     out = []
     for m in named_in(masked):
         if not re.search(r"\b(all|every|each)( one)?( of)?( the| those| these)?\s*$", m.before):
             continue
-        there = scene.count(m.category)
+        there = scene.count(m.category) if landmark is None else sum(
+            1 for a in scene.assets
+            if a.category == m.category and math.dist((a.pose.x, a.pose.y), landmark.position) <= reach)
         if 0 < done[m.category] < there:
             out.append(f"you said all {m.category.replace('_', ' ')}s, but the plan changes {done[m.category]} of the {there}")
     return out

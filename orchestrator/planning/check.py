@@ -76,7 +76,7 @@ DESCRIPTION_SCORE, DESCRIPTION_MARGIN = 0.45, 0.08
 # Tolerance when matching a number of the request with one of the plan (rounding, unit maths).
 NUMBER_TOLERANCE = 0.02
 # Unit conversions a planner may apply to a number: km/h and mph to m/s.
-UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704)
+UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704, 0.3048)
 QUERY_TOOLS = ("find_assets", "find_landmarks", "find_lanes", "asset_properties")
 # Workers that write the storyboard: their readings are the scenario reader's to judge.
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
@@ -231,7 +231,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     out += wrong_heading(request.low, placed)
     out += wrong_side(request.low, scene, effect.added)
     if not effect.removed and not effect.added:
-        out += some_of_all(request.masked, [a for a in effect.changed if a.id != "ego"], scene)
+        out += some_of_all(request.masked, [a for a in effect.changed if a.id != "ego"], scene, request.place, PLACE_RADIUS_M)
     if request.lane is not None and placed and not request.question:
         out += off_lane(request.lane, scene, placed)
     out += off_surface(request.low, scene, placed)

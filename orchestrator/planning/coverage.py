@@ -216,10 +216,12 @@ def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
     moved = {a.category for a in scope.touched if a.id != "ego"}
     out = []
     for m in named_in(masked):
-        before = m.last_words(1)
+        before = m.last_words(2)
         # "put tree at lot A": a bare noun after a placing verb may be a new one; the plan may not assume
-        asked_new = bool(before) and (before[0] in _INDEFINITE or before[0] in ph.NUMBER_WORDS or before[0].isdigit()
-                                      or before[0] in ("put", "place", "plant", "stick"))
+        asked_new = bool(before) and (before[-1] in _INDEFINITE or before[-1] in ph.NUMBER_WORDS or before[-1].isdigit()
+                                      or before[-1] in ("put", "place", "plant", "stick"))
+        if before[-2:-1] and before[-2] in ("all", "both", "the", "those", "these"):
+            asked_new = False  # "all three vehicles", "the two cars": things already there, counted
         if asked_new and m.category in moved and m.category not in out:
             out.append(m.category)
     return out

@@ -177,3 +177,27 @@ def test_the_weights_of_two_kinds_are_two_lookups_and_change_nothing(session):
 def test_a_question_about_a_road_is_answered_by_a_lookup_of_its_lane(session):
     report = session.submit("could you tell me if something blocks the westbound lane of Main Street?")
     assert report.ok and report.plan.calls[0].args.get("lane") == "main_westbound"
+
+
+def test_all_and_a_number_name_things_already_there(session):
+    report = session.submit("move all three vehicles in lot B 4 m north")
+    assert report.ok and [c.tool for c in report.plan.calls] == ["move_asset"]
+    assert len(report.plan.calls[0].args["assets"]) == 3
+
+
+def test_a_place_said_before_the_things_says_which_and_a_little_moves_them_all(context):
+    ((tool, args),) = calls_of(context, "budge the lot B cars a touch")
+    assert tool == "move_asset" and sorted(args["assets"]) == ["passenger_car_1", "passenger_car_2"]
+
+
+def test_feet_are_read_as_metres(context):
+    ((tool, args),) = calls_of(context, "roll the suv forward 20 feet")
+    assert tool == "move_asset" and args["forward"] == pytest.approx(6.1, abs=0.01)
+
+
+def test_a_thing_joined_without_an_article_is_a_second_thing(context):
+    assert [a.get("category") for _, a in calls_of(context, "delete hydrant and bench both")] == ["fire_hydrant", "bench"]
+
+
+def test_a_doubled_w_is_a_slip_not_an_inflection(context):
+    assert calls_of(context, "make it snowwing hard") == [("set_weather", {"kind": "snow", "intensity": 0.9})]

@@ -98,8 +98,8 @@ def _scoped_by_place(r: Reading, mention: ph.Mention, anywhere: bool = False) ->
     destination)."""
     if r.landmark is None or not (mention.plural or r.has(("all", "every", "each"))):
         return False
-    if anywhere:
-        return True
+    if anywhere or (0 <= r.landmark_at < mention.start and not r.masked[r.landmark_at : mention.start].strip(" §")):
+        return True  # a removal's place, or one said right before the things ("the lot B cars")
     return r.landmark_at >= mention.end and bool(_SCOPE.fullmatch(r.low[mention.end : r.landmark_at] + " "))
 
 
@@ -285,7 +285,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
     scoped = bool(r.mentions) and _scoped_by_place(r, r.mentions[0])
     anchored = (r.landmark and not scoped) or (r.ego and "ego" not in ids) or any(i not in ids for i in r.ids)
-    small = r.has(("a bit", "slightly", "a little", "nudge", "inch", "budge"))
+    small = r.has(("a bit", "slightly", "a little", "a touch", "nudge", "inch", "budge", "scoot"))
     shift = metres if metres is not None else (SMALL_STEP_M if small else None)
     if shift is None and _SIDE_MOVE.search(r.low):
         notes.guess("how far to move")  # "the SUV should pull forward a few metres"
@@ -298,7 +298,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     for word, key, sign in lx.SIDE_WORDS:
         if shift is not None and r.has((word,)) and not anchored:
             return [ToolCall(tool="move_asset", args={**moved, key: sign * shift})]
-    where = location(r, scene, memory, notes, exclude=ids)
+    where = None if scoped else location(r, scene, memory, notes, exclude=ids)  # the place said which, not where to
     if where is not None:
         notes.subject = [asset]
         return [ToolCall(tool="place_asset", args={"asset": asset, "location": where})]
@@ -307,7 +307,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if r.has(("move", "shift", "nudge", "push", "slide", "budge", "relocate")):
         notes.guess("where to move it")
         step = metres or (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else DEFAULT_STEP_M)
-        return [ToolCall(tool="move_asset", args={"asset": asset, "left": step})]
+        return [ToolCall(tool="move_asset", args={**moved, "left": step})]
     return None
 
 

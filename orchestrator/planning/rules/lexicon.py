@@ -31,7 +31,7 @@ ADD_WORDS = ("add", "create", "spawn", "place", "put", "insert", "set up", "inst
              "there should be", "need a", "need some", "want a", "want some", "make a", "make some",
              "have a", "deploy", "station", "position a", "get a", "get some", "throw in")
 MOVE_WORDS = ("move", "shift", "relocate", "put", "place", "send", "bring", "take", "push", "pull",
-              "slide", "nudge", "drag", "reposition", "park", "transfer", "should be", "would be",
+              "slide", "nudge", "scoot", "drag", "reposition", "park", "transfer", "should be", "would be",
               "belongs", "wants its", "closer to", "over to", " to the ", "to ")
 REVERSE_WORDS = ("reverse", "back up", "back out", "backwards", "backward", "back off", "go back")
 TURN_WORDS = ("turn", "rotate", "spin", "flip", "face", "faces", "facing", "wrong way", "other way",
@@ -52,7 +52,7 @@ WEATHER_WORDS: dict[str, tuple[str, ...]] = {
               "weather clear", "clear up", "clears up", "nice weather", "nicer weather",
               "better weather", "good weather", "dry", "blue sky", "stops raining"),
 }
-HEAVY = ("heavy", "heavily", "dense", "thick", "torrential", "strong", "intense", "lot of",
+HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "intense", "lot of",
          "blizzard", "downpour", "pouring", "storm", "very", "really", "poor", "bad", "terrible",
          "barely", "low visibility")
 LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "some", "gentle")

@@ -39,6 +39,7 @@ NUMBER_WORDS = {
     "fifteen": 15,
     "twenty": 20,
 }
+FOOT_M = 0.3048  # "33 ft" is said in feet, placed in metres
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
 # Tokens with their spans, numbers written with separators kept whole ("10,000").
 _TOKEN_SPANS = re.compile(r"\d{1,3}(?:,\d{3})+(?![\d,])|[a-z0-9_#.\-'+]+")
@@ -202,10 +203,11 @@ def find_coordinates(text: str) -> tuple[float, float] | None:
 def find_distance(text: str) -> float | None:
     """A distance in metres ('5 m', '10 metres'); a spacing ('4 m apart') or a radius is not one."""
     low = nb.RADIUS.sub(lambda m: " " * len(m.group(0)), nb.SPACING.sub(lambda m: " " * len(m.group(0)), text.lower()))
-    m = re.search(rf"({nb.NUMBER})\s*(?:m\b|metres?\b|meters?\b)", low)
+    m = re.search(rf"({nb.NUMBER})\s*(m\b|metres?\b|meters?\b|ft\b|feet\b|foot\b)", low)
     if m is None:
         return None
-    return nb.finite(nb.Number(nb.parse(m.group(1)), m.group(1), m.start(1), m.end(1)), "a distance in metres")
+    said = nb.finite(nb.Number(nb.parse(m.group(1)), m.group(1), m.start(1), m.end(1)), "a distance in metres")
+    return round(said * FOOT_M, 2) if m.group(2).startswith("f") else said
 
 
 def find_speed(text: str) -> float | None:

@@ -131,8 +131,9 @@ def _clauses(prompt: str) -> list[tuple[str, bool]]:
     return out
 
 
-# "and the trash bin", "plus a pedestrian", "+ two cones": a second thing for the same verb.
-_CONJUNCT = re.compile(r"\s*(?:,\s*)?(?:\band\b|\bplus\b|\+|&)\s+(?=(?:the|a|an|some|two|three|four|five|six|\d+)\s)")
+# "and the trash bin", "plus a pedestrian", "+ two cones", "and both cars": a second thing for the
+# same verb (kept only where every part names a thing).
+_CONJUNCT = re.compile(r"\s*(?:,\s*)?(?:\band\b|\bplus\b|\+|&)\s+(?=[a-z0-9])")
 _VERB_AT = re.compile(rf"\b(?:{'|'.join(_VERBS)})\b")
 
 
@@ -293,6 +294,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
     present = mention is not None and scene.count(mention.category) >= (2 if mention.plural else 1)
     fresh = mention is not None and is_new(r, mention, strict_add, present)
+    if mention is not None and mention.plural and not fresh and not _VERB_AT.search(r.low) and not ph.tokens(r.low[: mention.start]):
+        fresh = True  # "trees along one side of lot A": a bare plural and no verb asks for some
     if not fresh and not r.has(("add", "create", "spawn", "place a", "put a")):
         colour = recolour(r, scene, memory, notes)
         if colour is not None:
@@ -447,6 +450,8 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCal
     args: dict[str, Any] = {"category": mention.category, "count": count}
     category = catalog()[mention.category]
     kind = behaviour_kind(r, category.motion)
+    if kind is None and word == "traffic":
+        kind = "drive_lane"  # "more traffic on Main Street": vehicles that drive, not parked ones
     if kind is not None:
         args["behaviour"] = behaviour_spec(kind, r)
     where = location(r, scene, memory, notes)

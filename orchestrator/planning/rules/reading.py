@@ -292,15 +292,16 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
     """Whether a mention asks for a new asset ("a cone") rather than names one there ("the cone")."""
     if add_verb:
         return True
-    for word in reversed(ph.tokens(reading.low[: mention.start])[-3:]):
-        if (
-            word in _NEW_DETERMINERS
-            or word.isdigit()
-            or word in lx.COLLECTIVE_COUNTS
-            or (word in ph.NUMBER_WORDS and word not in ("one",))
-        ):
+    words = ph.tokens(reading.low[: mention.start])
+    for k in range(len(words) - 1, max(-1, len(words) - 4), -1):
+        word = words[k]
+        if word.isdigit() or (word in ph.NUMBER_WORDS and word not in ("one", "a", "an")):
+            # "all three vehicles", "the two cars": a number of things already there
+            return words[k - 1 : k] == [] or words[k - 1] not in (*_OLD_DETERMINERS, "all", "both")
+        collective = word in lx.COLLECTIVE_COUNTS and (word not in ("lot", "lots") or words[k + 1 : k + 2] == ["of"])
+        if word in _NEW_DETERMINERS or collective:
             return True
-        if word in _OLD_DETERMINERS:
+        if word in _OLD_DETERMINERS or word in ("all", "both", "every", "each"):
             return False
     return not present  # a bare noun: the one there is, if there is one
 

@@ -184,7 +184,8 @@ def is_known(word: str, vocab: frozenset[str]) -> bool:
     for suffix in _SUFFIXES:
         if w.endswith(suffix) and len(w) - len(suffix) >= 3:
             stem = w[: -len(suffix)]
-            if stem in vocab or stem + "e" in vocab or (stem[-1:] == stem[-2:-1] and stem[:-1] in vocab):
+            doubled = stem[-1:] == stem[-2:-1] and stem[-1:] not in "wxy"  # "running", never "snowwing"
+            if stem in vocab or stem + "e" in vocab or (doubled and stem[:-1] in vocab):
                 return True
             if suffix == "ies" and stem + "y" in vocab:
                 return True
