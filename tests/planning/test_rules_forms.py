@@ -201,3 +201,28 @@ def test_a_thing_joined_without_an_article_is_a_second_thing(context):
 
 def test_a_doubled_w_is_a_slip_not_an_inflection(context):
     assert calls_of(context, "make it snowwing hard") == [("set_weather", {"kind": "snow", "intensity": 0.9})]
+
+
+def test_a_distance_said_with_a_side_is_in_front_or_behind(context):
+    ((tool, args),) = calls_of(context, "a stalled bus in the ego's lane some 30 m ahead")
+    assert tool == "add_asset" and args["location"] == {"relation": "in_front_of", "target": "ego", "distance": 30.0}
+
+
+def test_a_word_written_apart_is_joined_when_it_is_one_known_word(context):
+    assert repair("a cone on the side walk", context.scene).text == "a cone on the sidewalk"
+    assert repair("a lamp post", context.scene).text == "a lamp post"  # a catalog phrase stays apart
+
+
+def test_a_road_named_drive_asks_no_one_to_drive(context):
+    ((tool, args),) = calls_of(context, "move the suv into the northbound lane of Campus Drive")
+    assert tool == "place_asset" and "behaviour" not in args
+
+
+def test_the_ego_after_near_or_from_is_a_reference_never_the_thing_removed(context):
+    ((tool, args),) = calls_of(context, "take away the two lamps nearest from the ego")
+    assert tool == "remove_assets" and args.get("category") == "street_light" and args.get("near") == "ego"
+
+
+def test_two_verbless_requests_joined_by_comma_and_are_two_edits(context):
+    calls = calls_of(context, "the suv a little back, and the bench turned around")
+    assert [(t, a.get("asset")) for t, a in calls] == [("move_asset", "suv_1"), ("move_asset", "bench_1")]

@@ -37,6 +37,8 @@ DEFAULT_SPIN_DEG = 90.0
 # for any thing ("remove that thing").
 _POINTING = ("it", "them", "that one", "those", "they", "its", "him", "her", "that thing", "this thing",
              "that object", "this object", "those things", "these things")
+# Words that make what follows a reference point, not the thing acted on ("near from ego").
+_ANCHOR_BEFORE = re.compile(r"\b(?:near|from|to|behind|ahead of|in front of|of|by|beside|around|closest to|nearest)\s+(?:the\s+)?$")
 # "make the suv stand out": a look meant to be seen, in the colour of safety clothing.
 _CONSPICUOUS = ("stand out", "stands out", "hard to miss", "eye-catching", "conspicuous", "easy to spot", "easier to spot", "hi-vis", "high-vis")
 CONSPICUOUS_COLOUR = "orange"
@@ -61,7 +63,8 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
     if r.ids:
         return r.ids
     # "put the SUV behind the ego": the thing named first is what moves, the ego where it goes.
-    ego_anchors = bool(r.mentions) and r.mentions[0].start < r.ego_at
+    ego_anchors = (bool(r.mentions) and r.mentions[0].start < r.ego_at) or bool(
+        _ANCHOR_BEFORE.search(r.low[: max(r.ego_at, 0)]))  # "everything near the ego": the ego is where
     if r.ego and not ego_anchors and not r.has(lx.BEHAVIOUR_WORDS["jaywalk"]):
         return ["ego"]
     if r.mentions:
@@ -131,7 +134,7 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     """remove_assets calls for a clause that asks for removal, or None when it names nothing."""
     fewer = bool(FEWER_WORDS.search(r.low))
     gone = r.has(lx.GONE_WORDS)
-    if r.ids or (r.ego and not r.mentions):
+    if r.ids or (r.ego and not r.mentions and not _ANCHOR_BEFORE.search(r.low[: max(r.ego_at, 0)])):
         return [ToolCall(tool="remove_assets", args={"assets": r.ids or ["ego"]})]
     if not r.mentions:
         if r.has(lx.WORKS_WORDS):
@@ -266,7 +269,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if (
         r.has(lx.TURN_WORDS)
         and (deg or not r.has(("drive", "driving", "walk", "circle", "circles")))
-        and (deg or r.has(("turn", "rotate", "spin", "flip", "wrong way", "other way", "faces", "face")))
+        and (deg or r.has(("turn", "turned", "rotate", "rotated", "spin", "flip", "wrong way", "other way", "faces", "face")))
     ):
         if deg:
             angle = float(deg.group(1))

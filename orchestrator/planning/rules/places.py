@@ -24,6 +24,7 @@ RELATIONS = (
     (("right of", "to the right"), "right_of"),
     (("next to", "beside", "alongside", "by the", "close to", "closer to"), "next_to"),
 )
+_DISTANCE_SIDE = re.compile(r"\b(?:m|metres?|meters?|ft|feet)\s+(ahead|behind|back|further on|down the road)\b")
 # Words that say a place was meant; when none resolves, the rules guessed the place.
 PLACE_WORDS = (
     "near",
@@ -76,6 +77,10 @@ def relation_of(low: str) -> str:
     for words, rel in RELATIONS:
         if any(f" {w} " in low for w in words):
             return rel
+    # "40 m ahead", "a few metres back": a distance said with a side, the thing to go by unsaid
+    side = _DISTANCE_SIDE.search(low)
+    if side is not None:
+        return "behind" if side.group(1) in ("behind", "back") else "in_front_of"
     return "at"
 
 

@@ -126,9 +126,19 @@ def _clauses(prompt: str) -> list[tuple[str, bool]]:
         if not text:
             continue
         asked = i + 1 < len(parts) and "?" in parts[i + 1]
-        pieces = re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text)
+        pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text) for q in _comma_and(p)]
         out.extend((c, asked) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,")))
     return out
+
+
+def _comma_and(text: str) -> list[str]:
+    """"ego a bit forward, and the bench the other way round": two requests, each naming its own
+    thing, joined by a comma and "and" with no verb between."""
+    if md.layout_said(text.lower()):
+        return [text]  # "a ring of cones, and barriers too": one layout of both
+    parts = re.split(r",\s*and\s+", text)
+    named = [bool(ph.find_categories(p) or ph.has_any(p.lower(), ph.EGO_WORDS) or "_" in p) for p in parts]
+    return parts if len(parts) > 1 and all(named) else [text]
 
 
 # "and the trash bin", "plus a pedestrian", "+ two cones", "and both cars": a second thing for the

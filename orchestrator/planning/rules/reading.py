@@ -217,6 +217,10 @@ def read(text: str, scene: Scene) -> Reading:
     lane = find_lane(scene, _blank(low, *place[1:]) if place is not None else low)
     if lane is not None and lane[2] > lane[1]:
         spans.append((lane[1], lane[2]))
+    for road in {lane.road for lane in scene.roads.lanes if lane.road}:
+        said = re.search(rf"(?<![a-z]){re.escape(ph.normalise(road).strip())}(?![a-z])", low)
+        if said is not None:  # "Campus Drive" names a road: its "drive" asks no one to drive
+            spans.append((said.start(), said.end()))
     ego = _ego_span(low)
     if ego is not None:
         spans.append(ego)

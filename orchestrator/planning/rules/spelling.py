@@ -9,6 +9,7 @@ repair is reported, because a repaired prompt is a guess the planner's confidenc
 from __future__ import annotations
 
 import difflib
+import itertools
 import re
 from dataclasses import dataclass, field
 from functools import cache
@@ -286,6 +287,29 @@ _WHERE_SLIP = re.compile(r"\bwere(?= (?:is|are|can|do|does|did|was)\b)", re.IGNO
 _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
 
 
+# Two words that are one known word written apart ("side walk", "cross walk"); a catalog phrase
+# written with its space ("lamp post") stays as it is.
+_ALPHA = re.compile(r"[A-Za-z]{2,}")
+
+
+def _joined_apart(text: str, vocab: frozenset[str]) -> str:
+    words = list(_ALPHA.finditer(text))
+    out, at = [], 0
+    for a, b in itertools.pairwise(words):
+        if a.start() < at or text[a.end() : b.start()] != " ":
+            continue
+        joined = (a.group(0) + b.group(0)).lower()
+        if joined in vocab and f"{a.group(0)} {b.group(0)}".lower() not in _phrases():
+            out.append(text[at : a.start()] + joined)
+            at = b.end()
+    return "".join(out) + text[at:]
+
+
+@cache
+def _phrases() -> frozenset[str]:
+    return frozenset(w.lower() for cat in catalog().values() for w in cat.words if " " in w)
+
+
 def _verb_of(m: re.Match[str]) -> str:
     stem = m.group(1).lower()
     return next(v for v in _COMMAND_VERBS if v in (stem, stem + "e", stem[:-1]))
@@ -297,6 +321,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
+    text = _joined_apart(text, vocab)
     repairs: list[str] = []
 
     def fix(m: re.Match[str]) -> str:
