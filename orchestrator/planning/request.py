@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks, without_reason
+from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
@@ -66,7 +67,8 @@ def read_request(prompt: str, scene: Scene) -> Request:
     polarity: Literal["add", "remove"] | None = (
         "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None
     )
-    categories = frozenset(m.category for m in ph.find_categories(masked) if not _DESCRIBING.search(masked[: m.start]))
+    categories = frozenset(m.category for m in ph.find_categories(masked)
+                           if not _DESCRIBING.search(masked[: m.start]) and not _described_head(masked, m))
     exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_checked_amounts(masked))  # "a tree or two"
     numbers = tuple(n.value for n in numbers_in(exact) if not _is_reference(masked, n.start))
     numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+", exact)
@@ -76,6 +78,18 @@ def read_request(prompt: str, scene: Scene) -> Request:
     )
     return Request(prompt, question, polarity, categories, numbers, place[0] if place else None,
                    lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)), low, masked)
+
+
+# A relative clause right after a noun: it says what the thing is ("a vehicle that carries ...").
+_DESCRIBED = re.compile(r"\s+(?:that|which|who|with|for|carrying|carries|full of)\b")
+
+
+def _described_head(masked: str, m: ph.Mention) -> bool:
+    """A word for a whole group ("vehicle", "sign") whose clause after it describes the thing
+    meant: the description names the category, not the group word."""
+    indexed = ph.normalise(masked)  # the text find_categories indexes
+    word = ph.singular(indexed[m.start : m.end].strip())
+    return word in md.catalog_tags() and bool(_DESCRIBED.match(indexed[m.end :]))
 
 
 def _named_place(scene: Scene, low: str) -> tuple[str, int, int] | None:

@@ -78,3 +78,9 @@ def test_request_signals_read_polarity_question_and_place(campus):
     request = read_request("Which parked cars are in parking lot B?", campus)
     assert request.question and request.place == "parking lot B" and request.state == "parked"
     assert read_request("no longer want the cones", campus).polarity == "remove"
+
+
+def test_a_description_of_a_passenger_carrier_is_not_met_by_a_car(session):
+    report = session.submit("add a big vehicle that carries lots of passengers near the library")
+    assert not report.ok and "bus" in (report.error or (report.question.text if report.question else ""))
+    assert session.scene.count("passenger_car") == 2

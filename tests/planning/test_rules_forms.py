@@ -226,3 +226,13 @@ def test_the_ego_after_near_or_from_is_a_reference_never_the_thing_removed(conte
 def test_two_verbless_requests_joined_by_comma_and_are_two_edits(context):
     calls = calls_of(context, "the suv a little back, and the bench turned around")
     assert [(t, a.get("asset")) for t, a in calls] == [("move_asset", "suv_1"), ("move_asset", "bench_1")]
+
+
+def test_a_street_wished_busier_gets_traffic_that_drives(context):
+    ((tool, args),) = calls_of(context, "campus drive feels empty, make it livelier")
+    assert tool == "add_asset" and args["category"] == "passenger_car" and args["behaviour"]["kind"] == "drive_lane"
+
+
+def test_a_square_wished_busier_gets_people(context):
+    ((tool, args),) = calls_of(context, "the fountain could be busier")
+    assert tool == "add_asset" and args["category"] == "pedestrian"

@@ -41,6 +41,11 @@ def _catalog_groups() -> dict[str, frozenset[str]]:
     return {tag: frozenset(names) for tag, names in members.items() if len(names) > 1}
 
 
+def catalog_tags() -> frozenset[str]:
+    """The catalog's words for groups of categories ("vehicle", "sign", "light")."""
+    return frozenset(_catalog_groups())
+
+
 def groups_said(text: str) -> dict[str, frozenset[str]]:
     """The groups the words name by a catalog tag in the plural or after "every" ("the vehicles",
     "all the signs", "every vehicle"), each with its categories; not the "lights" of "the street
@@ -99,4 +104,4 @@ def partitive_count(before: str) -> int | None:
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word)
 
 
-__all__ = ["COMPASS_VECTORS", "compass_direction", "groups_said", "layout_said", "material_said", "partitive_count"]
+__all__ = ["COMPASS_VECTORS", "catalog_tags", "compass_direction", "groups_said", "layout_said", "material_said", "partitive_count"]

@@ -324,6 +324,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if r.has(("paint", "repaint", "recolour", "recolor")) and not fresh:
         # a thing to paint is one that is there; a colour not understood is asked, never an add
         raise PlanningError(f"which colour? I know {', '.join(COLOURS)}")
+    if mention is None and _LIVELIER.search(r.low):
+        return _livelier(r, scene, memory, notes)
     if mention is None:
         if r.has(lx.GENERIC_THINGS):
             return environment(r) or None  # "we want to put something there": an intention
@@ -337,6 +339,22 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if (laid_out and not moving) or r.has(("to mark",)):
         return [_arrange(r, scene, memory, notes)]
     return _add(r, scene, memory, notes)
+
+
+# A place wished busier ("make the street busier", "liven up the quad"): more people or traffic.
+_LIVELIER = re.compile(r"\b(?:busier|more busy|livelier|more lively|liven (?:it |\w+ )?up|more going on|more life)\b")
+
+
+def _livelier(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
+    """Traffic that drives where a road is named, people on foot elsewhere (three of them)."""
+    road = bool(r.lane) or r.has(("street", "road", "lane", "traffic", "carriageway"))
+    category = "passenger_car" if road else "pedestrian"
+    notes.guess(f"what makes it busier ({category})")
+    named = ph.Mention(category, len(r.low), len(r.low), plural=True)
+    calls = _add(replace(r, mentions=[named]), scene, memory, notes)
+    if not road:
+        return calls
+    return [ToolCall(tool="add_asset", args={**calls[0].args, "behaviour": behaviour_spec("drive_lane", r)})]
 
 
 def _maintenance_target(scene: Scene, memory: Memory) -> str | None:
