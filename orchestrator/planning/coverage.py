@@ -248,7 +248,9 @@ def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     clock = clock_time(low)
     day = _DAY_PART.search(low)
     day_part = day.group(1) if day else None
-    if (clock or (day_part and "set_lighting" not in tools)) and "set_time_of_day" not in tools:
+    # "the quad is too dark at night, it needs a lamp post": the night says when lights are needed
+    lights_added = any("street_light" in (c.args.get("category"), *c.args.get("categories", ())) for c in calls)
+    if (clock or (day_part and "set_lighting" not in tools and not lights_added)) and "set_time_of_day" not in tools:
         out.append(f"you mentioned {clock.text if clock else day_part}, but the plan does not set the time")
     times = [str(c.args.get("time")) for c in calls if c.tool == "set_time_of_day"]
     if clock is not None and clock.text not in _NAMED_TIMES and times and str(clock) not in times:

@@ -11,7 +11,7 @@ import re
 
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
-    r"|not (want|have|need|keep)|no more|without|fewer|less|lose|eliminate|erase|discard|scrap"
+    r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)"
     r"|not (?:quite |nearly )?(?:so|as|that) many|too many|too much)\b"

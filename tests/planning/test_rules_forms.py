@@ -236,3 +236,14 @@ def test_a_street_wished_busier_gets_traffic_that_drives(context):
 def test_a_square_wished_busier_gets_people(context):
     ((tool, args),) = calls_of(context, "the fountain could be busier")
     assert tool == "add_asset" and args["category"] == "pedestrian"
+
+
+def test_night_said_as_when_lamps_are_needed_is_no_time_change(session):
+    report = session.submit("lot A gets pitch black at night, it needs a street light")
+    assert report.ok and session.scene.count("street_light") > 0
+    assert not any(c.tool == "set_time_of_day" for c in report.plan.calls)
+
+
+def test_without_doing_something_is_a_manner_not_a_removal(context):
+    calls = calls_of(context, "add a kid who steps onto the road without looking")
+    assert calls[0][0] == "add_asset" and calls[0][1]["count"] == 1

@@ -189,6 +189,9 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
 # Catalog words that are also verbs of the requests people make.
 _VERB_NOUNS = ("stop", "plant", "post", "signal", "seat", "cycle", "park")
 
+# Concept words that name one person, not a crowd.
+_ONE_PERSON = ("someone", "somebody", "kid", "child", "guy")
+
 # Words for a person who does something to a thing named beside them.
 _AGENTS = ("someone", "somebody")
 
@@ -201,7 +204,7 @@ def _concepts(low: str, taken: list[ph.Mention]) -> list[ph.Mention]:
             if m and not any(t.start < m.end() and m.start() < t.end for t in taken + found):
                 if word in _AGENTS and taken:
                     continue  # "someone left their car there": the car is the thing, not the someone
-                found.append(ph.Mention(category, m.start(), m.end(), True))
+                found.append(ph.Mention(category, m.start(), m.end(), word not in _ONE_PERSON))
     return found
 
 
