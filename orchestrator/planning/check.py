@@ -169,7 +169,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         # What a new thing should be is described; what to clear away is often only implied.
         plan_categories = {a.category for a in effect.added}
         try:
-            meant = described_category(request.text, plan_categories)
+            meant = described_category(request.masked, plan_categories)  # "the bus stop" describes no bus
         except GroundingUnavailable:
             meant = None  # without MiniLM a description cannot be judged; the other signals remain
         if meant is not None:

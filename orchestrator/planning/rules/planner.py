@@ -250,6 +250,12 @@ def _more_of_a_thing(r: Reading) -> bool:
     return False
 
 
+def _changes_them(r: Reading) -> bool:
+    """Whether the words say how to change things ("cones blue", "trees at the quad, 5 m west")."""
+    return (ph.find_distance(r.text) is not None or md.compass_direction(r.masked) is not None
+            or any(r.has((c,)) for c in COLOURS) or md.material_said(r.masked) is not None)
+
+
 def _is_question(r: Reading, asked: bool) -> bool:
     words = r.low.strip().removeprefix("so ").removeprefix("ok ").removeprefix("now ").strip()
     starts = any(re.match(rf"{re.escape(w)}\b", words) for w in lx.SEARCH_STARTS)
@@ -304,7 +310,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
     present = mention is not None and scene.count(mention.category) >= (2 if mention.plural else 1)
     fresh = mention is not None and is_new(r, mention, strict_add, present)
-    if mention is not None and mention.plural and not fresh and not _VERB_AT.search(r.low) and not ph.tokens(r.low[: mention.start]):
+    if (mention is not None and mention.plural and not fresh and not _VERB_AT.search(r.low)
+            and not ph.tokens(r.low[: mention.start]) and r.landmark and not _changes_them(r)):
         fresh = True  # "trees along one side of lot A": a bare plural and no verb asks for some
     if not fresh and not r.has(("add", "create", "spawn", "place a", "put a")):
         colour = recolour(r, scene, memory, notes)

@@ -202,7 +202,7 @@ def _concepts(low: str, taken: list[ph.Mention]) -> list[ph.Mention]:
         for word in words:
             m = re.search(rf"(?<![a-z]){re.escape(word)}(?![a-z])", low)
             if m and not any(t.start < m.end() and m.start() < t.end for t in taken + found):
-                if word in _AGENTS and taken:
+                if word in _AGENTS and any(t.start > m.end() for t in taken):
                     continue  # "someone left their car there": the car is the thing, not the someone
                 found.append(ph.Mention(category, m.start(), m.end(), word not in _ONE_PERSON))
     return found
