@@ -19,6 +19,7 @@ import numpy as np
 import numpy.typing as npt
 import torch
 
+from ._gsplat_resident import depth_limit_keep_mask, depth_limit_keep_mask_numpy, resident_splats
 from .camera import Camera
 from .rasterize import (
     ALPHA_MAX,
@@ -289,15 +290,7 @@ def cull_behind_depth_limit(splats: Splats, camera: Camera, depth_limit: npt.NDA
     pixels. Splats are a few pixels wide, so the difference is a fringe of about a splat
     radius along mesh silhouettes.
     """
-    view = np.asarray(camera.world_to_camera, dtype=np.float64)
-    cam = splats.means.astype(np.float64) @ view[:3, :3].T + view[:3, 3]
-    z = cam[:, 2]
-    in_front = z > camera.near
-    safe_z = np.where(in_front, z, 1.0)
-    col = np.clip(np.floor(camera.fx * cam[:, 0] / safe_z + camera.cx), 0, camera.width - 1).astype(np.int64)
-    row = np.clip(np.floor(camera.fy * cam[:, 1] / safe_z + camera.cy), 0, camera.height - 1).astype(np.int64)
-    limit = np.asarray(depth_limit, dtype=np.float64)[row, col]
-    return splats.subset(~in_front | (z < limit))
+    return splats.subset(depth_limit_keep_mask_numpy(splats.means, camera, depth_limit))
 
 
 def rasterize_gsplat(
@@ -305,10 +298,12 @@ def rasterize_gsplat(
 ) -> RasterOutput:
     """``rasterize(backend="gsplat")``: gsplat's CUDA rasterizer with the same conventions.
 
-    gsplat is imported here, so this module imports without it (and without CUDA). A depth
-    limit is applied per splat by `cull_behind_depth_limit` before gsplat draws (see there
-    for how that differs from the per-pixel rule); there is no per-pixel splat index;
-    depth is gsplat's expected depth ("ED", normalised by alpha).
+    gsplat is imported here, so this module imports without it (and without CUDA). The
+    splats stay on the GPU between frames (``_gsplat_resident.resident_splats``); a depth
+    limit is uploaded and applied per splat on the GPU by ``depth_limit_keep_mask``, the
+    rule of `cull_behind_depth_limit` (see there for how that differs from the per-pixel
+    rule); there is no per-pixel splat index; depth is gsplat's expected depth ("ED",
+    normalised by alpha).
     """
     try:
         from gsplat import rasterization
@@ -316,24 +311,28 @@ def rasterize_gsplat(
         raise RasterizeError("backend 'gsplat' needs the gsplat package (CUDA)") from exc
     device = torch.device("cuda")
     t0 = time.perf_counter()
-    if depth_limit is not None:
-        splats = cull_behind_depth_limit(splats, camera, depth_limit)
+    resident = resident_splats.get(splats, device)
     t1 = time.perf_counter()
-    if len(splats) == 0:  # gsplat wants at least one Gaussian
+    if depth_limit is not None:
+        limit = torch.as_tensor(np.asarray(depth_limit, dtype=np.float32), device=device)
+        resident = resident.subset(depth_limit_keep_mask(resident.means, camera, limit))
+    t2 = time.perf_counter()
+    timings = {"upload": 1e3 * (t1 - t0), "cull": 1e3 * (t2 - t1)}
+    if len(resident) == 0:  # gsplat wants at least one Gaussian
         shape = (camera.height, camera.width)
         return RasterOutput(rgb=np.zeros((*shape, 3), np.float32), alpha=np.zeros(shape, np.float32),
                             transmittance=np.ones(shape, np.float32), depth=np.zeros(shape, np.float32),
-                            index=None, timings={"cull": 1e3 * (t1 - t0), "total": 1e3 * (t1 - t0)})  # fmt: skip
+                            index=None, timings={**timings, "total": 1e3 * (t2 - t0)})  # fmt: skip
 
     def cuda(a: npt.NDArray[np.float32]) -> torch.Tensor:
         return torch.as_tensor(a, device=device)
 
     colors, alphas, _ = rasterization(
-        means=cuda(splats.means),
-        quats=cuda(splats.quats),
-        scales=torch.exp(cuda(splats.log_scales)),
-        opacities=torch.sigmoid(cuda(splats.opacity_logits)),
-        colors=cuda(splats.sh),
+        means=resident.means,
+        quats=resident.quats,
+        scales=resident.scales,
+        opacities=resident.opacities,
+        colors=resident.sh,
         viewmats=cuda(camera.world_to_camera.astype(np.float32))[None],
         Ks=cuda(camera.K.astype(np.float32))[None],
         width=camera.width,
@@ -341,18 +340,19 @@ def rasterize_gsplat(
         near_plane=camera.near,
         far_plane=camera.far,
         eps2d=LOW_PASS,
-        sh_degree=splats.sh_degree,
+        sh_degree=resident.sh_degree,
         packed=False,
         render_mode="RGB+ED",
     )
-    torch.cuda.synchronize()
+    # One read-back: rgb, expected depth and alpha side by side [H, W, 5].
+    image = torch.cat([colors[0], alphas[0]], -1).cpu().numpy()
+    alpha = np.ascontiguousarray(image[..., 4], dtype=np.float32)
     total = 1e3 * (time.perf_counter() - t0)
-    alpha = alphas[0, ..., 0].cpu().numpy().astype(np.float32)
     return RasterOutput(
-        rgb=colors[0, ..., :3].cpu().numpy().astype(np.float32),
+        rgb=np.ascontiguousarray(image[..., :3], dtype=np.float32),
         alpha=alpha,
         transmittance=1.0 - alpha,
-        depth=colors[0, ..., 3].cpu().numpy().astype(np.float32),
+        depth=np.ascontiguousarray(image[..., 3], dtype=np.float32),
         index=None,
-        timings={"cull": 1e3 * (t1 - t0), "total": total},
+        timings={**timings, "draw": total - 1e3 * (t2 - t0), "total": total},
     )
