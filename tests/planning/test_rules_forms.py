@@ -247,3 +247,18 @@ def test_night_said_as_when_lamps_are_needed_is_no_time_change(session):
 def test_without_doing_something_is_a_manner_not_a_removal(context):
     calls = calls_of(context, "add a kid who steps onto the road without looking")
     assert calls[0][0] == "add_asset" and calls[0][1]["count"] == 1
+
+
+def test_an_e_kept_before_ing_is_a_slip(context):
+    ((tool, args),) = calls_of(context, "a bus moveing along main street")
+    assert tool == "add_asset" and args["behaviour"]["kind"] == "drive_lane"
+
+
+def test_in_front_without_of_is_still_in_front(context):
+    ((tool, args),) = calls_of(context, "a bin in front the library")
+    assert args["location"]["relation"] == "in_front_of"
+
+
+def test_things_along_a_place_are_laid_out_in_a_line(context):
+    ((tool, args),) = calls_of(context, "benches along the north side of lot B")
+    assert tool == "arrange_assets" and args["shape"] == "line"

@@ -18,7 +18,7 @@ from drivetwin.orchestrator.planning.rules.reading import Reading
 from drivetwin.worlds.scene import Scene
 
 RELATIONS = (
-    (("in front of", "ahead of", "front of", "infront"), "in_front_of"),
+    (("in front of", "ahead of", "front of", "infront", "in front"), "in_front_of"),
     (("behind",), "behind"),
     (("left of", "to the left"), "left_of"),
     (("right of", "to the right"), "right_of"),

@@ -341,7 +341,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             raise PlanningError(f"unknown asset {noun!r}; nearest: {', '.join(nearest_categories(noun))}")
         env = environment(r)
         return env or None
-    laid_out = r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
+    laid_out = (r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
+                or (mention.plural and r.has(("along",))))  # "trees along one side of lot A"
     moving = behaviour_kind(r, catalog()[mention.category].motion) not in (None, "parked")  # a row may be parked
     if (laid_out and not moving) or r.has(("to mark",)):
         return [_arrange(r, scene, memory, notes)]
@@ -449,6 +450,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
             args["columns"] = int(said) if said.isdigit() else ph.NUMBER_WORDS.get(said, 0) or None
     elif r.has(("along the lane", "along the road", "lane edge", "along the edge", "along the kerb")):
         args["shape"] = "lane_edge"
+    elif r.has(("along",)):
+        args["shape"] = "line"  # "benches along the north side of lot B"
     else:
         args["shape"] = "ring"
     where = location(r, scene, memory, notes)

@@ -186,6 +186,8 @@ def is_known(word: str, vocab: frozenset[str]) -> bool:
         if w.endswith(suffix) and len(w) - len(suffix) >= 3:
             stem = w[: -len(suffix)]
             doubled = stem[-1:] == stem[-2:-1] and stem[-1:] not in "wxy"  # "running", never "snowwing"
+            if suffix == "ing" and stem.endswith("e") and not stem.endswith("ee"):
+                continue  # "driveing": English drops the e ("driving"), so a slip to repair
             if stem in vocab or stem + "e" in vocab or (doubled and stem[:-1] in vocab):
                 return True
             if suffix == "ies" and stem + "y" in vocab:
