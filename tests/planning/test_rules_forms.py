@@ -256,7 +256,7 @@ def test_an_e_kept_before_ing_is_a_slip(context):
 
 def test_in_front_without_of_is_still_in_front(context):
     ((tool, args),) = calls_of(context, "a bin in front the library")
-    assert args["location"]["relation"] == "in_front_of"
+    assert tool == "add_asset" and args["location"]["relation"] == "in_front_of"
 
 
 def test_things_along_a_place_are_laid_out_in_a_line(context):
