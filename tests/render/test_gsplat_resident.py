@@ -178,3 +178,5 @@ def test_gsplat_backend_draws_what_it_draws_for_the_numpy_culled_set_and_uploads
     for out in (first, second):
         assert np.allclose(out.rgb, expected.rgb, atol=1e-5)
         assert np.allclose(out.alpha, expected.alpha, atol=1e-5)
+        assert np.allclose(out.depth, expected.depth, atol=1e-4)
+        assert np.array_equal(out.transmittance, 1.0 - out.alpha)
