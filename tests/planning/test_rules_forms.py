@@ -262,3 +262,18 @@ def test_in_front_without_of_is_still_in_front(context):
 def test_things_along_a_place_are_laid_out_in_a_line(context):
     ((tool, args),) = calls_of(context, "benches along the north side of lot B")
     assert tool == "arrange_assets" and args["shape"] == "line"
+
+
+def test_whatever_is_parked_somewhere_empty_says_nothing_is_there(context):
+    with pytest.raises(PlanningError, match="nothing parked at parking lot A"):
+        RulePlanner().plan("clear away whatever is parked in lot A", context)
+
+
+def test_a_layout_verb_lays_out_what_comes_after_with(context):
+    ((tool, args),) = calls_of(context, "edge the quad with benches")
+    assert tool == "arrange_assets" and args["categories"] == ["bench"]
+
+
+def test_a_superlative_is_no_unknown_place(session):
+    report = session.submit("where's the closest bench to the library?")
+    assert report.ok and report.plan.calls[0].args.get("nearest_to") == "Library entrance"

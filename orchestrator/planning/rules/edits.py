@@ -148,12 +148,14 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
         if r.landmark and (r.has(lx.GENERIC_THINGS) or gone or r.has(("empty", "clear"))):
             keep_permanent = fewer or r.has(("everything",))
+            parked = r.has(lx.BEHAVIOUR_WORDS["parked"])  # "whatever is parked in lot A": the vehicles
             clutter = [a.id for a in scene.assets if "light" not in (tags := catalog()[a.category].tags)
-                       and (keep_permanent or "permanent" not in tags)]
+                       and (keep_permanent or "permanent" not in tags)
+                       and (not parked or catalog()[a.category].motion == "vehicle")]
             ids = _at_place(scene, r.landmark, clutter, reach=NEAR_PLACE_M)
             notes.guess(f"what counts as the things at {r.landmark}")
             if not ids:
-                return None
+                raise ph_error(f"there is nothing{' parked' if parked else ''} at {r.landmark} to take away")
             return [ToolCall(tool="remove_assets", args={"assets": ids[:1] if fewer else ids})]
         ids = referenced(r, scene, memory, notes)
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None

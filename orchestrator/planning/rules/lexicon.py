@@ -110,7 +110,7 @@ COLOUR_OF = {"grass": "green", "leaves": "green", "sky": "blue", "sea": "blue", 
              "night": "black", "chocolate": "brown", "wood": "brown", "asphalt": "grey", "road": "grey"}
 # Words naming a group of any things ("the clutter at the bus stop").
 GENERIC_THINGS = ("clutter", "stuff", "things", "junk", "mess", "everything", "objects", "items",
-                  "obstacles", "anything", "something")
+                  "obstacles", "anything", "something", "whatever")
 # Maintenance words: what "the roadworks" or "the work area" are made of.
 WORKS_WORDS = ("roadworks", "road works", "roadwork", "the works", "maintenance", "construction",
                "work area", "work zone", "building site", "worksite")

@@ -105,6 +105,9 @@ _CLOSE_ROAD = re.compile(r"^\s*(?:please )?(?:close|block|shut|seal)(?: off)? (?
 # A layout named as the means of a request ("... with a row of bollards", "using a line of cones").
 _WITH_LAYOUT = re.compile(r"\b(?:with|using|by putting|by placing) (?:a |an )?(?:[\w-]+ )?(?:row|line|ring|circle|wall|grid) of\b")
 
+# A layout verb with its material after "with" ("line the road to the gate with lamps").
+_LAYOUT_VERB_WITH = re.compile(r"^\s*(?:please )?(?:line|ring|surround|encircle|circle|edge|border|fence|flank)\b.*?\bwith\b")
+
 # A wish said in the negative ("I don't want the bench any more", "we no longer need cones",
 # "I'd rather not have a bus"): the thing should go, whatever the verb.
 _NEGATED_WISH = re.compile(
@@ -300,7 +303,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             return env
     if (r.has(lx.BLOCK_WORDS) or _CLOSE_ROAD.search(r.low)) and not r.ids:
         return [_block(r, scene, memory, notes)]
-    instrument = _WITH_LAYOUT.search(r.low)
+    instrument = _WITH_LAYOUT.search(r.low) or _LAYOUT_VERB_WITH.search(r.low)
     if instrument is not None and any(m.start > instrument.start() for m in r.mentions):
         # "stop cars driving in through the gate with a row of bollards": the row is what to build
         laid = [m for m in r.mentions if m.start > instrument.start()]
