@@ -277,3 +277,11 @@ def test_a_layout_verb_lays_out_what_comes_after_with(context):
 def test_a_superlative_is_no_unknown_place(session):
     report = session.submit("where's the closest bench to the library?")
     assert report.ok and report.plan.calls[0].args.get("nearest_to") == "Library entrance"
+
+
+def test_facing_a_compass_point_turns_by_the_difference(context, campus):
+    suv = campus.asset("suv_1")
+    assert suv is not None and abs(suv.pose.yaw - math.pi / 2) < 1e-6  # it faces north
+    assert calls_of(context, "have the suv pointing south") == [("move_asset", {"asset": "suv_1", "turn_deg": 180.0})]
+    with pytest.raises(PlanningError, match="already faces north"):
+        RulePlanner().plan("turn the suv to face north", context)

@@ -268,13 +268,20 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if r.has(lx.STOP_WORDS) and motion in ("vehicle", "walker") and not r.has(("stop sign",)):
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
     deg = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:deg|°)", r.low)
-    if (
+    facing = md.facing_direction(r.masked)
+    if facing is not None or (
         r.has(lx.TURN_WORDS)
         and (deg or not r.has(("drive", "driving", "walk", "circle", "circles")))
         and (deg or r.has(("turn", "turned", "rotate", "rotated", "spin", "flip", "wrong way", "other way", "faces", "face")))
     ):
         if deg:
             angle = float(deg.group(1))
+        elif facing is not None and found is not None:
+            # "turned to face north": the turn from where it points now to that compass heading
+            east, north = md.COMPASS_VECTORS[facing]
+            angle = round((math.degrees(math.atan2(north, east) - found.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
+            if abs(angle) < 1.0:
+                raise ph_error(f"{asset} already faces {facing}")
         elif r.has(("around", "wrong way", "other way", "flip", "about")):
             angle = 180.0
         else:

@@ -22,6 +22,14 @@ from drivetwin.worlds.catalog import catalog
 _COMPASS = re.compile(r"(?<!facing )(?<!face )\b(north|south|east|west)(?:wards?)?\b"
                       r"(?!-| ?bound| gate| side| entrance| crosswalk| crossing| of\b)")
 COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
+# The compass heading a thing should face ("turned to face north", "pointing west").
+_FACING = re.compile(r"\b(?:face|faces|facing|point|points|pointing)\s+(?:to(?:wards?)?\s+)?(?:the\s+)?(north|south|east|west)\b")
+
+
+def facing_direction(text: str) -> str | None:
+    """The compass point the words say a thing should face, if any."""
+    said = _FACING.search(text)
+    return said.group(1) if said else None
 
 
 def compass_direction(text: str) -> str | None:
@@ -104,4 +112,4 @@ def partitive_count(before: str) -> int | None:
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word)
 
 
-__all__ = ["COMPASS_VECTORS", "catalog_tags", "compass_direction", "groups_said", "layout_said", "material_said", "partitive_count"]
+__all__ = ["COMPASS_VECTORS", "catalog_tags", "compass_direction", "facing_direction", "groups_said", "layout_said", "material_said", "partitive_count"]
