@@ -48,7 +48,12 @@ def step(prompt: str, *calls: Json, planned: bool = False) -> Json:
 
 def only(*categories: str, assets: tuple[str, ...] = (), environment: bool = False) -> Json:
     """Guard against collateral edits: nothing but these may change."""
-    return {"kind": "unchanged_except", "categories": list(categories), "assets": list(assets), "environment": environment}
+    return {
+        "kind": "unchanged_except",
+        "categories": list(categories),
+        "assets": list(assets),
+        "environment": environment,
+    }
 
 
 def delta(category: str | list[str], lo: int | None, hi: int | None) -> Json:
@@ -406,6 +411,13 @@ SEARCH = [
         [call("find_assets", category="traffic_cone")],
         setup=(step(CONES_AHEAD["prompt"], *CONES_AHEAD["calls"], planned=True),),
     ),
+    case(
+        "search.direct.benches_and_main_lanes",
+        "How many benches are there, and which lanes does Main Street have?",
+        [*QUESTION, says(all_of=("main_eastbound", "main_westbound")), says("bench_1", "1", "one")],
+        [call("find_assets", category="bench"), call("find_lanes", road="Main Street")],
+        tags=COMPOUND,
+    ),
 ]
 
 
@@ -431,13 +443,29 @@ ADDITION = [
     case(
         "addition.direct.bus_westbound_6",
         "Add a bus driving in the westbound lane of Main Street at 6 m/s.",
-        [delta("bus", 1, 1), behaviour("drive_lane", category="bus", lane="main_westbound", speed_min=5.5, speed_max=6.5), only("bus")],
-        [call("add_asset", category="bus", location=at("main_westbound"), behaviour={"kind": "drive_lane", "lane": "main_westbound", "speed": 6})],
+        [
+            delta("bus", 1, 1),
+            behaviour("drive_lane", category="bus", lane="main_westbound", speed_min=5.5, speed_max=6.5),
+            only("bus"),
+        ],
+        [
+            call(
+                "add_asset",
+                category="bus",
+                location=at("main_westbound"),
+                behaviour={"kind": "drive_lane", "lane": "main_westbound", "speed": 6},
+            )
+        ],
     ),
     case(
         "addition.direct.hydrant_by_bus_stop",
         "Add a fire hydrant on the sidewalk next to the bus stop.",
-        [delta("fire_hydrant", 1, 1), near("bus stop", 6, category="fire_hydrant"), surface("sidewalk", "ground", category="fire_hydrant"), only("fire_hydrant")],
+        [
+            delta("fire_hydrant", 1, 1),
+            near("bus stop", 6, category="fire_hydrant"),
+            surface("sidewalk", "ground", category="fire_hydrant"),
+            only("fire_hydrant"),
+        ],
         [call("add_asset", category="fire_hydrant", location=at("bus stop", "on_sidewalk"))],
     ),
     case(
@@ -449,20 +477,37 @@ ADDITION = [
     case(
         "addition.direct.red_car_lot_a",
         "Add a red passenger car in parking lot A.",
-        [delta("passenger_car", 1, 1), near("parking lot A", 1, category="passenger_car"), looks(category="passenger_car", colour="red"), only("passenger_car")],
+        [
+            delta("passenger_car", 1, 1),
+            near("parking lot A", 1, category="passenger_car"),
+            looks(category="passenger_car", colour="red"),
+            only("passenger_car"),
+        ],
         [call("add_asset", category="passenger_car", location=at("parking lot A"), colour="red")],
     ),
     case(
         "addition.direct.crosser_north",
         "Add a pedestrian who crosses the road at the north crosswalk.",
-        [delta("pedestrian", 1, 1), behaviour("cross_road", category="pedestrian"), near("north crosswalk", 8, category="pedestrian"), only("pedestrian")],
+        [
+            delta("pedestrian", 1, 1),
+            behaviour("cross_road", category="pedestrian"),
+            near("north crosswalk", 8, category="pedestrian"),
+            only("pedestrian"),
+        ],
         [call("add_asset", category="pedestrian", location=at("north crosswalk"), behaviour={"kind": "cross_road"})],
     ),
     case(
         "addition.direct.motorbike_northbound",
         "Add a motorcycle driving north on Campus Drive.",
         [delta("motorcycle", 1, 1), only("motorcycle")],
-        [call("add_asset", category="motorcycle", location=at("campus_northbound"), behaviour={"kind": "follow_path", "waypoints": [[1.75, -60.0], [1.75, 80.0]], "speed": 6})],
+        [
+            call(
+                "add_asset",
+                category="motorcycle",
+                location=at("campus_northbound"),
+                behaviour={"kind": "follow_path", "waypoints": [[1.75, -60.0], [1.75, 80.0]], "speed": 6},
+            )
+        ],
         alternatives=(
             [behaviour("drive_lane", category="motorcycle", lane="campus_northbound")],
             [behaviour("follow_path", category="motorcycle"), lane("campus_northbound", category="motorcycle")],
@@ -472,7 +517,11 @@ ADDITION = [
     case(
         "addition.direct.sign_lot_b_entrance",
         "Add a construction sign at the parking lot B entrance.",
-        [delta("construction_sign", 1, 1), near("parking lot B entrance", 6, category="construction_sign"), only("construction_sign")],
+        [
+            delta("construction_sign", 1, 1),
+            near("parking lot B entrance", 6, category="construction_sign"),
+            only("construction_sign"),
+        ],
         [call("add_asset", category="construction_sign", location=at("parking lot B entrance"))],
     ),
     case(
@@ -495,7 +544,11 @@ ADDITION = [
     case(
         "addition.indirect.jaywalker_test",
         "I want to see whether our car brakes for someone who steps out into the road without using a crossing. Set that up in front of it.",
-        [delta("pedestrian", 1, 1), behaviour("jaywalk", category="pedestrian", crosses_lane="main_eastbound"), only("pedestrian")],
+        [
+            delta("pedestrian", 1, 1),
+            behaviour("jaywalk", category="pedestrian", crosses_lane="main_eastbound"),
+            only("pedestrian"),
+        ],
         [call("add_asset", category="pedestrian", behaviour={"kind": "jaywalk"})],
     ),
     case(
@@ -507,7 +560,12 @@ ADDITION = [
     case(
         "addition.indirect.debris_30m",
         "Our perception team wants something lying on the road: broken concrete in the eastbound lane about thirty metres ahead of the test car.",
-        [delta("cement_rubble", 1, 1), lane("main_eastbound", category="cement_rubble"), near_point(-30, -1.75, 8, category="cement_rubble"), only("cement_rubble")],
+        [
+            delta("cement_rubble", 1, 1),
+            lane("main_eastbound", category="cement_rubble"),
+            near_point(-30, -1.75, 8, category="cement_rubble"),
+            only("cement_rubble"),
+        ],
         [call("add_asset", category="cement_rubble", location=at("ego", "in_front_of", distance=30))],
     ),
     case(
@@ -519,14 +577,26 @@ ADDITION = [
     case(
         "addition.indirect.lorry_at_jtekt",
         "For the delivery scenario there should be a lorry waiting at the JTEKT drop-off.",
-        [delta("truck", 1, 1), near("JTEKT building entrance", 10, category="truck"), surface("drivable", category="truck"), only("truck")],
+        [
+            delta("truck", 1, 1),
+            near("JTEKT building entrance", 10, category="truck"),
+            surface("drivable", category="truck"),
+            only("truck"),
+        ],
         [call("add_asset", category="truck", location=at("JTEKT building entrance"))],
     ),
     case(
         "addition.indirect.cyclist_east",
         "Could we have a cyclist riding east along Main Street, ahead of our car?",
         [delta("bicycle", 1, 1), behaviour(["follow_path", "drive_lane"], category="bicycle"), only("bicycle")],
-        [call("add_asset", category="bicycle", location=at("ego", "in_front_of", distance=15), behaviour={"kind": "follow_path", "waypoints": [[-45.0, -2.5], [100.0, -2.5]], "speed": 4})],
+        [
+            call(
+                "add_asset",
+                category="bicycle",
+                location=at("ego", "in_front_of", distance=15),
+                behaviour={"kind": "follow_path", "waypoints": [[-45.0, -2.5], [100.0, -2.5]], "speed": 4},
+            )
+        ],
         notes="Bicycles move as walkers: the Workers refuse drive_lane for them, so the path is explicit.",
     ),
     case(
@@ -558,10 +628,17 @@ ADDITION = [
     case(
         "addition.indirect.robot_then_sign",
         "Our robot will need a warning for drivers: put the rover at the JTEKT entrance and a road-work sign next to it.",
-        [delta("ackermann_robot", 1, 1), delta("construction_sign", 1, 1), near("JTEKT building entrance", 8, category="ackermann_robot"),
-         near("ackermann_robot_1", 5, category="construction_sign"), only("ackermann_robot", "construction_sign")],
-        [call("add_asset", category="ackermann_robot", location=at("JTEKT building entrance")),
-         call("add_asset", category="construction_sign", location=at("ackermann_robot_1", "next_to"))],
+        [
+            delta("ackermann_robot", 1, 1),
+            delta("construction_sign", 1, 1),
+            near("JTEKT building entrance", 8, category="ackermann_robot"),
+            near("ackermann_robot_1", 5, category="construction_sign"),
+            only("ackermann_robot", "construction_sign"),
+        ],
+        [
+            call("add_asset", category="ackermann_robot", location=at("JTEKT building entrance")),
+            call("add_asset", category="construction_sign", location=at("ackermann_robot_1", "next_to")),
+        ],
         tags=COMPOUND,
     ),
     # vague
@@ -581,7 +658,15 @@ ADDITION = [
         "addition.vague.more_traffic",
         "a bit more traffic would be good",
         [delta(VEHICLES, 1, 8), behaviour("drive_lane", category=VEHICLES, scope="added"), only(*VEHICLES)],
-        [call("add_asset", category="passenger_car", count=2, location=at("main_westbound"), behaviour={"kind": "drive_lane", "lane": "main_westbound"})],
+        [
+            call(
+                "add_asset",
+                category="passenger_car",
+                count=2,
+                location=at("main_westbound"),
+                behaviour={"kind": "drive_lane", "lane": "main_westbound"},
+            )
+        ],
     ),
     case(
         "addition.vague.trees_engineering",
@@ -598,7 +683,12 @@ ADDITION = [
     case(
         "addition.vague.obstacle_our_lane",
         "some kind of obstacle in our lane, whatever you think",
-        [delta(OBSTACLES, 1, 6), lane("main_eastbound", category=OBSTACLES), relative("in_front_of", "ego", 80, category=OBSTACLES, tolerance_deg=20), only(*OBSTACLES)],
+        [
+            delta(OBSTACLES, 1, 6),
+            lane("main_eastbound", category=OBSTACLES),
+            relative("in_front_of", "ego", 80, category=OBSTACLES, tolerance_deg=20),
+            only(*OBSTACLES),
+        ],
         [call("add_asset", category="road_barrier", location=at("ego", "in_front_of", distance=25))],
     ),
     case(
@@ -617,7 +707,15 @@ ADDITION = [
         "addition.vague.lot_a_kinda_full",
         "lot A is empty, make it kinda full with parked cars",
         [delta(CARS, 3, 40), near("parking lot A", 1, category=CARS, scope="added", require_all=True), only(*CARS)],
-        [call("arrange_assets", categories=["passenger_car"], shape="parking_row", count=8, location=at("parking lot A"))],
+        [
+            call(
+                "arrange_assets",
+                categories=["passenger_car"],
+                shape="parking_row",
+                count=8,
+                location=at("parking lot A"),
+            )
+        ],
     ),
     case(
         "addition.vague.something_at_hospital",
@@ -637,7 +735,11 @@ ADDITION = [
     case(
         "addition.erroneous.cone_infront_ego",
         "plz put trafic cone infront of ego car",
-        [delta("traffic_cone", 1, 1), relative("in_front_of", "ego", 40, category="traffic_cone", tolerance_deg=20), only("traffic_cone")],
+        [
+            delta("traffic_cone", 1, 1),
+            relative("in_front_of", "ego", 40, category="traffic_cone", tolerance_deg=20),
+            only("traffic_cone"),
+        ],
         [call("add_asset", category="traffic_cone", location=at("ego", "in_front_of", distance=10))],
     ),
     case(
@@ -656,7 +758,14 @@ ADDITION = [
         "addition.erroneous.bus_driveing_south",
         "i want a bus driveing on the campus drive going south",
         [delta("bus", 1, 1), behaviour("drive_lane", category="bus", lane="campus_southbound"), only("bus")],
-        [call("add_asset", category="bus", location=at("campus_southbound"), behaviour={"kind": "drive_lane", "lane": "campus_southbound"})],
+        [
+            call(
+                "add_asset",
+                category="bus",
+                location=at("campus_southbound"),
+                behaviour={"kind": "drive_lane", "lane": "campus_southbound"},
+            )
+        ],
     ),
     case(
         "addition.erroneous.tree_beside_of_union",
@@ -679,7 +788,12 @@ ADDITION = [
     case(
         "addition.erroneous.walker_cross_west",
         "Add a pedestrain who walk across the street on the west crosswalk",
-        [delta("pedestrian", 1, 1), behaviour("cross_road", category="pedestrian", crosses_lane="main_eastbound"), near("west crosswalk", 8, category="pedestrian"), only("pedestrian")],
+        [
+            delta("pedestrian", 1, 1),
+            behaviour("cross_road", category="pedestrian", crosses_lane="main_eastbound"),
+            near("west crosswalk", 8, category="pedestrian"),
+            only("pedestrian"),
+        ],
         [call("add_asset", category="pedestrian", location=at("west crosswalk"), behaviour={"kind": "cross_road"})],
     ),
     case(
@@ -693,9 +807,51 @@ ADDITION = [
     case(
         "addition.erroneous.cones_then_more",
         "and 2 more of same next to them pls",
-        [delta("traffic_cone", 2, 2), near_point(-35, -1.75, 8, category="traffic_cone", scope="added", require_all=True), only("traffic_cone")],
+        [
+            delta("traffic_cone", 2, 2),
+            near_point(-35, -1.75, 8, category="traffic_cone", scope="added", require_all=True),
+            only("traffic_cone"),
+        ],
         [call("add_asset", category="traffic_cone", count=2, location=at("traffic_cone_1", "next_to"))],
         setup=(step(CONES_AHEAD["prompt"], *CONES_AHEAD["calls"], planned=True),),
+    ),
+    case(
+        "addition.direct.bus_west_truck_jtekt",
+        "Add a bus driving west on Main Street, and a truck parked at the JTEKT drop-off.",
+        [
+            delta("bus", 1, 1),
+            delta("truck", 1, 1),
+            behaviour("drive_lane", category="bus", lane="main_westbound"),
+            near("JTEKT building entrance", 10, category="truck"),
+            behaviour("parked", category="truck"),
+            only("bus", "truck"),
+        ],
+        [
+            call(
+                "add_asset",
+                category="bus",
+                location=at("main_westbound"),
+                behaviour={"kind": "drive_lane", "lane": "main_westbound"},
+            ),
+            call("add_asset", category="truck", location=at("JTEKT building entrance")),
+        ],
+        tags=COMPOUND,
+    ),
+    case(
+        "addition.vague.lifeless_quad",
+        "game designer here - the quad by the fountain feels lifeless, throw in a couple of places to sit and a few people hanging out",
+        [
+            delta("bench", 1, 4),
+            delta("pedestrian", 2, 8),
+            near("fountain", 12, category="bench", require_all=True),
+            near("fountain", 12, category="pedestrian", require_all=True),
+            only("bench", "pedestrian"),
+        ],
+        [
+            call("add_asset", category="bench", count=2, location=at("fountain")),
+            call("add_asset", category="pedestrian", count=3, location=at("fountain", "next_to", distance=3)),
+        ],
+        tags=COMPOUND,
     ),
 ]
 
@@ -789,7 +945,11 @@ REMOVAL = [
     case(
         "removal.indirect.lamps_near_main_gate",
         "The lamp posts at the western end of Main Street are being replaced: clear the three nearest the main gate.",
-        [gone("street_light_1", "street_light_2", "street_light_3"), delta("street_light", -3, -3), only("street_light")],
+        [
+            gone("street_light_1", "street_light_2", "street_light_3"),
+            delta("street_light", -3, -3),
+            only("street_light"),
+        ],
         [call("remove_assets", category="street_light", near="main gate", count=3)],
     ),
     case(
@@ -903,6 +1063,13 @@ REMOVAL = [
         tags=IMPOSSIBLE,
         notes="The ego vehicle cannot be removed.",
     ),
+    case(
+        "removal.indirect.declutter_bus_stop",
+        "Speaking as the city planner: the pavement at the bus stop is cluttered, so the seat and the rubbish bin there should both go.",
+        [gone("bench_1", "trash_bin_1"), only("bench", "trash_bin")],
+        [call("remove_assets", assets=["bench_1"]), call("remove_assets", assets=["trash_bin_1"])],
+        tags=COMPOUND,
+    ),
 ]
 
 
@@ -938,7 +1105,11 @@ POSITIONING = [
     case(
         "positioning.direct.car2_westbound_east_gate",
         "Put passenger_car_2 in the westbound lane of Main Street near the east gate.",
-        [lane("main_westbound", asset="passenger_car_2"), near("east gate", 15, asset="passenger_car_2"), only("passenger_car")],
+        [
+            lane("main_westbound", asset="passenger_car_2"),
+            near("east gate", 15, asset="passenger_car_2"),
+            only("passenger_car"),
+        ],
         [call("place_asset", asset="passenger_car_2", location=at("east gate", "in_lane", lane="main_westbound"))],
     ),
     case(
@@ -950,14 +1121,24 @@ POSITIONING = [
     case(
         "positioning.direct.stop_sign_north_crosswalk",
         "Put the stop sign at the north crosswalk.",
-        [near("north crosswalk", 6, asset="stop_sign_1"), surface("sidewalk", "ground", asset="stop_sign_1"), only("stop_sign")],
+        [
+            near("north crosswalk", 6, asset="stop_sign_1"),
+            surface("sidewalk", "ground", asset="stop_sign_1"),
+            only("stop_sign"),
+        ],
         [call("place_asset", asset="stop_sign_1", location=at("north crosswalk"))],
     ),
     case(
         "positioning.direct.ego_northbound",
         "Put the ego vehicle in lane campus_northbound, a little north of the north crosswalk.",
         [lane("campus_northbound", asset="ego"), near("north crosswalk", 12, asset="ego"), only("ego_vehicle")],
-        [call("place_asset", asset="ego", location=at("north crosswalk", "in_lane", lane="campus_northbound", distance=8))],
+        [
+            call(
+                "place_asset",
+                asset="ego",
+                location=at("north crosswalk", "in_lane", lane="campus_northbound", distance=8),
+            )
+        ],
     ),
     case(
         "positioning.direct.tree_inside_engineering",
@@ -978,7 +1159,11 @@ POSITIONING = [
     case(
         "positioning.direct.car1_behind_ego",
         "Place passenger_car_1 in the eastbound lane 15 m behind the ego vehicle.",
-        [lane("main_eastbound", asset="passenger_car_1"), near_point(-75, -1.75, 5, asset="passenger_car_1"), only("passenger_car")],
+        [
+            lane("main_eastbound", asset="passenger_car_1"),
+            near_point(-75, -1.75, 5, asset="passenger_car_1"),
+            only("passenger_car"),
+        ],
         [call("place_asset", asset="passenger_car_1", location=at("ego", "behind", along_m=-15))],
     ),
     # indirect
@@ -1009,19 +1194,32 @@ POSITIONING = [
     case(
         "positioning.indirect.block_jtekt_dropoff",
         "The scenario needs one of the parked sedans blocking the JTEKT drop-off.",
-        [near("JTEKT building entrance", 10, category="passenger_car"), count("passenger_car", 2, 2), only("passenger_car")],
+        [
+            near("JTEKT building entrance", 10, category="passenger_car"),
+            count("passenger_car", 2, 2),
+            only("passenger_car"),
+        ],
         [call("place_asset", asset="passenger_car_1", location=at("JTEKT building entrance"))],
     ),
     case(
         "positioning.indirect.stop_sign_east_side",
         "A stop sign only on the west approach is odd; the one we have should guard the east approach of the junction instead.",
-        [near_point(12, 0, 9, asset="stop_sign_1"), surface("sidewalk", "ground", asset="stop_sign_1"), only("stop_sign")],
+        [
+            near_point(12, 0, 9, asset="stop_sign_1"),
+            surface("sidewalk", "ground", asset="stop_sign_1"),
+            only("stop_sign"),
+        ],
         [call("place_asset", asset="stop_sign_1", location=xy(13.5, 5.5))],
     ),
     case(
         "positioning.indirect.car_to_meet_ego",
         "I want the ego to come up behind a stopped car: take one of the lot B sedans and leave it in our lane forty metres ahead.",
-        [lane("main_eastbound", category="passenger_car"), near_point(-20, -1.75, 6, category="passenger_car"), relative("in_front_of", "ego", 50, category="passenger_car", tolerance_deg=15), only("passenger_car")],
+        [
+            lane("main_eastbound", category="passenger_car"),
+            near_point(-20, -1.75, 6, category="passenger_car"),
+            relative("in_front_of", "ego", 50, category="passenger_car", tolerance_deg=15),
+            only("passenger_car"),
+        ],
         [call("place_asset", asset="passenger_car_2", location=at("ego", along_m=40))],
     ),
     case(
@@ -1034,7 +1232,11 @@ POSITIONING = [
     case(
         "positioning.indirect.rover_to_jtekt",
         "On second thought the demo happens at the JTEKT Building, so the robot should wait at its entrance rather than in the car park.",
-        [near("JTEKT building entrance", 8, category="ackermann_robot"), delta("ackermann_robot", 0, 0), only("ackermann_robot")],
+        [
+            near("JTEKT building entrance", 8, category="ackermann_robot"),
+            delta("ackermann_robot", 0, 0),
+            only("ackermann_robot"),
+        ],
         [call("place_asset", asset="ackermann_robot_1", location=at("JTEKT building entrance"))],
         setup=(step(ROVER_IN_LOT_A["prompt"], *ROVER_IN_LOT_A["calls"], planned=True),),
     ),
@@ -1075,7 +1277,10 @@ POSITIONING = [
         "the hydrant is kind of in a weird spot, put it near the crosswalk",
         [only("fire_hydrant")],
         [call("place_asset", asset="fire_hydrant_1", location=at("west crosswalk", "on_sidewalk"))],
-        alternatives=([near("west crosswalk", 8, asset="fire_hydrant_1")], [near("north crosswalk", 8, asset="fire_hydrant_1")]),
+        alternatives=(
+            [near("west crosswalk", 8, asset="fire_hydrant_1")],
+            [near("north crosswalk", 8, asset="fire_hydrant_1")],
+        ),
     ),
     case(
         "positioning.vague.gate_lamp_central",
@@ -1156,19 +1361,1135 @@ POSITIONING = [
         "positioning.erroneous.bench_then_paint",
         "bring the bench to fountain and make it green colour, thank",
         [near("fountain", 8, asset="bench_1"), looks(asset="bench_1", colour="green"), only("bench")],
-        [call("place_asset", asset="bench_1", location=at("fountain")), call("set_asset_appearance", assets=["bench_1"], colour="green")],
+        [
+            call("place_asset", asset="bench_1", location=at("fountain")),
+            call("set_asset_appearance", assets=["bench_1"], colour="green"),
+        ],
+        tags=COMPOUND,
+    ),
+    case(
+        "positioning.indirect.pole_and_red_outlet",
+        "The tall metal pole with a lamp on top that stands nearest the east gate should be moved to the fountain, and the short red water outlet by the crossroads belongs next to the bus stop.",
+        [
+            near("fountain", 8, asset="street_light_12"),
+            near("bus stop", 6, asset="fire_hydrant_1"),
+            only(assets=("street_light_12", "fire_hydrant_1")),
+        ],
+        [
+            call("place_asset", asset="street_light_12", location=at("fountain")),
+            call("place_asset", asset="fire_hydrant_1", location=at("bus stop")),
+        ],
         tags=COMPOUND,
     ),
 ]
 
 
-MOVING: list[Json] = []
+PARKED_BUS = step(
+    "Park a bus in the eastbound lane about 40 m ahead of our car.",
+    call("add_asset", category="bus", location=at("ego", "in_front_of", distance=40)),
+)
+
+MOVING = [
+    # direct
+    case(
+        "moving.direct.ego_forward_10",
+        "Move the ego vehicle 10 metres forward.",
+        [moved("ego", 9, 11, direction="forward"), only("ego_vehicle")],
+        [call("move_asset", asset="ego", forward=10)],
+    ),
+    case(
+        "moving.direct.bench_turn_90",
+        "Turn the bench 90 degrees.",
+        [moved("bench_1", 0, 0.5, turn_min_deg=80, turn_max_deg=100), only("bench")],
+        [call("move_asset", asset="bench_1", turn_deg=90)],
+    ),
+    case(
+        "moving.direct.car1_left_2m",
+        "Shift passenger_car_1 two metres to its left.",
+        [moved("passenger_car_1", 1.5, 2.5, direction="left"), only("passenger_car")],
+        [call("move_asset", asset="passenger_car_1", left=2)],
+    ),
+    case(
+        "moving.direct.car2_drive_east_7",
+        "Make passenger_car_2 drive in lane main_eastbound at 7 m/s.",
+        [
+            behaviour("drive_lane", asset="passenger_car_2", lane="main_eastbound", speed_min=6.5, speed_max=7.5),
+            only("passenger_car"),
+        ],
+        [
+            call(
+                "set_behaviour",
+                asset="passenger_car_2",
+                behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 7},
+            )
+        ],
+    ),
+    case(
+        "moving.direct.hydrant_3m_east",
+        "Move the fire hydrant 3 metres east.",
+        [moved("fire_hydrant_1", 2.5, 3.5), near_point(19, 5.5, 0.6, asset="fire_hydrant_1"), only("fire_hydrant")],
+        [call("move_asset", asset="fire_hydrant_1", east=3)],
+    ),
+    case(
+        "moving.direct.suv_circles_6m",
+        "Make the SUV drive in circles in parking lot B with a 6 m radius.",
+        [behaviour("circle", asset="suv_1", radius_min=5.5, radius_max=6.5, centre_near="parking lot B"), only("suv")],
+        [call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "radius": 6, "centre": "parking lot B"})],
+    ),
+    case(
+        "moving.direct.ego_speed_8",
+        "Set the ego vehicle to drive its lane at 8 m/s.",
+        [
+            behaviour("drive_lane", asset="ego", lane="main_eastbound", speed_min=7.5, speed_max=8.5),
+            only("ego_vehicle"),
+        ],
+        [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 8})],
+    ),
+    case(
+        "moving.direct.ego_500m",
+        "Move the ego vehicle 500 metres forward.",
+        REFUSED,
+        [call("move_asset", asset="ego", forward=500)],
+        tags=IMPOSSIBLE,
+        notes="500 m east of the ego is far outside the world (x ends at 110).",
+    ),
+    # indirect
+    case(
+        "moving.indirect.ego_back_up_five",
+        "The test car starts a bit too close to the junction for my liking; back it up by five metres.",
+        [moved("ego", 4, 6, direction="backward"), only("ego_vehicle")],
+        [call("move_asset", asset="ego", forward=-5)],
+    ),
+    case(
+        "moving.indirect.suv_joins_traffic",
+        "We'd like the parked SUV to pull out and join the traffic heading west on Main Street.",
+        [behaviour("drive_lane", asset="suv_1", lane="main_westbound"), only("suv")],
+        [call("set_behaviour", asset="suv_1", behaviour={"kind": "drive_lane", "lane": "main_westbound"})],
+    ),
+    case(
+        "moving.indirect.bench_face_other_way",
+        "Whoever sits on the bench stares at the traffic; swing it round so it faces the other way.",
+        [moved("bench_1", 0, 1, turn_min_deg=150), only("bench")],
+        [call("move_asset", asset="bench_1", turn_deg=180)],
+    ),
+    case(
+        "moving.indirect.west_car_skidpad",
+        "The car at the west end of the lot B row should be doing skidpad laps right there in the lot.",
+        [behaviour("circle", asset="passenger_car_1", centre_near="parking lot B"), only("passenger_car")],
+        [call("set_behaviour", asset="passenger_car_1", behaviour={"kind": "circle", "centre": "parking lot B"})],
+        notes="Without a centre the circle Worker picks the first free lot, lot A, and moves the car there.",
+    ),
+    case(
+        "moving.indirect.walker_crosses_west",
+        "That person shouldn't just stand there: have them walk over the road at the west crosswalk.",
+        [
+            behaviour("cross_road", category="pedestrian", crosses_lane="main_eastbound"),
+            near("west crosswalk", 8, category="pedestrian"),
+            delta("pedestrian", 0, 0),
+            only("pedestrian"),
+        ],
+        [call("set_behaviour", asset="pedestrian_1", behaviour={"kind": "cross_road"})],
+        setup=(step(WALKER_AT_STOP["prompt"], *WALKER_AT_STOP["calls"], planned=True),),
+    ),
+    case(
+        "moving.indirect.bin_off_kerb",
+        "The bin at the bus stop sits on the kerb line; nudge it one metre north, away from the road.",
+        [moved("trash_bin_1", 0.5, 1.5), near_point(-33.5, -4.5, 0.6, asset="trash_bin_1"), only("trash_bin")],
+        [call("move_asset", asset="trash_bin_1", north=1)],
+    ),
+    case(
+        "moving.indirect.ego_hold_still",
+        "For the first take the test car should just sit where it is, engine off.",
+        [behaviour("parked", asset="ego"), moved("ego", 0, 0.5), only("ego_vehicle")],
+        [call("set_behaviour", asset="ego", behaviour={"kind": "parked"})],
+    ),
+    # vague
+    case(
+        "moving.vague.ego_up_a_bit",
+        "move our car up a bit",
+        [moved("ego", 1, 20, direction="forward"), only("ego_vehicle")],
+        [call("move_asset", asset="ego", forward=5)],
+    ),
+    case(
+        "moving.vague.turn_suv_around",
+        "turn the suv around",
+        [moved("suv_1", 0, 3, turn_min_deg=150), only("suv")],
+        [call("move_asset", asset="suv_1", turn_deg=180)],
+    ),
+    case(
+        "moving.vague.get_bus_moving",
+        "ok now get the bus moving",
+        [behaviour("drive_lane", category="bus", lane="main_eastbound"), only("bus")],
+        [call("set_behaviour", asset="bus_1", behaviour={"kind": "drive_lane", "lane": "main_eastbound"})],
+        setup=(PARKED_BUS,),
+    ),
+    case(
+        "moving.vague.shuffle_hydrant",
+        "shuffle the hydrant over a few metres",
+        [moved("fire_hydrant_1", 1, 10), only("fire_hydrant")],
+        [call("move_asset", asset="fire_hydrant_1", east=3)],
+    ),
+    case(
+        "moving.vague.lot_b_cars_do_something",
+        "can the cars in lot B do something, like drive around",
+        [behaviour(["drive_lane", "circle", "follow_path"], category=CARS), only(*CARS)],
+        [call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B"})],
+    ),
+    case(
+        "moving.vague.slow_ego_little",
+        "slow our car down a little",
+        [behaviour("drive_lane", asset="ego", speed_min=1.5, speed_max=4.9), only("ego_vehicle")],
+        [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 3.5})],
+    ),
+    case(
+        "moving.vague.bench_back_touch",
+        "push the bench back a touch",
+        [moved("bench_1", 0.2, 2.5), only("bench")],
+        [call("move_asset", asset="bench_1", forward=-1)],
+    ),
+    case(
+        "moving.vague.ego_forward_then_slower",
+        "roll our car forward a bit and then have it take it easy, maybe 3 m/s",
+        [
+            moved("ego", 1, 20, direction="forward"),
+            behaviour("drive_lane", asset="ego", speed_min=2.5, speed_max=3.5),
+            only("ego_vehicle"),
+        ],
+        [
+            call("move_asset", asset="ego", forward=5),
+            call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 3}),
+        ],
+        tags=COMPOUND,
+    ),
+    # erroneous
+    case(
+        "moving.erroneous.mvoe_ego_15",
+        "mvoe ego forwrd 15m",
+        [moved("ego", 14, 16, direction="forward"), only("ego_vehicle")],
+        [call("move_asset", asset="ego", forward=15)],
+    ),
+    case(
+        "moving.erroneous.turn_bench_45",
+        "turn teh bench 45 degre",
+        [moved("bench_1", 0, 0.5, turn_min_deg=40, turn_max_deg=50), only("bench")],
+        [call("move_asset", asset="bench_1", turn_deg=45)],
+    ),
+    case(
+        "moving.erroneous.suv_west_bound",
+        "make suv drive on main street west bound",
+        [behaviour("drive_lane", asset="suv_1", lane="main_westbound"), only("suv")],
+        [call("set_behaviour", asset="suv_1", behaviour={"kind": "drive_lane", "lane": "main_westbound"})],
+    ),
+    case(
+        "moving.erroneous.hydrant_2_meter_north",
+        "Please moving the hydrant 2 meter to north",
+        [moved("fire_hydrant_1", 1.5, 2.5), near_point(16, 7.5, 0.6, asset="fire_hydrant_1"), only("fire_hydrant")],
+        [call("move_asset", asset="fire_hydrant_1", north=2)],
+    ),
+    case(
+        "moving.erroneous.car1_circle",
+        "the car 1 in lot b, make it go in circle",
+        [behaviour("circle", asset="passenger_car_1"), only("passenger_car")],
+        [call("set_behaviour", asset="passenger_car_1", behaviour={"kind": "circle", "centre": "parking lot B"})],
+    ),
+    case(
+        "moving.erroneous.ego_more_fast",
+        "ego go more fast, 10 m/s",
+        [behaviour("drive_lane", asset="ego", speed_min=9.5, speed_max=10.5), only("ego_vehicle")],
+        [call("set_behaviour", asset="ego", behaviour={"kind": "drive_lane", "lane": "main_eastbound", "speed": 10})],
+    ),
+    case(
+        "moving.erroneous.hydrant_drive",
+        "make the fire hydrant drive down main street lol",
+        REFUSED,
+        [call("set_behaviour", asset="fire_hydrant_1", behaviour={"kind": "drive_lane", "lane": "main_eastbound"})],
+        tags=IMPOSSIBLE,
+        notes="A hydrant cannot drive.",
+    ),
+    case(
+        "moving.direct.car2_forward_then_turn",
+        "Move passenger_car_2 five metres forward, then turn it 90 degrees to the left.",
+        [
+            moved("passenger_car_2", 4, 6, turn_min_deg=80, turn_max_deg=100),
+            near_point(27, -37, 1, asset="passenger_car_2"),
+            only("passenger_car"),
+        ],
+        [
+            call("move_asset", asset="passenger_car_2", forward=5),
+            call("move_asset", asset="passenger_car_2", turn_deg=90),
+        ],
+        tags=COMPOUND,
+    ),
+    case(
+        "moving.direct.ego_30_feet",
+        "Move the ego vehicle 30 feet forward.",
+        [moved("ego", 8, 10.5, direction="forward"), only("ego_vehicle")],
+        [call("move_asset", asset="ego", forward=9.1)],
+    ),
+]
 
 
-ARRANGEMENT: list[Json] = []
+ARRANGEMENT = [
+    # direct
+    case(
+        "arrangement.direct.cones_across_road",
+        "Arrange 6 traffic cones in a line across Main Street, 20 m ahead of the ego.",
+        [
+            delta("traffic_cone", 6, 6),
+            layout("line", category="traffic_cone", tolerance=1.0),
+            near_point(-40, 0, 6, category="traffic_cone", require_all=True),
+            only("traffic_cone"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="line",
+                count=6,
+                spacing=1.2,
+                heading_deg=90,
+                location=xy(-40, 0),
+            )
+        ],
+    ),
+    case(
+        "arrangement.direct.bollard_ring_fountain",
+        "Put a ring of 8 bollards around the fountain.",
+        [delta("bollard", 8, 8), layout("ring", category="bollard", around="fountain"), only("bollard")],
+        [call("arrange_assets", categories=["bollard"], shape="ring", count=8, location=at("fountain"))],
+    ),
+    case(
+        "arrangement.direct.lane_edge_bus_stop",
+        "Line the edge of the eastbound lane with 10 cones, starting at the bus stop.",
+        [
+            delta("traffic_cone", 10, 10),
+            layout("line", category="traffic_cone"),
+            lane("main_eastbound", category="traffic_cone", scope="added"),
+            near("bus stop", 35, category="traffic_cone", require_all=True),
+            only("traffic_cone"),
+        ],
+        [call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", count=10, location=at("bus stop"))],
+    ),
+    case(
+        "arrangement.direct.row_cars_lot_a",
+        "Park a row of 4 passenger cars in parking lot A.",
+        [
+            delta("passenger_car", 4, 4),
+            layout("line", category="passenger_car", min_count=4),
+            near("parking lot A", 1, category="passenger_car", scope="added", require_all=True),
+            only("passenger_car"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["passenger_car"],
+                shape="parking_row",
+                count=4,
+                location=at("parking lot A"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.direct.bollard_grid_centre",
+        "Make a 3 by 3 grid of bollards in the middle of the crossroads.",
+        [
+            delta("bollard", 9, 9),
+            layout("cluster", category="bollard", tolerance=4.5, min_count=9),
+            near("main intersection", 1, category="bollard", scope="added", require_all=True),
+            only("bollard"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["bollard"],
+                shape="grid",
+                count=9,
+                columns=3,
+                location=at("main intersection"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.direct.barriers_jtekt",
+        "Place five road barriers in a line in front of the JTEKT building entrance.",
+        [
+            delta("road_barrier", 5, 5),
+            layout("line", category="road_barrier"),
+            near("JTEKT building entrance", 10, category="road_barrier", require_all=True),
+            only("road_barrier"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["road_barrier"],
+                shape="line",
+                count=5,
+                location=at("JTEKT building entrance", "in_front_of"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.direct.bollards_round_hydrant",
+        "Put 6 bollards in a ring around the fire hydrant.",
+        [delta("bollard", 6, 6), layout("ring", category="bollard", around="fire_hydrant_1"), only("bollard")],
+        [call("arrange_assets", categories=["bollard"], shape="ring", count=6, location=at("fire_hydrant_1"))],
+    ),
+    case(
+        "arrangement.direct.trees_y9",
+        "Plant a line of 5 trees, 8 m apart, along y = 9, centred on x = 40.",
+        [
+            delta("tree", 5, 5),
+            layout("line", category="tree", spacing_min=7.5, spacing_max=8.5),
+            near_point(40, 9, 17, category="tree", scope="added", require_all=True),
+            only("tree"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["tree"],
+                shape="line",
+                count=5,
+                spacing=8,
+                heading_deg=0,
+                location=xy(40, 9),
+            )
+        ],
+    ),
+    case(
+        "arrangement.direct.suv_row_lot_b",
+        "Make a row of three SUVs parked side by side in the student car park.",
+        [
+            delta("suv", 3, 3),
+            layout("line", category="suv", scope="added"),
+            near("parking lot B", 1, category="suv", scope="added", require_all=True),
+            only("suv"),
+        ],
+        [call("arrange_assets", categories=["suv"], shape="parking_row", count=3, location=at("parking lot B"))],
+    ),
+    case(
+        "arrangement.direct.ring_100m",
+        "Put a ring of traffic cones with a 100 m radius around the crossroads.",
+        REFUSED,
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="ring",
+                radius=100,
+                location=at("main intersection"),
+            )
+        ],
+        tags=IMPOSSIBLE,
+        notes="A 100 m ring around the crossroads leaves the world (y ends at 90) and runs through buildings.",
+    ),
+    # indirect
+    case(
+        "arrangement.indirect.westbound_closure",
+        "We're simulating a lane closure on westbound Main Street by the JTEKT drop-off: eight cones along the lane edge.",
+        [
+            delta("traffic_cone", 8, 8),
+            layout("line", category="traffic_cone"),
+            lane("main_westbound", category="traffic_cone"),
+            near("JTEKT building entrance", 30, category="traffic_cone", require_all=True),
+            only("traffic_cone"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="lane_edge",
+                count=8,
+                location=at("JTEKT building entrance"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.indirect.slalom",
+        "For a slalom test, put five cones in a straight line down the middle of the eastbound lane, 10 m apart, starting 20 m ahead of our car.",
+        [
+            delta("traffic_cone", 5, 5),
+            layout("line", category="traffic_cone", spacing_min=9, spacing_max=11),
+            lane("main_eastbound", category="traffic_cone"),
+            relative("in_front_of", "ego", 70, category="traffic_cone", tolerance_deg=10, require_all=True),
+            only("traffic_cone"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="line",
+                count=5,
+                spacing=10,
+                heading_deg=0,
+                location=xy(-20, -1.75),
+            )
+        ],
+    ),
+    case(
+        "arrangement.indirect.crowd_round_stop",
+        "Crowd-control test: surround the bus stop with people, a circle of eight of them.",
+        [
+            delta("pedestrian", 8, 8),
+            layout("ring", category="pedestrian", around="bus stop", tolerance=1.5),
+            only("pedestrian"),
+        ],
+        [call("arrange_assets", categories=["pedestrian"], shape="ring", count=8, location=at("bus stop"))],
+    ),
+    case(
+        "arrangement.indirect.full_student_lot",
+        "The student car park should look busy for the parking-search test: a row of six cars next to each other.",
+        [
+            delta(CARS, 6, 6),
+            layout("line", category=CARS, scope="added"),
+            near("parking lot B", 1, category=CARS, scope="added", require_all=True),
+            only(*CARS),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["passenger_car"],
+                shape="parking_row",
+                count=6,
+                location=at("parking lot B"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.indirect.lidar_grid",
+        "To calibrate the lidar we need a four-by-four grid of cones on the open paving of the west car park.",
+        [
+            delta("traffic_cone", 16, 16),
+            layout("cluster", category="traffic_cone", tolerance=6),
+            near("parking lot A", 1, category="traffic_cone", require_all=True),
+            only("traffic_cone"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="grid",
+                count=16,
+                columns=4,
+                location=at("parking lot A"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.indirect.block_campus_north",
+        "Close Campus Drive just north of the junction: a line of road barriers straight across both lanes.",
+        [
+            delta("road_barrier", 2, 6),
+            layout("line", category="road_barrier", tolerance=1.0),
+            near_point(0, 16, 8, category="road_barrier", require_all=True),
+            surface("drivable", category="road_barrier"),
+            only("road_barrier"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["road_barrier"],
+                shape="line",
+                count=3,
+                spacing=2.2,
+                heading_deg=0,
+                location=xy(0, 15),
+            )
+        ],
+    ),
+    case(
+        "arrangement.indirect.fence_fountain",
+        "The robot mustn't drive through the fountain, so fence it off with posts all the way round.",
+        [delta("bollard", 4, 30), layout("ring", category="bollard", around="fountain"), only("bollard")],
+        [call("arrange_assets", categories=["bollard"], shape="ring", location=at("fountain"))],
+    ),
+    case(
+        "arrangement.indirect.taxi_rank_library",
+        "The library drop-off needs a taxi rank: three cars parked side by side there.",
+        [
+            delta(CARS, 3, 3),
+            layout("line", category=CARS),
+            near("Library entrance", 12, category=CARS, require_all=True),
+            only(*CARS),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["passenger_car"],
+                shape="parking_row",
+                count=3,
+                location=at("Library entrance"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.indirect.queue_jtekt",
+        "Our pedestrian-detection run needs a queue of five people lined up outside the JTEKT entrance.",
+        [
+            delta("pedestrian", 5, 5),
+            layout("line", category="pedestrian"),
+            near("JTEKT building entrance", 10, category="pedestrian", require_all=True),
+            only("pedestrian"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["pedestrian"],
+                shape="line",
+                count=5,
+                location=at("JTEKT building entrance"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.indirect.cones_in_union",
+        "To mark the fire exits, put a row of five cones inside the Student Union at x 42, y -63.",
+        REFUSED,
+        [call("arrange_assets", categories=["traffic_cone"], shape="line", count=5, location=xy(42, -63))],
+        tags=IMPOSSIBLE,
+        notes="(42, -63) is inside the Student Union.",
+    ),
+    case(
+        "arrangement.indirect.ring_then_sign",
+        "The hydrant is being serviced: ring it with bollards and stand a road-work sign beside it.",
+        [
+            layout("ring", category="bollard", around="fire_hydrant_1"),
+            delta("bollard", 4, 16),
+            delta("construction_sign", 1, 1),
+            near("fire_hydrant_1", 6, category="construction_sign"),
+            only("bollard", "construction_sign"),
+        ],
+        [
+            call("arrange_assets", categories=["bollard"], shape="ring", count=6, location=at("fire_hydrant_1")),
+            call("add_asset", category="construction_sign", location=at("fire_hydrant_1", "next_to", distance=4)),
+        ],
+        tags=COMPOUND,
+    ),
+    # vague
+    case(
+        "arrangement.vague.circle_round_hydrant",
+        "some posts in a circle around the hydrant",
+        [delta("bollard", 3, 16), layout("ring", category="bollard", around="fire_hydrant_1"), only("bollard")],
+        [call("arrange_assets", categories=["bollard"], shape="ring", location=at("fire_hydrant_1"))],
+    ),
+    case(
+        "arrangement.vague.barriers_east_gate",
+        "line a few barriers up near the east gate",
+        [
+            delta("road_barrier", 2, 8),
+            layout("line", category="road_barrier"),
+            near("east gate", 15, category="road_barrier", require_all=True),
+            only("road_barrier"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["road_barrier"],
+                shape="line",
+                count=3,
+                location=at("east gate", "in_lane", lane="main_westbound"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.vague.rows_lot_a",
+        "put a bunch of cars in rows in lot A",
+        [
+            delta(CARS, 2, 40),
+            layout("line", category=CARS, scope="added"),
+            near("parking lot A", 1, category=CARS, scope="added", require_all=True),
+            only(*CARS),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["passenger_car"],
+                shape="parking_row",
+                count=5,
+                location=at("parking lot A"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.vague.cones_down_our_lane",
+        "cones in a row down our lane maybe",
+        [
+            delta("traffic_cone", 2, 12),
+            layout("line", category="traffic_cone"),
+            lane("main_eastbound", category="traffic_cone"),
+            only("traffic_cone"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="line",
+                count=5,
+                heading_deg=0,
+                spacing=4,
+                location=at("ego", "in_front_of", distance=25),
+            )
+        ],
+    ),
+    case(
+        "arrangement.vague.people_round_fountain",
+        "people gathered round the fountain, kind of in a circle",
+        [delta("pedestrian", 3, 16), layout("ring", category="pedestrian", around="fountain"), only("pedestrian")],
+        [call("arrange_assets", categories=["pedestrian"], shape="ring", count=8, location=at("fountain"))],
+    ),
+    case(
+        "arrangement.vague.trees_engineering_drive",
+        "trees lining the way up to engineering",
+        [
+            delta("tree", 2, 10),
+            layout("line", category="tree", tolerance=1.5),
+            near("Engineering Hall entrance", 20, category="tree", require_all=True),
+            only("tree"),
+        ],
+        [call("arrange_assets", categories=["tree"], shape="line", count=4, location=at("Engineering Hall entrance"))],
+    ),
+    case(
+        "arrangement.vague.bin_grid_lot_b",
+        "a little grid of bins somewhere in lot B",
+        [
+            delta("trash_bin", 4, 16),
+            layout("cluster", category="trash_bin", tolerance=6),
+            near("parking lot B", 1, category="trash_bin", require_all=True),
+            only("trash_bin"),
+        ],
+        [call("arrange_assets", categories=["trash_bin"], shape="grid", count=6, location=at("parking lot B"))],
+    ),
+    case(
+        "arrangement.vague.posts_round_ego",
+        "surround our car with posts or something",
+        [delta("bollard", 4, 30), layout("ring", category="bollard", around="ego"), only("bollard")],
+        [call("arrange_assets", categories=["bollard"], shape="ring", location=at("ego"))],
+    ),
+    case(
+        "arrangement.vague.motorbikes_by_union",
+        "a row of motorbikes parked up near the student union",
+        [
+            delta("motorcycle", 2, 10),
+            layout("line", category="motorcycle"),
+            near("Student Union entrance", 16, category="motorcycle", require_all=True),
+            only("motorcycle"),
+        ],
+        [call("arrange_assets", categories=["motorcycle"], shape="parking_row", count=4, location=xy(42, -44))],
+    ),
+    # erroneous
+    case(
+        "arrangement.erroneous.line_cone_infront",
+        "make line of 5 cone infront ego car",
+        [
+            delta("traffic_cone", 5, 5),
+            layout("line", category="traffic_cone"),
+            relative("in_front_of", "ego", 40, category="traffic_cone", tolerance_deg=20, require_all=True),
+            only("traffic_cone"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="line",
+                count=5,
+                location=at("ego", "in_front_of", distance=15),
+            )
+        ],
+    ),
+    case(
+        "arrangement.erroneous.ring_bollard_fountan",
+        "ring of 8 bollard aroud the fountan",
+        [delta("bollard", 8, 8), layout("ring", category="bollard", around="fountain"), only("bollard")],
+        [call("arrange_assets", categories=["bollard"], shape="ring", count=8, location=at("fountain"))],
+    ),
+    case(
+        "arrangement.erroneous.park_4_car_row",
+        "park 4 car in a row on parkin lot A pls",
+        [
+            delta("passenger_car", 4, 4),
+            layout("line", category="passenger_car"),
+            near("parking lot A", 1, category="passenger_car", require_all=True),
+            only("passenger_car"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["passenger_car"],
+                shape="parking_row",
+                count=4,
+                location=at("parking lot A"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.erroneous.pedestrain_circle",
+        "put 6 pedestrain in circle round bus stop",
+        [
+            delta("pedestrian", 6, 6),
+            layout("ring", category="pedestrian", around="bus stop", tolerance=1.5),
+            only("pedestrian"),
+        ],
+        [call("arrange_assets", categories=["pedestrian"], shape="ring", count=6, location=at("bus stop"))],
+    ),
+    case(
+        "arrangement.erroneous.trees_library_front",
+        "Please arrange the trees in one line along the Library front, four pieces",
+        [
+            delta("tree", 4, 4),
+            layout("line", category="tree", scope="added"),
+            near("Library entrance", 12, category="tree", scope="added", require_all=True),
+            only("tree"),
+        ],
+        [call("arrange_assets", categories=["tree"], shape="line", count=4, location=at("Library entrance"))],
+    ),
+    case(
+        "arrangement.erroneous.grid_2x3_lot_b",
+        "grid 2x3 of cones at lot b",
+        [
+            delta("traffic_cone", 6, 6),
+            layout("cluster", category="traffic_cone", tolerance=5),
+            near("parking lot B", 1, category="traffic_cone", require_all=True),
+            only("traffic_cone"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="grid",
+                count=6,
+                columns=3,
+                location=at("parking lot B"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.erroneous.cones_allong_westbond",
+        "cones allong the edge of the westbond lane near jtekt",
+        [
+            delta("traffic_cone", 3, 20),
+            layout("line", category="traffic_cone"),
+            lane("main_westbound", category="traffic_cone"),
+            near("JTEKT building entrance", 30, category="traffic_cone", require_all=True),
+            only("traffic_cone"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="lane_edge",
+                count=8,
+                location=at("JTEKT building entrance"),
+            )
+        ],
+    ),
+    case(
+        "arrangement.erroneous.barriers_accross_campus",
+        "line barriers accross campus drive north of crossroad",
+        [
+            delta("road_barrier", 2, 6),
+            layout("line", category="road_barrier", tolerance=1.0),
+            near_point(0, 16, 8, category="road_barrier", require_all=True),
+            only("road_barrier"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["road_barrier"],
+                shape="line",
+                count=3,
+                spacing=2.2,
+                heading_deg=0,
+                location=xy(0, 15),
+            )
+        ],
+    ),
+    case(
+        "arrangement.erroneous.ring_300_cones",
+        "make a ring of 300 cones around the fountian",
+        REFUSED,
+        [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=300, location=at("fountain"))],
+        tags=IMPOSSIBLE,
+        notes="A scene holds at most 200 traffic cones.",
+    ),
+    case(
+        "arrangement.erroneous.more_cones_line",
+        "now 4 more cone in same line, continue it further up the road",
+        [
+            delta("traffic_cone", 4, 4),
+            layout("line", category="traffic_cone", scope="all", min_count=8),
+            lane("main_eastbound", category="traffic_cone", scope="added"),
+            relative("in_front_of", "ego", 80, category="traffic_cone", tolerance_deg=10, require_all=True),
+            only("traffic_cone"),
+        ],
+        [
+            call(
+                "arrange_assets",
+                categories=["traffic_cone"],
+                shape="line",
+                count=4,
+                heading_deg=0,
+                spacing=2,
+                location=xy(-12, -1.75),
+            )
+        ],
+        setup=(
+            step(
+                "make a line of 4 cones 30 m in front of the ego",
+                call(
+                    "arrange_assets",
+                    categories=["traffic_cone"],
+                    shape="line",
+                    count=4,
+                    heading_deg=0,
+                    spacing=2,
+                    location=xy(-30, -1.75),
+                ),
+                planned=True,
+            ),
+        ),
+    ),
+    case(
+        "arrangement.direct.edge_cones_and_sign",
+        "Line the eastbound lane edge with 6 cones starting at the bus stop, and put a construction sign on the sidewalk where the line starts.",
+        [
+            delta("traffic_cone", 6, 6),
+            layout("line", category="traffic_cone"),
+            delta("construction_sign", 1, 1),
+            near("bus stop", 8, category="construction_sign"),
+            only("traffic_cone", "construction_sign"),
+        ],
+        [
+            call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", count=6, location=at("bus stop")),
+            call("add_asset", category="construction_sign", location=at("bus stop", "on_sidewalk")),
+        ],
+        tags=COMPOUND,
+    ),
+]
 
 
-APPEARANCE: list[Json] = []
+APPEARANCE = [
+    # direct
+    case(
+        "appearance.direct.suv_red",
+        "Paint the SUV red.",
+        [looks(asset="suv_1", colour="red"), only(assets=("suv_1",))],
+        [call("set_asset_appearance", assets=["suv_1"], colour="red")],
+    ),
+    case(
+        "appearance.direct.time_1830",
+        "Set the time of day to 18:30.",
+        [env(time_from="18:25", time_to="18:35"), only(environment=True)],
+        [call("set_time_of_day", time="18:30")],
+    ),
+    case(
+        "appearance.direct.heavy_rain",
+        "Make it rain heavily.",
+        [env(weather=["rain"], intensity_min=0.75), only(environment=True)],
+        [call("set_weather", kind="rain", intensity=0.9)],
+    ),
+    case(
+        "appearance.direct.street_lights_on",
+        "Turn the street lights on.",
+        [env(street_lights="on"), only(environment=True)],
+        [call("set_lighting", street_lights="on")],
+    ),
+    case(
+        "appearance.direct.lamps_black",
+        "Make every street light black.",
+        [looks(category="street_light", colour="black", min_count=12, require_all=True), only("street_light")],
+        [call("set_asset_appearance", category="street_light", colour="black")],
+    ),
+    case(
+        "appearance.direct.fog_03",
+        "Set the weather to fog with intensity 0.3.",
+        [env(weather=["fog"], intensity_min=0.25, intensity_max=0.35), only(environment=True)],
+        [call("set_weather", kind="fog", intensity=0.3)],
+    ),
+    case(
+        "appearance.direct.car1_glossy_blue",
+        "Make passenger_car_1 glossy blue.",
+        [looks(asset="passenger_car_1", colour="blue", material="glossy"), only(assets=("passenger_car_1",))],
+        [call("set_asset_appearance", assets=["passenger_car_1"], colour="blue", material="glossy")],
+    ),
+    case(
+        "appearance.direct.clock_2530",
+        "Set the clock to 25:30.",
+        REFUSED,
+        [call("set_time_of_day", time="25:30")],
+        tags=IMPOSSIBLE,
+        notes="There is no 25:30 on a 24-hour clock.",
+    ),
+    # indirect
+    case(
+        "appearance.indirect.dusk_wet_roads",
+        "We're testing the camera at dusk, with the roads wet from rain that is still falling.",
+        [env(time_from="18:30", time_to="21:30", weather=["rain"]), only(environment=True)],
+        [call("set_time_of_day", time="dusk"), call("set_weather", kind="rain", intensity=0.5)],
+        tags=COMPOUND,
+    ),
+    case(
+        "appearance.indirect.hydrant_easy_to_spot",
+        "The fire hydrant should be easy to spot from far away; give it a bright yellow coat.",
+        [looks(asset="fire_hydrant_1", colour="yellow"), only(assets=("fire_hydrant_1",))],
+        [call("set_asset_appearance", assets=["fire_hydrant_1"], colour="yellow")],
+    ),
+    case(
+        "appearance.indirect.half_past_ten",
+        "Our night-vision test starts at half past ten in the evening.",
+        [env(time_from="22:25", time_to="22:35"), only(environment=True)],
+        [call("set_time_of_day", time="22:30")],
+    ),
+    case(
+        "appearance.indirect.winter",
+        "This is meant to be a winter scenario, with snow coming down.",
+        [env(weather=["snow"]), only(environment=True)],
+        [call("set_weather", kind="snow")],
+    ),
+    case(
+        "appearance.indirect.sunrise_commute",
+        "It should look like the early-morning commute, with the sun just coming up.",
+        [env(time_from="05:30", time_to="07:30"), only(environment=True)],
+        [call("set_time_of_day", time="sunrise")],
+    ),
+    case(
+        "appearance.indirect.suv_stand_out",
+        "The SUV in the student car park should be easy to tell apart from the grey sedans, so make it white.",
+        [looks(asset="suv_1", colour="white"), only(assets=("suv_1",))],
+        [call("set_asset_appearance", assets=["suv_1"], colour="white")],
+    ),
+    case(
+        "appearance.indirect.headlights_whole_run",
+        "Every vehicle should have its headlights on for this whole run.",
+        [env(vehicle_lights="on"), only(environment=True)],
+        [call("set_lighting", vehicle_lights="on")],
+    ),
+    case(
+        "appearance.indirect.tornado",
+        "For the extreme-weather test we need a tornado passing over campus.",
+        REFUSED,
+        [call("set_weather", kind="tornado")],
+        tags=IMPOSSIBLE,
+        notes="The weather may be clear, cloudy, rain, fog or snow.",
+    ),
+    case(
+        "appearance.indirect.night_lights_on",
+        "We're recording the late shift, so it has to be night, and the lamps along the streets must be lit.",
+        [env(night=True, street_lights="on"), only(environment=True)],
+        [call("set_time_of_day", time="22:00"), call("set_lighting", street_lights="on")],
+        tags=COMPOUND,
+    ),
+    # vague
+    case(
+        "appearance.vague.bit_gloomy",
+        "make it a bit gloomy",
+        [env(weather=["cloudy", "fog", "rain"]), only(environment=True)],
+        [call("set_weather", kind="cloudy", intensity=0.6)],
+    ),
+    case(
+        "appearance.vague.night_pls",
+        "night time pls",
+        [env(night=True), only(environment=True)],
+        [call("set_time_of_day", time="night")],
+    ),
+    case(
+        "appearance.vague.cars_look_different",
+        "make the cars look different",
+        [looks(category=CARS), only(*CARS)],
+        [call("set_asset_appearance", category="passenger_car", colour="red")],
+    ),
+    case(
+        "appearance.vague.little_foggy",
+        "a little foggy",
+        [env(weather=["fog"], intensity_max=0.5), only(environment=True)],
+        [call("set_weather", kind="fog", intensity=0.3)],
+    ),
+    case(
+        "appearance.vague.too_dark",
+        "it's too dark, make it brighter",
+        [only(environment=True)],
+        [call("set_lighting", exposure=1.5)],
+        setup=(step("Set the time to 21:00.", call("set_time_of_day", time="21:00")),),
+        alternatives=([env(exposure_min=1.05)], [env(street_lights="on")], [env(night=False)]),
+    ),
+    case(
+        "appearance.vague.bench_natural",
+        "the bench should look more natural",
+        [only(assets=("bench_1",))],
+        [call("set_asset_appearance", assets=["bench_1"], material="wood")],
+        alternatives=(
+            [looks(asset="bench_1", material="wood")],
+            [looks(asset="bench_1", colour=["brown", "green", "beige"])],
+        ),
+    ),
+    case(
+        "appearance.vague.weather_nice_again",
+        "make the weather nice again",
+        [env(weather=["clear"]), only(environment=True)],
+        [call("set_weather", kind="clear")],
+        setup=(RAINY,),
+    ),
+    # erroneous
+    case(
+        "appearance.erroneous.suv_bleu",
+        "paint teh suv bleu",
+        [looks(asset="suv_1", colour="blue"), only(assets=("suv_1",))],
+        [call("set_asset_appearance", assets=["suv_1"], colour="blue")],
+    ),
+    case(
+        "appearance.erroneous.six_thirty_pm",
+        "set time to 6.30 pm",
+        [env(time_from="18:25", time_to="18:35"), only(environment=True)],
+        [call("set_time_of_day", time="18:30")],
+    ),
+    case(
+        "appearance.erroneous.snowing_hard",
+        "make it snowing hard",
+        [env(weather=["snow"], intensity_min=0.75), only(environment=True)],
+        [call("set_weather", kind="snow", intensity=0.9)],
+    ),
+    case(
+        "appearance.erroneous.turn_of_lights",
+        "turn of the street lights",
+        [env(street_lights="off"), only(environment=True)],
+        [call("set_lighting", street_lights="off")],
+    ),
+    case(
+        "appearance.erroneous.rainy_not_strong",
+        "Please do the weather rainy but not too much strong",
+        [env(weather=["rain"], intensity_min=0.1, intensity_max=0.5), only(environment=True)],
+        [call("set_weather", kind="rain", intensity=0.3)],
+    ),
+    case(
+        "appearance.erroneous.bench_in_green",
+        "change the bench colour in green plz",
+        [looks(asset="bench_1", colour="green"), only(assets=("bench_1",))],
+        [call("set_asset_appearance", assets=["bench_1"], colour="green")],
+    ),
+    case(
+        "appearance.erroneous.suv_invisible",
+        "make the suv invisable so the camera cant see it",
+        REFUSED,
+        [call("set_asset_appearance", assets=["suv_1"], colour="invisible")],
+        tags=IMPOSSIBLE,
+        notes="Assets have a colour and a material; nothing is see-through.",
+    ),
+    case(
+        "appearance.erroneous.cones_i_added_orange",
+        "those cone i added, make them all white colour",
+        [looks(category="traffic_cone", colour="white", min_count=4, require_all=True), only("traffic_cone")],
+        [call("set_asset_appearance", category="traffic_cone", colour="white")],
+        setup=(step(CONES_AHEAD["prompt"], *CONES_AHEAD["calls"], planned=True),),
+    ),
+    case(
+        "appearance.direct.fog_and_seven_pm",
+        "Set fog at intensity 0.7 and the time to 19:00.",
+        [
+            env(weather=["fog"], intensity_min=0.65, intensity_max=0.75, time_from="18:55", time_to="19:05"),
+            only(environment=True),
+        ],
+        [call("set_weather", kind="fog", intensity=0.7), call("set_time_of_day", time="19:00")],
+        tags=COMPOUND,
+    ),
+]
 
 
 ALL_CASES: list[Json] = [*SEARCH, *ADDITION, *REMOVAL, *POSITIONING, *MOVING, *ARRANGEMENT, *APPEARANCE]
