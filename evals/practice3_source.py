@@ -2473,7 +2473,7 @@ APPEARANCE = [
         notes="Assets have a colour and a material; nothing is see-through.",
     ),
     case(
-        "appearance.erroneous.cones_i_added_orange",
+        "appearance.erroneous.cones_i_added_white",
         "those cone i added, make them all white colour",
         [looks(category="traffic_cone", colour="white", min_count=4, require_all=True), only("traffic_cone")],
         [call("set_asset_appearance", category="traffic_cone", colour="white")],
