@@ -3,6 +3,7 @@
 `BehaviourSpec` is what a planner says ("circle at radius 5 m", "jaywalk in front of the ego");
 `resolve_behaviour` turns it into a Scene behaviour with concrete geometry, and where the
 behaviour decides where the asset starts (a jaywalker at the kerb), that start pose.
+`follow_placement` keeps a driving vehicle's lane true to where a move or placement puts it.
 """
 
 from __future__ import annotations
@@ -46,6 +47,10 @@ CIRCLE_SAMPLES = 36
 DEFAULT_SKIDPAD_RADIUS_M = 5.0
 # A group move covers at most this many assets (a scene holds at most 500).
 MAX_GROUP = 500
+# A driving vehicle put down in a lane drives it when it faces within this of the lane's
+# direction: across the lane (a car turned 90 deg where it stands) steers back into it, beyond
+# a right angle it would be driving against the lane's traffic. The 1e-9 absorbs rounding.
+LANE_FACING_TOLERANCE_RAD = math.pi / 2 + 1e-9
 
 
 class BehaviourSpec(ToolArgs):
@@ -200,6 +205,50 @@ def resolve_behaviour(
     return _jaywalk(scene, spec)
 
 
+def follow_placement(scene: Scene, moved: AssetInstance) -> tuple[AssetInstance, str]:
+    """`moved` (an asset at its new pose) with a drive_lane behaviour that follows where it now
+    stands, and a note saying what changed ("" when nothing did).
+
+    A vehicle that drove a lane and now stands in a lane running the way it faces drives that
+    lane, at its old speed (where several are under it, as in a junction, the one it faces
+    along best; a vehicle turned across its lane still drives it). Put down off every lane (a parking lot, a
+    driveway) it is parked there, which is what a user who moves a car into a lot expects.
+    Turned to face against the traffic of every lane it stands in ("spin the ego around") it
+    is turned as asked and parked, since it can drive none of them that way; it never keeps a
+    lane it no longer stands in or drives one backwards. The note says which happened. Other
+    behaviours are left as they are.
+    """
+    behaviour = moved.behaviour
+    if not isinstance(behaviour, DriveLane):
+        return moved, ""
+    x, y, yaw = moved.pose.x, moved.pose.y, moved.pose.yaw
+    under = []
+    for lane in scene.roads.lanes:
+        near = nearest_on_polyline(x, y, lane.centreline)
+        if near.distance <= lane.width / 2:
+            under.append((near.distance, lane, near.heading))
+    if not under:
+        return moved.model_copy(update={"behaviour": Parked()}), (
+            f"; {moved.id} stands on no lane there, so it is parked now (it drove {behaviour.lane})"
+        )
+    facing = [(math.cos(yaw - heading), -d, lane) for d, lane, heading in under
+              if abs(math.remainder(yaw - heading, 2 * math.pi)) <= LANE_FACING_TOLERANCE_RAD]
+    if not facing:
+        names = " and ".join(lane.id for _, lane, _ in under)
+        return moved.model_copy(update={"behaviour": Parked()}), (
+            f"; facing {math.degrees(yaw) % 360:.0f} deg {moved.id} stands against the traffic of "
+            f"{names}, so it is parked now (it drove {behaviour.lane}); to drive that way, put it in "
+            "a lane running the way it faces"
+        )
+    # The lane it faces along best (in a junction the crossing lanes are under it too); on a
+    # tie its own lane, then the nearest.
+    _, _, lane = max(facing, key=lambda f: (round(f[0], 6), f[2].id == behaviour.lane, f[1]))
+    if lane.id == behaviour.lane:
+        return moved, ""
+    after = moved.model_copy(update={"behaviour": behaviour.model_copy(update={"lane": lane.id})})
+    return after, f"; it now drives {lane.id} (was {behaviour.lane})"
+
+
 def find_asset(scene: Scene, asset_id: str) -> AssetInstance:
     """The asset with this id, or NotFoundError naming the nearest ids."""
     found = scene.asset(asset_id.strip())
@@ -250,7 +299,8 @@ class MoveAsset(Tool[MoveArgs]):
     description = (
         "Shift existing assets (one, or a group moved together) forward/back/left/right or "
         "east/north by metres and/or turn them; or put one N m ahead of/behind another asset or "
-        "landmark along its lane (relative_to, along_m, side)."
+        "landmark along its lane (relative_to, along_m, side). A driving vehicle then drives the "
+        "lane it stands in, or is parked off every lane."
     )
     family = "move"
     Args = MoveArgs
@@ -267,14 +317,16 @@ class MoveAsset(Tool[MoveArgs]):
             return _place_along(scene, members[0], args)
         # One edit for the whole group: the rules see every member at its new place at once,
         # so the result does not depend on the order of the members.
-        ops = tuple(UpdateAsset(before=m, after=_shifted(m, args)) for m in members)
+        followed = [follow_placement(scene, _shifted(m, args)) for m in members]
+        ops = tuple(UpdateAsset(before=m, after=after) for m, (after, _) in zip(members, followed, strict=True))
+        notes = "".join(note for _, note in followed)
         edit = WorldEdit(ops=ops)
         cx = sum(op.after.pose.x for op in ops) / len(ops)
         cy = sum(op.after.pose.y for op in ops) / len(ops)
         if len(ops) == 1:
-            text = f"moved {ops[0].after.id} to ({cx:.1f}, {cy:.1f})"
+            text = f"moved {ops[0].after.id} to ({cx:.1f}, {cy:.1f}){notes}"
         else:
-            text = f"moved {', '.join(ids)} together; they now centre on ({cx:.1f}, {cy:.1f})"
+            text = f"moved {', '.join(ids)} together; they now centre on ({cx:.1f}, {cy:.1f}){notes}"
         return ToolResult(edit, text, (cx, cy), {"ids": ids})
 
 
@@ -290,10 +342,10 @@ def _place_along(scene: Scene, asset: AssetInstance, args: MoveArgs) -> ToolResu
     others = [a for a in scene.all_assets() if a.id != asset.id]
     yaw = asset.pose.yaw + math.radians(args.turn_deg) if args.turn_deg else None
     pose = find_free_pose(scene, asset, anchor, others, yaw)
-    after = asset.model_copy(update={"pose": pose})
+    after, note = follow_placement(scene, asset.model_copy(update={"pose": pose}))
     label = anchor.spot.label if anchor.spot else args.relative_to
     return ToolResult(WorldEdit(ops=(UpdateAsset(before=asset, after=after),)),
-                      f"moved {asset.id} {label}, to ({pose.x:.1f}, {pose.y:.1f})", (pose.x, pose.y))
+                      f"moved {asset.id} {label}, to ({pose.x:.1f}, {pose.y:.1f}){note}", (pose.x, pose.y))
 
 
 class BehaviourArgs(ToolArgs):
@@ -320,4 +372,4 @@ class SetBehaviour(Tool[BehaviourArgs]):
 
 
 __all__ = ["BEHAVIOUR_KINDS", "BehaviourSpec", "MoveAsset", "SetBehaviour",
-           "find_asset", "resolve_behaviour"]
+           "find_asset", "follow_placement", "resolve_behaviour"]

@@ -6,7 +6,7 @@ import math
 
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.tools.locate import Location, find_free_pose, resolve_anchor
-from drivetwin.tools.move import find_asset
+from drivetwin.tools.move import find_asset, follow_placement
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.edits import UpdateAsset, WorldEdit
 from drivetwin.worlds.scene import Scene
@@ -27,7 +27,8 @@ class PlaceAsset(Tool[PlaceArgs]):
     description = (
         "Put an existing asset at a new position: absolute x/y, or relative to a landmark or "
         "asset (in front of, behind, left of, right of, next to), the scene centre, a "
-        "sidewalk or a lane, or N m ahead of/behind a target along its lane (along_m, side)."
+        "sidewalk or a lane, or N m ahead of/behind a target along its lane (along_m, side). A "
+        "driving vehicle then drives the lane it stands in, or is parked off every lane."
     )
     family = "position"
     Args = PlaceArgs
@@ -39,7 +40,9 @@ class PlaceAsset(Tool[PlaceArgs]):
         others = [a for a in scene.all_assets() if a.id != asset.id]
         yaw = math.radians(args.yaw_deg) if args.yaw_deg is not None else None
         pose = find_free_pose(scene, asset, anchor, others, yaw)
-        after = asset.model_copy(update={"pose": pose})
+        # A driving vehicle drives the lane it is put in, or is parked off every lane.
+        after, note = follow_placement(scene, asset.model_copy(update={"pose": pose}))
         edit = WorldEdit(ops=(UpdateAsset(before=asset, after=after),))
         where = f"{anchor.spot.label}, " if anchor.spot else ""
-        return ToolResult(edit, f"placed {asset.id} {where}at ({pose.x:.1f}, {pose.y:.1f})", (pose.x, pose.y))
+        return ToolResult(edit, f"placed {asset.id} {where}at ({pose.x:.1f}, {pose.y:.1f}){note}",
+                          (pose.x, pose.y))
