@@ -39,6 +39,8 @@ from drivetwin.orchestrator.planning.attributes import (
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
 from drivetwin.orchestrator.planning.coverage import (
     Scope,
+    absent_but_added,
+    ambiguous_pick,
     back_reference,
     definite_but_added,
     environment_left_out,
@@ -50,7 +52,7 @@ from drivetwin.orchestrator.planning.coverage import (
     unknown_places,
     wrong_direction,
 )
-from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
+from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed, nearest_landmark
 from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, REMOVE_WORDS, asks
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.request import Request, read_request
@@ -81,6 +83,8 @@ QUERY_TOOLS = ("find_assets", "find_landmarks", "find_lanes", "asset_properties"
 # Workers that write the storyboard: their readings are the scenario reader's to judge.
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 MAX_READINGS = 3
+# Tools that act on a list of assets as well as on one.
+_GROUP_TOOLS = ("move_asset", "remove_assets", "set_asset_appearance")
 
 # Command verbs and fillers dropped before grounding a description on its nouns.
 _VERB = re.compile(r"\b(please|i'?d like|i want|we need|add|put|place|create|spawn|remove|delete|get rid of|"
@@ -197,7 +201,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
 def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) -> list[str]:
     """What the plan leaves out of the request (see coverage.py): named things, existing ones
     added anew, weather and times, all of a plural, places the world does not know."""
-    scope = Scope(effect.calls, (*effect.added, *effect.removed, *effect.changed), effect.removed, effect.added)
+    scope = _scope(effect)
     named = named_things(request.masked, request.categories, scene)
     single = not re.search(r",|;| and | also ", request.low)
     if request.question and single and any(c.tool in ("find_lanes", "find_landmarks") for c in effect.calls):
@@ -422,6 +426,17 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
     request = read_request(prompt, context.scene)
     found = problems_of(request, effect, context)
     if not found:
+        pick = None if request.question else ambiguous_pick(
+            request.masked, _scope(effect), context.scene, context.memory, request.place,
+            _nearness(context.scene, request.place) if request.place else None)
+        if pick is not None:
+            return _which_one(*pick, plan, context)
+        absent = [] if request.question else absent_but_added(request.masked, _scope(effect), context.scene)
+        if absent:
+            name = absent[0].replace("_", " ")
+            return Verdict("ask", [f"there is no {name} here to change"], Question(
+                text=f"There is no {name} in the scene yet. Add one?",
+                readings=[Reading(text=describe(plan.calls), calls=list(plan.calls))]))
         return Verdict("apply", outcome=effect.outcome)
     fitting: list[Reading] = []
     for reading in [*repairs(request, effect, context), *plan.alternatives]:
@@ -434,6 +449,57 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
     readings = [*fitting[: MAX_READINGS - 1], mine]
     text = f"I am not sure what you meant: {found[0]}. Which did you mean?"
     return Verdict("ask", found, Question(text=text, readings=readings))
+
+
+def _which_one(category: str, candidates: list[AssetInstance], plan: Plan, context: PlanContext) -> Verdict:
+    """Ask which of several things "the <category>" meant: the nearest two to the ego, and all."""
+    ego = context.scene.ego
+    ordered = sorted(candidates, key=lambda a: math.dist((a.pose.x, a.pose.y), (ego.pose.x, ego.pose.y)) if ego else 0.0)
+    original = {a.id for a in candidates}
+    readings = []
+    for chosen in [[a.id] for a in ordered[: MAX_READINGS - 1]] + [[a.id for a in ordered]]:
+        calls = [_retargeted(c, category, original, chosen) for c in plan.calls]
+        effect = dry_run([c for c in calls if c is not None], context) if all(calls) else None
+        if effect is not None and {a.id for a in _scope(effect).touched if a.category == category} == set(chosen):
+            x, y = _xy(context.scene, chosen[0])
+            where = f"{chosen[0]} at ({x:.0f}, {y:.0f}) near {nearest_landmark(context.scene, (x, y))}"
+            said = where if len(chosen) == 1 else "both" if len(chosen) == 2 else f"all {len(chosen)}"
+            readings.append(Reading(text=f"{said}: {describe([c for c in calls if c is not None])}",
+                                    calls=[c for c in calls if c is not None]))
+    name = category.replace("_", " ")
+    problem = f"there are {len(candidates)} of the {name} kind here and the words do not say which"
+    if not readings:
+        return Verdict("refuse", [problem], None, refusal([problem], context))
+    text = f"Which {name} did you mean? There are {len(candidates)}: {', '.join(a.id for a in ordered)}."
+    return Verdict("ask", [problem], Question(text=text, readings=readings[:MAX_READINGS]))
+
+
+def _retargeted(call: ToolCall, category: str, original: set[str], chosen: list[str]) -> ToolCall | None:
+    """`call` made to act on the assets `chosen` instead of whichever of `original` it picked;
+    None when the tool takes one asset and several are chosen."""
+    args = dict(call.args)
+    single = isinstance(args.get("asset"), str) and args["asset"] in original
+    listed = any(i in original for i in args.get("assets", []))
+    if not (single or listed or (args.get("category") == category and not args.get("assets"))):
+        return call
+    if single and len(chosen) > 1 and call.tool not in _GROUP_TOOLS:
+        return None  # place_asset, set_behaviour: one asset a call
+    for key in ("asset", "category", "count", "near"):
+        args.pop(key, None)
+    if single and len(chosen) == 1:
+        args["asset"] = chosen[0]
+    else:
+        args["assets"] = [*(i for i in call.args.get("assets", []) if i not in original), *chosen]
+    return call.model_copy(update={"args": args})
+
+
+def _scope(effect: Effect) -> Scope:
+    return Scope(effect.calls, (*effect.added, *effect.removed, *effect.changed), effect.removed, effect.added)
+
+
+def _xy(scene: Scene, asset_id: str) -> tuple[float, float]:
+    asset = scene.asset(asset_id)
+    return (asset.pose.x, asset.pose.y) if asset is not None else (0.0, 0.0)
 
 
 def _screened(prompt: str, question: Question, context: PlanContext) -> Verdict:

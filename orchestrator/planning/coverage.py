@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.memory import Memory
@@ -208,6 +208,59 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     return out
 
 
+# Words right after a singular noun that single one out ("the car nearest the gate", "the tree
+# by the bus stop", "the car on the left", "car 2"): the planner's pick is then the words'.
+_SINGLES_OUT = re.compile(
+    r"\s*(?:\d+\b(?!\s*(?:m|metres?|meters?|ft|feet|foot|yards?|degrees?|deg|km|kph|mph)\b)|in\b(?!\s+colou?r)|at\b|on\b|"
+    r"near|by\b|beside|next|behind|outside|inside|of\b|from\b|closest|nearest|furthest|farthest|that\b|"
+    r"which\b|who\b|with\b|parked|driving|moving|standing|across|opposite|(?:north|south|east|west)\w*\s+of\b|"
+    r"most\b|least\b|[a-z]+est\b|[a-z]+most\b)"
+)
+
+
+def ambiguous_pick(masked: str, scope: Scope, scene: Scene, memory: Memory, place: str | None,
+                   near: Callable[[AssetInstance], bool] | None) -> tuple[str, list[AssetInstance]] | None:
+    """"The car" said of one of several cars, the words singling none out and no earlier turn
+    making one of them the one meant, while the plan acts on some but not all of them: the
+    category and every candidate (those at the place named, when the place holds some)."""
+    recent = {i for turn in memory.live_turns() for i in (*turn.added, *turn.touched)}
+    indexed = ph.normalise(masked)  # the text find_categories indexes
+    for m in ph.find_categories(masked):
+        if m.plural or indexed[: m.start].split()[-1:] not in (["the"], ["that"], ["this"]):
+            continue
+        if _SINGLES_OUT.match(indexed[m.end :]):
+            continue
+        candidates = [a for a in scene.assets if a.category == m.category]
+        if near is not None and place is not None and any(near(a) for a in candidates):
+            candidates = [a for a in candidates if near(a)]
+        acted = {a.id for a in scope.touched if a.category == m.category} - {a.id for a in scope.added}
+        if len(candidates) < 2 or any(a.id in recent for a in candidates):
+            continue
+        if acted and len(acted & {a.id for a in candidates}) < len(candidates):
+            return m.category, sorted(candidates, key=lambda a: a.id)
+    return None
+
+
+# Verbs that change a thing already there: "paint the truck", said where there is no truck,
+# asks about a thing that is not there rather than for a new one.
+_CHANGES_EXISTING = frozenset(["make", "paint", "colour", "color", "recolour", "recolor", "turn", "move", "shift",
+                               "push", "pull", "nudge", "rotate", "drive", "slide", "relocate", "spin", "reverse"])
+
+
+def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
+    """Categories a verb of change points at as there ("paint the truck red") that the scene
+    does not have, which the plan adds instead."""
+    if _NEW.search(masked):
+        return []
+    out = []
+    for m in named_in(masked):
+        before = m.last_words(2)
+        if len(before) == 2 and before[0] in _CHANGES_EXISTING and before[1] in _DEFINITE and not scene.count(m.category) \
+                and any(a.category == m.category for a in scope.added) and m.category not in out:
+            out.append(m.category)
+    return out
+
+
 def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """Categories asked for as new ("a tree at lot A", "two benches by the fountain") that the
     plan takes from elsewhere in the scene, moving existing ones and adding none."""
@@ -358,6 +411,8 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
 __all__ = [
     "Named",
     "Scope",
+    "absent_but_added",
+    "ambiguous_pick",
     "back_reference",
     "definite_but_added",
     "environment_left_out",

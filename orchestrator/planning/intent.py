@@ -27,7 +27,8 @@ _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
-_INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|"
+_INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|list of|"
+                   r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
                    r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
 # Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
@@ -50,9 +51,19 @@ _REASON = re.compile(
 )
 
 
+# A reason said first and the request after it ("I want to see if the wipers cope, so give me
+# rain"): the words before ", so" followed by a command say why.
+_REASON_FIRST = re.compile(
+    r"^[^.;!?]*?,\s*(?:and\s+)?so\s+(?=(?:please\s+|just\s+|(?:can|could|would) you\s+)?(?:give|make|add|put|set|let|"
+    r"turn|bring|place|create|remove|take|move|get|start|switch|change|clear|park|spawn|drop|line|block|close)\b)",
+    re.IGNORECASE,
+)
+
+
 def without_reason(text: str) -> str:
-    """`text` without the clauses that only say why ("so buses can pass")."""
-    return _REASON.sub("", text)
+    """`text` without the clauses that only say why ("so buses can pass", "to test the wipers,
+    so give me rain")."""
+    return _REASON.sub("", _REASON_FIRST.sub("", text))
 
 
 def asks(low: str) -> bool:

@@ -111,10 +111,9 @@ def _describe(call: ToolCall) -> str:
     a = call.args
     if call.tool == "add_asset":
         how = f", {a['behaviour'].get('kind', '')}".replace("_", " ") if isinstance(a.get("behaviour"), dict) else ""
-        colour = f" {a['colour']}" if a.get("colour") else ""
-        return (
-            f"add{colour} {_things(a.get('category'), int(a.get('count', 1)))} {_where(a.get('location'))}{how}".strip()
-        )
+        colour = f"{a['colour']} " if a.get("colour") else ""
+        n = int(a.get("count", 1))
+        return f"add {n} {colour}{_things(a.get('category'), n)[len(str(n)) + 1:]} {_where(a.get('location'))}{how}".strip()
     if call.tool == "arrange_assets":
         cats = ", ".join(str(c).replace("_", " ") for c in a.get("categories", []))
         return f"a {a.get('shape')} of {a.get('count') or 'some'} {cats} {_where(a.get('location'))}".strip()
@@ -127,8 +126,8 @@ def _describe(call: ToolCall) -> str:
     if call.tool == "place_asset":
         return f"put {a.get('asset')} {_where(a.get('location'))}"
     if call.tool == "move_asset":
-        parts = [f"{k} {v:g}" for k, v in a.items() if k in ("forward", "left", "turn_deg") and v]
-        return f"move {a.get('asset')} " + ", ".join(parts)
+        parts = [f"{k} {v:g}" for k, v in a.items() if k in ("forward", "left", "east", "north", "turn_deg") and v]
+        return f"move {a.get('asset') or ', '.join(a.get('assets', []))} " + ", ".join(parts)
     if call.tool == "set_behaviour":
         kind = a.get("behaviour", {}).get("kind", "") if isinstance(a.get("behaviour"), dict) else ""
         return f"make {a.get('asset')} {str(kind).replace('_', ' ')}"

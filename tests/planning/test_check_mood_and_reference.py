@@ -292,3 +292,37 @@ def test_a_compass_word_alone_names_no_lane(campus, registry):
     assert Session(campus, north, registry).submit("shift the bench 2 m north").ok
     assert read_request("park it facing east", campus).lane is None
     assert read_request("cones in the eastbound lane", campus).lane == "main_eastbound"
+
+
+def test_the_one_of_several_asks_which_and_the_choice_acts_on_that_one(campus, registry):
+    # "the hatchback" is one of two passenger cars here; the planner picked one at random.
+    first = Fixed(call("set_asset_appearance", assets=["passenger_car_1"], colour="green"))
+    report = refused_unchanged(campus, registry, first, "could the hatchback go green")
+    assert report.question is not None and "passenger_car_2" in report.question.text
+    picks = [r.calls[0].args.get("assets") for r in report.question.readings]
+    assert ["passenger_car_1"] in picks and ["passenger_car_2"] in picks
+    session = Session(campus, first, registry)
+    session.submit("could the hatchback go green")
+    chosen = next(i for i, r in enumerate(report.question.readings, 1) if r.calls[0].args.get("assets") == ["passenger_car_2"])
+    assert session.choose(chosen).ok
+    assert session.scene.asset("passenger_car_2").appearance != campus.asset("passenger_car_2").appearance
+    assert session.scene.asset("passenger_car_1").appearance == campus.asset("passenger_car_1").appearance
+
+
+def test_the_one_singled_out_by_words_or_an_earlier_turn_is_not_asked_about(campus, registry):
+    pick = Fixed(call("move_asset", asset="passenger_car_2", left=1.0))
+    assert Session(campus, pick, registry).submit("shift the passenger car 2 a metre left").ok
+    assert Session(campus, pick, registry).submit("shift the easternmost passenger car a metre left").ok
+    session = Session(campus, Fixed(call("move_asset", asset="passenger_car_2", forward=2.0)), registry)
+    assert session.submit("roll passenger_car_2 forward a bit").ok
+    session.planner = pick
+    assert session.submit("now shift the passenger car a metre left").ok
+
+
+def test_changing_a_thing_that_is_not_there_asks_before_adding_one(campus, registry):
+    assert campus.count("truck") == 0
+    report = refused_unchanged(campus, registry, Fixed(add("truck", colour="blue")), "recolour the truck blue")
+    assert report.question is not None and "no truck" in report.question.text
+    assert report.question.readings[0].calls[0].tool == "add_asset"
+    by_fountain = add("truck", location={"relation": "at", "target": "parking lot A"})
+    assert Session(campus, Fixed(by_fountain), registry).submit("park the truck in lot A").ok

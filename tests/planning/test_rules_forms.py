@@ -285,3 +285,15 @@ def test_facing_a_compass_point_turns_by_the_difference(context, campus):
     assert calls_of(context, "have the suv pointing south") == [("move_asset", {"asset": "suv_1", "turn_deg": 180.0})]
     with pytest.raises(PlanningError, match="already faces north"):
         RulePlanner().plan("turn the suv to face north", context)
+
+
+def test_a_reason_said_first_then_so_and_a_command_is_the_command(context):
+    calls = calls_of(context, "we are checking how the planner copes with mist, so give us some fog")
+    assert [c[0] for c in calls] == ["set_weather"] and calls[0][1]["kind"] == "fog"
+
+
+def test_give_me_asks_for_a_thing_unless_it_asks_for_a_list_or_a_number(context):
+    assert calls_of(context, "give me a bit of snow")[0][0] == "set_weather"
+    assert asks("give us a rundown of the benches") and not asks("give us a bit of snow")
+    assert calls_of(context, "I'd like the number of street lamps") == calls_of(context, "how many street lamps are there")
+    assert calls_of(context, "what's the number of lamps")[0][1] == {"category": "street_light"}

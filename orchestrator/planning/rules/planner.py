@@ -121,7 +121,7 @@ _STATEMENT = re.compile(r"\s*(?:the|this|that|these|those|it|they|there)\b[^,;]*
 
 def _clauses(prompt: str) -> list[tuple[str, bool]]:
     """The clauses of a prompt, each with whether it was asked as a question."""
-    parts = _SPLIT.split(prompt)
+    parts = _SPLIT.split(without_reason(prompt).strip() or prompt)
     out: list[tuple[str, bool]] = []
     for i in range(0, len(parts), 2):
         text = parts[i].strip()
@@ -259,6 +259,10 @@ def _changes_them(r: Reading) -> bool:
             or any(r.has((c,)) for c in COLOURS) or md.material_said(r.masked) is not None)
 
 
+# What "give me ..." asks for when it asks for information.
+_INFO_NOUNS = "list|number|count|names?|positions?|locations?|coordinates|overview|summary|rundown|info|information|details|ids?"
+
+
 def _is_question(r: Reading, asked: bool) -> bool:
     words = r.low.strip().removeprefix("so ").removeprefix("ok ").removeprefix("now ").strip()
     starts = any(re.match(rf"{re.escape(w)}\b", words) for w in lx.SEARCH_STARTS)
@@ -266,6 +270,8 @@ def _is_question(r: Reading, asked: bool) -> bool:
     command = re.sub(r"^(?:(?:please|pls|kindly|can|could|would|will)\s+(?:you\s+)?(?:please\s+)?)+", "", words)
     if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command):
         return False
+    if re.match(rf"give (?:me|us)\b(?!\s+(?:a |an |the )?(?:{_INFO_NOUNS})\b)", command):
+        return False  # "give me some rain" asks for rain; "give me a list of ..." for information
     within = re.search(r"(\s,\s*(where|which|what)|how many|how much)\b", r.low)
     # "I need the number of trees", "tell me which cars ...": the check's reading of a question
     return starts or (asked and asks(words + " ?")) or bool(within) or asks(words)

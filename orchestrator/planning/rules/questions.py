@@ -41,7 +41,9 @@ _ON_LANE = re.compile(
     r"\b(?:block\w*|obstruct\w*|in (?:the|its|our|their|my|his|her) way"
     r"|(?:on|in|across|along) (?:the |a |any |our )?(?:[a-z]+ )?(?:lanes?|roads?|streets?|carriageway))\b"
 )
-_AROUND = re.compile(r"\b(?:around|near|nearby|close to|next to|beside|by|at|in|inside|within|of)\b")
+# "of" after a word for an amount or a list ("the number of benches") names what is counted.
+_AROUND = re.compile(r"\b(?:around|near|nearby|close to|next to|beside|by|at|in|inside|within|"
+                     r"(?<!number )(?<!count )(?<!list )(?<!names )(?<!amount )(?<!total )of)\b")
 _WITHIN = re.compile(r"\bwithin\s+(?:about\s+)?(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b")
 _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
 # What a question can ask for by kind rather than by name.
