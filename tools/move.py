@@ -32,7 +32,7 @@ from drivetwin.worlds.scene import (
     Pose,
     Scene,
 )
-from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, point_along, surface_at
+from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, point_along, point_in_polygon, surface_at
 from pydantic import Field
 
 BehaviourKind = Literal["parked", "drive_lane", "follow_path", "circle", "cross_road", "jaywalk"]
@@ -45,6 +45,9 @@ CROSSING_KEEP_OUT_M = 4.0
 # Points checked around a skidpad circle for a clear, drivable path.
 CIRCLE_SAMPLES = 36
 DEFAULT_SKIDPAD_RADIUS_M = 5.0
+# Where a circle with no centre named may go (open paving), and the grid its centre is sought on.
+CIRCLE_AREA_KINDS = ("parking", "plaza")
+CIRCLE_GRID_M = 2.0
 # A group move covers at most this many assets (a scene holds at most 500).
 MAX_GROUP = 500
 # A driving vehicle put down in a lane drives it when it faces within this of the lane's
@@ -140,6 +143,31 @@ def circle_path_clear(scene: Scene, asset: AssetInstance, centre: tuple[float, f
     return True
 
 
+def _distance_to_area(point: tuple[float, float], polygon: list[tuple[float, float]]) -> float:
+    """Metres from `point` to a paved area: 0 inside it, else to its nearest edge."""
+    if point_in_polygon(point[0], point[1], polygon):
+        return 0.0
+    return nearest_on_polyline(point[0], point[1], [*polygon, polygon[0]]).distance
+
+
+def _circle_centres_near(scene: Scene, here: tuple[float, float]) -> list[tuple[float, float]]:
+    """Centres to try for a circle with none named: the open paving (parking lots, plazas)
+    nearest `here` first, and in each area its points on a CIRCLE_GRID_M grid nearest `here`
+    first, so an asset circles where it stands instead of in the first lot of the world."""
+    areas = sorted((a for a in scene.roads.paved if a.kind in CIRCLE_AREA_KINDS),
+                   key=lambda a: _distance_to_area(here, a.polygon))
+    candidates: list[tuple[float, float]] = []
+    for area in areas:
+        xs = [p[0] for p in area.polygon]
+        ys = [p[1] for p in area.polygon]
+        nx = int((max(xs) - min(xs)) / CIRCLE_GRID_M)
+        ny = int((max(ys) - min(ys)) / CIRCLE_GRID_M)
+        grid = [(min(xs) + i * CIRCLE_GRID_M, min(ys) + j * CIRCLE_GRID_M)
+                for i in range(nx + 1) for j in range(ny + 1)]
+        candidates += sorted(grid, key=lambda p: (math.hypot(p[0] - here[0], p[1] - here[1]), p))
+    return candidates
+
+
 def _circle(scene: Scene, asset: AssetInstance, spec: BehaviourSpec,
             anchor: tuple[float, float] | None) -> tuple[Circle, Pose]:
     radius = spec.radius or DEFAULT_SKIDPAD_RADIUS_M
@@ -150,15 +178,7 @@ def _circle(scene: Scene, asset: AssetInstance, spec: BehaviourSpec,
     elif anchor is not None:
         candidates.append(anchor)
     else:
-        # Open paving first: parking lots and plazas, scanned on a 2 m grid.
-        for area in scene.roads.paved:
-            if area.kind not in ("parking", "plaza"):
-                continue
-            xs = [p[0] for p in area.polygon]
-            ys = [p[1] for p in area.polygon]
-            cx, cy = (min(xs) + max(xs)) / 2, (min(ys) + max(ys)) / 2
-            grid = [(cx + dx, cy + dy) for dx in range(-12, 13, 2) for dy in range(-12, 13, 2)]
-            candidates += sorted(grid, key=lambda p: math.hypot(p[0] - cx, p[1] - cy))
+        candidates = _circle_centres_near(scene, (asset.pose.x, asset.pose.y))
     for cx, cy in candidates:
         if circle_path_clear(scene, asset, (cx, cy), radius):
             behaviour = Circle(centre=(cx, cy), radius=radius, speed=spec.speed or 2.0,
