@@ -6,8 +6,9 @@ import math
 from typing import Literal
 
 from drivetwin.tools.add import new_asset
+from drivetwin.tools.along import along_point
 from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
-from drivetwin.tools.errors import RuleViolation
+from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.locate import SEARCH_RADIUS_M, Location, resolve_anchor, resolve_target
 from drivetwin.tools.rules import check_placement, footprint
 from drivetwin.worlds.catalog import category, placeable_categories
@@ -24,6 +25,8 @@ MAX_ARRANGED = 100
 ENCLOSE_WITHIN_M = 6.0
 # Gap between a ring and the outermost thing it encloses.
 RING_GAP_M = 0.5
+# A lane lined "by" a target must pass this close to it; further off it lines another place.
+LANE_EDGE_REACH_M = 25.0
 # Centre-to-centre spacing of parking bays: a standard car-park bay is 2.4-2.7 m wide.
 PARKING_BAY_WIDTH_M = 2.7
 # A parked row keeps at least this much between neighbours' sides (doors must open).
@@ -136,18 +139,65 @@ def _grid(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[floa
 
 
 def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[float]) -> list[Pose]:
-    anchor = resolve_anchor(scene, Location(relation="in_lane", target=args.location.target,
-                                            distance=args.location.distance), max(sizes) / 2)
-    lane = min(scene.roads.lanes,
-               key=lambda ln: nearest_on_polyline(anchor.x, anchor.y, ln.centreline).distance)
-    near = nearest_on_polyline(anchor.x, anchor.y, lane.centreline)
+    """Poses just inside one edge of a lane, spaced along it in its direction of travel.
+
+    The lane is the one named (location.lane, or a lane as the target), else the lane the
+    spot along_m ahead of the target is on, else the lane nearest where the row starts. The
+    row starts at the target's point of that lane (plus `distance` along it), along_m ahead
+    of or behind the target, or where another relation (in front of, absolute x/y...) puts
+    it; it keeps to the lane's right edge (the kerb side for right-hand traffic), or the left
+    one with side "left", offset_m from the centreline if given.
+    """
+    location = args.location
+    lanes = scene.roads.lanes
+    if not lanes:
+        raise NotFoundError("this world has no lanes to line")
+    target = resolve_target(scene, location.target) if location.target else None
+    named = location.lane or (target.lane_id if target is not None and target.kind == "lane" else None)
+    lane = None
+    if named is not None:
+        lane = scene.roads.lane(named)
+        if lane is None:
+            raise NotFoundError(f"no lane {named!r}; lanes: {', '.join(ln.id for ln in lanes)}")
+    if location.along_m is not None:
+        if target is None:
+            raise NotFoundError("along_m needs a target (an asset, landmark or lane) to go ahead of or behind")
+        along = -abs(location.along_m) if location.relation == "behind" else location.along_m
+        spot = along_point(
+            scene, target.name, target.x, target.y,
+            None if target.kind in ("point", "centre") else target.heading, None, along,
+            lane_id=lane.id if lane is not None else None, heading_is_facing=target.kind == "asset",
+        )
+        lane = lane or scene.roads.lane(spot.track.id)
+        if lane is None:
+            raise NotFoundError(f"{spot.label} is on no lane to line")
+        start = spot.arc
+    else:
+        if target is not None and location.relation in ("in_lane", "at"):
+            point = (target.x, target.y)
+        else:
+            anchor = resolve_anchor(scene, location, max(sizes) / 2)
+            point = (anchor.x, anchor.y)
+        if lane is None:
+            lane = min(lanes, key=lambda ln: nearest_on_polyline(point[0], point[1], ln.centreline).distance)
+        near = nearest_on_polyline(point[0], point[1], lane.centreline)
+        if target is not None and target.kind != "lane" and near.distance > LANE_EDGE_REACH_M:
+            raise RuleViolation(
+                "bounds", f"{lane.id} passes {near.distance:.0f} m from {target.name}, too far to line "
+                f"it there (at most {LANE_EDGE_REACH_M:g} m); name a lane that runs by {target.name}",
+            )
+        start = near.arc_length
+        if location.relation in ("in_lane", "at"):
+            start += location.distance or 0.0
     spacing = args.spacing or 3.0
     count = args.count or 8
-    # On the lane's right edge (the kerb side for right-hand traffic), just inside the lane.
-    offset = lane.width / 2 - max(sizes) / 2 - 0.2
+    # Right of the direction of travel unless told otherwise, just inside the lane.
+    offset = location.offset_m if location.offset_m is not None else lane.width / 2 - max(sizes) / 2 - 0.2
+    if location.side == "left":
+        offset = -offset
     poses = []
     for k in range(count):
-        x, y, heading = point_along(lane.centreline, near.arc_length + k * spacing)
+        x, y, heading = point_along(lane.centreline, start + k * spacing)
         poses.append(Pose(x=x + offset * math.sin(heading), y=y - offset * math.cos(heading), yaw=heading))
     return poses
 
