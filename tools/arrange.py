@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Literal
 
 from drivetwin.tools.add import new_asset
@@ -34,6 +35,7 @@ PARKING_SIDE_GAP_M = 0.6
 # Row positions tried across a parking lot, on a grid this fine.
 PARKING_SEARCH_STEP_M = 1.0
 DEFAULT_ROW = 4
+DEFAULT_LINE = 5
 
 
 class ArrangeArgs(ToolArgs):
@@ -52,7 +54,8 @@ class ArrangeArgs(ToolArgs):
     radius: float | None = Field(None, gt=0.5, le=60.0, description="ring radius, metres")
     spacing: float | None = Field(None, gt=0.1, le=30.0, description="gap between centres, metres")
     heading_deg: float | None = Field(
-        None, ge=-360.0, le=360.0, description="line direction; for parking_row the way the vehicles face"
+        None, ge=-360.0, le=360.0, description="line direction (default: across the path of an in_front_of/behind target, a "
+        "line that closes up to fit or is refused; elsewhere along it); for parking_row the way the vehicles face"
     )
     columns: int | None = Field(None, ge=1, le=20, description="grid columns")
     label: str = Field("", max_length=80)
@@ -115,8 +118,8 @@ def _line_at(
     args: ArrangeArgs, x: float, y: float, default: float, sizes: list[float], from_anchor: bool
 ) -> list[Pose]:
     heading = math.radians(args.heading_deg) if args.heading_deg is not None else default
-    spacing = args.spacing or max(sizes) + 0.5
-    count = args.count or 5
+    spacing = args.spacing or max(sizes) + LINE_GAP_M
+    count = args.count or DEFAULT_LINE
     start = 0.0 if from_anchor else -(count - 1) / 2 * spacing
     c, s = math.cos(heading), math.sin(heading)
     return [Pose(x=x + (start + k * spacing) * c, y=y + (start + k * spacing) * s, yaw=heading) for k in range(count)]
@@ -267,6 +270,61 @@ def _parking_row(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: li
     )
 
 
+# A line across a path closes up to fit, its neighbours keeping at least this gap, in steps of
+# LINE_CLOSE_UP_STEP_M from the default gap (LINE_GAP_M).
+LINE_GAP_M = 0.5
+LINE_MIN_GAP_M = 0.1
+LINE_CLOSE_UP_STEP_M = 0.1
+
+
+def _closed_up(args: ArrangeArgs, sizes: list[float]) -> list[tuple[ArrangeArgs, str]]:
+    """The line as asked, then (when no spacing was asked for) the same line ever more closely
+    spaced down to LINE_MIN_GAP_M between neighbours, each with the note saying so."""
+    if args.spacing is not None:
+        return [(args, "")]
+    default = max(sizes) + LINE_GAP_M
+    steps = round((LINE_GAP_M - LINE_MIN_GAP_M) / LINE_CLOSE_UP_STEP_M)
+    out = [(args, "")]
+    for k in range(1, steps + 1):
+        spacing = round(default - k * LINE_CLOSE_UP_STEP_M, 6)
+        note = f", closed up to {spacing:g} m spacing (from {default:g} m) to fit across"
+        out.append((args.model_copy(update={"spacing": spacing}), note))
+    return out
+
+
+def _across_refusal(args: ArrangeArgs, sizes: list[float], first: RuleViolation) -> RuleViolation:
+    """Why a line across a path cannot be built as asked, and what can be."""
+    count = args.count or DEFAULT_LINE
+    tightest = args.spacing if args.spacing is not None else max(sizes) + LINE_MIN_GAP_M
+    word = "in front of" if args.location.relation == "in_front_of" else "behind"
+    where = args.location.target or "it"
+    return RuleViolation(
+        first.rule, f"a line of {count} {'/'.join(args.categories)} across the path {word} {where} "
+        f"does not fit, even {tightest:g} m apart and shifted up to {LAYOUT_SHIFT_MAX_M:g} m "
+        f"({first}); ask for fewer, or for a line along the road (heading_deg)",
+    )
+
+
+Placer = Callable[[ArrangeArgs, Scene, list[Pose]], list[AssetInstance]]
+
+
+def _first_fit(
+    place: Placer, args: ArrangeArgs, scene: Scene, groups: list[list[tuple[list[Pose], str]]],
+    shifts: list[tuple[float, float]], refusals: list[RuleViolation],
+) -> tuple[list[AssetInstance], list[Pose], str] | None:
+    """The first layout that fits: group by group, each group's candidates at each shift in
+    turn; every refusal is appended to `refusals`."""
+    for group in groups:
+        for dx, dy in shifts:
+            for candidate, note in group:
+                poses = [p.model_copy(update={"x": p.x + dx, "y": p.y + dy}) for p in candidate]
+                try:
+                    return place(args, scene, poses), poses, note
+                except RuleViolation as exc:
+                    refusals.append(exc)
+    return None
+
+
 # Shifts of a whole layout tried where it does not fit as anchored: none first, then nearest first
 # in eight directions, up to LAYOUT_SHIFT_MAX_M.
 LAYOUT_SHIFT_MAX_M = 6.0
@@ -294,34 +352,38 @@ class ArrangeAssets(Tool[ArrangeArgs]):
                 raise RuleViolation("protected", f"{name} cannot be arranged")
         cats = [category(c) for c in args.categories]
         sizes = [c.length for c in cats]
-        layouts = [LAYOUTS[args.shape]]
-        if args.shape == "line" and args.heading_deg is None:
-            layouts.append(_turned_line)  # no direction said: the other way round if this one does not fit
+        widths = [c.width for c in cats]
+        # A line in front of or behind something runs across its path (a cordon): that is what
+        # was asked, so it is never turned; where it does not fit it closes up, then is refused.
+        across = (args.shape == "line" and args.heading_deg is None
+                  and args.location.relation in ("in_front_of", "behind"))
+        groups: list[list[tuple[list[Pose], str]]]
+        if across:
+            groups = [[(_line(variant, scene, sizes, widths), note)]
+                      for variant, note in _closed_up(args, sizes)]
+        else:
+            groups = [[(LAYOUTS[args.shape](args, scene, sizes, widths), "")]]
+            if args.shape == "line" and args.heading_deg is None:
+                # No direction asked for: the other way round if this one does not fit, said so.
+                groups[0].append((_turned_line(args, scene, sizes, widths),
+                                  ", turned a quarter because the line as anchored did not fit"))
         refusals: list[RuleViolation] = []
-        tried = [layout(args, scene, sizes, [c.width for c in cats]) for layout in layouts]
         # Where a line or grid does not fit as anchored (a line at an entrance running into the
         # wall), the nearest shift of the whole layout that does, unless coordinates pinned it; a
         # ring stays round its centre.
         movable = args.shape in ("line", "grid") and args.location.relation != "absolute"
         shifts = _SHIFTS if movable else [(0.0, 0.0)]
-        for dx, dy in shifts:
-            for candidate in tried:
-                poses = [p.model_copy(update={"x": p.x + dx, "y": p.y + dy}) for p in candidate]
-                try:
-                    placed = self._placed(args, scene, poses)
-                    break
-                except RuleViolation as exc:
-                    refusals.append(exc)
-            else:
-                continue
-            break
-        else:
+        fitted = _first_fit(self._placed, args, scene, groups, shifts, refusals)
+        if fitted is None:
+            if across:
+                raise _across_refusal(args, sizes, refusals[0])
             raise refusals[0]
+        placed, poses, note = fitted
         edit = WorldEdit(ops=tuple(AddAsset(asset=a) for a in placed))
         cx = sum(p.x for p in poses) / len(poses)
         cy = sum(p.y for p in poses) / len(poses)
         kinds = "/".join(c.name for c in cats)
-        return ToolResult(edit, f"arranged {len(placed)} {kinds} as a {args.shape} at ({cx:.1f}, {cy:.1f})",
+        return ToolResult(edit, f"arranged {len(placed)} {kinds} as a {args.shape} at ({cx:.1f}, {cy:.1f}){note}",
                           (cx, cy), {"ids": [a.id for a in placed]})
 
     @staticmethod

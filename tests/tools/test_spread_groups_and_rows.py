@@ -106,17 +106,19 @@ def test_a_parking_row_longer_than_the_lot_is_refused_saying_how_many_fit(call: 
              location={"relation": "at", "target": "parking lot A"})
 
 
-def test_a_line_in_front_of_a_vehicle_runs_along_its_lane_where_across_it_does_not_fit(
+def test_a_line_in_front_of_a_vehicle_runs_across_its_path_shifted_onto_the_road(
     call: Caller, campus: Scene
 ) -> None:
-    """Six cones across a 3.5 m lane would stand on the verge; without a direction said, the line
-    turns to run ahead of the ego, starting in front of it, all on the road."""
+    """Six cones across the ego's 3.5 m lane would stand on the verge; the cordon still runs
+    across the ego's path, moved across the road until every cone stands on it, never turned."""
     _, cones = _added(call, campus, "arrange_assets", categories=["traffic_cone"], count=6, shape="line",
                       location={"relation": "in_front_of", "target": "ego"})
     ego = campus.asset("ego")
     assert ego is not None and len(cones) == 6
-    assert all(abs(c.pose.y - ego.pose.y) < 0.5 for c in cones)  # along the eastbound lane
+    assert all(abs(c.pose.yaw - math.pi / 2) < 1e-6 for c in cones)  # across the eastbound lane
+    assert len({round(c.pose.x, 6) for c in cones}) == 1
     assert all(c.pose.x > ego.pose.x + 2.0 for c in cones)  # ahead of the ego, not through it
+    assert all(-3.5 <= c.pose.y <= 3.5 for c in cones)  # on Main Street's carriageway
 
 
 def test_a_line_with_a_direction_said_is_not_turned(call: Caller, campus: Scene) -> None:
