@@ -77,8 +77,8 @@ PLACE_RADIUS_M = 30.0
 DESCRIPTION_SCORE, DESCRIPTION_MARGIN = 0.45, 0.08
 # Tolerance when matching a number of the request with one of the plan (rounding, unit maths).
 NUMBER_TOLERANCE = 0.02
-# Unit conversions a planner may apply to a number: km/h and mph to m/s.
-UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704, 0.3048)
+# Unit conversions a planner may apply to a number: km/h and mph to m/s, feet to metres, per cent.
+UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704, 0.3048, 0.01)
 QUERY_TOOLS = ("find_assets", "find_landmarks", "find_lanes", "asset_properties")
 # Workers that write the storyboard: their readings are the scenario reader's to judge.
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")

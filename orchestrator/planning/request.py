@@ -32,6 +32,7 @@ _PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
 _DESCRIBING = re.compile(r"[a-z]\s+(that|which|who|with|for|carrying|carries|full of)\b[^,.;]*$")
 _LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west)bound)\b")
 _PARKED = re.compile(r"\bparked\b")
+_SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")
 _MOVING = re.compile(r"\b(driving|moving|travelling|traveling)\b")
 
 
@@ -107,6 +108,7 @@ def _without_checked_amounts(text: str) -> str:
     # A clock time is checked by what the time tool sets (coverage.py), and a spacing ("4 m
     # apart") by where things end up (attributes.py), not number by number.
     text = nb.SPACING.sub(lambda m: " " * len(m.group(0)), text)
+    text = _SHIFT.sub(lambda m: " " * len(m.group(0)), text)  # "2 hours later": a time, checked as one
     said = clock_time(text)
     return text if said is None else text[: said.start] + " " * (said.end - said.start) + text[said.end :]
 

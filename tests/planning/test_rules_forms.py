@@ -297,3 +297,26 @@ def test_give_me_asks_for_a_thing_unless_it_asks_for_a_list_or_a_number(context)
     assert asks("give us a rundown of the benches") and not asks("give us a bit of snow")
     assert calls_of(context, "I'd like the number of street lamps") == calls_of(context, "how many street lamps are there")
     assert calls_of(context, "what's the number of lamps")[0][1] == {"category": "street_light"}
+
+
+def test_later_earlier_and_brighter_are_said_from_where_the_scene_is(context, session):
+    assert context.scene.environment.time_of_day == "12:00"
+    assert calls_of(context, "push the clock on a bit, later in the afternoon")[0][1] == {"time": "15:00"}
+    assert calls_of(context, "three hours earlier")[0][1] == {"time": "09:00"}
+    assert calls_of(context, "the picture is too dark, brighter") == [("set_lighting", {"exposure": 1.5})]
+    assert calls_of(context, "switch the street lamps on, it is too dark") == [("set_lighting", {"street_lights": "on"})]
+    assert session.submit("set the time to 22:30").ok
+    assert session.submit("an hour later").ok and session.scene.environment.time_of_day == "23:30"
+
+
+def test_measures_spelt_in_words_are_read_as_figures(context):
+    assert calls_of(context, "nudge the fire hydrant forty-five degrees round") == calls_of(
+        context, "nudge the fire hydrant 45 degrees round")
+    assert calls_of(context, "roll the ego back by seven metres") == [("move_asset", {"asset": "ego", "forward": -7.0})]
+    assert calls_of(context, "shove the bench half a metre to its left")[0][1]["left"] == 0.5
+    assert repair("meet at 7 a m", context.scene).text == "meet at 7 a m"
+
+
+def test_a_weather_strength_said_in_figures_is_that_strength(context):
+    assert calls_of(context, "snow, with an intensity of 0.45") == [("set_weather", {"kind": "snow", "intensity": 0.45})]
+    assert calls_of(context, "drizzle at 20 percent")[0][1]["intensity"] == 0.2

@@ -12,11 +12,15 @@ from typing import Any
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.numbers import NUMBER, parse
 from drivetwin.orchestrator.planning.rules.reading import Reading
 from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.scene import Environment
 
 # Weather intensity (0..1) for "heavy", unqualified and "light".
 HEAVY_INTENSITY, DEFAULT_INTENSITY, LIGHT_INTENSITY = 0.9, 0.6, 0.3
+# A strength said in figures: "intensity 0.3", "at an intensity of 0.7", "40 %".
+_INTENSITY = re.compile(rf"(?:intensity (?:of |at |to |=\s*)?|strength (?:of )?)({NUMBER})|({NUMBER})\s*(%|percent)")
 # Weather kinds tried in order: "stop the rain" is clear before it is rain.
 _WEATHER_ORDER = ("clear", "snow", "fog", "rain", "cloudy")
 # Words that make "light" mean lamps, not a light drizzle.
@@ -40,6 +44,9 @@ def weather(r: Reading) -> ToolCall | None:
                 heavy = r.has(lx.HEAVY)
                 light = r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT))
                 args["intensity"] = HEAVY_INTENSITY if heavy else LIGHT_INTENSITY if light else DEFAULT_INTENSITY
+                said = _INTENSITY.search(r.low)
+                if said is not None:  # "fog at intensity 0.7", "rain at 40 %": the tool refuses what is past 1
+                    args["intensity"] = parse(said.group(1) or said.group(2)) / (100 if said.group(3) else 1)
             return ToolCall(tool="set_weather", args=args)
     return None
 
@@ -70,8 +77,43 @@ def lights(r: Reading) -> ToolCall | None:
     return ToolCall(tool="set_lighting", args={key: state})
 
 
-def environment(r: Reading) -> list[ToolCall]:
-    """Every environment setting the clause asks for, in a stable order."""
+# "later in the day", "two hours earlier": the clock moved from where it stands; hours when unsaid.
+SHIFT_HOURS = 3
+_SHIFT = re.compile(r"\b(?:(an?|one|two|three|four|five|six|\d{1,2}) (?:more )?hours? )?(later|earlier)\b")
+_HOURS = {"a": 1, "an": 1, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+# Exposure for "brighter" by day (at night it is daylight that is wanted), and its ceiling.
+BRIGHTER_FACTOR, MAX_EXPOSURE = 1.5, 4.0
+_BRIGHTER = re.compile(r"\b(brighter|lighter|more exposure|too dark|overexpose|brighten)\b")
+DAY_HOURS = (7, 19)
+
+
+def shifted_time(r: Reading, now: Environment) -> ToolCall | None:
+    """The clock moved later or earlier from the scene's time ("a bit later", "2 hours earlier")."""
+    said = _SHIFT.search(r.masked)
+    if said is None or clock_time(r.masked) is not None:
+        return None
+    hours = SHIFT_HOURS if said.group(1) is None else _HOURS.get(said.group(1)) or int(said.group(1))
+    hour, minute = (int(x) for x in now.time_of_day.split(":"))
+    minutes = hour * 60 + minute + (hours if said.group(2) == "later" else -hours) * 60
+    minutes = min(max(minutes, 0), 23 * 60 + 59)  # the same day: "later" at 22:00 is the end of it
+    return ToolCall(tool="set_time_of_day", args={"time": f"{minutes // 60:02d}:{minutes % 60:02d}"})
+
+
+def brighter(r: Reading, now: Environment) -> ToolCall | None:
+    """More exposure for "brighter" by day; None at night, where daylight is what is meant."""
+    hour = int(now.time_of_day.split(":")[0])
+    if _BRIGHTER.search(r.masked) is None or not DAY_HOURS[0] <= hour < DAY_HOURS[1] or r.has(_LAMP_CONTEXT):
+        return None
+    exposure = round(min(MAX_EXPOSURE, now.lighting.exposure * BRIGHTER_FACTOR), 2)
+    return ToolCall(tool="set_lighting", args={"exposure": exposure})
+
+
+def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:
+    """Every environment setting the clause asks for, in a stable order; `now` (the scene's)
+    for settings said relative to it ("later", "brighter")."""
+    relative = [c for c in (shifted_time(r, now), brighter(r, now)) if c is not None] if now is not None else []
+    if relative:
+        return relative
     calls: list[ToolCall] = []
     found = lights(r)
     if found is not None:
@@ -79,7 +121,9 @@ def environment(r: Reading) -> list[ToolCall]:
     masked_for_time = r
     if found is not None:
         # "light up the streets" is lamps, not daylight.
-        masked_for_time = Reading(r.text, r.low, r.masked.replace("light up", " "), r.mentions)
+        # "lights on, it's too dark": the dark is why, not a time to set.
+        masked = re.sub(r"\blight up\b|\b(?:it'?s |is )?(?:too |so |very )?dark\b", " ", r.masked)
+        masked_for_time = Reading(r.text, r.low, masked, r.mentions)
     weather_call = weather(r)
     if weather_call is not None:
         calls.append(weather_call)
@@ -89,4 +133,4 @@ def environment(r: Reading) -> list[ToolCall]:
     return calls
 
 
-__all__ = ["environment", "lights", "time_of_day", "weather"]
+__all__ = ["brighter", "environment", "lights", "shifted_time", "time_of_day", "weather"]

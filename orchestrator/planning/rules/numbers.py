@@ -48,6 +48,47 @@ class Number:
         return math.isfinite(self.value)
 
 
+_ONES = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
+         "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
+_TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
+_SPELT = (rf"(?:(?:{'|'.join(_TENS)})(?:[- ](?:{'|'.join(_ONES[1:10])}))?|{'|'.join(_ONES)}|a|an|one hundred|a hundred)"
+          r"(?: and a half)?")
+# A measure spelt out ("two metres", "forty-five degrees", "a metre", "half a metre"): the words
+# become figures so every reader of amounts with units reads it as if typed in digits.
+_SPELT_MEASURE = re.compile(
+    rf"\b(half an?|{_SPELT})\s+(?=(?:m|metres?|meters?|ft|feet|foot|km|kilometres?|kilometers?|yards?|degrees?|"
+    r"seconds?|secs?|m/s|km/h|kph|mph|hours?|minutes?|mins?)\b)",
+    re.IGNORECASE,
+)
+
+
+def _spelt_value(words: str) -> float:
+    low = words.lower().replace("-", " ")
+    half = 0.5 if low.endswith(" and a half") else 0.0
+    low = low.removesuffix(" and a half")
+    if low.startswith("half"):
+        return 0.5
+    if low in ("a", "an"):
+        return 1.0 + half
+    if low.endswith("hundred"):
+        return 100.0 + half
+    parts = low.split()
+    tens = _TENS.get(parts[0], 0)
+    ones = _ONES.index(parts[-1]) if parts[-1] in _ONES else 0
+    return float(tens + ones if tens else ones) + half
+
+
+def spelt_measures(text: str) -> str:
+    """`text` with measures spelt in words written in figures ("two metres" -> "2 metres")."""
+    def figures(m: re.Match[str]) -> str:
+        article = m.group(1).lower() in ("a", "an")
+        if article and re.match(r"(?:m|ft|km|secs?|mins?|mph|kph)\b", m.string[m.end() :], re.IGNORECASE):
+            return m.group(0)  # "7 a m" is a time of day; "a metre" is one
+        return f"{_spelt_value(m.group(1)):g} "
+
+    return _SPELT_MEASURE.sub(figures, text)
+
+
 def parse(text: str) -> float:
     """The value of one written number ("10,000" -> 10000.0, "1e2" -> 100.0, "nan" -> nan)."""
     return float(text.replace(",", "").lower())
@@ -97,4 +138,4 @@ def radius_said(text: str) -> float | None:
 
 
 __all__ = ["MAX_COUNT", "NUMBER", "RADIUS", "SPACING", "Number", "NumberError", "count", "finite", "numbers_in", "parse",
-           "radius_said", "spacing_said"]
+           "radius_said", "spacing_said", "spelt_measures"]

@@ -43,7 +43,7 @@ FOOT_M = 0.3048  # "33 ft" is said in feet, placed in metres
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
 # Tokens with their spans, numbers written with separators kept whole ("10,000").
 _TOKEN_SPANS = re.compile(r"\d{1,3}(?:,\d{3})+(?![\d,])|[a-z0-9_#.\-'+]+")
-EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle")
+EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle", "test car", "our vehicle", "my car")
 
 
 def tokens(text: str) -> list[str]:

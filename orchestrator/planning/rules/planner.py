@@ -296,7 +296,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     switch = re.search(r"\b(turn|switch|put|flick)\b.*\b(on|off)\b", r.low)
     if switch and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
         if lights(r) is not None:
-            return environment(r)
+            return environment(r, scene.environment)
         if any(m.category == "street_light" for m in r.mentions):
             return [ToolCall(tool="set_lighting", args={"street_lights": switch.group(2)})]
     if not (r.mentions or r.ids or r.ego) and notes.subject and any(r.has((c,)) for c in COLOURS):
@@ -304,7 +304,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         if colour is not None:
             return [colour]
     if (not r.mentions and not r.ids and not r.ego) or r.has(("weather", "time of day")):
-        env = environment(r)
+        env = environment(r, scene.environment)
         if env:
             return env
     if (r.has(lx.BLOCK_WORDS) or _CLOSE_ROAD.search(r.low)) and not r.ids:
@@ -344,11 +344,11 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return _livelier(r, scene, memory, notes)
     if mention is None:
         if r.has(lx.GENERIC_THINGS):
-            return environment(r) or None  # "we want to put something there": an intention
+            return environment(r, scene.environment) or None  # "we want to put something there": an intention
         if r.has(("add", "create", "spawn", "place", "put", "insert")) and not r.has(("it", "them", "there")):
             noun = next((w for w in reversed(ph.tokens(r.masked)) if w.isalpha() and w not in lx.GRAMMAR), "it")
             raise PlanningError(f"unknown asset {noun!r}; nearest: {', '.join(nearest_categories(noun))}")
-        env = environment(r)
+        env = environment(r, scene.environment)
         return env or None
     laid_out = (r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
                 or (mention.plural and r.has(("along",))))  # "trees along one side of lot A"

@@ -16,6 +16,7 @@ from functools import cache
 from pathlib import Path
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules.numbers import spelt_measures
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import Scene
@@ -320,6 +321,7 @@ def _verb_of(m: re.Match[str]) -> str:
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
+    text = spelt_measures(text)  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
