@@ -108,6 +108,8 @@ def look_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     """A material, or a colour asked for as a change, that no call sets."""
     if any(c.tool == "set_asset_appearance" or c.args.get("colour") for c in calls):
         return []
+    for m in reversed(ph.find_categories(low)):  # "broken concrete" names rubble, not a material
+        low = low[: m.start] + " " * (m.end - m.start) + low[m.end :]
     words = re.findall(r"[a-z]+", low)
     material = md.material_said(low)
     if material is not None:

@@ -50,6 +50,7 @@ from drivetwin.orchestrator.planning.coverage import (
     named_things,
     partial_removal,
     unknown_places,
+    unpointed,
     wrong_direction,
 )
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed, nearest_landmark
@@ -220,6 +221,8 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     if effect.added or effect.changed:
         out += inside_building(request.low, scene)
     out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
+    if request.place is None and request.lane is None and (strays := unpointed(request.masked, scope, scene)):
+        out.append(f"the plan changes {_names(strays)}, which your words do not point at")
     out += [f"there is no {w!r} in this world" for w in unknown_places(request.masked, effect.calls, scene)]
     return out
 

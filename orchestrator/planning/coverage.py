@@ -360,6 +360,29 @@ def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory:
     return out
 
 
+# Words that point at things without naming their kind ("it", "that thing", "everything there",
+# "whatever is parked", "the vehicles"): a plan may act on what they point at.
+_POINTS = re.compile(
+    r"\b(it|its|them|those|these|they|this|that|one|ones|thing|things|everything|anything|all|whatever|"
+    r"stuff|objects?|items?|clutter|junk|everyone|everybody|someone|somebody|person|people|vehicles?|signs?|lights?)\b"
+)
+
+
+def unpointed(masked: str, scope: Scope, scene: Scene) -> list[AssetInstance]:
+    """Things already there that the plan changes or removes while the words point at nothing:
+    no kind, id, place, lane or pointing word ("broken concrete in the lane" done by painting
+    a parked car concrete)."""
+    acted = [a for a in scope.touched if a.id != "ego" and a not in scope.added]
+    if not acted or named_in(masked) or _POINTS.search(masked) or md.groups_said(masked):
+        return []
+    low = ph.normalise(masked)
+    if any(ph.normalise(n).strip() in low for lm in scene.landmarks for n in lm.names()):
+        return []
+    if any(re.search(rf"\b{re.escape(i)}\b", masked) for a in acted for i in (a.id, a.id.replace("_", " "))):
+        return []
+    return acted
+
+
 def _category_of(asset_id: str, scene: Scene) -> str | None:
     asset = scene.asset(asset_id)
     return asset.category if asset is not None else None
@@ -423,5 +446,6 @@ __all__ = [
     "named_things",
     "partial_removal",
     "unknown_places",
+    "unpointed",
     "wrong_direction",
 ]

@@ -326,3 +326,10 @@ def test_changing_a_thing_that_is_not_there_asks_before_adding_one(campus, regis
     assert report.question.readings[0].calls[0].tool == "add_asset"
     by_fountain = add("truck", location={"relation": "at", "target": "parking lot A"})
     assert Session(campus, Fixed(by_fountain), registry).submit("park the truck in lot A").ok
+
+
+def test_a_change_to_a_thing_the_words_never_point_at_is_not_applied(campus, registry):
+    painted = Fixed(call("set_asset_appearance", assets=["suv_1"], material="concrete"))
+    report = refused_unchanged(campus, registry, painted, "I would like a rough, concrete feel to the picture")
+    assert "which your words do not point at" in (report.error or "")
+    assert Session(campus, painted, registry).submit("give the SUV a concrete finish").ok

@@ -320,3 +320,10 @@ def test_measures_spelt_in_words_are_read_as_figures(context):
 def test_a_weather_strength_said_in_figures_is_that_strength(context):
     assert calls_of(context, "snow, with an intensity of 0.45") == [("set_weather", {"kind": "snow", "intensity": 0.45})]
     assert calls_of(context, "drizzle at 20 percent")[0][1]["intensity"] == 0.2
+
+
+def test_a_lane_and_a_distance_ahead_of_a_thing_count_along_that_lane(context):
+    loc = calls_of(context, "drop some rubble in the eastbound lane twenty metres ahead of the ego")[0][1]["location"]
+    assert loc == {"relation": "in_lane", "target": "ego", "along_m": 20.0, "lane": "main_eastbound"}
+    loc = calls_of(context, "a cone in the westbound lane 8 m behind the bus stop")[0][1]["location"]
+    assert loc["along_m"] == -8.0 and loc["lane"] == "main_westbound"

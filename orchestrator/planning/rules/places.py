@@ -125,6 +125,12 @@ def location(
     ):
         if r.lane_guessed:
             notes.guess(f"which lane of the road ({r.lane})")
+        metres, relation = ph.find_distance(r.text), relation_of(r.low)
+        anchor = r.landmark or next((i for i in r.ids if i not in exclude), None) or ("ego" if r.ego and "ego" not in exclude else None)
+        if anchor and metres is not None and relation in ("in_front_of", "behind"):
+            # "in the eastbound lane 30 m ahead of the ego": that lane, counted along it from the anchor
+            along = metres if relation == "in_front_of" else -metres
+            return {"relation": "in_lane", "target": anchor, "along_m": along, **({} if r.lane_guessed else {"lane": r.lane})}
         if r.landmark:  # "the eastbound lane by the east gate": that lane, where it passes the place
             return {"relation": "in_lane", "target": r.landmark, **({} if r.lane_guessed else {"lane": r.lane})}
         return {"relation": "in_lane", "target": r.lane}
