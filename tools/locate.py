@@ -236,7 +236,7 @@ def _along_anchor(scene: Scene, location: Location, category_name: str | None) -
     side: Side | None = location.side
     spot = along_point(
         scene, target.name, target.x, target.y, None if target.kind in ("point", "centre") else target.heading,
-        category_name, along, side, location.offset_m, lane_id=target.lane_id,
+        category_name, along, side, location.offset_m, lane_id=target.lane_id or location.lane,
         heading_is_facing=target.kind == "asset",
     )
     pose = spot.pose()

@@ -327,3 +327,11 @@ def test_a_lane_and_a_distance_ahead_of_a_thing_count_along_that_lane(context):
     assert loc == {"relation": "in_lane", "target": "ego", "along_m": 20.0, "lane": "main_eastbound"}
     loc = calls_of(context, "a cone in the westbound lane 8 m behind the bus stop")[0][1]["location"]
     assert loc["along_m"] == -8.0 and loc["lane"] == "main_westbound"
+
+
+def test_a_grid_said_as_rows_by_columns_holds_their_product(context):
+    args = calls_of(context, "set out a five by two grid of bollards at the fountain")[0][1]
+    assert (args["count"], args["columns"], args["shape"]) == (10, 2, "grid")
+    args = calls_of(context, "bollards in a 4x4 grid in lot A")[0][1]
+    assert (args["count"], args["columns"], args["categories"]) == (16, 4, ["bollard"])
+    assert calls_of(context, "a four-by-four grid of cones in lot A")[0][1]["categories"] == ["traffic_cone"]

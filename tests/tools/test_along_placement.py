@@ -93,3 +93,11 @@ def test_a_blocked_spot_shifts_along_the_lane_not_across_it(call: Caller, campus
                     location={"relation": "at", "target": "ego", "along_m": 10})
     assert second.pose.y == pytest.approx(EGO_Y)
     assert abs(second.pose.x - (EGO_X + 10.0)) <= 4.0
+
+
+def test_ahead_of_the_ego_in_a_lane_named_goes_in_that_lane(call: Caller, campus: Scene) -> None:
+    cone = _added(call, campus, category="traffic_cone",
+                  location={"relation": "in_lane", "target": "ego", "lane": "main_westbound", "along_m": 10})
+    assert cone.pose.x == pytest.approx(EGO_X + 10.0)  # ahead is the way the ego faces
+    lane = lane_at(campus, cone.pose.x, cone.pose.y)
+    assert lane is not None and lane.id == "main_westbound"

@@ -418,6 +418,8 @@ def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
 
 # "a grid with 3 columns"; "colum" is how the word is often typed.
 _COLUMNS = re.compile(r"\b(\d+|[a-z]+)\s+(?:columns?|colums?|cols?)\b")
+# "a 3 by 3 grid", "four-by-four", "2x3": rows by columns.
+_GRID_SIZE = re.compile(r"\b(\d{1,2}|[a-z]+)\s*(?:-?\s*by\s*-?|x|\*)\s*(\d{1,2}|[a-z]+)\b")
 # "Same again but bollards": the last turn's amount, of what this turn names.
 _SAME_AGAIN = re.compile(r"\b(?:same (?:again|as before|thing)|the same but|again but)\b")
 
@@ -427,8 +429,21 @@ _WITH = re.compile(r"\bwith\s+(?:[\w-]+\s+){0,3}$")
 _VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
 
 
+def _grid_size(low: str) -> tuple[int, int, int, int] | None:
+    """A grid's rows and columns ("a 3 by 3 grid", "four-by-four grid", "grid 2x3") and where."""
+    if "grid" not in low:
+        return None
+    said = _GRID_SIZE.search(low)
+    if said is None:
+        return None
+    rows, columns = (int(w) if w.isdigit() else ph.NUMBER_WORDS.get(w, 0) for w in said.group(1, 2))
+    return (rows, columns, said.start(), said.end()) if rows > 0 and columns > 0 else None
+
+
 def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
-    mentions = r.mentions
+    size = _grid_size(r.low)
+    mentions = [m for m in r.mentions if size is None or not size[2] <= m.start < size[3]]  # "four-by-four" is no SUV here
+    r = replace(r, mentions=mentions)
     around_pos = r.low.find(" around ")
 
     def laid_out(m: ph.Mention) -> bool:  # "around the rubble with barriers": the barriers are laid out
@@ -454,7 +469,9 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     elif r.has(("grid",)):
         args["shape"] = "grid"
         columns = _COLUMNS.search(r.low)
-        if columns is not None:
+        if size is not None:  # "a 3 by 3 grid": nine, three to a row
+            args["count"], args["columns"] = size[0] * size[1], size[1]
+        elif columns is not None:
             said = columns.group(1)
             args["columns"] = int(said) if said.isdigit() else ph.NUMBER_WORDS.get(said, 0) or None
     elif r.has(("along the lane", "along the road", "lane edge", "along the edge", "along the kerb")):
