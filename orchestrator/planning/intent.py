@@ -59,11 +59,16 @@ _REASON_FIRST = re.compile(
     re.IGNORECASE,
 )
 
+_POINTS_BACK = re.compile(r"\b(it|its|there|them|they|their|that|those|these|this)\b", re.IGNORECASE)
+
 
 def without_reason(text: str) -> str:
     """`text` without the clauses that only say why ("so buses can pass", "to test the wipers,
     so give me rain")."""
-    return _REASON.sub("", _REASON_FIRST.sub("", text))
+    first = _REASON_FIRST.match(text)
+    if first is not None and not _POINTS_BACK.search(text[first.end() :]):  # "..., so put bikes at its entrance" keeps what "its" means
+        text = text[first.end() :]
+    return _REASON.sub("", text)
 
 
 def asks(low: str) -> bool:

@@ -335,3 +335,11 @@ def test_a_grid_said_as_rows_by_columns_holds_their_product(context):
     args = calls_of(context, "bollards in a 4x4 grid in lot A")[0][1]
     assert (args["count"], args["columns"], args["categories"]) == (16, 4, ["bollard"])
     assert calls_of(context, "a four-by-four grid of cones in lot A")[0][1]["categories"] == ["traffic_cone"]
+
+
+def test_a_clause_saying_what_a_thing_does_is_context_for_the_command(context):
+    calls = calls_of(context, "The SUV blocks my camera; shift it three metres forward")
+    assert calls == [("move_asset", {"asset": "suv_1", "forward": 3.0})]
+    assert calls_of(context, "the street lights look dull; make it foggy")[0][0] == "set_weather"
+    # what should be, said of a thing, is itself the request
+    assert calls_of(context, "The SUV should be at lot A; add a bench by the library")[0][0] == "place_asset"

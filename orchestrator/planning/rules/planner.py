@@ -116,7 +116,13 @@ _NEGATED_WISH = re.compile(
 
 
 # A clause that says how things are ("the bench by the stop is in the way"), not what to do.
-_STATEMENT = re.compile(r"\s*(?:the|this|that|these|those|it|they|there)\b[^,;]*?\b(?:is|are|was|were)\b")
+# So is one that opens on a thing and says what it does ("the test car starts too close", "the two
+# trees block the view"), unless it says what should be ("the bus should stop", "it belongs in lot A").
+_STATEMENT = re.compile(
+    r"\s*(?:(?:the|this|that|these|those|it|they|there)\b[^,;]*?\b(?:is|are|was|were)\b"
+    r"|(?:the|this|that|these|those)\s+(?![^,;]*\b(?:should|must|needs?|has to|have to|ought|go|goes|belongs?|wants?|"
+    r"will|would|can|could|shall|may|might|let|gets?|to be)\b)[a-z' -]+\s(?:[a-z]+s|block|blocks|sit|stand|stay|face|look)\b)"
+)
 
 
 def _clauses(prompt: str) -> list[tuple[str, bool]]:
