@@ -29,7 +29,8 @@ from drivetwin.worlds.scene import AssetInstance, Scene
 _DEFINITE = ("the", "that", "this", "those", "these", "our", "my", "all", "every", "each", "both")
 # Words that ask for a new one even after a definite article ("the new bench", "another").
 _NEW = re.compile(
-    r"\b(add|adds|added|adding|new|another|more|extra|create|spawn|insert|second|additional|"
+    r"\b(add|adds|added|adding|new|another|more(?!\s+[a-z]+(?:al|ful|ive|ous|ic|ible|able|ly|er|y)\b)|extra|create|spawn|"
+    r"insert|second|additional|"
     r"copy|duplicate|row of|line of|ring of|grid of)\b"
 )
 # Prepositions after which a request names a place ("near the gym", "on the moon").

@@ -14,12 +14,12 @@ REMOVE_WORDS = re.compile(
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)"
-    r"|not (?:quite |nearly )?(?:so|as|that) many|too many|too much)\b"
+    r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much)\b"
     r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
     r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to)"  # "nobody should be parked there"
 )
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
-FEWER_WORDS = re.compile(r"\b(fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|too much|thin out|cut down on|reduce)\b")
+FEWER_WORDS = re.compile(r"\b(fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
 ADD_WORDS = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
 _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b"
@@ -38,6 +38,9 @@ _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s
 # A request put politely, at the start of the sentence or of a clause ("..., could you add two
 # cars?", "could the bus go ..."): a command even when it ends with a question mark.
 _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^please\b"
+                     # "maybe drop a car by the library?": a suggestion, hedged
+                     r"|^(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:add|put|drop|place|move|make|set|"
+                     r"remove|take|get|give|turn|paint|park|bring|have|let'?s)\b"
                      # "could the second car go in lot A?": a wish for where a thing should be
                      r"|^(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive)\b")
 

@@ -68,8 +68,12 @@ def read_request(prompt: str, scene: Scene) -> Request:
     polarity: Literal["add", "remove"] | None = (
         "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None
     )
-    categories = frozenset(m.category for m in ph.find_categories(masked)
-                           if not _DESCRIBING.search(masked[: m.start]) and not _described_head(masked, m))
+    # The place stands in as "lot" so a word naming it ("the student car park") is read as its name.
+    kinds_text = masked if place is None else low[: place[1]] + " lot " + low[place[2] :]
+    for word in ph.EGO_WORDS:
+        kinds_text = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", kinds_text)
+    categories = frozenset(m.category for m in ph.find_categories(kinds_text)
+                           if not _DESCRIBING.search(kinds_text[: m.start]) and not _described_head(kinds_text, m))
     exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_checked_amounts(masked))  # "a tree or two"
     numbers = tuple(n.value for n in numbers_in(exact) if not _is_reference(masked, n.start))
     numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+", exact)

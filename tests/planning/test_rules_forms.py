@@ -343,3 +343,12 @@ def test_a_clause_saying_what_a_thing_does_is_context_for_the_command(context):
     assert calls_of(context, "the street lights look dull; make it foggy")[0][0] == "set_weather"
     # what should be, said of a thing, is itself the request
     assert calls_of(context, "The SUV should be at lot A; add a bench by the library")[0][0] == "place_asset"
+
+
+def test_hedged_suggestions_denied_strengths_and_place_words(context):
+    assert not asks("perhaps put a bench by the fountain?")
+    assert calls_of(context, "perhaps put a bench by the fountain?")[0][0] == "add_asset"
+    assert calls_of(context, "snow please, but not too heavy")[0][1]["intensity"] < 0.5
+    # "student" names the car park here, not a person in it; "rows" lays cars out
+    args = calls_of(context, "three hatchbacks in rows in the student car park")[0][1]
+    assert args["categories"] == ["passenger_car"] and args["shape"] == "parking_row"

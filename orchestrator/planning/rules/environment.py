@@ -41,8 +41,10 @@ def weather(r: Reading) -> ToolCall | None:
             if kind != "clear":
                 # "light snow with the headlights on": light said of the weather is its strength
                 said_of_weather = re.search(rf"\blight\s+(?:{'|'.join(map(re.escape, lx.WEATHER_WORDS[kind]))})\b", r.low)
-                heavy = r.has(lx.HEAVY)
-                light = r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT))
+                # "rainy but not too strong": a strength denied is a light one
+                denied = re.search(rf"\bnot (?:too |so |very )?(?:much )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)
+                heavy = r.has(lx.HEAVY) and denied is None
+                light = denied is not None or (r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT)))
                 args["intensity"] = HEAVY_INTENSITY if heavy else LIGHT_INTENSITY if light else DEFAULT_INTENSITY
                 said = _INTENSITY.search(r.low)
                 if said is not None:  # "fog at intensity 0.7", "rain at 40 %": the tool refuses what is past 1

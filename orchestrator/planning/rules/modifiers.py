@@ -75,7 +75,7 @@ def groups_said(text: str) -> dict[str, frozenset[str]]:
 
 
 # A layout said by its shape; "stop line" and "lane line" are road markings, not layouts.
-_LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|side by side|avenue)\b")
+_LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|side by side|next to each other|avenue)s?\b")
 
 
 def layout_said(text: str) -> str | None:
@@ -84,7 +84,7 @@ def layout_said(text: str) -> str | None:
     said = _LAYOUT.search(text)
     if said is None:
         return None
-    return {"side by side": "row", "avenue": "line"}.get(said.group(1), said.group(1))  # an avenue: trees in a line
+    return {"side by side": "row", "next to each other": "row", "avenue": "line"}.get(said.group(1), said.group(1))  # an avenue: trees in a line
 
 
 _MATERIALS = frozenset(m for m in typing.get_args(typing.get_args(AssetLookArgs.model_fields["material"].annotation)[0])

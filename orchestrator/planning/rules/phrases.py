@@ -122,7 +122,8 @@ def find_categories(text: str) -> list[Mention]:
 
 @cache
 def _whole(phrase: str) -> re.Pattern[str]:
-    return re.compile(rf"(?<![a-z0-9_]){re.escape(phrase)}(?![a-z0-9_])")
+    # not the first word of a place's name ("the student car park", "the bus stop")
+    return re.compile(rf"(?<![a-z0-9_]){re.escape(phrase)}(?![a-z0-9_])(?!\s+(?:car park|park|parking|lot|stop|station|rack|union)\b)")
 
 
 def find_count(text: str, before: int | None = None, what: str = "things") -> int | None:

@@ -273,7 +273,7 @@ def _is_question(r: Reading, asked: bool) -> bool:
     words = r.low.strip().removeprefix("so ").removeprefix("ok ").removeprefix("now ").strip()
     starts = any(re.match(rf"{re.escape(w)}\b", words) for w in lx.SEARCH_STARTS)
     # "Could you put a shuttle at the stop?" is a command put politely, question mark or not.
-    command = re.sub(r"^(?:(?:please|pls|kindly|can|could|would|will)\s+(?:you\s+)?(?:please\s+)?)+", "", words)
+    command = re.sub(r"^(?:(?:please|pls|kindly|can|could|would|will|maybe|perhaps)\s+(?:you\s+)?(?:please\s+)?)+", "", words)
     if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command):
         return False
     if re.match(rf"give (?:me|us)\b(?!\s+(?:a |an |the )?(?:{_INFO_NOUNS})\b)", command):
@@ -467,8 +467,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     if count:
         args["count"] = count
     vehicles = all(catalog()[c].motion == "vehicle" for c in layout)
-    parking = r.has(("parked", "side by side", "car park", "parking")) or "parking" in str(r.landmark)
-    if vehicles and parking and (r.has(("row", "rows", "line", "side by side")) or r.has(lx.ARRANGE_WORDS)):
+    parking = r.has(("parked", "side by side", "car park", "parking")) or "parking" in str(r.landmark or notes.place)
+    if vehicles and parking and (r.has(("row", "rows", "line", "side by side", "next to each other")) or r.has(lx.ARRANGE_WORDS)):
         args["shape"] = "parking_row"  # "a row of parked cars in lot B": side by side in bays
     elif r.has(("rows", "across")) or md.layout_said(r.low) in ("line", "row"):
         args["shape"] = "line"
@@ -498,7 +498,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
             focus_target = _maintenance_target(scene, memory)
             if focus_target is not None and where is None:
                 where = {"relation": "at", "target": focus_target}
-    args["location"] = where or _fallback_place(memory)
+    # "the student car park should look busy: a row of six cars": the place of the clause before
+    args["location"] = where or (dict(notes.place) if notes.place else None) or _fallback_place(memory)
     spacing = nb.spacing_said(r.low)
     if spacing is not None:
         args["spacing"] = spacing
