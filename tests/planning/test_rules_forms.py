@@ -352,3 +352,11 @@ def test_hedged_suggestions_denied_strengths_and_place_words(context):
     # "student" names the car park here, not a person in it; "rows" lays cars out
     args = calls_of(context, "three hatchbacks in rows in the student car park")[0][1]
     assert args["categories"] == ["passenger_car"] and args["shape"] == "parking_row"
+
+
+def test_more_and_another_after_a_turn_count_what_is_said(session):
+    assert session.submit("four cones in our lane 25 m ahead of the ego").ok
+    assert session.submit("those cone, make them all white").ok
+    assert all(a.appearance.rgba is not None for a in session.scene.assets if a.category == "traffic_cone")
+    assert session.submit("and 2 more next to them").ok and session.scene.count("traffic_cone") == 6
+    assert session.submit("another there").ok and session.scene.count("traffic_cone") == 7

@@ -83,10 +83,9 @@ def lights(r: Reading) -> ToolCall | None:
 SHIFT_HOURS = 3
 _SHIFT = re.compile(r"\b(?:(an?|one|two|three|four|five|six|\d{1,2}) (?:more )?hours? )?(later|earlier)\b")
 _HOURS = {"a": 1, "an": 1, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
-# Exposure for "brighter" by day (at night it is daylight that is wanted), and its ceiling.
+# Exposure for "brighter", and its ceiling.
 BRIGHTER_FACTOR, MAX_EXPOSURE = 1.5, 4.0
 _BRIGHTER = re.compile(r"\b(brighter|lighter|more exposure|too dark|overexpose|brighten)\b")
-DAY_HOURS = (7, 19)
 
 
 def shifted_time(r: Reading, now: Environment) -> ToolCall | None:
@@ -102,9 +101,9 @@ def shifted_time(r: Reading, now: Environment) -> ToolCall | None:
 
 
 def brighter(r: Reading, now: Environment) -> ToolCall | None:
-    """More exposure for "brighter" by day; None at night, where daylight is what is meant."""
-    hour = int(now.time_of_day.split(":")[0])
-    if _BRIGHTER.search(r.masked) is None or not DAY_HOURS[0] <= hour < DAY_HOURS[1] or r.has(_LAMP_CONTEXT):
+    """More exposure for "brighter", keeping the time the scene is set to (a night scene made
+    brighter is still night); None when lamps are what is to be lit."""
+    if _BRIGHTER.search(r.masked) is None or r.has(_LAMP_CONTEXT):
         return None
     exposure = round(min(MAX_EXPOSURE, now.lighting.exposure * BRIGHTER_FACTOR), 2)
     return ToolCall(tool="set_lighting", args={"exposure": exposure})

@@ -107,6 +107,10 @@ def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str |
     return None
 
 
+# "There" after a turn that put things somewhere: beside the one of them within this of its focus.
+THERE_BESIDE_M = 6.0
+
+
 def location(
     r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: list[str] | None = None
 ) -> dict[str, Any] | None:
@@ -151,6 +155,11 @@ def location(
             return dict(notes.place)
         focus = memory.last_focus()
         if focus is not None:
+            # beside what the last turn put there (a free spot), not exactly on top of it
+            beside = [a for a in scene.assets if math.dist((a.pose.x, a.pose.y), focus) <= THERE_BESIDE_M]
+            if beside:
+                nearest = min(beside, key=lambda a: math.dist((a.pose.x, a.pose.y), focus))
+                return {"relation": "next_to", "target": nearest.id}
             return {"relation": "absolute", "x": round(focus[0], 2), "y": round(focus[1], 2)}
     if r.has(("sidewalk", "pavement", "footpath", "kerb", "curb")):
         return {"relation": "on_sidewalk", **({"target": target} if target else {})}

@@ -341,7 +341,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         # "put two more there": more of what the last turn added
         last = scene.asset(recent[-1])
         assert last is not None
-        named = ph.Mention(last.category, len(r.low), len(r.low), plural=True)
+        said = re.search(r"\b(?:more|another)\b", r.low)
+        at = said.end() if said is not None else len(r.low)  # the amount is said before "more": "2 more next to them"
+        named = ph.Mention(last.category, at, at, plural=said is None or said.group(0) == "more")  # "another": one
         return _add(replace(r, mentions=[named]), scene, memory, notes)
     if r.has(("paint", "repaint", "recolour", "recolor")) and not fresh:
         # a thing to paint is one that is there; a colour not understood is asked, never an add

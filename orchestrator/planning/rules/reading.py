@@ -8,7 +8,7 @@ blanked out, so the words inside them do not count twice ("bus stop" is a place,
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
@@ -249,6 +249,8 @@ def read(text: str, scene: Scene) -> Reading:
     # "a night test of pedestrian detection": what a sensor task is about is its topic, not a thing asked for
     mentions = [m for m in mentions if not _PERCEPTION_TASK.match(low[m.end :])]
     ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in ph.tokens(low)]
+    # "those cone I added": a plural said by its determiner when the noun is written singular
+    mentions = [replace(m, plural=True) if re.search(r"\b(?:those|these|all)\s+$", low[: m.start]) else m for m in mentions]
     numbered, mentions = _numbered(scene, low, mentions)
     return Reading(
         text=text,
