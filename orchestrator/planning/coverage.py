@@ -364,7 +364,8 @@ def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory:
 # Words that point at things without naming their kind ("it", "that thing", "everything there",
 # "whatever is parked", "the vehicles"): a plan may act on what they point at.
 _POINTS = re.compile(
-    r"\b(it|its|them|those|these|they|this|that|one|ones|thing|things|everything|anything|all|whatever|everyone|"
+    r"\b(it|its|him|her|his|he|she|them|those|these|they|this|that|one|ones|thing|things|everything|anything|all|"
+    r"whatever|everyone|"
     r"everybody|someone|somebody|person|people|vehicles?|signs?|lights?|"
     + "|".join(re.escape(w) for w in (*lx.GENERIC_THINGS, *lx.WORKS_WORDS)) + r")\b"
 )

@@ -360,3 +360,12 @@ def test_more_and_another_after_a_turn_count_what_is_said(session):
     assert all(a.appearance.rgba is not None for a in session.scene.assets if a.category == "traffic_cone")
     assert session.submit("and 2 more next to them").ok and session.scene.count("traffic_cone") == 6
     assert session.submit("another there").ok and session.scene.count("traffic_cone") == 7
+
+
+def test_keep_just_n_takes_away_the_rest_and_a_long_line_ahead_runs_along(context, session):
+    assert session.submit("put four benches by the fountain").ok
+    assert session.submit("too many benches by the fountain, leave only one").ok
+    assert sum(1 for a in session.scene.assets if a.category == "bench" and math.dist((a.pose.x, a.pose.y), (75, 40)) < 30) == 1
+    args = calls_of(context, "six cones in a line 5 m apart ahead of the ego")[0][1]
+    assert args["heading_deg"] == 0.0 and args["location"]["distance"] > 12.5  # the ego faces east; all of it ahead
+    assert "heading_deg" not in calls_of(context, "a line of four cones across the road in front of the ego")[0][1]

@@ -23,7 +23,7 @@ from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog
-from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.scene import AssetInstance, Scene
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
 NEAR_PLACE_M = 8.0
@@ -93,6 +93,16 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
 # Between a thing and a place, words that make the place where the thing is ("the cars in lot B"),
 # not where it should go ("move the cars to lot B").
 _SCOPE = re.compile(r"\s*(?:that are |which are |standing |parked )?(?:in|at|inside|by|near|on|around|from|of)\s+(?:the\s+)?$")
+
+
+# "Keep just two" of the things at a place: those within this of it are the ones counted.
+KEEP_RADIUS_M = 30.0
+_KEEP = re.compile(r"\b(?:keep|leave)\s+(?:just |only |me )?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
+
+
+def _within_place(scene: Scene, asset: AssetInstance, place: str) -> bool:
+    landmark = scene.landmark(place)
+    return landmark is None or math.dist(landmark.position, (asset.pose.x, asset.pose.y)) <= KEEP_RADIUS_M
 
 
 def _scoped_by_place(r: Reading, mention: ph.Mention, anywhere: bool = False) -> bool:
@@ -171,7 +181,14 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         # "the vehicles in lot B": every one there, of every category the words cover
         ids = referenced(r, scene, memory, notes)
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
-    if fewer:
+    keep = _KEEP.search(r.low)
+    if keep is not None:  # "keep just two": all but that many of those in scope
+        left = int(keep.group(1)) if keep.group(1).isdigit() else ph.NUMBER_WORDS.get(keep.group(1), 0)
+        in_scope = sum(1 for a in scene.assets if a.category == name and (not r.landmark or _within_place(scene, a, r.landmark)))
+        if in_scope <= left:
+            return None
+        count = in_scope - left
+    elif fewer:
         count = count or 1
     elif gone or r.has(("all", "every", "none", "no more")):
         count = None

@@ -510,7 +510,31 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         args["radius"] = radius
     if r.has(("maintenance", "construction")):
         args["label"] = "maintenance"
+    along = _heading_along(r, scene, args)
+    if along is not None:  # the line starts where it was said to and runs on ahead (or back) from there
+        length = (int(args.get("count") or 5) - 1) * float(args.get("spacing") or 0.0)
+        start = float(args["location"].get("distance") or LINE_START_M)
+        args["heading_deg"], args["location"] = along, {**args["location"], "distance": round(start + length / 2, 1)}
     return ToolCall(tool="arrange_assets", args=args)
+
+
+# A line longer than this cannot stand across a road: one said "ahead of" a thing runs along its path.
+ACROSS_MAX_M = 8.0
+# Metres from the thing to the first of a line along its path, when the words give none.
+LINE_START_M = 4.0
+
+
+def _heading_along(r: Reading, scene: Scene, args: dict[str, Any]) -> float | None:
+    """The heading of the thing a line is ahead of or behind, when the line runs along its path
+    ("8 cones in a line 4 m apart ahead of the ego", "a slalom down the lane"); else None."""
+    where = args.get("location") or {}
+    if args.get("shape") != "line" or where.get("relation") not in ("in_front_of", "behind") or r.has(("across",)):
+        return None
+    length = (int(args.get("count") or 5) - 1) * float(args.get("spacing") or 0.0)
+    if length <= ACROSS_MAX_M and not r.has(("slalom", "along", "down the lane", "down the road", "down the middle")):
+        return None
+    target = scene.ego if where.get("target") == "ego" else scene.asset(str(where.get("target")))
+    return round(math.degrees(target.pose.yaw), 1) if target is not None else None
 
 
 def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
