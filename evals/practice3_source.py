@@ -17,6 +17,27 @@ import json
 from pathlib import Path
 from typing import Any
 
+from drivetwin.evals.practice2_source import (  # the same case-writing helpers
+    at,
+    behaviour,
+    call,
+    count,
+    delta,
+    env,
+    gone,
+    lane,
+    layout,
+    looks,
+    moved,
+    near,
+    near_point,
+    relative,
+    says,
+    step,
+    surface,
+    xy,
+)
+
 Json = dict[str, Any]
 
 # resolve(): under a strict editable install this module is a link into the build tree.
@@ -30,22 +51,6 @@ LOT_B = ["passenger_car_1", "passenger_car_2", "suv_1"]
 WEST_LIGHTS = [f"street_light_{n}" for n in range(1, 7)]
 
 
-def call(tool: str, **args: Any) -> Json:
-    return {"tool": tool, "args": args}
-
-
-def at(target: str, relation: str = "at", **more: Any) -> Json:
-    return {"relation": relation, "target": target, **more}
-
-
-def xy(x: float, y: float) -> Json:
-    return {"relation": "absolute", "x": x, "y": y}
-
-
-def step(prompt: str, *calls: Json, planned: bool = False) -> Json:
-    return {"prompt": prompt, "calls": list(calls), "planned": planned}
-
-
 def only(*categories: str, assets: tuple[str, ...] = (), environment: bool = False) -> Json:
     """Guard against collateral edits: nothing but these may change."""
     return {
@@ -56,64 +61,8 @@ def only(*categories: str, assets: tuple[str, ...] = (), environment: bool = Fal
     }
 
 
-def delta(category: str | list[str], lo: int | None, hi: int | None) -> Json:
-    return {"kind": "count_delta", "category": category, "min": lo, "max": hi}
-
-
-def count(category: str | list[str], lo: int | None, hi: int | None) -> Json:
-    return {"kind": "count", "category": category, "min": lo, "max": hi}
-
-
-def near(target: str, within: float, **sel: Any) -> Json:
-    return {"kind": "near", "target": target, "within": within, **sel}
-
-
-def near_point(x: float, y: float, within: float, **sel: Any) -> Json:
-    return {"kind": "near", "point": [x, y], "within": within, **sel}
-
-
-def relative(relation: str, target: str, max_distance: float = 15.0, **sel: Any) -> Json:
-    return {"kind": "relative", "relation": relation, "target": target, "max_distance": max_distance, **sel}
-
-
-def surface(*surfaces: str, **sel: Any) -> Json:
-    return {"kind": "on_surface", "surfaces": list(surfaces), **sel}
-
-
-def lane(lane_id: str | None = None, **sel: Any) -> Json:
-    return {"kind": "in_lane", "lane": lane_id, **sel}
-
-
-def layout(shape: str, **more: Any) -> Json:
-    return {"kind": "arrangement", "shape": shape, **more}
-
-
-def behaviour(kind: str | list[str], **more: Any) -> Json:
-    return {"kind": "behaviour", "behaviour": kind, **more}
-
-
-def env(**more: Any) -> Json:
-    return {"kind": "environment", **more}
-
-
-def looks(**more: Any) -> Json:
-    return {"kind": "appearance", **more}
-
-
-def moved(asset: str, lo: float = 0.0, hi: float | None = None, **more: Any) -> Json:
-    return {"kind": "moved", "asset": asset, "min_distance": lo, "max_distance": hi, **more}
-
-
-def gone(*assets: str) -> Json:
-    return {"kind": "exists", "assets": list(assets), "present": False}
-
-
 def kept(*assets: str) -> Json:
     return {"kind": "exists", "assets": list(assets), "present": True}
-
-
-def says(*any_of: str, all_of: tuple[str, ...] = (), none_of: tuple[str, ...] = ()) -> Json:
-    return {"kind": "answer_contains", "any_of": list(any_of), "all_of": list(all_of), "none_of": list(none_of)}
 
 
 ACCEPTED: Json = {"kind": "status", "accepted": True}
