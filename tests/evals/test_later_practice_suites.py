@@ -1,0 +1,97 @@
+"""The second and third practice suites (practice2, practice3): valid, big enough in every cell,
+written from their sources, and passable. Each was written to its own brief's minimums."""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+from drivetwin.evals import practice2_source, practice3_source, run_suite
+from drivetwin.evals.case import Suite, load_suite
+
+TASKS = ("search", "addition", "removal", "positioning", "moving", "arrangement", "appearance")
+GRADES = ("direct", "indirect", "vague", "erroneous")
+WEIGHTED_TASKS = ("search", "addition", "positioning", "arrangement")
+MIN_MULTI_TURN, MIN_PLANNED, MIN_COMPOUND = 15, 8, 15
+# Each brief's minimums: cases, cases in every task x grade cell, and in every cell of the four
+# weighted tasks; with the suite's source module.
+BRIEFS: dict[str, tuple[int, int, int, ModuleType]] = {
+    "practice2": (160, 5, 8, practice2_source),
+    "practice3": (200, 6, 9, practice3_source),
+}
+# About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
+IMPOSSIBLE_SHARE = (0.06, 0.11)
+
+by_suite = pytest.mark.parametrize("name", sorted(BRIEFS))
+
+
+@pytest.fixture(scope="module")
+def suites() -> dict[str, Suite]:
+    return {name: load_suite(name) for name in BRIEFS}
+
+
+@by_suite
+def test_every_line_validates_and_ids_and_tags_name_the_suite(suites: dict[str, Suite], name: str) -> None:
+    assert len(suites[name].cases) >= BRIEFS[name][0]
+    assert all(c.id.startswith(f"{name}.") and name in c.tags for c in suites[name].cases)
+
+
+@by_suite
+def test_the_jsonl_is_what_the_source_writes(name: str) -> None:
+    source = BRIEFS[name][3]
+    lines = [json.loads(line) for line in Path(source.SUITE_PATH).read_text(encoding="utf-8").splitlines() if line.strip()]
+    assert lines == source.ALL_CASES
+
+
+@by_suite
+def test_every_task_and_grade_cell_holds_its_minimum(suites: dict[str, Suite], name: str) -> None:
+    _, per_cell, per_weighted_cell, _ = BRIEFS[name]
+    cells = Counter((c.task, c.grade) for c in suites[name].cases)
+    for task in TASKS:
+        least = per_weighted_cell if task in WEIGHTED_TASKS else per_cell
+        for grade in GRADES:
+            assert cells[(task, grade)] >= least, (task, grade, cells[(task, grade)])
+
+
+@by_suite
+def test_multi_turn_cases_have_earlier_turns_and_enough_are_planned(suites: dict[str, Suite], name: str) -> None:
+    multi = [c for c in suites[name].cases if "multi_turn" in c.tags]
+    assert len(multi) >= MIN_MULTI_TURN and all(c.setup for c in multi)
+    planned = [c for c in multi if any(step.planned and step.calls for step in c.setup)]
+    assert len(planned) >= MIN_PLANNED
+
+
+@by_suite
+def test_compound_cases_ask_two_things(suites: dict[str, Suite], name: str) -> None:
+    compound = [c for c in suites[name].cases if "compound" in c.tags]
+    assert len(compound) >= MIN_COMPOUND
+    assert all(len(c.reference) >= 2 for c in compound)
+
+
+@by_suite
+def test_impossible_cases_expect_a_refusal_that_changes_nothing(suites: dict[str, Suite], name: str) -> None:
+    cases = suites[name].cases
+    impossible = [c for c in cases if "impossible" in c.tags]
+    low, high = IMPOSSIBLE_SHARE
+    assert low <= len(impossible) / len(cases) <= high
+    for c in impossible:
+        kinds = {(check.kind, getattr(check, "accepted", None)) for check in c.checks}
+        assert ("status", False) in kinds and ("unchanged_except", None) in kinds, c.id
+
+
+@by_suite
+def test_every_edit_case_guards_against_collateral_edits(suites: dict[str, Suite], name: str) -> None:
+    assert all(any(check.kind == "unchanged_except" for check in c.checks) for c in suites[name].cases)
+
+
+@by_suite
+def test_every_reference_plan_passes(tmp_path: Path, name: str) -> None:
+    source = BRIEFS[name][3]
+    summary = run_suite(source.SUITE_PATH, "reference", out_path=tmp_path / "ref.jsonl", progress=False)
+    records = [json.loads(line) for line in (tmp_path / "ref.jsonl").read_text().splitlines()[1:]]
+    not_passed = [(r["case_id"], r.get("failed_checks"), r.get("error")) for r in records if r.get("outcome") != "pass"]
+    assert summary.complete and summary.failed == 0 and summary.errors == 0, not_passed[:5]
+    assert summary.passed == len(source.ALL_CASES)
