@@ -66,7 +66,7 @@ def _is_reference(t: Target, names: list[str]) -> bool:
 
 
 class FindAssetsArgs(ToolArgs):
-    category: str | None = Field(None, description="category or a word for it, e.g. 'cones'")
+    category: str | None = Field(None, description="category or a word for it, e.g. 'cones', or a kind in the plural, e.g. 'vehicles'")
     near: str | None = Field(None, description="landmark or asset to measure distance from")
     within: float | None = Field(None, gt=0.0, le=1000.0, description="metres from `near` (or `nearest_to`)")
     nearest_to: str | None = Field(None, description=_NEAREST_TO + " (the reference asset itself is left out)")
@@ -74,6 +74,15 @@ class FindAssetsArgs(ToolArgs):
     lane: str | None = Field(
         None, description="only assets on this lane id or road, e.g. campus_northbound, Main Street, northbound"
     )
+
+
+def _group(word: str) -> frozenset[str] | None:
+    """The categories a catalog tag said in the plural names ("vehicles", "signs"), if it is one."""
+    low = word.strip().lower()
+    if not low.endswith("s"):
+        return None  # "vehicle" alone is read as the catalog reads it
+    members = frozenset(name for name, entry in catalog().items() if low.removesuffix("s") in entry.tags)
+    return members if len(members) > 1 else None
 
 
 class FindAssets(Tool[FindAssetsArgs]):
@@ -87,7 +96,10 @@ class FindAssets(Tool[FindAssetsArgs]):
 
     def propose(self, args: FindAssetsArgs, scene: Scene) -> ToolResult:
         pool = scene.all_assets()
-        if args.category:
+        group = _group(args.category) if args.category else None
+        if group is not None:  # "vehicles", "signs": every category of that kind
+            pool = [a for a in pool if a.category in group]
+        elif args.category:
             name = resolve_category(args.category)
             if name is None:
                 raise UnknownCategoryError(args.category, nearest_categories(args.category))

@@ -185,9 +185,10 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
 def missing_categories(categories: Iterable[str], scope: Scope, scene: Scene) -> list[str]:
     """Categories the request names that the plan neither touches nor names in any call."""
     said = " ".join(str(c.args) for c in scope.calls).lower()
+    kinds = {c for members in md.groups_said(said).values() for c in members}  # a search for "vehicles"
     out = []
     for category in sorted(categories):
-        if any(a.category == category for a in scope.touched):
+        if any(a.category == category for a in scope.touched) or category in kinds:
             continue
         if category in said or any(re.search(rf"\b{re.escape(i)}\b", said) for i in _ids_of(scene, category)):
             continue

@@ -369,3 +369,9 @@ def test_keep_just_n_takes_away_the_rest_and_a_long_line_ahead_runs_along(contex
     args = calls_of(context, "six cones in a line 5 m apart ahead of the ego")[0][1]
     assert args["heading_deg"] == 0.0 and args["location"]["distance"] > 12.5  # the ego faces east; all of it ahead
     assert "heading_deg" not in calls_of(context, "a line of four cones across the road in front of the ego")[0][1]
+
+
+def test_a_question_about_a_whole_kind_searches_the_kind(context):
+    assert calls_of(context, "which vehicles stand in lot B?")[0][1]["category"] == "vehicles"
+    assert calls_of(context, "how many signs do we have")[0][1] == {"category": "signs"}
+    assert calls_of(context, "where are the hatchbacks")[0][1] == {"category": "passenger_car"}

@@ -83,3 +83,12 @@ def test_a_road_name_covers_both_of_its_lanes(call: Caller, campus: Scene) -> No
 def test_an_unknown_lane_is_refused_naming_the_lanes(call: Caller, campus: Scene) -> None:
     with pytest.raises(NotFoundError, match="campus_northbound"):
         call(campus, "find_assets", lane="skyway")
+
+
+def test_a_kind_said_in_the_plural_finds_every_category_of_it(call: Caller, campus: Scene) -> None:
+    found = call(campus, "find_assets", category="vehicles", near="parking lot B", within=30.0).data
+    assert {"passenger_car_1", "passenger_car_2", "suv_1"} <= set(found["ids"])
+    signs = call(campus, "find_assets", category="signs").data
+    assert "stop_sign_1" in signs["ids"] and "tree_1" not in signs["ids"]
+    # a single word is read as the catalog reads it: "vehicle" is a passenger car
+    assert set(call(campus, "find_assets", category="vehicle").data["ids"]) == {"passenger_car_1", "passenger_car_2"}

@@ -19,6 +19,7 @@ from typing import Any, Literal
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.places import Notes
 from drivetwin.orchestrator.planning.rules.reading import Reading, read
@@ -110,11 +111,21 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         part = _plan_part(reading, scene, memory, notes, earlier)
         if part is None:
             continue
-        calls.append(part.call)
+        calls.append(_of_group(part.call, reading))
         earlier = part.referent or earlier
         if part.found:
             notes.subject = list(part.found)  # what a later clause's "them" or "each" means
     return calls
+
+
+def _of_group(call: ToolCall, r: Reading) -> ToolCall:
+    """A search for a category that the words name as a whole kind ("which vehicles are parked
+    there"): made a search for the kind, said in the plural as the Worker takes it."""
+    said = call.args.get("category")
+    groups = [tag for tag, members in md.groups_said(r.low).items() if said is None or said in members]
+    if call.tool != "find_assets" or len(groups) != 1 or (said is None and (r.mentions or "nearest_to" in call.args)):
+        return call
+    return call.model_copy(update={"args": {**call.args, "category": groups[0] + "s"}})
 
 
 def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None) -> Part | None:
