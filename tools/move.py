@@ -196,8 +196,8 @@ def resolve_behaviour(
 ) -> tuple[Behaviour, Pose | None]:
     """The Scene behaviour for `spec` and, where the behaviour fixes it, the asset's start pose."""
     cat = category(asset.category)
-    if spec.kind in ("drive_lane", "circle") and cat.motion != "vehicle":
-        raise RuleViolation("behaviour", f"a {cat.name} cannot {spec.kind}; only vehicles and robots drive")
+    if spec.kind in ("drive_lane", "circle") and not cat.drives:
+        raise RuleViolation("behaviour", f"a {cat.name} cannot {spec.kind}; only vehicles, robots and riders drive")
     if spec.kind in ("cross_road", "jaywalk") and cat.motion != "walker":
         raise RuleViolation("behaviour", f"a {cat.name} cannot {spec.kind}; only pedestrians and riders walk")
     if spec.kind == "parked":

@@ -77,6 +77,12 @@ class Category(BaseModel):
         return float(0.5 * (self.length**2 + self.width**2) ** 0.5)
 
     @property
+    def drives(self) -> bool:
+        """Whether it can drive a lane or a circle: a vehicle or robot, or a rider (a walker-moved
+        thing tagged vehicle: a bicycle, a motorcycle)."""
+        return self.motion == "vehicle" or (self.motion == "walker" and "vehicle" in self.tags)
+
+    @property
     def words(self) -> tuple[str, ...]:
         """Every word or phrase that names this category."""
         return (self.name, self.name.replace("_", " "), *self.synonyms)

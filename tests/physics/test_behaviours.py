@@ -138,6 +138,20 @@ def test_drive_lane_car_stays_within_half_a_metre_of_the_centreline() -> None:
     assert trace[-1, 2] > 10.0, "the car should be past the bend"
 
 
+def test_a_cyclist_riding_a_lane_keeps_to_its_centreline_at_its_speed() -> None:
+    lane = _curved_lane()
+    bike = make_asset("bike", "bicycle", -40.0, -30.0, behaviour=DriveLane(lane="bend", speed=4.0))
+    scene = make_scene(bike, ego=PARKED_AWAY)
+    scene.roads = RoadNetwork(lanes=[lane])
+    sim = Simulation(scene)
+    sim.run_for(10.0)
+    trace = np.array(sim.trace("bike"))
+    route = PolylineRoute(lane.centreline)
+    assert max(route.distance_to(x, y) for _, x, y, _ in trace) < 0.1, "a rider is placed on its route"
+    travelled = route.project(trace[-1, 1], trace[-1, 2]) - route.project(-40.0, -30.0)
+    assert math.isclose(travelled, 40.0, rel_tol=0.1), f"rode {travelled:.1f} m in 10 s at 4 m/s"
+
+
 def test_drive_lane_loops_back_to_the_start_of_an_open_lane() -> None:
     car = make_asset("car", "passenger_car", 90.0, -1.75, behaviour=DriveLane(lane="east", speed=6.0))
     sim = Simulation(make_scene(car))

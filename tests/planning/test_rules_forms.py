@@ -375,3 +375,11 @@ def test_a_question_about_a_whole_kind_searches_the_kind(context):
     assert calls_of(context, "which vehicles stand in lot B?")[0][1]["category"] == "vehicles"
     assert calls_of(context, "how many signs do we have")[0][1] == {"category": "signs"}
     assert calls_of(context, "where are the hatchbacks")[0][1] == {"category": "passenger_car"}
+
+
+def test_riders_ride_lanes_and_a_place_word_is_the_head_of_its_name(context):
+    args = calls_of(context, "a scooter riding up the northbound lane")[0][1]
+    assert args["category"] == "motorcycle" and args["behaviour"]["kind"] == "drive_lane"
+    # "scene" ends "centre of the scene" but names no place; "stop" is the stop sign's word here
+    assert calls_of(context, "what have we got in this scene")[0] == ("find_assets", {})
+    assert calls_of(context, "whats the closest thing too the stop sing")[0] == ("find_assets", {"nearest_to": "stop_sign_1"})

@@ -83,3 +83,12 @@ def test_a_spawned_driving_car_drives_along_its_lane_in_mujoco(call: Caller, cam
     pose = sim.pose(car.id)
     assert pose.y - car.pose.y > 10.0, "it should have driven north along its lane"
     assert abs(pose.x - car.pose.x) < 0.5, "and stayed on the lane's centreline"
+
+
+@pytest.mark.parametrize("rider", ["bicycle", "motorcycle"])
+def test_a_rider_can_ride_a_lane_and_a_pedestrian_cannot(call: Caller, campus: Scene, rider: str) -> None:
+    scene, (added,) = _add(call, campus, category=rider, behaviour={**DRIVE, "lane": "campus_northbound"})
+    assert added.behaviour == DriveLane(lane="campus_northbound", speed=added.behaviour.speed)
+    assert _lane_id(scene, added) == "campus_northbound"
+    with pytest.raises(RuleViolation, match="a pedestrian cannot drive_lane"):
+        call(campus, "add_asset", category="pedestrian", behaviour=DRIVE)

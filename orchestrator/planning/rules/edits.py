@@ -22,7 +22,7 @@ from drivetwin.orchestrator.planning.rules.places import Notes, location
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
-from drivetwin.worlds.catalog import catalog
+from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
@@ -235,14 +235,14 @@ def ph_error(message: str) -> Exception:
     return PlanningError(message)
 
 
-def behaviour_kind(r: Reading, motion: str | None = None) -> str | None:
-    """The behaviour a clause names, if it suits an asset that moves like `motion`."""
+def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
+    """The behaviour a clause names, if it suits an asset of `category`."""
     for kind in ("jaywalk", "circle", "cross_road", "drive_lane", "parked"):
         if not r.has(lx.BEHAVIOUR_WORDS[kind]):
             continue
-        if motion is not None and (
-            (kind in ("jaywalk", "cross_road") and motion != "walker")
-            or (kind in ("circle", "drive_lane") and motion not in ("vehicle",))
+        if category is not None and (
+            (kind in ("jaywalk", "cross_road") and category.motion != "walker")
+            or (kind in ("circle", "drive_lane") and not category.drives)
         ):
             continue
         return kind
@@ -305,7 +305,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
             notes.guess("how far to turn")
             angle = DEFAULT_SPIN_DEG
         return [ToolCall(tool="move_asset", args={"asset": asset, "turn_deg": angle})]
-    kind = behaviour_kind(r, motion)
+    kind = behaviour_kind(r, catalog()[found.category] if found is not None else None)
     if kind == "drive_lane" and r.landmark and not r.lane and r.has(("go", "goes")):
         kind = None  # "could the car go in lot A?": a place to be, not a lane to drive
     if kind is not None and kind != "parked":

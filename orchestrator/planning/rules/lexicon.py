@@ -84,10 +84,10 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
                    "crosses the road", "crosses the street", "at the crosswalk", "on the crosswalk",
                    "get across", "go across", "walk across", "cross", "crosses", "crossing over",
                    "use the zebra", "uses the zebra", "across the road", "across the street"),
-    "drive_lane": ("driving", "drive along", "drives along", "moving along", "cruising",
-                   "drive down", "drive on", "drives on", "drive off", "drive away", "leaving",
-                   "leave", "drive around", "drive", "drives", "drove", "heading", "head off", "pull away",
-                   "pull out", "go", "start moving", "get going", "set off", "travel", "travelling"),
+    "drive_lane": ("driving", "drive along", "drives along", "moving along", "cruising", "drive down", "drive on",
+                   "drives on", "drive off", "drive away", "leaving", "leave", "drive around", "drive", "drives",
+                   "drove", "heading", "head off", "pull away", "pull out", "go", "start moving", "get going",
+                   "set off", "travel", "travelling", "riding", "rides", "ride along"),
     "parked": ("parked", "park", "parking", "stationary", "stopped"),
 }
 # Mass or collective nouns for catalog things: the words a person uses, not the catalog's.

@@ -360,7 +360,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return env or None
     laid_out = (r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
                 or (mention.plural and r.has(("along",))))  # "trees along one side of lot A"
-    moving = behaviour_kind(r, catalog()[mention.category].motion) not in (None, "parked")  # a row may be parked
+    moving = behaviour_kind(r, catalog()[mention.category]) not in (None, "parked")  # a row may be parked
     if (laid_out and not moving) or r.has(("to mark",)):
         return [_arrange(r, scene, memory, notes)]
     return _add(r, scene, memory, notes)
@@ -546,7 +546,7 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCal
     # The count is passed as said: the Worker refuses what is too many, in words.
     args: dict[str, Any] = {"category": mention.category, "count": count}
     category = catalog()[mention.category]
-    kind = behaviour_kind(r, category.motion)
+    kind = behaviour_kind(r, category)
     if kind is None and word == "traffic":
         kind = "drive_lane"  # "more traffic on Main Street": vehicles that drive, not parked ones
     if kind is not None:

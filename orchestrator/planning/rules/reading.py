@@ -117,10 +117,14 @@ def _shortened_name(scene: Scene, low: str) -> tuple[str, int, int] | None:
     return name, start, end
 
 
-def _place_head_word(scene: Scene, low: str) -> str | None:
-    heads = {ph.tokens(name)[-1] for lm in scene.landmarks for name in lm.names()}
-    for word in ph.tokens(low):
-        if word in heads or ph.singular(word) in heads:
+def _place_head_word(scene: Scene, low: str, mentions: list[ph.Mention]) -> str | None:
+    """A word naming a kind of place ("the gates"): the head noun of a landmark's name, which is
+    the word before its "of" ("centre of the scene") or its last; never part of a thing named."""
+    heads = {ph.tokens(name.split(" of ")[0])[-1] for lm in scene.landmarks for name in lm.names()}
+    for said in re.finditer(r"[a-z]+", low):
+        word = said.group(0)
+        if (word in heads or ph.singular(word) in heads) and not any(
+                m.start <= said.start() < m.end for m in mentions):
             return ph.singular(word)
     return None
 
@@ -259,7 +263,7 @@ def read(text: str, scene: Scene) -> Reading:
         mentions=mentions,
         landmark=place[0] if place else None,
         landmark_at=place[1] if place else -1,
-        landmark_word=None if place else _place_head_word(scene, low),
+        landmark_word=None if place else _place_head_word(scene, low, mentions),
         lane=lane[0] if lane else None,
         lane_guessed=bool(lane and lane[3]),
         ids=list(dict.fromkeys(ids + numbered)),
