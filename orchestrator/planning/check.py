@@ -196,6 +196,10 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                  and (a.behaviour.kind == "parked") != (request.state == "parked") and a.category in request.categories]
         if wrong:
             out.append(f"you said {request.state} ones, but the plan also takes {_names(wrong)}")
+    if request.state == "moving" and not request.question:
+        standing = [a for a in effect.added if a.category in request.categories and a.behaviour.kind == "parked"]
+        if standing and len(standing) == len([a for a in effect.added if a.category in request.categories]):
+            out.append(f"you said moving ones, but the plan adds {_names(standing)} standing still")
     return out
 
 

@@ -333,3 +333,9 @@ def test_a_change_to_a_thing_the_words_never_point_at_is_not_applied(campus, reg
     report = refused_unchanged(campus, registry, painted, "I would like a rough, concrete feel to the picture")
     assert "which your words do not point at" in (report.error or "")
     assert Session(campus, painted, registry).submit("give the SUV a concrete finish").ok
+
+
+def test_a_thing_said_to_be_moving_is_not_added_standing_still(campus, registry):
+    refused_unchanged(campus, registry, Fixed(add("bicycle", location={"relation": "in_lane", "target": "main_eastbound"})),
+                      "i'd like a bike riding along main street eastwards")
+    assert read_request("a car that is not moving by the gate", campus).state is None

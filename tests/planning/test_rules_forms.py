@@ -383,3 +383,11 @@ def test_riders_ride_lanes_and_a_place_word_is_the_head_of_its_name(context):
     # "scene" ends "centre of the scene" but names no place; "stop" is the stop sign's word here
     assert calls_of(context, "what have we got in this scene")[0] == ("find_assets", {})
     assert calls_of(context, "whats the closest thing too the stop sing")[0] == ("find_assets", {"nearest_to": "stop_sign_1"})
+
+
+def test_next_to_it_is_beside_what_an_earlier_clause_adds_and_a_colon_introduces(session):
+    report = session.submit("the robot needs a warning for drivers: add a rover at the JTEKT entrance and a road-work sign beside it")
+    assert report.ok, report.error
+    rover, sign = (next(a for a in session.scene.assets if a.category == c) for c in ("ackermann_robot", "construction_sign"))
+    assert session.scene.count("ackermann_robot") == 1, "the introduction before the colon adds nothing of its own"
+    assert math.dist((rover.pose.x, rover.pose.y), (sign.pose.x, sign.pose.y)) < 5.0

@@ -122,8 +122,9 @@ def find_categories(text: str) -> list[Mention]:
 
 @cache
 def _whole(phrase: str) -> re.Pattern[str]:
-    # not the first word of a place's name ("the student car park", "the bus stop")
-    return re.compile(rf"(?<![a-z0-9_]){re.escape(phrase)}(?![a-z0-9_])(?!\s+(?:car park|park|parking|lot|stop|station|rack|union)\b)")
+    # apart, hyphenated or closed up ("road-work"); not the first word of a place ("the bus stop")
+    said = r"(?:\s|-)?".join(re.escape(w) for w in phrase.split())
+    return re.compile(rf"(?<![a-z0-9_]){said}(?![a-z0-9_])(?!(?:\s+|-)(?:car park|park|parking|lot|stop|station|rack|union)\b)")
 
 
 def find_count(text: str, before: int | None = None, what: str = "things") -> int | None:

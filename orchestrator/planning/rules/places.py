@@ -67,6 +67,17 @@ class Notes:
     # The prompt's own context: the place and the assets its earlier clauses named.
     place: dict[str, Any] | None = None
     subject: list[str] = field(default_factory=list)
+    coming: list[str] = field(default_factory=list)  # ids its earlier clauses' new things will get
+
+    def adding(self, scene: Scene, category: str, count: int) -> None:
+        """Note the ids the Worker will give `count` new things of `category` (category_N, the
+        smallest N free), so that a later clause's "next to it" can name them."""
+        n = 0
+        for _ in range(count):
+            n += 1
+            while scene.asset(f"{category}_{n}") is not None or f"{category}_{n}" in self.coming:
+                n += 1
+            self.coming.append(f"{category}_{n}")
 
     def guess(self, why: str) -> None:
         self.guesses.append(why)
@@ -107,6 +118,8 @@ def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str |
     return None
 
 
+# A relation to what an earlier clause of the prompt adds: "a rover at the gate and a sign next to it".
+_BY_IT = re.compile(r"\b(?:next to|beside|by|near|behind|in front of|alongside|around)\s+(?:it|them)\b")
 # "There" after a turn that put things somewhere: beside the one of them within this of its focus.
 THERE_BESIDE_M = 6.0
 
@@ -150,6 +163,8 @@ def location(
         target = ids[0]
     elif target is None and r.ego and "ego" not in exclude:
         target = "ego"
+    if target is None and notes.coming and _BY_IT.search(r.low):
+        return {"relation": relation_of(r.low), "target": notes.coming[-1]}  # "... and a sign next to it"
     if target is None and r.has(("there", "same place", "same spot", "nearby", "around it", "near it", "that spot")):
         if notes.place is not None:
             return dict(notes.place)

@@ -125,18 +125,20 @@ _STATEMENT = re.compile(
 )
 
 
-def _clauses(prompt: str) -> list[tuple[str, bool]]:
-    """The clauses of a prompt, each with whether it was asked as a question."""
+def _clauses(prompt: str) -> list[tuple[str, bool, bool]]:
+    """The clauses of a prompt, each with whether it was asked as a question and whether it only
+    introduces what follows its colon ("our robot needs a warning: put ...")."""
     parts = _SPLIT.split(without_reason(prompt).strip() or prompt)
-    out: list[tuple[str, bool]] = []
+    out: list[tuple[str, bool, bool]] = []
     for i in range(0, len(parts), 2):
         text = parts[i].strip()
         text = without_reason(text).strip() or text
         if not text:
             continue
         asked = i + 1 < len(parts) and "?" in parts[i + 1]
+        intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text) for q in _comma_and(p)]
-        out.extend((c, asked) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,")))
+        out.extend((c, asked, intro) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,")))
     return out
 
 
@@ -198,16 +200,18 @@ class RulePlanner:
         unknown: list[str] = []
         skipped: list[str] = []
         described: list[ToolCall] = []
-        for clause, asked in clauses:
+        for clause, asked, intro in clauses:
             reading = read(clause, scene)
+            coming = len(notes.coming)
             clause_calls = _plan_clause(reading, asked, scene, context.memory, notes)
             if reading.landmark:
                 notes.place = {"relation": "at", "target": reading.landmark}
             if clause_calls is None:
                 skipped.append(clause)
                 continue
-            if _STATEMENT.match(reading.low) and not asked:
+            if (intro or _STATEMENT.match(reading.low)) and not asked:
                 described.extend(clause_calls)  # "the bench by the stop is in the way": context, unless all there is
+                del notes.coming[coming:]  # what it would add is not coming
                 continue
             calls.extend(clause_calls)
             unknown += _unknown_words(clause, scene)
@@ -573,4 +577,5 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCal
     colour = next((c for c in COLOURS if r.has((c,))), None)
     if colour is not None:
         args["colour"] = colour
+    notes.adding(scene, mention.category, count)
     return [ToolCall(tool="add_asset", args=args)]
