@@ -162,6 +162,9 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked to take something away, but the plan adds " + _names(added))
     elif request.polarity == "remove" and not effect.removed and not added and _moved(effect):
         out.append("you asked to take something away, but the plan only moves " + _names(_moved(effect)))
+    if request.polarity == "remove" and not effect.removed and any(
+            c.tool == "set_lighting" and c.args.get("street_lights") == "on" for c in effect.calls):
+        out.append("you asked for less, but the plan switches the street lights on")  # "fewer lights over there"
     if request.polarity == "add" and effect.removed and (not effect.added or not REMOVE_WORDS.search(request.low)):
         out.append("you asked for more, but the plan removes " + _names(effect.removed))
     touched = [*effect.added, *effect.removed, *(a for a in effect.changed if a.id != "ego")]
@@ -192,7 +195,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += _attributes(request, effect, scene)
     out += wrong_direction(request.masked, scene, _moved(effect))
     if request.state is not None and (effect.removed or effect.changed):
-        wrong = [a for a in [*effect.removed, *effect.changed] if a.id != "ego"
+        before = [scene.asset(a.id) or a for a in effect.changed]  # as it was: "the parked SUV to pull out"
+        wrong = [a for a in [*effect.removed, *before] if a.id != "ego"
                  and (a.behaviour.kind == "parked") != (request.state == "parked") and a.category in request.categories]
         if wrong:
             out.append(f"you said {request.state} ones, but the plan also takes {_names(wrong)}")

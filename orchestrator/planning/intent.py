@@ -16,11 +16,11 @@ REMOVE_WORDS = re.compile(
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)"
     r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much)\b"
     r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
-    r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to)"  # "nobody should be parked there"
+    r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to|uses?|needs?|wants?)"  # "nobody should be parked there"
 )
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
 FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
-ADD_WORDS = re.compile(r"\b(add|more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
+ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
 _QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b"
                              # "the gates, where are they": the thing first, the question after it

@@ -48,8 +48,10 @@ _SIDEWAYS = r"(?:mov|drift|veer|pull|steer|wander|chang|switch|go|goe|head)\w*"
 # Each manoeuvre: its words (a regex over the action clause) and whether walkers or vehicles do it.
 _MANOEUVRES: tuple[tuple[str, str], ...] = (
     ("light", r"\b(red|amber|yellow|orange|green|cycles?|phases?|work|working|stop|wait|halt)\b"),
-    ("stop_mid_road", r"\b(stop|stops|freeze|freezes|stand|stands|halts?|waits?)\b[^,.;]*\b(middle|midle|road|street|there)\b"
-                      r"|\b(in|into) the (road|street)\b[^,.;]*\b(stops?|freezes?|stands?)\b"),
+    # not denied ("shouldn't just stand there") nor read across a colon
+    ("stop_mid_road", r"(?<!n't )(?<!not )(?<!n't just )(?<!not just )\b(stop|stops|freeze|freezes|stand|stands|halts?|waits?)\b"
+                      r"[^,.;:]*\b(middle|midle|road|street|there)\b"
+                      r"|\b(in|into) the (road|street)\b[^,.;:]*\b(stops?|freezes?|stands?)\b"),
     ("cut_in", r"\bcut(?:s|ting)? in\b|\bswerv\w* into\b|\bmerg\w* (?:in|into)\b|\bpulls? in front\b"),
     ("overtake", r"\bovertakes?\b|\bpull\w* out\b[^,.;]*\bpass\b|\bto pass\b"),
     ("lane_change", r"\bchang\w* lanes?\b|\blane change\b|\binto the lane (?:on|to) (?:its|the) (?:left|right)\b"

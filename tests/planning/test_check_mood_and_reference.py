@@ -339,3 +339,8 @@ def test_a_thing_said_to_be_moving_is_not_added_standing_still(campus, registry)
     refused_unchanged(campus, registry, Fixed(add("bicycle", location={"relation": "in_lane", "target": "main_eastbound"})),
                       "i'd like a bike riding along main street eastwards")
     assert read_request("a car that is not moving by the gate", campus).state is None
+
+
+def test_fewer_lights_does_not_switch_the_street_lights_on(campus, registry):
+    refused_unchanged(campus, registry, Fixed(call("set_lighting", street_lights="on")),
+                      "fewer lights along the north side, please")

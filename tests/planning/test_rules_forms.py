@@ -11,6 +11,7 @@ import math
 import pytest
 from drivetwin.orchestrator.planning.base import PlanningError
 from drivetwin.orchestrator.planning.intent import asks
+from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.planning.rules.reading import find_place
 from drivetwin.orchestrator.planning.rules.spelling import repair
@@ -391,3 +392,17 @@ def test_next_to_it_is_beside_what_an_earlier_clause_adds_and_a_colon_introduces
     rover, sign = (next(a for a in session.scene.assets if a.category == c) for c in ("ackermann_robot", "construction_sign"))
     assert session.scene.count("ackermann_robot") == 1, "the introduction before the colon adds nothing of its own"
     assert math.dist((rover.pose.x, rover.pose.y), (sign.pose.x, sign.pose.y)) < 5.0
+
+
+def test_nobody_using_a_thing_any_more_takes_it_away(session, campus):
+    report = session.submit("no one uses the bench at the bus stop any more, it only clutters the picture")
+    assert report.ok, report.error
+    assert session.scene.count("bench") == campus.count("bench") - 1
+    assert read_request("nobody uses the bench any more", campus).polarity == "remove"
+
+
+def test_a_parked_car_asked_to_pull_out_drives_off_and_is_not_removed(session):
+    report = session.submit("time for the parked 4x4 to pull out, then it should follow the eastbound traffic on main street")
+    assert report.ok, report.error
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.kind == "drive_lane"

@@ -9,6 +9,7 @@ import pytest
 from drivetwin.orchestrator.planning import PlanningError
 from drivetwin.orchestrator.planning.rules import numbers
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.planning.rules.spelling import repair
 
 RULES_DIR = Path(numbers.__file__).parent
 # The phrase lists may not grow: understanding comes from grounding, retrieval and the check.
@@ -34,6 +35,12 @@ def test_a_decimal_distance_is_not_split_at_its_point(context):
 def test_a_misspelling_the_catalog_names_as_nearest_is_repaired(context):
     calls = plan(context, "i'd like one bycicle by the library").calls
     assert calls[0].tool == "add_asset" and calls[0].args["category"] == "bicycle"
+
+
+def test_a_short_word_with_two_letters_swapped_is_repaired_and_one_with_a_letter_changed_is_not(context, campus):
+    calls = plan(context, "two walkers at the bus stpo").calls
+    assert calls[0].args["location"]["target"] == "bus stop"
+    assert repair("a tuck by the gate", campus).repairs == []  # "tuck" is a word, "truck" one letter away
 
 
 def test_an_exponent_distance_is_read_in_full(context):

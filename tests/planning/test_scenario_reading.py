@@ -133,6 +133,9 @@ def test_static_requests_are_not_read_as_behaviour_over_time() -> None:
     assert not describes_behaviour_over_time("move the bench 2 m to the left", scene)
     assert not describes_behaviour_over_time("the pedestrian should cross the road", scene)
     assert describes_behaviour_over_time("the car changes lanes to the left after 5 seconds", scene)
+    # a stop denied, or said before a colon that introduces something else, is no stop in the road
+    assert not describes_behaviour_over_time("the walker shouldn't just wait there: make her go over the road", scene)
+    assert describes_behaviour_over_time("the walker stops in the middle of the road when the ego is 20 m away", scene)
 
 
 # Reading by structure: who acts, what it does, when, and against whom.

@@ -18,7 +18,7 @@ PROPERTY_WORDS = ("mass", "masses", "weight", "weights", "weigh", "weighs", "how
                   "how tall", "how wide", "dimensions", "properties", "length", "width", "height")
 REMOVE_WORDS = ("remove", "delete", "get rid of", "take away", "take out", "clear away", "erase",
                 "eliminate", "despawn", "clear out", "destroy", "lose", "ditch", "scrap",
-                "throw away", "throw out", "take down", "pull out", "dispose of", "clean up",
+                "throw away", "throw out", "take down", "dispose of", "clean up",
                 "tidy up", "clear the", "empty", "no more", "none left", "none of", "without any")
 # "X is over", "the pedestrians went home": the goal is that X is gone.
 GONE_WORDS = ("is over", "are over", "is finished", "are finished", "is done", "are done",
@@ -83,7 +83,7 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
     "cross_road": ("cross the road", "crossing the road", "cross the street", "crossing the street",
                    "crosses the road", "crosses the street", "at the crosswalk", "on the crosswalk",
                    "get across", "go across", "walk across", "cross", "crosses", "crossing over",
-                   "use the zebra", "uses the zebra", "across the road", "across the street"),
+                   "use the zebra", "uses the zebra", "across the road", "across the street", "over the road"),
     "drive_lane": ("driving", "drive along", "drives along", "moving along", "cruising", "drive down", "drive on",
                    "drives on", "drive off", "drive away", "leaving", "leave", "drive around", "drive", "drives",
                    "drove", "heading", "head off", "pull away", "pull out", "go", "start moving", "get going",
@@ -93,7 +93,7 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
 # Mass or collective nouns for catalog things: the words a person uses, not the catalog's.
 CONCEPTS: dict[str, tuple[str, ...]] = {
     "tree": ("greenery", "vegetation", "shrub", "shrubs", "bush", "bushes", "foliage", "palm"),
-    "bench": ("somewhere to sit", "place to sit", "sit", "sitting", "seats", "chairs"),
+    "bench": ("somewhere to sit", "to sit", "sit down", "seats", "chairs"),  # not "sit" said of a thing ("the car should sit")
     "construction_sign": ("warn", "warned", "warning", "warning sign", "heads-up"),
     "road_barrier": ("fence off", "cordon off", "barriers", "block the road", "block off"),
     "trash_bin": ("rubbish", "litter", "garbage"),

@@ -112,6 +112,7 @@ _LAYOUT_VERB_WITH = re.compile(r"^\s*(?:please )?(?:line|ring|surround|encircle|
 # "I'd rather not have a bus"): the thing should go, whatever the verb.
 _NEGATED_WISH = re.compile(
     r"\b(?:don'?t|do not|does not|doesn'?t|no longer|rather not|never)\s+(?:\w+\s+)?(?:want|need|like|have|keep)\b"
+    r"|^\s*(?:nobody|no one|no-one)\s+(?:\w+\s+)?(?:uses?|needs?|wants?|likes?)\b"  # "nobody uses the bin any more"
 )
 
 

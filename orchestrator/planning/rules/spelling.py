@@ -244,8 +244,9 @@ def _nearest_by_edits(low: str, targets: tuple[str, ...]) -> str | None:
     """The one target a few letter slips away ("bycicle" -> "bicycle": two swapped vowels score
     only 0.71 by difflib); None when none is that close or two are equally close."""
     allowed = _allowed_edits(len(low))
-    if allowed == 0:
-        return None
+    if allowed == 0:  # a short word only by two neighbours swapped, its letters all kept ("stpo")
+        swapped = [t for t in targets if len(t) == len(low) and sorted(t) == sorted(low) and edits(low, t) == 1]
+        return swapped[0] if len(swapped) == 1 and len(low) >= MIN_REPAIR_LEN else None
     scored = [(edits(low, t), t) for t in targets if abs(len(t) - len(low)) <= allowed]
     best = sorted((d, t) for d, t in scored if d <= allowed)
     if not best or (len(best) > 1 and best[1][0] == best[0][0]):
