@@ -95,6 +95,7 @@ _DAY_PART = re.compile(r"(?<!this )\b(morning|afternoon|evening|night|midnight|n
 # Words that open background ("where people relax", "before I plan the pedestrian test"):
 # a category named after them is circumstance, not something the plan must act on.
 _BACKGROUND = re.compile(r"\b(where|when|while|before|after|because|so that|so|since|until|unless)\b")
+_OUGHT = re.compile(r"[^,.;]*\b(?:should|must|needs? to|has to|have to|ought to)\b")
 # A thing named after a preposition of place ("from behind the parked bus", "next to a bench")
 # is where something is, not something the plan must act on.
 _LOCATIVE = re.compile(
@@ -173,13 +174,20 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
             len(p.split()) > len(said.split()) and edits(" ".join(rest[: len(p.split())]), p) <= 2 for p in places
         )
         compound = i > 0 and not masked[mentions[i - 1].end : m.start].strip()
-        if m.category not in wanted or _BACKGROUND.search(masked[: m.start]) or said in _VERB_NAMES:
+        if m.category not in wanted or _in_background(masked, m.start) or said in _VERB_NAMES:
             continue
         if _LOCATIVE.search(masked[max(0, m.start - 40) : m.start]):
             continue
         if not (near_place or compound):
             out.add(m.category)
     return out
+
+
+def _in_background(masked: str, at: int) -> bool:
+    """Whether a word at `at` is said inside a clause of time, place or reason; "so" that leads to
+    what should happen ("..., so the seat and the bin should go") leads to the request itself."""
+    return any(not (w.group(1) == "so" and _OUGHT.match(masked, w.end()))
+               for w in _BACKGROUND.finditer(masked[:at]))
 
 
 def missing_categories(categories: Iterable[str], scope: Scope, scene: Scene) -> list[str]:

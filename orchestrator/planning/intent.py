@@ -14,7 +14,10 @@ REMOVE_WORDS = re.compile(
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)"
-    r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much)\b"
+    r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much"
+    # "the seat and the bin should both go": gone, with no place or way to go to after it
+    r"|(?:should|can|could|must|may|has to|have to|needs? to) (?:all |both |just )?go(?: away)?"
+    r"(?=\s*(?:[,.;!?]|$|(?:i guess|i think|please|now|too|as well)\b)))\b"
     r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
     r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to|uses?|needs?|wants?)"  # "nobody should be parked there"
 )

@@ -406,3 +406,20 @@ def test_a_parked_car_asked_to_pull_out_drives_off_and_is_not_removed(session):
     assert report.ok, report.error
     suv = session.scene.asset("suv_1")
     assert suv is not None and suv.behaviour.kind == "drive_lane"
+
+
+def test_things_listed_that_should_go_all_go_and_can_go_is_removal(session, campus):
+    report = session.submit("it looks untidy, so the bench plus the bin at the bus stop must go")
+    assert report.ok, report.error
+    assert (session.scene.count("bench"), session.scene.count("trash_bin")) == (campus.count("bench") - 1, campus.count("trash_bin") - 1)
+    assert session.submit("the hatchbacks can go, i think").ok and session.scene.count("passenger_car") == 0
+    assert read_request("the car should go to lot A", campus).polarity != "remove"
+
+
+def test_moving_a_thing_that_drives_up_moves_it_forward(context):
+    assert calls_of(context, "could you move the test car up a little")[0] == ("move_asset", {"asset": "ego", "forward": 1.5})
+    assert "forward" not in calls_of(context, "move the bench 3 m north")[0][1]
+
+
+def test_the_sun_coming_up_is_sunrise_and_a_hyphenated_phrase_reads_as_its_words(context):
+    assert ("set_time_of_day", {"time": "sunrise"}) in calls_of(context, "make it the early-morning rush, sun coming up")

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import replace
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
@@ -140,6 +141,20 @@ def _inside(point: tuple[float, float], polygon: list[tuple[float, float]]) -> b
     return min(xs) <= point[0] <= max(xs) and min(ys) <= point[1] <= max(ys)
 
 
+# Between two things of one list: "the seat and the bin", "benches, bins".
+_LIST_GAP = re.compile(r"\s*(?:,|and|plus|&|, and)\s*(?:(?:the|a|an|those|these|that|this|all|both)\s+)?")
+
+
+def _listed(r: Reading) -> list[ph.Mention]:
+    """The things of different kinds a clause lists together from its first one on."""
+    listed = r.mentions[:1]
+    for m in r.mentions[1:]:
+        if m.category == listed[-1].category or not _LIST_GAP.fullmatch(r.low[listed[-1].end : m.start]):
+            break
+        listed.append(m)
+    return listed
+
+
 def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """remove_assets calls for a clause that asks for removal, or None when it names nothing."""
     fewer = bool(FEWER_WORDS.search(r.low))
@@ -169,6 +184,9 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             return [ToolCall(tool="remove_assets", args={"assets": ids[:1] if fewer else ids})]
         ids = referenced(r, scene, memory, notes)
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
+    listed = _listed(r)
+    if len(listed) > 1:  # "the seat and the bin there should both go": each of them
+        return [c for m in listed for c in remove(replace(r, mentions=[m]), scene, memory, notes) or []] or None
     mention = r.mentions[0]
     name = mention.category
     recent = [i for i in memory.last_added(name) if scene.asset(i) is not None]
@@ -268,6 +286,10 @@ def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
     return spec
 
 
+# "Up" said of moving a thing that drives: forward, as a queue moves up.
+_UP = re.compile(r"\b(?:move|moves|moved|inch|edge|creep|roll|bring|shift)\s+(?:\S+\s+){0,3}up\b(?!\s+(?:to|the|north))")
+
+
 def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """Move, turn, stop, set the behaviour of or place assets already there; None if not that."""
     ids = referenced(r, scene, memory, notes)
@@ -324,6 +346,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if compass is not None and shift is not None and not anchored:
         east, north = md.COMPASS_VECTORS[compass]
         return [ToolCall(tool="move_asset", args={**moved, "east": east * shift, "north": north * shift})]
+    drives = found is not None and catalog()[found.category].drives
+    if drives and _UP.search(r.low) and not anchored:  # "move our car up a bit": on along its way
+        return [ToolCall(tool="move_asset", args={**moved, "forward": shift or DEFAULT_STEP_M})]
     for word, key, sign in lx.SIDE_WORDS:
         if shift is not None and r.has((word,)) and not anchored:
             return [ToolCall(tool="move_asset", args={**moved, key: sign * shift})]

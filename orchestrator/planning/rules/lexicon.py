@@ -60,7 +60,7 @@ LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "s
 TIME_PRESETS = ((("midnight",), "midnight"), (("night", "nighttime", "night time", "nite", "dark",
                  "darker", "late at night"), "night"), (("evening", "after work"), "evening"),
                 (("dusk", "twilight", "getting dark"), "dusk"), (("sunset", "golden hour", "golden-hour"), "sunset"),
-                (("dawn", "first light"), "dawn"), (("sunrise",), "sunrise"),
+                (("dawn", "first light"), "dawn"), (("sunrise", "sun coming up", "sun comes up", "early morning"), "sunrise"),
                 (("morning", "breakfast"), "morning"), (("afternoon",), "afternoon"),
                 (("noon", "midday", "lunchtime", "lunch time", "lunch"), "noon"),
                 (("daytime", "day time", "day", "daylight", "bright", "brighter"), "daytime"))
@@ -93,7 +93,7 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
 # Mass or collective nouns for catalog things: the words a person uses, not the catalog's.
 CONCEPTS: dict[str, tuple[str, ...]] = {
     "tree": ("greenery", "vegetation", "shrub", "shrubs", "bush", "bushes", "foliage", "palm"),
-    "bench": ("somewhere to sit", "to sit", "sit down", "seats", "chairs"),  # not "sit" said of a thing ("the car should sit")
+    "bench": ("somewhere to sit", "to sit", "sit down", "seat", "seats", "chairs"),  # not "sit" said of a thing ("the car should sit")
     "construction_sign": ("warn", "warned", "warning", "warning sign", "heads-up"),
     "road_barrier": ("fence off", "cordon off", "barriers", "block the road", "block off"),
     "trash_bin": ("rubbish", "litter", "garbage"),

@@ -224,8 +224,8 @@ def find_speed(text: str) -> float | None:
 
 @cache
 def _any_of(words: tuple[str, ...]) -> re.Pattern[str]:
-    # One compiled alternation per word list: compiling per call overflows re's own cache.
-    return re.compile("|".join(rf"(?<![a-z]){re.escape(w)}(?![a-z])" for w in words))
+    # One alternation per word list (compiled per call overflows re's cache); "early-morning" too
+    return re.compile("|".join(rf"(?<![a-z]){'[ -]'.join(map(re.escape, w.split(' ')))}(?![a-z])" for w in words))
 
 
 def has_any(text: str, words: tuple[str, ...]) -> bool:

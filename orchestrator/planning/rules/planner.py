@@ -126,7 +126,7 @@ _STATEMENT = re.compile(
 )
 
 
-def _clauses(prompt: str) -> list[tuple[str, bool, bool]]:
+def _clauses(prompt: str, places: tuple[str, ...] = ()) -> list[tuple[str, bool, bool]]:
     """The clauses of a prompt, each with whether it was asked as a question and whether it only
     introduces what follows its colon ("our robot needs a warning: put ...")."""
     parts = _SPLIT.split(without_reason(prompt).strip() or prompt)
@@ -139,7 +139,7 @@ def _clauses(prompt: str) -> list[tuple[str, bool, bool]]:
         asked = i + 1 < len(parts) and "?" in parts[i + 1]
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text) for q in _comma_and(p)]
-        out.extend((c, asked, intro) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,")))
+        out.extend((c, asked, intro) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,"), places))
     return out
 
 
@@ -159,7 +159,7 @@ _CONJUNCT = re.compile(r"\s*(?:,\s*)?(?:\band\b|\bplus\b|\+|&)\s+(?=[a-z0-9])")
 _VERB_AT = re.compile(rf"\b(?:{'|'.join(_VERBS)})\b")
 
 
-def _conjuncts(clause: str) -> list[str]:
+def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     """A clause whose verb governs two things ("remove the hydrant and the bin", "put the bench at
     the fountain and the bin at the bus stop"), as one clause per thing, each with the verb.
 
@@ -167,6 +167,8 @@ def _conjuncts(clause: str) -> list[str]:
     barriers", "between the bus and the truck" stay one clause).
     """
     low = clause.lower()
+    for name in places:  # "the bus stop" has no verb in it
+        low = re.sub(rf"\b{re.escape(name)}\b", lambda m: " " * len(m.group(0)), low)
     verb = _VERB_AT.search(low)
     if verb is None or any(w in low for w in (*lx.ARRANGE_WORDS, "between", " line", " row", " grid", "mix")):
         return [clause]
@@ -194,7 +196,7 @@ class RulePlanner:
         notes = Notes()
         for fix in repaired.repairs:
             notes.guess(f"spelling {fix}")
-        clauses = _clauses(repaired.text)
+        clauses = _clauses(repaired.text, tuple(n.lower() for lm in scene.landmarks for n in lm.names()))
         if not clauses:
             raise PlanningError("the prompt has no request in it")
         calls: list[ToolCall] = []
