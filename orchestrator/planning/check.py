@@ -188,7 +188,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
     if request.place is not None and effect.edits and not effect.environment:
         far = [a for a in [*effect.added, *effect.removed, *effect.changed] if a.id != "ego"
-               and not _near(scene, a, request.place) and not _names_target(effect, request.place)]
+               and not _near(scene, a, request.place) and not _names_target(effect, request.place)
+               and not _brought_closer(scene, a, request.place)]  # "3 m towards the fountain"
         if far:
             out.append(f"you named {request.place}, but the plan acts on {_names(far)} away from it")
     out += _coverage(request, effect, scene, context.memory)
@@ -338,6 +339,8 @@ def _accounts_for(number: float, effect: Effect) -> bool:
         return False
     counts = [float(len(effect.added)), float(len(effect.removed)), float(len(effect.changed))]
     used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + counts
+    used += [math.hypot(float(c.args.get("east", 0)), float(c.args.get("north", 0)))  # a move at a slant
+             for c in effect.calls if c.tool == "move_asset" and "east" in c.args and "north" in c.args]
     return any(math.isclose(abs(number) * f, abs(u), rel_tol=NUMBER_TOLERANCE, abs_tol=NUMBER_TOLERANCE)
                for u in used for f in UNIT_FACTORS)
 
@@ -348,6 +351,14 @@ def _centre(scene: Scene, place: str) -> tuple[float, float] | None:
     except ToolError:
         return None
     return target.x, target.y
+
+
+def _brought_closer(scene: Scene, asset: AssetInstance, place: str) -> bool:
+    """Whether the plan moves an asset that was there nearer to the place."""
+    before, centre = scene.asset(asset.id), _centre(scene, place)
+    if before is None or centre is None:
+        return False
+    return math.dist((asset.pose.x, asset.pose.y), centre) < math.dist((before.pose.x, before.pose.y), centre) - 0.5
 
 
 def _near(scene: Scene, asset: AssetInstance, place: str) -> bool:

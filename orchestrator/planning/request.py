@@ -19,7 +19,7 @@ from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
-from drivetwin.orchestrator.planning.rules.reading import FIRST_PERSON_EGO, find_lane, find_place
+from drivetwin.orchestrator.planning.rules.reading import FIRST_PERSON_EGO, find_lane, find_place, without_beneficiaries
 from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.worlds.scene import Scene
 
@@ -73,7 +73,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     kinds_text = masked if place is None else low[: place[1]] + " lot " + low[place[2] :]
     for word in ph.EGO_WORDS:
         kinds_text = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", kinds_text)
-    categories = frozenset(m.category for m in ph.find_categories(kinds_text)
+    categories = frozenset(m.category for m in without_beneficiaries(kinds_text, ph.find_categories(kinds_text))
                            if not _DESCRIBING.search(kinds_text[: m.start]) and not _described_head(kinds_text, m))
     exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_checked_amounts(masked))  # "a tree or two"
     numbers = tuple(n.value for n in numbers_in(exact) if not _is_reference(masked, n.start))

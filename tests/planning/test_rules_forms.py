@@ -423,3 +423,14 @@ def test_moving_a_thing_that_drives_up_moves_it_forward(context):
 
 def test_the_sun_coming_up_is_sunrise_and_a_hyphenated_phrase_reads_as_its_words(context):
     assert ("set_time_of_day", {"time": "sunrise"}) in calls_of(context, "make it the early-morning rush, sun coming up")
+
+
+def test_a_move_toward_a_place_heads_straight_for_it_and_a_car_moved_vaguely_moves_on(session, context):
+    bin_before = session.scene.asset("trash_bin_1")
+    assert bin_before is not None and session.submit("shift the trash bin 3 m towards the fountain").ok
+    bin_after, fountain = session.scene.asset("trash_bin_1"), session.scene.landmark("fountain")
+    assert bin_after is not None and fountain is not None
+    before, after = (math.dist((b.pose.x, b.pose.y), fountain.position) for b in (bin_before, bin_after))
+    assert before - after == pytest.approx(3.0, abs=0.1)
+    assert "forward" in calls_of(context, "shift the suv a little")[0][1]
+    assert calls_of(context, "push trash bin 2 meter to east side")[0][1]["east"] == 2.0

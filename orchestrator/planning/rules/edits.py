@@ -25,6 +25,7 @@ from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
+from drivetwin.worlds.surface import nearest_on_polyline
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
 NEAR_PLACE_M = 8.0
@@ -290,6 +291,36 @@ def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
 _UP = re.compile(r"\b(?:move|moves|moved|inch|edge|creep|roll|bring|shift)\s+(?:\S+\s+){0,3}up\b(?!\s+(?:to|the|north))")
 
 
+_TOWARD = re.compile(r"\b(?:towards?|in the direction of)\b")
+
+
+def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> dict[str, float] | None:
+    """East and north for moving `ids` `shift` metres toward the place, road or ego named after
+    "toward", from the middle of where they stand; None when the words say no such move."""
+    said = _TOWARD.search(r.low)
+    things = [a for i in ids if (a := scene.asset(i)) is not None]
+    if said is None or shift is None or not things:
+        return None
+    x = sum(a.pose.x for a in things) / len(things)
+    y = sum(a.pose.y for a in things) / len(things)
+    landmark = scene.landmark(r.landmark) if r.landmark and r.landmark_at > said.start() else None
+    lane = scene.roads.lane(r.lane) if r.lane else None
+    if landmark is not None:
+        goal = landmark.position
+    elif lane is not None:  # the nearest point of the road, any of its lanes
+        lanes = [ln for ln in scene.roads.lanes if ln.road == lane.road] if lane.road else [lane]
+        near = min((nearest_on_polyline(x, y, ln.centreline) for ln in lanes), key=lambda p: p.distance)
+        goal = (near.x, near.y)
+    elif r.ego and "ego" not in ids:
+        goal = (scene.ego.pose.x, scene.ego.pose.y)
+    else:
+        return None
+    gap = math.dist((x, y), goal)
+    if gap < 1e-6:
+        return None
+    return {"east": round(shift * (goal[0] - x) / gap, 2), "north": round(shift * (goal[1] - y) / gap, 2)}
+
+
 def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """Move, turn, stop, set the behaviour of or place assets already there; None if not that."""
     ids = referenced(r, scene, memory, notes)
@@ -342,6 +373,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         notes.guess("how far to move")  # "the SUV should pull forward a few metres"
         shift = DEFAULT_STEP_M
     moved: dict[str, Any] = {"asset": asset} if len(ids) == 1 else {"assets": ids}
+    toward = _toward(r, scene, ids, shift)
+    if toward is not None:  # "4 m toward Main Street": straight at it, from where they stand
+        return [ToolCall(tool="move_asset", args={**moved, **toward})]
     compass = md.compass_direction(r.masked)
     if compass is not None and shift is not None and not anchored:
         east, north = md.COMPASS_VECTORS[compass]
@@ -361,7 +395,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if r.has(("move", "shift", "nudge", "push", "slide", "budge", "relocate")):
         notes.guess("where to move it")
         step = metres or (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else DEFAULT_STEP_M)
-        return [ToolCall(tool="move_asset", args={**moved, "left": step})]
+        every = [scene.asset(i) for i in ids]
+        along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
+        return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]
     return None
 
 

@@ -196,6 +196,16 @@ _VERB_NOUNS = ("stop", "plant", "post", "signal", "seat", "cycle", "park")
 # Concept words that name one person, not a crowd.
 _ONE_PERSON = ("someone", "somebody", "kid", "child", "guy")
 
+# A wish said of someone with the thing wished for after it ("the students could use somewhere to
+# sit", "drivers need a warning").
+_WISHED = re.compile(r"\b(?:could use|could do with|would like|would love|needs?|wants?|deserves?)\s+"
+                     r"(?=(?:a|an|some|somewhere|something|more|another|extra|new|\d+|two|three|a few|several)\b)")
+
+
+def without_beneficiaries(low: str, mentions: list[ph.Mention]) -> list[ph.Mention]:
+    """`mentions` without those who would have what is wished for: they are not what is asked."""
+    wish = _WISHED.search(low)
+    return mentions if wish is None else [m for m in mentions if m.start >= wish.end()]
 # Words for a person who does something to a thing named beside them.
 _AGENTS = ("someone", "somebody")
 
@@ -250,6 +260,7 @@ def read(text: str, scene: Scene) -> Reading:
     if len(mentions) > 1 or place is not None:
         kept = [m for m in mentions if not re.search(r"\bfor\s+(the\s+|a\s+|an\s+)?$", low[: m.start])]
         mentions = kept if kept or place is not None else mentions
+    mentions = without_beneficiaries(low, mentions)
     # "a night test of pedestrian detection": what a sensor task is about is its topic, not a thing asked for
     mentions = [m for m in mentions if not _PERCEPTION_TASK.match(low[m.end :])]
     ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in ph.tokens(low)]
