@@ -222,8 +222,9 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
             for c in definite_but_added(request.masked, scope, scene)]
     if not request.question:
         out += environment_left_out(request.low, effect.calls)
-    # a number, a place, a lane, a state or "fewer" limits how many go
-    limited = bool(request.numbers or request.place or request.lane or request.state or FEWER_WORDS.search(request.low))
+    # a number, a place, a lane, a state, "fewer" or a side limits how many go
+    limited = bool(request.numbers or request.place or request.lane or request.state or FEWER_WORDS.search(request.low)
+                   or md.outer_direction(request.low))  # "the westernmost lamp"
     out += partial_removal(request.masked, scope, scene, limited)
     out += [f"you asked for a new {c.replace('_', ' ')}, but the plan moves one that is there"
             for c in indefinite_but_moved(request.masked, scope, scene)]

@@ -434,3 +434,14 @@ def test_a_move_toward_a_place_heads_straight_for_it_and_a_car_moved_vaguely_mov
     assert before - after == pytest.approx(3.0, abs=0.1)
     assert "forward" in calls_of(context, "shift the suv a little")[0][1]
     assert calls_of(context, "push trash bin 2 meter to east side")[0][1]["east"] == 2.0
+
+
+def test_the_one_on_a_corner_or_furthest_one_way_is_the_one_meant(session, campus):
+    lights = [a for a in campus.assets if a.category == "street_light"]
+    westernmost = min(lights, key=lambda a: a.pose.x)
+    assert session.submit("take away the westernmost street lamp").ok
+    assert session.scene.asset(westernmost.id) is None and session.scene.count("street_light") == len(lights) - 1
+    signals = [a for a in campus.assets if a.category == "traffic_light"]
+    north_east = max(signals, key=lambda a: a.pose.x + a.pose.y)
+    assert session.submit("i'd rather not have the signal on the north-east corner of the crossroads").ok
+    assert session.scene.asset(north_east.id) is None and session.scene.count("traffic_light") == len(signals) - 1

@@ -84,12 +84,27 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             return []
         if mention.plural or r.has(("all", "every", "each")):
             return present
+        outermost = _outermost(r, scene, mention, present)
+        if outermost is not None:
+            return [outermost]
         return recent[-1:] if recent else present[:1]
     if r.has(_POINTING):
         if notes.subject:
             return notes.subject
         return [i for i in memory.last_added() if scene.asset(i) is not None]
     return []
+
+
+def _outermost(r: Reading, scene: Scene, mention: ph.Mention, present: list[str]) -> str | None:
+    """The one of `present` furthest the way the words after its mention point ("the signal on
+    the north-east corner of the crossroads", "the western one"), among those at the place named
+    if any are; None when they point no way or there is no choice."""
+    way = md.outer_direction(r.masked)
+    if way is None or len(present) < 2:
+        return None
+    pool = (_at_place(scene, r.landmark, present) if r.landmark else []) or present
+    things = [a for i in pool if (a := scene.asset(i)) is not None]
+    return max(things, key=lambda a: a.pose.x * way[0] + a.pose.y * way[1]).id if things else None
 
 
 # Between a thing and a place, words that make the place where the thing is ("the cars in lot B"),
@@ -200,6 +215,9 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         # "the vehicles in lot B": every one there, of every category the words cover
         ids = referenced(r, scene, memory, notes)
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
+    outermost = None if mention.plural else _outermost(r, scene, mention, [a.id for a in scene.assets if a.category == name])
+    if outermost is not None:
+        return [ToolCall(tool="remove_assets", args={"assets": [outermost]})]
     keep = _KEEP.search(r.low)
     if keep is not None:  # "keep just two": all but that many of those in scope
         left = int(keep.group(1)) if keep.group(1).isdigit() else ph.NUMBER_WORDS.get(keep.group(1), 0)

@@ -32,6 +32,24 @@ def facing_direction(text: str) -> str | None:
     return said.group(1) if said else None
 
 
+# A side or corner of a place, or the one of several furthest one way: "on the north-east corner",
+# "the western one", "the southernmost".
+_OUTER = re.compile(r"\b(?:(north|south)(?:[- ]?(east|west))?|(east|west))(?:ern|ernmost|most)?\s+(?:corner|side|one|end|edge)\b"
+                    r"|\b(north|south|east|west)(?:ern)?most\b")
+
+
+def outer_direction(text: str) -> tuple[float, float] | None:
+    """The unit vector of the side, corner or extreme the words name; None for none."""
+    said = _OUTER.search(text)
+    if said is None:
+        return None
+    east, north = 0.0, 0.0
+    for word in filter(None, said.groups()):
+        east, north = east + COMPASS_VECTORS[word][0], north + COMPASS_VECTORS[word][1]
+    size = (east**2 + north**2) ** 0.5
+    return (east / size, north / size)
+
+
 def compass_direction(text: str) -> str | None:
     """The one compass direction the words say to go ("2 m east"); None for none, or for two
     ("north-east", "east then north"): not one direction."""
