@@ -188,7 +188,7 @@ def test_all_and_a_number_name_things_already_there(session):
 
 def test_a_place_said_before_the_things_says_which_and_a_little_moves_them_all(context):
     ((tool, args),) = calls_of(context, "budge the lot B cars a touch")
-    assert tool == "move_asset" and sorted(args["assets"]) == ["passenger_car_1", "passenger_car_2"]
+    assert tool == "move_asset" and sorted(args["assets"]) == ["passenger_car_1", "passenger_car_2", "suv_1"]  # cars: the SUV too
 
 
 def test_feet_are_read_as_metres(context):
