@@ -445,3 +445,10 @@ def test_the_one_on_a_corner_or_furthest_one_way_is_the_one_meant(session, campu
     north_east = max(signals, key=lambda a: a.pose.x + a.pose.y)
     assert session.submit("i'd rather not have the signal on the north-east corner of the crossroads").ok
     assert session.scene.asset(north_east.id) is None and session.scene.count("traffic_light") == len(signals) - 1
+
+
+def test_what_follows_so_is_the_request_when_nothing_else_is_and_lamps_wished_lit_are_switched_on(context):
+    calls = calls_of(context, "we're filming the graveyard shift, so it has to be night and the street lamps have to be lit")
+    assert ("set_time_of_day", {"time": "night"}) in calls and ("set_lighting", {"street_lights": "on"}) in calls
+    assert calls_of(context, "street lamps should stay off tonight") == [("set_lighting", {"street_lights": "off"})]
+    assert calls_of(context, "could you make the weather nice again") == [("set_weather", {"kind": "clear"})]

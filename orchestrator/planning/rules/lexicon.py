@@ -49,7 +49,7 @@ WEATHER_WORDS: dict[str, tuple[str, ...]] = {
     "cloudy": ("cloudy", "overcast", "clouds", "grey sky", "gloomy"),
     "clear": ("clear weather", "clear the weather", "clear sky", "sunny", "make it clear", "sun",
               "sunshine", "stop raining", "stop the rain", "no rain", "fine weather", "clear skies",
-              "weather clear", "clear up", "clears up", "nice weather", "nicer weather",
+              "weather clear", "weather nice", "clear up", "clears up", "nice weather", "nicer weather",
               "better weather", "good weather", "dry", "blue sky", "stops raining"),
 }
 HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "intense", "lot of",
@@ -129,7 +129,7 @@ GRAMMAR = frozenset(
     did will shall should must may might as if then now so but or not no yes up down over under out
     away onto on near its it one two three please bit little lot few many much how what where
     which who why when while before after thanks thank ok okay kindly side way up please go get
-    put set give want like into via per each both either other same spot place area bay
+    put set give want like into via per each both either other same spot place area bay we're i'm you're they're that's
     outside inside between towards toward closer close far next along through west east north
     south westbound eastbound northbound southbound westwards eastwards northwards southwards
     coloured colored painted paint recolour just really very quite rather too so than test""".split()  # noqa: SIM905 - a paragraph of words

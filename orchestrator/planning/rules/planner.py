@@ -126,14 +126,15 @@ _STATEMENT = re.compile(
 )
 
 
-def _clauses(prompt: str, places: tuple[str, ...] = ()) -> list[tuple[str, bool, bool]]:
+def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -> list[tuple[str, bool, bool]]:
     """The clauses of a prompt, each with whether it was asked as a question and whether it only
-    introduces what follows its colon ("our robot needs a warning: put ...")."""
-    parts = _SPLIT.split(without_reason(prompt).strip() or prompt)
+    introduces what follows its colon ("our robot needs a warning: put ..."); without the clauses
+    that say why unless `reasons`."""
+    parts = _SPLIT.split(prompt if reasons else without_reason(prompt).strip() or prompt)
     out: list[tuple[str, bool, bool]] = []
     for i in range(0, len(parts), 2):
         text = parts[i].strip()
-        text = without_reason(text).strip() or text
+        text = text if reasons else without_reason(text).strip() or text
         if not text:
             continue
         asked = i + 1 < len(parts) and "?" in parts[i + 1]
@@ -189,16 +190,13 @@ class RulePlanner:
 
     name = "rules"
 
-    def plan(self, prompt: str, context: PlanContext) -> Plan:
-        started = time.perf_counter()
+    @staticmethod
+    def _read(
+        clauses: list[tuple[str, bool, bool]], context: PlanContext, notes: Notes
+    ) -> tuple[list[ToolCall], list[str], list[str], list[ToolCall]]:
+        """Each clause's calls: those of requests, the unknown words in them, the clauses that
+        asked nothing, and the calls of clauses that only describe or introduce."""
         scene = context.scene
-        repaired = repair(prompt, scene)
-        notes = Notes()
-        for fix in repaired.repairs:
-            notes.guess(f"spelling {fix}")
-        clauses = _clauses(repaired.text, tuple(n.lower() for lm in scene.landmarks for n in lm.names()))
-        if not clauses:
-            raise PlanningError("the prompt has no request in it")
         calls: list[ToolCall] = []
         unknown: list[str] = []
         skipped: list[str] = []
@@ -218,6 +216,25 @@ class RulePlanner:
                 continue
             calls.extend(clause_calls)
             unknown += _unknown_words(clause, scene)
+        return calls, unknown, skipped, described
+
+    def plan(self, prompt: str, context: PlanContext) -> Plan:
+        started = time.perf_counter()
+        scene = context.scene
+        repaired = repair(prompt, scene)
+        notes = Notes()
+        for fix in repaired.repairs:
+            notes.guess(f"spelling {fix}")
+        places = tuple(n.lower() for lm in scene.landmarks for n in lm.names())
+        clauses = _clauses(repaired.text, places)
+        if not clauses:
+            raise PlanningError("the prompt has no request in it")
+        spelling = list(notes.guesses)
+        calls, unknown, skipped, described = self._read(clauses, context, notes)
+        if not calls and not described and (whole := _clauses(repaired.text, places, reasons=True)) != clauses:
+            # "we're filming the late shift, so it has to be night": what read as the reason is the request
+            notes = Notes(guesses=spelling)
+            calls, unknown, skipped, described = self._read(whole, context, notes)
         if not calls:
             calls = described
         if not calls and skipped:
@@ -306,12 +323,13 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         removed = remove(r, scene, memory, notes)
         if removed is not None:
             return removed
-    switch = re.search(r"\b(turn|switch|put|flick)\b.*\b(on|off)\b", r.low)
+    # "turn the lamps on", and a state wished for: "the street lights must be on", "lamps should be lit"
+    switch = re.search(r"\b(turn|switch|put|flick)\b.*\b(on|off)\b|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit)\b", r.low)
     if switch and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
         if lights(r) is not None:
             return environment(r, scene.environment)
         if any(m.category == "street_light" for m in r.mentions):
-            return [ToolCall(tool="set_lighting", args={"street_lights": switch.group(2)})]
+            return [ToolCall(tool="set_lighting", args={"street_lights": "off" if "off" in switch.groups() else "on"})]
     if not (r.mentions or r.ids or r.ego) and notes.subject and any(r.has((c,)) for c in COLOURS):
         colour = recolour(r, scene, memory, notes)  # "...; bright yellow would do": a look for the thing just named
         if colour is not None:
