@@ -452,3 +452,12 @@ def test_what_follows_so_is_the_request_when_nothing_else_is_and_lamps_wished_li
     assert ("set_time_of_day", {"time": "night"}) in calls and ("set_lighting", {"street_lights": "on"}) in calls
     assert calls_of(context, "street lamps should stay off tonight") == [("set_lighting", {"street_lights": "off"})]
     assert calls_of(context, "could you make the weather nice again") == [("set_weather", {"kind": "clear"})]
+
+
+def test_junk_off_the_road_is_what_stands_on_it_and_a_mistake_goes(session, campus):
+    assert session.submit("drop two cones and a barrier in our lane 30 m ahead of the ego").ok
+    assert session.submit("remove the clutter from our lane").ok
+    assert session.scene.count("traffic_cone") == campus.count("traffic_cone") and session.scene.count("road_barrier") == 0
+    assert session.scene.count("bench") == campus.count("bench"), "what stands off the road stays"
+    assert session.submit("put a bench next to the fountain").ok
+    assert session.submit("hmm, that bench was a mistake").ok and session.scene.count("bench") == campus.count("bench")

@@ -23,6 +23,7 @@ from drivetwin.orchestrator.planning.rules.places import Notes, location
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
+from drivetwin.tools.search import lane_under
 from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import nearest_on_polyline
@@ -157,6 +158,10 @@ def _inside(point: tuple[float, float], polygon: list[tuple[float, float]]) -> b
     return min(xs) <= point[0] <= max(xs) and min(ys) <= point[1] <= max(ys)
 
 
+# The road as where things are taken from: "off the road", "out of our lane".
+_OFF_THE_ROAD = re.compile(r"\b(?:off|from|on|in|out of|blocking)\s+(?:the|our|my|this|that)\s+(?:\S+\s+)?(?:road|roads|lane|lanes|street)\b")
+
+
 # Between two things of one list: "the seat and the bin", "benches, bins".
 _LIST_GAP = re.compile(r"\s*(?:,|and|plus|&|, and)\s*(?:(?:the|a|an|those|these|that|this|all|both)\s+)?")
 
@@ -198,6 +203,11 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             if not ids:
                 raise ph_error(f"there is nothing{' parked' if parked else ''} at {r.landmark} to take away")
             return [ToolCall(tool="remove_assets", args={"assets": ids[:1] if fewer else ids})]
+        if _OFF_THE_ROAD.search(r.low) and (r.has(lx.GENERIC_THINGS) or gone):
+            # "clear the junk off the road", "the lane should be open again": what stands on it
+            lanes = [lane] if r.lane and not r.lane_guessed and (lane := scene.roads.lane(r.lane)) else scene.roads.lanes
+            ids = [a.id for a in scene.assets if catalog()[a.category].motion == "prop" and lane_under(a, lanes)]
+            return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
         ids = referenced(r, scene, memory, notes)
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
     listed = _listed(r)

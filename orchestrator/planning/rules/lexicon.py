@@ -23,7 +23,7 @@ REMOVE_WORDS = ("remove", "delete", "get rid of", "take away", "take out", "clea
 # "X is over", "the pedestrians went home": the goal is that X is gone.
 GONE_WORDS = ("is over", "are over", "is finished", "are finished", "is done", "are done",
               "went home", "go home", "have left", "has left", "were collected", "was collected",
-              "were removed", "are gone", "is gone", "should be empty", "should be clear",
+              "were removed", "are gone", "is gone", "should be empty", "should be clear", "was a mistake", "were a mistake",
               "no longer needed", "not needed", "be empty", "to be empty", "cleared", "been collected")
 FEWER_WORDS = ("too many", "fewer", "less", "thin out", "one less")
 ADD_WORDS = ("add", "create", "spawn", "place", "put", "insert", "set up", "install", "plant",

@@ -78,6 +78,9 @@ _VERBS = (
     "reverse",
     "shift",
     "relocate",
+    "drop",
+    "scatter",
+    "install",
 )
 _STRICT_ADD = (
     "add",
