@@ -60,6 +60,7 @@ from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
+from drivetwin.orchestrator.planning.rules.places import says_other_place
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.base import ToolCall
@@ -189,7 +190,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.place is not None and effect.edits and not effect.environment:
         far = [a for a in [*effect.added, *effect.removed, *effect.changed] if a.id != "ego"
                and not _near(scene, a, request.place) and not _names_target(effect, request.place)
-               and not _brought_closer(scene, a, request.place)]  # "3 m towards the fountain"
+               and not _brought_closer(scene, a, request.place)  # "3 m towards the fountain"
+               and not (says_other_place(request.low, scene) and _near(scene, scene.asset(a.id) or a, request.place))]
         if far:
             out.append(f"you named {request.place}, but the plan acts on {_names(far)} away from it")
     out += _coverage(request, effect, scene, context.memory)

@@ -17,6 +17,7 @@ from drivetwin.orchestrator.planning.rules.reading import find_place
 from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.tools.errors import NotFoundError
 from drivetwin.tools.locate import Location, resolve_anchor
+from drivetwin.worlds.surface import point_in_polygon
 
 
 def calls_of(context, prompt: str) -> list[tuple[str, dict[str, object]]]:
@@ -461,3 +462,16 @@ def test_junk_off_the_road_is_what_stands_on_it_and_a_mistake_goes(session, camp
     assert session.scene.count("bench") == campus.count("bench"), "what stands off the road stays"
     assert session.submit("put a bench next to the fountain").ok
     assert session.submit("hmm, that bench was a mistake").ok and session.scene.count("bench") == campus.count("bench")
+
+
+def test_a_question_after_please_is_a_question_and_whoever_opens_a_statement(context):
+    assert asks(" please , where is the bus stop ? ") and not asks(" please add a cone ? ")
+    assert calls_of(context, "whoever uses the bench looks straight at the cars; turn the bench round")[0][0] == "move_asset"
+
+
+def test_the_other_place_is_the_one_like_where_the_thing_stands(session):
+    lot_a = session.scene.landmark("parking lot A")
+    assert lot_a is not None and lot_a.polygon is not None
+    assert session.submit("could the suv go to the other car park").ok
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and point_in_polygon(suv.pose.x, suv.pose.y, lot_a.polygon)

@@ -15,7 +15,8 @@ from typing import Any
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.reading import Reading
-from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.scene import Landmark, Scene
+from drivetwin.worlds.surface import point_in_polygon
 
 RELATIONS = (
     (("in front of", "ahead of", "front of", "infront", "in front"), "in_front_of"),
@@ -124,6 +125,48 @@ _BY_IT = re.compile(r"\b(?:next to|beside|by|near|behind|in front of|alongside|a
 THERE_BESIDE_M = 6.0
 
 
+_THE_OTHER = re.compile(r"\bthe other ([a-z]+(?: [a-z]+)?)")
+
+
+def says_other_place(low: str, scene: Scene) -> bool:
+    """Whether the words name "the other" place: "the other one", "the other lot", "the other car
+    park" (a name, or its head word: its last, or the one before a label such as "lot A")."""
+    said = _THE_OTHER.search(low)
+    if said is None:
+        return False
+    heads = {"one"}
+    for name in (n.lower() for lm in scene.landmarks for n in lm.names()):
+        words = ph.tokens(name)
+        heads |= {name, words[-1]} | ({words[-2]} if len(words) > 1 and len(words[-1]) <= 2 else set())
+    first = said.group(1).split()[0]
+    return said.group(1) in heads or first in heads
+# How near a place a thing must stand to be at it, when the place has no area.
+AT_PLACE_M = 15.0
+
+
+def _other_place(scene: Scene, moving: list[str]) -> str | None:
+    """The place most like the one the first of `moving` stands at (names sharing the most words,
+    not one named after it such as its entrance); None when it stands at none or none is like it."""
+    asset = scene.asset(moving[0])
+    if asset is None:
+        return None
+    x, y = asset.pose.x, asset.pose.y
+    at = [lm for lm in scene.landmarks if (point_in_polygon(x, y, lm.polygon) if lm.polygon
+                                           else math.dist((x, y), lm.position) <= AT_PLACE_M)]
+    if not at:
+        return None
+    here = at[0]
+    words = [set(ph.tokens(n)) for n in here.names()]
+
+    def likeness(lm: Landmark) -> float:
+        return max(len(a & set(ph.tokens(n))) / len(a | set(ph.tokens(n))) for a in words for n in lm.names())
+
+    others = [lm for lm in scene.landmarks if lm is not here
+              and not any(here.name.lower() in n.lower() for n in lm.names())]
+    best = max(others, key=likeness, default=None)
+    return best.name if best is not None and likeness(best) > 0 else None
+
+
 def location(
     r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: list[str] | None = None
 ) -> dict[str, Any] | None:
@@ -156,6 +199,9 @@ def location(
         # "... in lot A and a sign at its entrance": the entrance of the place just named
         entrance = scene.landmark(f"{notes.place.get('target')} entrance")
         target = entrance.name if entrance is not None else None
+    other = _other_place(scene, exclude) if exclude and says_other_place(r.low, scene) else None
+    if other is not None and (target is None or target == r.landmark):
+        target = other  # "park one of those cars in the other lot", "the other car park"
     ids = [i for i in r.ids if i not in exclude]
     if target is None and r.landmark:
         target = r.landmark
@@ -194,4 +240,4 @@ def said_a_place(r: Reading) -> bool:
     return bool(re.search(r"\b(near|next to|beside|by|in front of|behind|outside|close to|over by)\b", r.masked))
 
 
-__all__ = ["PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place"]
+__all__ = ["PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]

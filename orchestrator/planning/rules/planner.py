@@ -124,7 +124,7 @@ _NEGATED_WISH = re.compile(
 # trees block the view"), unless it says what should be ("the bus should stop", "it belongs in lot A").
 _STATEMENT = re.compile(
     r"\s*(?:(?:the|this|that|these|those|it|they|there)\b[^,;]*?\b(?:is|are|was|were)\b"
-    r"|(?:the|this|that|these|those)\s+(?![^,;]*\b(?:should|must|needs?|has to|have to|ought|go|goes|belongs?|wants?|"
+    r"|(?:the|this|that|these|those|whoever|anyone who|everyone who)\s+(?![^,;]*\b(?:should|must|needs?|has to|have to|ought|go|goes|belongs?|wants?|"
     r"will|would|can|could|shall|may|might|let|gets?|to be)\b)[a-z' -]+\s(?:[a-z]+s|block|blocks|sit|stand|stay|face|look)\b)"
 )
 
