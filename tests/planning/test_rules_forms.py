@@ -475,3 +475,17 @@ def test_the_other_place_is_the_one_like_where_the_thing_stands(session):
     assert session.submit("could the suv go to the other car park").ok
     suv = session.scene.asset("suv_1")
     assert suv is not None and point_in_polygon(suv.pose.x, suv.pose.y, lot_a.polygon)
+
+
+def test_a_clause_that_only_names_things_is_the_topic_of_the_question_after_it(session):
+    report = session.submit("those street lamps... where are they?")
+    assert report.ok and report.plan is not None and report.plan.calls[0].tool == "find_assets"
+    assert all(f"street_light_{n}" in (report.answer or "") for n in range(1, 13))
+    assert calls_of_session(session, "Place the car number 2 in front of the library")[0].args["asset"] == "passenger_car_2"
+    assert [c.tool for c in calls_of_session(session, "turn of the street lamps")] == ["set_lighting"]
+
+
+def calls_of_session(session, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error or (report.question.text if report.question else "")
+    return report.plan.calls

@@ -72,6 +72,15 @@ def catalog_tags() -> frozenset[str]:
     return frozenset(_catalog_groups())
 
 
+def kind_of(categories: set[str]) -> str | None:
+    """How a search names things of these categories: the category, or the smallest catalog group
+    holding them all in the plural ("cars" for sedans and SUVs); None when no group does."""
+    if len(categories) == 1:
+        return next(iter(categories))
+    groups = [(len(members), tag) for tag, members in _catalog_groups().items() if categories <= members]
+    return min(groups)[1] + "s" if groups else None
+
+
 def groups_said(text: str) -> dict[str, frozenset[str]]:
     """The groups the words name by a catalog tag in the plural or after "every" ("the vehicles",
     "all the signs", "every vehicle"), each with its categories; not the "lights" of "the street
@@ -130,4 +139,5 @@ def partitive_count(before: str) -> int | None:
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word)
 
 
-__all__ = ["COMPASS_VECTORS", "catalog_tags", "compass_direction", "facing_direction", "groups_said", "layout_said", "material_said", "partitive_count"]
+__all__ = ["COMPASS_VECTORS", "catalog_tags", "compass_direction", "facing_direction", "groups_said", "kind_of", "layout_said",
+           "material_said", "outer_direction", "partitive_count"]

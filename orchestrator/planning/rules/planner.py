@@ -22,7 +22,14 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.edits import behaviour_kind, behaviour_spec, edit_existing, recolour, remove
+from drivetwin.orchestrator.planning.rules.edits import (
+    behaviour_kind,
+    behaviour_spec,
+    edit_existing,
+    recolour,
+    referenced,
+    remove,
+)
 from drivetwin.orchestrator.planning.rules.environment import environment, lights
 from drivetwin.orchestrator.planning.rules.places import Notes, location, said_a_place
 from drivetwin.orchestrator.planning.rules.questions import plan_question
@@ -310,6 +317,17 @@ def _is_question(r: Reading, asked: bool) -> bool:
     return starts or (asked and asks(words + " ?")) or bool(within) or asks(words)
 
 
+# A clause that only names things already there ("the cars...", "that bench,"): the topic of the next.
+_TOPIC = re.compile(r"\s*(?:(?:the|those|these|that|this|our|my|all|both|of|and)\s+)*(?:§\s*)+[.,!\s]*")
+
+
+def _without_mentions(r: Reading) -> str:
+    out = r.low
+    for m in r.mentions:
+        out = out[: m.start] + "§" * (m.end - m.start) + out[m.end :]
+    return out
+
+
 def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     if r.has(lx.PROMPT_INJECTION) and not (r.mentions or r.ego or r.ids):
         raise PlanningError(
@@ -319,6 +337,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return None  # "before I add anything": a circumstance, not a request
     if _is_question(r, asked):
         return plan_question(r, scene, memory, notes)
+    if r.mentions and _TOPIC.fullmatch(_without_mentions(r)):
+        referenced(r, scene, memory, notes)  # "the cars... where are they?": what the next clause is about
+        return []
     # The removal words the plan check reads polarity by ("take it out", "without the bin") count too.
     taken_away = bool(REMOVE_WORDS.search(r.low.strip()))
     fewer = bool(FEWER_WORDS.search(r.low))

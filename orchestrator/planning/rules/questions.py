@@ -60,9 +60,11 @@ _PROPERTY = re.compile(r"\b(?:colou?r|which way|heading|facing|how fast|speed|be
 # Words that point back: to an earlier part or clause ("it", "there") or to the asker ("us").
 _BACK = re.compile(r"\b(?:it|its|them|they|those ones|that one|that spot|that place|here)\b"
                    r"|(?<!is )(?<!are )(?<!was )(?<!were )\bthere\b(?!\s*(?:is|are|was|were|'s|be)\b)")
+_PLURAL_BACK = re.compile(r"\b(?:they|them|those|these)\b")
 _PLACE_POINTERS = frozenset({"there", "here", "that spot", "that place"})
-# A clause that only points back at what earlier ones asked about ("how many of each").
-_OF_EACH = re.compile(r"\b(?:each|both|them|they|those|these)\b")
+# A clause that only points back at what earlier ones asked about ("how many of each"); "where are
+# they" after a clause that only names them is their own question.
+_OF_EACH = re.compile(r"\b(?:each|both)\b")
 _ASKER = re.compile(r"\b(?:(?:to|from|near|nearest|closest|around|by|of|beside) (me|us)|where am i|where are we)\b")
 _DEFINITE = re.compile(r"\b(?:the|that|this|our|my|your)\s+(?:[a-z]+\s+){0,2}$")
 
@@ -169,7 +171,7 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
             return Part(ToolCall(tool="find_landmarks", args={"nearest_to": anchor.name}), anchor)
         if r.mentions or _ANY_KIND.search(r.masked) or anchor.kind != "landmark":
             return _around(r, scene, anchor)
-    return _what_or_where(r, scene, named, back)
+    return _what_or_where(r, scene, named, back, notes.subject)
 
 
 def _names_nothing(r: Reading) -> bool:
@@ -358,7 +360,8 @@ def _lanes(r: Reading, scene: Scene, back: Anchor | None) -> ToolCall:
     return ToolCall(tool="find_lanes", args={"near": near.name} if near is not None else {})
 
 
-def _what_or_where(r: Reading, scene: Scene, named: Anchor | None, back: Anchor | None) -> Part:
+def _what_or_where(r: Reading, scene: Scene, named: Anchor | None, back: Anchor | None,
+                   notes_subject: list[str]) -> Part:
     """A question with no relation: the thing named, where it is or how many there are."""
     if r.mentions:
         args: dict[str, Any] = {"category": r.mentions[0].category}
@@ -373,6 +376,10 @@ def _what_or_where(r: Reading, scene: Scene, named: Anchor | None, back: Anchor 
         return Part(ToolCall(tool="find_landmarks", args={"query": r.landmark_word}), None)
     if _PLACE_KIND.search(r.masked):
         return Part(ToolCall(tool="find_landmarks", args={}), None)
+    several = [a for i in notes_subject if (a := scene.asset(i)) is not None]
+    kind = md.kind_of({a.category for a in several}) if len(several) > 1 and _PLURAL_BACK.search(r.masked) else None
+    if kind is not None:  # "the cars... where are they?": all of them
+        return _found(ToolCall(tool="find_assets", args={"category": kind}), scene)
     if back is not None and back.kind == "asset" and not _ANY_KIND.search(r.masked):
         return Part(ToolCall(tool="asset_properties", args={"asset": back.name}), back)  # "where is it now"
     if back is not None and back.kind == "landmark" and _WHERE.search(r.low):

@@ -171,7 +171,7 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
     ids: list[str] = []
     rest: list[ph.Mention] = []
     for mention in mentions:
-        after = low[mention.end :].split()[:1]
+        after = [w for w in low[mention.end :].split()[:2] if w not in ("number", "no.", "#", "nr")][:1]  # "car number 2"
         before = low[: mention.start].split()[-2:]
         number: int | None = None
         if after and (after[0].isdigit() or after[0] in ph.NUMBER_WORDS) and after[0] not in ("a", "an"):
