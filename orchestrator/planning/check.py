@@ -184,7 +184,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         if meant is not None:
             out.append(f"your words describe a {meant.replace('_', ' ')}, but the plan uses "
                        + ", ".join(sorted(plan_categories)))
-    missing = [n for n in request.numbers if not _accounts_for(n, effect)]
+    missing = [n for n in request.numbers if not _accounts_for(n, effect, scene)]
     if missing and effect.calls:
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
     if request.place is not None and effect.edits and not effect.environment:
@@ -337,15 +337,30 @@ def _numbers_in_args(value: Any) -> list[float]:
     return []
 
 
-def _accounts_for(number: float, effect: Effect) -> bool:
+def _accounts_for(number: float, effect: Effect, scene: Scene) -> bool:
     if not math.isfinite(number):
         return False
     counts = [float(len(effect.added)), float(len(effect.removed)), float(len(effect.changed))]
     used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + counts
+    used += _reach(effect, scene)  # "starting 20 m ahead of our car": where a layout begins and ends
     used += [math.hypot(float(c.args.get("east", 0)), float(c.args.get("north", 0)))  # a move at a slant
              for c in effect.calls if c.tool == "move_asset" and "east" in c.args and "north" in c.args]
     return any(math.isclose(abs(number) * f, abs(u), rel_tol=NUMBER_TOLERANCE, abs_tol=NUMBER_TOLERANCE)
                for u in used for f in UNIT_FACTORS)
+
+
+def _reach(effect: Effect, scene: Scene) -> list[float]:
+    """How far the nearest and the furthest of what each layout adds stand from what it is laid
+    out from, to the metre."""
+    out = []
+    for call in effect.calls:
+        target = call.args.get("location", {}).get("target") if isinstance(call.args.get("location"), dict) else None
+        centre = _centre(scene, str(target)) if call.tool == "arrange_assets" and target else None
+        if centre is None or not effect.added:
+            continue
+        gaps = [math.dist(centre, (a.pose.x, a.pose.y)) for a in effect.added]
+        out += [float(round(min(gaps))), float(round(max(gaps)))]
+    return out
 
 
 def _centre(scene: Scene, place: str) -> tuple[float, float] | None:

@@ -489,3 +489,14 @@ def calls_of_session(session, prompt):
     report = session.submit(prompt)
     assert report.ok, report.error or (report.question.text if report.question else "")
     return report.plan.calls
+
+
+def test_a_line_down_a_lane_starts_where_said_and_a_short_line_across_stands_clear_ahead(session):
+    assert session.submit("four cones down the middle of the eastbound lane, 8 m apart, starting 15 m ahead of the ego").ok
+    ego = session.scene.ego
+    cones = sorted((a for a in session.scene.assets if a.category == "traffic_cone"), key=lambda a: a.pose.x)
+    assert [round(a.pose.x - ego.pose.x) for a in cones] == [15, 23, 31, 39]
+    assert all(abs(a.pose.y - ego.pose.y) < 0.5 for a in cones)
+    assert session.submit("now a row of 4 bollards in front of the ego").ok
+    barriers = [a for a in session.scene.assets if a.category == "bollard"]
+    assert len(barriers) == 4 and all(abs(math.degrees(math.atan2(a.pose.y - ego.pose.y, a.pose.x - ego.pose.x))) < 20 for a in barriers)

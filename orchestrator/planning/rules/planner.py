@@ -408,7 +408,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         env = environment(r, scene.environment)
         return env or None
     laid_out = (r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
-                or (mention.plural and r.has(("along",))))  # "trees along one side of lot A"
+                or (mention.plural and r.has(("along",)))  # "trees along one side of lot A"
+                or (mention.plural and nb.spacing_said(r.low) is not None))  # "four cones 8 m apart": a line
     moving = behaviour_kind(r, catalog()[mention.category]) not in (None, "parked")  # a row may be parked
     if (laid_out and not moving) or r.has(("to mark",)):
         return [_arrange(r, scene, memory, notes)]
@@ -521,7 +522,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     parking = r.has(("parked", "side by side", "car park", "parking")) or "parking" in str(r.landmark or notes.place)
     if vehicles and parking and (r.has(("row", "rows", "line", "side by side", "next to each other")) or r.has(lx.ARRANGE_WORDS)):
         args["shape"] = "parking_row"  # "a row of parked cars in lot B": side by side in bays
-    elif r.has(("rows", "across")) or md.layout_said(r.low) in ("line", "row"):
+    elif r.has(("rows", "across")) or md.layout_said(r.low) in ("line", "row") or (
+            md.layout_said(r.low) is None and nb.spacing_said(r.low) is not None):
         args["shape"] = "line"
     elif r.has(("grid",)):
         args["shape"] = "grid"
@@ -560,10 +562,16 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     if r.has(("maintenance", "construction")):
         args["label"] = "maintenance"
     along = _heading_along(r, scene, args)
-    if along is not None:  # the line starts where it was said to and runs on ahead (or back) from there
-        length = (int(args.get("count") or 5) - 1) * float(args.get("spacing") or 0.0)
-        start = float(args["location"].get("distance") or LINE_START_M)
-        args["heading_deg"], args["location"] = along, {**args["location"], "distance": round(start + length / 2, 1)}
+    length = (int(args.get("count") or 5) - 1) * float(args.get("spacing") or 0.0)
+    place = args["location"] or {}
+    if along is not None and "along_m" in place:  # "starting 20 m ahead of our car" in a lane: from there on
+        along_m = float(place["along_m"])
+        args["heading_deg"], args["location"] = along, {**place, "along_m": round(along_m + math.copysign(length / 2, along_m), 1)}
+    elif along is not None:  # the line starts where it was said to and runs on ahead (or back) from there
+        start = float(place.get("distance") or LINE_START_M)
+        args["heading_deg"], args["location"] = along, {**place, "distance": round(start + length / 2, 1)}
+    elif args["shape"] == "line" and place.get("relation") in ("in_front_of", "behind") and "distance" not in place:
+        args["location"] = {**place, "distance": LINE_ACROSS_M}  # across a thing's way, where it can be seen coming
     return ToolCall(tool="arrange_assets", args=args)
 
 
@@ -571,13 +579,16 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
 ACROSS_MAX_M = 8.0
 # Metres from the thing to the first of a line along its path, when the words give none.
 LINE_START_M = 4.0
+# Metres ahead of (or behind) a thing that a line across its way stands, when the words give none.
+LINE_ACROSS_M = 10.0
 
 
 def _heading_along(r: Reading, scene: Scene, args: dict[str, Any]) -> float | None:
     """The heading of the thing a line is ahead of or behind, when the line runs along its path
     ("8 cones in a line 4 m apart ahead of the ego", "a slalom down the lane"); else None."""
     where = args.get("location") or {}
-    if args.get("shape") != "line" or where.get("relation") not in ("in_front_of", "behind") or r.has(("across",)):
+    ahead = where.get("relation") in ("in_front_of", "behind") or (where.get("relation") == "in_lane" and "along_m" in where)
+    if args.get("shape") != "line" or not ahead or r.has(("across",)):
         return None
     length = (int(args.get("count") or 5) - 1) * float(args.get("spacing") or 0.0)
     if length <= ACROSS_MAX_M and not r.has(("slalom", "along", "down the lane", "down the road", "down the middle")):
