@@ -80,6 +80,13 @@ class Memory(BaseModel):
                 return ids
         return []
 
+    def last_touched(self) -> list[str]:
+        """Ids the most recent turn still in the scene added, moved or changed."""
+        for turn in reversed(self.live_turns()):
+            if turn.added or turn.touched:
+                return [*turn.added, *turn.touched]
+        return []
+
     def render(self) -> str:
         """The memory as text for a prompt: summary lines, then the recent turns."""
         parts = []

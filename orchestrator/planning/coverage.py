@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning.intent import HABITUAL
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -174,7 +175,7 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
             len(p.split()) > len(said.split()) and edits(" ".join(rest[: len(p.split())]), p) <= 2 for p in places
         )
         compound = i > 0 and not masked[mentions[i - 1].end : m.start].strip()
-        if m.category not in wanted or _in_background(masked, m.start) or said in _VERB_NAMES:
+        if m.category not in wanted or _in_background(masked, m.start) or said in _VERB_NAMES or HABITUAL.match(masked, m.start):
             continue
         if _LOCATIVE.search(masked[max(0, m.start - 40) : m.start]):
             continue

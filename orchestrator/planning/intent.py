@@ -21,6 +21,9 @@ REMOVE_WORDS = re.compile(
     r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
     r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to|uses?|needs?|wants?)"  # "nobody should be parked there"
 )
+# People doing what they do ("people will eat lunch on that bench", "students often cut across"):
+# who a statement is about, not a thing asked for.
+HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|pedestrians)\s+(?:will|often|usually|always|sometimes|tend to)\b")
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
 FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")

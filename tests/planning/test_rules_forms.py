@@ -500,3 +500,13 @@ def test_a_line_down_a_lane_starts_where_said_and_a_short_line_across_stands_cle
     assert session.submit("now a row of 4 bollards in front of the ego").ok
     barriers = [a for a in session.scene.assets if a.category == "bollard"]
     assert len(barriers) == 4 and all(abs(math.degrees(math.atan2(a.pose.y - ego.pose.y, a.pose.x - ego.pose.x))) < 20 for a in barriers)
+
+
+def test_beside_it_is_beside_what_the_last_turn_moved_and_what_people_do_is_context(session):
+    assert session.submit("take the hydrant over to the fountain").ok
+    hydrant = session.scene.asset("fire_hydrant_1")
+    report = session.submit("students often sit there at lunch; the trash bin belongs beside it")
+    assert report.ok, report.error or (report.question.text if report.question else "")
+    bin_ = session.scene.asset("trash_bin_1")
+    assert hydrant is not None and bin_ is not None and session.scene.count("pedestrian") == 0
+    assert math.dist((bin_.pose.x, bin_.pose.y), (hydrant.pose.x, hydrant.pose.y)) < 4.0

@@ -209,8 +209,11 @@ def location(
         target = ids[0]
     elif target is None and r.ego and "ego" not in exclude:
         target = "ego"
-    if target is None and notes.coming and _BY_IT.search(r.low):
-        return {"relation": relation_of(r.low), "target": notes.coming[-1]}  # "... and a sign next to it"
+    if target is None and _BY_IT.search(r.low):
+        # "... and a sign next to it": what an earlier clause adds, else the thing it or the last turn named
+        named = [i for i in [*notes.subject, *memory.last_touched()] if i not in exclude and scene.asset(i) is not None]
+        if notes.coming or named:
+            return {"relation": relation_of(r.low), "target": (notes.coming or named)[-1 if notes.coming else 0]}
     if target is None and r.has(("there", "same place", "same spot", "nearby", "around it", "near it", "that spot")):
         if notes.place is not None:
             return dict(notes.place)

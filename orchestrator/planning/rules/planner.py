@@ -17,7 +17,7 @@ from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
-from drivetwin.orchestrator.planning.intent import FEWER_WORDS, REMOVE_WORDS, asks, without_reason
+from drivetwin.orchestrator.planning.intent import FEWER_WORDS, HABITUAL, REMOVE_WORDS, asks, without_reason
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
@@ -132,7 +132,8 @@ _NEGATED_WISH = re.compile(
 _STATEMENT = re.compile(
     r"\s*(?:(?:the|this|that|these|those|it|they|there)\b[^,;]*?\b(?:is|are|was|were)\b"
     r"|(?:the|this|that|these|those|whoever|anyone who|everyone who)\s+(?![^,;]*\b(?:should|must|needs?|has to|have to|ought|go|goes|belongs?|wants?|"
-    r"will|would|can|could|shall|may|might|let|gets?|to be)\b)[a-z' -]+\s(?:[a-z]+s|block|blocks|sit|stand|stay|face|look)\b)"
+    r"will|would|can|could|shall|may|might|let|gets?|to be)\b)[a-z' -]+\s(?:[a-z]+s|block|blocks|sit|stand|stay|face|look)\b"
+    rf"|{HABITUAL.pattern})"
 )
 
 
