@@ -17,11 +17,12 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.intent import HABITUAL
+from drivetwin.orchestrator.planning.intent import FORBIDDEN, HABITUAL
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.reading import used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.scene import AssetInstance, Scene
@@ -175,7 +176,8 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
             len(p.split()) > len(said.split()) and edits(" ".join(rest[: len(p.split())]), p) <= 2 for p in places
         )
         compound = i > 0 and not masked[mentions[i - 1].end : m.start].strip()
-        if m.category not in wanted or _in_background(masked, m.start) or said in _VERB_NAMES or HABITUAL.match(masked, m.start):
+        if (m.category not in wanted or _in_background(masked, m.start) or said in _VERB_NAMES
+                or HABITUAL.match(masked, m.start) or FORBIDDEN.match(masked, m.end) or used_as_verb(masked, m.start, m.end)):
             continue
         if _LOCATIVE.search(masked[max(0, m.start - 40) : m.start]):
             continue

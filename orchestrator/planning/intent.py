@@ -24,6 +24,9 @@ REMOVE_WORDS = re.compile(
 # People doing what they do ("people will eat lunch on that bench", "students often cut across"):
 # who a statement is about, not a thing asked for.
 HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|pedestrians)\s+(?:will|often|usually|always|sometimes|tend to)\b")
+# A thing something is forbidden to ("the robot mustn't drive through the fountain"): a constraint
+# on it, not a thing asked for.
+FORBIDDEN = re.compile(r"\s+(?:mustn'?t|must not|shouldn'?t|should not|can'?t|cannot|won'?t|may not)\b")
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
 FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
@@ -64,7 +67,8 @@ _REASON = re.compile(
 # rain"): the words before ", so" followed by a command say why.
 _REASON_FIRST = re.compile(
     r"^[^.;!?]*?,\s*(?:and\s+)?so\s+(?=(?:please\s+|just\s+|(?:can|could|would) you\s+)?(?:give|make|add|put|set|let|"
-    r"turn|bring|place|create|remove|take|move|get|start|switch|change|clear|park|spawn|drop|line|block|close)\b)",
+    r"turn|bring|place|create|remove|take|move|get|start|switch|change|clear|park|spawn|drop|line|block|close|fence|"
+    r"ring|surround|cordon|mark)\b)",
     re.IGNORECASE,
 )
 
@@ -75,8 +79,10 @@ def without_reason(text: str) -> str:
     """`text` without the clauses that only say why ("so buses can pass", "to test the wipers,
     so give me rain")."""
     first = _REASON_FIRST.match(text)
-    if first is not None and not _POINTS_BACK.search(text[first.end() :]):  # "..., so put bikes at its entrance" keeps what "its" means
+    if first is not None and not _POINTS_BACK.search(text[first.end() :]):
         text = text[first.end() :]
+    elif first is not None:  # "..., so put bikes at its entrance": the reason introduces what "its" means
+        text = text[: first.start() + text[: first.end()].rindex(",")] + ": " + text[first.end() :]
     return _REASON.sub("", text)
 
 

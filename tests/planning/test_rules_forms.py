@@ -510,3 +510,15 @@ def test_beside_it_is_beside_what_the_last_turn_moved_and_what_people_do_is_cont
     bin_ = session.scene.asset("trash_bin_1")
     assert hydrant is not None and bin_ is not None and session.scene.count("pedestrian") == 0
     assert math.dist((bin_.pose.x, bin_.pose.y), (hydrant.pose.x, hydrant.pose.y)) < 4.0
+
+
+def test_a_forbidden_thing_is_no_request_and_what_follows_so_rings_the_place_it_names(session, campus):
+    report = session.submit("cyclists mustn't ride into the bus stop, so fence it off with posts all the way round")
+    assert report.ok, report.error or (report.question.text if report.question else "")
+    assert session.scene.count("bicycle") == 0 and session.scene.count("road_barrier") == 0
+    assert session.scene.count("bollard") >= 4
+    report = session.submit("the fire hydrant is leaking: surround it with bollards and put a warning sign beside it")
+    assert report.ok, report.error or (report.question.text if report.question else "")
+    hydrant = session.scene.asset("fire_hydrant_1")
+    sign = next(a for a in session.scene.assets if a.category == "construction_sign")
+    assert hydrant is not None and math.dist((hydrant.pose.x, hydrant.pose.y), (sign.pose.x, sign.pose.y)) < 4.0

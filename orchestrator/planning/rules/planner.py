@@ -88,6 +88,9 @@ _VERBS = (
     "drop",
     "scatter",
     "install",
+    "stand",
+    "ring",
+    "fence",
 )
 _STRICT_ADD = (
     "add",
@@ -548,6 +551,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         named = [a for a in scene.assets if targets and a.category == targets[0].category]
         if named:
             where = {"relation": "at", "target": named[-1].id}
+        elif where is None and r.has(("it", "them")) and notes.subject and scene.asset(notes.subject[0]) is not None:
+            where = {"relation": "at", "target": notes.subject[0]}  # "the hydrant is being serviced: ring it with bollards"
         elif where is None or r.has(lx.WORKS_WORDS):
             focus_target = _maintenance_target(scene, memory)
             if focus_target is not None and where is None:

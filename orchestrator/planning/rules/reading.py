@@ -191,7 +191,14 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
 
 
 # Catalog words that are also verbs of the requests people make.
-_VERB_NOUNS = ("stop", "plant", "post", "signal", "seat", "cycle", "park")
+_VERB_NOUNS = ("stop", "plant", "post", "signal", "seat", "cycle", "park", "fence", "ring")
+
+def used_as_verb(low: str, start: int, end: int) -> bool:
+    """Whether the catalog word at low[start:end] is a verb here: one that is also a verb ("stop
+    the ego", "fence it off") before a noun phrase or at the start."""
+    return low[start:end] in _VERB_NOUNS and bool(
+        start <= 1 or re.match(r"\s+(the|our|it|that|ego|an?|some|\d+|two|three|four|five|six)\b", low[end:]))
+
 
 # Concept words that name one person, not a crowd.
 _ONE_PERSON = ("someone", "somebody", "kid", "child", "guy")
@@ -246,14 +253,7 @@ def read(text: str, scene: Scene) -> Reading:
     mentions = [m for m in ph.find_categories(text) if not any(m.start < e and s < m.end for s, e in spans)]
     # A catalog word that is also a verb ("stop the ego", "plant an avenue of trees", "post a
     # sign") is the verb before a noun phrase or at the start, the thing otherwise.
-    mentions = [
-        m
-        for m in mentions
-        if not (
-            low[m.start : m.end] in _VERB_NOUNS
-            and (m.start <= 1 or re.match(r"\s+(the|our|it|that|ego|an?|some|\d+|two|three|four|five|six)\b", low[m.end :]))
-        )
-    ]
+    mentions = [m for m in mentions if not used_as_verb(low, m.start, m.end)]
     mentions += _concepts(masked, mentions)
     mentions.sort(key=lambda m: m.start)
     # "somewhere for students to sit": the students are who it is for, not what is asked.
