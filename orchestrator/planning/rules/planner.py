@@ -576,8 +576,9 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     elif along is not None:  # the line starts where it was said to and runs on ahead (or back) from there
         start = float(place.get("distance") or LINE_START_M)
         args["heading_deg"], args["location"] = along, {**place, "distance": round(start + length / 2, 1)}
-    elif args["shape"] == "line" and place.get("relation") in ("in_front_of", "behind") and "distance" not in place:
-        args["location"] = {**place, "distance": LINE_ACROSS_M}  # across a thing's way, where it can be seen coming
+    elif args["shape"] == "line" and place.get("relation") in ("in_front_of", "behind") and "distance" not in place and (
+            (driver := scene.asset(str(place.get("target")))) is not None and catalog()[driver.category].drives):
+        args["location"] = {**place, "distance": LINE_ACROSS_M}  # across a vehicle's way, where it can be seen coming
     return ToolCall(tool="arrange_assets", args=args)
 
 
