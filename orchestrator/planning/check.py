@@ -191,12 +191,14 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         far = [a for a in [*effect.added, *effect.removed, *effect.changed] if a.id != "ego"
                and not _near(scene, a, request.place) and not _names_target(effect, request.place)
                and not _brought_closer(scene, a, request.place)  # "3 m towards the fountain"
-               and not (says_other_place(request.low, scene) and _near(scene, scene.asset(a.id) or a, request.place))]
+               and not ((says_other_place(request.low, scene) or _MOVED_AWAY.search(request.low))
+                        and _near(scene, scene.asset(a.id) or a, request.place))]  # "... in the wrong car park"
         if far:
             out.append(f"you named {request.place}, but the plan acts on {_names(far)} away from it")
     out += _coverage(request, effect, scene, context.memory)
     out += _attributes(request, effect, scene)
     out += wrong_direction(request.masked, scene, _moved(effect))
+    out += _already_there(effect, scene)
     if request.state is not None and (effect.removed or effect.changed):
         before = [scene.asset(a.id) or a for a in effect.changed]  # as it was: "the parked SUV to pull out"
         wrong = [a for a in [*effect.removed, *before] if a.id != "ego"
@@ -308,6 +310,26 @@ def _looked_up(topic: str, said: str, calls: tuple[ToolCall, ...], scene: Scene)
     looked_at = [str(i) for c in calls for i in ([c.args["asset"]] if "asset" in c.args else c.args.get("assets", []))]
     return any((a := scene.asset(i)) is not None and math.dist((a.pose.x, a.pose.y), place.position) <= PLACE_RADIUS_M
                for i in looked_at)
+
+
+# Words saying a thing should leave the place named: "it is in the wrong car park", "it belongs
+# elsewhere", "it shouldn't be in lot B".
+_MOVED_AWAY = re.compile(r"\b(?:wrong|belongs?|should(?:n't| not) be|out of|away from)\b")
+
+
+def _already_there(effect: Effect, scene: Scene) -> list[str]:
+    """A thing put at a place it already stands at: nobody asks for that ("it is in the wrong car
+    park; it belongs in the western one" read as the car park it is in)."""
+    out = []
+    for call in effect.calls:
+        where = call.args.get("location")
+        thing = scene.asset(str(call.args.get("asset")))
+        if call.tool != "place_asset" or not isinstance(where, dict) or where.get("relation") != "at" or thing is None:
+            continue
+        place = scene.landmark(str(where.get("target")))
+        if place is not None and place.polygon and _near(scene, thing, place.name):
+            out.append(f"{thing.id} already stands in {place.name}")
+    return out
 
 
 def _moved(effect: Effect) -> list[AssetInstance]:

@@ -15,9 +15,11 @@ from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.planning.rules.reading import find_place
 from drivetwin.orchestrator.planning.rules.spelling import repair
+from drivetwin.orchestrator.session import Session
 from drivetwin.tools.errors import NotFoundError
 from drivetwin.tools.locate import Location, resolve_anchor
 from drivetwin.worlds.surface import point_in_polygon
+from misreading import Fixed, call  # this folder is on sys.path (no __init__.py)
 
 
 def calls_of(context, prompt: str) -> list[tuple[str, dict[str, object]]]:
@@ -522,3 +524,16 @@ def test_a_forbidden_thing_is_no_request_and_what_follows_so_rings_the_place_it_
     hydrant = session.scene.asset("fire_hydrant_1")
     sign = next(a for a in session.scene.assets if a.category == "construction_sign")
     assert hydrant is not None and math.dist((hydrant.pose.x, hydrant.pose.y), (sign.pose.x, sign.pose.y)) < 4.0
+
+
+def test_the_western_one_of_a_kind_and_nothing_put_where_it_already_stands(session, campus, registry):
+    lot_a = session.scene.landmark("parking lot A")
+    assert lot_a is not None and lot_a.polygon is not None
+    report = session.submit("our 4x4 is parked in the wrong parking area; it should be in the western one")
+    assert report.ok, report.error or (report.question.text if report.question else "")
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and point_in_polygon(suv.pose.x, suv.pose.y, lot_a.polygon)
+    # a plan that puts the SUV in the lot it already stands in is not applied
+    fixed = Session(campus, Fixed(call("place_asset", asset="suv_1", location={"relation": "at", "target": "parking lot B"})), registry)
+    report = fixed.submit("the suv should not stay where it is")
+    assert not report.ok and fixed.scene == campus

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.reading import Reading
 from drivetwin.worlds.scene import Landmark, Scene
@@ -125,6 +126,7 @@ _BY_IT = re.compile(r"\b(?:next to|beside|by|near|behind|in front of|alongside|a
 THERE_BESIDE_M = 6.0
 
 
+_THE_ONE = re.compile(r"\b(?:in|at|to|into|over to)\s+the\s+\w+\s+one\b")
 _THE_OTHER = re.compile(r"\bthe other ([a-z]+(?: [a-z]+)?)")
 
 
@@ -144,9 +146,9 @@ def says_other_place(low: str, scene: Scene) -> bool:
 AT_PLACE_M = 15.0
 
 
-def _other_place(scene: Scene, moving: list[str]) -> str | None:
-    """The place most like the one the first of `moving` stands at (names sharing the most words,
-    not one named after it such as its entrance); None when it stands at none or none is like it."""
+def _places_like(scene: Scene, moving: list[str]) -> tuple[Landmark, list[Landmark]] | None:
+    """The place the first of `moving` stands at, and the places most like it (names sharing the
+    most words, not one named after it such as its entrance); None when it stands at none."""
     asset = scene.asset(moving[0])
     if asset is None:
         return None
@@ -163,8 +165,23 @@ def _other_place(scene: Scene, moving: list[str]) -> str | None:
 
     others = [lm for lm in scene.landmarks if lm is not here
               and not any(here.name.lower() in n.lower() for n in lm.names())]
-    best = max(others, key=likeness, default=None)
-    return best.name if best is not None and likeness(best) > 0 else None
+    best = max((likeness(lm) for lm in others), default=0.0)
+    return here, [lm for lm in others if best > 0 and likeness(lm) == best]
+
+
+def _other_place(scene: Scene, moving: list[str]) -> str | None:
+    """The place most like the one the first of `moving` stands at ("the other lot")."""
+    found = _places_like(scene, moving)
+    return found[1][0].name if found is not None and len(found[1]) == 1 else None
+
+
+def _outer_place(scene: Scene, moving: list[str], way: tuple[float, float]) -> str | None:
+    """Of the place the first of `moving` stands at and those like it, the one furthest `way`
+    ("it belongs in the western one")."""
+    found = _places_like(scene, moving)
+    if found is None or not found[1]:
+        return None
+    return max([found[0], *found[1]], key=lambda lm: lm.position[0] * way[0] + lm.position[1] * way[1]).name
 
 
 def location(
@@ -200,6 +217,8 @@ def location(
         entrance = scene.landmark(f"{notes.place.get('target')} entrance")
         target = entrance.name if entrance is not None else None
     other = _other_place(scene, exclude) if exclude and says_other_place(r.low, scene) else None
+    way = md.outer_direction(r.low) if exclude and r.landmark is None and _THE_ONE.search(r.low) else None
+    other = other or (_outer_place(scene, exclude, way) if way is not None else None)  # "the western one"
     if other is not None and (target is None or target == r.landmark):
         target = other  # "park one of those cars in the other lot", "the other car park"
     ids = [i for i in r.ids if i not in exclude]
