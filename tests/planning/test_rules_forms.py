@@ -537,3 +537,9 @@ def test_the_western_one_of_a_kind_and_nothing_put_where_it_already_stands(sessi
     fixed = Session(campus, Fixed(call("place_asset", asset="suv_1", location={"relation": "at", "target": "parking lot B"})), registry)
     report = fixed.submit("the suv should not stay where it is")
     assert not report.ok and fixed.scene == campus
+
+
+def test_another_pair_of_those_adds_two(session, campus):
+    assert session.submit("three bollards by the library entrance").ok
+    assert session.submit("and another couple of those beside them").ok
+    assert session.scene.count("bollard") == campus.count("bollard") + 5

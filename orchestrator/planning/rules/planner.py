@@ -396,7 +396,10 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         assert last is not None
         said = re.search(r"\b(?:more|another)\b", r.low)
         at = said.end() if said is not None else len(r.low)  # the amount is said before "more": "2 more next to them"
-        named = ph.Mention(last.category, at, at, plural=said is None or said.group(0) == "more")  # "another": one
+        amount = re.match(r"\s+(?:\d+|[a-z]+)(?=\s+of\b|\s+(?:those|them|these)\b)", r.low[at:])  # "another pair of those"
+        plural = said is None or said.group(0) == "more" or amount is not None  # "another": one
+        at += amount.end() if amount is not None else 0
+        named = ph.Mention(last.category, at, at, plural=plural)
         return _add(replace(r, mentions=[named]), scene, memory, notes)
     if r.has(("paint", "repaint", "recolour", "recolor")) and not fresh:
         # a thing to paint is one that is there; a colour not understood is asked, never an add
