@@ -67,6 +67,10 @@ class FailedCheck(BaseModel):
     reason: str
 
 
+# How much of each trace step a trial record keeps (the rule planner's step ends with its reasons).
+TRACE_CHARS = 1000
+
+
 class TrialRecord(BaseModel):
     """One trial of one case: its outcome, why it failed, what the planner did and how fast."""
 
@@ -93,6 +97,9 @@ class TrialRecord(BaseModel):
     # planner took ("fast", "agree", "retrieval", "llm", ...): what calibration is measured on.
     confidence: float | None = None
     path: str | None = None
+    # The plan's trace, a line per step ("level: what it said", its last TRACE_CHARS): why
+    # the planner did what it did, for reading a run's failures without re-running them.
+    trace: list[str] = Field(default_factory=list)
     latency_s: float | None = None
     latency_levels: dict[str, float] = Field(default_factory=dict)
     wall_s: float = 0.0

@@ -14,7 +14,7 @@ from typing import Any
 
 from drivetwin.evals.case import Case
 from drivetwin.evals.outcome import CaseOutcome
-from drivetwin.evals.records import FailedCheck, TrialRecord
+from drivetwin.evals.records import TRACE_CHARS, FailedCheck, TrialRecord
 from drivetwin.orchestrator.planning import Plan, PlanContext, Planner, PlanningError
 from drivetwin.orchestrator.session import Session, TurnReport
 from drivetwin.tools.base import ToolCall
@@ -156,6 +156,7 @@ def _fill(record: TrialRecord, report: TurnReport, passed: bool) -> None:
         record.prompt_version = plan.prompt_version
         record.confidence = plan.confidence
         record.path = _path(plan)
+        record.trace = [f"{t.level}: {t.output}"[-TRACE_CHARS:] for t in plan.trace]
 
 
 def _path(plan: Plan) -> str | None:

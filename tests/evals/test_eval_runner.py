@@ -36,7 +36,8 @@ def test_a_run_records_outcome_failed_checks_calls_and_model_facts(tiny_suite: P
     assert summary.complete and summary.total == len(by_id) == 8
     assert by_id["rain"].outcome == "pass" and by_id["rain"].calls[0]["tool"] == "set_weather"
     assert by_id["rain"].tokens == 7 and by_id["rain"].prompt_version == "tiny-1"
-    assert by_id["rain"].latency_s is not None and "tiny" not in by_id["rain"].latency_levels
+    assert by_id["rain"].latency_s is not None and by_id["rain"].latency_levels == {"tiny": 0.0}
+    assert by_id["rain"].trace == ["tiny: matched 'rain'"]  # why it did what it did, kept per trial
     snow = by_id["snow"]
     assert snow.outcome == "fail" and snow.failed_checks[0].kind == "environment"
     assert "wanted snow" in snow.failed_checks[0].reason and snow.accepted is False

@@ -11,7 +11,7 @@ import time
 from pathlib import Path
 from typing import Any
 
-from drivetwin.orchestrator.planning import Plan, PlanContext, PlanningError
+from drivetwin.orchestrator.planning import Plan, PlanContext, PlanningError, TraceStep
 from drivetwin.tools.base import ToolCall
 
 RULES: list[tuple[str, list[ToolCall]]] = [
@@ -43,7 +43,8 @@ class TinyPlanner:
                 chosen = [c.model_copy(deep=True) for c in calls]
                 if self.flip_every and word == "cone" and self.plans % self.flip_every == 0:
                     chosen[0].args["count"] = 4
-                return Plan(calls=chosen, planner=self.name, prompt_version="tiny-1", tokens=7)
+                step = TraceStep(level="tiny", input=prompt, output=f"matched {word!r}", seconds=0.0)
+                return Plan(calls=chosen, planner=self.name, prompt_version="tiny-1", tokens=7, trace=[step])
         raise PlanningError(f"the tiny planner knows none of the words in {prompt!r}")
 
     def model_facts(self) -> dict[str, Any]:

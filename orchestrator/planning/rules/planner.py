@@ -275,6 +275,7 @@ class RulePlanner:
             confidence=max(MIN_CONFIDENCE, confidence),
             prompt_version=PROMPT_VERSION,
             trace=[step],
+            unread=[*unknown, *(w for clause in skipped for w in _unknown_words(clause, scene))],
         )
 
 
