@@ -49,7 +49,7 @@ _LIGHT = re.compile(r"\b(light|gentle|slight|soft|a bit of|a little)\s+(rain|sno
 _HEAVY = re.compile(r"\b(heavy|hard|strong|thick|dense|torrential|pouring|downpour|blizzard)\b")
 STRENGTH_SPLIT = 0.5
 # Words that ask for a look change when a colour is named ("paint the bus red", "make it blue").
-_RECOLOUR = re.compile(r"\b(paint|repaint|colou?r|recolou?r|make|turn|change|spray)\b")
+_RECOLOUR = re.compile(r"\b(?:(?:re)?paint|(?:re)?colou?r|spray)(?:s|ed|ing)?\b|\b(?:make|turn|change)\b")
 
 
 def counts_named(masked: str) -> dict[str, int]:

@@ -106,6 +106,10 @@ class Verdict:
     outcome: TransactionResult | None = None
 
 
+# Words that ask a thing to drive or ride.
+_DRIVE_VERB = re.compile(r"\b(?:drive|drives|driving|ride|rides|riding)\b(?! (?:lane|way|through))")
+
+
 @dataclass(frozen=True)
 class Effect:
     """What a plan does, from a dry run: assets added, removed and changed, and its numbers."""
@@ -209,6 +213,14 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         standing = [a for a in effect.added if a.category in request.categories and a.behaviour.kind == "parked"]
         if standing and len(standing) == len([a for a in effect.added if a.category in request.categories]):
             out.append(f"you said moving ones, but the plan adds {_names(standing)} standing still")
+    roads = "|".join(re.escape(ph.normalise(lane.road).strip()) for lane in scene.roads.lanes if lane.road)
+    unnamed = re.sub(rf"\b(?:{roads})\b", " ", request.low) if roads else request.low  # "Campus Drive" asks no one to drive
+    if _DRIVE_VERB.search(unnamed) and not request.question:
+        # "make the bench drive": what cannot drive is not moved into a lane instead
+        touched = [a for a in [*effect.added, *effect.changed] if a.id != "ego"]
+        still = [a for a in touched if a.category in catalog() and not catalog()[a.category].drives]
+        if still and len(still) == len(touched):
+            out.append(f"you asked for driving, but {_names(still)} cannot drive; vehicles, robots and riders can")
     return out
 
 
@@ -256,7 +268,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     if request.lane is not None and placed and not request.question:
         out += off_lane(request.lane, scene, placed)
     out += off_surface(request.low, scene, placed)
-    if not request.question:
+    if not request.question or effect.edits:  # "could the library be painted red?" asks for an edit
         out += look_left_out(request.low, effect.calls)
     if request.place is not None and effect.removed and names_group(request.low):
         near = _nearness(scene, request.place)

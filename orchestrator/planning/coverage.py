@@ -210,11 +210,13 @@ def missing_categories(categories: Iterable[str], scope: Scope, scene: Scene) ->
 def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """Categories referred to as existing ("the SUV", "those benches") that the plan adds anew
     while the scene has them and no word asks for a new one."""
-    if _NEW.search(masked) or any(c.tool == "arrange_assets" for c in scope.calls):
+    if _NEW.search(masked):
         return []
+    # "put the cones in a ring": a layout may make the things it arranges; it makes nothing else
+    arranged = {c for call in scope.calls if call.tool == "arrange_assets" for c in call.args.get("categories", [])}
     out = []
     for m in named_in(masked):
-        if not any(w in _DEFINITE for w in m.last_words(2)) or not scene.count(m.category):
+        if not any(w in _DEFINITE for w in m.last_words(2)) or not scene.count(m.category) or m.category in arranged:
             continue
         if any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)
@@ -277,9 +279,9 @@ def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
 def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """Categories asked for as new ("a tree at lot A", "two benches by the fountain") that the
     plan takes from elsewhere in the scene, moving existing ones and adding none."""
-    if scope.added or scope.removed:
-        return []
-    moved = {a.category for a in scope.touched if a.id != "ego"}
+    new = {a.id for a in [*scope.added, *scope.removed]}
+    # per kind: "a tree by the fountain and one bench there" may not add the tree and move a bench
+    moved = {a.category for a in scope.touched if a.id != "ego" and a.id not in new} - {a.category for a in scope.added}
     out = []
     for m in named_in(masked):
         before = m.last_words(2)

@@ -34,7 +34,8 @@ _LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west
 _PARKED = re.compile(r"\bparked\b")
 _SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")
 # "moving" said of the thing, not denied ("not moving", "stopped driving")
-_MOVING = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!stopped )\b(driving|moving|travelling|traveling|riding)\b")
+_MOVING = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!stopped )\b(driving|moving|travelling|traveling|riding|"
+                     r"cruising|(?:going|heading)(?= (?:to |towards? )?(?:the )?(?:north|south|east|west)))\b")
 
 
 @dataclass(frozen=True)
@@ -77,7 +78,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
                            if not _DESCRIBING.search(kinds_text[: m.start]) and not _described_head(kinds_text, m))
     exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_checked_amounts(masked))  # "a tree or two"
     numbers = tuple(n.value for n in numbers_in(exact) if not _is_reference(masked, n.start))
-    numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+", exact)
+    numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+(?:-[a-z]+)?", exact)
                      if w.group(0) in _AMOUNTS and not _is_reference(masked, w.start()))
     state: Literal["parked", "moving"] | None = (
         "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) else None

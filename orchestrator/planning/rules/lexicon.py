@@ -86,7 +86,7 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
                    "use the zebra", "uses the zebra", "across the road", "across the street", "over the road"),
     "drive_lane": ("driving", "drive along", "drives along", "moving along", "cruising", "drive down", "drive on",
                    "drives on", "drive off", "drive away", "leaving", "leave", "drive around", "drive", "drives",
-                   "drove", "heading", "head off", "pull away", "pull out", "go", "start moving", "get going",
+                   "drove", "heading", "head off", "pull away", "pull out", "go", "going", "start moving", "get going",
                    "set off", "travel", "travelling", "riding", "rides", "ride along"),
     "parked": ("parked", "park", "parking", "stationary", "stopped"),
 }

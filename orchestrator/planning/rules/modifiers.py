@@ -57,6 +57,10 @@ def compass_direction(text: str) -> str | None:
     return said.pop() if len(said) == 1 else None
 
 
+# Words after which a singular names a kind, not one thing: "every vehicle", "how many vehicle".
+_COUNTING = r"\b(?:every|each|all|any|how many|\d+) "
+
+
 @cache
 def _catalog_groups() -> dict[str, frozenset[str]]:
     """Catalog tags shared by several categories, each with its categories."""
@@ -82,21 +86,22 @@ def kind_of(categories: set[str]) -> str | None:
 
 
 def groups_said(text: str) -> dict[str, frozenset[str]]:
-    """The groups the words name by a catalog tag in the plural or after "every" ("the vehicles",
-    "all the signs", "every vehicle"), each with its categories; not the "lights" of "the street
-    lights", a category's own name."""
+    """The groups the words name by a catalog tag in the plural, or in the singular after a word
+    that counts ("the vehicles", "all the signs", "every parked vehicle", "2 vehicle", "how many
+    vehicle"), each with its categories; not the "lights" of "the street lights", a category's own name."""
     low = normalise(text)
     names = [(m.start, m.end) for m in find_categories(text)]
 
     def inside_a_name(said: re.Match[str]) -> bool:
-        return any(s <= said.start() and said.end() <= e and e - s > len(said.group(0)) for s, e in names)
+        start, end = said.start("tag"), said.end()
+        return any(s <= start and end <= e and e - s > end - start for s, e in names)
 
     return {
         tag: members
         for tag, members in _catalog_groups().items()
         if any(
-            not inside_a_name(said)
-            for said in re.finditer(rf"\b(?:{re.escape(tag)}s|(?:(?<=every )|(?<=each )){re.escape(tag)})\b", low)
+            (said.group("plural") or said.group("counted")) and not inside_a_name(said)
+            for said in re.finditer(rf"(?P<counted>{_COUNTING}(?:[a-z]+ )?)?\b(?P<tag>{re.escape(tag)})(?P<plural>s)?\b", low)
         )
     }
 

@@ -78,6 +78,15 @@ def _spelt_value(words: str) -> float:
     return float(tens + ones if tens else ones) + half
 
 
+def spelt_counts() -> dict[str, int]:
+    """Every count spelt as one word, "one" to "ninety-nine" and "hundred" ("seventy", "thirty-five")."""
+    counts = {word: n for n, word in enumerate(_ONES) if n}
+    for tens, value in _TENS.items():
+        counts[tens] = value
+        counts.update({f"{tens}-{one}": value + n for n, one in enumerate(_ONES[1:10], start=1)})
+    return counts | {"hundred": 100}
+
+
 def spelt_measures(text: str) -> str:
     """`text` with measures spelt in words written in figures ("two metres" -> "2 metres")."""
     def figures(m: re.Match[str]) -> str:

@@ -15,30 +15,9 @@ from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import EGO_ID, Scene
 
-NUMBER_WORDS = {
-    "a": 1,
-    "an": 1,
-    "one": 1,
-    "single": 1,
-    "two": 2,
-    "pair": 2,
-    "couple": 2,
-    "three": 3,
-    "few": 3,
-    "some": 3,
-    "four": 4,
-    "several": 4,
-    "five": 5,
-    "six": 6,
-    "seven": 7,
-    "eight": 8,
-    "nine": 9,
-    "ten": 10,
-    "dozen": 12,
-    "twelve": 12,
-    "fifteen": 15,
-    "twenty": 20,
-}
+# Counts in words: every number spelt as one word ("seventy", "thirty-five"), and the words for a few.
+NUMBER_WORDS = nb.spelt_counts() | {"a": 1, "an": 1, "single": 1, "pair": 2, "couple": 2, "few": 3, "some": 3,
+                                    "several": 4, "dozen": 12}
 FOOT_M = 0.3048  # "33 ft" is said in feet, placed in metres
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
 # Tokens with their spans, numbers written with separators kept whole ("10,000").

@@ -200,8 +200,9 @@ def used_as_verb(low: str, start: int, end: int) -> bool:
         start <= 1 or re.match(r"\s+(the|our|it|that|ego|an?|some|\d+|two|three|four|five|six)\b", low[end:]))
 
 
-# Concept words that name one person, not a crowd.
-_ONE_PERSON = ("someone", "somebody", "kid", "child", "guy")
+# Concept words that name one person or thing, not a crowd or a mass ("somewhere to sit" is one bench).
+_ONE_THING = ("someone", "somebody", "kid", "child", "guy", "somewhere to sit", "to sit", "sit down", "seat", "shrub",
+              "bush", "palm", "warning sign")
 
 # A wish said of someone with the thing wished for after it ("the students could use somewhere to
 # sit", "drivers need a warning").
@@ -225,7 +226,7 @@ def _concepts(low: str, taken: list[ph.Mention]) -> list[ph.Mention]:
             if m and not any(t.start < m.end() and m.start() < t.end for t in taken + found):
                 if word in _AGENTS and any(t.start > m.end() for t in taken):
                     continue  # "someone left their car there": the car is the thing, not the someone
-                found.append(ph.Mention(category, m.start(), m.end(), word not in _ONE_PERSON))
+                found.append(ph.Mention(category, m.start(), m.end(), word not in _ONE_THING))
     return found
 
 
@@ -314,8 +315,8 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:
     """Whether a mention asks for a new asset ("a cone") rather than names one there ("the cone")."""
-    if add_verb:
-        return True
+    if add_verb or reading.low.startswith(("somewhere", "something"), mention.start):
+        return True  # "somewhere to sit" asks for a new one, as "a seat" does
     words = ph.tokens(reading.low[: mention.start])
     for k in range(len(words) - 1, max(-1, len(words) - 4), -1):
         word = words[k]

@@ -1,0 +1,85 @@
+"""Counting words and kinds, read by planner and check alike: a catalog group said in the singular
+after a counting word, counts spelt to ninety-nine, "somewhere to sit" as one new thing; and the
+check's view of a plan that adds what the words call existing, moves what they ask for new, sets
+no colour for "painted", leaves standing what is "going east", or drives what cannot. The misread
+plans are fixed (as the measured planners made them); the wording is this file's own."""
+
+from __future__ import annotations
+
+from drivetwin.orchestrator.planning.request import read_request
+from drivetwin.orchestrator.planning.rules import modifiers as md
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.session import Session
+from misreading import Fixed, add, call  # this folder is on sys.path (no __init__.py)
+
+
+def submit(campus, registry, planner, prompt, *before: str):
+    session = Session(campus, planner, registry)
+    for earlier in before:
+        assert session.submit(earlier).ok
+    return session, session.submit(prompt)
+
+
+def test_a_group_word_in_the_singular_after_a_counting_word_names_the_whole_group():
+    vehicles = md.groups_said("get rid of 3 vehicle beside the library")["vehicle"]
+    assert {"passenger_car", "suv", "bus"} <= vehicles
+    assert "vehicle" in md.groups_said("count any parked vehicle near the gate")
+    assert md.groups_said("move the vehicle forward") == {}  # one thing, not a kind
+    assert md.groups_said("dim every street light") == {}  # a category's own name
+
+
+def test_a_removal_of_every_vehicle_of_a_lot_takes_suvs_too(context):
+    plan = RulePlanner().plan("clear away each parked vehicle in lot B", context)
+    removed = {a for c in plan.calls for a in c.args.get("assets", [])}
+    lot_b = {"passenger_car_1", "passenger_car_2", "suv_1"}
+    assert removed == lot_b or {c.args.get("category") for c in plan.calls} >= {"vehicles"}
+
+
+def test_counts_spelt_past_twenty_are_read_by_planner_and_check(context, campus):
+    (arrange,) = RulePlanner().plan("set thirty-four bollards in a line along main street", context).calls
+    assert arrange.args["count"] == 34
+    assert read_request("forty cones would be plenty", campus).numbers == (40.0,)
+    assert read_request("line up twenty-six cones", campus).numbers == (26.0,)  # one number, not 20 and 6
+
+
+def test_somewhere_to_sit_is_one_new_bench(context, campus):
+    (added,) = RulePlanner().plan("we could do with somewhere to sit beside the fountain", context).calls
+    assert added.tool == "add_asset" and added.args["category"] == "bench" and added.args["count"] == 1
+
+
+def test_a_thing_called_existing_is_not_added_anew_beside_a_layout(campus, registry):
+    plan = Fixed(add("fire_hydrant"), call("arrange_assets", categories=["bollard"], shape="ring",
+                                          location={"relation": "at", "target": "fire_hydrant_1"}))
+    session, report = submit(campus, registry, plan, "water is spraying out of the fire hydrant, ring it with bollards")
+    assert not report.ok and session.scene.count("fire_hydrant") == campus.count("fire_hydrant")
+    assert "already there" in (report.error or "") or report.question is not None
+
+
+def test_one_thing_asked_for_new_is_not_taken_from_elsewhere_while_another_is_added(campus, registry):
+    plan = Fixed(add("tree", location={"relation": "at", "target": "fountain"}),
+                 call("place_asset", asset="bench_1", location={"relation": "at", "target": "fountain"}))
+    session, report = submit(campus, registry, plan, "plant a tree at the fountain and a bench as well there")
+    assert not report.ok and session.scene.asset("bench_1") == campus.asset("bench_1")
+
+
+def test_painted_asks_for_a_colour_even_when_said_politely(campus, registry):
+    session, report = submit(campus, registry, Fixed(call("set_time_of_day", time="daytime")),
+                             "would it be possible to have the engineering hall painted green for the open day?")
+    assert not report.ok and session.scene.environment == campus.environment
+
+
+def test_a_thing_going_east_is_not_added_standing_still(campus, registry):
+    parked_bus = Fixed(add("bus", location={"relation": "in_lane", "target": "main_eastbound"}))
+    session, report = submit(campus, registry, parked_bus, "I need one bus on main street going towards the east")
+    assert not report.ok and session.scene.count("bus") == campus.count("bus")
+    assert read_request("a truck heading north", campus).state == "moving"
+    assert read_request("we are going to need a cone", campus).state is None
+
+
+def test_what_cannot_drive_is_not_put_in_a_lane_instead(campus, registry):
+    into_lane = Fixed(call("place_asset", asset="trash_bin_1", location={"relation": "in_lane", "target": "main_eastbound"}))
+    session, report = submit(campus, registry, into_lane, "let the rubbish bin drive down main street")
+    assert not report.ok and session.scene.asset("trash_bin_1") == campus.asset("trash_bin_1")
+    assert "cannot drive" in (report.error or "")
+    cone = Fixed(add("traffic_cone", location={"relation": "in_lane", "target": "campus_northbound"}))
+    assert submit(campus, registry, cone, "pop a cone onto campus drive")[1].ok  # a road's name asks no one to drive
