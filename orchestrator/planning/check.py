@@ -106,6 +106,8 @@ class Verdict:
     outcome: TransactionResult | None = None
 
 
+# A thing said to be on its way somewhere: "a bus going east", "a truck heading north".
+_HEADING = re.compile(r"\b(?:going|heading|cruising)(?= (?:to |towards? )?(?:the )?(?:north|south|east|west))")
 # Words that ask a thing to drive or ride.
 _DRIVE_VERB = re.compile(r"\b(?:drive|drives|driving|ride|rides|riding)\b(?! (?:lane|way|through))")
 
@@ -209,7 +211,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                  and (a.behaviour.kind == "parked") != (request.state == "parked") and a.category in request.categories]
         if wrong:
             out.append(f"you said {request.state} ones, but the plan also takes {_names(wrong)}")
-    if request.state == "moving" and not request.question:
+    if (request.state == "moving" or _HEADING.search(request.low)) and not request.question:
         standing = [a for a in effect.added if a.category in request.categories and a.behaviour.kind == "parked"]
         if standing and len(standing) == len([a for a in effect.added if a.category in request.categories]):
             out.append(f"you said moving ones, but the plan adds {_names(standing)} standing still")
@@ -219,7 +221,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         # "make the bench drive": what cannot drive is not moved into a lane instead
         touched = [a for a in [*effect.added, *effect.changed] if a.id != "ego"]
         still = [a for a in touched if a.category in catalog() and not catalog()[a.category].drives]
-        if still and len(still) == len(touched):
+        drivers = [c for c in request.categories if c in catalog() and catalog()[c].drives]  # "stop cars driving in"
+        if still and len(still) == len(touched) and not drivers:
             out.append(f"you asked for driving, but {_names(still)} cannot drive; vehicles, robots and riders can")
     return out
 
@@ -273,6 +276,10 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     if request.place is not None and effect.removed and names_group(request.low):
         near = _nearness(scene, request.place)
         out += group_left_behind(request.low, effect.removed, [a for a in scene.all_assets() if near(a)])
+    if request.polarity == "remove":  # "I don't want any rain any more" never makes it rain
+        unwanted = [str(c.args.get("kind")) for c in effect.calls if c.tool == "set_weather"
+                    and c.args.get("kind") not in (None, "clear") and re.search(rf"\b{c.args.get('kind')}", request.low)]
+        out += [f"you said no {kind}, but the plan sets {kind}" for kind in unwanted]
     return out + weather_strength(request.low, effect.calls)
 
 

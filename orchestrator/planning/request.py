@@ -34,8 +34,7 @@ _LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west
 _PARKED = re.compile(r"\bparked\b")
 _SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")
 # "moving" said of the thing, not denied ("not moving", "stopped driving")
-_MOVING = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!stopped )\b(driving|moving|travelling|traveling|riding|"
-                     r"cruising|(?:going|heading)(?= (?:to |towards? )?(?:the )?(?:north|south|east|west)))\b")
+_MOVING = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!stopped )\b(driving|moving|travelling|traveling|riding)\b")
 
 
 @dataclass(frozen=True)

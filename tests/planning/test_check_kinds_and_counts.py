@@ -72,8 +72,15 @@ def test_a_thing_going_east_is_not_added_standing_still(campus, registry):
     parked_bus = Fixed(add("bus", location={"relation": "in_lane", "target": "main_eastbound"}))
     session, report = submit(campus, registry, parked_bus, "I need one bus on main street going towards the east")
     assert not report.ok and session.scene.count("bus") == campus.count("bus")
-    assert read_request("a truck heading north", campus).state == "moving"
-    assert read_request("we are going to need a cone", campus).state is None
+    heading = Fixed(add("truck", location={"relation": "in_lane", "target": "campus_northbound"}))
+    assert not submit(campus, registry, heading, "a truck heading north on campus drive")[1].ok
+    going = Fixed(add("traffic_cone", location={"relation": "at", "target": "parking lot A"}))
+    assert submit(campus, registry, going, "we are going to need a cone at lot A")[1].ok
+
+
+def test_somewhere_for_someone_to_sit_is_new_too(context):
+    (added,) = RulePlanner().plan("somewhere for visitors to sit by the fountain would be lovely", context).calls
+    assert added.tool == "add_asset" and added.args["category"] == "bench"
 
 
 def test_what_cannot_drive_is_not_put_in_a_lane_instead(campus, registry):
@@ -83,3 +90,14 @@ def test_what_cannot_drive_is_not_put_in_a_lane_instead(campus, registry):
     assert "cannot drive" in (report.error or "")
     cone = Fixed(add("traffic_cone", location={"relation": "in_lane", "target": "campus_northbound"}))
     assert submit(campus, registry, cone, "pop a cone onto campus drive")[1].ok  # a road's name asks no one to drive
+    gate = Fixed(call("arrange_assets", categories=["bollard"], shape="line", location={"relation": "at", "target": "main gate"}))
+    blocked = submit(campus, registry, gate, "keep trucks from driving through the main gate: bollards in a line")[1]
+    assert "cannot drive" not in (blocked.error or "")  # the trucks drive; the bollards stop them
+
+
+def test_weather_denied_clears_it_and_is_never_set(campus, registry, context):
+    (cleared,) = RulePlanner().plan("we really don't want any snow any more", context).calls
+    assert cleared.args == {"kind": "clear"}
+    rain = Fixed(call("set_weather", kind="rain", intensity=0.6))
+    session, report = submit(campus, registry, rain, "no more of that rain, thanks")
+    assert not report.ok and session.scene.environment == campus.environment

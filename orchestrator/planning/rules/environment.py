@@ -23,6 +23,8 @@ HEAVY_INTENSITY, DEFAULT_INTENSITY, LIGHT_INTENSITY = 0.9, 0.6, 0.3
 _INTENSITY = re.compile(rf"(?:intensity (?:of |at |to |=\s*)?|strength (?:of )?)({NUMBER})|({NUMBER})\s*(%|percent)")
 # Weather kinds tried in order: "stop the rain" is clear before it is rain.
 _WEATHER_ORDER = ("clear", "snow", "fog", "rain", "cloudy")
+# Words that deny the weather after them: "no more fog", "we don't want any rain", "get rid of the snow".
+_DENIED = r"\b(?:no|not|don't|do not|without|never|get rid of|stop|end|enough) "
 # Words that make "light" mean lamps, not a light drizzle.
 _LAMP_CONTEXT = ("street", "streets", "lamps", "headlights", "lights", "light up", "lit", "switch", "turn")
 
@@ -37,6 +39,9 @@ def weather(r: Reading) -> ToolCall | None:
                 and not r.has(("weather", "sky", "skies"))
             ):
                 continue  # "clear the roadworks away" is a removal
+            words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
+            if kind != "clear" and re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low):
+                return ToolCall(tool="set_weather", args={"kind": "clear"})  # "I don't want any rain any more"
             args: dict[str, Any] = {"kind": kind}
             if kind != "clear":
                 # "light snow with the headlights on": light said of the weather is its strength

@@ -492,6 +492,8 @@ _SAME_AGAIN = re.compile(r"\b(?:same (?:again|as before|thing)|the same but|agai
 
 # "... with barriers", "with a few cones": what a layout is made of, named after its place.
 _WITH = re.compile(r"\bwith\s+(?:[\w-]+\s+){0,3}$")
+# What a ring is laid around comes after these: "around the rubble", "round the tree", "surround the bin".
+_AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing))\b")
 _VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
 
 
@@ -510,9 +512,10 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     size = _grid_size(r.low)
     mentions = [m for m in r.mentions if size is None or not size[2] <= m.start < size[3]]  # "four-by-four" is no SUV here
     r = replace(r, mentions=mentions)
-    around_pos = r.low.find(" around ")
+    around = _AROUND.search(r.low)
+    around_pos = around.start() if around else -1
 
-    def laid_out(m: ph.Mention) -> bool:  # "around the rubble with barriers": the barriers are laid out
+    def laid_out(m: ph.Mention) -> bool:  # "around the rubble with barriers", "surround the bin with cones"
         return around_pos < 0 or m.start < around_pos or bool(_WITH.search(r.low[: m.start]))
 
     layout = [m.category for m in mentions if laid_out(m)] or [mentions[0].category]
@@ -553,6 +556,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     if args["shape"] == "ring":
         targets = [m for m in mentions if m.category not in layout]
         named = [a for a in scene.assets if targets and a.category == targets[0].category]
+        if named and r.landmark and (mark := scene.landmark(r.landmark)) is not None:  # "the tree by the fountain"
+            named.sort(key=lambda a: -math.hypot(a.pose.x - mark.position[0], a.pose.y - mark.position[1]))
         if named:
             where = {"relation": "at", "target": named[-1].id}
         elif where is None and r.has(("it", "them")) and notes.subject and scene.asset(notes.subject[0]) is not None:

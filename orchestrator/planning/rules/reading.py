@@ -315,7 +315,7 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:
     """Whether a mention asks for a new asset ("a cone") rather than names one there ("the cone")."""
-    if add_verb or reading.low.startswith(("somewhere", "something"), mention.start):
+    if add_verb or re.search(r"\b(?:somewhere|something)\b(?:\s+[\w'-]+){0,5}\s*$", reading.low[: mention.end]):
         return True  # "somewhere to sit" asks for a new one, as "a seat" does
     words = ph.tokens(reading.low[: mention.start])
     for k in range(len(words) - 1, max(-1, len(words) - 4), -1):
