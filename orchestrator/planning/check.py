@@ -40,6 +40,7 @@ from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Re
 from drivetwin.orchestrator.planning.coverage import (
     Scope,
     absent_but_added,
+    away_from_thing,
     ambiguous_pick,
     back_reference,
     definite_but_added,
@@ -249,10 +250,13 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
             for c in indefinite_but_moved(request.masked, scope, scene)]
     if effect.added or effect.changed:
         out += inside_building(request.low, scene)
+    out += away_from_thing(request.masked, scope, scene)
     out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
     if request.place is None and request.lane is None and (strays := unpointed(request.masked, scope, scene)):
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
-    out += [f"there is no {w!r} in this world" for w in unknown_places(request.masked, effect.calls, scene)]
+    for unknown in unknown_places(request.masked, effect.calls, scene):  # "gym", or "lot c (there are lot a, lot b)"
+        name, _, alike = unknown.partition(" (")
+        out.append(f"there is no {name!r} in this world" + (f" ({alike}" if alike else ""))
     return out
 
 

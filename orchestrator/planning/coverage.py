@@ -295,6 +295,27 @@ def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
     return out
 
 
+# A new thing said to go "near the bench" stands at most this far from one.
+NEAR_THING_M = 12.0
+_BESIDE = re.compile(r"\b(?:near|by|beside|next to|close to|alongside)\s+(?:the|that|this|our)\s+$")
+
+
+def away_from_thing(masked: str, scope: Scope, scene: Scene) -> list[str]:
+    """New things the words put beside a thing there ("stick a bin near the bench") that the
+    plan puts far from every thing of that kind."""
+    out = []
+    for m in named_in(masked):
+        anchors = [a for a in [*scene.all_assets(), *scope.added] if a.category == m.category]
+        if not _BESIDE.search(m.before) or not anchors:
+            continue
+        far = [a for a in scope.added if a.category != m.category
+               and min(math.hypot(a.pose.x - b.pose.x, a.pose.y - b.pose.y) for b in anchors) > NEAR_THING_M]
+        if far:
+            out.append(f"you said near the {m.category.replace('_', ' ')}, but the plan puts "
+                       f"{', '.join(a.id for a in far)} more than {NEAR_THING_M:g} m from any")
+    return out
+
+
 def inside_building(masked: str, scene: Scene) -> list[str]:
     """Putting something inside a building, which this world's buildings cannot hold."""
     for m in _INSIDE.finditer(masked):
@@ -428,6 +449,10 @@ def _compass_of(dx: float, dy: float) -> str:
     return names[round(math.degrees(math.atan2(dy, dx)) / 45.0) % 8]
 
 
+# A place of a kind named by a letter or number: "lot C", "parking lot 3", "gate 2".
+_LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswalk) ([a-z]|\d+)\b(?!')")
+
+
 def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
     """Place names the world does not know ("near the gym") that no call mentions."""
     vocab = vocabulary(scene)
@@ -445,6 +470,11 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
                 break  # a misspelling is the planner's to repair; a word the plan uses is accounted for
             out.append(word)
             break
+    names = [ph.normalise(n).strip() for lm in scene.landmarks for n in lm.names()]
+    for m in _LETTERED.finditer(masked):  # "parking lot C" where the lots are A and B
+        kind = m.group(1)
+        if f"{kind} {m.group(2)}" not in names and (alike := sorted({n for n in names if re.fullmatch(rf"{kind} (?:[a-z]|\d+)", n)})):
+            out.append(f"{m.group(0).strip()} (there are {', '.join(alike)})")
     return list(dict.fromkeys(out))
 
 
@@ -452,6 +482,7 @@ __all__ = [
     "Named",
     "Scope",
     "absent_but_added",
+    "away_from_thing",
     "ambiguous_pick",
     "back_reference",
     "definite_but_added",

@@ -101,3 +101,22 @@ def test_weather_denied_clears_it_and_is_never_set(campus, registry, context):
     rain = Fixed(call("set_weather", kind="rain", intensity=0.6))
     session, report = submit(campus, registry, rain, "no more of that rain, thanks")
     assert not report.ok and session.scene.environment == campus.environment
+
+
+def test_a_lettered_place_the_world_lacks_is_named_with_those_it_has(campus, registry):
+    row = Fixed(call("arrange_assets", categories=["suv"], count=3, shape="parking_row", location={"relation": "scene_centre"}))
+    session, report = submit(campus, registry, row, "three SUVs side by side in lot D for the parking test")
+    assert not report.ok and session.scene.count("suv") == campus.count("suv")
+    assert "there is no 'lot d'" in (report.error or "") and "lot a, lot b" in (report.error or "")
+
+
+def test_a_vaguely_counted_grid_is_two_by_two_at_least(context):
+    (grid,) = RulePlanner().plan("a few cones in a grid at lot A", context).calls
+    assert grid.args["shape"] == "grid" and grid.args["count"] == 4
+
+
+def test_a_new_thing_said_to_go_near_a_thing_there_is_not_put_far_away(campus, registry):
+    session, report = submit(campus, registry, Fixed(add("traffic_cone")), "pop a cone right beside the fire hydrant")
+    assert not report.ok and session.scene.count("traffic_cone") == campus.count("traffic_cone")
+    beside = Fixed(add("traffic_cone", location={"relation": "next_to", "target": "fire_hydrant_1"}))
+    assert submit(campus, registry, beside, "pop a cone right beside the fire hydrant")[1].ok

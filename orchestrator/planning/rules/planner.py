@@ -492,6 +492,8 @@ _SAME_AGAIN = re.compile(r"\b(?:same (?:again|as before|thing)|the same but|agai
 
 # "... with barriers", "with a few cones": what a layout is made of, named after its place.
 _WITH = re.compile(r"\bwith\s+(?:[\w-]+\s+){0,3}$")
+# The fewest things a vaguely counted grid holds: two rows of two.
+GRID_MIN = 4
 # What a ring is laid around comes after these: "around the rubble", "round the tree", "surround the bin".
 _AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing))\b")
 _VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
@@ -538,6 +540,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         args["shape"] = "line"
     elif r.has(("grid",)):
         args["shape"] = "grid"
+        if _VAGUE_AMOUNT.search(r.low[: first.start]) and int(args.get("count") or GRID_MIN) < GRID_MIN:
+            args["count"] = GRID_MIN  # "some bollards in a grid": two by two at least, not three
         columns = _COLUMNS.search(r.low)
         if size is not None:  # "a 3 by 3 grid": nine, three to a row
             args["count"], args["columns"] = size[0] * size[1], size[1]
