@@ -40,8 +40,8 @@ from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Re
 from drivetwin.orchestrator.planning.coverage import (
     Scope,
     absent_but_added,
-    away_from_thing,
     ambiguous_pick,
+    away_from_thing,
     back_reference,
     definite_but_added,
     environment_left_out,
@@ -49,6 +49,7 @@ from drivetwin.orchestrator.planning.coverage import (
     inside_building,
     missing_categories,
     named_things,
+    off_the_side,
     partial_removal,
     unknown_places,
     unpointed,
@@ -251,6 +252,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     if effect.added or effect.changed:
         out += inside_building(request.low, scene)
     out += away_from_thing(request.masked, scope, scene)
+    out += off_the_side(request.low, scope, scene)
     out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
     if request.place is None and request.lane is None and (strays := unpointed(request.masked, scope, scene)):
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")

@@ -22,6 +22,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.places import side_of
 from drivetwin.orchestrator.planning.rules.reading import used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.base import ToolCall
@@ -316,6 +317,19 @@ def away_from_thing(masked: str, scope: Scope, scene: Scene) -> list[str]:
     return out
 
 
+def off_the_side(low: str, scope: Scope, scene: Scene) -> list[str]:
+    """Things the plan touches that are not on the side of a road or place the words name
+    ("the street lights on the north side of Main Street")."""
+    side = side_of(low, scene)
+    if side is None:
+        return []
+    said, beyond = side
+    wrong = sorted({a.id for a in [*scope.removed, *scope.added, *scope.touched] if a.id != "ego" and not beyond(a)})
+    if not wrong:
+        return []
+    return [f"you said the {said}, but the plan takes in " + ", ".join(wrong[:6]) + (" and more" if len(wrong) > 6 else "")]
+
+
 def inside_building(masked: str, scene: Scene) -> list[str]:
     """Putting something inside a building, which this world's buildings cannot hold."""
     for m in _INSIDE.finditer(masked):
@@ -482,8 +496,8 @@ __all__ = [
     "Named",
     "Scope",
     "absent_but_added",
-    "away_from_thing",
     "ambiguous_pick",
+    "away_from_thing",
     "back_reference",
     "definite_but_added",
     "environment_left_out",
@@ -492,6 +506,7 @@ __all__ = [
     "missing_categories",
     "named_in",
     "named_things",
+    "off_the_side",
     "partial_removal",
     "unknown_places",
     "unpointed",

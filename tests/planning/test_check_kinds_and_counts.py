@@ -120,3 +120,12 @@ def test_a_new_thing_said_to_go_near_a_thing_there_is_not_put_far_away(campus, r
     assert not report.ok and session.scene.count("traffic_cone") == campus.count("traffic_cone")
     beside = Fixed(add("traffic_cone", location={"relation": "next_to", "target": "fire_hydrant_1"}))
     assert submit(campus, registry, beside, "pop a cone right beside the fire hydrant")[1].ok
+
+
+def test_the_side_of_a_road_limits_a_removal_to_that_side(context, campus, registry):
+    (removal,) = RulePlanner().plan("clear the lamp posts from the south side of main street", context).calls
+    south = {a.id for a in campus.assets if a.category == "street_light" and a.pose.y < 0}
+    assert set(removal.args["assets"]) == south and south
+    every = Fixed(call("remove_assets", category="street_light"))
+    session, report = submit(campus, registry, every, "lose the street lights along the east side of campus drive")
+    assert not report.ok and session.scene.count("street_light") == campus.count("street_light")

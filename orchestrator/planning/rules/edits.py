@@ -19,7 +19,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.places import Notes, location
+from drivetwin.orchestrator.planning.rules.places import Notes, location, side_of
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
@@ -225,6 +225,10 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         # "the vehicles in lot B": every one there, of every category the words cover
         ids = referenced(r, scene, memory, notes)
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
+    side = side_of(r.low, scene)
+    if side is not None:  # "the street lights on the north side of Main Street": those there
+        ids = [a.id for a in scene.assets if a.category == name and side[1](a)]
+        return [ToolCall(tool="remove_assets", args={"assets": ids[:count] if count else ids})] if ids else None
     outermost = None if mention.plural else _outermost(r, scene, mention, [a.id for a in scene.assets if a.category == name])
     if outermost is not None:
         return [ToolCall(tool="remove_assets", args={"assets": [outermost]})]

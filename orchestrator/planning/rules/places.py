@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -16,7 +17,7 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.reading import Reading
-from drivetwin.worlds.scene import Landmark, Scene
+from drivetwin.worlds.scene import AssetInstance, Landmark, Scene
 from drivetwin.worlds.surface import point_in_polygon
 
 RELATIONS = (
@@ -255,6 +256,35 @@ def location(
     if metres is not None and found["relation"] != "at":
         found["distance"] = metres
     return found
+
+
+_SIDE_OF = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z][a-z ]*)")
+_COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
+
+
+def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
+    """The side of a road or place the words name ("on the north side of Main Street"), as
+    words and as a test of whether a thing stands on it (beyond the nearest point of the road,
+    or the place, that way); None when they name none."""
+    said = _SIDE_OF.search(low)
+    if said is None:
+        return None
+    dx, dy = _COMPASS[said.group(1)]
+    rest = said.group(2)
+    roads = {lane.road for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())}
+    points = [p for lane in scene.roads.lanes if lane.road in roads for p in lane.centreline]
+    name = next(iter(roads), None)
+    if not points:
+        marks = [lm for lm in scene.landmarks if any(rest.startswith(ph.normalise(n).strip()) for n in lm.names())]
+        points, name = ([marks[0].position], marks[0].name) if marks else ([], None)
+    if not points:
+        return None
+
+    def beyond(a: AssetInstance) -> bool:
+        near = min(points, key=lambda p: math.hypot(a.pose.x - p[0], a.pose.y - p[1]))
+        return (a.pose.x - near[0]) * dx + (a.pose.y - near[1]) * dy > 0
+
+    return f"{said.group(1)} side of {name}", beyond
 
 
 def said_a_place(r: Reading) -> bool:
