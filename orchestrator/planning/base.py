@@ -74,9 +74,6 @@ class Plan(BaseModel):
     # The calls were given as they are (a case's reference plan, a recorded replay), not read
     # from the words, so the plan-vs-request check has nothing to compare them with.
     verbatim: bool = False
-    # The words of the request the planner could not read (in the clauses it read and in those
-    # it skipped). A combining planner asks rather than apply a plan that left much unread.
-    unread: list[str] = Field(default_factory=list)
 
 
 class PlanningError(Exception):

@@ -214,7 +214,10 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         if wrong:
             out.append(f"you said {request.state} ones, but the plan also takes {_names(wrong)}")
     if (request.state == "moving" or _HEADING.search(request.low)) and not request.question:
-        standing = [a for a in effect.added if a.category in request.categories and a.behaviour.kind == "parked"]
+        # "going north" of a row of trees is the way the row runs: only what moves is said to be going
+        movers = {c for c in request.categories
+                  if request.state == "moving" or (c in catalog() and catalog()[c].motion != "prop")}
+        standing = [a for a in effect.added if a.category in movers and a.behaviour.kind == "parked"]
         if standing and len(standing) == len([a for a in effect.added if a.category in request.categories]):
             out.append(f"you said moving ones, but the plan adds {_names(standing)} standing still")
     roads = "|".join(re.escape(ph.normalise(lane.road).strip()) for lane in scene.roads.lanes if lane.road)

@@ -42,11 +42,6 @@ RULES_CONFIDENT_SMALL_MODEL = 0.0
 RETRIEVAL_CONFIDENT = 0.85
 # Below this, a retrieval plan is not offered as a reading to choose from.
 RETRIEVAL_READING = 0.45
-# A rule plan that left this many words unread is not applied on an unsure footing: the person
-# is asked, and told which words were not read. On the first, unseen runs of two practice suites
-# (practice2 at 2bd743c, practice3 at fd9d764), 5 of the rule plans the hybrid applied with
-# three or more unknown words passed and 8 were wrong edits (with two: 17 passed, 6 wrong).
-UNREAD_ASK = 3
 # The rule planner's name, which leads the hybrid's path log (see _candidate).
 RULES_PLANNER = "rules"
 # Readings offered in a clarifying question (the interface allows 1-3).
@@ -163,9 +158,6 @@ class HybridPlanner:
         if rule_plan is not None and (
             not rule_plan.calls or rule_plan.confidence >= (needed := self._needed(rule_plan.confidence))
         ):
-            if rule_plan.calls and rule_plan.confidence < RULES_CONFIDENT and (unread := _too_much_unread(rule_plan)):
-                candidates = [rule_plan, *(o for o in others or [] if o.calls and o.confidence >= RETRIEVAL_READING)]
-                return self._ask(candidates, f"I could not read {unread}. Did you mean:", f"{why}; {unread} unread", started)
             return self._mark(rule_plan, "fast", started, f"{why}; rules plan used", others)
         if rule_plan is not None:
             why = f"{why}; rules confidence {rule_plan.confidence:.2f} < {needed}"
@@ -217,12 +209,9 @@ class HybridPlanner:
         ]
         if not readings:
             raise PlanningError(_not_understood(rules_said))
-        return self._ask(readings, "I am not sure what you mean. Did you mean:", why, started)
-
-    def _ask(self, readings: list[Plan], text: str, why: str, started: float) -> Plan:
-        """One short question offering `readings` (best first) as numbered choices."""
         question = Question(
-            text=text, readings=[Reading(text=describe(c.calls), calls=c.calls) for c in readings[:MAX_READINGS]]
+            text="I am not sure what you mean. Did you mean:",
+            readings=[Reading(text=describe(c.calls), calls=c.calls) for c in readings[:MAX_READINGS]],
         )
         step = TraceStep(
             level="hybrid", input="path: ask", output=f"{why}; asking", seconds=time.perf_counter() - started
@@ -250,15 +239,6 @@ class HybridPlanner:
                 "alternatives": [*plan.alternatives, *alternatives],
             }
         )
-
-
-def _too_much_unread(plan: Plan) -> str:
-    """The words `plan` left unread, for the person, when they are too many to act on
-    (UNREAD_ASK or more); empty when they are not."""
-    if len(plan.unread) < UNREAD_ASK:
-        return ""
-    *rest, last = (repr(w) for w in plan.unread)
-    return f"{', '.join(rest)} or {last}"
 
 
 def _not_understood(rules_said: str) -> str:
@@ -299,7 +279,6 @@ __all__ = [
     "RETRIEVAL_CONFIDENT",
     "RULES_CONFIDENT",
     "SMALL_MODEL_PARAMETERS",
-    "UNREAD_ASK",
     "HybridPlanner",
     "make_hybrid",
     "make_llm",

@@ -129,3 +129,8 @@ def test_the_side_of_a_road_limits_a_removal_to_that_side(context, campus, regis
     every = Fixed(call("remove_assets", category="street_light"))
     session, report = submit(campus, registry, every, "lose the street lights along the east side of campus drive")
     assert not report.ok and session.scene.count("street_light") == campus.count("street_light")
+
+
+def test_more_near_and_most_close_are_nearer_and_nearest(context):
+    (search,) = RulePlanner().plan("what bench is the most close to the fountain?", context).calls
+    assert search.args.get("nearest_to") == "fountain"

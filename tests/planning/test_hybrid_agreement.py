@@ -26,17 +26,15 @@ TREES_BY_ID = [ToolCall(tool="remove_assets", args={"assets": ["tree_1", "tree_2
 class Fixed:
     """A planner that always answers the same plan (or fails)."""
 
-    def __init__(
-        self, name: str, calls: list[ToolCall] | None, confidence: float = 0.9, unread: tuple[str, ...] = ()
-    ) -> None:
-        self.name, self.calls, self.confidence, self.unread = name, calls, confidence, list(unread)
+    def __init__(self, name: str, calls: list[ToolCall] | None, confidence: float = 0.9) -> None:
+        self.name, self.calls, self.confidence = name, calls, confidence
         self.asked = 0
 
     def plan(self, prompt: str, context: PlanContext) -> Plan:
         self.asked += 1
         if self.calls is None:
             raise PlanningError(f"{self.name} cannot")
-        return Plan(calls=self.calls, planner=self.name, confidence=self.confidence, unread=self.unread)
+        return Plan(calls=self.calls, planner=self.name, confidence=self.confidence)
 
 
 @pytest.fixture
@@ -96,30 +94,6 @@ def test_a_small_model_still_plans_what_nothing_else_could(context: PlanContext)
     llm = SmallModel("llm", SNOW)
     plan = hybrid(Fixed("rules", None), Fixed("retrieval", None), llm).plan("x", context)
     assert path(plan) == "path: llm" and plan.calls == SNOW and llm.asked == 1
-
-
-def test_an_unsure_rule_plan_that_left_much_unread_is_asked_about_not_applied(context: PlanContext) -> None:
-    unread = ("quarterly", "auditors", "festooned")
-    plan = hybrid(Fixed("rules", RAIN, 0.5, unread), Fixed("retrieval", SNOW, 0.6), SmallModel("llm", None)).plan(
-        "x", context
-    )
-    assert plan.calls == [] and plan.question is not None
-    assert plan.question.text.startswith("I could not read 'quarterly', 'auditors' or 'festooned'")
-    assert [r.calls for r in plan.question.readings] == [RAIN, SNOW]
-
-
-def test_a_little_unread_is_not_asked_about(context: PlanContext) -> None:
-    two = Fixed("rules", RAIN, 0.65, ("quarterly", "auditors"))
-    plan = hybrid(two, Fixed("retrieval", None), SmallModel("llm", None)).plan("x", context)
-    assert path(plan) == "path: fast" and plan.calls == RAIN
-
-
-def test_the_rule_planner_says_what_it_could_not_read(context: PlanContext) -> None:
-    plan = RulePlanner().plan("add a cone by the library for the quarterly auditors", context)
-    assert plan.calls and {"quarterly", "auditors"} <= set(plan.unread)
-    skipped = RulePlanner().plan("quarterly auditors inspect the lot tomorrow. put a cone by the library", context)
-    assert skipped.calls and {"quarterly", "auditors"} <= set(skipped.unread)  # in a clause it skipped
-    assert RulePlanner().plan("add a cone by the library", context).unread == []
 
 
 def test_disagreement_nobody_settles_becomes_a_question_with_plain_readings(context: PlanContext) -> None:

@@ -34,6 +34,8 @@ def normalise(text: str) -> str:
     out = " " + re.sub(r"\s+", " ", text.lower()) + " "
     for us, uk in (("center", "centre"), ("color", "colour"), ("gray", "grey"), ("meter", "metre")):
         out = out.replace(us, uk)
+    # "more near", "most close": the comparative and superlative as learners build them
+    out = re.sub(r"\b(more|most) (near|close)\b", lambda m: m.group(2).removesuffix("e") + ("er" if m.group(1) == "more" else "est"), out)
     # A comma inside a number ("10,000") is a thousands separator, not a clause break.
     return re.sub(r"(?<!\d),|,(?!\d{3}(?!\d))", " , ", out.replace("’", "'"))
 

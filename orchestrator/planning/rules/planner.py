@@ -275,7 +275,6 @@ class RulePlanner:
             confidence=max(MIN_CONFIDENCE, confidence),
             prompt_version=PROMPT_VERSION,
             trace=[step],
-            unread=[*unknown, *(w for clause in skipped for w in _unknown_words(clause, scene))],
         )
 
 
