@@ -463,6 +463,9 @@ def _compass_of(dx: float, dy: float) -> str:
     return names[round(math.degrees(math.atan2(dy, dx)) / 45.0) % 8]
 
 
+# Lanes named by who uses them, and the lane kind that would be ("biking" is no kind this world has).
+_LANE_KINDS = {"bike": "biking", "bicycle": "biking", "cycle": "biking", "bus": "bus", "tram": "tram", "parking": "parking"}
+_KIND_OF_LANE = re.compile(rf"\b({'|'.join(_LANE_KINDS)}) lane\b")
 # A place of a kind named by a letter or number: "lot C", "parking lot 3", "gate 2".
 _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswalk) ([a-z]|\d+)\b(?!')")
 
@@ -489,6 +492,10 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         kind = m.group(1)
         if f"{kind} {m.group(2)}" not in names and (alike := sorted({n for n in names if re.fullmatch(rf"{kind} (?:[a-z]|\d+)", n)})):
             out.append(f"{m.group(0).strip()} (there are {', '.join(alike)})")
+    kinds = {lane.kind for lane in scene.roads.lanes}
+    for m in _KIND_OF_LANE.finditer(masked):  # "the bike lane" where every lane is for driving
+        if _LANE_KINDS.get(m.group(1)) not in kinds:
+            out.append(f"{m.group(0)} (lanes here: {', '.join(sorted(kinds))})")
     return list(dict.fromkeys(out))
 
 

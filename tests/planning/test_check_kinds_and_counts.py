@@ -134,3 +134,17 @@ def test_the_side_of_a_road_limits_a_removal_to_that_side(context, campus, regis
 def test_more_near_and_most_close_are_nearer_and_nearest(context):
     (search,) = RulePlanner().plan("what bench is the most close to the fountain?", context).calls
     assert search.args.get("nearest_to") == "fountain"
+
+
+def test_the_sun_gone_down_is_night_and_spinning_round_is_a_half_turn(context):
+    calls = RulePlanner().plan("we test once the sun goes down", context).calls
+    assert any(c.tool == "set_time_of_day" and c.args["time"] == "night" for c in calls)
+    (turn,) = RulePlanner().plan("spin the suv round", context).calls
+    assert turn.args["turn_deg"] == 180.0
+
+
+def test_a_lane_kind_the_world_lacks_is_said_with_the_kinds_it_has(campus, registry):
+    bike = Fixed(add("bicycle", location={"relation": "at", "target": "ego"}))
+    session, report = submit(campus, registry, bike, "send our car over into the cycle lane")
+    assert not report.ok and session.scene.count("bicycle") == campus.count("bicycle")
+    assert "there is no 'cycle lane'" in (report.error or "") and "driving" in (report.error or "")

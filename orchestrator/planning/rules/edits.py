@@ -384,7 +384,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
             angle = round((math.degrees(math.atan2(north, east) - found.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
             if abs(angle) < 1.0:
                 raise ph_error(f"{asset} already faces {facing}")
-        elif r.has(("around", "wrong way", "other way", "flip", "about")):
+        elif r.has(("around", "round", "wrong way", "other way", "flip", "about")):  # "spin the bench round"
             angle = 180.0
         else:
             notes.guess("how far to turn")

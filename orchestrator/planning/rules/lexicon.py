@@ -57,10 +57,11 @@ HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "
          "barely", "low visibility")
 LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "some", "gentle")
 # (words, preset) in order: the first that matches wins, so "midnight" beats "night".
-TIME_PRESETS = ((("midnight",), "midnight"), (("night", "nighttime", "night time", "nite", "dark",
-                 "darker", "late at night"), "night"), (("evening", "after work"), "evening"),
-                (("dusk", "twilight", "getting dark"), "dusk"), (("sunset", "golden hour", "golden-hour"), "sunset"),
-                (("dawn", "first light"), "dawn"), (("sunrise", "sun coming up", "sun comes up", "early morning"), "sunrise"),
+TIME_PRESETS = ((("midnight",), "midnight"), (("night", "nighttime", "night time", "nite", "dark", "darker",
+                 "late at night", "sun has gone down", "sun goes down", "after dark"), "night"),
+                (("evening", "after work"), "evening"), (("dusk", "twilight", "getting dark"), "dusk"),
+                (("sunset", "golden hour", "golden-hour"), "sunset"), (("dawn", "first light"), "dawn"),
+                (("sunrise", "sun coming up", "sun comes up", "early morning"), "sunrise"),
                 (("morning", "breakfast"), "morning"), (("afternoon",), "afternoon"),
                 (("noon", "midday", "lunchtime", "lunch time", "lunch"), "noon"),
                 (("daytime", "day time", "day", "daylight", "bright", "brighter"), "daytime"))
@@ -96,8 +97,7 @@ CONCEPTS: dict[str, tuple[str, ...]] = {
     "bench": ("somewhere to sit", "to sit", "sit down", "seat", "seats", "chairs"),  # not "sit" said of a thing ("the car should sit")
     "construction_sign": ("warn", "warned", "warning", "warning sign", "heads-up"),
     "road_barrier": ("fence off", "cordon off", "barriers", "block the road", "block off"),
-    "trash_bin": ("rubbish", "litter", "garbage"),
-    "passenger_car": ("traffic",),
+    "trash_bin": ("rubbish", "litter", "garbage"), "passenger_car": ("traffic",),
     "pedestrian": ("crowd", "passers-by", "someone", "somebody", "kid", "child", "guy"),
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.
