@@ -479,7 +479,8 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     for m in _PLACE_PREPOSITION.finditer(masked):
         words = [w for w in re.split(r"[\s-]+", m.group(1)) if w][:3]
         for word in words:
-            if word in lx.GRAMMAR or word in _RELATION_WORDS or word in ids or word == "ego" or word.endswith("est"):
+            if word in lx.GRAMMAR or word in _RELATION_WORDS or word in ids or word == "ego" or word.endswith("est") \
+                    or re.fullmatch(r"(?:north|south|east|west)(?:ern|erly|ward)?", word):  # "the western car park"
                 break  # ("the closest hydrant": a superlative modifies what follows, it names no place)
             if ph.find_categories(word) or is_known(word, vocab):
                 break

@@ -148,3 +148,12 @@ def test_a_lane_kind_the_world_lacks_is_said_with_the_kinds_it_has(campus, regis
     session, report = submit(campus, registry, bike, "send our car over into the cycle lane")
     assert not report.ok and session.scene.count("bicycle") == campus.count("bicycle")
     assert "there is no 'cycle lane'" in (report.error or "") and "driving" in (report.error or "")
+
+
+def test_a_place_of_a_kind_is_told_from_the_others_by_the_compass(context):
+    (added,) = RulePlanner().plan("drop a bench off at the eastern car park", context).calls
+    assert added.args["location"]["target"] == "parking lot B"
+    (search,) = RulePlanner().plan("anything standing in the north-west lot?", context).calls
+    assert search.args.get("near") == "parking lot A"
+    (cone,) = RulePlanner().plan("a cone at the east gate", context).calls
+    assert cone.args["location"]["target"] == "east gate"  # a place's own name wins

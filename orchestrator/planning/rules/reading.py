@@ -65,6 +65,24 @@ def _unique_place_words(scene: Scene) -> dict[str, str]:
 _VERB_OBJECT = re.compile(r"\s+(?:the|a|an|this|that|over)\b")
 
 
+# "the south-east lot", "the western car park": a place of a kind, told from the others by the compass.
+_COMPASS_KIND = re.compile(r"\b((?:north|south)(?:[- ]?(?:east|west))?|east|west)(?:ern)?\s+((?:parking )?lot|car park|gate|crossing|crosswalk)\b")
+
+
+def _place_by_compass(scene: Scene, low: str) -> tuple[str, int, int] | None:
+    """Of the places of the kind the words name after a compass point, the one furthest that way."""
+    said = _COMPASS_KIND.search(low)
+    way = md.outer_direction(f"{said.group(1)} side") if said else None
+    if said is None or way is None:
+        return None
+    kind = {"car park": "lot"}.get(said.group(2), said.group(2).removeprefix("parking "))
+    alike = [lm for lm in scene.landmarks if re.fullmatch(rf"(?:.* )?{kind}(?: \w)?", ph.normalise(lm.name).strip())]
+    if len(alike) < 2:
+        return None
+    furthest = max(alike, key=lambda lm: lm.position[0] * way[0] + lm.position[1] * way[1])
+    return furthest.name, said.start(), said.end()
+
+
 def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
     """The landmark named in normalised text (articles ignored; longest name wins), and its span."""
     best: tuple[int, str, int, int] | None = None
@@ -86,6 +104,9 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
                 span = re.search(rf"(?<![a-z0-9]){words}(?![a-z0-9])", low)
                 start, end = (span.start(), span.end()) if span else (0, 0)
                 best = (len(key), landmark.name, start, end)
+    by_compass = _place_by_compass(scene, low)
+    if by_compass is not None and (best is None or by_compass[1] < best[2] < by_compass[2]):
+        return by_compass  # "the western car park": not the car park the name alone would pick
     if best is not None:
         return best[1], best[2], best[3]
     shortened = _shortened_name(scene, low)
