@@ -20,6 +20,7 @@ import json
 from pathlib import Path
 from typing import Any
 
+from drivetwin.evals.suite_source import dsl
 from drivetwin.evals.suite_source.dsl import (
     add,
     arrange,
@@ -147,16 +148,8 @@ def case(
     all_tags = [TAG, *tags]
     if setup and "multi_turn" not in all_tags:
         all_tags.append("multi_turn")
-    out: Json = {"id": f"{TAG}.{task}.{grade}.{slug}", "world": "campus"}
-    if setup:
-        out["setup"] = setup
-    out.update({"prompt": prompt, "task": task, "grade": grade, "tags": all_tags, "checks": checks})
-    if alternatives:
-        out["alternatives"] = alternatives
-    out["reference"] = reference
-    if notes:
-        out["notes"] = notes
-    return out
+    return dsl.case(f"{TAG}.{task}.{grade}.{slug}", task, grade, prompt, checks, reference, setup=setup,
+                    tags=all_tags, alternatives=alternatives, notes=notes)
 
 
 def impossible(task: str, grade: str, slug: str, prompt: str, reference: list[Json], *,
