@@ -157,3 +157,12 @@ def test_a_place_of_a_kind_is_told_from_the_others_by_the_compass(context):
     assert search.args.get("near") == "parking lot A"
     (cone,) = RulePlanner().plan("a cone at the east gate", context).calls
     assert cone.args["location"]["target"] == "east gate"  # a place's own name wins
+
+
+def test_a_sidewalk_thing_at_a_place_far_from_any_sidewalk_stands_by_the_place(context, campus):
+    session = Session(campus, RulePlanner(), context.registry)
+    report = session.submit("we need a fire hydrant by the Student Union entrance")
+    (hydrant,) = [a for a in session.scene.assets if a.category == "fire_hydrant" and campus.asset(a.id) is None]
+    door = campus.landmark("Student Union entrance")
+    assert report.ok and door is not None
+    assert ((hydrant.pose.x - door.position[0]) ** 2 + (hydrant.pose.y - door.position[1]) ** 2) ** 0.5 < 8.0

@@ -39,6 +39,7 @@ from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog, nearest_categories
 from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.surface import nearest_on_polyline, surface_at
 
 PROMPT_VERSION = "rules-2"
 # Confidence when every content word was understood and nothing was guessed.
@@ -455,6 +456,16 @@ def _maintenance_target(scene: Scene, memory: Memory) -> str | None:
     return tagged[-1].id
 
 
+# A thing that stands on sidewalks goes on the one by a place when it is at most this far off.
+SIDEWALK_REACH_M = 12.0
+
+
+def _sidewalk_gap(scene: Scene, point: tuple[float, float]) -> float:
+    """How far the nearest sidewalk is from a point (infinite in a world without sidewalks)."""
+    return min((nearest_on_polyline(point[0], point[1], w.polyline).distance for w in scene.roads.sidewalks),
+               default=math.inf)
+
+
 def _fallback_place(memory: Memory) -> dict[str, Any]:
     focus = memory.last_focus()
     return (
@@ -633,12 +644,11 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCal
     where = location(r, scene, memory, notes)
     if where is not None and kind == "jaywalk" and where.get("target") == "ego":
         where = None  # the jaywalk behaviour places the walker in the ego's path itself
-    if (
-        where is not None
-        and category.placement == "sidewalk"
-        and where.get("relation") == "at"
-        and scene.landmark(str(where.get("target"))) is not None
-    ):
+    mark = scene.landmark(str(where.get("target"))) if where is not None else None
+    if where is not None and category.placement == "sidewalk" and where.get("relation") == "at" and mark is not None \
+            and (_sidewalk_gap(scene, mark.position) <= SIDEWALK_REACH_M
+                 or surface_at(scene, mark.position[0], mark.position[1]) != "ground"):
+        # a hydrant "at the library" goes on the sidewalk by it; where none is near, on the ground by the place
         where = {"relation": "on_sidewalk", "target": where["target"]}
     if where is None and kind is None and memory.last_focus() is not None and r.has(("also", "more", "another")):
         where = _beside_last(scene, memory) or _fallback_place(memory)
