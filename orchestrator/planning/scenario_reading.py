@@ -53,7 +53,6 @@ SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 STATED_CONFIDENCE, DEFAULT_COST = 0.95, 0.1
 _NUMBER_WORDS = {w: n for w, n in ph.NUMBER_WORDS.items()
                  if w not in ("a", "an", "single", "pair", "couple", "few", "some", "several")}
-_NUMBER_WORDS |= {"thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "eleven": 11, "eighteen": 18}
 # The few words of this reader that the rule lexicon's spelling repair does not know.
 _VOCABULARY = ("when", "once", "collision", "oncoming", "middle", "approaches", "overtakes", "seconds",
                "junction", "crossroads", "brakes", "pedestrian", "reverses", "accelerates", "behind")
