@@ -259,9 +259,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
     if request.place is None and request.lane is None and (strays := unpointed(request.masked, scope, scene)):
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
-    for unknown in unknown_places(request.masked, effect.calls, scene):  # "gym", or "lot c (there are lot a, lot b)"
-        name, _, alike = unknown.partition(" (")
-        out.append(f"there is no {name!r} in this world" + (f" ({alike}" if alike else ""))
+    out += unknown_places(request.masked, effect.calls, scene)
     return out
 
 

@@ -471,7 +471,8 @@ _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswa
 
 
 def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
-    """Place names the world does not know ("near the gym") that no call mentions."""
+    """Place names the world does not know ("near the gym") that no call mentions, each said with
+    what the world has of its kind where it has some ("parking lot c": "there are lot a, lot b")."""
     vocab = vocabulary(scene)
     said = " ".join(str(c.args) for c in calls).lower()
     ids = {a.id for a in scene.all_assets()}
@@ -486,17 +487,17 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
                 break
             if word in said or word not in english_words():
                 break  # a misspelling is the planner's to repair; a word the plan uses is accounted for
-            out.append(word)
+            out.append(f"there is no {word!r} in this world")
             break
     names = [ph.normalise(n).strip() for lm in scene.landmarks for n in lm.names()]
     for m in _LETTERED.finditer(masked):  # "parking lot C" where the lots are A and B
         kind = m.group(1)
         if f"{kind} {m.group(2)}" not in names and (alike := sorted({n for n in names if re.fullmatch(rf"{kind} (?:[a-z]|\d+)", n)})):
-            out.append(f"{m.group(0).strip()} (there are {', '.join(alike)})")
+            out.append(f"there is no {m.group(0).strip()!r} in this world (there are {', '.join(alike)})")
     kinds = {lane.kind for lane in scene.roads.lanes}
     for m in _KIND_OF_LANE.finditer(masked):  # "the bike lane" where every lane is for driving
         if _LANE_KINDS.get(m.group(1)) not in kinds:
-            out.append(f"{m.group(0)} (lanes here: {', '.join(sorted(kinds))})")
+            out.append(f"there is no {m.group(0)!r} in this world (lanes here: {', '.join(sorted(kinds))})")
     return list(dict.fromkeys(out))
 
 

@@ -259,7 +259,6 @@ def location(
 
 
 _SIDE_OF = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z][a-z ]*)")
-_COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
 
 
 def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
@@ -269,7 +268,7 @@ def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool
     said = _SIDE_OF.search(low)
     if said is None:
         return None
-    dx, dy = _COMPASS[said.group(1)]
+    dx, dy = md.COMPASS_VECTORS[said.group(1)]
     rest = said.group(2)
     roads = {lane.road for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())}
     points = [p for lane in scene.roads.lanes if lane.road in roads for p in lane.centreline]
