@@ -137,6 +137,7 @@ class HybridPlanner:
             best = rule_plan.model_copy(update={"confidence": max(rule_plan.confidence, found.confidence)})
             return self._mark(best, "agree", started, f"{why}; rules and retrieval agree")
         rules_sure = rule_plan.confidence >= RULES_CONFIDENT
+        why = f"{why}; rules read {describe(rule_plan.calls)!r}, retrieval {describe(found.calls)!r}"
         if found.confidence < RETRIEVAL_CONFIDENT:  # an unsure retrieval plan overrules nothing
             return self._rules_then_llm(prompt, context, rule_plan, f"{why}; they disagree", started, [found])
         if not rules_sure:

@@ -66,6 +66,8 @@ def test_candidates_with_the_same_dry_run_outcome_agree(context: PlanContext) ->
 def test_a_clearly_surer_candidate_wins_and_the_other_is_an_alternative(context: PlanContext) -> None:
     plan = hybrid(Fixed("rules", RAIN, 0.95), Fixed("retrieval", SNOW, 0.5), Fixed("llm", None)).plan("x", context)
     assert plan.calls == RAIN and [r.calls for r in plan.alternatives] == [SNOW]
+    # the trace says what each planner read, so a run's records show what the loser proposed
+    assert "rules read 'weather rain" in plan.trace[0].output and "retrieval 'weather snow" in plan.trace[0].output
 
 
 def test_the_llm_breaks_a_tie_between_two_sure_candidates(context: PlanContext) -> None:
