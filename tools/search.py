@@ -6,7 +6,7 @@ import difflib
 import math
 
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
-from drivetwin.tools.errors import NotFoundError
+from drivetwin.tools.errors import NotFoundError, ToolArgumentError
 from drivetwin.tools.locate import Target, resolve_target
 from drivetwin.tools.move import find_asset
 from drivetwin.tools.rules import footprint
@@ -206,7 +206,7 @@ class FindLanesArgs(ToolArgs):
 
 class FindLanes(Tool[FindLanesArgs]):
     name = "find_lanes"
-    description = "List lanes (id, road, direction, width), or the lane nearest a place."
+    description = "List lanes (id, road, direction, width, length), or the lane nearest a place."
     family = "search"
     Args = FindLanesArgs
 
@@ -222,9 +222,49 @@ class FindLanes(Tool[FindLanesArgs]):
         for ln in lanes:
             (x1, y1), (x2, y2) = ln.centreline[0], ln.centreline[-1]
             heading = math.degrees(math.atan2(y2 - y1, x2 - x1))
-            lines.append(f"{ln.id} on {ln.road}, heading {heading:.0f} deg, {ln.width:g} m wide")
+            length = sum(math.dist(p, q) for p, q in zip(ln.centreline, ln.centreline[1:], strict=False))
+            lines.append(f"{ln.id} on {ln.road}, heading {heading:.0f} deg, {ln.width:g} m wide, {length:.0f} m long")
         return ToolResult(WorldEdit(), f"{len(lanes)} lane(s): " + "; ".join(lines),
                           data={"lanes": [ln.id for ln in lanes]})
+
+
+class MeasureArgs(ToolArgs):
+    a: str = Field(description="one end: an asset id, landmark or place name, lane id, 'ego' or 'x,y' metres")
+    b: str = Field("ego", description="the other end, named the same way (default: the ego)")
+
+
+class MeasureDistance(Tool[MeasureArgs]):
+    name = "measure_distance"
+    description = "How far apart two things or places are (straight line, metres) and which way b lies from a."
+    family = "search"
+    Args = MeasureArgs
+
+    def propose(self, args: MeasureArgs, scene: Scene) -> ToolResult:
+        a, b = resolve_target(scene, args.a), resolve_target(scene, args.b)
+        if (a.x, a.y) == (b.x, b.y) and a.name == b.name:
+            raise ToolArgumentError(f"{args.a!r} and {args.b!r} are the same place; name two things to measure between")
+        dx, dy = b.x - a.x, b.y - a.y
+        metres = math.hypot(dx, dy)
+        text = f"from {a.name} to {b.name}: {metres:.1f} m in a straight line, to the {compass_of(dx, dy)}"
+        edge = _edge_distance(scene, a, b)
+        if edge is not None and edge < metres - 0.05:
+            text += f"; {edge:.1f} m from the edge of the area"
+        return ToolResult(WorldEdit(), text, data={"metres": round(metres, 2), "from": a.name, "to": b.name})
+
+
+def compass_of(dx: float, dy: float) -> str:
+    """The compass point (of eight) that the vector (dx east, dy north) points to."""
+    names = ("east", "north-east", "north", "north-west", "west", "south-west", "south", "south-east")
+    return names[round(math.degrees(math.atan2(dy, dx)) / 45.0) % 8]
+
+
+def _edge_distance(scene: Scene, a: Target, b: Target) -> float | None:
+    """When one end is an area (a parking lot), the distance from the other end to its edge."""
+    for area, other in ((a, b), (b, a)):
+        landmark = scene.landmark(area.name) if area.kind == "area" else None
+        if landmark is not None and landmark.polygon:
+            return landmark_distance(landmark, other.x, other.y)
+    return None
 
 
 class PropertiesArgs(ToolArgs):

@@ -21,7 +21,7 @@ from drivetwin.worlds.catalog import resolve_category
 from drivetwin.worlds.scene import EGO_ID, Scene
 
 # The Workers a question may be answered with: anything else is an edit, judged elsewhere.
-SEARCH_TOOLS = frozenset({"find_assets", "find_landmarks", "find_lanes", "asset_properties"})
+SEARCH_TOOLS = frozenset({"find_assets", "find_landmarks", "find_lanes", "asset_properties", "measure_distance"})
 
 # A comparison of distances: "which X is nearest/closest to Y", "how far is X from Y".
 _NEAREST = re.compile(r"\b(nearest|closest|nearer|closer|most near|how far)\b")
@@ -58,7 +58,8 @@ def unanswered(request: Request, calls: Sequence[ToolCall], scene: Scene) -> lis
 
 def _compares_distances(call: ToolCall) -> bool:
     # find_assets near X and find_lanes near X rank by distance too.
-    return "nearest_to" in call.args or (call.tool in ("find_assets", "find_lanes") and "near" in call.args)
+    return call.tool == "measure_distance" or "nearest_to" in call.args or (
+        call.tool in ("find_assets", "find_lanes") and "near" in call.args)
 
 
 def _asks_what_stands_on_road(low: str) -> bool:

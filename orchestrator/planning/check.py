@@ -21,7 +21,7 @@ from functools import cache
 from typing import Any, Literal
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.answers import unanswered
+from drivetwin.orchestrator.planning.answers import SEARCH_TOOLS, unanswered
 from drivetwin.orchestrator.planning.attributes import (
     group_left_behind,
     look_left_out,
@@ -61,7 +61,7 @@ from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.numbers import numbers_in
+from drivetwin.orchestrator.planning.rules.numbers import numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import says_other_place
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
@@ -83,10 +83,13 @@ DESCRIPTION_SCORE, DESCRIPTION_MARGIN = 0.45, 0.08
 NUMBER_TOLERANCE = 0.02
 # Unit conversions a planner may apply to a number: km/h and mph to m/s, feet to metres, per cent.
 UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704, 0.3048, 0.01)
-QUERY_TOOLS = ("find_assets", "find_landmarks", "find_lanes", "asset_properties")
+QUERY_TOOLS = tuple(sorted(SEARCH_TOOLS))
 # Workers that write the storyboard: their readings are the scenario reader's to judge.
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 MAX_READINGS = 3
+# A distance said ("20 m north of the library", "ten feet behind it"): only then may a thing the
+# plan puts by a named place stand further than PLACE_RADIUS_M from it.
+_DISTANCE_SAID = re.compile(r"\d\s*(?:m|metres?|meters?|ft|feet|foot|yards?|km)\b")
 # Tools that act on a list of assets as well as on one.
 _GROUP_TOOLS = ("move_asset", "remove_assets", "set_asset_appearance")
 
@@ -153,7 +156,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     scene = context.scene
     if request.question and effect.edits:
         out.append("you asked a question, but the plan would change the scene")
-    looks_up_places = any(c.tool == "find_landmarks" or "nearest_to" in c.args for c in effect.calls)
+    looks_up_places = any(c.tool in ("find_landmarks", "measure_distance") or "nearest_to" in c.args for c in effect.calls)
     if request.question and request.about_places and not effect.edits and not looks_up_places:
         out.append("you asked about places, but the plan looks up something else")
     if not request.question and effect.calls and not effect.edits:
@@ -196,8 +199,11 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if missing and effect.calls:
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
     if request.place is not None and effect.edits and not effect.environment:
-        far = [a for a in [*effect.added, *effect.removed, *effect.changed] if a.id != "ego"
-               and not _near(scene, a, request.place) and not _names_target(effect, request.place)
+        last = {a.id: a for a in [*effect.added, *effect.changed]}  # where each ends up, after every call
+        far = [a for a in [*last.values(), *effect.removed] if a.id != "ego"
+               and not _near(scene, a, request.place)
+               and not (_DISTANCE_SAID.search(spelt_measures(request.low)) and _names_target(effect, request.place))
+               and not any(_near(scene, a, place) for place in _places_targeted(effect, scene))  # a compound's other place
                and not _brought_closer(scene, a, request.place)  # "3 m towards the fountain"
                and not ((says_other_place(request.low, scene) or _MOVED_AWAY.search(request.low))
                         and _near(scene, scene.asset(a.id) or a, request.place))]  # "... in the wrong car park"
@@ -446,6 +452,17 @@ def _nearness(scene: Scene, place: str) -> Callable[[AssetInstance], bool]:
         return math.hypot(asset.pose.x - target.x, asset.pose.y - target.y) <= PLACE_RADIUS_M
 
     return near
+
+
+def _places_targeted(effect: Effect, scene: Scene) -> list[str]:
+    """The landmarks the plan's calls name as where things go (a compound request names several)."""
+    def strings(value: Any) -> list[str]:
+        if isinstance(value, dict):
+            return [s for v in value.values() for s in strings(v)]
+        return [value] if isinstance(value, str) else []
+
+    found = (scene.landmark(s) for c in effect.calls for s in strings(c.args))
+    return list(dict.fromkeys(lm.name for lm in found if lm is not None))
 
 
 def _names_target(effect: Effect, place: str) -> bool:

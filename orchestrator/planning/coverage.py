@@ -26,6 +26,7 @@ from drivetwin.orchestrator.planning.rules.places import side_of
 from drivetwin.orchestrator.planning.rules.reading import used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.base import ToolCall
+from drivetwin.tools.search import compass_of
 from drivetwin.worlds.scene import AssetInstance, Scene
 
 # Words before a category that point at one already in the scene ("the SUV", "those cones").
@@ -454,13 +455,8 @@ def wrong_direction(masked: str, scene: Scene, moved: Iterable[AssetInstance]) -
         dx, dy = after.pose.x - before.pose.x, after.pose.y - before.pose.y
         length = math.hypot(dx, dy)
         if length > MIN_MOVE_M and (dx * want_x + dy * want_y) / length < math.cos(math.radians(DIRECTION_SLACK_DEG)):
-            out.append(f"you said {word}, but the plan moves {after.id} {_compass_of(dx, dy)}")
+            out.append(f"you said {word}, but the plan moves {after.id} {compass_of(dx, dy)}")
     return out
-
-
-def _compass_of(dx: float, dy: float) -> str:
-    names = ("east", "north-east", "north", "north-west", "west", "south-west", "south", "south-east")
-    return names[round(math.degrees(math.atan2(dy, dx)) / 45.0) % 8]
 
 
 # Lanes named by who uses them, and the lane kind that would be ("biking" is no kind this world has).

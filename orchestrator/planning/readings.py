@@ -140,6 +140,8 @@ def _describe(call: ToolCall) -> str:
     if call.tool == "set_asset_appearance":
         which = ", ".join(a.get("assets", [])) or f"every {str(a.get('category', '')).replace('_', ' ')}"
         return f"paint {which} {a.get('colour') or a.get('material')}"
+    if call.tool == "measure_distance":
+        return f"measure the distance from {a.get('a')} to {a.get('b', 'ego')}"
     if call.tool.startswith("find_") or call.tool == "asset_properties":
         said = ", ".join(f"{v}" for v in a.values() if v is not None)
         return f"look up {call.tool.removeprefix('find_').replace('_', ' ')}" + (f" ({said})" if said else "")

@@ -39,6 +39,17 @@ def test_a_place_named_for_a_removal_limits_it_to_that_place(campus, registry):
     assert session.scene.count("passenger_car") == campus.count("passenger_car")
 
 
+def test_a_thing_meant_by_a_place_is_not_put_far_from_it_because_the_plan_names_the_place(campus, registry):
+    # the plan names the library, but its distance puts the bench 45 m away: only a distance the
+    # person said may take a thing that far from the place they named
+    far = ToolCall(tool="add_asset", args={"category": "bench", "count": 1, "location": {
+        "relation": "in_front_of", "target": "Library entrance", "distance": 45.0}})
+    session, report = submit(campus, registry, Fixed(far), "a bench close to the library would be nice")
+    assert not report.ok and session.scene.count("bench") == campus.count("bench")
+    session, report = submit(campus, registry, Fixed(far), "a bench 45 metres in front of the library")
+    assert report.ok and session.scene.count("bench") == campus.count("bench") + 1
+
+
 def test_a_described_thing_is_not_built_as_another_category(campus, registry):
     session, report = submit(campus, registry, Fixed(add("passenger_car")),
                              "drop in something folks can toss their rubbish into")

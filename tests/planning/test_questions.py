@@ -35,9 +35,30 @@ def test_the_nearest_thing_of_a_kind_is_ranked_from_the_ego(context):
         ("find_assets", {"category": "tree", "nearest_to": "ego"})]
 
 
-def test_how_far_a_place_is_from_the_ego_ranks_that_place_from_the_ego(context):
+def test_how_far_a_place_is_from_the_ego_measures_between_the_two(context):
     assert planned(context, "how far away is the fountain from the ego vehicle?") == [
-        ("find_landmarks", {"nearest_to": "ego", "query": "fountain"})]
+        ("measure_distance", {"a": "fountain", "b": "ego"})]
+
+
+def test_a_distance_between_two_named_things_is_measured_between_them(context):
+    assert planned(context, "what's the gap between the bus stop and the east gate, roughly?") == [
+        ("measure_distance", {"a": "bus stop", "b": "east gate"})]
+    assert planned(context, "how many metres from the hydrant to the bench?") == [
+        ("measure_distance", {"a": "fire_hydrant_1", "b": "bench_1"})]
+
+
+def test_one_thing_named_in_a_distance_question_is_measured_from_the_asker(context):
+    assert planned(context, "how far off is the Student Union from me") == [
+        ("measure_distance", {"a": "Student Union entrance", "b": "ego"})]
+
+
+def test_a_distance_to_the_nearest_of_a_kind_still_ranks_that_kind(context):
+    assert planned(context, "how far is the closest tree from the ego?") == [
+        ("find_assets", {"category": "tree", "nearest_to": "ego"})]
+
+
+def test_how_wide_or_long_a_road_is_lists_its_lanes(context):
+    assert planned(context, "how wide is Campus Drive?") == [("find_lanes", {"road": "Campus Drive"})]
 
 
 def test_things_within_a_stated_radius_of_a_place_use_that_radius(context):
@@ -164,3 +185,12 @@ def test_a_session_asks_or_refuses_rather_than_answering_about_the_wrong_thing(c
     session = Session(campus, Fixed(call("asset_properties", asset="ego")), registry)
     report = session.submit("what does the SUV weigh?")
     assert not report.ok and not report.results
+
+
+def test_a_measured_distance_answers_how_far_and_the_session_changes_nothing(context, campus, registry):
+    action, _ = problems(context, "how far is the library from the fountain?",
+                         call("measure_distance", a="Library entrance", b="fountain"))
+    assert action == "apply"
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("how far is the library from the fountain?")
+    assert report.ok and "128.4 m" in (report.answer or "") and session.scene == campus

@@ -47,6 +47,13 @@ _AROUND = re.compile(r"\b(?:around|near|nearby|close to|next to|beside|by|at|in|
                      r"(?<!number )(?<!count )(?<!list )(?<!names )(?<!amount )(?<!total )of)\b")
 _WITHIN = re.compile(r"\bwithin\s+(?:about\s+)?(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b")
 _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
+# A distance asked between two things ("how far is X from Y", "the distance between X and Y",
+# "how far apart are X and Y"): one thing named is measured from the asker. A superlative asks
+# which thing is nearest instead, and a range ("within 20 m") asks what is around.
+_DISTANCE = re.compile(r"\b(?:how far|distance|far apart|far away|far off|gap between|how many (?:metres|meters|feet|yards) (?:from|to|between|apart))\b")
+_SUPERLATIVE = re.compile(r"\b(?:nearest|closest|furthest|farthest|most near|most close|nearer|closer)\b")
+_ENDS = re.compile(r"\b(?:from|to|and|between|apart)\b")
+_ASKER_ALONE = re.compile(r"^\W*(?:me|us|i|we|here)\W*$")
 # What a question can ask for by kind rather than by name.
 _LANE_KIND = re.compile(r"\blanes?\b")
 # A lane named as where something is: the object of "on", "in", "along" ("in the northbound lane").
@@ -143,8 +150,15 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
     back = _back_reference(r, scene, memory, notes, earlier)
     if _names_nothing(r) and _OF_EACH.search(r.masked) and notes.subject:
         return None  # "bins? benches? how many of each": the earlier clauses already ask it
+    if (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low)) and not r.mentions and not r.ids and (
+            r.lane or _asks_for_lanes(r)):  # "how wide is the lane on Main Street": the lanes' facts
+        return Part(_lanes(r, scene, back), None)
     if r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low):
         return _property(r, scene, named or back)
+    if _DISTANCE.search(low) and not _SUPERLATIVE.search(low) and not _WITHIN.search(low):
+        measured = _distance(r, scene, back)
+        if measured is not None:
+            return measured
     nearest = _NEAREST.search(low)
     if nearest is not None:
         anchor = _anchor_after(r, scene, nearest.end(), back, prefer_preposition=True)
@@ -308,6 +322,30 @@ def _nearest(r: Reading, scene: Scene, anchor: Anchor) -> Part:
     if within is not None:
         args["within"] = float(within.group(1))
     return _found(ToolCall(tool="find_assets", args=args), scene)
+
+
+def _distance(r: Reading, scene: Scene, back: Anchor | None) -> Part | None:
+    """measure_distance between the two things a clause names, each read on its own side of
+    "from", "to", "and" or "between"; one thing named is measured from the asker (the ego)."""
+    ends: list[Anchor] = []
+    for piece in _ENDS.split(r.text.lower()):
+        if _ASKER_ALONE.match(piece):
+            found: Anchor | None = Anchor("asset", EGO_ID)
+        else:
+            side = read(piece, scene)
+            only = next((i for m in side.mentions if (i := _only_instance(side, scene, m)) is not None), None)
+            found = _named(side, scene) or (Anchor("asset", only) if only else None)
+            if found is None and _BACK.search(side.masked):
+                found = back
+        if found is not None and found not in ends:
+            ends.append(found)
+    if not ends:
+        return None
+    if len(ends) == 1:
+        if ends[0].name == EGO_ID:
+            return None
+        ends.append(Anchor("asset", EGO_ID))
+    return Part(ToolCall(tool="measure_distance", args={"a": ends[0].name, "b": ends[1].name}), ends[0])
 
 
 def _around(r: Reading, scene: Scene, anchor: Anchor) -> Part:
