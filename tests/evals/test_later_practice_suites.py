@@ -1,4 +1,4 @@
-"""The later practice suites (practice2, practice3, practice4): valid, big enough in every cell,
+"""The later practice suites (practice2, practice3, practice4, practice5): valid, big enough in every cell,
 written from their sources, and passable. Each was written to its own brief's minimums."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ from pathlib import Path
 from types import ModuleType
 
 import pytest
-from drivetwin.evals import practice2_source, practice3_source, practice4_source, run_suite
+from drivetwin.evals import practice2_source, practice3_source, practice4_source, practice5_source, run_suite
 from drivetwin.evals.case import Suite, load_suite
 
 TASKS = ("search", "addition", "removal", "positioning", "moving", "arrangement", "appearance")
@@ -22,6 +22,7 @@ BRIEFS: dict[str, tuple[int, int, int, ModuleType]] = {
     "practice2": (160, 5, 8, practice2_source),
     "practice3": (200, 6, 9, practice3_source),
     "practice4": (260, 9, 9, practice4_source),
+    "practice5": (260, 9, 9, practice5_source),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)

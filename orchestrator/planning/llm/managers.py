@@ -161,7 +161,11 @@ def _validation_message(exc: Exception) -> str:
     return _short(str(exc))
 
 
-def _short(text: str, limit: int = 300) -> str:
+# A refusal told to the model is cut here: long enough for the list of every Worker's name.
+REFUSAL_CHARS = 500
+
+
+def _short(text: str, limit: int = REFUSAL_CHARS) -> str:
     return text if len(text) <= limit else text[:limit] + "…"
 
 
