@@ -70,7 +70,7 @@ from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
 from drivetwin.worlds.catalog import catalog, placeable_categories
 from drivetwin.worlds.scene import AssetInstance, Scene
-from drivetwin.worlds.surface import point_in_polygon
+from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon
 
 Action = Literal["apply", "ask", "refuse"]
 # Metres from a named place within which an edit counts as "at" it (a parking lot or a building
@@ -203,7 +203,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         far = [a for a in [*last.values(), *effect.removed] if a.id != "ego"
                and not _near(scene, a, request.place)
                and not (_DISTANCE_SAID.search(spelt_measures(request.low)) and _names_target(effect, request.place))
-               and not any(_near(scene, a, place) for place in _places_targeted(effect, scene))  # a compound's other place
+               and not _at_a_target(scene, effect, a)  # a compound's other place or lane
                and not _brought_closer(scene, a, request.place)  # "3 m towards the fountain"
                and not ((says_other_place(request.low, scene) or _MOVED_AWAY.search(request.low))
                         and _near(scene, scene.asset(a.id) or a, request.place))]  # "... in the wrong car park"
@@ -454,15 +454,21 @@ def _nearness(scene: Scene, place: str) -> Callable[[AssetInstance], bool]:
     return near
 
 
-def _places_targeted(effect: Effect, scene: Scene) -> list[str]:
-    """The landmarks the plan's calls name as where things go (a compound request names several)."""
+def _at_a_target(scene: Scene, effect: Effect, asset: AssetInstance) -> bool:
+    """Whether the asset ends up at a landmark or on a lane that one of the plan's calls names
+    (a compound request names several places: "a bus on Main Street and a truck at the JTEKT")."""
     def strings(value: Any) -> list[str]:
         if isinstance(value, dict):
             return [s for v in value.values() for s in strings(v)]
         return [value] if isinstance(value, str) else []
 
-    found = (scene.landmark(s) for c in effect.calls for s in strings(c.args))
-    return list(dict.fromkeys(lm.name for lm in found if lm is not None))
+    for said in {s for c in effect.calls for s in strings(c.args)}:
+        if scene.landmark(said) is not None and _near(scene, asset, said):
+            return True
+        lane = scene.roads.lane(said)
+        if lane is not None and nearest_on_polyline(asset.pose.x, asset.pose.y, lane.centreline).distance <= lane.width:
+            return True
+    return False
 
 
 def _names_target(effect: Effect, place: str) -> bool:

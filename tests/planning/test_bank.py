@@ -98,6 +98,19 @@ def test_generation_is_deterministic_per_world_and_drawn_from_the_scene(world: S
     assert any(c.args.get("location", {}).get("target") == "Observatory door" for e in other for c in e.calls)
 
 
+def test_a_later_frame_adds_examples_and_leaves_every_earlier_one_as_it_was(
+    world: Scene, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from drivetwin.orchestrator.planning.retrieval import bank as bank_module
+
+    with_later = generate(world, scale=0.05)
+    monkeypatch.setattr(bank_module, "LATER_FRAMES", {})
+    without = generate(world, scale=0.05)
+    assert [e.request for e in with_later[: len(without)]] == [e.request for e in without]
+    added = with_later[len(without):]
+    assert added and all(e.calls[0].tool == "measure_distance" for e in added)
+
+
 def test_the_bank_is_cached_as_json_lines_with_its_embeddings_beside_it(bank: list, world: Scene) -> None:
     bank_index(world)
     path = bank_path(world)

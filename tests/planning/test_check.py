@@ -50,6 +50,13 @@ def test_a_thing_meant_by_a_place_is_not_put_far_from_it_because_the_plan_names_
     assert report.ok and session.scene.count("bench") == campus.count("bench") + 1
 
 
+def test_each_thing_of_a_compound_may_stand_at_the_place_or_lane_its_own_call_names(campus, registry):
+    plan = Fixed(add("bus", location={"relation": "in_lane", "target": "main_westbound"}),
+                 add("bench", location={"relation": "at", "target": "fountain"}))
+    session, report = submit(campus, registry, plan, "one bus on Main Street plus a seat by the fountain")
+    assert report.ok and session.scene.count("bus") == campus.count("bus") + 1
+
+
 def test_a_described_thing_is_not_built_as_another_category(campus, registry):
     session, report = submit(campus, registry, Fixed(add("passenger_car")),
                              "drop in something folks can toss their rubbish into")

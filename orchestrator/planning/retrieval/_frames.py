@@ -690,6 +690,37 @@ def search(w: Words) -> Draft | None:
     )
 
 
+DISTANCE_FORMS = (
+    "how far is {a} from {b}?",
+    "distance between {a} and {b}",
+    "how far apart are {a} and {b}",
+    "what's the distance from {a} to {b}",
+    "how many metres from {a} to {b}?",
+    "is {a} far from {b}?",
+    "measure from {a} to {b}",
+    "how far do i have to walk from {a} to {b}",
+)
+DISTANCE_FROM_EGO = ("how far away is {a}?", "how far is {a} from me", "how far is {a} from the ego", "is {a} far?")
+
+
+def distance(w: Words) -> Draft | None:
+    """A distance asked between two places or things, or from the asker (the ego)."""
+    ends = [*w.landmarks, *(a.id for a in w.assets if a.id != "ego")]
+    a = w.pick(ends)
+    said = w.asset_words(a) if a not in w.landmarks else w.place(a)
+    if w.rng.random() < 0.3:
+        request, b, slots = _fill(w.pick(DISTANCE_FROM_EGO), a=said), "ego", [_end(w, a)]
+    else:
+        b = w.pick([e for e in ends if e != a])
+        other = w.asset_words(b) if b not in w.landmarks else w.place(b)
+        request, slots = _fill(w.pick(DISTANCE_FORMS), a=said, b=other), [_end(w, a), _end(w, b)]
+    return Draft(request, [_call("measure_distance", a=a, b=b)], "search", slots, [_need("search", "distance", said)])
+
+
+def _end(w: Words, name: str) -> Slot:
+    return ("place", name) if name in w.landmarks else ("asset", name)
+
+
 # Frame -> how many drafts of it a bank gets, per world (the bank has >= 3,000 in all).
 FRAMES: dict[Callable[[Words], Draft | None], int] = {
     add: 1100,
@@ -704,8 +735,13 @@ FRAMES: dict[Callable[[Words], Draft | None], int] = {
     colour: 200,
     search: 450,
 }
+# Frames added after the bank's first frames, each drawn from a random stream of its own (after
+# the joined drafts), so that adding one leaves every earlier example as it was.
+LATER_FRAMES: dict[Callable[[Words], Draft | None], int] = {
+    distance: 120,
+}
 # Joined drafts: two requests in one ("..., then ..."), for multi-call plans.
 COMPOUNDS = 250
 JOINERS = (" and ", ", then ", " and also ", ". then ", "; ", " and after that ")
 
-__all__ = ["COMPOUNDS", "FRAMES", "JOINERS", "Draft", "Slot"]
+__all__ = ["COMPOUNDS", "FRAMES", "JOINERS", "LATER_FRAMES", "Draft", "Slot"]

@@ -16,12 +16,13 @@ import json
 import os
 import random
 import threading
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 from drivetwin.orchestrator.config import cache_dir
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.retrieval._frames import COMPOUNDS, FRAMES, JOINERS, Draft
+from drivetwin.orchestrator.planning.retrieval._frames import COMPOUNDS, FRAMES, JOINERS, LATER_FRAMES, Draft
 from drivetwin.orchestrator.planning.retrieval._words import Words
 from drivetwin.orchestrator.transaction import first_refusal
 from drivetwin.tools.base import ToolCall
@@ -31,7 +32,11 @@ from drivetwin.worlds.scene import Scene
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 # Bump when the grammar's frames or words change: cached banks of an older version are rebuilt.
-GENERATOR_VERSION = "5"
+GENERATOR_VERSION = "6"
+# The version the random draws are seeded with. A frame added to LATER_FRAMES bumps only
+# GENERATOR_VERSION, so cached banks are rebuilt and every earlier example stays as it was;
+# bump this one too to redraw the whole bank.
+DRAW_VERSION = "5"
 BANK_FOLDER = "banks"
 # Tries per wanted draft before a frame gives up (a dry run refuses some draws).
 TRIES_PER_DRAFT = 3
@@ -61,14 +66,14 @@ class BankError(RuntimeError):
     """A bank file cannot be read or written; the message names the file."""
 
 
-def world_key(scene: Scene) -> str:
+def world_key(scene: Scene, version: str = GENERATOR_VERSION) -> str:
     """The world's name and a hash of what the grammar draws from (places, lanes, first
     assets) and the generator version: a different world or grammar gets a different bank."""
     static = {
         "name": scene.name,
         "landmarks": [lm.model_dump(mode="json") for lm in scene.landmarks],
         "lanes": [lane.id for lane in scene.roads.lanes],
-        "version": GENERATOR_VERSION,
+        "version": version,
     }
     digest = hashlib.sha256(json.dumps(static, sort_keys=True).encode()).hexdigest()[:12]
     safe = "".join(c if c.isalnum() or c in "-_" else "_" for c in scene.name)[:40] or "world"
@@ -87,7 +92,7 @@ def user_bank_path(scene: Scene) -> Path:
 
 
 def _seed(scene: Scene) -> int:
-    return int(world_key(scene).rsplit("-", 1)[-1], 16)
+    return int(world_key(scene, DRAW_VERSION).rsplit("-", 1)[-1], 16)
 
 
 def generate(scene: Scene, registry: ToolRegistry | None = None, scale: float = 1.0) -> list[Example]:
@@ -112,17 +117,20 @@ def generate(scene: Scene, registry: ToolRegistry | None = None, scale: float = 
                 return False
         return True
 
-    drafts: list[Draft] = []
-    if words.landmarks:
-        for frame, wanted in FRAMES.items():
+    def drawn(frames: dict[Callable[[Words], Draft | None], int], words: Words) -> list[Draft]:
+        out: list[Draft] = []
+        for frame, wanted in frames.items() if words.landmarks else ():
             made = 0
             for _ in range(int(wanted * scale) * TRIES_PER_DRAFT):
                 if made >= int(wanted * scale):
                     break
                 draft = frame(words)
                 if draft is not None and valid(draft.calls):
-                    drafts.append(draft)
+                    out.append(draft)
                     made += 1
+        return out
+
+    drafts = drawn(FRAMES, words)
     singles = [d for d in drafts if d.task != "search"]
     for _ in range(int(COMPOUNDS * scale) if len(singles) > 1 else 0):
         first, second = rng.sample(singles, 2)
@@ -136,6 +144,8 @@ def generate(scene: Scene, registry: ToolRegistry | None = None, scale: float = 
         )
         if valid(joined.calls):
             drafts.append(joined)
+    for later in LATER_FRAMES:  # each from a stream of its own: the examples above stay as they were
+        drafts += drawn({later: LATER_FRAMES[later]}, Words(scene, random.Random(f"{_seed(scene)}:{later.__name__}")))
     seen: set[str] = set()
     bank: list[Example] = []
     for draft in drafts:

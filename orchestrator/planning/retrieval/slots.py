@@ -271,7 +271,7 @@ _KEY_KIND = {
     "y": "y",
     "relation": "relation",
 }
-_PLACE_KEYS = ("target", "near", "centre", "query")
+_PLACE_KEYS = ("target", "near", "centre", "query", "a", "b")  # a, b: the ends measure_distance measures between
 # When the request has none of a kind, these stand in for it (a lane is a place, an asset's
 # category names it...); how they convert is in `_stand_in`.
 _STAND_INS = {"place": ("lane", "asset"), "lane": ("place",), "asset": ("category",), "category": ("asset",)}
