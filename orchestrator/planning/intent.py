@@ -75,9 +75,18 @@ _REASON_FIRST = re.compile(
 _POINTS_BACK = re.compile(r"\b(it|its|there|them|they|their|that|those|these|this)\b", re.IGNORECASE)
 
 
+# A label pasted with the request ("JIRA-412: ...", "[QA-7]", "ticket 31:"): it names the task,
+# it is not a number of things or a word to understand.
+_LABEL = re.compile(r"(?:^|(?<=\s))\[?[A-Za-z]{2,}-\d+\]?:?(?=\s|$)|\bticket\s*#?\s*\d+\s*:", re.IGNORECASE)
+# A layout named as a spec's heading ("Ring: 6x cones around the rubble"): a ring of them, one clause.
+_LAYOUT_HEADING = re.compile(r"^\s*(ring|circle|line|row|grid)\s*:", re.IGNORECASE)
+
+
 def without_reason(text: str) -> str:
     """`text` without the clauses that only say why ("so buses can pass", "to test the wipers,
-    so give me rain")."""
+    so give me rain"), without labels pasted with it ("JIRA-412:"), and with a layout's heading
+    read as words ("Ring: 6x cones" is a ring of 6x cones)."""
+    text = _LAYOUT_HEADING.sub(r"\1 of", _LABEL.sub(" ", text)).strip()
     first = _REASON_FIRST.match(text)
     if first is not None and not _POINTS_BACK.search(text[first.end() :]):
         text = text[first.end() :]
@@ -86,10 +95,17 @@ def without_reason(text: str) -> str:
     return _REASON.sub("", text)
 
 
+# The person saying the scene must stay as it is ("no edits", "don't touch anything", "just
+# checking"): whatever the sentence's mood, it asks for information.
+_READ_ONLY = re.compile(r"\b(?:no (?:edits?|changes)|(?:don'?t|do not|dont) (?:touch|change|edit|modify|alter) "
+                        r"(?:anything|a thing|the scene)(?! else)|without (?:touching|changing) anything(?! else)"
+                        r"|just (?:checking|looking|asking|curious)|read[- ]only)\b")
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
     polite = bool(_POLITE.search(low))
-    return bool(_INFO.search(low) or _LOOKUP.match(low)) or (
+    return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
         not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")))
 
 

@@ -1,5 +1,5 @@
 """Clock times as people say them: "18:30", "6.15 pm", "7 o'clock", "half past ten at night",
-"quarter to seven", "twenty past six in the evening", "midnight".
+"half seven" (British), "quarter to seven", "twenty past six in the evening", "midnight".
 
 One reader for the rule planner (which sets the time) and the plan check (which compares the
 time a plan sets with the one the words name), so the two cannot disagree about what a
@@ -26,6 +26,8 @@ _MORNING = re.compile(r"^\s*(am|a\.m\.|in the morning)\b")
 _DIGITAL = re.compile(r"(?<![\w.:])(\d{1,2})\s*(?:([:.])\s*(\d\d))?\s*(am|pm|a\.m\.|p\.m\.|o'?\s?clock|h|hrs|hours)?(?![\w:])")
 # "half past ten", "a quarter to seven", "twenty past six", "10 past 4".
 _SPOKEN = re.compile(rf"\b(half|(?:a )?quarter|{_HOUR}(?: minutes)?) (past|after|to|before) {_HOUR}\b")
+# "half seven": half past seven, as said in Britain (never "half a metre": only an hour follows).
+_HALF_HOUR = re.compile(rf"\bhalf {_HOUR}\b(?! (?:past|after|to|before)\b)")
 _NAMED = {"midnight": (0, 0), "noon": (12, 0), "midday": (12, 0)}
 # "18.30" without a suffix is a clock time only when the sentence is about time.
 _TIME_TOPIC = re.compile(r"\b(time|clock)\b")
@@ -78,6 +80,10 @@ def clock_time(text: str) -> ClockTime | None:
         else:
             minute = minutes
         return ClockTime(_in_half_of_day(hour, text[spoken.end():]), minute, spoken.group(0), *spoken.span())
+    half = _HALF_HOUR.search(text)
+    if half is not None and _number(half.group(1)) <= 12:
+        hour = _in_half_of_day(_number(half.group(1)), text[half.end():])
+        return ClockTime(hour, 30, half.group(0), *half.span())
     for m in _DIGITAL.finditer(text):
         separator, said_minutes, suffix = m.group(2), m.group(3), m.group(4)
         if separator == "." and suffix is None and not _TIME_TOPIC.search(text):

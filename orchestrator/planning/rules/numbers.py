@@ -136,8 +136,8 @@ def spacing_said(text: str) -> float | None:
     return float(said.group(1)) if said else None
 
 
-# The radius of a ring or a circle driven ("a radius of 3 m", "at a 3 m radius", "radius 5").
-RADIUS = re.compile(r"\bradius (?:of )?(\d+(?:\.\d+)?)(?:\s*(?:m|metres?|meters?)\b)?|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?\s*radius\b")
+# The radius of a ring or a circle driven ("a radius of 3 m", "at a 3 m radius", "radius 5", "r=3 m").
+RADIUS = re.compile(r"\b(?:radius|r\s*=)\s*(?:of )?(\d+(?:\.\d+)?)(?:\s*(?:m|metres?|meters?)\b)?|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?\s*radius\b")
 
 
 def radius_said(text: str) -> float | None:

@@ -36,6 +36,8 @@ def normalise(text: str) -> str:
         out = out.replace(us, uk)
     # "more near", "most close": the comparative and superlative as learners build them
     out = re.sub(r"\b(more|most) (near|close)\b", lambda m: m.group(2).removesuffix("e") + ("er" if m.group(1) == "more" else "est"), out)
+    # "6x traffic_cone", "4 x barriers": a count in a spec's notation ("3x2" stays a grid's size)
+    out = re.sub(r"\b(\d+)\s?x\s+(?=[a-z])", r"\1 ", out)
     # A comma inside a number ("10,000") is a thousands separator, not a clause break.
     return re.sub(r"(?<!\d),|,(?!\d{3}(?!\d))", " , ", out.replace("’", "'"))
 
