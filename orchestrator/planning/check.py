@@ -52,6 +52,7 @@ from drivetwin.orchestrator.planning.coverage import (
     off_the_side,
     partial_removal,
     unknown_places,
+    unknown_things,
     unpointed,
     wrong_direction,
 )
@@ -266,6 +267,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     if request.place is None and request.lane is None and (strays := unpointed(request.masked, scope, scene)):
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
     out += unknown_places(request.masked, effect.calls, scene)
+    out += unknown_things(request.masked, effect.calls, scene)
     return out
 
 

@@ -466,6 +466,34 @@ _KIND_OF_LANE = re.compile(rf"\b({'|'.join(_LANE_KINDS)}) lane\b")
 _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswalk) ([a-z]|\d+)\b(?!')")
 
 
+# Where a request names the thing it wants: the object of a verb of adding, or what a question
+# asks after ("add a giraffe", "where do the helicopters land", "is there a tram").
+_THING_WANTED = re.compile(
+    r"\b(?:add|put|place|spawn|bring|drop|insert|create|want|need)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
+    r"of|\d+)\s+){0,3}([a-z]+)\b"
+    r"|\b(?:where (?:is|are|do|does|did|can|will)|how many|are there(?: any)?|is there(?: an?| any)?)\s+"
+    r"(?:(?:the|a|an|any|my|our)\s+)?([a-z]+)\b")
+
+
+def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
+    """Things asked for that this world has no word for ("add a giraffe") and that no call
+    mentions: a plan that does something else instead is not what was meant. A word that only
+    describes a known thing ("a shiny bench") is not one; the words were spelling-repaired already."""
+    vocab = vocabulary(scene)
+    said = " ".join(str(c.args) for c in calls).lower()
+    out = []
+    for m in _THING_WANTED.finditer(masked):
+        word = m.group(1) or m.group(2)
+        head = masked[m.end():].split()[:1]
+        if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or ph.find_categories(word) \
+                or is_known(word, vocab) or word in said:
+            continue
+        if head and ph.find_categories(head[0]):
+            continue  # "a shiny bench": the word describes a thing the world has
+        out.append(f"there is no {word!r} in this world")
+    return list(dict.fromkeys(out))
+
+
 def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
     """Place names the world does not know ("near the gym") that no call mentions, each said with
     what the world has of its kind where it has some ("parking lot c": "there are lot a, lot b")."""
@@ -514,6 +542,7 @@ __all__ = [
     "off_the_side",
     "partial_removal",
     "unknown_places",
+    "unknown_things",
     "unpointed",
     "wrong_direction",
 ]

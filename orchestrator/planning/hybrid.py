@@ -11,7 +11,9 @@ evidence); failing that the person is asked one short question with the readings
 words (`Plan.question`). The losing candidates go in `Plan.alternatives`.
 When only the rules can plan it, the old rule applies: a sure rule plan is used, an unsure one
 goes to the LLM unless the model is small (SMALL_MODEL_PARAMETERS), whose edits spoil more
-unsure rule plans than they repair. Which path was taken, and why, is the first trace line.
+unsure rule plans than they repair. When nothing but a small model can plan an edit, its plan is
+offered as a reading to confirm, not applied: on the suites such plans were right about as
+often as wrong. Which path was taken, and why, is the first trace line.
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ from __future__ import annotations
 import time
 from typing import Any
 
+from drivetwin.orchestrator.planning.answers import SEARCH_TOOLS
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Planner, PlanningError, Question, Reading, TraceStep
 from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 from drivetwin.orchestrator.planning.readings import canonical, describe, dry_run, same_outcome
@@ -169,6 +172,8 @@ class HybridPlanner:
                 return self._mark(rule_plan, "fallback", started, f"{why}; the LLM failed ({exc}); using the rule plan")
             raise PlanningError(f"{exc} (rule planner: {why})") from exc
         rule_steps = rule_plan.trace if rule_plan is not None else []
+        if rule_plan is None and self.small_model() and _edits(llm_plan):
+            return self._ask([llm_plan], f"{why}; only the small LLM could plan it", started)
         return self._mark(llm_plan, "llm", started, why, [p for p in [rule_plan] if p is not None], rule_steps)
 
     def _llm_or_ask(
@@ -202,14 +207,20 @@ class HybridPlanner:
                     return self._mark(
                         candidate, "tie-break", started, f"{why}; the LLM agrees with {candidate.planner}", others
                     )
-            if not candidates:
+            if not candidates and not (self.small_model() and _edits(llm_plan)):
                 return self._mark(llm_plan, "llm", started, why)
+            if not candidates:  # a small model's guess at what nothing else could read: it is asked
+                why = f"{why}; only the small LLM could plan it"
             candidates = [*candidates, llm_plan]
         readings = [
             c for c in candidates if c.calls and (c.planner != "retrieval" or c.confidence >= RETRIEVAL_READING)
         ]
         if not readings:
             raise PlanningError(_not_understood(rules_said))
+        return self._ask(readings, why, started)
+
+    def _ask(self, readings: list[Plan], why: str, started: float) -> Plan:
+        """One short question offering `readings` (the first MAX_READINGS) in plain words."""
         question = Question(
             text="I am not sure what you mean. Did you mean:",
             readings=[Reading(text=describe(c.calls), calls=c.calls) for c in readings[:MAX_READINGS]],
@@ -240,6 +251,11 @@ class HybridPlanner:
                 "alternatives": [*plan.alternatives, *alternatives],
             }
         )
+
+
+def _edits(plan: Plan) -> bool:
+    """Whether the plan would change the scene (a search changes nothing, so needs no confirming)."""
+    return any(c.tool not in SEARCH_TOOLS for c in plan.calls)
 
 
 def _not_understood(rules_said: str) -> str:

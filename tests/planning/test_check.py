@@ -102,3 +102,16 @@ def test_a_description_of_a_passenger_carrier_is_not_met_by_a_car(session):
     report = session.submit("add a big vehicle that carries lots of passengers near the library")
     assert not report.ok and "bus" in (report.error or (report.question.text if report.question else ""))
     assert session.scene.count("passenger_car") == 2
+
+
+def test_a_thing_the_world_has_no_word_for_is_not_met_by_another_edit(campus, registry):
+    daytime = Fixed(ToolCall(tool="set_time_of_day", args={"time": "daytime"}))
+    session, report = submit(campus, registry, daytime, "please add a camel beside the library for open day")
+    assert not report.ok and session.scene == campus and "there is no 'camel'" in (report.error or "")
+    lookup = Fixed(ToolCall(tool="find_assets", args={}))
+    _, report = submit(campus, registry, lookup, "where do the hovercraft usually park?")
+    assert not report.ok and "there is no 'hovercraft'" in (report.error or "")
+    # a word that only describes a thing the world has is no unknown thing
+    bench = Fixed(add("bench", location={"relation": "at", "target": "fountain"}))
+    _, report = submit(campus, registry, bench, "add a wooden bench at the fountain")
+    assert "there is no" not in (report.error or "")

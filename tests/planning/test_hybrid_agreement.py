@@ -92,10 +92,22 @@ def test_a_small_model_breaks_no_tie_the_person_chooses(context: PlanContext) ->
     assert [r.calls for r in plan.question.readings] == [RAIN, SNOW]
 
 
-def test_a_small_model_still_plans_what_nothing_else_could(context: PlanContext) -> None:
+def test_a_small_models_edit_that_nothing_else_could_plan_is_offered_to_confirm(context: PlanContext) -> None:
     llm = SmallModel("llm", SNOW)
     plan = hybrid(Fixed("rules", None), Fixed("retrieval", None), llm).plan("x", context)
-    assert path(plan) == "path: llm" and plan.calls == SNOW and llm.asked == 1
+    assert path(plan) == "path: ask" and plan.calls == [] and llm.asked == 1
+    assert plan.question is not None and [r.calls for r in plan.question.readings] == [SNOW]
+
+
+def test_a_small_models_search_that_nothing_else_could_plan_is_answered(context: PlanContext) -> None:
+    lookup = [ToolCall(tool="find_assets", args={"category": "tree"})]
+    plan = hybrid(Fixed("rules", None), Fixed("retrieval", None), SmallModel("llm", lookup)).plan("x", context)
+    assert path(plan) == "path: llm" and plan.calls == lookup
+
+
+def test_a_large_models_plan_of_what_nothing_else_could_plan_is_used(context: PlanContext) -> None:
+    plan = hybrid(Fixed("rules", None), Fixed("retrieval", None), Fixed("llm", SNOW)).plan("x", context)
+    assert path(plan) == "path: llm" and plan.calls == SNOW
 
 
 def test_disagreement_nobody_settles_becomes_a_question_with_plain_readings(context: PlanContext) -> None:
