@@ -22,27 +22,44 @@ from typing import Any
 
 from drivetwin.evals.suite_source import dsl
 from drivetwin.evals.suite_source.dsl import (
+    act,
     add,
+    added,
     arrange,
     behaviour,
     call,
+    clock,
     delta,
     does,
+    drives,
     env,
+    every,
     exactly,
+    find,
     gone,
     in_lane,
+    lights,
+    line,
     loc,
     looks,
+    marks,
     moved,
     near,
+    nothing_changed,
     only,
+    paint,
+    place,
     present,
+    refused,
     relative,
+    remove,
+    ring,
     says,
     shape,
+    shift,
     step,
     surface,
+    weather,
 )
 
 Json = dict[str, Any]
@@ -56,82 +73,7 @@ SOUTH_LIGHTS = tuple(f"street_light_{n}" for n in (2, 4, 6, 8, 10, 12))
 TREES = ("tree_1", "tree_2", "tree_3", "tree_4")
 
 
-# Small builders of our own ----------------------------------------------------------------
-def refused() -> Json:
-    return {"kind": "status", "accepted": False}
-
-
-def nothing_changed() -> Json:
-    return only()
-
-
-def every(check: Json, n: int | None = None) -> Json:
-    """The same selecting check, passed by every selected asset (and at least n of them)."""
-    out = {**check, "require_all": True}
-    if n is not None:
-        out["min_count"] = n
-    return out
-
-
-def added(check: Json) -> Json:
-    return {**check, "scope": "added"}
-
-
-def ring(category: Any, around: str | None = None, n: int = 3) -> Json:
-    return shape("ring", category, around=around, n=n, tolerance=1.5)
-
-
-def line(category: Any, n: int = 3, spacing: tuple[float, float] | None = None) -> Json:
-    return shape("line", category, n=n, tolerance=1.0, spacing=spacing)
-
-
-def drives(category: Any = None, *, asset: str | None = None, lane: str | None = None,
-           speed: tuple[float | None, float | None] = (None, None), every_one: bool = False) -> Json:
-    out = does("drive_lane", category, asset=asset, lane=lane, speed_min=speed[0], speed_max=speed[1])
-    return {**out, "require_all": True} if every_one else out
-
-
-def place(asset: str, where: Json, yaw: float | None = None) -> Json:
-    return call("place_asset", asset=asset, location=where, yaw_deg=yaw)
-
-
-def shift(asset: str, **kw: Any) -> Json:
-    return call("move_asset", asset=asset, **kw)
-
-
-def act(asset: str, kind: str, **kw: Any) -> Json:
-    return call("set_behaviour", asset=asset, behaviour=behaviour(kind, **kw))
-
-
-def remove(*ids: str, **kw: Any) -> Json:
-    return call("remove_assets", assets=list(ids) if ids else None, **kw)
-
-
-def find(**kw: Any) -> Json:
-    return call("find_assets", **kw)
-
-
-def marks(**kw: Any) -> Json:
-    return call("find_landmarks", **kw)
-
-
-def weather(kind: str, intensity: float | None = None) -> Json:
-    return call("set_weather", kind=kind, intensity=intensity)
-
-
-def clock(time: str) -> Json:
-    return call("set_time_of_day", time=time)
-
-
-def lights(**kw: Any) -> Json:
-    return call("set_lighting", **kw)
-
-
-def paint(*ids: str, category: str | None = None, colour: str | None = None, material: str | None = None) -> Json:
-    return call("set_asset_appearance", assets=list(ids) if ids else None, category=category,
-                colour=colour, material=material)
-
-
+# Small builders of our own (the shared ones are dsl's) ------------------------------------
 def case(
     task: str,
     grade: str,
