@@ -484,12 +484,14 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     out = []
     for m in _THING_WANTED.finditer(masked):
         word = m.group(1) or m.group(2)
-        head = masked[m.end():].split()[:1]
-        if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or ph.find_categories(word) \
-                or is_known(word, vocab) or word in said:
+        if masked[m.end():m.end() + 1] == "-":
+            continue  # "a mid-scale robot": part of a word that describes what follows
+        after = masked[m.end():].split()[:3]
+        if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or word in ph.NUMBER_WORDS \
+                or ph.find_categories(word) or is_known(word, vocab) or word in said:
             continue
-        if head and ph.find_categories(head[0]):
-            continue  # "a shiny bench": the word describes a thing the world has
+        if after[:1] == ["of"] or any(ph.find_categories(w) for w in after):
+            continue  # "a pile of rubble", "a shiny new bench": the word measures or describes a known thing
         out.append(f"there is no {word!r} in this world")
     return list(dict.fromkeys(out))
 

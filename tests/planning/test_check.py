@@ -111,7 +111,9 @@ def test_a_thing_the_world_has_no_word_for_is_not_met_by_another_edit(campus, re
     lookup = Fixed(ToolCall(tool="find_assets", args={}))
     _, report = submit(campus, registry, lookup, "where do the hovercraft usually park?")
     assert not report.ok and "there is no 'hovercraft'" in (report.error or "")
-    # a word that only describes a thing the world has is no unknown thing
-    bench = Fixed(add("bench", location={"relation": "at", "target": "fountain"}))
-    _, report = submit(campus, registry, bench, "add a wooden bench at the fountain")
-    assert "there is no" not in (report.error or "")
+    # a word that only describes, counts or measures a thing the world has is no unknown thing
+    bench = Fixed(add("bench", location={"relation": "at", "target": "fountain"}, count=3))
+    for prompt in ("add a wooden bench at the fountain", "add three benches at the fountain",
+                   "add a heap of benches at the fountain", "add a bright-red park bench at the fountain"):
+        _, report = submit(campus, registry, bench, prompt)
+        assert "there is no" not in (report.error or ""), prompt
