@@ -466,13 +466,11 @@ _KIND_OF_LANE = re.compile(rf"\b({'|'.join(_LANE_KINDS)}) lane\b")
 _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswalk) ([a-z]|\d+)\b(?!')")
 
 
-# Where a request names the thing it wants: the object of a verb of adding, or what a question
-# asks after ("add a giraffe", "where do the helicopters land", "is there a tram").
+# Where a request names the thing it wants added: the object of a verb of adding ("add a giraffe").
+# (A question about such a thing changes nothing, so it is left to the planners' own refusals.)
 _THING_WANTED = re.compile(
     r"\b(?:add|put|place|spawn|bring|drop|insert|create|want|need)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
-    r"of|\d+)\s+){0,3}([a-z]+)\b"
-    r"|\b(?:where (?:is|are|do|does|did|can|will)|how many|are there(?: any)?|is there(?: an?| any)?)\s+"
-    r"(?:(?:the|a|an|any|my|our)\s+)?([a-z]+)\b")
+    r"of|\d+)\s+){0,3}([a-z]+)\b")
 
 
 def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
@@ -483,7 +481,7 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     said = " ".join(str(c.args) for c in calls).lower()
     out = []
     for m in _THING_WANTED.finditer(masked):
-        word = m.group(1) or m.group(2)
+        word = m.group(1)
         if masked[m.end():m.end() + 1] == "-":
             continue  # "a mid-scale robot": part of a word that describes what follows
         after = masked[m.end():].split()[:3]

@@ -108,8 +108,8 @@ def test_a_thing_the_world_has_no_word_for_is_not_met_by_another_edit(campus, re
     daytime = Fixed(ToolCall(tool="set_time_of_day", args={"time": "daytime"}))
     session, report = submit(campus, registry, daytime, "please add a camel beside the library for open day")
     assert not report.ok and session.scene == campus and "there is no 'camel'" in (report.error or "")
-    lookup = Fixed(ToolCall(tool="find_assets", args={}))
-    _, report = submit(campus, registry, lookup, "where do the hovercraft usually park?")
+    trees = Fixed(add("tree", location={"relation": "at", "target": "fountain"}))
+    _, report = submit(campus, registry, trees, "we want a hovercraft at the fountain")
     assert not report.ok and "there is no 'hovercraft'" in (report.error or "")
     # a word that only describes, counts or measures a thing the world has is no unknown thing
     bench = Fixed(add("bench", location={"relation": "at", "target": "fountain"}, count=3))
