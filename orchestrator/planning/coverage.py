@@ -488,8 +488,8 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or word in ph.NUMBER_WORDS \
                 or ph.find_categories(word) or is_known(word, vocab) or word in said:
             continue
-        if after[:1] == ["of"] or any(ph.find_categories(w) for w in after):
-            continue  # "a pile of rubble", "a shiny new bench": the word measures or describes a known thing
+        if after[:1] == ["of"] or ph.find_categories(" ".join(after)) or (after and len(after[0]) > 2 and after[0] in said):
+            continue  # "a pile of rubble", "a shiny new bench", "the scanned kerb stone" the plan adds: it describes
         out.append(f"there is no {word!r} in this world")
     return list(dict.fromkeys(out))
 
