@@ -45,6 +45,8 @@ from drivetwin.orchestrator.planning.coverage import (
     back_reference,
     definite_but_added,
     environment_left_out,
+    excepted_ids,
+    excepted_touched,
     indefinite_but_moved,
     inside_building,
     missing_categories,
@@ -255,7 +257,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
         out += environment_left_out(request.low, effect.calls)
     # a number, a place, a lane, a state, "fewer" or a side limits how many go
     limited = bool(request.numbers or request.place or request.lane or request.state or FEWER_WORDS.search(request.low)
-                   or md.outer_direction(request.low))  # "the westernmost lamp"
+                   or md.outer_direction(request.low) or request.excepted)  # "the westernmost lamp", "not the ego"
     out += partial_removal(request.masked, scope, scene, limited)
     out += [f"you asked for a new {c.replace('_', ' ')}, but the plan moves one that is there"
             for c in indefinite_but_moved(request.masked, scope, scene)]
@@ -268,6 +270,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
     out += unknown_places(request.masked, effect.calls, scene)
     out += unknown_things(request.masked, effect.calls, scene)
+    out += excepted_touched(request.excepted, request.categories, scope, scene)
     return out
 
 
@@ -281,7 +284,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
         out += not_around(request.low, _centre(scene, request.place), effect.added)
     out += wrong_heading(request.low, placed)
     out += wrong_side(request.low, scene, effect.added)
-    if not effect.removed and not effect.added:
+    if not effect.removed and not effect.added and not request.excepted:  # "all but the SUV" is not all
         out += some_of_all(request.masked, [a for a in effect.changed if a.id != "ego"], scene, request.place, PLACE_RADIUS_M)
     if request.lane is not None and placed and not request.question:
         out += off_lane(request.lane, scene, placed)
@@ -504,6 +507,8 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
              and (asset := scene.asset(str(c.args.get("asset")))) is not None and asset.category in request.categories]
     if fresh and not effect.added:
         out.append(Reading(text=describe(fresh), calls=fresh))
+    if request.excepted and (spared := _sparing(effect, excepted_ids(request.excepted, request.categories, scene))):
+        out.append(Reading(text=describe(spared), calls=spared))
     if effect.removed and (request.place or request.state):
         keep = [a.id for a in effect.removed
                 if (request.place is None or _near(scene, a, request.place))
@@ -512,6 +517,25 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
             out.append(Reading(text="remove only " + ", ".join(keep), calls=[
                 ToolCall(tool="remove_assets", args={"assets": keep})]))
     return out
+
+
+def _sparing(effect: Effect, spared: set[str]) -> list[ToolCall]:
+    """The plan's calls without what they would do to the `spared` ids ("..., not the ego");
+    empty when they touch none of them or nothing else is left to do."""
+    removed = {a.id: a for a in effect.removed}
+    out: list[ToolCall] = []
+    for call in effect.calls:
+        args = dict(call.args)
+        if call.tool == "remove_assets" and "assets" not in args:  # by kind: the ones it took
+            args = {"assets": [i for i, a in removed.items() if a.category == args.get("category")]}
+        if "assets" in args:
+            args["assets"] = [i for i in args["assets"] if i not in spared]
+            if not args["assets"]:
+                continue
+        elif str(args.get("asset", "")) in spared:
+            continue
+        out.append(call.model_copy(update={"args": args}))
+    return out if out and out != list(effect.calls) else []
 
 
 def _removal(call: ToolCall, request: Request, scene: Scene) -> ToolCall | None:

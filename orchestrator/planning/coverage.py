@@ -23,7 +23,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.places import side_of
-from drivetwin.orchestrator.planning.rules.reading import used_as_verb
+from drivetwin.orchestrator.planning.rules.reading import find_place, used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import compass_of
@@ -494,6 +494,71 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     return list(dict.fromkeys(out))
 
 
+# Where an excepted thing's own words end and the place that picks it out begins ("the one | by the bench").
+_PICKED_BY = re.compile(r"\s(?:by|near|next to|beside|at|in|on|behind|in front of|close to)\s")
+# Within this of the place named, a thing said in the plural ("the ones by the fountain") is excepted.
+EXCEPTED_RADIUS_M = 10.0
+
+
+def excepted_touched(excepted: Iterable[str], categories: Iterable[str], scope: Scope, scene: Scene) -> list[str]:
+    """Things the request says it does not mean ("..., not the ego", "except the one by the bench")
+    that the plan changes or removes (see `excepted_ids`)."""
+    acted = {a.id for a in scope.touched if a not in scope.added}
+    out = []
+    for said in excepted:
+        hit = sorted(acted & _picked_out(said, set(categories), scene))
+        if hit:
+            out.append(f"you said not {said}, but the plan changes {', '.join(hit)}")
+    return out
+
+
+def excepted_ids(excepted: Iterable[str], categories: Iterable[str], scene: Scene) -> set[str]:
+    """The ids of the things excepted. "One(s)" stands for the kinds the rest of the request
+    names; a thing picked out by a place is the one of its kind nearest it. Words that pick out
+    nothing this world can find ("not the ones at the ends") are not judged."""
+    return {i for said in excepted for i in _picked_out(said, set(categories), scene)}
+
+
+def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str]:
+    """The ids of the things `said` ("the ego", "the suv", "the one by the bench") names in the scene."""
+    low = f" {ph.normalise(said)} "
+    cut = _PICKED_BY.search(low)
+    head, where = (low[: cut.start()], low[cut.start() :]) if cut else (low, "")
+    if ph.has_any(head, ph.EGO_WORDS) or re.search(r"\bego\b", head):
+        return {"ego"}
+    ids = {a.id for a in scene.all_assets() if re.search(rf"\b{re.escape(a.id)}\b", said.lower())}
+    if ids:
+        return ids
+    mentions = ph.find_categories(head)
+    kinds = {m.category for m in mentions} or (categories if re.search(r"\bones?\b", head) else set())
+    if md.compass_direction(head) is not None:
+        return set()  # "the west ones": a side, judged by the planners' own reading of it
+    members = [a for a in scene.all_assets() if a.category in kinds and a.id != "ego"]
+    if not where.strip():
+        return {a.id for a in members}
+    point = _point_named(where, scene)
+    if point is None or not members:
+        return set()
+    by_distance = sorted(members, key=lambda a: math.hypot(a.pose.x - point[0], a.pose.y - point[1]))
+    if re.search(r"\bones\b", head) or any(m.plural for m in mentions):
+        return {a.id for a in by_distance if math.hypot(a.pose.x - point[0], a.pose.y - point[1]) <= EXCEPTED_RADIUS_M}
+    return {by_distance[0].id}
+
+
+def _point_named(where: str, scene: Scene) -> tuple[float, float] | None:
+    """The place a few words name: a landmark, else the nearest-named thing of a kind ("the bench")."""
+    place = find_place(scene, where)
+    if place is not None:
+        landmark = scene.landmark(place[0])
+        if landmark is not None:
+            return landmark.position[0], landmark.position[1]
+    for mention in ph.find_categories(where):
+        found = [a for a in scene.all_assets() if a.category == mention.category]
+        if len(found) == 1:
+            return found[0].pose.x, found[0].pose.y
+    return None
+
+
 def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
     """Place names the world does not know ("near the gym") that no call mentions, each said with
     what the world has of its kind where it has some ("parking lot c": "there are lot a, lot b")."""
@@ -534,6 +599,8 @@ __all__ = [
     "back_reference",
     "definite_but_added",
     "environment_left_out",
+    "excepted_ids",
+    "excepted_touched",
     "indefinite_but_moved",
     "inside_building",
     "missing_categories",

@@ -12,6 +12,8 @@ import re
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
+    # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
+    r"|(?:must|should|may) ?n(?:o|')t (?:appear|be (?:there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)"
     r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much"
@@ -82,11 +84,51 @@ _LABEL = re.compile(r"(?:^|(?<=\s))\[?[A-Za-z]{2,}-\d+\]?:?(?=\s|$)|\bticket\s*#
 _LAYOUT_HEADING = re.compile(r"^\s*(ring|circle|line|row|grid)\s*:", re.IGNORECASE)
 
 
+# A clause that names what is *not* meant ("..., not the ego", "but not the west ones", "except
+# the one by the bench", "rather than in the car park", "instead of sitting there"): the request
+# without it says what to do; the things it names are excepted (see `excepted`). "Instead of the
+# bin" is left alone: it asks for a swap, the bin included.
+_DETERMINER = r"(?:the|that|this|those|these|a|an|any|my|our|its|their|his|her|ego\b|passenger_car|[a-z]+_\d)"
+_CONTRAST = re.compile(
+    rf"(?:,\s*(?:but\s+|and\s+)?|\s+but\s+)(?:not|never)\s+(?=(?:{_DETERMINER}|in|at|on|by|near)\b)"
+    rf"|\s+(?:except(?:\s+for)?|other\s+than|apart\s+from|excluding|save\s+for)\s+(?={_DETERMINER})"
+    r"|\s+rather\s+than\s+(?=(?:the|that|this|those|these|a|an|in|at|on|by|near|its|their)\b)"
+    r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
+    re.IGNORECASE,
+)
+# Where a contrast clause ends: the next punctuation, or a dash between clauses.
+_CONTRAST_END = re.compile(r"\s+[-\u2013\u2014]\s+|[,.;!?]|$")
+
+
+def _contrasts(text: str) -> list[tuple[int, int, int]]:
+    """(start, start of the excepted words, end) of each contrast clause after the request's first words."""
+    out = []
+    for m in _CONTRAST.finditer(text):
+        if len(text[: m.start()].split()) < 2:
+            continue  # "Hmm, not the bus - the truck": a correction, said first, stays as it is
+        end = _CONTRAST_END.search(text, m.end())
+        out.append((m.start(), m.end(), end.start() if end else len(text)))
+    return out
+
+
+def excepted(text: str) -> list[str]:
+    """The things a request says it does not mean ("remove the cars, not the ego" -> ["the ego"])."""
+    return [text[said:end].strip() for _, said, end in _contrasts(text) if text[said:end].strip()]
+
+
+def without_contrast(text: str) -> str:
+    """`text` without the clauses naming what is not meant (`excepted` reads those)."""
+    for start, _, end in reversed(_contrasts(text)):
+        text = text[:start] + text[end:]
+    return text
+
+
 def without_reason(text: str) -> str:
     """`text` without the clauses that only say why ("so buses can pass", "to test the wipers,
-    so give me rain"), without labels pasted with it ("JIRA-412:"), and with a layout's heading
-    read as words ("Ring: 6x cones" is a ring of 6x cones)."""
-    text = _LAYOUT_HEADING.sub(r"\1 of", _LABEL.sub(" ", text)).strip()
+    so give me rain") or what is not meant (", not the ego"), without labels pasted with it
+    ("JIRA-412:"), and with a layout's heading read as words ("Ring: 6x cones" is a ring of 6x
+    cones)."""
+    text = without_contrast(_LAYOUT_HEADING.sub(r"\1 of", _LABEL.sub(" ", text))).strip()
     first = _REASON_FIRST.match(text)
     if first is not None and not _POINTS_BACK.search(text[first.end() :]):
         text = text[first.end() :]
@@ -109,4 +151,4 @@ def asks(low: str) -> bool:
         not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")))
 
 
-__all__ = ["ADD_WORDS", "FEWER_WORDS", "REMOVE_WORDS", "asks", "without_reason"]
+__all__ = ["ADD_WORDS", "FEWER_WORDS", "REMOVE_WORDS", "asks", "excepted", "without_contrast", "without_reason"]

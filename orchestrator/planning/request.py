@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks, without_reason
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks, excepted, without_reason
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -52,11 +52,13 @@ class Request:
     about_places: bool = False
     low: str = ""
     masked: str = ""
+    excepted: tuple[str, ...] = ()  # what the request says it does not mean (", not the ego")
 
 
 def read_request(prompt: str, scene: Scene) -> Request:
     """The request's signals: polarity, categories, numbers, place, lane, state and mood."""
-    low = ph.normalise(without_reason(repair(prompt, scene).text)).strip()
+    repaired = repair(prompt, scene).text
+    low = ph.normalise(without_reason(repaired)).strip()
     place = _named_place(scene, low)
     masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
@@ -83,7 +85,8 @@ def read_request(prompt: str, scene: Scene) -> Request:
         "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) else None
     )
     return Request(prompt, question, polarity, categories, numbers, place[0] if place else None,
-                   lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)), low, masked)
+                   lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)), low, masked,
+                   tuple(excepted(repaired)))
 
 
 # A relative clause right after a noun: it says what the thing is ("a vehicle that carries ...").

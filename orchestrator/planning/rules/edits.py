@@ -369,7 +369,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         return [ToolCall(tool="move_asset", args={"asset": asset, "forward": -abs(step)})]
     if r.has(lx.STOP_WORDS) and motion in ("vehicle", "walker") and not r.has(("stop sign",)):
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
-    deg = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:deg|°)", r.low)
+    deg = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:deg|°)", r.low) or (_bare_angle(r.low) if r.has(("turn", "rotate", "spin")) else None)
     facing = md.facing_direction(r.masked)
     if facing is not None or (
         r.has(lx.TURN_WORDS)
@@ -431,6 +431,16 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]
     return None
+
+
+# A figure with no unit after it ("rotate the hydrant 45ish", "turn it 30"): for a turn, degrees.
+_BARE_FIGURE = re.compile(rf"({nb.NUMBER})(?:-?ish)?(?!\s*(?:m\b|metres?|meters?|km|s\b|sec|seconds?|mph|kph|kmh|%|x\b))")
+
+
+def _bare_angle(low: str) -> re.Match[str] | None:
+    """The one unitless figure of a turn request, when there is exactly one."""
+    found = list(_BARE_FIGURE.finditer(low))
+    return found[0] if len(found) == 1 else None
 
 
 __all__ = ["behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]

@@ -88,9 +88,11 @@ def lights(r: Reading) -> ToolCall | None:
 SHIFT_HOURS = 3
 _SHIFT = re.compile(r"\b(?:(an?|one|two|three|four|five|six|\d{1,2}) (?:more )?hours? )?(later|earlier)\b")
 _HOURS = {"a": 1, "an": 1, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
-# Exposure for "brighter", and its ceiling.
-BRIGHTER_FACTOR, MAX_EXPOSURE = 1.5, 4.0
+# Exposure for "brighter" (divided by it for "dimmer"), and its ceiling and floor.
+BRIGHTER_FACTOR, MAX_EXPOSURE, MIN_EXPOSURE = 1.5, 4.0, 0.25
 _BRIGHTER = re.compile(r"\b(brighter|lighter|more exposure|too dark|overexpose|brighten)\b")
+_DIMMER = re.compile(r"\b(dimmer|less bright|(?:too|so|very|far too|way too) (?:bright|glaring|dazzling)|less exposure"
+                     r"|underexpose|(?:tone|turn) down the (?:brightness|exposure|glare)|dim (?:it|the scene|things) down)\b")
 
 
 def shifted_time(r: Reading, now: Environment) -> ToolCall | None:
@@ -106,12 +108,17 @@ def shifted_time(r: Reading, now: Environment) -> ToolCall | None:
 
 
 def brighter(r: Reading, now: Environment) -> ToolCall | None:
-    """More exposure for "brighter", keeping the time the scene is set to (a night scene made
-    brighter is still night); None when lamps are what is to be lit."""
-    if _BRIGHTER.search(r.masked) is None or r.has(_LAMP_CONTEXT):
+    """More exposure for "brighter", less for "too bright", keeping the time the scene is set to
+    (a night scene made brighter is still night); None when lamps are what is to be lit."""
+    if r.has(_LAMP_CONTEXT):
         return None
-    exposure = round(min(MAX_EXPOSURE, now.lighting.exposure * BRIGHTER_FACTOR), 2)
-    return ToolCall(tool="set_lighting", args={"exposure": exposure})
+    if _BRIGHTER.search(r.masked) is not None:
+        exposure = min(MAX_EXPOSURE, now.lighting.exposure * BRIGHTER_FACTOR)
+    elif _DIMMER.search(r.masked) is not None:
+        exposure = max(MIN_EXPOSURE, now.lighting.exposure / BRIGHTER_FACTOR)
+    else:
+        return None
+    return ToolCall(tool="set_lighting", args={"exposure": round(exposure, 2)})
 
 
 def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:

@@ -19,10 +19,11 @@ from drivetwin.orchestrator.planning.base import PlanningError
 # at one of these; any other letter makes it part of a word or an id ("2nd", "car_2").
 GLUED_UNITS = r"(?:m|km|kmh|kph|mph|ms|s|sec|secs|deg)"
 # A written number: digits with optional thousands separators, decimals and an exponent, or
-# the words that parse as floats but are no amount. Not part of an id ("car_2") or a word.
+# the words that parse as floats but are no amount. Not part of an id ("car_2") or a word;
+# "45ish" is about 45.
 NUMBER = (
     r"(?<![\w.])(?:[-+]?(?:\d{1,3}(?:,\d{3})+(?![\d,])|\d+(?:\.\d+)?|\.\d+)(?:e[-+]?\d+)?"
-    rf"(?={GLUED_UNITS}?(?!\w))|[-+]?(?:nan|infinity|inf)(?![\w]))"
+    rf"(?=(?:{GLUED_UNITS}|ish)?(?!\w))|[-+]?(?:nan|infinity|inf)(?![\w]))"
 )
 _NUMBER = re.compile(NUMBER, re.IGNORECASE)
 # The most of anything one request may count: far above what a scene can hold, so a larger
@@ -53,10 +54,10 @@ _ONES = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight",
 _TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
 _SPELT = (rf"(?:(?:{'|'.join(_TENS)})(?:[- ](?:{'|'.join(_ONES[1:10])}))?|{'|'.join(_ONES)}|a|an|one hundred|a hundred)"
           r"(?: and a half)?")
-# A measure spelt out ("two metres", "forty-five degrees", "a metre", "half a metre"): the words
+# A measure spelt out ("two metres", "forty-five degrees", "a metre", "half a metre", "a few metres"): the words
 # become figures so every reader of amounts with units reads it as if typed in digits.
 _SPELT_MEASURE = re.compile(
-    rf"\b(half an?|{_SPELT})\s+(?=(?:m|metres?|meters?|ft|feet|foot|km|kilometres?|kilometers?|yards?|degrees?|"
+    rf"\b(half an?|a couple(?: of)?|a few|{_SPELT})\s+(?=(?:m|metres?|meters?|ft|feet|foot|km|kilometres?|kilometers?|yards?|degrees?|"
     r"seconds?|secs?|m/s|km/h|kph|mph|hours?|minutes?|mins?)\b)",
     re.IGNORECASE,
 )
@@ -68,6 +69,8 @@ def _spelt_value(words: str) -> float:
     low = low.removesuffix(" and a half")
     if low.startswith("half"):
         return 0.5
+    if low.startswith(("a couple", "a few")):  # "a couple of metres", "a few seconds": vague, said as 2 and 3
+        return 2.0 if "couple" in low else 3.0
     if low in ("a", "an"):
         return 1.0 + half
     if low.endswith("hundred"):

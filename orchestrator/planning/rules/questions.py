@@ -98,7 +98,8 @@ class Part:
 
 # The thing a question asks about, right after its question words ("how many helicopters", "where
 # is the zeppelin", "are there any trams").
-_ASKED_ABOUT = re.compile(r"\b(?:how many|where (?:is|are)(?: the| a| an| my| our)?|(?:is|are) there(?: any| an?| some)?) ([a-z]{3,})\b")
+_ASKED_ABOUT = re.compile(r"\b(?:how many|where (?:is|are|do|does|did|can|could|will|would|should)(?: the| a| an| my| our| any)?"
+                          r"|(?:is|are) there(?: any| an?| some)?) ([a-z]{3,})\b")
 
 
 def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:

@@ -285,6 +285,9 @@ _GERUND = re.compile(
 
 # "were is the lot": "were" before "is" is never the verb, always a slip for "where".
 _WHERE_SLIP = re.compile(r"\bwere(?= (?:is|are|can|do|does|did|was)\b)", re.IGNORECASE)
+# "is their a bench", "their are cones": "their" next to "is"/"are" and before a thing is "there".
+_THERE_SLIP = re.compile(r"(?:(?<=\bis )|(?<=\bare )|(?<=\bwas )|(?<=\bwere ))their(?= (?:a|an|any|some|no|\d+)\b)"
+                         r"|\btheir(?= (?:is|are|was|were)\b)", re.IGNORECASE)
 
 
 # "turn of the street light": "of" right after a switching verb is a slip for "off".
@@ -325,6 +328,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = spelt_measures(text)  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
+    text = _THERE_SLIP.sub("there", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
     text = _joined_apart(text, vocab)
     repairs: list[str] = []
