@@ -270,7 +270,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
     out += unknown_places(request.masked, effect.calls, scene)
     out += unknown_things(request.masked, effect.calls, scene)
-    out += excepted_touched(request.excepted, request.categories, scope, scene)
+    out += excepted_touched(request.excepted, _kinds_named(request), scope, scene)
     return out
 
 
@@ -507,7 +507,7 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
              and (asset := scene.asset(str(c.args.get("asset")))) is not None and asset.category in request.categories]
     if fresh and not effect.added:
         out.append(Reading(text=describe(fresh), calls=fresh))
-    if request.excepted and (spared := _sparing(effect, excepted_ids(request.excepted, request.categories, scene))):
+    if request.excepted and (spared := _sparing(effect, excepted_ids(request.excepted, _kinds_named(request), scene))):
         out.append(Reading(text=describe(spared), calls=spared))
     if effect.removed and (request.place or request.state):
         keep = [a.id for a in effect.removed
@@ -517,6 +517,12 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
             out.append(Reading(text="remove only " + ", ".join(keep), calls=[
                 ToolCall(tool="remove_assets", args={"assets": keep})]))
     return out
+
+
+def _kinds_named(request: Request) -> set[str]:
+    """The kinds a request is about, for its "ones" ("..., not the ones at the ends"): the
+    categories it asks for, else any it names ("the car who is in the middle")."""
+    return set(request.categories) or {m.category for m in ph.find_categories(request.masked)}
 
 
 def _sparing(effect: Effect, spared: set[str]) -> list[ToolCall]:

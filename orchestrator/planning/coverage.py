@@ -502,25 +502,35 @@ EXCEPTED_RADIUS_M = 10.0
 
 def excepted_touched(excepted: Iterable[str], categories: Iterable[str], scope: Scope, scene: Scene) -> list[str]:
     """Things the request says it does not mean ("..., not the ego", "except the one by the bench")
-    that the plan changes or removes (see `excepted_ids`)."""
-    acted = {a.id for a in scope.touched if a not in scope.added}
+    that the plan changes or removes (see `excepted_ids`); where the words name a kind but pick out
+    none of it this world can find ("not the ones at the ends"), any of that kind the plan touches."""
+    acted = [a for a in scope.touched if a not in scope.added]
     out = []
     for said in excepted:
-        hit = sorted(acted & _picked_out(said, set(categories), scene))
-        if hit:
+        picked = _picked_out(said, set(categories), scene)
+        if isinstance(picked, frozenset):
+            unsure = sorted(a.id for a in acted if a.category in picked)
+            if unsure:
+                out.append(f"you said not {said}, and I cannot tell which those are; the plan changes {', '.join(unsure)}")
+        elif hit := sorted({a.id for a in acted} & picked):
             out.append(f"you said not {said}, but the plan changes {', '.join(hit)}")
     return out
 
 
 def excepted_ids(excepted: Iterable[str], categories: Iterable[str], scene: Scene) -> set[str]:
     """The ids of the things excepted. "One(s)" stands for the kinds the rest of the request
-    names; a thing picked out by a place is the one of its kind nearest it. Words that pick out
-    nothing this world can find ("not the ones at the ends") are not judged."""
-    return {i for said in excepted for i in _picked_out(said, set(categories), scene)}
+    names; a thing picked out by a place is the one of its kind nearest it, by a side ("the west
+    ones") those of its kind on that side of the others."""
+    out: set[str] = set()
+    for said in excepted:
+        picked = _picked_out(said, set(categories), scene)
+        out |= set() if isinstance(picked, frozenset) else picked
+    return out
 
 
-def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str]:
-    """The ids of the things `said` ("the ego", "the suv", "the one by the bench") names in the scene."""
+def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str] | frozenset[str]:
+    """The ids of the things `said` ("the ego", "the suv", "the one by the bench") names in the
+    scene; a frozenset of the kinds it names when it picks out no one of them it can find."""
     low = f" {ph.normalise(said)} "
     cut = _PICKED_BY.search(low)
     head, where = (low[: cut.start()], low[cut.start() :]) if cut else (low, "")
@@ -531,14 +541,17 @@ def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str]:
         return ids
     mentions = ph.find_categories(head)
     kinds = {m.category for m in mentions} or (categories if re.search(r"\bones?\b", head) else set())
-    if md.compass_direction(head) is not None:
-        return set()  # "the west ones": a side, judged by the planners' own reading of it
     members = [a for a in scene.all_assets() if a.category in kinds and a.id != "ego"]
+    side = md.compass_direction(re.sub(r"\b(north|south|east|west)ern\b", r"\1", head))
+    if side is not None and members and not where.strip():  # "the west ones": of their kind, those that way
+        east, north = md.COMPASS_VECTORS[side]
+        mid_x, mid_y = sum(a.pose.x for a in members) / len(members), sum(a.pose.y for a in members) / len(members)
+        return {a.id for a in members if (a.pose.x - mid_x) * east + (a.pose.y - mid_y) * north > 0}
     if not where.strip():
         return {a.id for a in members}
     point = _point_named(where, scene)
     if point is None or not members:
-        return set()
+        return frozenset(kinds)
     by_distance = sorted(members, key=lambda a: math.hypot(a.pose.x - point[0], a.pose.y - point[1]))
     if re.search(r"\bones\b", head) or any(m.plural for m in mentions):
         return {a.id for a in by_distance if math.hypot(a.pose.x - point[0], a.pose.y - point[1]) <= EXCEPTED_RADIUS_M}

@@ -33,7 +33,7 @@ FORBIDDEN = re.compile(r"\s+(?:mustn'?t|must not|shouldn'?t|should not|can'?t|ca
 FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
-_QUESTION_START = re.compile(r"^(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b"
+_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b"
                              # "the gates, where are they": the thing first, the question after it
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
@@ -148,7 +148,8 @@ def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
     polite = bool(_POLITE.search(low))
     return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
-        not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")))
+        not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")
+                        or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))
 
 
 __all__ = ["ADD_WORDS", "FEWER_WORDS", "REMOVE_WORDS", "asks", "excepted", "without_contrast", "without_reason"]

@@ -116,3 +116,61 @@ def test_where_an_unknown_thing_appears_is_refused_by_its_name(session, campus):
     report = session.submit("where do the hovercraft usually show up?")
     assert not report.ok and "hovercraft" in (report.error or "")
     assert session.scene.assets == campus.assets
+
+
+def test_a_thing_near_another_thing_stands_by_it(session, campus):
+    report = session.submit("drop a cone near the hydrant")
+    hydrant = campus.asset("fire_hydrant_1")
+    cone = next(a for a in session.scene.assets if a.category == "traffic_cone" and campus.asset(a.id) is None)
+    assert report.ok and hydrant is not None
+    assert ((cone.pose.x - hydrant.pose.x) ** 2 + (cone.pose.y - hydrant.pose.y) ** 2) ** 0.5 < 12.0
+
+
+def test_a_door_of_a_building_is_its_entrance(session, campus):
+    report = session.submit("stand a bench outside the engineering hall doors")
+    entrance = campus.landmark("Engineering Hall entrance")
+    bench = next(a for a in session.scene.assets if a.category == "bench" and campus.asset(a.id) is None)
+    assert report.ok and entrance is not None
+    assert ((bench.pose.x - entrance.position[0]) ** 2 + (bench.pose.y - entrance.position[1]) ** 2) ** 0.5 < 15.0
+
+
+def test_a_thing_called_him_is_it(campus):
+    assert repair("the hydrant, shift him to the library", campus).text == "the hydrant, shift it to the library"
+    assert repair("paint her bike blue", campus).text == "paint her bike blue"
+
+
+def test_a_second_thing_after_and_also_gets_the_same_verb(session, campus):
+    report = session.submit("delete the hydrant and also the bench")
+    assert report.ok
+    assert session.scene.asset("fire_hydrant_1") is None and not session.scene.count("bench")
+
+
+@pytest.mark.parametrize("said", ["VRUs", "NPCs", "actors"])
+def test_the_domain_words_for_road_users_name_groups(session, said):
+    report = session.submit(f"how many {said} are in the scene right now?")
+    assert report.ok and report.answer and "found" in report.answer
+    assert "there is no" not in report.answer
+
+
+def test_a_labelled_query_with_its_question_inside_asks(session, campus):
+    report = session.submit("Check: which benches stand near the library? Report ids only.")
+    assert report.ok and report.answer and session.scene.assets == campus.assets
+
+
+def test_excepted_ones_on_a_side_are_those_of_their_kind_that_way(campus, registry):
+    lights = [a for a in campus.assets if a.category == "street_light"]
+    mid = sum(a.pose.x for a in lights) / len(lights)
+    west = sorted(a.id for a in lights if a.pose.x < mid)
+    verdict = review("take down the lamp posts, not the western ones",
+                     Plan(calls=[ToolCall(tool="remove_assets", args={"category": "street_light"})], planner="t"),
+                     _context(campus, registry))
+    assert verdict.action == "ask"
+    offered = verdict.question.readings[0].calls[0].args["assets"]
+    assert west and not set(west) & set(offered) and len(offered) == len(lights) - len(west)
+
+
+def test_an_exception_this_world_cannot_pick_out_is_never_guessed_past(campus, registry):
+    verdict = review("tow away one car from lot b, not the ones sitting at the far corners",
+                     Plan(calls=[ToolCall(tool="remove_assets", args={"assets": ["passenger_car_2"]})], planner="t"),
+                     _context(campus, registry))
+    assert verdict.action != "apply" and "cannot tell which" in verdict.problems[0]

@@ -38,6 +38,7 @@ def normalise(text: str) -> str:
     out = re.sub(r"\b(more|most) (near|close)\b", lambda m: m.group(2).removesuffix("e") + ("er" if m.group(1) == "more" else "est"), out)
     # "6x traffic_cone", "4 x barriers": a count in a spec's notation ("3x2" stays a grid's size)
     out = re.sub(r"\b(\d+)\s?x\s+(?=[a-z])", r"\1 ", out)
+    out = re.sub(r"\b(?:front |main )?(?:door|doorway)s?\b", "entrance", out)  # "the Union doors": its entrance
     # A comma inside a number ("10,000") is a thousands separator, not a clause break.
     return re.sub(r"(?<!\d),|,(?!\d{3}(?!\d))", " , ", out.replace("’", "'"))
 

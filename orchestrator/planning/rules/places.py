@@ -99,8 +99,8 @@ def relation_of(low: str) -> str:
 
 
 def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str | None:
-    # "next to the bench at the bus stop": the bench nearest that stop.
-    for words, _ in RELATIONS:
+    # "next to the bench at the bus stop": the bench nearest that stop; "near the hydrant" too.
+    for words in [*(w for w, _ in RELATIONS), ("near", "nearby")]:
         for word in words:
             pos = r.low.find(f" {word} ")
             if pos < 0:

@@ -147,11 +147,17 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
     that say why unless `reasons`."""
     parts = _SPLIT.split(prompt if reasons else without_reason(prompt).strip() or prompt)
     out: list[tuple[str, bool, bool]] = []
+    lead = ""  # the last clause's words up to its verb, for a clause that only names another thing
     for i in range(0, len(parts), 2):
         text = parts[i].strip()
         text = text if reasons else without_reason(text).strip() or text
         if not text:
             continue
+        verb = _VERB_AT.search(text.lower())
+        if verb is None and lead and re.search(r"and also", parts[i - 1]) and ph.find_categories(text):
+            text = f"{lead} {text}"  # "remove the hydrant and also the bin": the bin is removed too
+        elif verb is not None:
+            lead = text[: verb.end()]
         asked = i + 1 < len(parts) and "?" in parts[i + 1]
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text) for q in _comma_and(p)]

@@ -157,7 +157,7 @@ def _domain_words() -> frozenset[str]:
     for words_, _ in lx.TIME_PRESETS:
         words |= _words_of(words_)
     for cat in catalog().values():
-        words |= _words_of(cat.words)
+        words |= _words_of(cat.words) | _words_of(cat.tags)  # "the vehicles", "any VRUs", "NPCs"
     return frozenset(words)
 
 
@@ -290,6 +290,12 @@ _THERE_SLIP = re.compile(r"(?:(?<=\bis )|(?<=\bare )|(?<=\bwas )|(?<=\bwere ))th
                          r"|\btheir(?= (?:is|are|was|were)\b)", re.IGNORECASE)
 
 
+# "the robot, put him at lot A": a thing called "him" or "her" by a writer whose language genders
+# things is "it" (only as an object, so "her car" stays hers).
+_THING_PRONOUN = re.compile(r"\b(?:him|her)(?=\s+(?:at|to|in|on|by|near|next|behind|over|back|forward|left|right|there|here|"
+                            r"away|out|up|down|round|around|closer|further)\b|\s*[,.;!?]|\s*$)", re.IGNORECASE)
+
+
 # "turn of the street light": "of" right after a switching verb is a slip for "off".
 _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
 
@@ -329,6 +335,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
     text = _THERE_SLIP.sub("there", text)
+    text = _THING_PRONOUN.sub("it", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
     text = _joined_apart(text, vocab)
     repairs: list[str] = []
