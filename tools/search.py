@@ -17,6 +17,9 @@ from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon
 from pydantic import Field
 
 MAX_LISTED = 20
+# A thing that stands beside roads, never on them (a street light, a stop sign), is "on" or
+# "along" a road asked about by name when it stands within this of the road's edge.
+ROADSIDE_M = 5.0
 # Words that name no particular lane ("the northbound lane" means campus_northbound).
 _LANE_FILLER = frozenset({"the", "lane", "lanes", "road", "of", "on", "in"})
 
@@ -52,6 +55,14 @@ def lane_under(asset: AssetInstance, lanes: list[Lane]) -> Lane | None:
     return best[1] if best else None
 
 
+def lane_beside(asset: AssetInstance, lanes: list[Lane], reach: float = ROADSIDE_M) -> Lane | None:
+    """The lane (of `lanes`) whose edge the asset stands within `reach` of, nearest first."""
+    gaps = [(nearest_on_polyline(asset.pose.x, asset.pose.y, lane.centreline).distance - lane.width / 2, lane)
+            for lane in lanes]
+    near = [(gap, lane) for gap, lane in gaps if gap <= reach]
+    return min(near, key=lambda g: g[0])[1] if near else None
+
+
 def landmark_distance(landmark: Landmark, x: float, y: float) -> float:
     """Metres from (x, y) to a landmark: its point, or the edge of its area (0 inside)."""
     if landmark.kind == "area" and landmark.polygon:
@@ -72,7 +83,8 @@ class FindAssetsArgs(ToolArgs):
     nearest_to: str | None = Field(None, description=_NEAREST_TO + " (the reference asset itself is left out)")
     on_lane: bool = Field(False, description="only assets standing on a lane (on the road, e.g. blocking it)")
     lane: str | None = Field(
-        None, description="only assets on this lane id or road, e.g. campus_northbound, Main Street, northbound"
+        None, description="only assets on this lane id or road, e.g. campus_northbound, Main Street, northbound "
+        "(with a category that stands beside roads, such as street lights: those along it)"
     )
 
 
@@ -105,10 +117,15 @@ class FindAssets(Tool[FindAssetsArgs]):
                 raise UnknownCategoryError(args.category, nearest_categories(args.category))
             pool = [a for a in pool if a.category == name]
         lanes_of: dict[str, str] = {}
+        beside: set[str] = set()
         if args.on_lane or args.lane:
             lanes = match_lanes(scene, args.lane) if args.lane else scene.roads.lanes
             for a in pool:
                 lane = lane_under(a, lanes)
+                if lane is None and args.lane and args.category and catalog()[a.category].placement == "sidewalk":
+                    # "the street lights along Main Street": a kind that stands beside the road
+                    lane = lane_beside(a, lanes)
+                    beside.add(a.id)
                 if lane is not None:
                     lanes_of[a.id] = lane.id
             pool = [a for a in pool if a.id in lanes_of]
@@ -124,7 +141,7 @@ class FindAssets(Tool[FindAssetsArgs]):
         distances = {a.id: math.hypot(a.pose.x - t.x, a.pose.y - t.y) for a in pool} if t else {}
 
         def line(a: AssetInstance) -> str:
-            where = f" in {lanes_of[a.id]}" if a.id in lanes_of else ""
+            where = f" {'beside' if a.id in beside else 'in'} {lanes_of[a.id]}" if a.id in lanes_of else ""
             away = f", {distances[a.id]:.1f} m away" if a.id in distances else ""
             return f"{a.id} ({a.category}) at ({a.pose.x:.1f}, {a.pose.y:.1f}){where}{away}"
 

@@ -33,7 +33,8 @@ FORBIDDEN = re.compile(r"\s+(?:mustn'?t|must not|shouldn'?t|should not|can'?t|ca
 FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
-_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats)\b"
+_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats"
+                             r"|is anything|is any|are any|is something|has anything|have any|do the)\b"
                              # "the gates, where are they": the thing first, the question after it
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need

@@ -174,3 +174,22 @@ def test_an_exception_this_world_cannot_pick_out_is_never_guessed_past(campus, r
                      Plan(calls=[ToolCall(tool="remove_assets", args={"assets": ["passenger_car_2"]})], planner="t"),
                      _context(campus, registry))
     assert verdict.action != "apply" and "cannot tell which" in verdict.problems[0]
+
+
+def test_things_that_stand_beside_a_road_are_counted_along_it(session, campus):
+    report = session.submit("how many lamp posts line Main Street")
+    beside = [a for a in campus.assets if a.category == "street_light"]
+    assert report.ok and report.answer and report.answer.startswith(f"{len(beside)} street_light")
+    assert "beside main_" in report.answer
+
+
+def test_how_busy_a_place_is_lists_what_stands_there(session, campus):
+    report = session.submit("how crowded is the bus stop at the moment")
+    assert report.ok and report.answer and "bench_1" in report.answer
+    assert session.scene.assets == campus.assets
+
+
+def test_is_anything_asks_whatever_the_punctuation(session, campus):
+    report = session.submit("is anything sitting on Main Street")
+    assert report.ok and report.answer and "found" in report.answer
+    assert session.scene.assets == campus.assets

@@ -55,6 +55,10 @@ _DISTANCE = re.compile(r"\b(?:how far|distance|far apart|far away|far off|far fr
 _SUPERLATIVE = re.compile(r"\b(?:nearest|closest|furthest|farthest|most near|most close|nearer|closer)\b")
 _ENDS = re.compile(r"\b(?:from|to|and|between|apart)\b")
 _ASKER_ALONE = re.compile(r"^\W*(?:me|us|i|we|here)\W*$")
+# A road named as where things are, by its name ("the stop signs on Campus Drive").
+_ALONG = re.compile(r"\b(?:on|along|alongside|beside|lining|lines?|down)\s+(?:the\s+)?[a-z]+\s+(?:street|drive|road|avenue|lane|way|st|rd|ave)\b")
+# How full a place is ("how busy is the car park", "is the bus stop crowded"): what stands there.
+_BUSY = re.compile(r"\b(?:busy|busier|full|crowded|packed|empty|quiet|occupied|deserted|free spaces?|room left)\b")
 # What a question can ask for by kind rather than by name.
 _LANE_KIND = re.compile(r"\blanes?\b")
 # A lane named as where something is: the object of "on", "in", "along" ("in the northbound lane").
@@ -166,7 +170,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         anchor = _anchor_after(r, scene, nearest.end(), back, prefer_preposition=True)
         if anchor is not None:
             return _nearest(r, scene, anchor)
-    if _ON_LANE.search(low) is not None and not _asks_for_lanes(r):
+    on_road = r.mentions and _road_named(r, scene) is not None and _ALONG.search(low) is not None  # "stop signs on Campus Drive"
+    if (_ON_LANE.search(low) is not None or on_road) and not _asks_for_lanes(r):
         args: dict[str, Any] = {"on_lane": True}
         road = _road_named(r, scene) or (back.name if back is not None and back.kind == "lane" else None)
         if road is not None:
@@ -180,12 +185,13 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         return Part(_lanes(r, scene, back), None)
     around = _AROUND.search(low)
     anchor = _anchor_after(r, scene, around.end(), back) if around is not None else None
-    if anchor is None and r.landmark and (r.mentions or _ANY_KIND.search(r.masked)):
-        anchor = Anchor("landmark", r.landmark)  # "what signals control the crossroads"
+    busy = _BUSY.search(low) is not None
+    if anchor is None and r.landmark and (r.mentions or _ANY_KIND.search(r.masked) or busy):
+        anchor = Anchor("landmark", r.landmark)  # "what signals control the crossroads", "how busy is lot A"
     if anchor is not None and not _WHERE.search(low):
         if _PLACE_KIND.search(r.masked) and not r.mentions:  # "which buildings are near the fountain"
             return Part(ToolCall(tool="find_landmarks", args={"nearest_to": anchor.name}), anchor)
-        if r.mentions or _ANY_KIND.search(r.masked) or anchor.kind != "landmark":
+        if r.mentions or _ANY_KIND.search(r.masked) or anchor.kind != "landmark" or busy:
             return _around(r, scene, anchor)
     return _what_or_where(r, scene, named, back, notes.subject)
 
