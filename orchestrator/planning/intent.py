@@ -54,7 +54,9 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      r"|^(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:add|put|drop|place|move|make|set|"
                      r"remove|take|get|give|turn|paint|park|bring|have|let'?s)\b"
                      # "could the second car go in lot A?": a wish for where a thing should be
-                     r"|^(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive)\b")
+                     r"|^(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive)\b"
+                     # "the car you just put there, could it go forward?": the same wish for a thing named first
+                     r"|(?:^|[,.;:!-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift)\b")
 
 
 # A clause saying why ("... so traffic can flow again", "... so that the ego has to stop", "in

@@ -193,3 +193,12 @@ def test_is_anything_asks_whatever_the_punctuation(session, campus):
     report = session.submit("is anything sitting on Main Street")
     assert report.ok and report.answer and "found" in report.answer
     assert session.scene.assets == campus.assets
+
+
+def test_could_it_go_a_tiny_bit_forward_is_a_small_step(session, campus):
+    assert session.submit("park a car at the library").ok
+    car = next(a for a in session.scene.assets if a.category == "passenger_car" and campus.asset(a.id) is None)
+    report = session.submit("that car, could it go forward a tiny bit?")
+    after = session.scene.asset(car.id)
+    assert report.ok and after is not None and after.behaviour.kind == car.behaviour.kind
+    assert 0.2 <= ((after.pose.x - car.pose.x) ** 2 + (after.pose.y - car.pose.y) ** 2) ** 0.5 <= 2.0

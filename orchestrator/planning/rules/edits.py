@@ -365,7 +365,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if r.has(lx.REVERSE_WORDS):
         if metres is None:
             notes.guess("how far to reverse")
-        step = metres or (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else DEFAULT_STEP_M)
+        step = metres or (SMALL_STEP_M if r.has(_SMALL) else DEFAULT_STEP_M)
         return [ToolCall(tool="move_asset", args={"asset": asset, "forward": -abs(step)})]
     if r.has(lx.STOP_WORDS) and motion in ("vehicle", "walker") and not r.has(("stop sign",)):
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
@@ -393,13 +393,15 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     kind = behaviour_kind(r, catalog()[found.category] if found is not None else None)
     if kind == "drive_lane" and r.landmark and not r.lane and r.has(("go", "goes")):
         kind = None  # "could the car go in lot A?": a place to be, not a lane to drive
+    if kind == "drive_lane" and r.has(("go", "goes")) and _STEP_SAID.search(r.low):
+        kind = None  # "could it go forward a tiny bit?": a step, not a drive
     if kind is not None and kind != "parked":
         notes.subject = [asset]
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": behaviour_spec(kind, r)})]
     # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
     scoped = bool(r.mentions) and _scoped_by_place(r, r.mentions[0])
     anchored = (r.landmark and not scoped) or (r.ego and "ego" not in ids) or any(i not in ids for i in r.ids)
-    small = r.has(("a bit", "slightly", "a little", "a touch", "nudge", "inch", "budge", "scoot"))
+    small = r.has((*_SMALL, "a touch", "nudge", "inch", "budge", "scoot"))
     shift = metres if metres is not None else (SMALL_STEP_M if small else None)
     if shift is None and _SIDE_MOVE.search(r.low):
         notes.guess("how far to move")  # "the SUV should pull forward a few metres"
@@ -426,11 +428,18 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
     if r.has(("move", "shift", "nudge", "push", "slide", "budge", "relocate")):
         notes.guess("where to move it")
-        step = metres or (SMALL_STEP_M if r.has(("a bit", "slightly", "a little")) else DEFAULT_STEP_M)
+        step = metres or (SMALL_STEP_M if r.has(_SMALL) else DEFAULT_STEP_M)
         every = [scene.asset(i) for i in ids]
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]
     return None
+
+
+# Words for a small step ("a bit", "a tiny bit", "slightly").
+_SMALL = ("a bit", "slightly", "a little", "tiny bit", "little bit", "wee bit")
+# A short step said with its way ("forward a tiny bit", "back 2 m", "left slightly").
+_STEP_SAID = re.compile(r"\b(?:forwards?|ahead|back(?:wards?)?|left|right)\b(?:\s+(?:by\s+)?)(?:an?\s+(?:tiny\s+|little\s+|wee\s+)?"
+                        r"(?:bit|little|touch)|slightly|\d+(?:\.\d+)?\s*(?:m|metres?|meters?)\b)")
 
 
 # A figure with no unit after it ("rotate the hydrant 45ish", "turn it 30"): for a turn, degrees.
