@@ -147,9 +147,14 @@ _READ_ONLY = re.compile(r"\b(?:no (?:edits?|changes)|(?:don'?t|do not|dont) (?:t
                         r"|just (?:checking|looking|asking|curious)|read[- ]only)\b")
 
 
+# An amount of something offered with a question mark ("bit of drizzle?", "some more cones?",
+# "a touch of fog, maybe?"): a suggestion, as "how about ..." is, not a question.
+_SUGGESTED = re.compile(r"^(?:(?:a |an )?(?:bit|spot|touch|dash|hint|little|lot|drop) of|some|more|a little|a bit)\b")
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
-    polite = bool(_POLITE.search(low))
+    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()))
     return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
         not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))

@@ -202,3 +202,14 @@ def test_could_it_go_a_tiny_bit_forward_is_a_small_step(session, campus):
     after = session.scene.asset(car.id)
     assert report.ok and after is not None and after.behaviour.kind == car.behaviour.kind
     assert 0.2 <= ((after.pose.x - car.pose.x) ** 2 + (after.pose.y - car.pose.y) ** 2) ** 0.5 <= 2.0
+
+
+@pytest.mark.parametrize(("said", "kind"), [("bit of snow?", "snow"), ("a touch of fog, perhaps?", "fog")])
+def test_an_amount_of_weather_offered_with_a_question_mark_asks_for_it(session, said, kind):
+    report = session.submit(said)
+    assert report.ok and session.scene.environment.weather.kind == kind
+
+
+def test_a_real_question_with_a_question_mark_still_changes_nothing(session, campus):
+    report = session.submit("how many bins stand near the library?")
+    assert report.ok and report.answer and session.scene.assets == campus.assets

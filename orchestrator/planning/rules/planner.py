@@ -347,7 +347,11 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if re.match(rf"\s*({'|'.join(lx.FILLER_STARTS)})\b", r.low) and not r.mentions and not r.ids:
         return None  # "before I add anything": a circumstance, not a request
     if _is_question(r, asked):
-        return plan_question(r, scene, memory, notes)
+        looked_up = plan_question(r, scene, memory, notes)
+        if [c.args for c in looked_up] == [{}] and not (r.mentions or r.ids or r.ego or r.landmark):
+            # "Bit of drizzle?": a question about nothing in the scene that names a setting asks for it
+            return environment(r, scene.environment) or looked_up
+        return looked_up
     if r.mentions and _TOPIC.fullmatch(_without_mentions(r)):
         referenced(r, scene, memory, notes)  # "the cars... where are they?": what the next clause is about
         return []
