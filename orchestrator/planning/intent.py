@@ -91,7 +91,7 @@ _LAYOUT_HEADING = re.compile(r"^\s*(ring|circle|line|row|grid)\s*:", re.IGNORECA
 # the one by the bench", "rather than in the car park", "instead of sitting there"): the request
 # without it says what to do; the things it names are excepted (see `excepted`). "Instead of the
 # bin" is left alone: it asks for a swap, the bin included.
-_DETERMINER = r"(?:the|that|this|those|these|a|an|any|my|our|its|their|his|her|ego\b|passenger_car|[a-z]+_\d)"
+_DETERMINER = r"(?:the|that|this|those|these|a|an|any|my|our|its|their|his|her|ego\b|[a-z_]+_\d+)"  # or an id
 _CONTRAST = re.compile(
     rf"(?:,\s*(?:but\s+|and\s+)?|\s+but\s+)(?:not|never)\s+(?=(?:{_DETERMINER}|in|at|on|by|near)\b)"
     rf"|\s+(?:except(?:\s+for)?|other\s+than|apart\s+from|excluding|save\s+for)\s+(?={_DETERMINER})"

@@ -11,6 +11,7 @@ from drivetwin.orchestrator.planning.check import review
 from drivetwin.orchestrator.planning.intent import REMOVE_WORDS, excepted, without_reason
 from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in, spelt_measures
+from drivetwin.orchestrator.planning.rules.phrases import normalise
 from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.tools.base import ToolCall
 
@@ -127,6 +128,7 @@ def test_a_thing_near_another_thing_stands_by_it(session, campus):
 
 
 def test_a_door_of_a_building_is_its_entrance(session, campus):
+    assert normalise("by the JTEKT doors").strip() == "by the jtekt entrance"
     report = session.submit("stand a bench outside the engineering hall doors")
     entrance = campus.landmark("Engineering Hall entrance")
     bench = next(a for a in session.scene.assets if a.category == "bench" and campus.asset(a.id) is None)

@@ -353,6 +353,10 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> di
     return {"east": round(shift * (goal[0] - x) / gap, 2), "north": round(shift * (goal[1] - y) / gap, 2)}
 
 
+# Words for a small step ("a bit", "a tiny bit", "slightly").
+_SMALL = ("a bit", "slightly", "a little", "tiny bit", "little bit", "wee bit")
+
+
 def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """Move, turn, stop, set the behaviour of or place assets already there; None if not that."""
     ids = referenced(r, scene, memory, notes)
@@ -435,8 +439,6 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     return None
 
 
-# Words for a small step ("a bit", "a tiny bit", "slightly").
-_SMALL = ("a bit", "slightly", "a little", "tiny bit", "little bit", "wee bit")
 # A short step said with its way ("forward a tiny bit", "back 2 m", "left slightly").
 _STEP_SAID = re.compile(r"\b(?:forwards?|ahead|back(?:wards?)?|left|right)\b(?:\s+(?:by\s+)?)(?:an?\s+(?:tiny\s+|little\s+|wee\s+)?"
                         r"(?:bit|little|touch)|slightly|\d+(?:\.\d+)?\s*(?:m|metres?|meters?)\b)")
