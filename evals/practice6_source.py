@@ -8,7 +8,7 @@ product manager in business speak, a parent describing the scene to a child, som
 by voice (homophones, no punctuation, run-on sentences), someone who writes in the passive with
 nominalisations, someone who refers back to earlier turns, and a US and a UK speaker with their
 own road words (sidewalk/pavement, trash can/litter bin, parking lot/car park, truck/lorry).
-Requests name groups ("every vehicle in ..."), state the wanted scene ("the scene should have
+Requests name groups ("each vehicle in ..."), state the wanted scene ("what this scene is missing
 ..."), make exceptions ("all the trees except ..."), and ask questions of many shapes, which must
 change nothing. About 8 % ask for what the world cannot do (a tram, hail, a hospital, a bench
 inside a building, a count past the limits); the right outcome there is a refusal that changes
@@ -169,7 +169,7 @@ SEARCH: list[Json] = [
     ),
     question(
         "indirect", "instructor_nearest_named_place",
-        "Before my learner pulls away I'd like to tell her which named place is closest to the car she's sitting in.",
+        "Before my learner pulls away I want to tell her which named place is closest to the car she's sitting in.",
         told(any_of=["parking lot A", "lot A"]), [call("find_landmarks", nearest_to="ego")],
     ),
     question(
@@ -252,6 +252,31 @@ SEARCH: list[Json] = [
         "I need to know how far the ego is from the campus hospital for the ambulance scenario.",
         [call("measure_distance", a="campus hospital", b="ego")],
     ),
+    question(
+        "vague", "backref_anything_in_road_ahead", "right, is anything sitting in the road now",
+        told(any_of=["cement_rubble_1"]), [call("find_assets", on_lane=True)],
+        setup=[turn("Drop some broken concrete in our lane 30 m ahead of us.",
+                    [call("add_asset", category="cement_rubble", location=at("ego", along_m=30))])],
+    ),
+    question(
+        "erroneous", "voice_how_many_peple_now", "hw many peple are their now",
+        told(any_of=["5", "five"]), [call("find_assets", category="pedestrian")],
+        setup=[turn("Add five people at the Student Union.",
+                    [call("add_asset", category="pedestrian", count=5, location=at("Student Union entrance"))])],
+    ),
+    question(
+        "indirect", "pm_status_check_suv",
+        "Quick status check for the team: which named place is the SUV nearest, and how far is it from our car?",
+        told(all_of=["parking lot B"], any_of=["92.2", "92"]),
+        [call("find_landmarks", nearest_to="suv_1"), call("measure_distance", a="suv_1", b="ego")],
+        tags=("compound",),
+    ),
+    question(
+        "erroneous", "typo_suv_lane_and_colour", "wich lane is the suv closest and whats it colour",
+        told(all_of=["campus_northbound"], any_of=["default", "unpainted", "no colour"]),
+        [call("find_lanes", near="suv_1"), call("asset_properties", asset="suv_1")],
+        tags=("compound",),
+    ),
 ]
 
 ADDITION: list[Json] = [
@@ -328,7 +353,7 @@ ADDITION: list[Json] = [
     ),
     case(
         "addition", "vague", "wanted_state_traffic_on_campus_drive",
-        "The scene should have some traffic moving on Campus Drive.",
+        "What this scene is missing is traffic moving along Campus Drive.",
         [delta(VEHICLES, 1, 20), guard(*VEHICLES)],
         [call("add_asset", category="passenger_car", count=2, location=at("campus_northbound", "in_lane"),
               behaviour={"kind": "drive_lane", "lane": "campus_northbound"})],
@@ -386,6 +411,51 @@ ADDITION: list[Json] = [
         setup=[turn("Park a delivery van at the JTEKT entrance.",
                     [call("add_asset", category="truck", location=at("JTEKT building entrance"))], planned=True)],
     ),
+    case(
+        "addition", "vague", "uk_bollards_on_jtekt_pavement",
+        "The pavement outside the JTEKT Building looks a bit empty; a few bollards wouldn't go amiss.",
+        [delta("bollard", 1, 10), near("bollard", "JTEKT building entrance", 12, require_all=True), guard("bollard")],
+        [call("add_asset", category="bollard", count=3, location=at("JTEKT building entrance", "on_sidewalk"))],
+    ),
+    case(
+        "addition", "vague", "parent_bus_and_people_waiting",
+        "Ooh, let's have a bus at the bus stop, and some people waiting to get on it!",
+        [delta("bus", 1), delta("pedestrian", 1, 12), near("bus", "bus stop", 12),
+         near("pedestrian", "bus stop", 15, require_all=True), guard("bus", "pedestrian")],
+        [call("add_asset", category="bus", location=at("bus stop")),
+         call("add_asset", category="pedestrian", count=3, location=at("bus stop", "on_sidewalk"))],
+        tags=("compound",),
+    ),
+    case(
+        "addition", "vague", "backref_one_more_like_that_blue", "one more like that, but blue",
+        [delta("passenger_car", 1), looks(category="passenger_car", scope="added", colour="blue"),
+         near("passenger_car", "parking lot A", 2), guard("passenger_car")],
+        [call("add_asset", category="passenger_car", location=at("parking lot A"), colour="blue")],
+        setup=[turn("Add a red car in lot A.",
+                    [call("add_asset", category="passenger_car", location=at("parking lot A"), colour="red")], planned=True)],
+    ),
+    impossible(
+        "addition", "vague", "few_hundred_people_at_fountain", "put a few hundred people round the fountain",
+        [call("add_asset", category="pedestrian", count=300, location=at("fountain"))],
+    ),
+    case(
+        "addition", "erroneous", "voice_stop_sine_north_cross_walk", "at a stop sine buy the north cross walk",
+        [delta("stop_sign", 1), near("stop_sign", "north crosswalk", 8), guard("stop_sign")],
+        [call("add_asset", category="stop_sign", location=at("north crosswalk", "next_to"))],
+    ),
+    case(
+        "addition", "erroneous", "non_native_truck_and_motorbikes_lot_b",
+        "add one truck in lot B and two motorbike also there",
+        [delta("truck", 1), delta("motorcycle", 2), near(["truck", "motorcycle"], "parking lot B", 2, require_all=True),
+         guard("truck", "motorcycle")],
+        [call("add_asset", category="truck", location=at("parking lot B")),
+         call("add_asset", category="motorcycle", count=2, location=at("parking lot B"))],
+        tags=("compound",),
+    ),
+    impossible(
+        "addition", "erroneous", "ambulence_at_hospitel", "add a ambulence outside the hospitel",
+        [call("add_asset", category="ambulance", location=at("hospital"))],
+    ),
 ]
 
 REMOVAL: list[Json] = [
@@ -408,13 +478,13 @@ REMOVAL: list[Json] = [
     ),
     case(
         "removal", "direct", "parked_cars_in_lot_b",
-        "Delete the parked cars in parking lot B.",
-        [gone("passenger_car_1", "passenger_car_2"), guard("passenger_car", "suv")],
+        "Delete both sedans standing in parking lot B.",
+        [gone("passenger_car_1", "passenger_car_2"), guard("passenger_car")],
         [call("remove_assets", assets=["passenger_car_1", "passenger_car_2"])],
     ),
     case(
         "removal", "direct", "uk_north_pavement_lamps",
-        "Get rid of every street lamp on the north pavement of Main Street.",
+        "Clear away each street lamp on the north pavement of Main Street.",
         [gone(*NORTH_STREET_LIGHTS), kept(*SOUTH_STREET_LIGHTS), guard("street_light")],
         [call("remove_assets", assets=NORTH_STREET_LIGHTS)],
     ),
@@ -426,7 +496,7 @@ REMOVAL: list[Json] = [
     ),
     case(
         "removal", "indirect", "passive_removal_of_bins",
-        "Removal of the bins is required.",
+        "Elimination of every litter bin from the scene is requested.",
         [count("trash_bin", 0, 0), guard("trash_bin")],
         [call("remove_assets", category="trash_bin")],
     ),
@@ -454,7 +524,7 @@ REMOVAL: list[Json] = [
         [call("remove_assets", category="street_light", count=4)],
     ),
     case(
-        "removal", "vague", "voice_cars_in_the_car_lot", "get rid of all them cars in the car lot",
+        "removal", "vague", "voice_cars_in_the_car_lot", "lose all them cars in the car lot",
         [gone("passenger_car_1", "passenger_car_2"), guard("passenger_car", "suv")],
         [call("remove_assets", assets=PARKED_IN_LOT_B)],
     ),
@@ -493,6 +563,48 @@ REMOVAL: list[Json] = [
         "We don't need parking lot B in this scenario at all, take the whole lot out.",
         [call("remove_assets", assets=["parking_lot_b"])],
     ),
+    case(
+        "removal", "vague", "backref_keep_only_library_people", "just keep the ones at the library, the others can go",
+        [delta("pedestrian", -3), count("pedestrian", 2, 2),
+         {"kind": "near", "category": "pedestrian", "scope": "all", "target": "Library entrance", "within": 12, "require_all": True},
+         guard("pedestrian")],
+        [call("remove_assets", category="pedestrian", near="bus stop", count=3)],
+        setup=[turn("Add three people at the bus stop and two at the Library entrance.",
+                    [call("add_asset", category="pedestrian", count=3, location=at("bus stop")),
+                     call("add_asset", category="pedestrian", count=2, location=at("Library entrance"))])],
+    ),
+    case(
+        "removal", "vague", "pm_deprioritise_construction_clutter",
+        "Let's deprioritise the clutter: the construction stuff can go.",
+        [count("construction_sign", 0, 0), count("cement_rubble", 0, 0), guard("construction_sign", "cement_rubble")],
+        [call("remove_assets", category="construction_sign"), call("remove_assets", category="cement_rubble")],
+        tags=("compound",),
+        setup=[turn("Add two construction signs and three lumps of rubble near the north crosswalk.",
+                    [call("add_asset", category="construction_sign", count=2, location=at("north crosswalk")),
+                     call("add_asset", category="cement_rubble", count=3, location=at("north crosswalk"))])],
+    ),
+    case(
+        "removal", "vague", "wanted_state_no_people", "Ideally the scene ends up empty of people.",
+        [count("pedestrian", 0, 0), guard("pedestrian")],
+        [call("remove_assets", category="pedestrian")],
+        setup=[turn("Add four pedestrians at the west crosswalk.",
+                    [call("add_asset", category="pedestrian", count=4, location=at("west crosswalk"))])],
+    ),
+    case(
+        "removal", "erroneous", "typo_suv_and_hidrant", "delte the suv and the hidrant",
+        [gone("suv_1", "fire_hydrant_1"), guard(assets=["suv_1", "fire_hydrant_1"])],
+        [call("remove_assets", assets=["suv_1"]), call("remove_assets", assets=["fire_hydrant_1"])],
+        tags=("compound",),
+    ),
+    case(
+        "removal", "erroneous", "voice_lamps_accept_south", "remove all the lamps accept the ones on the south side",
+        [gone(*NORTH_STREET_LIGHTS), kept(*SOUTH_STREET_LIGHTS), guard("street_light")],
+        [call("remove_assets", assets=NORTH_STREET_LIGHTS)],
+    ),
+    impossible(
+        "removal", "erroneous", "delete_the_fountian", "delete the fountian",
+        [call("remove_assets", assets=["fountain"])],
+    ),
 ]
 
 POSITIONING: list[Json] = [
@@ -529,7 +641,7 @@ POSITIONING: list[Json] = [
     ),
     case(
         "positioning", "indirect", "instructor_car_by_lot_a_entrance",
-        "For the manoeuvring lesson I'd like one of the parked cars standing by the entrance of lot A, so the learner has to steer round it.",
+        "For the manoeuvring lesson, one of the cars from lot B needs to stand by the entrance of lot A, so the learner has to steer round it.",
         [near(["passenger_car", "suv"], "parking lot A entrance", 10, scope="touched"), guard(assets=PARKED_IN_LOT_B)],
         [call("place_asset", asset="passenger_car_1", location=at("parking lot A entrance", "next_to"))],
     ),
@@ -578,7 +690,7 @@ POSITIONING: list[Json] = [
     ),
     case(
         "positioning", "vague", "backref_that_one_other_side",
-        "the same again but on the other side of the road",
+        "now mirror it across to the far side of the street",
         [near_point(None, -30.0, 3.5, 3, asset="motorcycle_1"), guard(assets=["motorcycle_1"])],
         [call("place_asset", asset="motorcycle_1", location=point(-30.0, 3.48))],
         setup=[turn("Put a motorbike at the bus stop.", [call("add_asset", category="motorcycle", location=at("bus stop"))],
@@ -603,6 +715,49 @@ POSITIONING: list[Json] = [
     impossible(
         "positioning", "direct", "bench_inside_library", "Place the bench inside the Library.",
         [call("place_asset", asset="bench_1", location=point(-41.0, -30.0))],
+    ),
+    case(
+        "positioning", "indirect", "us_trash_can_and_bench_by_jtekt",
+        "Can the trash can go on the sidewalk by the JTEKT Building, with the bench right beside it?",
+        [{"kind": "on_surface", "asset": "trash_bin_1", "surfaces": ["sidewalk"]},
+         near(None, "JTEKT building entrance", 12, asset="trash_bin_1"), near(None, "trash_bin_1", 4, asset="bench_1"),
+         guard(assets=["trash_bin_1", "bench_1"])],
+        [call("place_asset", asset="trash_bin_1", location=at("JTEKT building entrance", "on_sidewalk")),
+         call("place_asset", asset="bench_1", location=at("trash_bin_1", "next_to"))],
+        tags=("compound",),
+    ),
+    case(
+        "positioning", "indirect", "instructor_parallel_parking_drill",
+        "For the parallel-parking drill, I want the SUV standing at the kerb of our road about twenty metres ahead of us.",
+        [{"kind": "relative", "asset": "suv_1", "relation": "in_front_of", "target": "ego", "max_distance": 30, "tolerance_deg": 30},
+         near(None, "ego", 28, asset="suv_1"), guard(assets=["suv_1"])],
+        [call("place_asset", asset="suv_1", location=at("ego", along_m=20, side="right"))],
+    ),
+    case(
+        "positioning", "vague", "backref_cyclist_to_lot_b_entrance", "hmm no, the bike goes by lot B's entrance instead",
+        [near(None, "parking lot B entrance", 6, asset="bicycle_1"), guard(assets=["bicycle_1"])],
+        [call("place_asset", asset="bicycle_1", location=at("parking lot B entrance", "next_to"))],
+        setup=[turn("Add a cyclist at the main gate.", [call("add_asset", category="bicycle", location=at("main gate"))])],
+    ),
+    case(
+        "positioning", "vague", "passive_hydrant_nearer_crossroads",
+        "Placement of the hydrant closer to the crossroads is preferred.",
+        [near_point(None, 0.0, 0.0, 12, asset="fire_hydrant_1"), guard(assets=["fire_hydrant_1"])],
+        [call("place_asset", asset="fire_hydrant_1", location=at("main intersection", "next_to"))],
+    ),
+    impossible(
+        "positioning", "vague", "bench_on_jtekt_roof", "the bench should go up on top of the JTEKT building somewhere",
+        [call("place_asset", asset="bench_1", location=point(37.0, 30.0))],
+    ),
+    case(
+        "positioning", "erroneous", "typo_bin_nxt_stop_sign", "plaec the bin nxt to the stop sign",
+        [near(None, "stop_sign_1", 3, asset="trash_bin_1"), guard(assets=["trash_bin_1"])],
+        [call("place_asset", asset="trash_bin_1", location=at("stop_sign_1", "next_to"))],
+    ),
+    case(
+        "positioning", "erroneous", "voice_stop_sine_too_east_gate", "put the stop sine too the east gate",
+        [near(None, "east gate", 8, asset="stop_sign_1"), guard(assets=["stop_sign_1"])],
+        [call("place_asset", asset="stop_sign_1", location=at("east gate", "next_to"))],
     ),
 ]
 
@@ -637,7 +792,7 @@ MOVING: list[Json] = [
     ),
     case(
         "moving", "indirect", "instructor_run_up_fifteen",
-        "I'd like the car my learner sits in to start a bit further back, fifteen metres say, so she gets a run-up.",
+        "The car my learner sits in ought to start further back, fifteen metres say, so she gets a run-up.",
         [moved("ego", min_distance=13, max_distance=17, direction="backward"), guard(assets=["ego"])],
         [call("move_asset", asset="ego", forward=-15)],
     ),
@@ -655,13 +810,13 @@ MOVING: list[Json] = [
     ),
     case(
         "moving", "indirect", "parent_parked_cars_scoot_forward",
-        "Shall we scoot all three parked cars forward a little, like they're queueing for the ice-cream van?",
+        "Shall we scoot the three cars in the car park forward a little, like they're queueing for the ice-cream van?",
         [*(moved(a, min_distance=0.5, max_distance=6, direction="forward") for a in PARKED_IN_LOT_B), guard(assets=PARKED_IN_LOT_B)],
         [call("move_asset", assets=PARKED_IN_LOT_B, forward=2)],
     ),
     case(
         "moving", "indirect", "us_every_vehicle_in_lot_east",
-        "Bump every vehicle in the parking lot 4 meters east.",
+        "Bump each vehicle in the parking lot 4 meters east.",
         [*(moved(a, min_distance=3.5, max_distance=4.5, direction="right") for a in PARKED_IN_LOT_B), guard(assets=PARKED_IN_LOT_B)],
         [call("move_asset", assets=PARKED_IN_LOT_B, east=4)],
     ),
@@ -705,6 +860,47 @@ MOVING: list[Json] = [
     impossible(
         "moving", "direct", "ego_half_a_kilometre", "Move the ego 500 m forward.",
         [call("move_asset", asset="ego", forward=500)],
+    ),
+    case(
+        "moving", "vague", "backref_bring_the_bus_forward", "hmm, bring it forward a bit",
+        [moved("bus_1", min_distance=0.5, max_distance=10, direction="forward"), guard(assets=["bus_1"])],
+        [call("move_asset", asset="bus_1", forward=3)],
+        setup=[turn("Put a bus at the bus stop.", [call("add_asset", category="bus", location=at("bus stop"))], planned=True)],
+    ),
+    case(
+        "moving", "vague", "uk_car_park_cars_further_back", "Every car in the car park a touch further back, please.",
+        [*(moved(a, min_distance=0.5, max_distance=6, direction="backward") for a in PARKED_IN_LOT_B), guard(assets=PARKED_IN_LOT_B)],
+        [call("move_asset", assets=PARKED_IN_LOT_B, forward=-2)],
+    ),
+    case(
+        "moving", "vague", "suv_facing_wrong_way", "the suv's facing the wrong way",
+        [moved("suv_1", max_distance=2, turn_min_deg=160), guard(assets=["suv_1"])],
+        [call("move_asset", asset="suv_1", turn_deg=180)],
+    ),
+    case(
+        "moving", "indirect", "instructor_start_back_and_hydrant_off_kerb",
+        "I'll have my learner start five metres further back, and the hydrant should sit a metre further from the kerb.",
+        [moved("ego", min_distance=4, max_distance=6, direction="backward"),
+         moved("fire_hydrant_1", min_distance=0.5, max_distance=1.5, direction="left"), guard(assets=["ego", "fire_hydrant_1"])],
+        [call("move_asset", asset="ego", forward=-5), call("move_asset", asset="fire_hydrant_1", north=1)],
+        tags=("compound",),
+    ),
+    impossible(
+        "moving", "indirect", "shift_engineering_hall",
+        "Could Engineering Hall be moved ten metres north so the road feels wider?",
+        [call("move_asset", asset="Engineering Hall", north=10)],
+    ),
+    case(
+        "moving", "erroneous", "typo_mvoe_ego_bakc", "mvoe ego bakc 5m",
+        [moved("ego", min_distance=4, max_distance=6, direction="backward"), guard(assets=["ego"])],
+        [call("move_asset", asset="ego", forward=-5)],
+    ),
+    case(
+        "moving", "erroneous", "voice_suv_forward_than_turn", "move the suv forward ten meters and than turn it left ninety",
+        [moved("suv_1", min_distance=9, max_distance=11, direction="forward", turn_min_deg=80, turn_max_deg=100),
+         guard(assets=["suv_1"])],
+        [call("move_asset", asset="suv_1", forward=10), call("move_asset", asset="suv_1", turn_deg=90)],
+        tags=("compound",),
     ),
 ]
 
@@ -793,13 +989,13 @@ ARRANGEMENT: list[Json] = [
     ),
     case(
         "arrangement", "vague", "wanted_state_ring_of_cones",
-        "The scene should have a ring of cones in the middle of the crossroads.",
+        "What I'm after is a ring of cones in the middle of the crossroads.",
         [delta("traffic_cone", 3, 40), {"kind": "arrangement", "category": "traffic_cone", "shape": "ring", "around": "main intersection"},
          near("traffic_cone", "main intersection", 1, require_all=True), guard("traffic_cone")],
         [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=8, location=at("main intersection"), radius=5)],
     ),
     case(
-        "arrangement", "vague", "backref_same_in_other_lane", "the same again but along the westbound one",
+        "arrangement", "vague", "backref_same_in_other_lane", "ditto for the westbound one",
         [delta("traffic_cone", 4), {"kind": "arrangement", "category": "traffic_cone", "shape": "line", "min_count": 4},
          near("traffic_cone", "main_westbound", 3, require_all=True), guard("traffic_cone")],
         [call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", count=4, location=at("main_westbound", "in_lane"))],
@@ -830,6 +1026,61 @@ ARRANGEMENT: list[Json] = [
         "arrangement", "indirect", "ring_of_150_bollards",
         "I'd want the fountain fenced in properly: a ring of 150 bollards around it.",
         [call("arrange_assets", categories=["bollard"], shape="ring", count=150, location=at("fountain"), radius=10)],
+    ),
+    case(
+        "arrangement", "indirect", "us_work_zone_cones_and_sign",
+        "I'm testing a work zone: five cones along the edge of our lane, and a construction sign ten meters ahead of us.",
+        [delta("traffic_cone", 5), delta("construction_sign", 1),
+         near("traffic_cone", "main_eastbound", 3, require_all=True),
+         {"kind": "relative", "category": "construction_sign", "scope": "added", "relation": "in_front_of", "target": "ego",
+          "max_distance": 20}, guard("traffic_cone", "construction_sign")],
+        [call("arrange_assets", categories=["traffic_cone"], shape="lane_edge", count=5, location=at("main_eastbound", "in_lane")),
+         call("add_asset", category="construction_sign", location=at("ego", "in_front_of", distance=10))],
+        tags=("compound",),
+    ),
+    case(
+        "arrangement", "vague", "pm_proper_queue_in_lot_a", "Let's have a proper row of parked vehicles in lot A.",
+        [delta(VEHICLES, 3, 20), {"kind": "arrangement", "category": VEHICLES, "shape": "line", "min_count": 3},
+         near(VEHICLES, "parking lot A", 1, require_all=True), guard(*VEHICLES)],
+        [call("arrange_assets", categories=["passenger_car"], shape="parking_row", count=4, location=at("parking lot A"))],
+    ),
+    case(
+        "arrangement", "vague", "circle_of_trees_round_fountain", "a circle of trees round the fountain would look nice",
+        [delta("tree", 3, 20), {"kind": "arrangement", "category": "tree", "shape": "ring", "around": "fountain"},
+         guard("tree")],
+        [call("arrange_assets", categories=["tree"], shape="ring", count=6, location=at("fountain"), radius=12)],
+    ),
+    case(
+        "arrangement", "vague", "backref_bollard_line_engineering", "repeat that outside Engineering Hall",
+        [delta("bollard", 4), {"kind": "arrangement", "category": "bollard", "shape": "line", "min_count": 4},
+         near("bollard", "Engineering Hall entrance", 15, require_all=True), guard("bollard")],
+        [call("arrange_assets", categories=["bollard"], shape="line", count=4, spacing=2,
+              location=at("Engineering Hall entrance", "on_sidewalk"))],
+        setup=[turn("Put a line of four bollards on the pavement outside the Library.",
+                    [call("arrange_assets", categories=["bollard"], shape="line", count=4, spacing=2,
+                          location=at("Library entrance", "on_sidewalk"))], planned=True)],
+    ),
+    case(
+        "arrangement", "erroneous", "typo_berriers_lien_behind", "put 4 berriers in a lien across the road behind us",
+        [delta("road_barrier", 4), {"kind": "arrangement", "category": "road_barrier", "shape": "line", "min_count": 4},
+         {"kind": "relative", "category": "road_barrier", "scope": "added", "relation": "behind", "target": "ego",
+          "max_distance": 30, "tolerance_deg": 75, "require_all": True}, guard("road_barrier")],
+        [call("arrange_assets", categories=["road_barrier"], shape="line", count=4, location=at("ego", "behind", distance=15))],
+    ),
+    case(
+        "arrangement", "erroneous", "voice_ring_and_row_buy_bus_stop",
+        "ring of cones round the crossroads and a row of bollards buy the bus stop",
+        [delta("traffic_cone", 3, 40), delta("bollard", 3, 15),
+         {"kind": "arrangement", "category": "traffic_cone", "shape": "ring", "around": "main intersection"},
+         {"kind": "arrangement", "category": "bollard", "shape": "line"},
+         near("bollard", "bus stop", 15, require_all=True), guard("traffic_cone", "bollard")],
+        [call("arrange_assets", categories=["traffic_cone"], shape="ring", count=8, location=at("main intersection"), radius=5),
+         call("arrange_assets", categories=["bollard"], shape="line", count=5, spacing=2, location=at("bus stop", "on_sidewalk"))],
+        tags=("compound",),
+    ),
+    impossible(
+        "arrangement", "erroneous", "ring_of_trees_radius_200", "make a ring of trees around the libary, radius 200 m",
+        [call("arrange_assets", categories=["tree"], shape="ring", count=12, location=at("Library entrance"), radius=200)],
     ),
 ]
 
@@ -911,7 +1162,7 @@ APPEARANCE: list[Json] = [
          call("set_asset_appearance", assets=["suv_1"], colour="white")],
     ),
     case(
-        "appearance", "vague", "backref_same_for_trash_can", "same again for the trash can",
+        "appearance", "vague", "backref_same_for_trash_can", "now the trash can in that colour too",
         [looks(asset="trash_bin_1", colour="yellow"), guard(assets=["trash_bin_1"])],
         [call("set_asset_appearance", assets=["trash_bin_1"], colour="yellow")],
         setup=[turn("Paint the bus stop bench yellow.", [call("set_asset_appearance", assets=["bench_1"], colour="yellow")])],
@@ -934,6 +1185,55 @@ APPEARANCE: list[Json] = [
     impossible(
         "appearance", "direct", "make_it_hail", "Make it hail.",
         [call("set_weather", kind="hail")],
+    ),
+    case(
+        "appearance", "indirect", "uk_drizzly_november_evening",
+        "It's meant to be a drizzly November evening: light rain, and the clock at about half five.",
+        [env(weather=["rain"], intensity_max=0.5, time_from="17:20", time_to="17:40"), guard(environment=True)],
+        [call("set_weather", kind="rain", intensity=0.3), call("set_time_of_day", time="17:30")],
+        tags=("compound",),
+    ),
+    case(
+        "appearance", "indirect", "passive_activation_of_headlights", "Activation of the vehicle headlights is required.",
+        [env(vehicle_lights="on"), guard(environment=True)],
+        [call("set_lighting", vehicle_lights="on")],
+    ),
+    impossible(
+        "appearance", "indirect", "proper_thunderstorm",
+        "For the sensor stress test we want a proper thunderstorm with lightning.",
+        [call("set_weather", kind="thunderstorm", intensity=1.0)],
+    ),
+    case(
+        "appearance", "vague", "everything_in_lot_b_white", "everything in lot B should be white",
+        [looks(category=["passenger_car", "suv"], scope="all", colour="white", min_count=3, require_all=True),
+         guard(assets=PARKED_IN_LOT_B)],
+        [call("set_asset_appearance", assets=PARKED_IN_LOT_B, colour="white")],
+    ),
+    case(
+        "appearance", "vague", "parent_banana_bench_and_bin",
+        "let's make the bench as yellow as a banana, and the bin next to it too",
+        [looks(asset="bench_1", colour="yellow"), looks(asset="trash_bin_1", colour="yellow"),
+         guard(assets=["bench_1", "trash_bin_1"])],
+        [call("set_asset_appearance", assets=["bench_1"], colour="yellow"),
+         call("set_asset_appearance", assets=["trash_bin_1"], colour="yellow")],
+        tags=("compound",),
+    ),
+    case(
+        "appearance", "vague", "brighter", "brighter",
+        [env(exposure_min=1.1), guard(environment=True)],
+        [call("set_lighting", exposure=1.5)],
+    ),
+    case(
+        "appearance", "erroneous", "typo_fogy_and_dusk", "set the wether to fogy and the time too dusk",
+        [env(weather=["fog"], time_from="17:00", time_to="20:30"), guard(environment=True)],
+        [call("set_weather", kind="fog", intensity=0.6), call("set_time_of_day", time="dusk")],
+        tags=("compound",),
+    ),
+    case(
+        "appearance", "erroneous", "voice_cars_read_accept_suv", "make all the cars read accept the suv",
+        [looks(category="passenger_car", scope="all", colour="red", min_count=2, require_all=True),
+         guard("passenger_car")],
+        [call("set_asset_appearance", category="passenger_car", colour="red")],
     ),
 ]
 
