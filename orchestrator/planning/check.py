@@ -49,6 +49,7 @@ from drivetwin.orchestrator.planning.coverage import (
     excepted_touched,
     indefinite_but_moved,
     inside_building,
+    landmark_thing_changed,
     missing_categories,
     named_things,
     off_the_side,
@@ -264,6 +265,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     if effect.added or effect.changed:
         out += inside_building(request.low, scene)
     out += away_from_thing(request.masked, scope, scene)
+    out += landmark_thing_changed(request.masked, scope)
     out += off_the_side(request.low, scope, scene)
     out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
     if request.place is None and request.lane is None and (strays := unpointed(request.masked, scope, scene)):

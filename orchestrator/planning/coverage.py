@@ -42,6 +42,8 @@ _PLACE_PREPOSITION = re.compile(
     r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|"
     r"close to|opposite|where is|where's|where are)\s+the\s+([a-z][a-z' -]*)"
 )
+# Arguments by which a call says where: a repaired place name ends up in one of them.
+_PLACE_ARG = re.compile(r"'(?:location|near|nearest_to|lane|asset|assets|target|x|y)':")
 # Words after "the" that are part of a relation, not a place ("on the right", "to the north").
 _RELATION_WORDS = frozenset(
     [
@@ -318,6 +320,17 @@ def away_from_thing(masked: str, scope: Scope, scene: Scene) -> list[str]:
     return out
 
 
+def landmark_thing_changed(masked: str, scope: Scope) -> list[str]:
+    """Things named only to say where something else is ("the orange one next to the bench") that
+    the plan removes or changes itself."""
+    named = named_in(masked)
+    beside = {m.category for m in named if _BESIDE.search(m.before)}
+    only_beside = beside - {m.category for m in named if not _BESIDE.search(m.before)}
+    added = {a.id for a in scope.added}
+    hit = sorted({a.id for a in scope.touched if a.category in only_beside and a.id not in added})
+    return [f"you named {', '.join(hit)} to say where the thing is, but the plan changes it"] if hit else []
+
+
 def off_the_side(low: str, scope: Scope, scene: Scene) -> list[str]:
     """Things the plan touches that are not on the side of a road or place the words name
     ("the street lights on the north side of Main Street")."""
@@ -587,8 +600,12 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
                 break  # ("the closest hydrant": a superlative modifies what follows, it names no place)
             if ph.find_categories(word) or is_known(word, vocab):
                 break
-            if word in said or word not in english_words():
-                break  # a misspelling is the planner's to repair; a word the plan uses is accounted for
+            if word in said:
+                break  # a word the plan uses is accounted for
+            if word not in english_words():  # a misspelling is the planner's to repair, but
+                if not _PLACE_ARG.search(said):  # a plan placing nothing has dropped the place
+                    out.append(f"I do not know the place {word!r}")
+                break
             out.append(f"there is no {word!r} in this world")
             break
     names = [ph.normalise(n).strip() for lm in scene.landmarks for n in lm.names()]
@@ -616,6 +633,7 @@ __all__ = [
     "excepted_touched",
     "indefinite_but_moved",
     "inside_building",
+    "landmark_thing_changed",
     "missing_categories",
     "named_in",
     "named_things",

@@ -56,7 +56,7 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      # "could the second car go in lot A?": a wish for where a thing should be
                      r"|^(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive)\b"
                      # "the car you just put there, could it go forward?": the same wish for a thing named first
-                     r"|(?:^|[,.;:!-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift)\b")
+                     r"|(?:^|[,.;:!-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift|look|be|get)\b")
 
 
 # A clause saying why ("... so traffic can flow again", "... so that the ego has to stop", "in
@@ -76,6 +76,12 @@ _REASON_FIRST = re.compile(
     r"ring|surround|cordon|mark)\b)",
     re.IGNORECASE,
 )
+
+# A clause saying why with "because" or "since", after the request ("..., because the shadows at noon
+# look wrong") or before it ("Because cyclists come down Campus Drive, the sign should stand ..."):
+# why, not what; its things and times are not the request's.
+_BECAUSE = re.compile(r"(?:,\s*|\s+)(?:because|since|'?cause|cos)\b[^.;!?]*", re.IGNORECASE)
+_BECAUSE_FIRST = re.compile(r"^\s*(?:because|since|as)\b[^,.;!?]*,\s*(?=\S+(?:\s+\S+){2})", re.IGNORECASE)
 
 _POINTS_BACK = re.compile(r"\b(it|its|there|them|they|their|that|those|these|this)\b", re.IGNORECASE)
 
@@ -137,6 +143,12 @@ def without_reason(text: str) -> str:
         text = text[first.end() :]
     elif first is not None:  # "..., so put bikes at its entrance": the reason introduces what "its" means
         text = text[: first.start() + text[: first.end()].rindex(",")] + ": " + text[first.end() :]
+    because = _BECAUSE_FIRST.match(text)
+    if because is not None and not _POINTS_BACK.search(text[because.end() :]):
+        text = text[because.end() :]
+    later = _BECAUSE.search(text)
+    if later is not None and len(text[: later.start()].split()) >= 2:  # "since when ..." asks
+        text = _BECAUSE.sub("", text)
     return _REASON.sub("", text)
 
 

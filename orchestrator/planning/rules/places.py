@@ -70,6 +70,7 @@ class Notes:
     # The prompt's own context: the place and the assets its earlier clauses named.
     place: dict[str, Any] | None = None
     subject: list[str] = field(default_factory=list)
+    named: list[str] = field(default_factory=list)  # the subject before new things became it
     coming: list[str] = field(default_factory=list)  # ids its earlier clauses' new things will get
 
     def adding(self, scene: Scene, category: str, count: int) -> None:

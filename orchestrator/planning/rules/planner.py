@@ -135,6 +135,7 @@ _NEGATED_WISH = re.compile(
 # trees block the view"), unless it says what should be ("the bus should stop", "it belongs in lot A").
 _STATEMENT = re.compile(
     r"\s*(?:(?:the|this|that|these|those|it|they|there)\b[^,;]*?\b(?:is|are|was|were)\b"
+    r"|(?:it|that|there|they)(?:'s|'re) (?!(?:got to|gotta|going to|supposed to|meant to|time)\b)"
     r"|(?:the|this|that|these|those|whoever|anyone who|everyone who)\s+(?![^,;]*\b(?:should|must|needs?|has to|have to|ought|go|goes|belongs?|wants?|"
     r"will|would|can|could|shall|may|might|let|gets?|to be)\b)[a-z' -]+\s(?:[a-z]+s|block|blocks|sit|stand|stay|face|look)\b"
     rf"|{HABITUAL.pattern})"
@@ -233,6 +234,8 @@ class RulePlanner:
                 continue
             if (intro or _STATEMENT.match(reading.low)) and not asked:
                 described.extend(clause_calls)  # "the bench by the stop is in the way": context, unless all there is
+                if set(notes.subject) & set(notes.coming[coming:]):
+                    notes.subject = notes.named  # nor is it what a later "it" means
                 del notes.coming[coming:]  # what it would add is not coming
                 continue
             calls.extend(clause_calls)
@@ -673,4 +676,5 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCal
     if colour is not None:
         args["colour"] = colour
     notes.adding(scene, mention.category, count)
+    notes.named, notes.subject = notes.subject, notes.coming[-count:]  # "add a car, make it red": "it" is the new car
     return [ToolCall(tool="add_asset", args=args)]

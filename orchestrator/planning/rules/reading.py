@@ -98,6 +98,8 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
             )
             if m and key.endswith("ing") and _VERB_OBJECT.match(m.string[m.end() :]):
                 continue  # "a pedestrian crossing the road": a walker crossing, not the crossing
+            if m and _thing_named_with(m.group(0), m.string[m.end() :]):
+                continue  # "the pedestrian crossing sign": a thing whose name holds a place's
             if m and (best is None or len(key) > best[0]):
                 # Map the span back to `low` by finding the same words there.
                 words = r"\s+(?:(?:the|a|an)\s+)?".join(re.escape(w) for w in key.split())
@@ -118,6 +120,13 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
         if m and word not in world:
             return name, m.start(), m.end()
     return None
+
+
+def _thing_named_with(place: str, after: str) -> bool:
+    """Whether a place's name and the word after it together name a kind of thing."""
+    following = after.split()[:1]
+    said = f"{place} {following[0]}" if following else place
+    return any(t.end - t.start > len(place) for t in ph.find_categories(said))
 
 
 def _shortened_name(scene: Scene, low: str) -> tuple[str, int, int] | None:
@@ -141,13 +150,20 @@ def _shortened_name(scene: Scene, low: str) -> tuple[str, int, int] | None:
 def _place_head_word(scene: Scene, low: str, mentions: list[ph.Mention]) -> str | None:
     """A word naming a kind of place ("the gates"): the head noun of a landmark's name, which is
     the word before its "of" ("centre of the scene") or its last; never part of a thing named."""
-    heads = {ph.tokens(name.split(" of ")[0])[-1] for lm in scene.landmarks for name in lm.names()}
+    heads = {_head(ph.tokens(name.split(" of ")[0])) for lm in scene.landmarks for name in lm.names()}
     for said in re.finditer(r"[a-z]+", low):
         word = said.group(0)
         if (word in heads or ph.singular(word) in heads) and not any(
                 m.start <= said.start() < m.end for m in mentions):
             return ph.singular(word)
     return None
+
+
+def _head(words: list[str]) -> str:
+    """The head noun of a place's name: its last word, or the one before a letter or number
+    that labels it ("parking lot A" is a lot)."""
+    labelled = len(words) > 1 and (len(words[-1]) == 1 or words[-1].isdigit())
+    return words[-2] if labelled else words[-1]
 
 
 def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
