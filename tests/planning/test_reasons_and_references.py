@@ -1,0 +1,98 @@
+"""Why a request is made ("..., because ...", "Since ..., ..."), things whose names hold a place's
+("the pedestrian crossing sign"), phrasal verbs split by their object ("take that thing away"),
+a thing named only to say where another is, "it" meaning what the same request adds, and a
+place the words name that nobody recognised. Read alike by the rule planner and the plan check;
+the wording is this file's own, run on the packaged campus world."""
+
+from __future__ import annotations
+
+import pytest
+from drivetwin.orchestrator.planning.base import Plan, PlanContext
+from drivetwin.orchestrator.planning.check import review
+from drivetwin.orchestrator.planning.intent import asks, without_reason
+from drivetwin.orchestrator.planning.rules.phrases import normalise
+from drivetwin.orchestrator.planning.rules.reading import find_place, read
+from drivetwin.tools.base import ToolCall
+
+
+@pytest.mark.parametrize(
+    ("text", "kept"),
+    [
+        ("switch it to dusk, because the cameras saturate at midday", "switch it to dusk"),
+        ("Since the cyclists use Campus Drive, the bench ought to sit by the library.",
+         "the bench ought to sit by the library."),
+        ("As the lot fills up early, two more cars in lot A", "two more cars in lot A"),
+    ],
+)
+def test_a_because_clause_says_why_and_is_read_apart(text, kept):
+    assert without_reason(text) == kept
+
+
+@pytest.mark.parametrize("text", ["since when has it been foggy?", "Because the bus is in the way, move it"])
+def test_a_question_about_since_or_a_reason_the_request_points_back_to_is_kept(text):
+    assert without_reason(text) == text
+
+
+def test_the_reason_s_time_is_not_the_time_asked_for(session, campus):
+    report = session.submit("make it later in the day, since noon light is too flat for the dataset")
+    assert report.ok, report.error
+    assert session.scene.environment.time_of_day != "12:00"
+    assert session.scene.environment.time_of_day != campus.environment.time_of_day
+
+
+def test_a_thing_whose_name_holds_a_place_s_name_is_that_thing(campus):
+    reading = read("shift the pedestrian crossing sign over to the north crossing", campus)
+    assert [m.category for m in reading.mentions] == ["pedestrian_sign"]
+    assert reading.landmark == "north crosswalk"
+    place = find_place(campus, normalise("a cyclist at the pedestrian crossing"))
+    assert place is not None and place[0] == "west crosswalk"  # the place alone is still the place
+
+
+def test_a_phrasal_verb_split_by_its_object_is_one_verb(session, campus):
+    assert "take away those two bins" in normalise("take those two bins away please")
+    assert "take the cones out of the lot" in normalise("take the cones out of the lot")  # out of a place stays
+    report = session.submit("please take that hydrant away")
+    assert report.ok and session.scene.count("fire_hydrant") == campus.count("fire_hydrant") - 1
+
+
+def test_a_thing_named_to_say_where_is_not_what_the_plan_may_change(campus, registry):
+    bench = next(a for a in campus.assets if a.category == "bench")
+    plan = Plan(calls=[ToolCall(tool="remove_assets", args={"assets": [bench.id]})], planner="t")
+    verdict = review("lose the little orange one beside the bench", plan, PlanContext(campus, registry))
+    assert verdict.action != "apply"
+    assert any(bench.id in p and "where" in p for p in verdict.problems)
+
+
+def test_the_thing_acted_on_may_still_stand_by_a_thing_named(campus, registry):
+    hydrant = next(a for a in campus.assets if a.category == "fire_hydrant")
+    plan = Plan(calls=[ToolCall(tool="add_asset", args={"category": "trash_bin", "location": {
+        "relation": "next_to", "target": hydrant.id}})], planner="t")
+    assert review("stand a bin beside the hydrant", plan, PlanContext(campus, registry)).action == "apply"
+
+
+def test_it_after_an_addition_is_the_new_thing(session, campus):
+    report = session.submit("spawn a van near the library, then paint it purple")
+    vans = [a for a in session.scene.assets if a.category == "truck" and campus.asset(a.id) is None]
+    assert report.ok, report.error
+    assert len(vans) == 1 and vans[0].appearance.rgba is not None
+    assert vans[0].appearance.rgba[2] > vans[0].appearance.rgba[1]  # purple: more blue than green
+    assert all(campus.asset(a.id) == a for a in session.scene.assets if a.id != vans[0].id)
+
+
+def test_a_place_nobody_recognised_is_never_dropped_silently(session, campus):
+    report = session.submit("drop a cone just in front of the zorbl")
+    assert not report.ok  # asked which place was meant, or refused: never a cone somewhere
+    assert session.scene.assets == campus.assets
+    text = report.error or (report.question.text if report.question else "")
+    assert "zorbl" in text
+
+
+def test_can_it_look_like_asks_for_the_look(session, campus):
+    assert not asks("could it look like a grey winter morning?")
+    report = session.submit("can it look like a clear sunny afternoon?")
+    assert report.ok and session.scene.environment.weather.kind == "clear"
+
+
+def test_a_lettered_place_names_no_place_called_a(campus):
+    reading = read("can it be a bit brighter", campus)
+    assert reading.landmark_word is None  # "parking lot A" gives no place word "a"
