@@ -17,7 +17,15 @@ from drivetwin.orchestrator import logs
 from drivetwin.orchestrator.journal import Entry, EventKind, History, Journal, JournalError, JournalWriteError
 from drivetwin.orchestrator.journal_events import PlanFacts
 from drivetwin.orchestrator.memory import Memory, Turn
-from drivetwin.orchestrator.planning import MAX_PROMPT_CHARS, Plan, PlanContext, Planner, PlanningError, Question
+from drivetwin.orchestrator.planning import (
+    MAX_PROMPT_CHARS,
+    Plan,
+    PlanContext,
+    Planner,
+    PlanningError,
+    Question,
+    TraceStep,
+)
 from drivetwin.orchestrator.planning.check import review
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.registry import ToolRegistry
@@ -173,6 +181,9 @@ class Session:
             return self._failed(text, verdict.message or "; ".join(verdict.problems), started, plan)
         if verdict.question is not None:
             return self._ask(text, plan, verdict.question, started)
+        if verdict.calls is not None:  # the plan without what the request excepted
+            step = TraceStep(level="check", input="; ".join(verdict.problems), output="applied without them")
+            plan = plan.model_copy(update={"calls": verdict.calls, "trace": [*plan.trace, step]})
         return self._run(text, plan, started, verdict.outcome)
 
     def _run(self, text: str, plan: Plan, started: float, outcome: TransactionResult | None = None) -> TurnReport:

@@ -63,6 +63,7 @@ from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embe
 from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, REMOVE_WORDS, asks
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.request import Request, read_request
+from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in, spelt_measures
@@ -113,6 +114,10 @@ class Verdict:
     # The dry run of the plan's own calls on the scene it was reviewed against: the session
     # commits it as it is instead of running the same transaction a second time.
     outcome: TransactionResult | None = None
+    # The calls to apply instead of the plan's, when all that was wrong with it is something the
+    # request said it did not mean ("..., except the ones on the south side") and the check found
+    # which things those are: the plan without them (`outcome` is their dry run).
+    calls: list[ToolCall] | None = None
 
 
 # A thing said to be on its way somewhere: "a bus going east", "a truck heading north".
@@ -192,8 +197,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if not request.categories and effect.added and not _companions(effect):
         # What a new thing should be is described; what to clear away is often only implied.
         plan_categories = {a.category for a in effect.added}
-        try:
-            meant = described_category(request.masked, plan_categories)  # "the bus stop" describes no bus
+        try:  # "the bus stop" describes no bus; "traffic" is the word for cars the plan adds
+            meant = None if _concepts_said(request.low) & plan_categories else described_category(request.masked, plan_categories)
         except GroundingUnavailable:
             meant = None  # without MiniLM a description cannot be judged; the other signals remain
         if meant is not None:
@@ -316,6 +321,11 @@ def described_category(text: str, plan_categories: set[str]) -> str | None:
     if all(scores.get(c, 0.0) <= scores[best] - DESCRIPTION_MARGIN for c in plan_categories):
         return best
     return None
+
+
+def _concepts_said(low: str) -> set[str]:
+    """The categories the request names by a word for what they are to people ("traffic", "litter")."""
+    return {c for c, words in lx.CONCEPTS.items() for w in words if re.search(rf"\b{re.escape(w)}\b", low)}
 
 
 @cache
@@ -530,12 +540,14 @@ def _kinds_named(request: Request) -> set[str]:
 def _sparing(effect: Effect, spared: set[str]) -> list[ToolCall]:
     """The plan's calls without what they would do to the `spared` ids ("..., not the ego");
     empty when they touch none of them or nothing else is left to do."""
-    removed = {a.id: a for a in effect.removed}
+    acted = {a.id: a for a in [*effect.removed, *effect.changed]}
     out: list[ToolCall] = []
     for call in effect.calls:
         args = dict(call.args)
-        if call.tool == "remove_assets" and "assets" not in args:  # by kind: the ones it took
-            args = {"assets": [i for i, a in removed.items() if a.category == args.get("category")]}
+        if call.tool in _GROUP_TOOLS and "category" in args and "assets" not in args:  # by kind: the ones it took
+            kind = args.pop("category")
+            args = {k: v for k, v in args.items() if k not in ("count", "near", "within")}
+            args["assets"] = [i for i, a in acted.items() if a.category == kind]
         if "assets" in args:
             args["assets"] = [i for i in args["assets"] if i not in spared]
             if not args["assets"]:
@@ -583,6 +595,11 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
                 text=f"There is no {name} in the scene yet. Add one?",
                 readings=[Reading(text=describe(plan.calls), calls=list(plan.calls))]))
         return Verdict("apply", outcome=effect.outcome)
+    if request.excepted and found == excepted_touched(request.excepted, _kinds_named(request), _scope(effect), context.scene):
+        spared = _sparing(effect, excepted_ids(request.excepted, _kinds_named(request), context.scene))
+        kept = dry_run(spared, context) if spared else None
+        if kept is not None and not problems_of(request, kept, context):
+            return Verdict("apply", found, outcome=kept.outcome, calls=spared)
     fitting: list[Reading] = []
     for reading in [*repairs(request, effect, context), *plan.alternatives]:
         other = dry_run(reading.calls, context)

@@ -541,6 +541,10 @@ def excepted_ids(excepted: Iterable[str], categories: Iterable[str], scene: Scen
     return out
 
 
+# A side said with no place it is the side of ("on the south side", "at the western end").
+_SIDE_ONLY = re.compile(r"\s*(?:on|at|to|along) the (?:north|south|east|west)(?:ern)?(?: side| end| half| edge)?\s*")
+
+
 def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str] | frozenset[str]:
     """The ids of the things `said` ("the ego", "the suv", "the one by the bench") names in the
     scene; a frozenset of the kinds it names when it picks out no one of them it can find."""
@@ -555,6 +559,8 @@ def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str] | fro
     mentions = ph.find_categories(head)
     kinds = {m.category for m in mentions} or (categories if re.search(r"\bones?\b", head) else set())
     members = [a for a in scene.all_assets() if a.category in kinds and a.id != "ego"]
+    if _SIDE_ONLY.fullmatch(where):  # "the ones on the south side" are the south ones
+        head, where = f"{head} {where}", ""
     side = md.compass_direction(re.sub(r"\b(north|south|east|west)ern\b", r"\1", head))
     if side is not None and members and not where.strip():  # "the west ones": of their kind, those that way
         east, north = md.COMPASS_VECTORS[side]

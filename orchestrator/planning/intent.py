@@ -89,6 +89,20 @@ _POINTS_BACK = re.compile(r"\b(it|its|there|them|they|their|that|those|these|thi
 # A label pasted with the request ("JIRA-412: ...", "[QA-7]", "ticket 31:"): it names the task,
 # it is not a number of things or a word to understand.
 _LABEL = re.compile(r"(?:^|(?<=\s))\[?[A-Za-z]{2,}-\d+\]?:?(?=\s|$)|\bticket\s*#?\s*\d+\s*:", re.IGNORECASE)
+# A bug report's parts: "Steps:" heads the request; "Expected: ..." restates its outcome, which is
+# no second request ("Steps: turn bench_1 90 degrees. Expected: bench turned 90 deg").
+_STEPS = re.compile(r"^\s*(?:steps?(?: to reproduce)?|repro|action|request|task)\s*:\s*", re.IGNORECASE)
+_EXPECTED = re.compile(r"(?:^|(?<=[\s.;,]))(?:expected(?: result| outcome| behaviou?r)?|expectation|actual(?: result)?"
+                       r"|acceptance(?: criteria)?)\s*:.*$", re.IGNORECASE | re.DOTALL)
+# A tag that turns a request into a question only in form ("let's take it away, shall we?").
+_TAG = re.compile(r",?\s*(?:shall we|will you|won'?t you|would you|could you|can you|ok|okay|right|yeah|alright)\s*\?\s*$",
+                  re.IGNORECASE)
+# A wish said as a cleft sentence ("What I'm after is a ring of cones", "what this scene is
+# missing is traffic"): the words after its "is" are what is wanted. A verb of wanting comes
+# before that "is"; a question ("what benches are near it") has none, or ends with a question mark.
+_CLEFT = re.compile(r"^\s*what (?:i|we|you|they|it|i'm|we're|(?:the|this|that|our|my) [a-z]+)(?: [a-z']+){0,2}? "
+                    r"(?:want|wants|need|needs|like|after|missing|lacks|lacking|mean|meant|have in mind|looking for|love"
+                    r"|expect|expected|imagine|envisage|envision|prefer)(?: [a-z]+)? (?:is|are)\s+(?=[^?]*$)", re.IGNORECASE)
 # A layout named as a spec's heading ("Ring: 6x cones around the rubble"): a ring of them, one clause.
 _LAYOUT_HEADING = re.compile(r"^\s*(ring|circle|line|row|grid)\s*:", re.IGNORECASE)
 
@@ -137,6 +151,7 @@ def without_reason(text: str) -> str:
     so give me rain") or what is not meant (", not the ego"), without labels pasted with it
     ("JIRA-412:"), and with a layout's heading read as words ("Ring: 6x cones" is a ring of 6x
     cones)."""
+    text = _STEPS.sub("", _EXPECTED.sub("", _TAG.sub("", _CLEFT.sub("I want ", text))))
     text = without_contrast(_LAYOUT_HEADING.sub(r"\1 of", _LABEL.sub(" ", text))).strip()
     first = _REASON_FIRST.match(text)
     if first is not None and not _POINTS_BACK.search(text[first.end() :]):

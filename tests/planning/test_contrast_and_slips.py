@@ -41,15 +41,21 @@ def _context(campus, registry):
     return PlanContext(campus, registry)
 
 
-def test_a_plan_that_changes_what_the_request_excepts_is_not_applied(campus, registry):
+def test_a_plan_that_changes_what_the_request_excepts_is_applied_without_it(campus, registry):
     calls = [ToolCall(tool="set_asset_appearance", args={"assets": ["passenger_car_1", "passenger_car_2", "suv_1"],
                                                          "colour": "green"})]
     verdict = review("give every car a green paint job except passenger_car_1", Plan(calls=calls, planner="t"),
                      _context(campus, registry))
-    assert verdict.action == "ask"
-    assert "not passenger_car_1" in verdict.problems[0]
-    spared = verdict.question.readings[0].calls  # the reading offered first leaves the excepted one alone
-    assert spared[0].args["assets"] == ["passenger_car_2", "suv_1"]
+    assert verdict.action == "apply" and "not passenger_car_1" in verdict.problems[0]
+    assert verdict.calls is not None and verdict.calls[0].args["assets"] == ["passenger_car_2", "suv_1"]
+    assert verdict.outcome is not None and verdict.outcome.after.asset("passenger_car_1") == campus.asset("passenger_car_1")
+
+
+def test_a_group_edit_by_kind_spares_the_excepted_one_in_the_session(session, campus):
+    report = session.submit("recolour every sedan orange apart from passenger_car_2")
+    assert report.ok, report.error
+    assert session.scene.asset("passenger_car_2") == campus.asset("passenger_car_2")
+    assert session.scene.asset("passenger_car_1") != campus.asset("passenger_car_1")
 
 
 def test_a_thing_excepted_by_where_it_stands_is_the_one_of_its_kind_nearest_there(campus, registry):
@@ -58,9 +64,10 @@ def test_a_thing_excepted_by_where_it_stands_is_the_one_of_its_kind_nearest_ther
     verdict = review("chop down every tree apart from the one beside the fountain",
                      Plan(calls=[ToolCall(tool="remove_assets", args={"category": "tree"})], planner="t"),
                      _context(campus, registry))
-    assert verdict.action == "ask" and by_fountain in verdict.problems[0]
-    offered = verdict.question.readings[0].calls[0].args["assets"]
-    assert by_fountain not in offered and offered
+    assert verdict.action == "apply" and by_fountain in verdict.problems[0]
+    assert verdict.calls is not None
+    kept = verdict.calls[0].args["assets"]  # applied without the one the words spare
+    assert by_fountain not in kept and kept
 
 
 def test_a_plan_that_leaves_the_excepted_thing_alone_is_applied(campus, registry):
@@ -166,9 +173,13 @@ def test_excepted_ones_on_a_side_are_those_of_their_kind_that_way(campus, regist
     verdict = review("take down the lamp posts, not the western ones",
                      Plan(calls=[ToolCall(tool="remove_assets", args={"category": "street_light"})], planner="t"),
                      _context(campus, registry))
-    assert verdict.action == "ask"
-    offered = verdict.question.readings[0].calls[0].args["assets"]
-    assert west and not set(west) & set(offered) and len(offered) == len(lights) - len(west)
+    assert verdict.action == "apply" and verdict.calls is not None
+    removed = verdict.calls[0].args["assets"]
+    assert west and not set(west) & set(removed) and len(removed) == len(lights) - len(west)
+    said_as_a_side = review("take down the lamp posts except the ones on the west side",
+                            Plan(calls=[ToolCall(tool="remove_assets", args={"category": "street_light"})], planner="t"),
+                            _context(campus, registry))
+    assert said_as_a_side.calls == verdict.calls
 
 
 def test_an_exception_this_world_cannot_pick_out_is_never_guessed_past(campus, registry):

@@ -52,7 +52,9 @@ class Number:
 _ONES = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
          "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
 _TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
-_SPELT = (rf"(?:(?:{'|'.join(_TENS)})(?:[- ](?:{'|'.join(_ONES[1:10])}))?|{'|'.join(_ONES)}|a|an|one hundred|a hundred)"
+_BELOW_HUNDRED = rf"(?:{'|'.join(_TENS)})(?:[- ](?:{'|'.join(_ONES[1:10])}))?|{'|'.join(_ONES)}"
+# "a hundred and eighty", and the half turn said "one eighty" or "one-eighty"
+_SPELT = (rf"(?:(?:one|a)[- ]eighty|(?:one|a) hundred(?: and (?:{_BELOW_HUNDRED}))?|{_BELOW_HUNDRED}|a|an)"
           r"(?: and a half)?")
 # A measure spelt out ("two metres", "forty-five degrees", "a metre", "half a metre", "a few metres"): the words
 # become figures so every reader of amounts with units reads it as if typed in digits.
@@ -73,8 +75,11 @@ def _spelt_value(words: str) -> float:
         return 2.0 if "couple" in low else 3.0
     if low in ("a", "an"):
         return 1.0 + half
-    if low.endswith("hundred"):
-        return 100.0 + half
+    if low in ("one eighty", "a eighty"):
+        return 180.0
+    if "hundred" in low:
+        rest = low.partition(" and ")[2]
+        return 100.0 + (_spelt_value(rest) if rest else 0.0) + half
     parts = low.split()
     tens = _TENS.get(parts[0], 0)
     ones = _ONES.index(parts[-1]) if parts[-1] in _ONES else 0

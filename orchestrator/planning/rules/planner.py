@@ -154,6 +154,10 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         text = text if reasons else without_reason(text).strip() or text
         if not text:
             continue
+        why, colon, then = text.partition(": ")
+        if colon and then.strip() and not reasons:  # "it spoils the view: let's take it away" (see without_reason)
+            out.append((why, False, True))
+            text = then
         verb = _VERB_AT.search(text.lower())
         if verb is None and lead and re.search(r"and also", parts[i - 1]) and ph.find_categories(text):
             text = f"{lead} {text}"  # "remove the hydrant and also the bin": the bin is removed too

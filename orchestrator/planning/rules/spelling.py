@@ -16,6 +16,7 @@ from functools import cache
 from pathlib import Path
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.numbers import spelt_measures
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
@@ -46,6 +47,7 @@ _SHORT_SLIPS = {
     "lite": "light",
     "thru": "through",
     "infront": "in front",
+    "hw": "how",
     "wich": "which",
     "wat": "what",
     "whr": "where",
@@ -173,8 +175,9 @@ def vocabulary(scene: Scene) -> frozenset[str]:
 
 @cache
 def _targets(vocab: frozenset[str]) -> tuple[str, ...]:
-    # Common words are protected from repair but rarely its result: "tank" is not "thanks".
-    domain = _domain_words() | (vocab - _static_vocabulary())
+    # Common words are protected from repair but rarely its result: "tank" is not "thanks", nor
+    # is "sine" "since".
+    domain = (_domain_words() - _words_of(lx.FILLER_STARTS)) | (vocab - _static_vocabulary())
     return tuple(sorted(domain | set(_REPAIRABLE_GRAMMAR)))
 
 
@@ -287,7 +290,9 @@ _GERUND = re.compile(
 _WHERE_SLIP = re.compile(r"\bwere(?= (?:is|are|can|do|does|did|was)\b)", re.IGNORECASE)
 # "is their a bench", "their are cones": "their" next to "is"/"are" and before a thing is "there".
 _THERE_SLIP = re.compile(r"(?:(?<=\bis )|(?<=\bare )|(?<=\bwas )|(?<=\bwere ))their(?= (?:a|an|any|some|no|\d+)\b)"
-                         r"|\btheir(?= (?:is|are|was|were)\b)", re.IGNORECASE)
+                         r"|\btheir(?= (?:is|are|was|were)\b)"
+                         # "how many are their now": a "their" with no noun after it
+                         r"|\btheir(?=(?: (?:now|still|yet|left|any ?more))?\s*[?.!]?\s*$)", re.IGNORECASE)
 
 
 # "the robot, put him at lot A": a thing called "him" or "her" by a writer whose language genders
@@ -298,6 +303,26 @@ _THING_PRONOUN = re.compile(r"\b(?:him|her)(?=\s+(?:at|to|in|on|by|near|next|beh
 
 # "turn of the street light": "of" right after a switching verb is a slip for "off".
 _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
+
+
+# Words voice typing writes for their sound-alikes, where the words around them leave no doubt:
+# "too buses" (two), "buy the union" (by), "turn it won eighty" (one), "all the lamps accept the
+# south ones" (except), "a stop sine" (sign).
+_SOUND_ALIKES = (
+    (re.compile(r"\bbuy(?= (?:the|a|an|that|this|those|these)\b)", re.IGNORECASE), "by"),
+    (re.compile(r"\bwon(?= (?:eighty|hundred|more|of (?:the|those|them))\b)", re.IGNORECASE), "one"),
+    (re.compile(r"(?<=\b(?:stop|road|warn|park|work) )sine\b|(?<=\bparking |warning )sine\b", re.IGNORECASE), "sign"),
+)
+
+
+def _sound_alikes(text: str) -> str:
+    for slip, meant in _SOUND_ALIKES:
+        text = slip.sub(meant, text)
+    text = re.sub(r"\b([a-z]+s|everything|all|anything) accept(?= (?:the|those|these|that|this|for|ones?)\b)", r"\1 except",
+                  text, flags=re.IGNORECASE)
+    # "too" before things in the plural: "ad too buses"
+    return re.sub(r"\btoo(?= ([a-z]+)\b)", lambda m: "two" if any(
+        c.plural for c in ph.find_categories(m.group(1))) else m.group(0), text, flags=re.IGNORECASE)
 
 
 # Two words that are one known word written apart ("side walk", "cross walk"); a catalog phrase
@@ -331,7 +356,7 @@ def _verb_of(m: re.Match[str]) -> str:
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
-    text = spelt_measures(text)  # "two metres" read as "2 metres" by every reader of measures
+    text = spelt_measures(_sound_alikes(text))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
     text = _THERE_SLIP.sub("there", text)
