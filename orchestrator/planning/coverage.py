@@ -39,7 +39,7 @@ _NEW = re.compile(
 )
 # Prepositions after which a request names a place ("near the gym", "on the moon").
 _PLACE_PREPOSITION = re.compile(
-    r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|"
+    r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|from|"
     r"close to|opposite|where is|where's|where are)\s+the\s+([a-z][a-z' -]*)"
 )
 # Arguments by which a call says where: a repaired place name ends up in one of them.
@@ -130,7 +130,7 @@ THERE_RADIUS_M = 30.0
 # Words before a category that ask for one not there yet ("a tree", "some cones", "another").
 _INDEFINITE = frozenset(["a", "an", "some", "another", "new", "extra", "more", "additional"])
 # "Inside the library", "into the JTEKT building": a building named after a word of containment.
-_INSIDE = re.compile(r"\b(?:inside|into|within)(?: of)?\s+(?:the\s+)?([a-z][a-z ]*)")
+_INSIDE = re.compile(r"\b(?:inside|into|within|on top of|on the roof of|onto the roof of|atop)(?: of)?\s+(?:the\s+)?([a-z][a-z ]*)")
 
 
 @dataclass(frozen=True)
@@ -350,7 +350,7 @@ def inside_building(masked: str, scene: Scene) -> list[str]:
         for building in scene.buildings:
             name = ph.normalise(building.name).strip()
             if name and (m.group(1).startswith(name) or name.startswith(m.group(1).strip())):
-                return [f"things cannot go inside the {building.name} in this world, only around it "
+                return [f"things cannot go inside or on top of the {building.name} in this world, only around it "
                         "(its entrance is the nearest place)"]
     return []
 
@@ -597,10 +597,13 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     vocab = vocabulary(scene)
     said = " ".join(str(c.args) for c in calls).lower()
     ids = {a.id for a in scene.all_assets()}
+    world = set(ph.tokens(scene.name))  # "the campus hospital": the world's name only says where the place is
     out = []
     for m in _PLACE_PREPOSITION.finditer(masked):
         words = [w for w in re.split(r"[\s-]+", m.group(1)) if w][:3]
         for word in words:
+            if word in world:
+                continue
             if word in lx.GRAMMAR or word in _RELATION_WORDS or word in ids or word == "ego" or word.endswith("est") \
                     or re.fullmatch(r"(?:north|south|east|west)(?:ern|erly|ward)?", word):  # "the western car park"
                 break  # ("the closest hydrant": a superlative modifies what follows, it names no place)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out)|clear (away|out|the)|no longer|don'?t want|do not want"
+    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|out of scope|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|be (?:there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
@@ -42,7 +42,9 @@ _QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(which|what|where|how|is t
 _INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|list of|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
-                   r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if))\b")
+                   r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"
+                   # "the distance between them is to be reported": what is wanted is an answer
+                   r"(?:is|are) to be (?:reported|measured|listed|counted|checked|confirmed|stated|given))\b")
 # Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
 # in the mood of a command, whatever the politeness around them.
 _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
@@ -100,7 +102,7 @@ _TAG = re.compile(r",?\s*(?:shall we|will you|won'?t you|would you|could you|can
 # A wish said as a cleft sentence ("What I'm after is a ring of cones", "what this scene is
 # missing is traffic"): the words after its "is" are what is wanted. A verb of wanting comes
 # before that "is"; a question ("what benches are near it") has none, or ends with a question mark.
-_CLEFT = re.compile(r"^\s*what (?:i|we|you|they|it|i'm|we're|(?:the|this|that|our|my) [a-z]+)(?: [a-z']+){0,2}? "
+_CLEFT = re.compile(r"^\s*what (?:i|we|you|they|it|i'm|we're|i'd|we'd|(?:the|this|that|our|my) [a-z]+)(?: [a-z']+){0,2}? "
                     r"(?:want|wants|need|needs|like|after|missing|lacks|lacking|mean|meant|have in mind|looking for|love"
                     r"|expect|expected|imagine|envisage|envision|prefer)(?: [a-z]+)? (?:is|are)\s+(?=[^?]*$)", re.IGNORECASE)
 # A layout named as a spec's heading ("Ring: 6x cones around the rubble"): a ring of them, one clause.

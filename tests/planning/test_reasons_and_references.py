@@ -6,6 +6,8 @@ the wording is this file's own, run on the packaged campus world."""
 
 from __future__ import annotations
 
+import math
+
 import pytest
 from drivetwin.orchestrator.planning.base import Plan, PlanContext
 from drivetwin.orchestrator.planning.check import review
@@ -96,3 +98,82 @@ def test_can_it_look_like_asks_for_the_look(session, campus):
 def test_a_lettered_place_names_no_place_called_a(campus):
     reading = read("can it be a bit brighter", campus)
     assert reading.landmark_word is None  # "parking lot A" gives no place word "a"
+
+
+def test_a_bug_report_s_expected_part_is_not_a_second_request(session, campus):
+    assert without_reason("Steps: spin bench_1 45 degrees. Expected: bench at 45 deg.") == "spin bench_1 45 degrees."
+    report = session.submit("Steps to reproduce: turn bench_1 by 30 degrees. Expected result: bench turned 30 deg")
+    bench, before = session.scene.asset("bench_1"), campus.asset("bench_1")
+    assert report.ok and bench is not None and before is not None
+    turned = (bench.pose.yaw - before.pose.yaw + math.pi) % (2 * math.pi) - math.pi
+    assert abs(abs(turned) - math.radians(30)) < 0.01  # once, not twice
+
+
+def test_a_tag_question_and_a_cleft_wish_are_requests(session, campus):
+    assert without_reason("let's clear the bins away, shall we?") == "let's clear the bins away"
+    assert without_reason("What we'd love here is some fog") == "I want some fog"
+    assert without_reason("what benches are near the library") == "what benches are near the library"
+    report = session.submit("what this crossroads needs is a ring of cones")
+    assert report.ok and session.scene.count("traffic_cone") > campus.count("traffic_cone")
+
+
+@pytest.mark.parametrize(
+    ("said", "meant"),
+    [
+        ("put too benches buy the fountain", "put two benches by the fountain"),
+        ("spin the bin won eighty degrees", "spin the bin 180 degrees"),
+        ("paint the cars accept the suv", "paint the cars except the suv"),
+        ("how many bins are their", "how many bins are there"),
+    ],
+)
+def test_voice_typing_sound_alikes_are_read_where_the_words_around_settle_them(campus, said, meant):
+    from drivetwin.orchestrator.planning.rules.spelling import repair
+
+    assert repair(said, campus).text == meant
+
+
+@pytest.mark.parametrize("said", ["it is too late", "I accept the change", "their car park is full"])
+def test_the_sound_alikes_are_left_alone_elsewhere(campus, said):
+    from drivetwin.orchestrator.planning.rules.spelling import repair
+
+    assert repair(said, campus).text == said
+
+
+def test_a_lettered_place_wins_over_a_longer_name_without_its_letter(campus):
+    assert find_place(campus, normalise("stand a van in car park a, thanks"))[0] == "parking lot A"
+    assert find_place(campus, normalise("trees by lot a, the car park over there"))[0] == "parking lot A"
+    assert find_place(campus, normalise("drive into the car park"))[0] == "parking lot B"
+
+
+def test_n_more_of_those_adds_that_many_of_the_last_thing(session, campus):
+    session.submit("add a bench beside the fountain")
+    assert session.submit("one more like that").ok and session.scene.count("bench") == campus.count("bench") + 2
+    assert session.submit("three more of those by the library").ok
+    assert session.scene.count("bench") == campus.count("bench") + 5
+
+
+def test_taking_a_thing_off_a_place_removes_it(session, campus):
+    assert "take away the bin from the pavement" in normalise("take the bin off the pavement")
+    report = session.submit("take the hydrant off the sidewalk")
+    assert report.ok and session.scene.count("fire_hydrant") == campus.count("fire_hydrant") - 1
+
+
+def test_nothing_goes_on_top_of_a_building(session, campus):
+    report = session.submit("stick a bench up on top of the library")
+    assert not report.ok and "on top of the Library" in (report.error or "")
+    assert session.scene.assets == campus.assets
+
+
+def test_a_twelve_hour_time_takes_its_half_of_the_day_from_the_rest_of_the_request():
+    from drivetwin.orchestrator.planning.rules.clock import clock_time
+
+    assert str(clock_time("an autumn evening, clock at half six")) == "18:30"
+    assert str(clock_time("half six")) == "06:30"
+    assert str(clock_time("06:30, evening light")) == "06:30"  # a leading zero is the 24-hour clock
+
+
+def test_a_report_asked_for_in_the_passive_is_a_question_and_a_place_from_nowhere_is_refused(session, campus):
+    assert asks("the distance from the bus to the ego is to be reported")
+    report = session.submit("how far is the ego from the campus observatory")
+    assert not report.ok and "observatory" in (report.error or "")
+    assert session.scene.assets == campus.assets

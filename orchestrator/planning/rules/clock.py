@@ -22,6 +22,8 @@ _HOUR = r"(\d{1,2}|" + "|".join(sorted(_WORD_NUMBERS, key=len, reverse=True)) + 
 # Words after a time that say which half of the day it is in.
 _AFTERNOON = re.compile(r"^\s*(pm|p\.m\.|(?:in|of|during) (?:the )?(afternoon|evening)|at night|tonight|in the night)\b")
 _MORNING = re.compile(r"^\s*(am|a\.m\.|in the morning)\b")
+# Parts of the day that put a 12-hour time said anywhere in the request after noon.
+_LATER_IN_DAY = re.compile(r"\b(?:evening|afternoon|tonight|dusk|sunset|after work|rush hour home)\b")
 # "18:30", "18.30" (with a time word near), "6 pm", "7 o'clock", "0630 hours".
 _DIGITAL = re.compile(r"(?<![\w.:])(\d{1,2})\s*(?:([:.])\s*(\d\d))?\s*(am|pm|a\.m\.|p\.m\.|o'?\s?clock|h|hrs|hours)?(?![\w:])")
 # "half past ten", "a quarter to seven", "twenty past six", "10 past 4".
@@ -55,13 +57,16 @@ def _number(word: str) -> int:
     return int(word) if word.isdigit() else _WORD_NUMBERS[word]
 
 
-def _in_half_of_day(hour: int, after: str) -> int:
-    """The 24-hour hour for a 12-hour `hour` given the words after it ("pm", "at night")."""
+def _in_half_of_day(hour: int, after: str, said: str = "") -> int:
+    """The 24-hour hour for a 12-hour `hour` given the words after it ("pm", "at night"), else
+    the part of the day the rest of the request names ("a November evening ... about half five")."""
     if _AFTERNOON.match(after):
         night_small_hours = hour <= 4 and re.match(r"^\s*(at|in the) night", after) is not None
         return hour if hour >= 12 or night_small_hours else hour + 12
     if _MORNING.match(after):
         return 0 if hour == 12 else hour
+    if 5 <= hour <= 11 and _LATER_IN_DAY.search(said) and not re.search(r"\b(?:morning|am|a\.m\.)\b", said):
+        return hour + 12
     return hour
 
 
@@ -79,10 +84,10 @@ def clock_time(text: str) -> ClockTime | None:
             hour, minute = (hour - 1) % 12 or 12, 60 - minutes
         else:
             minute = minutes
-        return ClockTime(_in_half_of_day(hour, text[spoken.end():]), minute, spoken.group(0), *spoken.span())
+        return ClockTime(_in_half_of_day(hour, text[spoken.end():], text), minute, spoken.group(0), *spoken.span())
     half = _HALF_HOUR.search(text)
     if half is not None and _number(half.group(1)) <= 12:
-        hour = _in_half_of_day(_number(half.group(1)), text[half.end():])
+        hour = _in_half_of_day(_number(half.group(1)), text[half.end():], text)
         return ClockTime(hour, 30, half.group(0), *half.span())
     for m in _DIGITAL.finditer(text):
         separator, said_minutes, suffix = m.group(2), m.group(3), m.group(4)
@@ -94,7 +99,8 @@ def clock_time(text: str) -> ClockTime | None:
         if suffix is not None and suffix.startswith(("am", "a.m", "pm", "p.m")):
             after = suffix
         said_hour = int(m.group(1))
-        hour = _in_half_of_day(said_hour, after) if said_hour <= 12 else said_hour
+        rest = text if suffix is None and not m.group(1).startswith("0") else ""  # "05:30" is the 24-hour clock
+        hour = _in_half_of_day(said_hour, after, rest) if said_hour <= 12 else said_hour
         return ClockTime(hour, int(said_minutes or 0), m.group(0).strip(), *m.span())
     return None
 

@@ -24,7 +24,7 @@ REMOVE_WORDS = ("remove", "delete", "get rid of", "take away", "take out", "clea
 GONE_WORDS = ("is over", "are over", "is finished", "are finished", "is done", "are done",
               "went home", "go home", "have left", "has left", "were collected", "was collected",
               "were removed", "are gone", "is gone", "should be empty", "should be clear", "was a mistake", "were a mistake",
-              "no longer needed", "not needed", "be empty", "to be empty", "cleared", "been collected")
+              "no longer needed", "not needed", "out of scope", "be empty", "to be empty", "cleared", "been collected")
 FEWER_WORDS = ("too many", "fewer", "less", "thin out", "one less")
 ADD_WORDS = ("add", "create", "spawn", "place", "put", "insert", "set up", "install", "plant",
              "build", "bring in", "drop in", "give me", "i want", "i need", "we need", "we want",
@@ -60,7 +60,7 @@ LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "s
 TIME_PRESETS = ((("midnight",), "midnight"), (("night", "nighttime", "night time", "nite", "dark", "darker",
                  "late at night", "sun has gone down", "sun goes down", "after dark"), "night"),
                 (("evening", "after work"), "evening"), (("dusk", "twilight", "getting dark"), "dusk"),
-                (("sunset", "golden hour", "golden-hour"), "sunset"), (("dawn", "first light"), "dawn"),
+                (("sunset", "golden hour", "golden-hour", "sun going down", "sun is going down", "sun setting", "sun is setting"), "sunset"), (("dawn", "first light"), "dawn"),
                 (("sunrise", "sun coming up", "sun comes up", "early morning"), "sunrise"),
                 (("morning", "breakfast"), "morning"), (("afternoon",), "afternoon"),
                 (("noon", "midday", "lunchtime", "lunch time", "lunch"), "noon"),

@@ -41,9 +41,19 @@ def normalise(text: str) -> str:
     out = re.sub(r"\b(?:front |main )?(?:door|doorway)s?\b", "entrance", out)  # "the Union doors": its entrance
     # "take that orange thing away": the particle of a phrasal verb said after its object
     out = re.sub(r"\b(take|throw|clear|carry|haul) ((?:the|that|this|those|these|all|both|every|its|their|our|my)"
-                 r"(?: [a-z0-9_'-]+){1,5}?) (away|out)\b(?! of\b)", r"\1 \3 \2", out)
+                 r"(?: [a-z0-9_'-]+){1,5}?) (away|out|off)\b(?! of\b)", _particle_first, out)
     # A comma inside a number ("10,000") is a thousands separator, not a clause break.
     return re.sub(r"(?<!\d),|,(?!\d{3}(?!\d))", " , ", out.replace("’", "'"))
+
+
+def _particle_first(m: re.Match[str]) -> str:
+    """"take that thing away" as "take away that thing"; "take the bin off the sidewalk" is "take
+    away the bin from the sidewalk" (a bare "take off" is a driver's turn, not a removal)."""
+    verb, thing, particle = m.group(1), m.group(2), m.group(3)
+    if particle != "off":
+        return f"{verb} {particle} {thing}"
+    place = re.match(r" (?:the|that|this)\b", m.string[m.end() :])
+    return f"{verb} away {thing}{' from' if place else ''}"
 
 
 def _singular(word: str) -> str:

@@ -304,7 +304,8 @@ def _more_of_a_thing(r: Reading) -> bool:
     ("more realistic")."""
     for said in re.finditer(r"\bmore\b", r.low):
         after = r.low[said.end() :]
-        if not after.strip() or re.match(r"\s+(?:of|there|here|please|too|like)\b", after):
+        if not after.strip() or re.match(r"\s+(?:of|there|here|please|too|like|next|by|near|beside|around"
+                                         r"|along|across)\b", after):
             return True
         if any(0 <= m.start - said.end() <= 2 for m in r.mentions):
             return True
@@ -399,6 +400,22 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if (mention is not None and mention.plural and not fresh and not _VERB_AT.search(r.low)
             and not ph.tokens(r.low[: mention.start]) and r.landmark and not _changes_them(r)):
         fresh = True  # "trees along one side of lot A": a bare plural and no verb asks for some
+    recent = [i for i in memory.last_added() if scene.asset(i) is not None]
+    if mention is None and recent and (_more_of_a_thing(r) or r.has(("another",))):
+        # "put two more there", "one more like that, but blue": more of what the last turn added
+        last = scene.asset(recent[-1])
+        assert last is not None
+        said = re.search(r"\b(?:more|another)\b", r.low)
+        at = said.end() if said is not None else len(r.low)
+        amount = re.match(r"\s+(?:\d+|[a-z]+)(?=\s+of\b|\s+(?:those|them|these)\b)", r.low[at:])  # "another pair of those"
+        plural = said is None or said.group(0) == "more" or amount is not None  # "another": one
+        at += amount.end() if amount is not None else 0
+        counted = re.search(r"\b(\d+|[a-z]+)\s+$", r.low[: said.start()]) if said is not None else None
+        if counted is not None and (counted.group(1).isdigit() or counted.group(1) in ph.NUMBER_WORDS):
+            at = said.start() if said is not None else at  # the amount is said before "more": "2 more next to them"
+            plural = counted.group(1) not in ("1", "one")
+        named = ph.Mention(last.category, at, at, plural=plural)
+        return _add(replace(r, mentions=[named]), scene, memory, notes)
     if not fresh and not r.has(("add", "create", "spawn", "place a", "put a")):
         colour = recolour(r, scene, memory, notes)
         if colour is not None:
@@ -407,18 +424,6 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         existing = edit_existing(r, scene, memory, notes)
         if existing is not None:
             return existing
-    recent = [i for i in memory.last_added() if scene.asset(i) is not None]
-    if mention is None and recent and r.has(("more", "another")):
-        # "put two more there": more of what the last turn added
-        last = scene.asset(recent[-1])
-        assert last is not None
-        said = re.search(r"\b(?:more|another)\b", r.low)
-        at = said.end() if said is not None else len(r.low)  # the amount is said before "more": "2 more next to them"
-        amount = re.match(r"\s+(?:\d+|[a-z]+)(?=\s+of\b|\s+(?:those|them|these)\b)", r.low[at:])  # "another pair of those"
-        plural = said is None or said.group(0) == "more" or amount is not None  # "another": one
-        at += amount.end() if amount is not None else 0
-        named = ph.Mention(last.category, at, at, plural=plural)
-        return _add(replace(r, mentions=[named]), scene, memory, notes)
     if r.has(("paint", "repaint", "recolour", "recolor")) and not fresh:
         # a thing to paint is one that is there; a colour not understood is asked, never an add
         raise PlanningError(f"which colour? I know {', '.join(COLOURS)}")

@@ -84,8 +84,9 @@ def _place_by_compass(scene: Scene, low: str) -> tuple[str, int, int] | None:
 
 
 def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
-    """The landmark named in normalised text (articles ignored; longest name wins), and its span."""
-    best: tuple[int, str, int, int] | None = None
+    """The landmark named in normalised text (articles ignored; a name with a letter or number
+    that labels it wins, then the longest name), and its span."""
+    best: tuple[tuple[bool, int], str, int, int] | None = None
     low = re.sub(r"(?<=[a-z0-9])'s\b", "  ", low)  # "lot B's entrance" is the lot B entrance
     bare = _ARTICLES.sub("", low)
     for landmark in scene.landmarks:
@@ -100,12 +101,16 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
                 continue  # "a pedestrian crossing the road": a walker crossing, not the crossing
             if m and _thing_named_with(m.group(0), m.string[m.end() :]):
                 continue  # "the pedestrian crossing sign": a thing whose name holds a place's
-            if m and (best is None or len(key) > best[0]):
+            # "by lot a, the car park there": the lot's letter says which car park
+            rank = (any(_is_label(w) for w in key.split()), len(key))
+            if m and (best is None or rank > best[0]):
                 # Map the span back to `low` by finding the same words there.
                 words = r"\s+(?:(?:the|a|an)\s+)?".join(re.escape(w) for w in key.split())
                 span = re.search(rf"(?<![a-z0-9]){words}(?![a-z0-9])", low)
                 start, end = (span.start(), span.end()) if span else (0, 0)
-                best = (len(key), landmark.name, start, end)
+                best = (rank, landmark.name, start, end)
+    if best is not None and not best[0][0] and (labelled := _labelled(scene, low, best[3])) is not None:
+        return labelled[0], best[2], labelled[1]  # "car park A" where only lot B is called the car park
     by_compass = _place_by_compass(scene, low)
     if by_compass is not None and (best is None or by_compass[1] < best[2] < by_compass[2]):
         return by_compass  # "the western car park": not the car park the name alone would pick
@@ -120,6 +125,21 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
         if m and word not in world:
             return name, m.start(), m.end()
     return None
+
+
+def _is_label(word: str) -> bool:
+    return len(word) == 1 or word.isdigit()
+
+
+def _labelled(scene: Scene, low: str, end: int) -> tuple[str, int] | None:
+    """The one place whose name ends in the letter or number said right after a place's name
+    (`end`), and where that label ends; None when no label follows or it fits no one place."""
+    label = re.match(r"\s+([a-z]|\d+)(?=\s*(?:[,.;!?]|$|(?:and|the|please|with|for|near|by|at|in|on|so|to)\b))", low[end:])
+    if label is None:
+        return None
+    owners = {lm.name for lm in scene.landmarks for n in lm.names()  # "entrance of lot A" is an entrance
+              if " of " not in n and ph.tokens(ph.normalise(n))[-1:] == [label.group(1)]}
+    return (owners.pop(), end + label.end()) if len(owners) == 1 else None
 
 
 def _thing_named_with(place: str, after: str) -> bool:
