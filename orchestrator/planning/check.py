@@ -325,7 +325,11 @@ def described_category(text: str, plan_categories: set[str]) -> str | None:
 
 def _concepts_said(low: str) -> set[str]:
     """The categories the request names by a word for what they are to people ("traffic", "litter")."""
-    return {c for c, words in lx.CONCEPTS.items() for w in words if re.search(rf"\b{re.escape(w)}\b", low)}
+    said = set()
+    for word, category in sorted(((w, c) for c, ws in lx.CONCEPTS.items() for w in ws), key=lambda p: -len(p[0])):
+        low, found = re.subn(rf"\b{re.escape(word)}\b", " ", low)  # "foot traffic" is people, not cars
+        said |= {category} if found else set()
+    return said
 
 
 @cache

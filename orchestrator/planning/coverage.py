@@ -39,7 +39,8 @@ _NEW = re.compile(
 )
 # Prepositions after which a request names a place ("near the gym", "on the moon").
 _PLACE_PREPOSITION = re.compile(
-    r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|from|"
+    r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|"
+    r"(?:far|away|distance|metres|meters|m)\b(?:[^,.;?]{0,40}?\s)?from|"  # "how far is the ego from the ..."
     r"close to|opposite|where is|where's|where are)\s+the\s+([a-z][a-z' -]*)"
 )
 # Arguments by which a call says where: a repaired place name ends up in one of them.

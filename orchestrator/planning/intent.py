@@ -105,6 +105,12 @@ _TAG = re.compile(r",?\s*(?:shall we|will you|won'?t you|would you|could you|can
 _CLEFT = re.compile(r"^\s*what (?:i|we|you|they|it|i'm|we're|i'd|we'd|(?:the|this|that|our|my) [a-z]+)(?: [a-z']+){0,2}? "
                     r"(?:want|wants|need|needs|like|after|missing|lacks|lacking|mean|meant|have in mind|looking for|love"
                     r"|expect|expected|imagine|envisage|envision|prefer)(?: [a-z]+)? (?:is|are)\s+(?=[^?]*$)", re.IGNORECASE)
+# An edit said as a noun ("Elimination of every litter bin is requested", "relocation of the bench
+# to the library is required"): the verb it names, without the words that only ask for it.
+_NOMINAL = {"removal": "remove", "elimination": "remove", "deletion": "delete", "addition": "add",
+            "placement": "place", "relocation": "move", "rotation": "turn", "repainting": "paint"}
+_NOMINAL_EDIT = re.compile(rf"^\s*(?:the )?({'|'.join(_NOMINAL)}) of\b", re.IGNORECASE)
+_ASKED_FOR = re.compile(r"\s+(?:is|are) (?:now )?(?:requested|required|needed|wanted|expected|desired)\b", re.IGNORECASE)
 # A layout named as a spec's heading ("Ring: 6x cones around the rubble"): a ring of them, one clause.
 _LAYOUT_HEADING = re.compile(r"^\s*(ring|circle|line|row|grid)\s*:", re.IGNORECASE)
 
@@ -154,6 +160,8 @@ def without_reason(text: str) -> str:
     ("JIRA-412:"), and with a layout's heading read as words ("Ring: 6x cones" is a ring of 6x
     cones)."""
     text = _STEPS.sub("", _EXPECTED.sub("", _TAG.sub("", _CLEFT.sub("I want ", text))))
+    if (nominal := _NOMINAL_EDIT.match(text)) is not None:
+        text = _ASKED_FOR.sub("", _NOMINAL[nominal.group(1).lower()] + text[nominal.end() :])
     text = without_contrast(_LAYOUT_HEADING.sub(r"\1 of", _LABEL.sub(" ", text))).strip()
     first = _REASON_FIRST.match(text)
     if first is not None and not _POINTS_BACK.search(text[first.end() :]):

@@ -143,6 +143,7 @@ def test_a_lettered_place_wins_over_a_longer_name_without_its_letter(campus):
     assert find_place(campus, normalise("stand a van in car park a, thanks"))[0] == "parking lot A"
     assert find_place(campus, normalise("trees by lot a, the car park over there"))[0] == "parking lot A"
     assert find_place(campus, normalise("drive into the car park"))[0] == "parking lot B"
+    assert find_place(campus, normalise("park it at the lot A entrance"))[0] == "parking lot A entrance"
 
 
 def test_n_more_of_those_adds_that_many_of_the_last_thing(session, campus):
@@ -177,3 +178,27 @@ def test_a_report_asked_for_in_the_passive_is_a_question_and_a_place_from_nowher
     report = session.submit("how far is the ego from the campus observatory")
     assert not report.ok and "observatory" in (report.error or "")
     assert session.scene.assets == campus.assets
+
+
+def test_an_edit_said_as_a_noun_is_that_edit():
+    assert without_reason("Deletion of both benches is required.") == "delete both benches."
+    assert without_reason("relocation of the hydrant to lot B is now needed") == "move the hydrant to lot B"
+    assert without_reason("the removal went well") == "the removal went well"  # only an edit the words open with
+
+
+def test_the_driver_s_us_is_the_ego_and_small_slips_of_voice_and_thumbs(campus):
+    from drivetwin.orchestrator.planning.rules.spelling import repair
+
+    assert "nearest the ego" in normalise("which bin is nearest us")
+    assert repair("shift the van back and than spin it", campus).text == "shift the van back and then spin it"
+    assert repair("more than ten cones", campus).text == "more than ten cones"
+    assert repair("a bin nxt to the bench", campus).text == "a bin next to the bench"
+
+
+def test_foot_traffic_is_people_and_traffic_alone_is_cars(campus):
+    from drivetwin.orchestrator.planning.check import _concepts_said
+
+    assert _concepts_said(" a lot more foot traffic by the union ") == {"pedestrian"}
+    assert _concepts_said(" the road needs traffic ") == {"passenger_car"}
+    reading = read("we want more foot traffic outside the library", campus)
+    assert [m.category for m in reading.mentions] == ["pedestrian"]

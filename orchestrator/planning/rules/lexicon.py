@@ -97,8 +97,8 @@ CONCEPTS: dict[str, tuple[str, ...]] = {
     "bench": ("somewhere to sit", "to sit", "sit down", "seat", "seats", "chairs"),  # not "sit" said of a thing ("the car should sit")
     "construction_sign": ("warn", "warned", "warning", "warning sign", "heads-up"),
     "road_barrier": ("fence off", "cordon off", "barriers", "block the road", "block off"),
-    "trash_bin": ("rubbish", "litter", "garbage"), "passenger_car": ("traffic",),
-    "pedestrian": ("crowd", "passers-by", "someone", "somebody", "kid", "child", "guy"),
+    "pedestrian": ("foot traffic", "crowd", "passers-by", "someone", "somebody", "kid", "child", "guy"),
+    "trash_bin": ("rubbish", "litter", "garbage"), "passenger_car": ("traffic",),  # after "foot traffic"
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.
 COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6,

@@ -39,6 +39,7 @@ def normalise(text: str) -> str:
     # "6x traffic_cone", "4 x barriers": a count in a spec's notation ("3x2" stays a grid's size)
     out = re.sub(r"\b(\d+)\s?x\s+(?=[a-z])", r"\1 ", out)
     out = re.sub(r"\b(?:front |main )?(?:door|doorway)s?\b", "entrance", out)  # "the Union doors": its entrance
+    out = re.sub(r"\b(nearest|closest|near|ahead of|behind|in front of|next to|beside) us\b", r"\1 the ego", out)  # the driver's "us"
     # "take that orange thing away": the particle of a phrasal verb said after its object
     out = re.sub(r"\b(take|throw|clear|carry|haul) ((?:the|that|this|those|these|all|both|every|its|their|our|my)"
                  r"(?: [a-z0-9_'-]+){1,5}?) (away|out|off)\b(?! of\b)", _particle_first, out)

@@ -102,7 +102,7 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
             if m and _thing_named_with(m.group(0), m.string[m.end() :]):
                 continue  # "the pedestrian crossing sign": a thing whose name holds a place's
             # "by lot a, the car park there": the lot's letter says which car park
-            rank = (any(_is_label(w) for w in key.split()), len(key))
+            rank = (any(_is_label(w) for w in ph.tokens(ph.normalise(name))[1:]), len(key))  # its letter, not an article
             if m and (best is None or rank > best[0]):
                 # Map the span back to `low` by finding the same words there.
                 words = r"\s+(?:(?:the|a|an)\s+)?".join(re.escape(w) for w in key.split())

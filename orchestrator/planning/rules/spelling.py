@@ -48,6 +48,7 @@ _SHORT_SLIPS = {
     "thru": "through",
     "infront": "in front",
     "hw": "how",
+    "nxt": "next",
     "wich": "which",
     "wat": "what",
     "whr": "where",
@@ -310,6 +311,7 @@ _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those
 # south ones" (except), "a stop sine" (sign).
 _SOUND_ALIKES = (
     (re.compile(r"\bbuy(?= (?:the|a|an|that|this|those|these)\b)", re.IGNORECASE), "by"),
+    (re.compile(r"(?<=\band )than\b|(?<=, )than\b", re.IGNORECASE), "then"),  # "forward ten metres and than turn it"
     (re.compile(r"\bwon(?= (?:eighty|hundred|more|of (?:the|those|them))\b)", re.IGNORECASE), "one"),
     (re.compile(r"(?<=\b(?:stop|road|warn|park|work) )sine\b|(?<=\bparking |warning )sine\b", re.IGNORECASE), "sign"),
 )
