@@ -411,8 +411,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         plural = said is None or said.group(0) == "more" or amount is not None  # "another": one
         at += amount.end() if amount is not None else 0
         counted = re.search(r"\b(\d+|[a-z]+)\s+$", r.low[: said.start()]) if said is not None else None
-        if counted is not None and (counted.group(1).isdigit() or counted.group(1) in ph.NUMBER_WORDS):
-            at = said.start() if said is not None else at  # the amount is said before "more": "2 more next to them"
+        if said is not None and counted is not None and (counted.group(1).isdigit() or counted.group(1) in ph.NUMBER_WORDS):
+            at = said.start()  # the amount is said before "more": "2 more next to them"
             plural = counted.group(1) not in ("1", "one")
         named = ph.Mention(last.category, at, at, plural=plural)
         return _add(replace(r, mentions=[named]), scene, memory, notes)

@@ -97,13 +97,15 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
             m = re.search(rf"(?<![a-z0-9]){spaced}(?![a-z0-9])", low) or re.search(
                 rf"(?<![a-z0-9]){spaced}(?![a-z0-9])", bare
             )
-            if m and key.endswith("ing") and _VERB_OBJECT.match(m.string[m.end() :]):
+            if m is None:
+                continue
+            if key.endswith("ing") and _VERB_OBJECT.match(m.string[m.end() :]):
                 continue  # "a pedestrian crossing the road": a walker crossing, not the crossing
-            if m and _thing_named_with(m.group(0), m.string[m.end() :]):
+            if _thing_named_with(m.group(0), m.string[m.end() :]):
                 continue  # "the pedestrian crossing sign": a thing whose name holds a place's
-            # "by lot a, the car park there": the lot's letter says which car park
-            rank = (any(_is_label(w) for w in ph.tokens(ph.normalise(name))[1:]), len(key))  # its letter, not an article
-            if m and (best is None or rank > best[0]):
+            # "by lot a, the car park there": the lot's letter says which car park (its letter, not an article)
+            rank = (any(_is_label(w) for w in ph.tokens(ph.normalise(name))[1:]), len(key))
+            if best is None or rank > best[0]:
                 # Map the span back to `low` by finding the same words there.
                 words = r"\s+(?:(?:the|a|an)\s+)?".join(re.escape(w) for w in key.split())
                 span = re.search(rf"(?<![a-z0-9]){words}(?![a-z0-9])", low)
@@ -182,8 +184,7 @@ def _place_head_word(scene: Scene, low: str, mentions: list[ph.Mention]) -> str 
 def _head(words: list[str]) -> str:
     """The head noun of a place's name: its last word, or the one before a letter or number
     that labels it ("parking lot A" is a lot)."""
-    labelled = len(words) > 1 and (len(words[-1]) == 1 or words[-1].isdigit())
-    return words[-2] if labelled else words[-1]
+    return words[-2] if len(words) > 1 and _is_label(words[-1]) else words[-1]
 
 
 def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
