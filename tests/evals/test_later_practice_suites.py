@@ -1,5 +1,5 @@
-"""The later practice suites (practice2, practice3, practice4, practice5): valid, big enough in every cell,
-written from their sources, and passable. Each was written to its own brief's minimums."""
+"""The later practice suites (practice2 to practice6): valid, big enough in every cell, written from
+their sources, and passable. Each was written to its own brief's minimums."""
 
 from __future__ import annotations
 
@@ -7,22 +7,46 @@ import json
 from collections import Counter
 from pathlib import Path
 from types import ModuleType
+from typing import NamedTuple
 
 import pytest
-from drivetwin.evals import practice2_source, practice3_source, practice4_source, practice5_source, run_suite
+from drivetwin.evals import (
+    practice2_source,
+    practice3_source,
+    practice4_source,
+    practice5_source,
+    practice6_source,
+    run_suite,
+)
 from drivetwin.evals.case import Suite, load_suite
 
 TASKS = ("search", "addition", "removal", "positioning", "moving", "arrangement", "appearance")
 GRADES = ("direct", "indirect", "vague", "erroneous")
 WEIGHTED_TASKS = ("search", "addition", "positioning", "arrangement")
-MIN_MULTI_TURN, MIN_PLANNED, MIN_COMPOUND = 15, 8, 15
-# Each brief's minimums: cases, cases in every task x grade cell, and in every cell of the four
-# weighted tasks; with the suite's source module.
-BRIEFS: dict[str, tuple[int, int, int, ModuleType]] = {
-    "practice2": (160, 5, 8, practice2_source),
-    "practice3": (200, 6, 9, practice3_source),
-    "practice4": (260, 9, 9, practice4_source),
-    "practice5": (260, 9, 9, practice5_source),
+
+
+class Brief(NamedTuple):
+    """A brief's minimums: cases, cases in every task x grade cell and in every cell of the four
+    weighted tasks, multi-turn (of them planned) and compound cases; the grades it weights (each
+    outnumbers the direct one); and the suite's source module."""
+
+    cases: int
+    per_cell: int
+    per_weighted_cell: int
+    source: ModuleType
+    multi_turn: int = 15
+    planned: int = 8
+    compound: int = 15
+    weighted_grades: tuple[str, ...] = ()
+
+
+BRIEFS: dict[str, Brief] = {
+    "practice2": Brief(160, 5, 8, practice2_source),
+    "practice3": Brief(200, 6, 9, practice3_source),
+    "practice4": Brief(260, 9, 9, practice4_source),
+    "practice5": Brief(260, 9, 9, practice5_source),
+    "practice6": Brief(140, 5, 5, practice6_source, multi_turn=12, planned=6, compound=12,
+                       weighted_grades=("vague", "indirect")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
@@ -37,39 +61,45 @@ def suites() -> dict[str, Suite]:
 
 @by_suite
 def test_every_line_validates_and_ids_and_tags_name_the_suite(suites: dict[str, Suite], name: str) -> None:
-    assert len(suites[name].cases) >= BRIEFS[name][0]
+    assert len(suites[name].cases) >= BRIEFS[name].cases
     assert all(c.id.startswith(f"{name}.") and name in c.tags for c in suites[name].cases)
 
 
 @by_suite
 def test_the_jsonl_is_what_the_source_writes(name: str) -> None:
-    source = BRIEFS[name][3]
+    source = BRIEFS[name].source
     lines = [json.loads(line) for line in Path(source.SUITE_PATH).read_text(encoding="utf-8").splitlines() if line.strip()]
     assert lines == source.ALL_CASES
 
 
 @by_suite
 def test_every_task_and_grade_cell_holds_its_minimum(suites: dict[str, Suite], name: str) -> None:
-    _, per_cell, per_weighted_cell, _ = BRIEFS[name]
+    brief = BRIEFS[name]
     cells = Counter((c.task, c.grade) for c in suites[name].cases)
     for task in TASKS:
-        least = per_weighted_cell if task in WEIGHTED_TASKS else per_cell
+        least = brief.per_weighted_cell if task in WEIGHTED_TASKS else brief.per_cell
         for grade in GRADES:
             assert cells[(task, grade)] >= least, (task, grade, cells[(task, grade)])
 
 
 @by_suite
+def test_the_grades_a_brief_weights_outnumber_the_direct_one(suites: dict[str, Suite], name: str) -> None:
+    grades = Counter(c.grade for c in suites[name].cases)
+    assert all(grades[g] > grades["direct"] for g in BRIEFS[name].weighted_grades), grades
+
+
+@by_suite
 def test_multi_turn_cases_have_earlier_turns_and_enough_are_planned(suites: dict[str, Suite], name: str) -> None:
     multi = [c for c in suites[name].cases if "multi_turn" in c.tags]
-    assert len(multi) >= MIN_MULTI_TURN and all(c.setup for c in multi)
+    assert len(multi) >= BRIEFS[name].multi_turn and all(c.setup for c in multi)
     planned = [c for c in multi if any(step.planned and step.calls for step in c.setup)]
-    assert len(planned) >= MIN_PLANNED
+    assert len(planned) >= BRIEFS[name].planned
 
 
 @by_suite
 def test_compound_cases_ask_two_things(suites: dict[str, Suite], name: str) -> None:
     compound = [c for c in suites[name].cases if "compound" in c.tags]
-    assert len(compound) >= MIN_COMPOUND
+    assert len(compound) >= BRIEFS[name].compound
     assert all(len(c.reference) >= 2 for c in compound)
 
 
@@ -91,7 +121,7 @@ def test_every_edit_case_guards_against_collateral_edits(suites: dict[str, Suite
 
 @by_suite
 def test_every_reference_plan_passes(tmp_path: Path, name: str) -> None:
-    source = BRIEFS[name][3]
+    source = BRIEFS[name].source
     summary = run_suite(source.SUITE_PATH, "reference", out_path=tmp_path / "ref.jsonl", progress=False)
     records = [json.loads(line) for line in (tmp_path / "ref.jsonl").read_text().splitlines()[1:]]
     not_passed = [(r["case_id"], r.get("failed_checks"), r.get("error")) for r in records if r.get("outcome") != "pass"]
