@@ -6,8 +6,10 @@ one-line-per-turn summary. It is plain data and is saved with the session.
 
 from __future__ import annotations
 
+import ast
 from typing import Literal
 
+from drivetwin.tools.base import ToolCall
 from pydantic import BaseModel, ConfigDict, Field
 
 TurnStatus = Literal["applied", "failed", "undone", "rejected", "accepted", "answered", "asked"]
@@ -29,9 +31,21 @@ class Turn(BaseModel):
     removed: list[str] = Field(default_factory=list)
     touched: list[str] = Field(default_factory=list)
 
+    def tool_calls(self) -> list[ToolCall]:
+        """The turn's calls read back from their text (`tool(key=value, ...)`, literal parsing
+        only); ValueError or SyntaxError for one that does not read back."""
+        return [_read_call(text) for text in self.calls]
+
     def render(self) -> str:
         did = "; ".join(self.results) if self.results else self.status
         return f"user: {self.prompt}\n-> {self.status}: {did}"
+
+
+def _read_call(text: str) -> ToolCall:
+    node = ast.parse(text, mode="eval").body
+    if not isinstance(node, ast.Call) or not isinstance(node.func, ast.Name) or node.args:
+        raise ValueError(f"not a tool call: {text!r}")
+    return ToolCall(tool=node.func.id, args={k.arg: ast.literal_eval(k.value) for k in node.keywords if k.arg})
 
 
 class Memory(BaseModel):

@@ -10,7 +10,6 @@ retrieval reads both.
 
 from __future__ import annotations
 
-import ast
 import hashlib
 import json
 import os
@@ -280,17 +279,10 @@ def learn_accepted(planner: object, scene: Scene, request: str, memory: Memory) 
     if turn is None:
         return None
     try:
-        calls = [_read_call(text) for text in turn.calls]
+        calls = turn.tool_calls()
     except (SyntaxError, ValueError):
         return None  # a call that does not read back is not worth a wrong example
     return learn(scene, request, calls)
-
-
-def _read_call(text: str) -> ToolCall:
-    node = ast.parse(text, mode="eval").body
-    if not isinstance(node, ast.Call) or not isinstance(node.func, ast.Name) or node.args:
-        raise ValueError(f"not a tool call: {text!r}")
-    return ToolCall(tool=node.func.id, args={k.arg: ast.literal_eval(k.value) for k in node.keywords if k.arg})
 
 
 __all__ = [

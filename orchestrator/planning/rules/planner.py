@@ -34,6 +34,7 @@ from drivetwin.orchestrator.planning.rules.environment import environment, light
 from drivetwin.orchestrator.planning.rules.places import Notes, location, said_a_place
 from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
+from drivetwin.orchestrator.planning.rules.repeat import repeat, repeats
 from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
@@ -354,6 +355,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         )
     if re.match(rf"\s*({'|'.join(lx.FILLER_STARTS)})\b", r.low) and not r.mentions and not r.ids:
         return None  # "before I add anything": a circumstance, not a request
+    if repeats(r):  # "repeat that outside Engineering Hall", "ditto for the bus", "do the same again?"
+        return repeat(r, scene, memory, notes)
     if _is_question(r, asked):
         looked_up = plan_question(r, scene, memory, notes)
         if [c.args for c in looked_up] == [{}] and not (r.mentions or r.ids or r.ego or r.landmark):

@@ -1,0 +1,101 @@
+"""A request to do the last edit again ("repeat that outside Engineering Hall", "ditto for the
+bus", "do the same again"): the last edit's calls once more, at the place or on the things this
+clause names. What the clause says that the last edit has no slot for is refused, never dropped.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from drivetwin.orchestrator.memory import Memory, Turn
+from drivetwin.orchestrator.planning.base import PlanningError
+from drivetwin.orchestrator.planning.rules.edits import referenced
+from drivetwin.orchestrator.planning.rules.places import Notes, location
+from drivetwin.orchestrator.planning.rules.reading import Reading
+from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.scene import Scene
+
+# The words that ask for the last edit again, at the start of a clause; what follows says where or
+# to what. "Same again but bollards" (the last amount of something new) is the add path's.
+_REPEAT = re.compile(
+    r"^\s*(?:(?:ok(?:ay)?|now|and|then|also|right|please|pls|can you|could you)[,\s]+)*"
+    r"(?:ditto|repeat (?:that|this|it|the last (?:one|edit|change|step))(?: (?:again|once more))?"
+    r"|do (?:that|this|it|the same(?: thing)?)(?: (?:again|once more|one more time|too|as well))?"
+    r"|(?:the )?same (?:again|thing)|(?:the )?same(?= (?:for|with|at|outside|by|near|on|to|in|over)\b))"
+    r"(?![\w-])(?!\s+but\b)"
+)
+
+# Words that add nothing to what is repeated.
+_FILLER = re.compile(r"\b(?:again|please|pls|too|as well|once more|one more time|thanks|thank you)\b")
+
+
+def repeats(r: Reading) -> bool:
+    """Whether the clause asks for the last edit again."""
+    return _REPEAT.match(r.low) is not None
+
+
+def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
+    """The last edit still in the scene, again: moved to the place named, or applied to the
+    things named; as it was when the clause names neither."""
+    last = _last_edit(memory)
+    said = _REPEAT.match(r.low)
+    rest = _FILLER.sub("", r.low[said.end() :] if said is not None else r.low).strip(" ,.!")
+    # "ditto for the bus", "the same to the trees": other things, first; "repeat that outside the Library": a place
+    on_things = re.match(r"(?:for|to|with|on)\b(?! (?:the )?(?:left|right|side|other side)\b)", rest) is not None
+    names_things = bool(r.ids or r.mentions or r.ego)
+    things = referenced(r, scene, memory, notes) if on_things and names_things else []
+    place = location(r, scene, memory, notes) if rest and not things else None
+    if not on_things and place is None and names_things:
+        things = referenced(r, scene, memory, notes)
+    if rest and place is None and not things:
+        raise PlanningError(f"I could not tell where or to what {rest!r} is; say the whole request again")
+    calls = last.tool_calls()
+    out: list[ToolCall] = []
+    used = not (things or place)
+    for call in calls:
+        args = dict(call.args)
+        if place is not None and place.get("relation") == "in_lane" and "lane" in (args.get("behaviour") or {}):
+            lane = place.get("lane") or place.get("target")  # "ditto for the westbound lane": traffic in that lane
+            args["behaviour"], used = {**args["behaviour"], "lane": lane}, True
+        if place is not None and "location" in args:
+            args["location"], used = dict(place), True
+        elif place is not None and call.tool == "remove_assets" and "near" in args and "target" in place:
+            args["near"], used = str(place["target"]), True
+        elif things and _retarget(call.tool, args, things, out):
+            used = True
+            continue
+        out.append(ToolCall(tool=call.tool, args=args))
+    if not used:
+        what = "place" if place is not None else "things"
+        raise PlanningError(f"{last.prompt!r} has no {what} to change for {rest!r}; say the whole request")
+    if place is not None:
+        notes.place = place
+    return out
+
+
+def _last_edit(memory: Memory) -> Turn:
+    for turn in reversed(memory.live_turns()):
+        if turn.calls and (turn.added or turn.removed or turn.touched):
+            try:
+                turn.tool_calls()
+            except (SyntaxError, ValueError):
+                break
+            return turn
+    raise PlanningError("there is no earlier edit to repeat; say what to do")
+
+
+def _retarget(tool: str, args: dict[str, Any], things: list[str], out: list[ToolCall]) -> bool:
+    """The call made on `things` instead of what it named (appended to `out`); False when the
+    call names no thing to swap."""
+    if "asset" in args:  # one thing at a time: a call for each
+        out.extend(ToolCall(tool=tool, args={**args, "asset": thing}) for thing in things)
+        return True
+    if "assets" in args or ("category" in args and tool in ("set_asset_appearance", "remove_assets")):
+        kept = {k: v for k, v in args.items() if k not in ("category", "near", "count")}
+        out.append(ToolCall(tool=tool, args={**kept, "assets": list(things)}))
+        return True
+    return False
+
+
+__all__ = ["repeat", "repeats"]
