@@ -28,7 +28,14 @@ from drivetwin.tools.position import PlaceAsset
 from drivetwin.tools.remove import RemoveAssets
 from drivetwin.tools.rules import check_edit, settle_on_roads
 from drivetwin.tools.scenario import AddEvent, AddManoeuvre, SetLightPhases
-from drivetwin.tools.search import AssetProperties, FindAssets, FindLandmarks, FindLanes, MeasureDistance
+from drivetwin.tools.search import (
+    AssetProperties,
+    DescribeEnvironment,
+    FindAssets,
+    FindLandmarks,
+    FindLanes,
+    MeasureDistance,
+)
 from drivetwin.worlds.catalog import UnknownCategoryError
 from drivetwin.worlds.scene import Scene
 
@@ -36,7 +43,7 @@ from drivetwin.worlds.scene import Scene
 def builtin_tools() -> list[Tool[Any]]:
     """One instance of every built-in Worker, in family order."""
     return [
-        FindAssets(), FindLandmarks(), FindLanes(), AssetProperties(), MeasureDistance(),
+        FindAssets(), FindLandmarks(), FindLanes(), AssetProperties(), MeasureDistance(), DescribeEnvironment(),
         AddAsset(),
         RemoveAssets(),
         PlaceAsset(),

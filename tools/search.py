@@ -284,6 +284,32 @@ def _edge_distance(scene: Scene, a: Target, b: Target) -> float | None:
     return None
 
 
+class EnvironmentArgs(ToolArgs):
+    pass
+
+
+class DescribeEnvironment(Tool[EnvironmentArgs]):
+    name = "describe_environment"
+    description = "Describe the weather, the time of day and the lights now (it changes nothing)."
+    family = "search"
+    Args = EnvironmentArgs
+
+    def propose(self, args: EnvironmentArgs, scene: Scene) -> ToolResult:
+        env = scene.environment
+        weather = env.weather.kind if env.weather.kind == "clear" else f"{env.weather.kind} (intensity {env.weather.intensity:g})"
+        text = (f"weather: {weather}; time of day: {env.time_of_day} ({'night' if env.is_night else 'day'}); "
+                f"street lights {_lamps(env.lighting.street_lights, env.is_night)}, "
+                f"vehicle lights {_lamps(env.lighting.vehicle_lights, env.is_night)}; exposure {env.lighting.exposure:g}")
+        return ToolResult(WorldEdit(), text, data={"environment": env.model_dump()})
+
+
+def _lamps(setting: str, night: bool) -> str:
+    """Whether lights set so are lit now: "auto" ones are lit at night."""
+    if setting != "auto":
+        return setting
+    return "on (they light at night)" if night else "off (they light at night)"
+
+
 class PropertiesArgs(ToolArgs):
     asset: str | None = Field(None, description="asset id to describe")
     category: str | None = Field(None, description="or: a catalog category to describe")

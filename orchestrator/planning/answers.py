@@ -21,7 +21,9 @@ from drivetwin.worlds.catalog import resolve_category
 from drivetwin.worlds.scene import EGO_ID, Scene
 
 # The Workers a question may be answered with: anything else is an edit, judged elsewhere.
-SEARCH_TOOLS = frozenset({"find_assets", "find_landmarks", "find_lanes", "asset_properties", "measure_distance"})
+SEARCH_TOOLS = frozenset(
+    {"find_assets", "find_landmarks", "find_lanes", "asset_properties", "measure_distance", "describe_environment"}
+)
 
 # A comparison of distances: "which X is nearest/closest to Y", "how far is X from Y".
 _NEAREST = re.compile(r"\b(nearest|closest|nearer|closer|most near|how far)\b")

@@ -33,13 +33,14 @@ FORBIDDEN = re.compile(r"\s+(?:mustn'?t|must not|shouldn'?t|should not|can'?t|ca
 FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
-_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats"
+_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and),?\s+)?(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats"
                              r"|is anything|is any|are any|is something|has anything|have any|do the)\b"
                              # "the gates, where are they": the thing first, the question after it
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
-_INFO = re.compile(r"\b(tell me|show me|let me know|how many|how far|how much|number of|count of|list of|"
+_INFO = re.compile(r"\b(tell me|show me|let me know|tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|"
+                   r"(?:inventory|rundown|overview|summary|tally) of|how many|how far|how much|number of|count of|list of|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
                    r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"

@@ -717,6 +717,31 @@ def distance(w: Words) -> Draft | None:
     return Draft(request, [_call("measure_distance", a=a, b=b)], "search", slots, [_need("search", "distance", said)])
 
 
+# How the world is now, asked: the weather, the clock, the light (answered, never set).
+SETTING_QUESTIONS = (
+    "is it {weather} at the moment?",
+    "{weather} right now or not?",
+    "tell me if it's {weather}",
+    "what is the weather doing",
+    "how's the weather in this scene?",
+    "what time of day is it set to",
+    "which hour is it in the world?",
+    "is it {time} or day at the moment",
+    "are the {lamps} lit?",
+    "are the {lamps} on at the moment",
+    "is it dark in there?",
+)
+
+
+def asked_setting(w: Words) -> Draft:
+    """A question about the weather, the time or the lights: a description, nothing set."""
+    form = w.pick(SETTING_QUESTIONS)
+    weather = w.pick(("raining", "snowing", "foggy", "cloudy", "sunny", "misty", "wet"))
+    lamps = w.pick(("street lights", "lamp posts", "headlights"))
+    request = form.format(weather=weather, time=w.pick(("night", "evening", "dusk")), lamps=lamps)
+    return Draft(request, [_call("describe_environment")], "search", [], [_need("search", "environment")])
+
+
 def _end(w: Words, name: str) -> Slot:
     return ("place", name) if name in w.landmarks else ("asset", name)
 
@@ -739,6 +764,7 @@ FRAMES: dict[Callable[[Words], Draft | None], int] = {
 # the joined drafts), so that adding one leaves every earlier example as it was.
 LATER_FRAMES: dict[Callable[[Words], Draft | None], int] = {
     distance: 120,
+    asked_setting: 60,
 }
 # Joined drafts: two requests in one ("..., then ..."), for multi-call plans.
 COMPOUNDS = 250

@@ -31,7 +31,7 @@ from drivetwin.worlds.scene import Scene
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 # Bump when the grammar's frames or words change: cached banks of an older version are rebuilt.
-GENERATOR_VERSION = "6"
+GENERATOR_VERSION = "7"
 # The version the random draws are seeded with. A frame added to LATER_FRAMES bumps only
 # GENERATOR_VERSION, so cached banks are rebuilt and every earlier example stays as it was;
 # bump this one too to redraw the whole bank.

@@ -159,6 +159,10 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         if colon and then.strip() and not reasons:  # "it spoils the view: let's take it away" (see without_reason)
             out.append((why, False, True))
             text = then
+        said = _said_first(text, places) if not reasons else None
+        if said is not None:  # "it's too dark, make it day": how it is, then what to do
+            out.append((said[0], False, True))
+            text = said[1]
         verb = _VERB_AT.search(text.lower())
         if verb is None and lead and re.search(r"and also", parts[i - 1]) and ph.find_categories(text):
             text = f"{lead} {text}"  # "remove the hydrant and also the bin": the bin is removed too
@@ -169,6 +173,23 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text) for q in _comma_and(p)]
         out.extend((c, asked, intro) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,"), places))
     return out
+
+
+# A command after a comma: "..., make it day", "..., please give me some clouds".
+_COMMA_COMMAND = re.compile(rf",\s+(?=(?:(?:please|pls|just|so|now|then|let'?s)\s+)*(?:{'|'.join(_VERBS)}|give)\b)")
+
+
+def _said_first(text: str, places: tuple[str, ...]) -> tuple[str, str] | None:
+    """A statement of how things are that names nothing, and the command after its comma ("it's
+    too dark, make it day"); None where the statement names a thing or place the command may
+    mean ("Campus Drive feels empty, make it livelier", "the bench is in the way, move it")."""
+    cut = _COMMA_COMMAND.search(text)
+    if cut is None or not _STATEMENT.match(low := text[: cut.start()].lower()):
+        return None
+    named = (ph.find_categories(low) or "_" in low or ph.has_any(low, ph.EGO_WORDS)
+             or any(re.search(rf"\b{re.escape(p)}\b", low) for p in places)
+             or re.search(r"\b(?:street|road|lane|drive|avenue|lot|car park|crossing)\b", low))
+    return None if named else (text[: cut.start()], text[cut.end() :])
 
 
 def _comma_and(text: str) -> list[str]:
@@ -359,7 +380,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return repeat(r, scene, memory, notes)
     if _is_question(r, asked):
         looked_up = plan_question(r, scene, memory, notes)
-        if [c.args for c in looked_up] == [{}] and not (r.mentions or r.ids or r.ego or r.landmark):
+        if [(c.tool, c.args) for c in looked_up] == [("find_assets", {})] and not (r.mentions or r.ids or r.ego or r.landmark):
             # "Bit of drizzle?": a question about nothing in the scene that names a setting asks for it
             return environment(r, scene.environment) or looked_up
         return looked_up

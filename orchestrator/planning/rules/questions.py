@@ -21,6 +21,7 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.environment import environment
 from drivetwin.orchestrator.planning.rules.places import Notes
 from drivetwin.orchestrator.planning.rules.reading import Reading, read
 from drivetwin.orchestrator.planning.rules.spelling import is_known, vocabulary
@@ -106,6 +107,12 @@ _ASKED_ABOUT = re.compile(r"\b(?:how many|where (?:is|are|do|does|did|can|could|
                           r"|(?:is|are) there(?: any| an?| some)?) ([a-z]{3,})\b")
 
 
+# A question about how the world is now, not a wish ("is it raining?"; "bit of drizzle?" asks for it).
+_ASKS_HOW_IT_IS = re.compile(r"\s*(?:(?:so|ok|and|hey)\W+)*(?:what|what's|whats|how|is|are|was|does|do|which|when|tell me|can you tell)\b")
+# The settings a question can ask about by their general words.
+_SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|bright|light)|lights? (?:on|off)|lit)\b")
+
+
 def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
     """The search calls that answer a question clause: one per part of a compound question."""
     texts = [t for t in _NEXT_PART.split(r.text) if t.strip(" ,")]
@@ -152,6 +159,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
 
         raise PlanningError(f"there is no {asked_about.group(1)!r} in this world; things here are such as "
                             f"{', '.join(sorted({a.category for a in scene.assets})[:8])}")
+    if _names_nothing(r) and _ASKS_HOW_IT_IS.match(low) and (_SETTING.search(low) or environment(r, scene.environment)):
+        return Part(ToolCall(tool="describe_environment", args={}), None)  # "is it raining?", "what's the weather like"
     named = _named(r, scene)
     back = _back_reference(r, scene, memory, notes, earlier)
     if _names_nothing(r) and _OF_EACH.search(r.masked) and notes.subject:
