@@ -108,7 +108,7 @@ def test_a_later_frame_adds_examples_and_leaves_every_earlier_one_as_it_was(
     without = generate(world, scale=0.05)
     assert [e.request for e in with_later[: len(without)]] == [e.request for e in without]
     added = with_later[len(without):]
-    assert added and all(e.calls[0].tool == "measure_distance" for e in added)
+    assert added and {e.calls[0].tool for e in added} == {"measure_distance", "describe_environment"}
 
 
 def test_the_bank_is_cached_as_json_lines_with_its_embeddings_beside_it(bank: list, world: Scene) -> None:
