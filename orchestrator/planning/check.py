@@ -66,6 +66,7 @@ from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, kept_at
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import says_other_place
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
@@ -204,7 +205,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         if meant is not None:
             out.append(f"your words describe a {meant.replace('_', ' ')}, but the plan uses "
                        + ", ".join(sorted(plan_categories)))
-    missing = [n for n in request.numbers if not _accounts_for(n, effect, scene)]
+    totals = set(_totals(request, effect).values())  # "there should be exactly four cones": how many are left
+    missing = [n for n in request.numbers if not _accounts_for(n, effect, scene) and n not in totals]
     if missing and effect.calls:
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
     if request.place is not None and effect.edits and not effect.environment:
@@ -285,7 +287,8 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     """What the plan gives the things named (see attributes.py): counts, lane, surface, look,
     weather strength."""
     placed = [*effect.added, *_moved(effect)]
-    out = wrong_counts(request.masked, [a for a in effect.added if a.category not in _companions(effect)])
+    out = [] if _totals(request, effect) else wrong_counts(
+        request.masked, [a for a in effect.added if a.category not in _companions(effect)])
     out += wrong_layout(request.masked, effect.added)
     if request.place is not None and effect.added:
         out += not_around(request.low, _centre(scene, request.place), effect.added)
@@ -422,6 +425,15 @@ def _accounts_for(number: float, effect: Effect, scene: Scene) -> bool:
              for c in effect.calls if c.tool == "move_asset" and "east" in c.args and "north" in c.args]
     return any(math.isclose(abs(number) * f, abs(u), rel_tol=NUMBER_TOLERANCE, abs_tol=NUMBER_TOLERANCE)
                for u in used for f in UNIT_FACTORS)
+
+
+def _totals(request: Request, effect: Effect) -> dict[str, int]:
+    """How many of each kind the plan adds or removes stand at the request's place after it, where
+    the request says the count the scene should end with ("there should be exactly four cones")."""
+    if effect.outcome is None or not FINAL_COUNT.search(request.low):
+        return {}
+    kinds = {a.category for a in [*effect.added, *effect.removed]}
+    return {k: len(kept_at(effect.outcome.after, k, request.place)) for k in kinds}
 
 
 def _reach(effect: Effect, scene: Scene) -> list[float]:

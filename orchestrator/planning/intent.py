@@ -21,6 +21,8 @@ REMOVE_WORDS = re.compile(
     r"|(?:should|can|could|must|may|has to|have to|needs? to) (?:all |both |just )?go(?: away)?"
     r"(?=\s*(?:[,.;!?]|$|(?:i guess|i think|please|now|too|as well)\b)))\b"
     r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
+    # "I want no bins on campus", "there should be no signals at the crossroads": a scene without them
+    r"|\b(?:want|need|like|prefer|there (?:should|must|can|may|is to|are to) be|there'?s to be|(?:should|must) (?:be )?have) (?:no|zero)\b"
     r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to|uses?|needs?|wants?)"  # "nobody should be parked there"
 )
 # People doing what they do ("people will eat lunch on that bench", "students often cut across"):
@@ -49,7 +51,7 @@ _INFO = re.compile(r"\b(tell me|show me|let me know|tell (?:[a-z]+ ){1,2}(?:what
 # Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
 # in the mood of a command, whatever the politeness around them.
 _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
-                     r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show)\b")
+                     r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show|measure|work out)\b")
 # A request put politely, at the start of the sentence or of a clause ("..., could you add two
 # cars?", "could the bus go ..."): a command even when it ends with a question mark.
 _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^\s*please\b(?!\s*,?\s*(?:where|what|which|how|who|is there|are there)\b)"
@@ -122,7 +124,8 @@ _LAYOUT_HEADING = re.compile(r"^\s*(ring|circle|line|row|grid)\s*:", re.IGNORECA
 # bin" is left alone: it asks for a swap, the bin included.
 _DETERMINER = r"(?:the|that|this|those|these|a|an|any|my|our|its|their|his|her|ego\b|[a-z_]+_\d+)"  # or an id
 _CONTRAST = re.compile(
-    rf"(?:,\s*(?:but\s+|and\s+)?|\s+but\s+)(?:not|never)\s+(?=(?:{_DETERMINER}|in|at|on|by|near)\b)"
+    rf"(?:,\s*(?:but\s+|and\s+)?|\s+but\s+)(?:not|never)\s+(?=(?:{_DETERMINER}|in|at|on|by|near)\b"
+    r"|(?:\d+(?:\.\d+)?|a few|several|so|that|too)\s*(?:m|metres?|meters?|feet|ft|far|away)\b)"
     rf"|\s+(?:except(?:\s+for)?|other\s+than|apart\s+from|excluding|save\s+for)\s+(?={_DETERMINER})"
     r"|\s+rather\s+than\s+(?=(?:the|that|this|those|these|a|an|in|at|on|by|near|its|their)\b)"
     r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
@@ -155,12 +158,47 @@ def without_contrast(text: str) -> str:
     return text
 
 
+# A slip taken back as it is said: "2 m east - sorry, west", "add three, no wait, two cones", "paint
+# the bench - sorry, the bin - red", "blue, I mean green".
+_TAKEN_BACK = re.compile(r"\s*(?:[,;-]|--|\u2013|\u2014|\.\.\.)?\s*\b(?:sorry|no wait|wait no|i mean|i meant|oops|or rather|"
+                         r"make that|scratch that|correction)\b[,:]?\s+", re.IGNORECASE)
+# The kinds of word a correction swaps, each a pattern for one word; anything else is a thing named with an article.
+_SWAPPED_KINDS = (
+    r"\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|twenty",
+    r"north|south|east|west|left|right|forward|forwards|back|backwards|ahead|behind|up|down",
+    r"red|orange|yellow|green|blue|pink|purple|white|black|grey|gray|silver|gold|brown|cyan|teal|navy|maroon|beige",
+)
+
+
+def without_slip(text: str) -> str:
+    """`text` with a word taken back replaced by its correction ("move the bench 2 m east - sorry,
+    west" is "move the bench 2 m west"); as it was where the correction swaps nothing said before."""
+    said = _TAKEN_BACK.search(text)
+    if said is None or not text[: said.start()].strip():
+        return text
+    before, after = text[: said.start()], text[said.end() :]
+    stop = re.search(r"\s+(?:-|--|\u2013|\u2014)\s+|,\s*", after)
+    fix, rest = (after[: stop.start()], after[stop.end() :]) if stop else (after, "")
+    head = re.sub(r"^(?:the|a|an)\s+", "", fix.strip(), flags=re.IGNORECASE).split(" ", 1)[0].lower()
+    for kind in _SWAPPED_KINDS:
+        if re.fullmatch(kind, head):
+            slipped = list(re.finditer(rf"\b(?:{kind})\b", before, re.IGNORECASE))
+            cut = slipped[-1].start() if slipped else -1
+            break
+    else:  # a thing: the last one named with an article ("the bench")
+        slipped = list(re.finditer(r"\b(?:the|a|an)\s+[\w-]+(?:\s+[\w-]+)?\s*$", before, re.IGNORECASE))
+        cut = slipped[-1].start() if slipped else -1
+    if cut < 0:
+        return text
+    return " ".join(p for p in (before[:cut].rstrip(), fix.strip(), rest.strip()) if p)
+
+
 def without_reason(text: str) -> str:
     """`text` without the clauses that only say why ("so buses can pass", "to test the wipers,
     so give me rain") or what is not meant (", not the ego"), without labels pasted with it
     ("JIRA-412:"), and with a layout's heading read as words ("Ring: 6x cones" is a ring of 6x
     cones)."""
-    text = _STEPS.sub("", _EXPECTED.sub("", _TAG.sub("", _CLEFT.sub("I want ", text))))
+    text = _STEPS.sub("", _EXPECTED.sub("", _TAG.sub("", _CLEFT.sub("I want ", without_slip(text)))))
     if (nominal := _NOMINAL_EDIT.match(text)) is not None:
         text = _ASKED_FOR.sub("", _NOMINAL[nominal.group(1).lower()] + text[nominal.end() :])
     text = without_contrast(_LAYOUT_HEADING.sub(r"\1 of", _LABEL.sub(" ", text))).strip()
@@ -187,7 +225,11 @@ _READ_ONLY = re.compile(r"\b(?:no (?:edits?|changes)|(?:don'?t|do not|dont) (?:t
 
 # An amount of something offered with a question mark ("bit of drizzle?", "some more cones?",
 # "a touch of fog, maybe?"): a suggestion, as "how about ..." is, not a question.
-_SUGGESTED = re.compile(r"^(?:(?:a |an )?(?:bit|spot|touch|dash|hint|little|lot|drop) of|some|more|a little|a bit)\b")
+# A wish put as a question, hedged or bare ("bit of drizzle?", "maybe a couple of trees by the
+# library?", "if there's room, a bike or two outside it?"): a suggestion of something to have.
+_SUGGESTED = re.compile(r"^(?:(?:maybe|perhaps|possibly|how about|if there'?s (?:room|space)|if (?:possible|you can)|ooh|oh)[,\s]+)*"
+                        r"(?:(?:a |an )?(?:bit|spot|touch|dash|hint|little|lot|drop|couple|few|pair) of|some|more|a little|a bit"
+                        r"|(?:a|an|one|two|three|four|five|\d+) (?!(?:question|quick question|thing)\b)(?=[a-z]))\b")
 
 
 def asks(low: str) -> bool:

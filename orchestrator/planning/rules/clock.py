@@ -20,7 +20,7 @@ _WORD_NUMBERS = {
 }
 _HOUR = r"(\d{1,2}|" + "|".join(sorted(_WORD_NUMBERS, key=len, reverse=True)) + ")"
 # Words after a time that say which half of the day it is in.
-_AFTERNOON = re.compile(r"^\s*(pm|p\.m\.|(?:in|of|during) (?:the )?(afternoon|evening)|at night|tonight|in the night)\b")
+_AFTERNOON = re.compile(r"^\s*(pm|p\.m\.|(?:in|of|during) (?:the )?(afternoon|evening)|at night|tonight|(?:in the|of|of the) night)\b")
 _MORNING = re.compile(r"^\s*(am|a\.m\.|in the morning)\b")
 # Parts of the day that put a 12-hour time said anywhere in the request after noon.
 _LATER_IN_DAY = re.compile(r"\b(?:evening|afternoon|tonight|dusk|sunset|after work|rush hour home)\b")
@@ -61,7 +61,7 @@ def _in_half_of_day(hour: int, after: str, said: str = "") -> int:
     """The 24-hour hour for a 12-hour `hour` given the words after it ("pm", "at night"), else
     the part of the day the rest of the request names ("a November evening ... about half five")."""
     if _AFTERNOON.match(after):
-        night_small_hours = hour <= 4 and re.match(r"^\s*(at|in the) night", after) is not None
+        night_small_hours = hour <= 4 and re.match(r"^\s*(at|in the|of|of the) night", after) is not None
         return hour if hour >= 12 or night_small_hours else hour + 12
     if _MORNING.match(after):
         return 0 if hour == 12 else hour

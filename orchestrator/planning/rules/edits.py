@@ -25,11 +25,13 @@ from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import lane_under
 from drivetwin.worlds.catalog import Category, catalog
-from drivetwin.worlds.scene import AssetInstance, Scene
+from drivetwin.worlds.scene import Scene
 from drivetwin.worlds.surface import nearest_on_polyline
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
 NEAR_PLACE_M = 8.0
+# How far outside a place's area a thing still stands at it (the signals on the crossroads' corners).
+EDGE_M = 2.0
 # How far from a place without an area its things stand ("the trees at the fountain").
 SCOPE_RADIUS_M = 20.0
 # Defaults for amounts a person leaves out ("back it up", "shift the bin", "spin it").
@@ -115,12 +117,31 @@ _SCOPE = re.compile(r"\s*(?:that are |which are |standing |parked )?(?:in|at|ins
 
 # "Keep just two" of the things at a place: those within this of it are the ones counted.
 KEEP_RADIUS_M = 30.0
+_SOME_OF_THEM = re.compile(r"\b(\d+|[a-z]+) of (?:them|those|these)\b")
 _KEEP = re.compile(r"\b(?:keep|leave)\s+(?:just |only |me )?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
 
 
-def _within_place(scene: Scene, asset: AssetInstance, place: str) -> bool:
-    landmark = scene.landmark(place)
-    return landmark is None or math.dist(landmark.position, (asset.pose.x, asset.pose.y)) <= KEEP_RADIUS_M
+def _but_kept(r: Reading, ids: list[str]) -> list[str]:
+    """`ids` less the number the words keep ("leave just one of them": all but the first)."""
+    keep = _KEEP.search(r.low)
+    if keep is None:
+        return ids
+    left = int(keep.group(1)) if keep.group(1).isdigit() else ph.NUMBER_WORDS.get(keep.group(1), 0)
+    return ids[left:]
+
+
+# A count the scene should end with: "there should be exactly four cones in lot A", "we want only two benches".
+FINAL_COUNT = re.compile(r"\b(?:there (?:should|must|has to|needs to|is to|are to) be|(?:i|we) (?:want|need|would like|'d like))"
+                         r"\s+(?:exactly|only|just|a total of)\s+")
+
+
+def kept_at(scene: Scene, category: str, place: str | None) -> list[str]:
+    """The things of `category` a count kept or wished for at `place` counts (anywhere without
+    one), nearest the place first."""
+    landmark = scene.landmark(place) if place else None
+    there = [(0.0 if landmark is None else math.dist(landmark.position, (a.pose.x, a.pose.y)), a.id)
+             for a in scene.assets if a.category == category]
+    return [i for d, i in sorted(there) if d <= KEEP_RADIUS_M]
 
 
 def _scoped_by_place(r: Reading, mention: ph.Mention, anywhere: bool = False) -> bool:
@@ -148,14 +169,14 @@ def _at_place(scene: Scene, place: str, ids: list[str], reach: float | None = No
         if a is None:
             continue
         distance = math.dist((a.pose.x, a.pose.y), landmark.position)
-        if (landmark.polygon is not None and _inside((a.pose.x, a.pose.y), landmark.polygon)) or distance <= reach:
+        if (landmark.polygon is not None and _inside((a.pose.x, a.pose.y), landmark.polygon, EDGE_M)) or distance <= reach:
             out.append((distance, i))
     return [i for _, i in sorted(out)]
 
 
-def _inside(point: tuple[float, float], polygon: list[tuple[float, float]]) -> bool:
+def _inside(point: tuple[float, float], polygon: list[tuple[float, float]], margin: float = 0.0) -> bool:
     xs, ys = [p[0] for p in polygon], [p[1] for p in polygon]
-    return min(xs) <= point[0] <= max(xs) and min(ys) <= point[1] <= max(ys)
+    return min(xs) - margin <= point[0] <= max(xs) + margin and min(ys) - margin <= point[1] <= max(ys) + margin
 
 
 # The road as where things are taken from: "off the road", "out of our lane".
@@ -208,7 +229,10 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             lanes = [lane] if r.lane and not r.lane_guessed and (lane := scene.roads.lane(r.lane)) else scene.roads.lanes
             ids = [a.id for a in scene.assets if catalog()[a.category].motion == "prop" and lane_under(a, lanes)]
             return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
-        ids = referenced(r, scene, memory, notes)
+        ids = _but_kept(r, referenced(r, scene, memory, notes))  # "too many, just leave one of them"
+        said = None if _KEEP.search(r.low) else _SOME_OF_THEM.search(r.low)  # "take away 3 of them": the newest 3
+        some = (int(said.group(1)) if said.group(1).isdigit() else ph.NUMBER_WORDS.get(said.group(1), 0)) if said else 0
+        ids = ids[-some:] if 0 < some < len(ids) else ids
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
     listed = _listed(r)
     if len(listed) > 1:  # "the seat and the bin there should both go": each of them
@@ -216,10 +240,12 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     mention = r.mentions[0]
     name = mention.category
     recent = [i for i in memory.last_added(name) if scene.asset(i) is not None]
-    if recent and r.has(("you added", "you just added", "the new", "that", "those")):
-        return [ToolCall(tool="remove_assets", args={"assets": recent})]
-    args: dict[str, Any] = {"category": name}
     count = find_count(r, mention)
+    if recent and r.has(("you added", "you just added", "the new", "that", "those")):
+        # "remove two of those cones": that many of them, the newest first; "leave one of those": all but one
+        chosen = recent[-count:] if count and count < len(recent) and not _KEEP.search(r.low) else _but_kept(r, recent)
+        return [ToolCall(tool="remove_assets", args={"assets": chosen})] if chosen else None
+    args: dict[str, Any] = {"category": name}
     grouped = any(name in members for members in md.groups_said(r.low).values())
     if (grouped or _scoped_by_place(r, mention, anywhere=True)) and count is None and not fewer:
         # "the vehicles in lot B": every one there, of every category the words cover
@@ -235,7 +261,7 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     keep = _KEEP.search(r.low)
     if keep is not None:  # "keep just two": all but that many of those in scope
         left = int(keep.group(1)) if keep.group(1).isdigit() else ph.NUMBER_WORDS.get(keep.group(1), 0)
-        in_scope = sum(1 for a in scene.assets if a.category == name and (not r.landmark or _within_place(scene, a, r.landmark)))
+        in_scope = len(kept_at(scene, name, r.landmark))
         if in_scope <= left:
             return None
         count = in_scope - left

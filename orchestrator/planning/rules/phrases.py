@@ -41,7 +41,7 @@ def normalise(text: str) -> str:
     out = re.sub(r"\b(?:front |main )?(?:door|doorway)s?\b", "entrance", out)  # "the Union doors": its entrance
     out = re.sub(r"\b(nearest|closest|near|ahead of|behind|in front of|next to|beside) us\b", r"\1 the ego", out)  # the driver's "us"
     # "take that orange thing away": the particle of a phrasal verb said after its object
-    out = re.sub(r"\b(take|throw|clear|carry|haul) ((?:the|that|this|those|these|all|both|every|its|their|our|my)"
+    out = re.sub(r"\b(take|throw|clear|carry|haul) ((?:the|that|this|those|these|all|both|every|its|their|our|my|\w+ of)"
                  r"(?: [a-z0-9_'-]+){1,5}?) (away|out|off)\b(?! of\b)", _particle_first, out)
     # A comma inside a number ("10,000") is a thousands separator, not a clause break.
     return re.sub(r"(?<!\d),|,(?!\d{3}(?!\d))", " , ", out.replace("’", "'"))

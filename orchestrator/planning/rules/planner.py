@@ -23,9 +23,11 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import (
+    FINAL_COUNT,
     behaviour_kind,
     behaviour_spec,
     edit_existing,
+    kept_at,
     recolour,
     referenced,
     remove,
@@ -387,6 +389,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if r.mentions and _TOPIC.fullmatch(_without_mentions(r)):
         referenced(r, scene, memory, notes)  # "the cars... where are they?": what the next clause is about
         return []
+    final = _to_count(r, scene, memory, notes)
+    if final is not None:  # "there should be exactly four cones in lot A": as many as that, no more
+        return final
     # The removal words the plan check reads polarity by ("take it out", "without the bin") count too.
     taken_away = bool(REMOVE_WORDS.search(r.low.strip()))
     fewer = bool(FEWER_WORDS.search(r.low))
@@ -395,7 +400,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         if removed is not None:
             return removed
     # "turn the lamps on", and a state wished for: "the street lights must be on", "lamps should be lit"
-    switch = re.search(r"\b(turn|switch|put|flick)\b.*\b(on|off)\b|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit)\b", r.low)
+    switch = re.search(r"\b(turn|switch|put|flick|make)\b.*\b(on|off)\b|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit)\b", r.low)
     if switch and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
         if lights(r) is not None:
             return environment(r, scene.environment)
@@ -472,6 +477,24 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
 
 # A place wished busier ("make the street busier", "liven up the quad"): more people or traffic.
 _LIVELIER = re.compile(r"\b(?:busier|more busy|livelier|more lively|liven (?:it |\w+ )?up|more going on|more life)\b")
+
+
+def _to_count(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
+    """The additions or removals that leave the count said of a thing at its place; None where the
+    words say no final count or nothing of the kind is there to count against (a plain addition)."""
+    said = FINAL_COUNT.search(r.low)
+    mention = next((m for m in r.mentions if said is not None and m.start >= said.end()), None)
+    wanted = find_count(r, mention) if mention is not None else None
+    if mention is None or wanted is None:
+        return None
+    there = kept_at(scene, mention.category, r.landmark)
+    if not there:
+        return None
+    if wanted == len(there):
+        raise PlanningError(f"there are already {wanted} {mention.category} there; nothing to change")
+    if wanted < len(there):
+        return [ToolCall(tool="remove_assets", args={"assets": there[wanted:]})]
+    return _add(replace(r, mentions=[mention]), scene, memory, notes, count=wanted - len(there))
 
 
 def _livelier(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
@@ -673,12 +696,13 @@ def _heading_along(r: Reading, scene: Scene, args: dict[str, Any]) -> float | No
     return round(math.degrees(target.pose.yaw), 1) if target is not None else None
 
 
-def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
+def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | None = None) -> list[ToolCall]:
+    """add_asset for the first thing the clause names: `count` of them, else as many as it says."""
     mention = r.mentions[0]
     word = r.low[mention.start : mention.end].strip()
     mass = word.endswith(("ing", "ery"))  # "seating", "greenery": more than one
     again = len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None
-    count = find_count(r, mention) or again or (3 if mention.plural or mass else 1)
+    count = count or find_count(r, mention) or again or (3 if mention.plural or mass else 1)
     # The count is passed as said: the Worker refuses what is too many, in words.
     args: dict[str, Any] = {"category": mention.category, "count": count}
     category = catalog()[mention.category]

@@ -51,7 +51,7 @@ _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
 # A distance asked between two things ("how far is X from Y", "the distance between X and Y",
 # "how far apart are X and Y"): one thing named is measured from the asker. A superlative asks
 # which thing is nearest instead, and a range ("within 20 m") asks what is around.
-_DISTANCE = re.compile(r"\b(?:how far|distance|far apart|far away|far off|far from|gap between|how many (?:metres|"
+_DISTANCE = re.compile(r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|how many (?:metres|"
                        r"meters|feet|yards) (?:from|to|between|apart))\b|\bfar\s*\??\s*$")
 _SUPERLATIVE = re.compile(r"\b(?:nearest|closest|furthest|farthest|most near|most close|nearer|closer)\b")
 _ENDS = re.compile(r"\b(?:from|to|and|between|apart)\b")

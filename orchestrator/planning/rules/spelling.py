@@ -53,6 +53,12 @@ _SHORT_SLIPS = {
     "wat": "what",
     "whr": "where",
     "u": "you",
+    # text-speak
+    "rn": "right now",
+    "plz": "please",
+    "ppl": "people",
+    "cuz": "because",
+    "coz": "because",
     "abit": "a bit",
     "alot": "a lot",
 }
@@ -311,6 +317,9 @@ _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those
 # south ones" (except), "a stop sine" (sign).
 _SOUND_ALIKES = (
     (re.compile(r"\bbuy(?= (?:the|a|an|that|this|those|these)\b)", re.IGNORECASE), "by"),
+    # text-speak "r" and "ur", only between the words that make them a verb or a pronoun ("r there", "ur car")
+    (re.compile(r"(?<=[a-z] )r(?= (?:there|they|these|those|the|all|any|u|you|we)\b)", re.IGNORECASE), "are"),
+    (re.compile(r"\bur(?= (?:car|ego|own)\b)", re.IGNORECASE), "your"),
     (re.compile(r"(?<=\band )than\b|(?<=, )than\b", re.IGNORECASE), "then"),  # "forward ten metres and than turn it"
     (re.compile(r"\bwon(?= (?:eighty|hundred|more|of (?:the|those|them))\b)", re.IGNORECASE), "one"),
     (re.compile(r"(?<=\b(?:stop|road|warn|park|work) )sine\b|(?<=\bparking |warning )sine\b", re.IGNORECASE), "sign"),
