@@ -17,13 +17,12 @@ from collections.abc import Sequence
 from drivetwin.orchestrator.planning.request import Request
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.tools.base import ToolCall
+from drivetwin.tools.registry import builtin_tools
 from drivetwin.worlds.catalog import resolve_category
 from drivetwin.worlds.scene import EGO_ID, Scene
 
 # The Workers a question may be answered with: anything else is an edit, judged elsewhere.
-SEARCH_TOOLS = frozenset(
-    {"find_assets", "find_landmarks", "find_lanes", "asset_properties", "measure_distance", "describe_environment"}
-)
+SEARCH_TOOLS = frozenset(tool.name for tool in builtin_tools() if tool.family == "search")
 
 # A comparison of distances: "which X is nearest/closest to Y", "how far is X from Y".
 _NEAREST = re.compile(r"\b(nearest|closest|nearer|closer|most near|how far)\b")

@@ -17,7 +17,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.intent import FORBIDDEN, HABITUAL
+from drivetwin.orchestrator.planning.intent import FORBIDDEN, HABITUAL, KEEP_SOME
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -394,10 +394,6 @@ def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> l
     return out
 
 
-# How many of them to keep: "leave just one of them", "keep two".
-_KEPT = re.compile(r"\b(?:keep|leave)\s+(?:just |only )?(?:\d+|one|two|three|four|five|a couple|a few)\b")
-
-
 def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory: Memory, scene: Scene,
                    counted: bool) -> list[str]:
     """A request that names nothing itself but points back ("move them left", "two more there",
@@ -419,7 +415,7 @@ def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory:
                    f"but the plan acts on {', '.join(strays)}")
     existing = [i for i in dict.fromkeys(earlier) if scene.asset(i) is not None]
     acted = {a.id for a in scope.touched}
-    counted = counted or _KEPT.search(masked) is not None  # "just leave one of them"
+    counted = counted or KEEP_SOME.search(masked) is not None  # "just leave one of them"
     if said in _PLURAL_POINTERS and not scope.added and not counted and 0 < len(acted & set(existing)) < len(existing):
         out.append(f"you said {said!r} ({len(existing)} of them), but the plan acts on {len(acted & set(existing))}")
     if said == "there" and last.focus is not None and scope.added:

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import re
 
+from drivetwin.tools.appearance import COLOURS
+
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|out of scope|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
@@ -33,6 +35,8 @@ HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|p
 FORBIDDEN = re.compile(r"\s+(?:mustn'?t|must not|shouldn'?t|should not|can'?t|cannot|won'?t|may not)\b")
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
 FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
+# How many of them to keep: "keep just two", "leave one of them" (the amount is group 1).
+KEEP_SOME = re.compile(r"\b(?:keep|leave)\s+(?:just |only |me )?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
 _QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and),?\s+)?(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats"
@@ -166,7 +170,7 @@ _TAKEN_BACK = re.compile(r"\s*(?:[,;-]|--|\u2013|\u2014|\.\.\.)?\s*\b(?:sorry|no
 _SWAPPED_KINDS = (
     r"\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|twenty",
     r"north|south|east|west|left|right|forward|forwards|back|backwards|ahead|behind|up|down",
-    r"red|orange|yellow|green|blue|pink|purple|white|black|grey|gray|silver|gold|brown|cyan|teal|navy|maroon|beige",
+    "|".join(COLOURS),
 )
 
 
@@ -240,4 +244,4 @@ def asks(low: str) -> bool:
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))
 
 
-__all__ = ["ADD_WORDS", "FEWER_WORDS", "REMOVE_WORDS", "asks", "excepted", "without_contrast", "without_reason"]
+__all__ = ["ADD_WORDS", "FEWER_WORDS", "KEEP_SOME", "REMOVE_WORDS", "asks", "excepted", "without_contrast", "without_reason"]

@@ -14,7 +14,7 @@ from dataclasses import replace
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.intent import FEWER_WORDS, REMOVE_WORDS
+from drivetwin.orchestrator.planning.intent import FEWER_WORDS, KEEP_SOME, REMOVE_WORDS
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
@@ -117,17 +117,24 @@ _SCOPE = re.compile(r"\s*(?:that are |which are |standing |parked )?(?:in|at|ins
 
 # "Keep just two" of the things at a place: those within this of it are the ones counted.
 KEEP_RADIUS_M = 30.0
+# Some of what was just named: "take away 3 of them", "two of those".
 _SOME_OF_THEM = re.compile(r"\b(\d+|[a-z]+) of (?:them|those|these)\b")
-_KEEP = re.compile(r"\b(?:keep|leave)\s+(?:just |only |me )?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
+
+
+def _amount(word: str) -> int:
+    return int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word, 0)
+
+
+def _kept(r: Reading) -> int | None:
+    """How many the words keep ("keep just two", "leave one of them"), or None."""
+    keep = KEEP_SOME.search(r.low)
+    return None if keep is None else _amount(keep.group(1))
 
 
 def _but_kept(r: Reading, ids: list[str]) -> list[str]:
     """`ids` less the number the words keep ("leave just one of them": all but the first)."""
-    keep = _KEEP.search(r.low)
-    if keep is None:
-        return ids
-    left = int(keep.group(1)) if keep.group(1).isdigit() else ph.NUMBER_WORDS.get(keep.group(1), 0)
-    return ids[left:]
+    left = _kept(r)
+    return ids if left is None else ids[left:]
 
 
 # A count the scene should end with: "there should be exactly four cones in lot A", "we want only two benches".
@@ -230,8 +237,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             ids = [a.id for a in scene.assets if catalog()[a.category].motion == "prop" and lane_under(a, lanes)]
             return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
         ids = _but_kept(r, referenced(r, scene, memory, notes))  # "too many, just leave one of them"
-        said = None if _KEEP.search(r.low) else _SOME_OF_THEM.search(r.low)  # "take away 3 of them": the newest 3
-        some = (int(said.group(1)) if said.group(1).isdigit() else ph.NUMBER_WORDS.get(said.group(1), 0)) if said else 0
+        said = None if _kept(r) is not None else _SOME_OF_THEM.search(r.low)  # "take away 3 of them": the newest 3
+        some = _amount(said.group(1)) if said else 0
         ids = ids[-some:] if 0 < some < len(ids) else ids
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
     listed = _listed(r)
@@ -243,7 +250,7 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     count = find_count(r, mention)
     if recent and r.has(("you added", "you just added", "the new", "that", "those")):
         # "remove two of those cones": that many of them, the newest first; "leave one of those": all but one
-        chosen = recent[-count:] if count and count < len(recent) and not _KEEP.search(r.low) else _but_kept(r, recent)
+        chosen = recent[-count:] if count and count < len(recent) and _kept(r) is None else _but_kept(r, recent)
         return [ToolCall(tool="remove_assets", args={"assets": chosen})] if chosen else None
     args: dict[str, Any] = {"category": name}
     grouped = any(name in members for members in md.groups_said(r.low).values())
@@ -258,9 +265,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     outermost = None if mention.plural else _outermost(r, scene, mention, [a.id for a in scene.assets if a.category == name])
     if outermost is not None:
         return [ToolCall(tool="remove_assets", args={"assets": [outermost]})]
-    keep = _KEEP.search(r.low)
-    if keep is not None:  # "keep just two": all but that many of those in scope
-        left = int(keep.group(1)) if keep.group(1).isdigit() else ph.NUMBER_WORDS.get(keep.group(1), 0)
+    left = _kept(r)
+    if left is not None:  # "keep just two": all but that many of those in scope
         in_scope = len(kept_at(scene, name, r.landmark))
         if in_scope <= left:
             return None

@@ -38,7 +38,7 @@ def repeats(r: Reading) -> bool:
 def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
     """The last edit still in the scene, again: moved to the place named, or applied to the
     things named; as it was when the clause names neither."""
-    last = _last_edit(memory)
+    last, calls = _last_edit(memory)
     said = _REPEAT.match(r.low)
     rest = _FILLER.sub("", r.low[said.end() :] if said is not None else r.low).strip(" ,.!")
     # "ditto for the bus", "the same to the trees": other things, first; "repeat that outside the Library": a place
@@ -50,7 +50,6 @@ def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         things = referenced(r, scene, memory, notes)
     if rest and place is None and not things:
         raise PlanningError(f"I could not tell where or to what {rest!r} is; say the whole request again")
-    calls = last.tool_calls()
     out: list[ToolCall] = []
     used = not (things or place)
     for call in calls:
@@ -74,14 +73,14 @@ def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     return out
 
 
-def _last_edit(memory: Memory) -> Turn:
+def _last_edit(memory: Memory) -> tuple[Turn, list[ToolCall]]:
+    """The newest turn still in the scene that changed something, with its calls read back."""
     for turn in reversed(memory.live_turns()):
         if turn.calls and (turn.added or turn.removed or turn.touched):
             try:
-                turn.tool_calls()
+                return turn, turn.tool_calls()
             except (SyntaxError, ValueError):
                 break
-            return turn
     raise PlanningError("there is no earlier edit to repeat; say what to do")
 
 
