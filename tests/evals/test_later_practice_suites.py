@@ -1,4 +1,4 @@
-"""The later practice suites (practice2 to practice7): valid, big enough in every cell, written from
+"""The later practice suites (practice2 to practice8): valid, big enough in every cell, written from
 their sources, and passable. Each was written to its own brief's minimums."""
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ from drivetwin.evals import (
     practice5_source,
     practice6_source,
     practice7_source,
+    practice8_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -49,6 +50,8 @@ BRIEFS: dict[str, Brief] = {
     "practice6": Brief(140, 5, 5, practice6_source, multi_turn=12, planned=6, compound=12,
                        weighted_grades=("vague", "indirect")),
     "practice7": Brief(200, 6, 6, practice7_source, multi_turn=15, planned=6, compound=15,
+                       weighted_grades=("vague", "indirect", "erroneous")),
+    "practice8": Brief(200, 6, 6, practice8_source, multi_turn=15, planned=6, compound=15,
                        weighted_grades=("vague", "indirect", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
