@@ -702,9 +702,14 @@ def _screened(prompt: str, question: Question, context: PlanContext) -> Verdict:
 
 def refusal(problems: list[str], context: PlanContext) -> str:
     """A refusal that says first what was not understood, then what is possible."""
-    tools = sorted({context.registry.get(n).family for n in context.registry.names()})
-    return (f"I did not do it: {'; '.join(problems)}. I can {', '.join(tools)} things in the scene; "
+    verbs = sorted({_FAMILY_VERB.get(f, f) for f in (context.registry.get(n).family for n in context.registry.names())})
+    can = ", ".join(verbs[:-1]) + f" and {verbs[-1]}" if len(verbs) > 1 else "".join(verbs)
+    return (f"I did not do it: {'; '.join(problems)}. I can {can} things in the scene; "
             "say it another way, e.g. naming the thing and the place")
+
+
+# A Worker family as the verb a person reads in a refusal ("I can add, find and restyle things").
+_FAMILY_VERB = {"appearance": "restyle", "search": "find", "position": "place"}
 
 
 __all__ = ["Effect", "Verdict", "dry_run", "problems_of", "refusal", "repairs", "review"]

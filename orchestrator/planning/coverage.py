@@ -11,6 +11,7 @@ sentence in plain words; check.py turns findings into a question or a refusal.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections.abc import Callable, Iterable
@@ -40,9 +41,10 @@ _NEW = re.compile(
 # Prepositions after which a request names a place ("near the gym", "on the moon").
 _PLACE_PREPOSITION = re.compile(
     r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|"
+    r"along|alongside|across|through|past|beyond|"
     r"(?:far|away|distance|metres|meters|m)\b(?:[^,.;?]{0,40}?\s)?from|"  # "how far is the ego from the ..."
-    r"close to|opposite|where is|where's|where are)\s+the\s+([a-z][a-z' -]*)"
-)
+    r"close to|opposite|where is|where's|where are)\s+the\s+(?=([a-z][a-z' -]*))"  # (a look-ahead: "from the
+)  # library to the pool" is read for both places)
 # Arguments by which a call says where: a repaired place name ends up in one of them.
 _PLACE_ARG = re.compile(r"'(?:location|near|nearest_to|lane|asset|assets|target|x|y)':")
 # Words after "the" that are part of a relation, not a place ("on the right", "to the north").
@@ -603,7 +605,9 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     out = []
     for m in _PLACE_PREPOSITION.finditer(masked):
         words = [w for w in re.split(r"[\s-]+", m.group(1)) if w][:3]
-        for word in words:
+        for at, word in enumerate(words):
+            rest = list(itertools.takewhile(lambda w: w not in lx.GRAMMAR, words[at + 1 :]))
+            place = " ".join([word, *rest])  # "the lakeside promenade for ...": the name, not one word of it
             if word in world:
                 continue
             if word in lx.GRAMMAR or word in _RELATION_WORDS or word in ids or word == "ego" or word.endswith("est") \
@@ -615,9 +619,9 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
                 break  # a word the plan uses is accounted for
             if word not in english_words():  # a misspelling is the planner's to repair, but
                 if not _PLACE_ARG.search(said):  # a plan placing nothing has dropped the place
-                    out.append(f"I do not know the place {word!r}")
+                    out.append(f"I do not know the place {place!r}")
                 break
-            out.append(f"there is no {word!r} in this world")
+            out.append(f"there is no {place!r} in this world")
             break
     names = [ph.normalise(n).strip() for lm in scene.landmarks for n in lm.names()]
     for m in _LETTERED.finditer(masked):  # "parking lot C" where the lots are A and B

@@ -39,7 +39,7 @@ FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:\d+|one|two|three|
 KEEP_SOME = re.compile(r"\b(?:keep|leave)\s+(?:just |only |me )?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
-_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and),?\s+)?(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats"
+_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question),?\s+)?(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats"
                              r"|is anything|is any|are any|is something|has anything|have any|do the)\b"
                              # "the gates, where are they": the thing first, the question after it
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
@@ -135,8 +135,10 @@ _CONTRAST = re.compile(
     r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
     re.IGNORECASE,
 )
-# Where a contrast clause ends: the next punctuation, or a dash between clauses.
-_CONTRAST_END = re.compile(r"\s+[-\u2013\u2014]\s+|[,.;!?]|$")
+# Where a contrast clause ends: the next punctuation, a dash between clauses, or the colour the
+# request ends on ("paint every car except the ego blue": the ego is excepted, blue is asked).
+_CONTRAST_END = re.compile(r"\s+[-\u2013\u2014]\s+|[,.;!?]|$"
+                           rf"|\s+(?:(?:to|in)\s+)?(?:{'|'.join(COLOURS)})\b(?=(?:\s+(?:please|pls|too|now|instead))?\s*[.!?]*\s*$)")
 
 
 def _contrasts(text: str) -> list[tuple[int, int, int]]:

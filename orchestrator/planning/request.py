@@ -18,6 +18,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.conditions import condition
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
 from drivetwin.orchestrator.planning.rules.reading import FIRST_PERSON_EGO, find_lane, find_place, without_beneficiaries
 from drivetwin.orchestrator.planning.rules.spelling import repair
@@ -58,6 +59,8 @@ class Request:
 def read_request(prompt: str, scene: Scene) -> Request:
     """The request's signals: polarity, categories, numbers, place, lane, state and mood."""
     repaired = repair(prompt, scene).text
+    given = condition(repaired, scene)  # "if there's a bus, paint it yellow": the bus there, or a question
+    repaired = given.request if given is not None and given.met else repaired
     low = ph.normalise(without_reason(repaired)).strip()
     place = _named_place(scene, low)
     masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
@@ -67,7 +70,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     # A lane is named by its id, or by a direction said of a lane ("the westbound lane"), not by a
     # compass word alone ("2 m east", "facing north").
     lane = find_lane(scene, masked) if _LANE_WORDS.search(masked) else None
-    question = asks(low)
+    question = asks(low) or (given is not None and not given.met)  # with no bus, whether there is one
     polarity: Literal["add", "remove"] | None = (
         "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None
     )
@@ -126,7 +129,12 @@ def _is_reference(text: str, start: int) -> bool:
     before = text[:start].split()[-1:]
     if re.match(r"[\d.,e+-]*\s*(m|metres?|meters?|km|kph|mph|degrees?|deg|seconds?|s)\b", text[start:]):
         return False  # "the truck 8 m ahead": an amount with its unit
-    return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in ("lot", "no"))
+    return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in _LABELS)
+
+
+# Words a number after names rather than counts: "lot 3", "condition 11", "take 2", "step 4".
+_LABELS = frozenset(["lot", "no", "condition", "case", "step", "scenario", "test", "run", "take", "item", "row",
+                     "shot", "scene", "variant", "trial", "phase", "version", "iteration"])
 
 
 __all__ = ["Request", "read_request"]

@@ -17,6 +17,7 @@ import time
 from typing import Any
 
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, Reading, TraceStep
+from drivetwin.orchestrator.planning.intent import asks
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, repair
@@ -107,7 +108,7 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
     manoeuvre = any(words.search(low) for kind, words in _COMPILED[1:])
     if _ADDING.match(low) and not trigger:
         return False
-    if re.match(r"\s*(what|which|where|how|is|are|does|do)\b", low) or low.rstrip().endswith("?"):
+    if re.match(r"\s*(what|which|where|how|is|are|does|do)\b", low) or low.rstrip().endswith("?") or asks(low):
         return False
     light = bool(_LIGHT_WORDS.search(re.sub(r"\bstreet lights?\b", " ", low))) and not re.search(
         r"\b(paint|colou?r|recolou?r|move|remove|add|put|turn (it )?(on|off))\w*\b", low)

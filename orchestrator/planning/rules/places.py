@@ -18,7 +18,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.reading import Reading
 from drivetwin.worlds.scene import AssetInstance, Landmark, Scene
-from drivetwin.worlds.surface import point_in_polygon
+from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon
 
 RELATIONS = (
     (("in front of", "ahead of", "front of", "infront", "in front"), "in_front_of"),
@@ -257,6 +257,63 @@ def location(
     if metres is not None and found["relation"] != "at":
         found["distance"] = metres
     return found
+
+
+# How far into a driveway from the road a closure stands, and "east of the crossroads" from its centre.
+DRIVEWAY_IN_M = 4.5
+DRIVEWAY_WIDTH_M = 7.0
+BEYOND_PLACE_M = 15.0
+_COMPASS_OF = re.compile(r"\b(north|south|east|west)\s+of\b")
+_UNIT = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
+
+
+@dataclass(frozen=True)
+class CrossSection:
+    """Where a line closing a road or driveway stands: its middle, the way it runs, how wide it is."""
+
+    x: float
+    y: float
+    heading_deg: float
+    width: float
+
+
+def cross_section(r: Reading, scene: Scene, where: dict[str, Any] | None) -> CrossSection | None:
+    """The road (or a lot's driveway) a closure at `where` crosses: across every lane of the road
+    there, or across the driveway just inside a lot's entrance; None where no road is near."""
+    target = str((where or {}).get("target") or "")
+    place = scene.landmark(target) if target else None
+    entrance = scene.landmark(f"{place.name} entrance") if place is not None and place.kind == "area" else None
+    if place is not None and any(lm.kind == "area" and place.name.startswith(f"{lm.name} ") for lm in scene.landmarks):
+        entrance = place  # "the lot B driveway" is the entrance's
+    if entrance is not None:
+        heading = entrance.heading
+        x, y = entrance.position
+        return CrossSection(round(x - DRIVEWAY_IN_M * math.cos(heading), 2), round(y - DRIVEWAY_IN_M * math.sin(heading), 2),
+                            round(math.degrees(heading) + 90.0, 1), DRIVEWAY_WIDTH_M)
+    lane = scene.roads.lane(r.lane) if r.lane else None
+    if place is not None:
+        x, y = place.position
+    elif lane is not None:
+        x, y = lane.centreline[len(lane.centreline) // 2]
+    else:
+        return None
+    way = _COMPASS_OF.search(r.masked)
+    if way is not None:  # "east of the crossroads": past its edge that way
+        dx, dy = _UNIT[way.group(1)]
+        x, y = x + BEYOND_PLACE_M * dx, y + BEYOND_PLACE_M * dy
+    elif place is not None and place.kind == "area":
+        return None  # the middle of a junction or a lot is no road's cross-section
+    if lane is None:
+        lane = min(scene.roads.lanes, key=lambda ln: nearest_on_polyline(x, y, ln.centreline).distance, default=None)
+    if lane is None:
+        return None
+    road = [ln for ln in scene.roads.lanes if ln.road == lane.road] if lane.road else [lane]
+    feet = [nearest_on_polyline(x, y, ln.centreline) for ln in road]
+    near = nearest_on_polyline(x, y, lane.centreline)
+    kept = [(ln, f) for ln, f in zip(road, feet, strict=True) if math.dist((f.x, f.y), (near.x, near.y)) <= ln.width + lane.width]
+    mx = sum(f.x for _, f in kept) / len(kept)
+    my = sum(f.y for _, f in kept) / len(kept)
+    return CrossSection(round(mx, 2), round(my, 2), round(math.degrees(near.heading) + 90.0, 1), sum(ln.width for ln, _ in kept))
 
 
 _SIDE_OF = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z][a-z ]*)")

@@ -22,6 +22,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.conditions import condition
 from drivetwin.orchestrator.planning.rules.edits import (
     FINAL_COUNT,
     behaviour_kind,
@@ -33,7 +34,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     remove,
 )
 from drivetwin.orchestrator.planning.rules.environment import environment, lights
-from drivetwin.orchestrator.planning.rules.places import Notes, location, said_a_place
+from drivetwin.orchestrator.planning.rules.places import Notes, cross_section, location, said_a_place
 from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
 from drivetwin.orchestrator.planning.rules.repeat import repeat, repeats
@@ -123,7 +124,7 @@ _CLOSE_ROAD = re.compile(r"^\s*(?:please )?(?:close|block|shut|seal)(?: off)? (?
 _WITH_LAYOUT = re.compile(r"\b(?:with|using|by putting|by placing) (?:a |an )?(?:[\w-]+ )?(?:row|line|ring|circle|wall|grid) of\b")
 
 # A layout verb with its material after "with" ("line the road to the gate with lamps").
-_LAYOUT_VERB_WITH = re.compile(r"^\s*(?:please )?(?:line|ring|surround|encircle|circle|edge|border|fence|flank)\b.*?\bwith\b")
+_LAYOUT_VERB_WITH = re.compile(r"^\s*(?:please )?(?:line|ring|surround|encircle|circle|edge|border|fence|flank|cordon|enclose|rope|seal|box|mark)\b.*?\bwith\b")
 
 # A wish said in the negative ("I don't want the bench any more", "we no longer need cones",
 # "I'd rather not have a bus"): the thing should go, whatever the verb.
@@ -278,7 +279,10 @@ class RulePlanner:
         for fix in repaired.repairs:
             notes.guess(f"spelling {fix}")
         places = tuple(n.lower() for lm in scene.landmarks for n in lm.names())
-        clauses = _clauses(repaired.text, places)
+        text = repaired.text
+        if (given := condition(text, scene)) is not None:  # "if there's a bus, paint it yellow"
+            text = given.request if given.met else given.question  # no bus: whether there is one
+        clauses = _clauses(text, places)
         if not clauses:
             raise PlanningError("the prompt has no request in it")
         spelling = list(notes.guesses)
@@ -400,7 +404,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         if removed is not None:
             return removed
     # "turn the lamps on", and a state wished for: "the street lights must be on", "lamps should be lit"
-    switch = re.search(r"\b(turn|switch|put|flick|make)\b.*\b(on|off)\b|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit)\b", r.low)
+    switch = re.search(r"\b(turn|switch|put|flick|make)\b.*\b(on|off)\b|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit)\b"
+                       r"|\b((?:street\s?)?lights?|(?:street\s?)?lamps?)\s+(on|off)\s*[.!]*\s*$", r.low)  # "street lights on."
     if switch and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
         if lights(r) is not None:
             return environment(r, scene.environment)
@@ -414,12 +419,13 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         env = environment(r, scene.environment)
         if env:
             return env
-    if (r.has(lx.BLOCK_WORDS) or _CLOSE_ROAD.search(r.low)) and not r.ids:
+    closure = _ACROSS_ROAD.search(r.low) and r.mentions and all(_closes_roads(m.category) for m in r.mentions)
+    if (r.has(lx.BLOCK_WORDS) or _CLOSE_ROAD.search(r.low) or closure) and not r.ids:
         return [_block(r, scene, memory, notes)]
     instrument = _WITH_LAYOUT.search(r.low) or _LAYOUT_VERB_WITH.search(r.low)
-    if instrument is not None and any(m.start > instrument.start() for m in r.mentions):
+    if instrument is not None and any(m.start >= instrument.end() for m in r.mentions):
         # "stop cars driving in through the gate with a row of bollards": the row is what to build
-        laid = [m for m in r.mentions if m.start > instrument.start()]
+        laid = [m for m in r.mentions if m.start >= instrument.end()]
         return [_arrange(replace(r, mentions=laid), scene, memory, notes)]
     strict_add = r.has(tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r)
     mention = r.mentions[0] if r.mentions else None
@@ -467,6 +473,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         env = environment(r, scene.environment)
         return env or None
     laid_out = (r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
+                or _AROUND_BY.search(r.low) is not None  # "the fountain should be ringed by six benches"
                 or (mention.plural and r.has(("along",)))  # "trees along one side of lot A"
                 or (mention.plural and nb.spacing_said(r.low) is not None))  # "four cones 8 m apart": a line
     moving = behaviour_kind(r, catalog()[mention.category]) not in (None, "parked")  # a row may be parked
@@ -551,14 +558,38 @@ def _beside_last(scene: Scene, memory: Memory) -> dict[str, Any] | None:
 
 
 def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
-    """A line of barriers (or the named things) across the road at the place named."""
-    layout = [m.category for m in r.mentions if catalog()[m.category].placement != "sidewalk"] or ["road_barrier"]
+    """A line of barriers (or the named things) across the road, or the lot's driveway, at the
+    place named: every lane of the road there ("close Main Street east of the crossroads")."""
+    # What is kept out ("closed to traffic") is not what the line is made of.
+    layout = [m for m in r.mentions if _closes_roads(m.category)]
+    kinds = [m.category for m in layout] or ["road_barrier"]
     where = location(r, scene, memory, notes) or _fallback_place(memory)
-    args: dict[str, Any] = {"categories": layout[:4], "shape": "line", "location": where}
-    count = find_count(r, r.mentions[0]) if r.mentions else None
+    args: dict[str, Any] = {"categories": kinds[:4], "shape": "line", "location": where}
+    count = find_count(r, layout[0]) if layout else None
+    across = cross_section(r, scene, where) if where.get("relation") not in ("absolute", "in_front_of", "behind") else None
+    if across is not None:
+        spacing = CLOSURE_SPACING_M.get(kinds[0], CLOSURE_SPACING_DEFAULT_M)
+        count = count or max(2, round(across.width / spacing))
+        args["location"] = {"relation": "absolute", "x": across.x, "y": across.y}
+        args["heading_deg"] = across.heading_deg
+        args["spacing"] = round(min(across.width / count, spacing), 2)  # every lane covered, none overhung
     if count:
         args["count"] = count
     return ToolCall(tool="arrange_assets", args=args)
+
+
+def _closes_roads(category: str) -> bool:
+    """Whether a line of these can close a road: a prop that may stand in a lane (cones, barriers)."""
+    kind = catalog()[category]
+    return kind.motion == "prop" and kind.placement != "sidewalk"
+
+
+# A line laid across the road, or one meant to stop traffic: a closure ("5 cones across the street").
+_ACROSS_ROAD = re.compile(r"\b(?:across|over|spanning) (?:the )?(?:whole )?(?:road|street|carriageway)\b"
+                          r"|\bso (?:that )?(?:nobody|no one|no cars?|nothing|no traffic) can (?:drive|get|pass|go)\b")
+# Spacing of a closure's line: barriers end to end, anything smaller (cones, bollards) closer.
+CLOSURE_SPACING_M = {"road_barrier": 2.5}
+CLOSURE_SPACING_DEFAULT_M = 1.5
 
 
 # "a grid with 3 columns"; "colum" is how the word is often typed.
@@ -575,6 +606,8 @@ _WITH = re.compile(r"\bwith\s+(?:[\w-]+\s+){0,3}$")
 GRID_MIN = 4
 # What a ring is laid around comes after these: "around the rubble", "round the tree", "surround the bin".
 _AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing))\b")
+# The passive names the layout after "by" and what it surrounds before: "the fountain ringed by six benches".
+_AROUND_BY = re.compile(r"\b(?:ring|encircl|surround|circl)ed\s+(?:all\s+round\s+)?by\b")
 _VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
 
 
@@ -595,8 +628,11 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     r = replace(r, mentions=mentions)
     around = _AROUND.search(r.low)
     around_pos = around.start() if around else -1
+    by = _AROUND_BY.search(r.low)
 
     def laid_out(m: ph.Mention) -> bool:  # "around the rubble with barriers", "surround the bin with cones"
+        if by is not None:
+            return m.start > by.start()
         return around_pos < 0 or m.start < around_pos or bool(_WITH.search(r.low[: m.start]))
 
     layout = [m.category for m in mentions if laid_out(m)] or [mentions[0].category]
@@ -732,6 +768,17 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     colour = next((c for c in COLOURS if r.has((c,))), None)
     if colour is not None:
         args["colour"] = colour
+    sides = _EACH_SIDE.search(r.low) if where is not None and where.get("relation") in ("at", "next_to") else None
+    calls = [ToolCall(tool="add_asset", args=args)]
+    if sides is not None and where is not None and where.get("target"):  # "a bin on each side of the door": one left, one right
+        near = {"target": where["target"], "distance": where.get("distance", SIDE_GAP_M)}
+        calls = [ToolCall(tool="add_asset", args={**args, "location": {"relation": side, **near}}) for side in ("left_of", "right_of")]
+        count *= 2
     notes.adding(scene, mention.category, count)
     notes.named, notes.subject = notes.subject, notes.coming[-count:]  # "add a car, make it red": "it" is the new car
-    return [ToolCall(tool="add_asset", args=args)]
+    return calls
+
+
+# "On each side of", "either side of", "flanking": one lot on the left of the place and one on its right.
+_EACH_SIDE = re.compile(r"\b(?:(?:on )?(?:each|either|both) sides?(?: of)?|flank(?:ing|ed)?|to (?:the )?left and (?:the )?right of)\b")
+SIDE_GAP_M = 2.0

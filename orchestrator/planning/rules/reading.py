@@ -211,7 +211,8 @@ def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
 _PERCEPTION_TASK = re.compile(r"\s*(?:detection|detector|tracking|recognition|classification|perception)\b")
 # "behind us", "ahead of me": said from the driver's seat, the first person is the ego vehicle.
 FIRST_PERSON_EGO = re.compile(
-    r"\b(?:behind|ahead of|in front of|front of|beside|next to|near|past|alongside|towards?|from|around|at) (us|me)\b"
+    r"(?:\b(?:behind|ahead of|in front of|front of|beside|next to|near|past|alongside|towards?|from|around|at) "
+    r"|\b(?:am|are) (?=(?:i|we) (?:in|on|driving|parked|heading|going|sitting|stopped)\b))(us|me|i|we)\b"  # "which lane am I in"
 )
 
 

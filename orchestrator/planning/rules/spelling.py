@@ -90,6 +90,10 @@ _REPAIRABLE_GRAMMAR = (
     "please",
     "another",
     "colour",
+    "every",  # scope words: "evry vehicle exept the ego" is not "very vehicle"
+    "everything",
+    "except",
+    "without",
 )
 _SUFFIXES = ("ies", "es", "s", "ing", "ed", "er", "ers", "ly", "ward", "wards", "'s")
 
@@ -241,9 +245,16 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
 def _closest(low: str, close: list[str], targets: tuple[str, ...]) -> str | None:
     # difflib's pick, unless a target fewer slips away exists ("bycicle" is "bicycle", not "circle").
     by_edits = _nearest_by_edits(low, targets)
-    if by_edits is not None and (not close or edits(low, by_edits) < edits(low, close[0])):
+    if by_edits is not None and (not close or edits(low, by_edits) < edits(low, close[0])
+                                 or (edits(low, by_edits) == edits(low, close[0]) and _first_kept(low, by_edits, close[0]))):
         return by_edits
     return close[0] if close else None
+
+
+def _first_kept(low: str, a: str, b: str) -> bool:
+    """Whether `a` keeps the slip's first letter and `b` does not: a first letter is rarely the slip
+    ("evry" is "every", not "very")."""
+    return a[0] == low[0] != b[0]
 
 
 def _allowed_edits(length: int) -> int:
@@ -259,9 +270,10 @@ def _nearest_by_edits(low: str, targets: tuple[str, ...]) -> str | None:
         return swapped[0] if len(swapped) == 1 and len(low) >= MIN_REPAIR_LEN else None
     scored = [(edits(low, t), t) for t in targets if abs(len(t) - len(low)) <= allowed]
     best = sorted((d, t) for d, t in scored if d <= allowed)
-    if not best or (len(best) > 1 and best[1][0] == best[0][0]):
-        return None
-    return best[0][1]
+    tied = [t for d, t in best if d == best[0][0]] if best else []
+    if len(tied) > 1:  # equally near: the one that keeps the first letter, if only one does
+        tied = [t for t in tied if t[0] == low[0]]
+    return tied[0] if len(tied) == 1 else None
 
 
 def edits(a: str, b: str) -> int:
