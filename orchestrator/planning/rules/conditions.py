@@ -1,16 +1,20 @@
-"""A request on a condition about the scene: "if there's a bus, paint it yellow".
+"""Requests that say first what they are about, restated before they are read.
 
-Read the same way by the rule planner (which plans the request when the condition holds, and
-otherwise looks the thing up, changing nothing) and by the plan-versus-request check (which
-holds a plan to the request when it holds, and otherwise to a question).
+A condition on the scene ("if there's a bus, paint it yellow") is read the same way by the rule
+planner (which plans the request when the condition holds, and otherwise looks the thing up,
+changing nothing) and by the plan-versus-request check (which holds a plan to the request when
+it holds, and otherwise to a question). A topic said first and pointed back at ("the tree
+which is near the fountain, move it 3 m north") names the one thing the rest is about.
 """
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.reading import find_place
 from drivetwin.worlds.scene import Scene
 
 # A condition on what is there: "if there's a bus (anywhere), paint it yellow".
@@ -46,4 +50,31 @@ def condition(text: str, scene: Scene) -> Condition | None:
     return Condition(named[0].category, there > 0, request, f"are there any {thing}?")
 
 
-__all__ = ["Condition", "condition"]
+
+# A thing said first with where it is, then pointed back at: "Tree which is near fountain, that
+# one keep near the door", "the tree that's by the fountain, move it 3 m north".
+_TOPIC_FIRST = re.compile(r"^\s*(?:the\s+|that\s+|this\s+)?(?P<thing>[a-z][a-z -]*?)\s+(?:(?:which|that|who)(?:'s|\s+is|\s+stands?|\s+sits?)\s+)?"
+                          r"(?:near|by|next to|beside|close to|at|in)\s+(?P<place>[^,;]+?)\s*[,;:-]+\s*(?P<rest>.*\b(?:it|that one|this one)\b.*)$",
+                          re.IGNORECASE)
+_POINTING = re.compile(r"\b(?:that one|this one|it)\b")
+
+
+def topic_first(text: str, scene: Scene) -> str | None:
+    """The request with the thing it said first, where it said it is, put for the word pointing
+    back at it ("move tree_2 3 m north"); None when it does not open so."""
+    said = _TOPIC_FIRST.match(text)
+    if said is None:
+        return None
+    named = ph.find_categories(f" {ph.normalise(said.group('thing'))} ")
+    place = find_place(scene, f" {ph.normalise(said.group('place'))} ")
+    landmark = scene.landmark(place[0]) if place is not None else None
+    if len(named) != 1 or landmark is None:
+        return None
+    there = [a for a in scene.assets if a.category == named[0].category]
+    if not there:
+        return None
+    nearest = min(there, key=lambda a: math.dist((a.pose.x, a.pose.y), landmark.position))
+    return _POINTING.sub(nearest.id, said.group("rest"), count=1)
+
+
+__all__ = ["Condition", "condition", "topic_first"]

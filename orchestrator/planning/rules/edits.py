@@ -320,10 +320,15 @@ def ph_error(message: str) -> Exception:
     return PlanningError(message)
 
 
+# On foot over a road or a crossing ("walking across the north crosswalk", "hurrying over the road").
+_GOING_ACROSS = re.compile(r"\b(?:walk|run|hurr|dash|dart|jog|head|go|stroll|step|wander)\w*\s+(?:across|over)\s+(?:the\s+)?"
+                           r"(?:road|street|crossing|crosswalk|zebra|junction|intersection|§)")
+
+
 def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
     """The behaviour a clause names, if it suits an asset of `category`."""
     for kind in ("jaywalk", "circle", "cross_road", "drive_lane", "parked"):
-        if not r.has(lx.BEHAVIOUR_WORDS[kind]):
+        if not r.has(lx.BEHAVIOUR_WORDS[kind]) and not (kind == "cross_road" and _GOING_ACROSS.search(r.masked)):
             continue
         if category is not None and (
             (kind in ("jaywalk", "cross_road") and category.motion != "walker")

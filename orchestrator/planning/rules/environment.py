@@ -29,10 +29,14 @@ _DENIED = r"\b(?:no|not|don't|do not|without|never|get rid of|stop|end|enough) "
 _LAMP_CONTEXT = ("street", "streets", "lamps", "headlights", "lights", "light up", "lit", "switch", "turn")
 
 
+# The sun said of the time, not the weather: "before the sun goes down", "as the sun rises".
+_SUN_MOVING = re.compile(r"\bsun\s+(?:goes|going|has gone|is going|went|sets|setting|is setting|rises|rising|is rising|comes up|coming up|up|down)\b")
+
+
 def weather(r: Reading) -> ToolCall | None:
     """The weather a clause asks for, with its intensity, or None."""
     for kind in _WEATHER_ORDER:
-        if r.has(lx.WEATHER_WORDS[kind]):
+        if r.has(lx.WEATHER_WORDS[kind]) and not (kind == "clear" and _SUN_MOVING.search(r.low) and not r.has(("sunny", "sky", "clear"))):
             if (
                 kind == "clear"
                 and r.has(("clear the", "clear away", "clear out"))
@@ -52,10 +56,17 @@ def weather(r: Reading) -> ToolCall | None:
                 light = denied is not None or (r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT)))
                 args["intensity"] = HEAVY_INTENSITY if heavy else LIGHT_INTENSITY if light else DEFAULT_INTENSITY
                 said = _INTENSITY.search(r.low)
+                bare = re.search(rf"\b(?:{words})\s*(?:=|:)?\s*(0?\.\d+|1\.0*|0|1)(?![\d.:]|\s*(?:m\b|%|am\b|pm\b|h\b))", r.low)
                 if said is not None:  # "fog at intensity 0.7", "rain at 40 %": the tool refuses what is past 1
                     args["intensity"] = parse(said.group(1) or said.group(2)) / (100 if said.group(3) else 1)
+                elif bare is not None:  # "rain 0.6; time 21:00": a strength written after the weather
+                    args["intensity"] = float(bare.group(1))
             return ToolCall(tool="set_weather", args=args)
     return None
+
+
+# The time just before dark, said by what comes after it.
+_BEFORE_DARK = re.compile(r"\b(?:just |right )?before (?:the )?(?:sun (?:goes|has gone|is going) down|sun sets|sunset|sundown|dark|nightfall)\b")
 
 
 def time_of_day(r: Reading) -> ToolCall | None:
@@ -65,6 +76,8 @@ def time_of_day(r: Reading) -> ToolCall | None:
         return ToolCall(tool="set_time_of_day", args={"time": str(said)})  # the tool refuses "25:70"
     if r.has(("lunchtime", "lunch time", "lunch")):
         return ToolCall(tool="set_time_of_day", args={"time": "12:30"})
+    if _BEFORE_DARK.search(r.low):  # "the last light before the sun goes down": not yet night
+        return ToolCall(tool="set_time_of_day", args={"time": "sunset"})
     for words, preset in lx.TIME_PRESETS:
         if r.has(words):
             return ToolCall(tool="set_time_of_day", args={"time": preset})

@@ -22,7 +22,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.conditions import condition
+from drivetwin.orchestrator.planning.rules.conditions import condition, topic_first
 from drivetwin.orchestrator.planning.rules.edits import (
     FINAL_COUNT,
     behaviour_kind,
@@ -119,7 +119,8 @@ _STRICT_ADD = (
 )
 
 # Closing a road by its name or kind ("close Main Street at the east gate", "shut the lane").
-_CLOSE_ROAD = re.compile(r"^\s*(?:please )?(?:close|block|shut|seal)(?: off)? (?:the )?(?:[\w-]+ )?(?:road|street|lane|avenue|drive)\b")
+_CLOSE_ROAD = re.compile(r"^\s*(?:please )?(?:close|block|shut|seal)(?: off)? (?:the )?(?:[\w-]+ ){0,3}?"
+                         r"(?:road|street|lane|avenue|drive|driveway|entrance|access road|car park|parking lot|lot [a-z0-9])\b")
 # A layout named as the means of a request ("... with a row of bollards", "using a line of cones").
 _WITH_LAYOUT = re.compile(r"\b(?:with|using|by putting|by placing) (?:a |an )?(?:[\w-]+ )?(?:row|line|ring|circle|wall|grid) of\b")
 
@@ -282,6 +283,7 @@ class RulePlanner:
         text = repaired.text
         if (given := condition(text, scene)) is not None:  # "if there's a bus, paint it yellow"
             text = given.request if given.met else given.question  # no bus: whether there is one
+        text = topic_first(text, scene) or text  # "the tree near the fountain, move it 3 m north"
         clauses = _clauses(text, places)
         if not clauses:
             raise PlanningError("the prompt has no request in it")
@@ -365,11 +367,14 @@ def _is_question(r: Reading, asked: bool) -> bool:
 
 
 # A clause that only names things already there ("the cars...", "that bench,"): the topic of the next.
-_TOPIC = re.compile(r"\s*(?:(?:the|those|these|that|this|our|my|all|both|of|and)\s+)*(?:§\s*)+[.,!\s]*")
+# It may say which ones by where they are: "the tree which is near the fountain, ...".
+_TOPIC = re.compile(r"\s*(?:(?:the|those|these|that|this|our|my|all|both|of|and)\s+)*(?:§\s*)+"
+                    r"(?:(?:which|that|who)(?:'s|\s+is|\s+are|\s+stands?|\s+sits?)?\s+(?:near|by|next to|at|in|on|beside|"
+                    r"close to|behind|in front of)\s+(?:the\s+)?(?:§\s*)+)?[.,!\s]*")
 
 
 def _without_mentions(r: Reading) -> str:
-    out = r.low
+    out = r.masked  # the places blanked too, the same length as r.low
     for m in r.mentions:
         out = out[: m.start] + "§" * (m.end - m.start) + out[m.end :]
     return out
@@ -399,7 +404,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     # The removal words the plan check reads polarity by ("take it out", "without the bin") count too.
     taken_away = bool(REMOVE_WORDS.search(r.low.strip()))
     fewer = bool(FEWER_WORDS.search(r.low))
-    if r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or fewer or _NEGATED_WISH.search(r.low) or taken_away:
+    filled = _FILL_WITH.search(r.low) is not None  # "fill the empty half of lot B with cars" adds
+    if (r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or fewer or _NEGATED_WISH.search(r.low) or taken_away) and not filled:
         removed = remove(r, scene, memory, notes)
         if removed is not None:
             return removed
@@ -427,7 +433,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         # "stop cars driving in through the gate with a row of bollards": the row is what to build
         laid = [m for m in r.mentions if m.start >= instrument.end()]
         return [_arrange(replace(r, mentions=laid), scene, memory, notes)]
-    strict_add = r.has(tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r)
+    strict_add = r.has(tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r) or filled
     mention = r.mentions[0] if r.mentions else None
     # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
     present = mention is not None and scene.count(mention.category) >= (2 if mention.plural else 1)
@@ -482,6 +488,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     return _add(r, scene, memory, notes)
 
 
+# Filling a place with things: an addition, whatever the place is called ("the empty half").
+_FILL_WITH = re.compile(r"\bfill(?:s|ing)?\s+(?:up\s+)?(?!.*\b(?:remove|delete|clear|take)\b).*\bwith\b")
 # A place wished busier ("make the street busier", "liven up the quad"): more people or traffic.
 _LIVELIER = re.compile(r"\b(?:busier|more busy|livelier|more lively|liven (?:it |\w+ )?up|more going on|more life)\b")
 
