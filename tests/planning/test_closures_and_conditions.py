@@ -94,6 +94,14 @@ def test_a_topic_said_first_is_what_it_points_back_at(session, campus, prompt, m
     assert changed == [moved]
 
 
+def test_a_request_that_opens_with_a_verb_is_no_topic(session, campus):
+    report = session.submit("could we have the bench sitting at the fountain instead, and paint it red")
+    assert report.ok, report.error
+    bench = session.scene.asset("bench_1")
+    assert bench is not None and bench.pose != campus.asset("bench_1").pose
+    assert bench.appearance != campus.asset("bench_1").appearance
+
+
 def test_each_side_of_a_door_gets_one(session, campus):
     report = session.submit("put a potted tree on either side of the Engineering Hall entrance")
     assert report.ok, report.error

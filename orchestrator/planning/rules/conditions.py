@@ -53,7 +53,7 @@ def condition(text: str, scene: Scene) -> Condition | None:
 
 # A thing said first with where it is, then pointed back at: "Tree which is near fountain, that
 # one keep near the door", "the tree that's by the fountain, move it 3 m north".
-_TOPIC_FIRST = re.compile(r"^\s*(?:the\s+|that\s+|this\s+)?(?P<thing>[a-z][a-z -]*?)\s+(?:(?:which|that|who)(?:'s|\s+is|\s+stands?|\s+sits?)\s+)?"
+_TOPIC_FIRST = re.compile(r"^\s*(?:the\s+|that\s+|this\s+)?(?P<thing>[a-z][a-z-]*(?:\s+[a-z][a-z-]*){0,2}?)\s+(?:(?:which|that|who)(?:'s|\s+is|\s+stands?|\s+sits?)\s+)?"
                           r"(?:near|by|next to|beside|close to|at|in)\s+(?P<place>[^,;]+?)\s*[,;:-]+\s*(?P<rest>.*\b(?:it|that one|this one)\b.*)$",
                           re.IGNORECASE)
 _POINTING = re.compile(r"\b(?:that one|this one|it)\b")
