@@ -124,6 +124,16 @@ def test_a_ring_said_in_the_passive_surrounds_the_place(session, campus):
     assert math.dist((cx, cy), session.scene.landmark("fountain").position) < 1.5
 
 
+def test_what_a_ring_surrounds_is_its_centre_not_part_of_it(session, campus):
+    report = session.submit("encircle the hydrant with five bollards")
+    assert report.ok, report.error
+    posts = _added(session, campus, "bollard")
+    hydrant = session.scene.asset("fire_hydrant_1")
+    assert len(posts) == 5 and hydrant is not None and session.scene.count("fire_hydrant") == campus.count("fire_hydrant")
+    centre = (sum(a.pose.x for a in posts) / 5, sum(a.pose.y for a in posts) / 5)
+    assert math.dist(centre, (hydrant.pose.x, hydrant.pose.y)) < 1.5
+
+
 def test_what_is_cordoned_off_is_not_laid_in_the_ring(session, campus):
     assert session.submit("dump some rubble at the junction").ok
     rubble = session.scene.count("cement_rubble")

@@ -429,9 +429,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if (r.has(lx.BLOCK_WORDS) or _CLOSE_ROAD.search(r.low) or closure) and not r.ids:
         return [_block(r, scene, memory, notes)]
     instrument = _WITH_LAYOUT.search(r.low) or _LAYOUT_VERB_WITH.search(r.low)
-    if instrument is not None and any(m.start >= instrument.end() for m in r.mentions):
+    if instrument is not None and any(m.start > instrument.start() for m in r.mentions):
         # "stop cars driving in through the gate with a row of bollards": the row is what to build
-        laid = [m for m in r.mentions if m.start >= instrument.end()]
+        laid = [m for m in r.mentions if m.start > instrument.start()]
         return [_arrange(replace(r, mentions=laid), scene, memory, notes)]
     strict_add = r.has(tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r) or filled
     mention = r.mentions[0] if r.mentions else None
@@ -612,8 +612,9 @@ _SAME_AGAIN = re.compile(r"\b(?:same (?:again|as before|thing)|the same but|agai
 _WITH = re.compile(r"\bwith\s+(?:[\w-]+\s+){0,3}$")
 # The fewest things a vaguely counted grid holds: two rows of two.
 GRID_MIN = 4
-# What a ring is laid around comes after these: "around the rubble", "round the tree", "surround the bin".
-_AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing))\b")
+# What a ring is laid around comes after these: "around the rubble", "round the tree", "surround the bin",
+# "cordon the debris off (with cones)".
+_AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)|cordon|enclose|rope|fence|seal|box)\b")
 # The passive names the layout after "by" and what it surrounds before: "the fountain ringed by six benches".
 _AROUND_BY = re.compile(r"\b(?:ring|encircl|surround|circl)ed\s+(?:all\s+round\s+)?by\b")
 _VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
