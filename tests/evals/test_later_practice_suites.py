@@ -1,4 +1,4 @@
-"""The later practice suites (practice2 to practice8): valid, big enough in every cell, written from
+"""The later practice suites (practice2 to practice9): valid, big enough in every cell, written from
 their sources, and passable. Each was written to its own brief's minimums."""
 
 from __future__ import annotations
@@ -18,6 +18,7 @@ from drivetwin.evals import (
     practice6_source,
     practice7_source,
     practice8_source,
+    practice9_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -52,6 +53,8 @@ BRIEFS: dict[str, Brief] = {
     "practice7": Brief(200, 6, 6, practice7_source, multi_turn=15, planned=6, compound=15,
                        weighted_grades=("vague", "indirect", "erroneous")),
     "practice8": Brief(200, 6, 6, practice8_source, multi_turn=15, planned=6, compound=15,
+                       weighted_grades=("vague", "indirect", "erroneous")),
+    "practice9": Brief(200, 6, 6, practice9_source, multi_turn=15, planned=6, compound=15,
                        weighted_grades=("vague", "indirect", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
