@@ -56,6 +56,7 @@ from drivetwin.orchestrator.planning.coverage import (
     partial_removal,
     unknown_places,
     unknown_things,
+    unnamed_compass_places,
     unpointed,
     wrong_direction,
 )
@@ -67,7 +68,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, kept_at
-from drivetwin.orchestrator.planning.rules.numbers import numbers_in, spelt_measures
+from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import says_other_place
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
@@ -87,8 +88,9 @@ PLACE_RADIUS_M = 30.0
 DESCRIPTION_SCORE, DESCRIPTION_MARGIN = 0.45, 0.08
 # Tolerance when matching a number of the request with one of the plan (rounding, unit maths).
 NUMBER_TOLERANCE = 0.02
-# Unit conversions a planner may apply to a number: km/h and mph to m/s, feet to metres, per cent.
-UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704, 0.3048, 0.01)
+# Unit conversions a planner may apply to a number: km/h and mph to m/s, feet, yards and car lengths to
+# metres, per cent.
+UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704, 0.3048, 0.01, YARD_M, CAR_LENGTH_M)
 QUERY_TOOLS = tuple(sorted(SEARCH_TOOLS))
 # Workers that write the storyboard: their readings are the scenario reader's to judge.
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
@@ -278,6 +280,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     if request.place is None and request.lane is None and (strays := unpointed(request.masked, scope, scene)):
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
     out += unknown_places(request.masked, effect.calls, scene)
+    out += unnamed_compass_places(request.low, scene)
     out += unknown_things(request.masked, effect.calls, scene)
     out += excepted_touched(request.excepted, _kinds_named(request), scope, scene)
     return out

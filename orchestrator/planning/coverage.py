@@ -23,11 +23,13 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
 from drivetwin.orchestrator.planning.rules.places import side_of
 from drivetwin.orchestrator.planning.rules.reading import find_place, used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import compass_of
+from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
 
 # Words before a category that point at one already in the scene ("the SUV", "those cones").
@@ -200,6 +202,10 @@ def _in_background(masked: str, at: int) -> bool:
                for w in _BACKGROUND.finditer(masked[:at]))
 
 
+# Workers that set or tell the lights setting, which is what the lamps' being on or off is.
+_LIGHTING_TOOLS = ("set_lighting", "describe_environment")
+
+
 def missing_categories(categories: Iterable[str], scope: Scope, scene: Scene) -> list[str]:
     """Categories the request names that the plan neither touches nor names in any call."""
     said = " ".join(str(c.args) for c in scope.calls).lower()
@@ -208,6 +214,8 @@ def missing_categories(categories: Iterable[str], scope: Scope, scene: Scene) ->
     for category in sorted(categories):
         if any(a.category == category for a in scope.touched) or category in kinds:
             continue
+        if "light" in catalog()[category].tags and any(c.tool in _LIGHTING_TOOLS for c in scope.calls):
+            continue  # "are the street lamps on?": the lights setting is what says
         if category in said or any(re.search(rf"\b{re.escape(i)}\b", said) for i in _ids_of(scene, category)):
             continue
         out.append(category)
@@ -381,7 +389,7 @@ def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
 def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> list[str]:
     """A plural or bare category ("remove cones", "get rid of pedestrian") of which the plan
     removes only some, with no number, place or state in the request to say which."""
-    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some of|one of|a few)\b", masked):
+    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some of|one of|a few|half)\b", masked):
         return []
     out = []
     for m in named_in(masked):
@@ -443,7 +451,7 @@ def unpointed(masked: str, scope: Scope, scene: Scene) -> list[AssetInstance]:
     no kind, id, place, lane or pointing word ("broken concrete in the lane" done by painting
     a parked car concrete)."""
     acted = [a for a in scope.touched if a.id != "ego" and a not in scope.added]
-    if not acted or named_in(masked) or _POINTS.search(masked) or md.groups_said(masked):
+    if not acted or named_in(masked) or _POINTS.search(masked) or KEEP_SOME.search(masked) or md.groups_said(masked):
         return []
     low = ph.normalise(masked)
     if any(ph.normalise(n).strip() in low for lm in scene.landmarks for n in lm.names()):
@@ -512,7 +520,7 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
 
 
 # Where an excepted thing's own words end and the place that picks it out begins ("the one | by the bench").
-_PICKED_BY = re.compile(r"\s(?:by|near|next to|beside|at|in|on|behind|in front of|close to)\s")
+_PICKED_BY = re.compile(r"\s(?:by|near|next to|beside|at|in|on|behind|in front of|close to|(?:nearest|closest)(?: to)?)\s")
 # Within this of the place named, a thing said in the plural ("the ones by the fountain") is excepted.
 EXCEPTED_RADIUS_M = 10.0
 
@@ -557,11 +565,15 @@ def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str] | fro
     head, where = (low[: cut.start()], low[cut.start() :]) if cut else (low, "")
     if ph.has_any(head, ph.EGO_WORDS) or re.search(r"\bego\b", head):
         return {"ego"}
-    ids = {a.id for a in scene.all_assets() if re.search(rf"\b{re.escape(a.id)}\b", said.lower())}
+    ids = {a.id for a in scene.all_assets() if re.search(rf"\b{re.escape(a.id)}\b", head)}  # not the place's
     if ids:
         return ids
     mentions = ph.find_categories(head)
-    kinds = {m.category for m in mentions} or (categories if re.search(r"\bones?\b", head) else set())
+    # "except the two nearest the ego": a number alone stands for that many of the kinds named
+    counted = _COUNTED.fullmatch(head.strip())
+    amount = _amount_word(counted.group(1)) if counted else None
+    alone = amount is not None and not mentions
+    kinds = {m.category for m in mentions} or (categories if re.search(r"\bones?\b", head) or alone else set())
     members = [a for a in scene.all_assets() if a.category in kinds and a.id != "ego"]
     if _SIDE_ONLY.fullmatch(where):  # "the ones on the south side" are the south ones
         head, where = f"{head} {where}", ""
@@ -576,13 +588,29 @@ def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str] | fro
     if point is None or not members:
         return frozenset(kinds)
     by_distance = sorted(members, key=lambda a: math.hypot(a.pose.x - point[0], a.pose.y - point[1]))
+    if amount is not None and amount > 1:  # "the two nearest the ego", "the three cones by the gate"
+        return {a.id for a in by_distance[:amount]}
     if re.search(r"\bones\b", head) or any(m.plural for m in mentions):
         return {a.id for a in by_distance if math.hypot(a.pose.x - point[0], a.pose.y - point[1]) <= EXCEPTED_RADIUS_M}
     return {by_distance[0].id}
 
 
+# A number standing alone for things ("the two", "those 3 ones"), not a measure ("40 m").
+_COUNTED = re.compile(r"(?:(?:the|those|these)\s+)?([a-z]+|\d+)(?:\s+ones?)?")
+
+
+def _amount_word(word: str) -> int | None:
+    """A whole number written in digits or words ("2", "two"), else None."""
+    if word.isdigit():
+        return int(word)
+    return spelt_counts().get(word)
+
+
 def _point_named(where: str, scene: Scene) -> tuple[float, float] | None:
-    """The place a few words name: a landmark, else the nearest-named thing of a kind ("the bench")."""
+    """The place a few words name: a landmark, the ego, else the nearest-named thing of a kind ("the bench")."""
+    ego = scene.asset("ego")
+    if ego is not None and (ph.has_any(where, ph.EGO_WORDS) or re.search(r"\bego\b", where)):
+        return ego.pose.x, ego.pose.y
     place = find_place(scene, where)
     if place is not None:
         landmark = scene.landmark(place[0])
@@ -635,6 +663,24 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     return list(dict.fromkeys(out))
 
 
+# A compass word before a word that may be a kind of place ("the south crosswalk", "north gate").
+_COMPASSED = re.compile(r"\b(north|south|east|west)[\s-]+([a-z]+)\b")
+
+
+def unnamed_compass_places(low: str, scene: Scene) -> list[str]:
+    """A place said by a compass word where the places of its kind are named by compass words and
+    none by that one ("the south crosswalk" where the crosswalks are the west and the north one):
+    no place of the world, though its last word alone would name one."""
+    names = {ph.normalise(n).strip() for lm in scene.landmarks for n in lm.names()}
+    out = []
+    for m in _COMPASSED.finditer(low):
+        way, kind = m.groups()
+        named = sorted(n for n in names if n.split()[-1] == kind and n.split()[0] in md.COMPASS_VECTORS)
+        if named and f"{way} {kind}" not in names:
+            out.append(f"there is no '{way} {kind}' in this world (there are {', '.join(named)})")
+    return out
+
+
 __all__ = [
     "Named",
     "Scope",
@@ -656,6 +702,7 @@ __all__ = [
     "partial_removal",
     "unknown_places",
     "unknown_things",
+    "unnamed_compass_places",
     "unpointed",
     "wrong_direction",
 ]

@@ -24,6 +24,11 @@ REMOVE_WORDS = re.compile(
     r"(?=\s*(?:[,.;!?]|$|(?:i guess|i think|please|now|too|as well)\b)))\b"
     r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
     # "I want no bins on campus", "there should be no signals at the crossroads": a scene without them
+    # "the lamp shall be removed", "they should get taken away": the edit said in the passive
+    r"|\b(?:be|been|being|get|gets|got)\s+(?:\w+ly\s+)?(?:removed|deleted|eliminated|erased|discarded|scrapped|taken (?:away|out|off)"
+    r"|cleared (?:away|out)|got rid of)\b"
+    # "the bench vanishes", "make them disappear", "poof": gone, as a story tells it
+    r"|\b(?:vanish|disappear)(?:es|s|ed|ing)?\b|\bpoof\b"
     r"|\b(?:want|need|like|prefer|there (?:should|must|can|may|is to|are to) be|there'?s to be|(?:should|must) (?:be )?have) (?:no|zero)\b"
     r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to|uses?|needs?|wants?)"  # "nobody should be parked there"
 )
@@ -34,9 +39,9 @@ HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|p
 # on it, not a thing asked for.
 FORBIDDEN = re.compile(r"\s+(?:mustn'?t|must not|shouldn'?t|should not|can'?t|cannot|won'?t|may not)\b")
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
-FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
+FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
 # How many of them to keep: "keep just two", "leave one of them" (the amount is group 1).
-KEEP_SOME = re.compile(r"\b(?:keep|leave)\s+(?:just |only |me )?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
+KEEP_SOME = re.compile(r"\b(?:keep|leave)\s+(?:just |only |me )?(?:the )?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
 _QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question),?\s+)?(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats"
@@ -66,6 +71,18 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      r"|^(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive)\b"
                      # "the car you just put there, could it go forward?": the same wish for a thing named first
                      r"|(?:^|[,.;:!-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift|look|be|get)\b")
+
+
+# English's ways of wrapping a request in a question ("is it possible to park ...", "any chance we
+# could have ...", "would you mind adding ...", "I was wondering if you could ..."): a command,
+# unless what is wrapped is itself a request for information ("is it possible to tell me ...").
+_NOT_INFO = r"(?!tell|say|know|see|find|check|count|list|show|measure)"
+_WRAPPED = re.compile(
+    rf"\b(?:is it|would it be|will it be|is that) (?:at all )?possible (?:for (?:you|us|me) )?to {_NOT_INFO}\w+"
+    rf"|\b(?:any|some) (?:chance|way) (?:that )?(?:you|we|i|someone) (?:could|can|might|would) {_NOT_INFO}\w+"
+    r"|\b(?:would|do) you mind (?!telling|saying|checking|counting|listing|showing)\w+ing\b"
+    rf"|\bwonder(?:ing)? (?:if|whether) (?:you|we|i) (?:could|can|might) {_NOT_INFO}\w+"
+    rf"|\bdo you think (?:you|we) (?:could|can) {_NOT_INFO}\w+")
 
 
 # A clause saying why ("... so traffic can flow again", "... so that the ego has to stop", "in
@@ -238,12 +255,19 @@ _SUGGESTED = re.compile(r"^(?:(?:maybe|perhaps|possibly|how about|if there'?s (?
                         r"|(?:a|an|one|two|three|four|five|\d+) (?!(?:question|quick question|thing)\b)(?=[a-z]))\b")
 
 
+def wrapped_request(low: str) -> bool:
+    """Whether the (lower-case) words wrap a request for a change in a question ("is it possible
+    to make the SUV drive ...?")."""
+    return bool(_WRAPPED.search(low))
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
-    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()))
+    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low))
     return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
         not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))
 
 
-__all__ = ["ADD_WORDS", "FEWER_WORDS", "KEEP_SOME", "REMOVE_WORDS", "asks", "excepted", "without_contrast", "without_reason"]
+__all__ = ["ADD_WORDS", "FEWER_WORDS", "KEEP_SOME", "REMOVE_WORDS", "asks", "excepted", "without_contrast", "without_reason",
+           "wrapped_request"]

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import replace
+from functools import cache
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
@@ -83,6 +84,9 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         present = [a.id for a in scene.assets if a.category in kinds]
         if _scoped_by_place(r, mention, anywhere=bool(REMOVE_WORDS.search(r.low))):
             present = _at_place(scene, str(r.landmark), present)
+        side = side_of(r.low, scene)
+        if side is not None:  # "the street lights on the south side": those on that side
+            present = [i for i in present if (a := scene.asset(i)) is not None and side[1](a)]
         if not present:
             return []
         if mention.plural or r.has(("all", "every", "each")):
@@ -140,6 +144,10 @@ def _but_kept(r: Reading, ids: list[str]) -> list[str]:
 # A count the scene should end with: "there should be exactly four cones in lot A", "we want only two benches".
 FINAL_COUNT = re.compile(r"\b(?:there (?:should|must|has to|needs to|is to|are to) be|(?:i|we) (?:want|need|would like|'d like))"
                          r"\s+(?:exactly|only|just|a total of)\s+")
+
+
+# Half of the things named ("half the trees", "half of those cones").
+_HALF = re.compile(r"\bhalf (?:of )?(?:the|those|these|them|all(?: the)?|our|its)\b[^,;]*$")
 
 
 def kept_at(scene: Scene, category: str, place: str | None) -> list[str]:
@@ -236,7 +244,10 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             lanes = [lane] if r.lane and not r.lane_guessed and (lane := scene.roads.lane(r.lane)) else scene.roads.lanes
             ids = [a.id for a in scene.assets if catalog()[a.category].motion == "prop" and lane_under(a, lanes)]
             return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
-        ids = _but_kept(r, referenced(r, scene, memory, notes))  # "too many, just leave one of them"
+        ids = referenced(r, scene, memory, notes)
+        if not ids and _kept(r) is not None:  # "way too many cones. keep just the one": of those just made
+            ids = notes.subject or [i for i in memory.last_added() if scene.asset(i) is not None]
+        ids = _but_kept(r, ids)  # "too many, just leave one of them"
         said = None if _kept(r) is not None else _SOME_OF_THEM.search(r.low)  # "take away 3 of them": the newest 3
         some = _amount(said.group(1)) if said else 0
         ids = ids[-some:] if 0 < some < len(ids) else ids
@@ -248,6 +259,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     name = mention.category
     recent = [i for i in memory.last_added(name) if scene.asset(i) is not None]
     count = find_count(r, mention)
+    if count is None and _HALF.search(r.low[: mention.start]):  # "half the trees have to go"
+        count = max(1, len(kept_at(scene, name, r.landmark)) // 2)
     if recent and r.has(("you added", "you just added", "the new", "that", "those")):
         # "remove two of those cones": that many of them, the newest first; "leave one of those": all but one
         chosen = recent[-count:] if count and count < len(recent) and _kept(r) is None else _but_kept(r, recent)
@@ -321,14 +334,41 @@ def ph_error(message: str) -> Exception:
 
 
 # On foot over a road or a crossing ("walking across the north crosswalk", "hurrying over the road").
-_GOING_ACROSS = re.compile(r"\b(?:walk|run|hurr|dash|dart|jog|head|go|stroll|step|wander)\w*\s+(?:across|over)\s+(?:the\s+)?"
+_GOING_ACROSS = re.compile(r"\b(?:walk|run|hurr|dash|dart|jog|head|go|stroll|step|wander|strid|march|ambl|saunter|trot|sprint)"
+                           r"\w*\s+(?:(?:out|off|straight|right|on)\s+)?(?:across|over)\s+(?:the\s+)?"
                            r"(?:road|street|crossing|crosswalk|zebra|junction|intersection|§)")
+
+
+# What "leave" leaves somewhere ("leave it at the union", "leave the bus by the stop"): a place to stay.
+_LEFT_AT = re.compile(r"\s+(?:it|them|that|this|those|these|(?:the|that|this) [a-z_]+(?: [a-z_]+)?)\s+"
+                      r"(?:at|by|near|in|on|outside|next|beside|behind|there|here|§)")
+
+
+@cache
+def _inflected(phrases: tuple[str, ...]) -> re.Pattern[str]:
+    """Phrases whose first word may be inflected: "drive" is also "drives", "drove" is not
+    derived ("drive" + "d"), "set off" is also "sets off" and "setting off", "pedal" "pedalling"."""
+    forms = []
+    for phrase in phrases:
+        verb, _, rest = phrase.partition(" ")
+        if verb.endswith("e"):
+            word = f"{verb[:-1]}(?:e|es|ed|ing)"
+        else:
+            word = f"{verb}(?:s|es|ed|ing|{verb[-1]}ed|{verb[-1]}ing)?"
+        forms.append(rf"(?<![a-z]){word}{(' ' + re.escape(rest)) if rest else ''}(?![a-z])")
+    return re.compile("|".join(forms))
 
 
 def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
     """The behaviour a clause names, if it suits an asset of `category`."""
     for kind in ("jaywalk", "circle", "cross_road", "drive_lane", "parked"):
-        if not r.has(lx.BEHAVIOUR_WORDS[kind]) and not (kind == "cross_road" and _GOING_ACROSS.search(r.masked)):
+        said = _inflected(lx.BEHAVIOUR_WORDS[kind]).search(ph.normalise(r.masked)) if kind == "drive_lane" else None
+        if said and said.group(0).startswith("head") and r.has(lx.BEHAVIOUR_WORDS["parked"]):
+            said = None  # "park a car in lot A, heading north": which way it faces
+        if said and said.group(0).startswith("leav") and _LEFT_AT.match(ph.normalise(r.masked)[said.end() :]):
+            said = None  # "leave it at the Student Union": where it stays
+        plain = kind != "drive_lane" and r.has(lx.BEHAVIOUR_WORDS[kind])  # the driving words are read inflected
+        if not said and not plain and not (kind == "cross_road" and _GOING_ACROSS.search(r.masked)):
             continue
         if category is not None and (
             (kind in ("jaywalk", "cross_road") and category.motion != "walker")

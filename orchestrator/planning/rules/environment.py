@@ -33,8 +33,16 @@ _LAMP_CONTEXT = ("street", "streets", "lamps", "headlights", "lights", "light up
 _SUN_MOVING = re.compile(r"\bsun\s+(?:goes|going|has gone|is going|went|sets|setting|is setting|rises|rising|is rising|comes up|coming up|up|down)\b")
 
 
+# The weather set to a kind by name ("the weather be set to clear", "weather: clear", "switch the weather to snow").
+_WEATHER_TO = re.compile(r"\bweather\b(?:\s+(?:be|is|should|must|gets?|to|set|changed|changes|switched|turned|now|back|"
+                         r"please)\b)*\s*(?::|=|\bto\b|\bas\b)?\s*([a-z]+)")
+
+
 def weather(r: Reading) -> ToolCall | None:
     """The weather a clause asks for, with its intensity, or None."""
+    named = _WEATHER_TO.search(r.low)
+    if named is not None and named.group(1) in ("clear", "fine", "sunny", "dry") and not r.has(("no", "not")):
+        return ToolCall(tool="set_weather", args={"kind": "clear"})  # "the weather be set to clear"
     for kind in _WEATHER_ORDER:
         if r.has(lx.WEATHER_WORDS[kind]) and not (kind == "clear" and _SUN_MOVING.search(r.low) and not r.has(("sunny", "sky", "clear"))):
             if (

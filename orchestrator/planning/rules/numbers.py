@@ -59,7 +59,8 @@ _SPELT = (rf"(?:(?:one|a)[- ]eighty|(?:one|a) hundred(?: and (?:{_BELOW_HUNDRED}
 # A measure spelt out ("two metres", "forty-five degrees", "a metre", "half a metre", "a few metres"): the words
 # become figures so every reader of amounts with units reads it as if typed in digits.
 _SPELT_MEASURE = re.compile(
-    rf"\b(half an?|a couple(?: of)?|a few|{_SPELT})\s+(?=(?:m|metres?|meters?|ft|feet|foot|km|kilometres?|kilometers?|yards?|degrees?|"
+    rf"\b(half an?|a couple(?: of)?|a few|{_SPELT})\s+(?=(?:m|metres?|meters?|ft|feet|foot|km|kilometres?|kilometers?|yards?|"
+    r"(?:car|vehicle)[- ]lengths|degrees?|"
     r"seconds?|secs?|m/s|km/h|kph|mph|hours?|minutes?|mins?)\b)",
     re.IGNORECASE,
 )
@@ -95,15 +96,29 @@ def spelt_counts() -> dict[str, int]:
     return counts | {"hundred": 100}
 
 
+# Lengths in other units, said in metres by every reader: a yard, and a car's length as people
+# measure gaps on a road ("nudge it up a car length", "two car lengths back").
+YARD_M = 0.9144
+CAR_LENGTH_M = 4.5
+_OTHER_LENGTHS = re.compile(r"\b(\d+(?:\.\d+)?)\s*(yards?|yds?|(?:car|vehicle)[- ]lengths?)\b", re.IGNORECASE)
+_ONE_CAR_LENGTH = re.compile(r"\b(?:a|one) (?:car|vehicle)[- ]length\b", re.IGNORECASE)
+
+
 def spelt_measures(text: str) -> str:
-    """`text` with measures spelt in words written in figures ("two metres" -> "2 metres")."""
+    """`text` with measures spelt in words written in figures ("two metres" -> "2 metres"), and
+    lengths in yards or car lengths in metres ("3 yards" -> "2.74 m")."""
     def figures(m: re.Match[str]) -> str:
         article = m.group(1).lower() in ("a", "an")
         if article and re.match(r"(?:m|ft|km|secs?|mins?|mph|kph)\b", m.string[m.end() :], re.IGNORECASE):
             return m.group(0)  # "7 a m" is a time of day; "a metre" is one
         return f"{_spelt_value(m.group(1)):g} "
 
-    return _SPELT_MEASURE.sub(figures, text)
+    def metres(m: re.Match[str]) -> str:
+        unit = YARD_M if m.group(2).lower().startswith("y") else CAR_LENGTH_M
+        return f"{float(m.group(1)) * unit:.3g} m"
+
+    text = _ONE_CAR_LENGTH.sub(f"{CAR_LENGTH_M:g} m", _SPELT_MEASURE.sub(figures, text))
+    return _OTHER_LENGTHS.sub(metres, text)
 
 
 def parse(text: str) -> float:

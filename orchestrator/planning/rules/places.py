@@ -7,6 +7,7 @@ place. "There" is the last place this prompt named, else the last edit's focus i
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections.abc import Callable
@@ -100,28 +101,42 @@ def relation_of(low: str) -> str:
 
 
 def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str | None:
-    # "next to the bench at the bus stop": the bench nearest that stop; "near the hydrant" too.
-    for words in [*(w for w, _ in RELATIONS), ("near", "nearby")]:
-        for word in words:
-            pos = r.low.find(f" {word} ")
-            if pos < 0:
-                continue
-            later = [m for m in r.mentions if m.start > pos]
-            # The thing right after the relation is its object: not one a place or words come between.
-            between = r.low[pos + len(word) + 2 : later[0].start] if later else ""
-            if not later or len(between.split()) > 3 or pos < r.landmark_at < later[0].start:
-                continue
-            present = [a for a in scene.assets if a.category == later[0].category and a.id not in exclude]
-            if not present:
-                continue
-            landmark = scene.landmark(r.landmark) if r.landmark else None
-            if landmark is not None:
-                point = landmark.position
-                present.sort(key=lambda a: math.dist((a.pose.x, a.pose.y), point))
-            return present[0].id
+    # "next to the bench at the bus stop": the bench nearest that stop; "near the hydrant" too. The
+    # relation said first is the one meant: "beside the bin that's next to the bench" is by the bin.
+    said = sorted((pos, word) for words in [*(w for w, _ in RELATIONS), ("near", "nearby")] for word in words
+                  if (pos := r.low.find(f" {word} ")) >= 0)
+    for pos, word in said:
+        later = [m for m in r.mentions if m.start > pos]
+        # The thing right after the relation is its object: not one a place or words come between.
+        between = r.low[pos + len(word) + 2 : later[0].start] if later else ""
+        if not later or len(between.split()) > 3 or pos < r.landmark_at < later[0].start:
+            continue
+        present = [a for a in scene.assets if a.category == later[0].category and a.id not in exclude]
+        if not present:
+            continue
+        point = _anchor_point(r, scene, later[1:], exclude)
+        if point is not None:
+            present.sort(key=lambda a: math.dist((a.pose.x, a.pose.y), point))
+        return present[0].id
     return None
 
 
+def _anchor_point(r: Reading, scene: Scene, after: list[ph.Mention], exclude: list[str]) -> tuple[float, float] | None:
+    """Where the words after a relation's object say it is: the place named, or, in a chain
+    ("the bin that's next to the bench by the bus stop"), the next thing named nearest that place."""
+    landmark = scene.landmark(r.landmark) if r.landmark else None
+    point = landmark.position if landmark is not None else None
+    things = [a for a in scene.assets if after and a.category == after[0].category and a.id not in exclude]
+    if not things:
+        return point
+    if point is not None:
+        nearest = min(things, key=lambda a: math.dist((a.pose.x, a.pose.y), point))
+        return nearest.pose.x, nearest.pose.y
+    return (things[0].pose.x, things[0].pose.y) if len(things) == 1 else None
+
+
+# Away from a sidewalk ("shove it somewhere off the sidewalk", "get it off the pavement"): not onto one.
+_OFF_SIDEWALK = re.compile(r"\b(?:off|away from|clear of|not on) (?:of )?(?:the |that |this )?(?:sidewalk|pavement|footpath|kerb|curb)\b")
 # A relation to what an earlier clause of the prompt adds: "a rover at the gate and a sign next to it".
 _BY_IT = re.compile(r"\b(?:next to|beside|by|near|behind|in front of|alongside|around)\s+(?:it|them)\b")
 # "There" after a turn that put things somewhere: beside the one of them within this of its focus.
@@ -186,16 +201,49 @@ def _outer_place(scene: Scene, moving: list[str], way: tuple[float, float]) -> s
     return max([found[0], *found[1]], key=lambda lm: lm.position[0] * way[0] + lm.position[1] * way[1]).name
 
 
+# A place said by its compass side of a named place ("north of the crossroads", "20 m west of the
+# fountain"), how far unsaid: just past the place, beyond a junction's crossings (11.5 m from the
+# campus crossroads' centre) and the 10-15 m a place's name covers.
+COMPASS_OFFSET_M = 15.0
+_COMPASS_OF = re.compile(r"\b(?:due\s+)?(north|south|east|west)\s+of\s+(?:the\s+)?(?=\S)")
+
+
+def _compass_of(r: Reading, scene: Scene) -> dict[str, Any] | None:
+    """An absolute point the words put at a compass side of the place they name, on the lane they
+    name if any; None when they say no such side."""
+    said = _COMPASS_OF.search(r.low)
+    if said is None or not r.landmark or r.landmark_at < said.end() - 1:
+        return None
+    landmark = scene.landmark(r.landmark)
+    if landmark is None:
+        return None
+    east, north = md.COMPASS_VECTORS[said.group(1)]
+    metres = ph.find_distance(r.low[: said.start()])
+    away = metres if metres is not None else COMPASS_OFFSET_M
+    x, y = landmark.position[0] + east * away, landmark.position[1] + north * away
+    said_lane = r.lane and not r.lane_guessed and re.search(r"\b(?:lanes?|[a-z]+bound)\b", r.low)
+    lane = scene.roads.lane(r.lane) if said_lane and r.lane else None
+    if lane is not None:  # "the northbound lane ..., north of the crossroads": that lane, there
+        on = nearest_on_polyline(x, y, lane.centreline)
+        x, y = on.x, on.y
+    # the distance said stays in the call, so what was said can be seen in what is done
+    return {"relation": "absolute", "x": round(x, 2), "y": round(y, 2), **({"distance": metres} if metres else {})}
+
+
 def location(
-    r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: list[str] | None = None
+    r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: list[str] | None = None, compass: bool = True
 ) -> dict[str, Any] | None:
-    """The Location a clause describes, or None when it names no place."""
+    """The Location a clause describes, or None when it names no place; `compass`: a compass side
+    of the place ("north of the crossroads") is a point past it (a closure reads that side itself)."""
     exclude = exclude or []
     coords = ph.find_coordinates(r.text)
     if coords is not None:
         return {"relation": "absolute", "x": coords[0], "y": coords[1]}
     if r.has(_CENTRE) or any(c in r.low for c in _CENTRE):
         return {"relation": "scene_centre"}
+    offset = _compass_of(r, scene) if compass else None
+    if offset is not None:  # "north of the crossroads", "20 m west of the fountain", "in the northbound lane, north of ..."
+        return offset
     # A road named only as context ("across Main Street at the east gate") yields to the place.
     if (
         r.lane
@@ -246,7 +294,12 @@ def location(
                 nearest = min(beside, key=lambda a: math.dist((a.pose.x, a.pose.y), focus))
                 return {"relation": "next_to", "target": nearest.id}
             return {"relation": "absolute", "x": round(focus[0], 2), "y": round(focus[1], 2)}
-    if r.has(("sidewalk", "pavement", "footpath", "kerb", "curb")):
+    if _OFF_SIDEWALK.search(r.low) and target is None:
+        from drivetwin.orchestrator.planning.base import PlanningError
+
+        raise PlanningError("I can put things on a sidewalk, in a lane or by a place, but not just 'off the sidewalk'; "
+                            "say where it should go instead, e.g. 'next to the bench by the library'")
+    if r.has(("sidewalk", "pavement", "footpath", "kerb", "curb")) and not _OFF_SIDEWALK.search(r.low):
         return {"relation": "on_sidewalk", **({"target": target} if target else {})}
     if r.has(("in the lane", "on the road", "in lane", "on the street")):
         return {"relation": "in_lane", **({"target": target} if target else {})}
@@ -317,6 +370,8 @@ def cross_section(r: Reading, scene: Scene, where: dict[str, Any] | None) -> Cro
 
 
 _SIDE_OF = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z][a-z ]*)")
+# A side said with no place ("the lamps on the north side"): the side of the road nearest each thing.
+_SIDE_ALONE = re.compile(r"\b(?:on|along|at) the (north|south|east|west)(?:ern)? side\b(?! of)")
 
 
 def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
@@ -325,8 +380,10 @@ def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool
     or the place, that way); None when they name none."""
     said = _SIDE_OF.search(low)
     if said is None:
-        return None
-    dx, dy = md.COMPASS_VECTORS[said.group(1)]
+        alone = _SIDE_ALONE.search(low)
+        if alone is None or not scene.roads.lanes:
+            return None
+        return f"{alone.group(1)} side of the road", _beyond(_across(scene, alone.group(1)), alone.group(1))
     rest = said.group(2)
     roads = {lane.road for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())}
     points = [p for lane in scene.roads.lanes if lane.road in roads for p in lane.centreline]
@@ -336,12 +393,36 @@ def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool
         points, name = ([marks[0].position], marks[0].name) if marks else ([], None)
     if not points:
         return None
+    return f"{said.group(1)} side of {name}", _beyond(points, said.group(1))
+
+
+def _across(scene: Scene, way: str) -> list[tuple[float, float]]:
+    """Lane centreline points where the road runs across compass direction `way` (the north side
+    is judged from roads that run east-west, not from a crossing street)."""
+    dx, dy = md.COMPASS_VECTORS[way]
+    points: list[tuple[float, float]] = []
+    for lane in scene.roads.lanes:
+        line = lane.centreline
+        for (x0, y0), (x1, y1) in itertools.pairwise(line):
+            length = math.hypot(x1 - x0, y1 - y0)
+            if length > 0 and abs((x1 - x0) * dx + (y1 - y0) * dy) / length < ACROSS_COS:
+                points += [(x0, y0), (x1, y1)]
+    return points or [p for lane in scene.roads.lanes for p in lane.centreline]
+
+
+# A road runs across a compass direction when its heading is within 60 degrees of square to it.
+ACROSS_COS = 0.5
+
+
+def _beyond(points: list[tuple[float, float]], way: str) -> Callable[[AssetInstance], bool]:
+    """Whether a thing stands beyond the nearest of `points` in compass direction `way`."""
+    dx, dy = md.COMPASS_VECTORS[way]
 
     def beyond(a: AssetInstance) -> bool:
         near = min(points, key=lambda p: math.hypot(a.pose.x - p[0], a.pose.y - p[1]))
         return (a.pose.x - near[0]) * dx + (a.pose.y - near[1]) * dy > 0
 
-    return f"{said.group(1)} side of {name}", beyond
+    return beyond
 
 
 def said_a_place(r: Reading) -> bool:

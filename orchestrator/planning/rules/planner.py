@@ -17,7 +17,14 @@ from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
-from drivetwin.orchestrator.planning.intent import FEWER_WORDS, HABITUAL, REMOVE_WORDS, asks, without_reason
+from drivetwin.orchestrator.planning.intent import (
+    FEWER_WORDS,
+    HABITUAL,
+    REMOVE_WORDS,
+    asks,
+    without_reason,
+    wrapped_request,
+)
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
@@ -38,6 +45,7 @@ from drivetwin.orchestrator.planning.rules.places import Notes, cross_section, l
 from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
 from drivetwin.orchestrator.planning.rules.repeat import repeat, repeats
+from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces
 from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
@@ -96,6 +104,9 @@ _VERBS = (
     "stand",
     "ring",
     "fence",
+    "fix",
+    "sort",
+    "solve",
 )
 _STRICT_ADD = (
     "add",
@@ -139,19 +150,37 @@ _NEGATED_WISH = re.compile(
 # So is one that opens on a thing and says what it does ("the test car starts too close", "the two
 # trees block the view"), unless it says what should be ("the bus should stop", "it belongs in lot A").
 _STATEMENT = re.compile(
-    r"\s*(?:(?:the|this|that|these|those|it|they|there)\b[^,;]*?\b(?:is|are|was|were)\b"
+    r"\s*(?:(?:now|still|and|but)\s+)?(?:(?:the|this|that|these|those|it|they|there)\b[^,;]*?\b(?:is|are|was|were)\b"
     r"|(?:it|that|there|they)(?:'s|'re) (?!(?:got to|gotta|going to|supposed to|meant to|time)\b)"
-    r"|(?:the|this|that|these|those|whoever|anyone who|everyone who)\s+(?![^,;]*\b(?:should|must|needs?|has to|have to|ought|go|goes|belongs?|wants?|"
+    r"|(?:the|this|that|these|those|whoever|anyone who|everyone who)\s+"
+    # "the ego rolls up to the east gate": a story's move to a place is what to stage
+    r"(?![^,;]*\b(?:rolls?|pulls?|drives?|walks?|rides?|cycles?|comes?|arrives?|heads?|moves?|goes|wanders?|runs?|steps?)"
+    r"\s+(?:up\s+|in\s+|over\s+|out\s+|back\s+)?(?:to|into|onto|towards?|at)\b)"
+    r"(?![^,;]*\b(?:should|must|needs?|has to|have to|ought|go|goes|belongs?|wants?|"
     r"will|would|can|could|shall|may|might|let|gets?|to be)\b)[a-z' -]+\s(?:[a-z]+s|block|blocks|sit|stand|stay|face|look)\b"
+    # "who put a hydrant on the pavement?": a complaint about what someone did, not a request
+    r"|who\s+(?:\w+\s+)?(?:put|left|parked|placed|moved|dumped|stuck|added|thought|decided)\b"
     rf"|{HABITUAL.pattern})"
 )
+
+
+# Asking for a described trouble to be put right without saying how ("fix that", "sort it out").
+_FIX = re.compile(r"(?:(?:please|pls|just|can you|could you|now)\s+)*(?:fix|sort out|sort (?:it|that|this) out|deal with|"
+                  r"do something about|solve|remedy|correct|sort)\b(?:\s+(?:it|that|this|them))?\s*(?:please|pls|now)?\s*[.!?]*$",
+                  re.IGNORECASE)
+# An ellipsis the sentence goes on after ("the bench by the stop... vanishes"): a pause, not a break.
+_TRAILING_OFF = re.compile(r"\s*(?:\.{3,}|\u2026)\s*(?=[a-z])")
+# A sound or word of feeling before a clause ("ugh, it's going the wrong way"): it says nothing.
+_INTERJECTION = re.compile(r"^\s*(?:(?:ugh+|argh+|oh+|ah+|hmm+|um+|uh+|erm|well|wow|meh|gosh|great|brilliant|"
+                           r"ok|okay|so|right|yeah|hey|huh|damn|dang|whoa|oops)\b\s*[,!.]+\s*)+")
 
 
 def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -> list[tuple[str, bool, bool]]:
     """The clauses of a prompt, each with whether it was asked as a question and whether it only
     introduces what follows its colon ("our robot needs a warning: put ..."); without the clauses
     that say why unless `reasons`."""
-    parts = _SPLIT.split(prompt if reasons else without_reason(prompt).strip() or prompt)
+    said = prompt if reasons else without_reason(prompt).strip() or prompt
+    parts = _SPLIT.split(_TRAILING_OFF.sub(" ", said))
     out: list[tuple[str, bool, bool]] = []
     lead = ""  # the last clause's words up to its verb, for a clause that only names another thing
     for i in range(0, len(parts), 2):
@@ -262,7 +291,7 @@ class RulePlanner:
             if clause_calls is None:
                 skipped.append(clause)
                 continue
-            if (intro or _STATEMENT.match(reading.low)) and not asked:
+            if (intro or _STATEMENT.match(_INTERJECTION.sub("", reading.low))) and not asked:
                 described.extend(clause_calls)  # "the bench by the stop is in the way": context, unless all there is
                 if set(notes.subject) & set(notes.coming[coming:]):
                     notes.subject = notes.named  # nor is it what a later "it" means
@@ -293,6 +322,12 @@ class RulePlanner:
             # "we're filming the late shift, so it has to be night": what read as the reason is the request
             notes = Notes(guesses=spelling)
             calls, unknown, skipped, described = self._read(whole, context, notes)
+        if not calls and any(_FIX.match(clause.strip()) for clause in skipped):
+            # "it's pitch dark, fix that": what was described is the trouble, not what is wanted
+            raise PlanningError(
+                "I can tell what is wrong, but not what you want instead; say how it should be, "
+                "e.g. 'make it daytime', 'remove the cones'"
+            )
         if not calls:
             calls = described
         if not calls and skipped:
@@ -357,7 +392,7 @@ def _is_question(r: Reading, asked: bool) -> bool:
     starts = any(re.match(rf"{re.escape(w)}\b", words) for w in lx.SEARCH_STARTS)
     # "Could you put a shuttle at the stop?" is a command put politely, question mark or not.
     command = re.sub(r"^(?:(?:please|pls|kindly|can|could|would|will|maybe|perhaps)\s+(?:you\s+)?(?:please\s+)?)+", "", words)
-    if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command):
+    if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command) or wrapped_request(words):
         return False
     if re.match(rf"give (?:me|us)\b(?!\s+(?:a |an |the )?(?:{_INFO_NOUNS})\b)", command):
         return False  # "give me some rain" asks for rain; "give me a list of ..." for information
@@ -395,6 +430,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             # "Bit of drizzle?": a question about nothing in the scene that names a setting asks for it
             return environment(r, scene.environment) or looked_up
         return looked_up
+    if (swap := replaces(r)) is not None:  # "swap the bench for a bin": it goes, a bin stands there
+        return replace_things(swap, scene, memory, notes)
     if r.mentions and _TOPIC.fullmatch(_without_mentions(r)):
         referenced(r, scene, memory, notes)  # "the cars... where are they?": what the next clause is about
         return []
@@ -571,7 +608,7 @@ def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     # What is kept out ("closed to traffic") is not what the line is made of.
     layout = [m for m in r.mentions if _closes_roads(m.category)]
     kinds = [m.category for m in layout] or ["road_barrier"]
-    where = location(r, scene, memory, notes) or _fallback_place(memory)
+    where = location(r, scene, memory, notes, compass=False) or _fallback_place(memory)
     args: dict[str, Any] = {"categories": kinds[:4], "shape": "line", "location": where}
     count = find_count(r, layout[0]) if layout else None
     across = cross_section(r, scene, where) if where.get("relation") not in ("absolute", "in_front_of", "behind") else None

@@ -51,7 +51,8 @@ _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
 # A distance asked between two things ("how far is X from Y", "the distance between X and Y",
 # "how far apart are X and Y"): one thing named is measured from the asker. A superlative asks
 # which thing is nearest instead, and a range ("within 20 m") asks what is around.
-_DISTANCE = re.compile(r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|how many (?:metres|"
+_DISTANCE = re.compile(r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|"
+                       r"stone'?s throw (?:from|to|of)|(?:a |long |short )?walk (?:from|to)|how many (?:metres|"
                        r"meters|feet|yards) (?:from|to|between|apart))\b|\bfar\s*\??\s*$")
 _SUPERLATIVE = re.compile(r"\b(?:nearest|closest|furthest|farthest|most near|most close|nearer|closer)\b")
 _ENDS = re.compile(r"\b(?:from|to|and|between|apart)\b")
@@ -110,6 +111,10 @@ _ASKED_ABOUT = re.compile(r"\b(?:how many|where (?:is|are|do|does|did|can|could|
 # A question about how the world is now, not a wish ("is it raining?"; "bit of drizzle?" asks for it).
 _ASKS_HOW_IT_IS = re.compile(r"\s*(?:(?:so|ok|and|hey)\W+)*(?:what|what's|whats|how|is|are|was|does|do|which|when|tell me|can you tell)\b")
 # The settings a question can ask about by their general words.
+# Things switched with the lights setting, and a question about whether they are on.
+_SWITCHED = frozenset({"street_light"})
+_ON_OFF = re.compile(r"\b(?:on or off|off or on|switched on|turned on|lit|on|off)\s*[?.!]*\s*(?:right now|now|at the moment)?\s*[?.!]*\s*$"
+                     r"|\b(?:are|is) (?:the |all the |any of the )?(?:street ?)?(?:lights?|lamps?) (?:on|off|lit)\b")
 _SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|bright|light)|lights? (?:on|off)|lit)\b")
 
 
@@ -161,6 +166,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
                             f"{', '.join(sorted({a.category for a in scene.assets})[:8])}")
     if _names_nothing(r) and _ASKS_HOW_IT_IS.match(low) and (_SETTING.search(low) or environment(r, scene.environment)):
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "is it raining?", "what's the weather like"
+    if r.mentions and {m.category for m in r.mentions} <= _SWITCHED and _ON_OFF.search(low):
+        return Part(ToolCall(tool="describe_environment", args={}), None)  # "street lamps - on or off right now?"
     named = _named(r, scene)
     back = _back_reference(r, scene, memory, notes, earlier)
     if _names_nothing(r) and _OF_EACH.search(r.masked) and notes.subject:

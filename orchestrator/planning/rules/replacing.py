@@ -1,0 +1,53 @@
+"""Replacing things: "swap the bench for a bin", "replace the two cones with barriers". The things
+named first go and one of the new kind stands where each of them stood, as one edit. The ego
+cannot go, so replacing it is refused with what can be done instead."""
+
+from __future__ import annotations
+
+import re
+
+from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning.base import PlanningError
+from drivetwin.orchestrator.planning.rules.edits import referenced
+from drivetwin.orchestrator.planning.rules.places import Notes
+from drivetwin.orchestrator.planning.rules.reading import Reading, read
+from drivetwin.tools.appearance import COLOURS
+from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.scene import Scene
+
+# "replace X with Y", "swap X for Y", "substitute Y for X" is not read (its order is the other way).
+_REPLACE = re.compile(r"^\s*(?:(?:please|pls|can you|could you|would you|now|then|just)\s+)*"
+                      r"(?:replace|swap|exchange)\s+(?P<old>.+?)\s+(?:with|for|by)\s+(?P<new>.+?)\s*[.!?]*\s*$")
+
+
+def replaces(r: Reading) -> re.Match[str] | None:
+    """The old and new parts of a clause that asks to replace things, or None."""
+    return _REPLACE.match(r.low)
+
+
+def replace_things(said: re.Match[str], scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
+    """remove_assets for the things named first, and add_asset of the new kind at each one's spot."""
+    old, new = read(said["old"], scene), read(said["new"], scene)
+    if not new.mentions:
+        raise PlanningError(f"say what should stand in place of {said['old'].strip()}, e.g. 'replace the bench with a bin'")
+    category = new.mentions[0].category
+    ids = referenced(old, scene, memory, notes)
+    if "ego" in ids:
+        raise PlanningError(f"the ego vehicle cannot be replaced or removed; I can move it, restyle it, or add a "
+                            f"{category.replace('_', ' ')} beside it")
+    if not ids:
+        raise PlanningError(f"there is no {re.sub(r'^(?:the|a|an|those|these|that|this) ', '', said['old'].strip())} "
+                            "in the scene to replace")
+    colour = next((c for c in COLOURS if new.has((c,))), None)
+    calls = [ToolCall(tool="remove_assets", args={"assets": ids})]
+    for asset_id in ids:
+        asset = scene.asset(asset_id)
+        if asset is None:
+            continue
+        where = {"relation": "absolute", "x": round(asset.pose.x, 2), "y": round(asset.pose.y, 2)}
+        calls.append(ToolCall(tool="add_asset", args={"category": category, "count": 1, "location": where,
+                                                      **({"colour": colour} if colour else {})}))
+    return calls
+
+
+__all__ = ["replace_things", "replaces"]
