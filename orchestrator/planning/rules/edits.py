@@ -11,7 +11,6 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import replace
-from functools import cache
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
@@ -20,6 +19,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.inflection import inflected
 from drivetwin.orchestrator.planning.rules.places import Notes, location, side_of
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
 from drivetwin.tools.appearance import COLOURS
@@ -344,25 +344,10 @@ _LEFT_AT = re.compile(r"\s+(?:it|them|that|this|those|these|(?:the|that|this) [a
                       r"(?:at|by|near|in|on|outside|next|beside|behind|there|here|§)")
 
 
-@cache
-def _inflected(phrases: tuple[str, ...]) -> re.Pattern[str]:
-    """Phrases whose first word may be inflected: "drive" is also "drives", "drove" is not
-    derived ("drive" + "d"), "set off" is also "sets off" and "setting off", "pedal" "pedalling"."""
-    forms = []
-    for phrase in phrases:
-        verb, _, rest = phrase.partition(" ")
-        if verb.endswith("e"):
-            word = f"{verb[:-1]}(?:e|es|ed|ing)"
-        else:
-            word = f"{verb}(?:s|es|ed|ing|{verb[-1]}ed|{verb[-1]}ing)?"
-        forms.append(rf"(?<![a-z]){word}{(' ' + re.escape(rest)) if rest else ''}(?![a-z])")
-    return re.compile("|".join(forms))
-
-
 def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
     """The behaviour a clause names, if it suits an asset of `category`."""
     for kind in ("jaywalk", "circle", "cross_road", "drive_lane", "parked"):
-        said = _inflected(lx.BEHAVIOUR_WORDS[kind]).search(ph.normalise(r.masked)) if kind == "drive_lane" else None
+        said = inflected(lx.BEHAVIOUR_WORDS[kind]).search(ph.normalise(r.masked)) if kind == "drive_lane" else None
         if said and said.group(0).startswith("head") and r.has(lx.BEHAVIOUR_WORDS["parked"]):
             said = None  # "park a car in lot A, heading north": which way it faces
         if said and said.group(0).startswith("leav") and _LEFT_AT.match(ph.normalise(r.masked)[said.end() :]):

@@ -296,6 +296,8 @@ class RulePlanner:
                 if set(notes.subject) & set(notes.coming[coming:]):
                     notes.subject = notes.named  # nor is it what a later "it" means
                 del notes.coming[coming:]  # what it would add is not coming
+                # "who put a hydrant by the crossroads? get rid of it": the one there is what "it" means
+                notes.subject = _already_there(clause_calls, scene) or notes.subject
                 continue
             calls.extend(clause_calls)
             unknown += _unknown_words(clause, scene)
@@ -355,6 +357,26 @@ class RulePlanner:
             prompt_version=PROMPT_VERSION,
             trace=[step],
         )
+
+
+# How far from the place a statement names the thing it describes may stand ("a hydrant by the crossroads").
+DESCRIBED_NEAR_M = 20.0
+
+
+def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:
+    """The things a statement describes as if new ("who put a hydrant by the crossroads") that
+    the scene already has at that place: for each addition, the nearest one of its kind there."""
+    found = []
+    for call in described:
+        where = call.args.get("location") or {}
+        landmark = scene.landmark(str(where.get("target"))) if call.tool == "add_asset" and isinstance(where, dict) else None
+        same = [a for a in scene.assets if a.category == call.args.get("category")]
+        if landmark is None or not same:
+            continue
+        nearest = min(same, key=lambda a: math.dist((a.pose.x, a.pose.y), landmark.position))
+        if math.dist((nearest.pose.x, nearest.pose.y), landmark.position) <= DESCRIBED_NEAR_M:
+            found.append(nearest.id)
+    return found
 
 
 def _unknown_words(clause: str, scene: Scene) -> list[str]:

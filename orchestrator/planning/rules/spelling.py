@@ -17,6 +17,7 @@ from pathlib import Path
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.inflection import forms
 from drivetwin.orchestrator.planning.rules.numbers import spelt_measures
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
@@ -171,6 +172,8 @@ def _domain_words() -> frozenset[str]:
     for group in (lx.WEATHER_WORDS, lx.BEHAVIOUR_WORDS, lx.CONCEPTS):
         for values in group.values():
             words |= _words_of(values)
+    for phrase in lx.BEHAVIOUR_WORDS["drive_lane"]:  # written as base forms, read with every inflection
+        words |= set(forms(phrase.split()[0]))
     for words_, _ in lx.TIME_PRESETS:
         words |= _words_of(words_)
     for cat in catalog().values():
