@@ -126,7 +126,7 @@ class Verdict:
 # A thing said to be on its way somewhere: "a bus going east", "a truck heading north".
 _HEADING = re.compile(r"\b(?:going|heading|cruising)(?= (?:to |towards? )?(?:the )?(?:north|south|east|west))")
 # Words that ask a thing to drive or ride.
-_DRIVE_VERB = re.compile(r"\b(?:drive|drives|driving|ride|rides|riding)\b(?! (?:lane|way|through))")
+_DRIVE_VERB = re.compile(r"\b(?:drive|drives|driving|drove|ride|rides|riding|rode)\b(?! (?:lane|way|through))")
 
 
 @dataclass(frozen=True)

@@ -676,7 +676,7 @@ def unnamed_compass_places(low: str, scene: Scene) -> list[str]:
     for m in _COMPASSED.finditer(low):
         way, kind = m.groups()
         named = sorted(n for n in names if n.split()[-1] == kind and n.split()[0] in md.COMPASS_VECTORS)
-        if named and f"{way} {kind}" not in names:
+        if named and not any(n.split()[0] == way for n in named):  # "the west lot" is the west parking lot
             out.append(f"there is no '{way} {kind}' in this world (there are {', '.join(named)})")
     return out
 

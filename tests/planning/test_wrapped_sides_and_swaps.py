@@ -219,3 +219,57 @@ def test_replacing_the_ego_is_refused_with_what_can_be_done(session, campus):
     assert not report.ok
     assert "ego" in (report.error or "") and "move it" in (report.error or "")
     assert session.scene.assets == campus.assets
+
+
+def test_a_complaint_about_who_put_a_thing_there_points_it_out(session, campus):
+    before = session.scene.count("fire_hydrant")
+    report = session.submit("honestly, who put a hydrant right by the crossroads? get rid of it")
+    assert report.ok, report.error
+    assert session.scene.count("fire_hydrant") == before - 1
+    assert session.scene.asset("fire_hydrant_1") is None  # the one by the crossroads
+
+
+def test_next_to_it_after_a_second_thing_is_the_first_one(session, campus):
+    report = session.submit("move the bench to the fountain and the bin right next to it")
+    assert report.ok, report.error
+    bench, bin_ = session.scene.asset("bench_1"), session.scene.asset("trash_bin_1")
+    assert _dist(bin_, (bench.pose.x, bench.pose.y)) < 4.0
+
+
+def test_a_rough_count_said_last_is_the_count(session, campus):
+    report = session.submit("cones along the westbound lane by the library, roughly 7")
+    assert report.ok, report.error
+    assert len(_added(session, campus, "traffic_cone")) == 7
+
+
+def test_the_sun_sinking_is_sunset(session, campus):
+    report = session.submit("and now the sun is sinking behind the library")
+    assert report.ok, report.error
+    assert 17 <= int(session.scene.environment.time_of_day.split(":")[0]) <= 20
+
+
+def test_the_same_again_at_another_lot_uses_its_entrance_too(session, campus):
+    session.submit("line four cones across the lot A entrance")
+    report = session.submit("now the same again for lot B")
+    assert report.ok, report.error
+    entrance = campus.landmark("parking lot B entrance").position
+    new = [a for a in session.scene.assets if a.category == "traffic_cone" and _dist(a, entrance) < 6.0]
+    assert len(new) == 4
+
+
+@pytest.mark.parametrize(("prompt", "word"), [("stand a bin by the gate", "gate"), ("add a bench at the entrance", "entrance")])
+def test_a_place_word_several_places_share_is_asked_about(session, campus, prompt, word):
+    report = session.submit(prompt)
+    assert not report.ok and report.question is not None
+    assert word in report.question.text and len(report.question.readings) >= 2
+    assert session.scene.assets == campus.assets
+    session.choose(2)
+    added = [a for a in session.scene.assets if campus.asset(a.id) is None]
+    assert len(added) == 1
+
+
+def test_right_before_a_place_only_stresses_it(session, campus):
+    report = session.submit("move the bench to the fountain, and the bin right next to it")
+    assert report.ok, report.error
+    bench, bin_ = session.scene.asset("bench_1"), session.scene.asset("trash_bin_1")
+    assert _dist(bin_, (bench.pose.x, bench.pose.y)) < 4.0  # beside it, not 3 m to its right

@@ -61,6 +61,8 @@ def referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[s
     """Existing assets a clause refers to, or [] when it names none."""
     found = _referenced(r, scene, memory, notes)
     if found:
+        if notes.subject and notes.subject != found:
+            notes.earlier = [*notes.subject, *notes.earlier]
         notes.subject = found
     return found
 

@@ -30,7 +30,8 @@ _LAMP_CONTEXT = ("street", "streets", "lamps", "headlights", "lights", "light up
 
 
 # The sun said of the time, not the weather: "before the sun goes down", "as the sun rises".
-_SUN_MOVING = re.compile(r"\bsun\s+(?:goes|going|has gone|is going|went|sets|setting|is setting|rises|rising|is rising|comes up|coming up|up|down)\b")
+_SUN_MOVING = re.compile(r"\bsun\s+(?:goes|going|has gone|is going|went|sets|setting|is setting|rises|rising|is rising|comes up|coming up|up|down"
+                         r"|sinks?|sinking|is sinking|dips?|dipping|hangs? low|low in the sky)\b")
 
 
 # The weather set to a kind by name ("the weather be set to clear", "weather: clear", "switch the weather to snow").
@@ -73,6 +74,8 @@ def weather(r: Reading) -> ToolCall | None:
     return None
 
 
+# The sun low in the sky, going down: sunset ("the sun sinks low over the campus").
+_SUN_SINKING = re.compile(r"\bsun\s+(?:is\s+)?(?:sinks?|sinking|dips?|dipping|hangs? low|hanging low|low in the sky)\b")
 # The time just before dark, said by what comes after it.
 _BEFORE_DARK = re.compile(r"\b(?:just |right )?before (?:the )?(?:sun (?:goes|has gone|is going) down|sun sets|sunset|sundown|dark|nightfall)\b")
 
@@ -84,7 +87,7 @@ def time_of_day(r: Reading) -> ToolCall | None:
         return ToolCall(tool="set_time_of_day", args={"time": str(said)})  # the tool refuses "25:70"
     if r.has(("lunchtime", "lunch time", "lunch")):
         return ToolCall(tool="set_time_of_day", args={"time": "12:30"})
-    if _BEFORE_DARK.search(r.low):  # "the last light before the sun goes down": not yet night
+    if _BEFORE_DARK.search(r.low) or _SUN_SINKING.search(r.low):  # "the last light before the sun goes down": not yet night
         return ToolCall(tool="set_time_of_day", args={"time": "sunset"})
     for words, preset in lx.TIME_PRESETS:
         if r.has(words):

@@ -72,6 +72,7 @@ class Notes:
     place: dict[str, Any] | None = None
     subject: list[str] = field(default_factory=list)
     named: list[str] = field(default_factory=list)  # the subject before new things became it
+    earlier: list[str] = field(default_factory=list)  # the subjects before it, newest first
     coming: list[str] = field(default_factory=list)  # ids its earlier clauses' new things will get
 
     def adding(self, scene: Scene, category: str, count: int) -> None:
@@ -280,7 +281,9 @@ def location(
         target = "ego"
     if target is None and _BY_IT.search(r.low):
         # "... and a sign next to it": what an earlier clause adds, else the thing it or the last turn named
-        named = [i for i in [*notes.subject, *memory.last_touched()] if i not in exclude and scene.asset(i) is not None]
+        # ("move the bench to the fountain and the bin next to it": the bench, the subject before the bin)
+        named = [i for i in [*notes.subject, *notes.earlier, *memory.last_touched()]
+                 if i not in exclude and scene.asset(i) is not None]
         if notes.coming or named:
             return {"relation": relation_of(r.low), "target": (notes.coming or named)[-1 if notes.coming else 0]}
     if target is None and r.has(("there", "same place", "same spot", "nearby", "around it", "near it", "that spot")):

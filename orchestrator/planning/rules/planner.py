@@ -16,7 +16,8 @@ from dataclasses import replace
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, TraceStep
+from drivetwin.orchestrator.planning.base import Reading as Choice
 from drivetwin.orchestrator.planning.intent import (
     FEWER_WORDS,
     HABITUAL,
@@ -25,6 +26,7 @@ from drivetwin.orchestrator.planning.intent import (
     without_reason,
     wrapped_request,
 )
+from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
@@ -54,6 +56,10 @@ from drivetwin.worlds.scene import Scene
 from drivetwin.worlds.surface import nearest_on_polyline, surface_at
 
 PROMPT_VERSION = "rules-2"
+# The guess noted when a clause says where but names no place the world has.
+_UNRECOGNISED = "the place named was not recognised"
+# Readings offered when a place word fits several places.
+MAX_READINGS = 3
 # Confidence when every content word was understood and nothing was guessed.
 FULL_CONFIDENCE = 0.95
 # How much each unknown content word lowers the confidence.
@@ -303,6 +309,29 @@ class RulePlanner:
             unknown += _unknown_words(clause, scene)
         return calls, unknown, skipped, described
 
+    def _which_place(self, prompt: str, context: PlanContext) -> Plan | None:
+        """A question offering the request at each place its place word may mean, when it names
+        a kind of place several places are ("by the gate"); None when it does not."""
+        low = prompt.lower()
+        for said in _THE_KIND.finditer(low):
+            places = _places_called(context.scene, said.group(1))
+            if len(places) < 2:
+                continue
+            readings = []
+            for name in places[:MAX_READINGS]:
+                text = prompt[: said.start(1) - 4] + f"the {name}" + prompt[said.end(1) :]
+                try:
+                    reading = self.plan(text, context)
+                except PlanningError:
+                    continue
+                if reading.calls and _UNRECOGNISED not in reading.trace[0].output:
+                    readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
+            if len(readings) >= 2:
+                step = TraceStep(level="rules", input=prompt, output=f"{said.group(1)!r} names {', '.join(places)}; asking")
+                return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
+                            question=Question(text=f"Which {said.group(1)} do you mean?", readings=readings))
+        return None
+
     def plan(self, prompt: str, context: PlanContext) -> Plan:
         started = time.perf_counter()
         scene = context.scene
@@ -342,6 +371,8 @@ class RulePlanner:
             )
         for clause in skipped:
             notes.guess(f"ignored {clause!r}")
+        if _UNRECOGNISED in notes.guesses and (question := self._which_place(prompt, context)) is not None:
+            return question  # "put a cone by the gate": the main gate or the east gate?
         confidence = FULL_CONFIDENCE - UNKNOWN_WORD_PENALTY * len(unknown) - GUESS_PENALTY * len(notes.guesses)
         why = "; ".join([*notes.guesses, *(f"unknown word {w!r}" for w in unknown)]) or "understood every word"
         step = TraceStep(
@@ -377,6 +408,15 @@ def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:
         if math.dist((nearest.pose.x, nearest.pose.y), landmark.position) <= DESCRIBED_NEAR_M:
             found.append(nearest.id)
     return found
+
+
+def _places_called(scene: Scene, word: str) -> list[str]:
+    """The landmarks one of whose names ends in `word` ("gate": the main gate and the east gate)."""
+    return [lm.name for lm in scene.landmarks if any(ph.tokens(ph.normalise(n))[-1:] == [word] for n in lm.names())]
+
+
+# A place said by a word several places' names end in ("by the gate", "outside the building").
+_THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+the\s+([a-z]+)\b")
 
 
 def _unknown_words(clause: str, scene: Scene) -> list[str]:
@@ -828,8 +868,9 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
         where = _beside_last(scene, memory) or _fallback_place(memory)
     if where is None and notes.place is not None and r.has(("there", "instead")):
         where = dict(notes.place)
-    if where is None and said_a_place(r) and kind is None:
-        notes.guess("the place named was not recognised")
+    kind_of_place = any(_places_called(scene, m.group(1)) for m in _THE_KIND.finditer(r.low))  # "at the entrance"
+    if where is None and (said_a_place(r) or kind_of_place) and kind is None:
+        notes.guess(_UNRECOGNISED)
     if where is not None:
         args["location"] = where
         notes.place = where

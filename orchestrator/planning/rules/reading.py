@@ -344,7 +344,9 @@ def read(text: str, scene: Scene) -> Reading:
 
 
 # A count said after the thing: "cones x4", "... 6 of them".
-_COUNT_AFTER = re.compile(r"^\s*[x×]\s?(\d+)\b|\b(\d+|[a-z]+) of them\b")
+# "cones x4", "a ring of people, 6 of them", "lining the lane with cones, like 10" (a rough count said last)
+_COUNT_AFTER = re.compile(r"^\s*[x×]\s?(\d+)\b|\b(\d+|[a-z]+) of them\b"
+                          r"|,\s*(?:like|about|around|roughly|maybe|say|approximately|approx\.?)\s+(\d+)\s*(?:or so)?\s*[.!?]*\s*$")
 
 
 def find_count(reading: Reading, mention: ph.Mention) -> int | None:
@@ -356,7 +358,7 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
         return partitive
     after = _COUNT_AFTER.search(reading.low[mention.end :])  # "cones x4", "a ring of people, 6 of them"
     if after is not None:
-        word = after.group(1) or after.group(2)
+        word = next(g for g in after.groups() if g)
         return int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
     words = ph.tokens(before)
     for k in range(len(words) - 1, max(-1, len(words) - 5), -1):

@@ -58,7 +58,7 @@ def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             lane = place.get("lane") or place.get("target")  # "ditto for the westbound lane": traffic in that lane
             args["behaviour"], used = {**args["behaviour"], "lane": lane}, True
         if place is not None and "location" in args:
-            args["location"], used = dict(place), True
+            args["location"], used = _alike(dict(place), args["location"], scene), True
         elif place is not None and call.tool == "remove_assets" and "near" in args and "target" in place:
             args["near"], used = str(place["target"]), True
         elif things and _retarget(call.tool, args, things, out):
@@ -82,6 +82,18 @@ def _last_edit(memory: Memory) -> tuple[Turn, list[ToolCall]]:
             except (SyntaxError, ValueError):
                 break
     raise PlanningError("there is no earlier edit to repeat; say what to do")
+
+
+def _alike(place: dict[str, Any], was: Any, scene: Scene) -> dict[str, Any]:
+    """The place named, at the part of it the last edit used: "same again, but at lot B" after a
+    line across the lot A entrance is across the lot B entrance, when lot B has one."""
+    before, target = (was or {}).get("target") if isinstance(was, dict) else None, place.get("target")
+    if not isinstance(before, str) or not isinstance(target, str) or scene.landmark(before) is None:
+        return place
+    for part in (" entrance", " driveway"):
+        if before.endswith(part) and not target.endswith(part) and scene.landmark(target + part) is not None:
+            return {**place, "target": target + part}
+    return place
 
 
 def _retarget(tool: str, args: dict[str, Any], things: list[str], out: list[ToolCall]) -> bool:

@@ -327,6 +327,13 @@ _THING_PRONOUN = re.compile(r"\b(?:him|her)(?=\s+(?:at|to|in|on|by|near|next|beh
                             r"away|out|up|down|round|around|closer|further)\b|\s*[,.;!?]|\s*$)", re.IGNORECASE)
 
 
+# "right next to it", "right by the gate": "right" only stresses the place, it names no side.
+_RIGHT_THERE = re.compile(r"(?<!turn )(?<!turns )(?<!turning )(?<!go )(?<!goes )(?<!keep )(?<!bear )(?<!veer )(?<!steer )"
+                          r"(?<!move )(?<!moves )(?<!pull )(?<!shift )(?<!step )(?<!the )(?<!a )(?<!m )(?<!metres )(?<!take )(?<!make )"
+                          r"\bright (?=(?:next to|by|beside|behind|in front of|at|outside|near|up against|against|"
+                          r"where|there|here|on top of|in the middle of|across from|opposite)\b)", re.IGNORECASE)
+
+
 # "turn of the street light": "of" right after a switching verb is a slip for "off".
 _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
 
@@ -397,6 +404,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _THERE_SLIP.sub("there", text)
     text = _THING_PRONOUN.sub("it", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
+    text = _RIGHT_THERE.sub("", text)
     text = _joined_apart(text, vocab)
     repairs: list[str] = []
 
