@@ -185,8 +185,8 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
     """The clauses of a prompt, each with whether it was asked as a question and whether it only
     introduces what follows its colon ("our robot needs a warning: put ..."); without the clauses
     that say why unless `reasons`."""
-    said = prompt if reasons else without_reason(prompt).strip() or prompt
-    parts = _SPLIT.split(_TRAILING_OFF.sub(" ", said))
+    kept = prompt if reasons else without_reason(prompt).strip() or prompt
+    parts = _SPLIT.split(_TRAILING_OFF.sub(" ", kept))
     out: list[tuple[str, bool, bool]] = []
     lead = ""  # the last clause's words up to its verb, for a clause that only names another thing
     for i in range(0, len(parts), 2):
