@@ -273,3 +273,10 @@ def test_right_before_a_place_only_stresses_it(session, campus):
     assert report.ok, report.error
     bench, bin_ = session.scene.asset("bench_1"), session.scene.asset("trash_bin_1")
     assert _dist(bin_, (bench.pose.x, bench.pose.y)) < 4.0  # beside it, not 3 m to its right
+
+
+def test_a_place_no_place_of_the_world_fits_is_refused_by_name(session, campus):
+    report = session.submit("put a cone by the purple building")
+    assert not report.ok
+    assert "purple building" in (report.error or "") and "Library entrance" in (report.error or "")
+    assert session.scene.assets == campus.assets

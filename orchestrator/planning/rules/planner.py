@@ -60,6 +60,8 @@ PROMPT_VERSION = "rules-2"
 _UNRECOGNISED = "the place named was not recognised"
 # Readings offered when a place word fits several places.
 MAX_READINGS = 3
+# Places listed when a place named is not one of the world's.
+MAX_PLACES_LISTED = 8
 # Confidence when every content word was understood and nothing was guessed.
 FULL_CONFIDENCE = 0.95
 # How much each unknown content word lowers the confidence.
@@ -371,8 +373,15 @@ class RulePlanner:
             )
         for clause in skipped:
             notes.guess(f"ignored {clause!r}")
-        if _UNRECOGNISED in notes.guesses and (question := self._which_place(prompt, context)) is not None:
-            return question  # "put a cone by the gate": the main gate or the east gate?
+        if _UNRECOGNISED in notes.guesses:
+            question = self._which_place(prompt, context)
+            if question is not None:
+                return question  # "put a cone by the gate": the main gate or the east gate?
+            # "by the red building": said where, and no place of the world fits; never put it just anywhere
+            names = ", ".join(lm.name for lm in scene.landmarks[:MAX_PLACES_LISTED])
+            said = _PLACE_SAID.search(text.lower())
+            what = f"{said.group(1)!r}" if said else "the place you named"
+            raise PlanningError(f"I do not know {what} in this world; places here include {names}")
         confidence = FULL_CONFIDENCE - UNKNOWN_WORD_PENALTY * len(unknown) - GUESS_PENALTY * len(notes.guesses)
         why = "; ".join([*notes.guesses, *(f"unknown word {w!r}" for w in unknown)]) or "understood every word"
         step = TraceStep(
@@ -415,6 +424,9 @@ def _places_called(scene: Scene, word: str) -> list[str]:
     return [lm.name for lm in scene.landmarks if any(ph.tokens(ph.normalise(n))[-1:] == [word] for n in lm.names())]
 
 
+# The words a clause says a place with ("by the red building", "outside the hospital").
+_PLACE_SAID = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|close to)\s+(?:the\s+)?"
+                         r"((?:[a-z]+\s+){0,2}?[a-z]+)\s*(?:[,.;!?]|$|\b(?:and|please|with|so|for|to)\b)")
 # A place said by a word several places' names end in ("by the gate", "outside the building").
 _THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+the\s+([a-z]+)\b")
 
