@@ -54,6 +54,7 @@ from drivetwin.orchestrator.planning.coverage import (
     named_things,
     off_the_side,
     partial_removal,
+    place_dropped,
     unknown_places,
     unknown_things,
     unnamed_compass_places,
@@ -70,6 +71,7 @@ from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, kept_at
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import says_other_place
+from drivetwin.orchestrator.planning.rules.reading import counted_kinds
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.base import ToolCall
@@ -194,6 +196,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     touched = [*effect.added, *effect.removed, *(a for a in effect.changed if a.id != "ego")]
     if request.categories and touched:
         grouped = {c for members in md.groups_said(request.low).values() for c in members}  # "the vehicles"
+        grouped |= counted_kinds(request.low)  # "the second car from the left": SUVs are cars too
         strays = {a.category for a in touched} - request.categories - grouped - _companions(effect)
         if strays:
             out.append(f"you named {', '.join(sorted(request.categories))}, but the plan touches {', '.join(sorted(strays))}")
@@ -259,8 +262,10 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     single = not re.search(r",|;| and | also ", request.low)
     if request.question and single and any(c.tool in ("find_lanes", "find_landmarks") for c in effect.calls):
         named = set()  # "which lane would a car use": the lanes are the topic, the car its setting
+    counted = counted_kinds(request.low)  # "the second car from the left" may be any kind called a car
     out = [f"you named {c.replace('_', ' ')}, but the plan does nothing with it"
-           for c in missing_categories(named, scope, scene)]
+           for c in missing_categories(named, scope, scene)
+           if not (c in counted and any(a.category in counted for a in scope.touched))]
     out += [f"you referred to the {c.replace('_', ' ')} already there, but the plan adds another"
             for c in definite_but_added(request.masked, scope, scene)]
     if not request.question:
@@ -281,6 +286,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
     out += unknown_places(request.masked, effect.calls, scene)
     out += unnamed_compass_places(request.low, scene)
+    out += place_dropped(request.low, effect.calls)
     out += unknown_things(request.masked, effect.calls, scene)
     out += excepted_touched(request.excepted, _kinds_named(request), scope, scene)
     return out
@@ -306,7 +312,9 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
         out += look_left_out(request.low, effect.calls)
     if request.place is not None and effect.removed and names_group(request.low):
         near = _nearness(scene, request.place)
-        out += group_left_behind(request.low, effect.removed, [a for a in scene.all_assets() if near(a)])
+        spared = excepted_ids(request.excepted, _kinds_named(request), scene)  # "..., but keep the SUV"
+        out += group_left_behind(request.low, effect.removed,
+                                 [a for a in scene.all_assets() if near(a) and a.id not in spared])
     if request.polarity == "remove":  # "I don't want any rain any more" never makes it rain
         unwanted = [str(c.args.get("kind")) for c in effect.calls if c.tool == "set_weather"
                     and c.args.get("kind") not in (None, "clear") and re.search(rf"\b{c.args.get('kind')}", request.low)]

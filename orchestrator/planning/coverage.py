@@ -663,6 +663,28 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     return list(dict.fromkeys(out))
 
 
+# Where a request says a thing should go ("at the bus stp", "around the helipad", "by the eest gate"),
+# and sayings that only look like it ("at the moment", "by the way").
+_WHERE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in front of|behind|opposite|close to)"
+                         r"\s+the\s+(?!(?:moment|same time|end of the day|way|time|least|most|latest|earliest|start|end)\b)"
+                         r"([a-z][a-z ]{1,30}?)\s*(?:[,.;!?]|$|\b(?:and|please|pls|plz|with|so|for|to|now)\b)")
+_CENTRE_SAID = re.compile(r"\b(?:cent(?:re|er)|middle|origin|0\s*,\s*0)\b")
+
+
+def place_dropped(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
+    """A place said for what the plan puts down ("a bus at teh bus stp", "cones around the helipad")
+    that the plan puts nowhere in particular (no location, or the scene's centre it never said)."""
+    placing = [c for c in calls if c.tool in ("add_asset", "arrange_assets", "place_asset")]
+    said = _WHERE_SAID.search(low)
+    if not placing or said is None or _CENTRE_SAID.search(low):
+        return []
+    where = [c.args.get("location") for c in placing]
+    if all(not isinstance(w, dict) or w.get("relation") == "scene_centre" for w in where):
+        return [f"you said where ({said.group(0).strip(' ,.;!?')!r}), but the plan puts it nowhere in particular; "
+                f"there is no {said.group(1)!r} in this world that I know of"]
+    return []
+
+
 # A compass word before a word that may be a kind of place ("the south crosswalk", "north gate").
 _COMPASSED = re.compile(r"\b(north|south|east|west)[\s-]+([a-z]+)\b")
 
@@ -700,6 +722,7 @@ __all__ = [
     "named_things",
     "off_the_side",
     "partial_removal",
+    "place_dropped",
     "unknown_places",
     "unknown_things",
     "unnamed_compass_places",

@@ -148,6 +148,8 @@ _CONTRAST = re.compile(
     rf"(?:,\s*(?:but\s+|and\s+)?|\s+but\s+)(?:not|never)\s+(?=(?:{_DETERMINER}|in|at|on|by|near)\b"
     r"|(?:\d+(?:\.\d+)?|a few|several|so|that|too)\s*(?:m|metres?|meters?|feet|ft|far|away)\b)"
     rf"|\s+(?:except(?:\s+for)?|other\s+than|apart\s+from|excluding|save\s+for)\s+(?={_DETERMINER})"
+    # "remove the cars from lot B, but keep the SUV": what is kept is excepted
+    rf"|,?\s+but\s+(?:keep|leave|spare)\s+(?={_DETERMINER})"
     r"|\s+rather\s+than\s+(?=(?:the|that|this|those|these|a|an|in|at|on|by|near|its|their)\b)"
     r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
     re.IGNORECASE,

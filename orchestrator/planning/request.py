@@ -20,7 +20,13 @@ from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.conditions import condition
 from drivetwin.orchestrator.planning.rules.numbers import numbers_in
-from drivetwin.orchestrator.planning.rules.reading import FIRST_PERSON_EGO, find_lane, find_place, without_beneficiaries
+from drivetwin.orchestrator.planning.rules.reading import (
+    FIRST_PERSON_EGO,
+    find_lane,
+    find_place,
+    without_beneficiaries,
+    without_order,
+)
 from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.worlds.scene import Scene
 
@@ -68,6 +74,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
         masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
     masked = FIRST_PERSON_EGO.sub(lambda m: m.group(0)[: m.start(1) - m.start()] + "ego", masked)  # "behind us"
+    masked = without_order(masked)  # "the third car from the west": which one, not which way
     # A lane is named by its id, or by a direction said of a lane ("the westbound lane"), not by a
     # compass word alone ("2 m east", "facing north").
     lane = find_lane(scene, masked) if _LANE_WORDS.search(masked) else None

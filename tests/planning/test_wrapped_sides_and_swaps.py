@@ -280,3 +280,48 @@ def test_a_place_no_place_of_the_world_fits_is_refused_by_name(session, campus):
     assert not report.ok
     assert "purple building" in (report.error or "") and "Library entrance" in (report.error or "")
     assert session.scene.assets == campus.assets
+
+
+@pytest.mark.parametrize("prompt", ["set up a bus at teh bus stp", "a ring of bollards arround the heliport"])
+def test_a_place_said_but_dropped_from_the_plan_is_not_applied(session, campus, prompt):
+    report = session.submit(prompt)
+    assert not report.ok
+    assert "nowhere in particular" in (report.error or "") or "do not know" in (report.error or "")
+    assert session.scene.assets == campus.assets
+
+
+def test_an_ordinal_from_a_side_counts_across_the_map_over_every_kind_called_so(session, campus):
+    cars = sorted((a for a in campus.assets if "car" in a.category or a.category == "suv"), key=lambda a: a.pose.x)
+    report = session.submit("take away the second car from the west in lot B")
+    assert report.ok, report.error
+    assert session.scene.asset(cars[1].id) is None
+    assert all(session.scene.asset(c.id) is not None for c in cars if c is not cars[1])
+
+
+def test_an_ordinal_from_a_side_is_not_a_way_to_move(session, campus):
+    report = session.submit("push the first car from the east 3 m forward")
+    assert report.ok, report.error
+    moved = [a for a in session.scene.assets if campus.asset(a.id) != a]
+    assert len(moved) == 1 and abs(moved[0].pose.y - campus.asset(moved[0].id).pose.y) > 2.5  # lot B's cars face north
+
+
+def test_the_thing_nearest_a_place_is_the_one_changed(session, campus):
+    union = campus.landmark("Student Union entrance").position
+    nearest = min((a for a in campus.assets if a.category == "passenger_car"), key=lambda a: _dist(a, union))
+    report = session.submit("make the car closest to the Student Union orange")
+    assert report.ok, report.error
+    changed = [a.id for a in session.scene.assets if campus.asset(a.id) != a]
+    assert changed == [nearest.id]
+
+
+def test_but_keep_excepts_what_it_keeps(session, campus):
+    report = session.submit("clear the cars out of lot B, but leave the SUV")
+    assert report.ok, report.error
+    assert session.scene.asset("suv_1") is not None
+    assert session.scene.count("passenger_car") == campus.count("passenger_car") - 2
+
+
+def test_both_of_a_pair_are_both_changed(session, campus):
+    report = session.submit("paint both traffic lights white")
+    assert report.ok, report.error
+    assert all(a != campus.asset(a.id) for a in session.scene.assets if a.category == "traffic_light")

@@ -91,7 +91,12 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             present = [i for i in present if (a := scene.asset(i)) is not None and side[1](a)]
         if not present:
             return []
-        if mention.plural or r.has(("all", "every", "each")):
+        nearest = _NEAREST_TO.match(r.low[mention.end :])
+        if nearest is not None and not mention.plural:  # "the car nearest the Student Union"
+            point = _point_of(r, scene, memory)
+            if point is not None:
+                return [min(present, key=lambda i: _distance_to(scene, i, point))]
+        if mention.plural or r.has(("all", "every", "each", "both")):
             return present
         outermost = _outermost(r, scene, mention, present)
         if outermost is not None:
@@ -102,6 +107,24 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             return notes.subject
         return [i for i in memory.last_added() if scene.asset(i) is not None]
     return []
+
+
+# A thing picked out by what it is nearest ("the car nearest the union", "the bin closest to the ego").
+_NEAREST_TO = re.compile(r"\s*(?:that is |which is |that's )?(?:nearest|closest)(?: to)?\b")
+
+
+def _point_of(r: Reading, scene: Scene, memory: Memory) -> tuple[float, float] | None:
+    """Where the place or the ego the clause names is."""
+    landmark = scene.landmark(r.landmark) if r.landmark else None
+    if landmark is not None:
+        return landmark.position[0], landmark.position[1]
+    ego = scene.asset("ego") if r.ego else None
+    return (ego.pose.x, ego.pose.y) if ego is not None else None
+
+
+def _distance_to(scene: Scene, asset_id: str, point: tuple[float, float]) -> float:
+    asset = scene.asset(asset_id)
+    return math.inf if asset is None else math.dist((asset.pose.x, asset.pose.y), point)
 
 
 def _outermost(r: Reading, scene: Scene, mention: ph.Mention, present: list[str]) -> str | None:

@@ -7,6 +7,7 @@ blanked out, so the words inside them do not count twice ("bus stop" is a place,
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field, replace
 
@@ -14,7 +15,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.worlds.catalog import catalog
-from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.scene import AssetInstance, Scene
 
 # An article before a word; "lot A" at the end of a name keeps its letter.
 _ARTICLES = re.compile(r"\b(the|a|an)\s+(?=[a-z0-9])")
@@ -225,6 +226,44 @@ def _ego_span(low: str) -> tuple[int, int] | None:
     return (said.start(1), said.end(1)) if said else None
 
 
+# "(the second car) from the west", "... from the left (in lot B)": an order across the map, counted
+# from that side; left and right as the map is drawn, north up.
+_FROM_SIDE = re.compile(r"\s*(?:\w+\s+)?from\s+the\s+(west|east|north|south|left|right)\b")
+_SIDE_VECTORS = {"west": (-1.0, 0.0), "east": (1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0),
+                 "left": (-1.0, 0.0), "right": (1.0, 0.0)}
+# An ordinal counted from a side, as said, for blanking its compass word out of the clause's directions.
+_ORDER_SAID = re.compile(r"\b(?:first|second|third|fourth|fifth|last)\s+(?:\w+\s+){1,2}?(from\s+the\s+(?:west|east|north|south|left|right))\b")
+# Within this of a place named in the clause, things are counted as at it ("the second car from the west in lot B").
+ORDER_AT_PLACE_M = 25.0
+
+
+def counted_kinds(low: str) -> set[str]:
+    """The categories a thing counted from a side may be, by the word it was called ("the second
+    car from the left": every kind the catalog tags a car)."""
+    kinds: set[str] = set()
+    for said in _ORDER_SAID.finditer(low):
+        word = ph.singular(said.group(0).split()[-4])  # the noun before "from the <side>"
+        if word in md.catalog_tags():
+            kinds |= {c.name for c in catalog().values() if word in c.tags}
+    return kinds
+
+
+def without_order(masked: str) -> str:
+    """`masked` with each ordinal counted from a side blanked ("the third car from the west ...
+    forward"): it picks a thing out and says no way to move it."""
+    for said in _ORDER_SAID.finditer(masked):
+        masked = _blank(masked, said.start(1), said.end(1))
+    return masked
+
+
+def _at_named_place(scene: Scene, low: str, present: list[AssetInstance]) -> list[AssetInstance]:
+    place = find_place(scene, low)
+    landmark = scene.landmark(place[0]) if place else None
+    if landmark is None:
+        return []
+    return [a for a in present if math.dist((a.pose.x, a.pose.y), landmark.position) <= ORDER_AT_PLACE_M]
+
+
 def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[str], list[ph.Mention]]:
     """Assets named by category and number or ordinal: "car 2", "car two", "the second car"."""
     ids: list[str] = []
@@ -240,6 +279,14 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
             key=lambda a: int(a.id.rsplit("_", 1)[-1]) if a.id.rsplit("_", 1)[-1].isdigit() else 0,
         )
         ordinal = next((lx.ORDINALS[w] for w in reversed(before) if w in lx.ORDINALS), None)
+        side = _FROM_SIDE.match(low[mention.end :])
+        if ordinal is not None and side is not None:  # "the second car from the west": counted across the map
+            east, north = _SIDE_VECTORS[side.group(1)]
+            word = ph.singular(low[mention.start : mention.end].strip())
+            if word in md.catalog_tags():  # "the second car from the left": of every kind called a car, SUVs too
+                present = [a for a in scene.assets if word in catalog()[a.category].tags]
+            present = sorted(present, key=lambda a: -(a.pose.x * east + a.pose.y * north))
+            present = _at_named_place(scene, low, present) or present
         if number is not None and scene.asset(f"{mention.category}_{number}") is not None:
             ids.append(f"{mention.category}_{number}")
         elif ordinal is not None and present and -1 <= ordinal <= len(present) and ordinal != 0:
@@ -327,6 +374,7 @@ def read(text: str, scene: Scene) -> Reading:
     # "those cone I added": a plural said by its determiner when the noun is written singular
     mentions = [replace(m, plural=True) if re.search(r"\b(?:those|these|all)\s+$", low[: m.start]) else m for m in mentions]
     numbered, mentions = _numbered(scene, low, mentions)
+    masked = without_order(masked)
     return Reading(
         text=text,
         low=low,
@@ -392,4 +440,4 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
     return not present  # a bare noun: the one there is, if there is one
 
 
-__all__ = ["FIRST_PERSON_EGO", "Reading", "find_count", "find_lane", "find_place", "is_new", "read"]
+__all__ = ["FIRST_PERSON_EGO", "Reading", "counted_kinds", "find_count", "find_lane", "find_place", "is_new", "read", "without_order"]
