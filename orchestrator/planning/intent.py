@@ -52,6 +52,7 @@ _QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
 _INFO = re.compile(r"\b(tell me|show me|let me know|tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|"
                    r"(?:inventory|rundown|overview|summary|tally) of|how many|how far|how much|number of|count of|list of|"
+                   r"distance (?:between|from)|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
                    r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"

@@ -325,3 +325,29 @@ def test_both_of_a_pair_are_both_changed(session, campus):
     report = session.submit("paint both traffic lights white")
     assert report.ok, report.error
     assert all(a != campus.asset(a.id) for a in session.scene.assets if a.category == "traffic_light")
+
+
+def test_street_lighting_said_to_have_failed_is_off(session, campus):
+    report = session.submit("scenario note: evening, and the street lamps are out")
+    assert report.ok, report.error
+    assert session.scene.environment.lighting.street_lights == "off"
+
+
+def test_how_the_light_is_is_a_question_about_the_settings(session, campus):
+    report = session.submit("how's the light looking right now?")
+    assert report.ok, report.error
+    assert "time of day" in (report.answer or "")
+    assert session.scene.environment == campus.environment
+
+
+def test_a_terse_users_shell_words_are_read(session, campus):
+    report = session.submit("rm the bin @ bus stop")
+    assert report.ok, report.error
+    assert session.scene.asset("trash_bin_1") is None
+
+
+def test_a_distance_asked_for_without_a_question_word_is_measured(session, campus):
+    report = session.submit("distnace between the library and the fountain pls")
+    assert report.ok, report.error
+    assert " m " in (report.answer or "")
+    assert session.scene.assets == campus.assets

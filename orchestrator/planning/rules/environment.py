@@ -95,8 +95,15 @@ def time_of_day(r: Reading) -> ToolCall | None:
     return None
 
 
+# Street lamps said to be broken ("street lighting failed", "the streetlights are dead"): off.
+LIGHTS_DOWN = re.compile(r"\b(?:street ?light(?:s|ing)?|street ?lamps?|lamps|lighting)\s+(?:have |has |is |are )?"
+                          r"(?:failed|failing|out|dead|broken|down|not working|(?:gone|went|are|is) (?:out|dark))\b")
+
+
 def lights(r: Reading) -> ToolCall | None:
     """Street or vehicle lights switched on or off, or None."""
+    if LIGHTS_DOWN.search(r.low):  # "street lighting failed", "the lamps are out": off
+        return ToolCall(tool="set_lighting", args={"street_lights": "off"})
     if not r.has(lx.LIGHTS_WORDS) or r.has(("traffic light", "traffic lights")):
         return None
     if r.has(("light", "lights")) and not r.has((*_LAMP_CONTEXT, "on", "off")):
@@ -170,4 +177,4 @@ def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:
     return calls
 
 
-__all__ = ["brighter", "environment", "lights", "shifted_time", "time_of_day", "weather"]
+__all__ = ["LIGHTS_DOWN", "brighter", "environment", "lights", "shifted_time", "time_of_day", "weather"]

@@ -42,7 +42,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     referenced,
     remove,
 )
-from drivetwin.orchestrator.planning.rules.environment import environment, lights
+from drivetwin.orchestrator.planning.rules.environment import LIGHTS_DOWN, environment, lights
 from drivetwin.orchestrator.planning.rules.places import Notes, cross_section, location, said_a_place
 from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
@@ -523,6 +523,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     # "turn the lamps on", and a state wished for: "the street lights must be on", "lamps should be lit"
     switch = re.search(r"\b(turn|switch|put|flick|make)\b.*\b(on|off)\b|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit)\b"
                        r"|\b((?:street\s?)?lights?|(?:street\s?)?lamps?)\s+(on|off)\s*[.!]*\s*$", r.low)  # "street lights on."
+    switch = switch or LIGHTS_DOWN.search(r.low)  # "the street lamps are out": off
     if switch and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
         if lights(r) is not None:
             return environment(r, scene.environment)

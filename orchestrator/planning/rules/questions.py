@@ -115,7 +115,8 @@ _ASKS_HOW_IT_IS = re.compile(r"\s*(?:(?:so|ok|and|hey)\W+)*(?:what|what's|whats|
 _SWITCHED = frozenset({"street_light"})
 _ON_OFF = re.compile(r"\b(?:on or off|off or on|switched on|turned on|lit|on|off)\s*[?.!]*\s*(?:right now|now|at the moment)?\s*[?.!]*\s*$"
                      r"|\b(?:are|is) (?:the |all the |any of the )?(?:street ?)?(?:lights?|lamps?) (?:on|off|lit)\b")
-_SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|bright|light)|lights? (?:on|off)|lit)\b")
+_SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|bright|light)|how(?:'s| is) the light"
+                      r"|lights? (?:on|off)|lit)\b")
 
 
 def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:

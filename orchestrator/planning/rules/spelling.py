@@ -36,6 +36,8 @@ TWO_EDITS_LEN, ONE_EDIT_LEN = 7, 5
 _WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
 # Short slips too common to leave: a doubled letter dropped or a letter swapped.
 _SHORT_SLIPS = {
+    "rm": "remove",  # a terse user's shell words: "rm all bins", "mv ego 5m N"
+    "mv": "move",
     "ad": "add",
     "teh": "the",
     "adn": "and",
@@ -95,6 +97,7 @@ _REPAIRABLE_GRAMMAR = (
     "please",
     "another",
     "colour",
+    "distance",
     "every",  # scope words: "evry vehicle exept the ego" is not "very vehicle"
     "everything",
     "except",
