@@ -351,3 +351,9 @@ def test_a_distance_asked_for_without_a_question_word_is_measured(session, campu
     assert report.ok, report.error
     assert " m " in (report.answer or "")
     assert session.scene.assets == campus.assets
+
+
+def test_an_ellipsis_before_a_new_request_still_breaks_the_clause(session, campus):
+    report = session.submit("the wide shot looks a bit dull... could you park two cars in lot A?")
+    assert report.ok, report.error
+    assert len(_added(session, campus, "passenger_car")) == 2

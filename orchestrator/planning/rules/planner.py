@@ -177,7 +177,9 @@ _FIX = re.compile(r"(?:(?:please|pls|just|can you|could you|now)\s+)*(?:fix|sort
                   r"do something about|solve|remedy|correct|sort)\b(?:\s+(?:it|that|this|them))?\s*(?:please|pls|now)?\s*[.!?]*$",
                   re.IGNORECASE)
 # An ellipsis the sentence goes on after ("the bench by the stop... vanishes"): a pause, not a break.
-_TRAILING_OFF = re.compile(r"\s*(?:\.{3,}|\u2026)\s*(?=[a-z])")
+# What comes after it as a new clause ("... could you park three cars?", "... and then it pours") breaks.
+_TRAILING_OFF = re.compile(r"\s*(?:\.{3,}|\u2026)\s*(?=[a-z])(?!(?:could|can|would|will|please|pls|let'?s|and|but|so|then|now"
+                           r"|i|we|you|it|they|he|she|there|make|add|put|move|remove|set|turn|paint|take|get|give|have)\b)")
 # A sound or word of feeling before a clause ("ugh, it's going the wrong way"): it says nothing.
 _INTERJECTION = re.compile(r"^\s*(?:(?:ugh+|argh+|oh+|ah+|hmm+|um+|uh+|erm|well|wow|meh|gosh|great|brilliant|"
                            r"ok|okay|so|right|yeah|hey|huh|damn|dang|whoa|oops)\b\s*[,!.]+\s*)+")
