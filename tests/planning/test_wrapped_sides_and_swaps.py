@@ -357,3 +357,10 @@ def test_an_ellipsis_before_a_new_request_still_breaks_the_clause(session, campu
     report = session.submit("the wide shot looks a bit dull... could you park two cars in lot A?")
     assert report.ok, report.error
     assert len(_added(session, campus, "passenger_car")) == 2
+
+
+def test_the_same_look_for_another_thing_said_with_too(session, campus):
+    report = session.submit("make the bench as green as grass, and the bin beside it too")
+    assert report.ok, report.error
+    assert session.scene.asset("bench_1").appearance == session.scene.asset("trash_bin_1").appearance
+    assert session.scene.asset("trash_bin_1").pose == campus.asset("trash_bin_1").pose

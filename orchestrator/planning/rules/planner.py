@@ -176,6 +176,8 @@ _STATEMENT = re.compile(
 _FIX = re.compile(r"(?:(?:please|pls|just|can you|could you|now)\s+)*(?:fix|sort out|sort (?:it|that|this) out|deal with|"
                   r"do something about|solve|remedy|correct|sort)\b(?:\s+(?:it|that|this|them))?\s*(?:please|pls|now)?\s*[.!?]*$",
                   re.IGNORECASE)
+# A clause that asks for the same again of other things ("..., and the bin too", "the bollards as well").
+_TOO = re.compile(r"\b(?:too|as well)\s*[.!?]*\s*$")
 # An ellipsis the sentence goes on after ("the bench by the stop... vanishes"): a pause, not a break.
 # What comes after it as a new clause ("... could you park three cars?", "... and then it pours") breaks.
 _TRAILING_OFF = re.compile(r"\s*(?:\.{3,}|\u2026)\s*(?=[a-z])(?!(?:could|can|would|will|please|pls|let'?s|and|but|so|then|now"
@@ -295,6 +297,15 @@ class RulePlanner:
         for clause, asked, intro in clauses:
             reading = read(clause, scene)
             coming = len(notes.coming)
+            look = next((c for c in reversed(calls) if c.tool == "set_asset_appearance"), None)
+            if look is not None and _TOO.search(reading.low) and reading.mentions and not any(
+                    reading.has((c,)) for c in COLOURS):
+                # "the bench as yellow as a banana, and the bin next to it too": the same look for the bin
+                things = referenced(reading, scene, context.memory, notes)
+                if things:
+                    style = {k: v for k, v in look.args.items() if k in ("colour", "material")}
+                    calls.append(ToolCall(tool="set_asset_appearance", args={"assets": things, **style}))
+                    continue
             clause_calls = _plan_clause(reading, asked, scene, context.memory, notes)
             if reading.landmark:
                 notes.place = {"relation": "at", "target": reading.landmark}
