@@ -206,6 +206,9 @@ def _outer_place(scene: Scene, moving: list[str], way: tuple[float, float]) -> s
 # fountain"), how far unsaid: just past the place, beyond a junction's crossings (11.5 m from the
 # campus crossroads' centre) and the 10-15 m a place's name covers.
 COMPASS_OFFSET_M = 15.0
+# "a little north of", "just south of": a few metres past the place.
+LITTLE_OFFSET_M = 5.0
+_A_LITTLE = re.compile(r"\b(?:a little|a bit|slightly|just|a touch|a few (?:metres|meters|steps))\s*(?:to the\s*)?$")
 _COMPASS_OF = re.compile(r"\b(?:due\s+)?(north|south|east|west)\s+of\s+(?:the\s+)?(?=\S)")
 
 
@@ -220,7 +223,8 @@ def _compass_of(r: Reading, scene: Scene) -> dict[str, Any] | None:
         return None
     east, north = md.COMPASS_VECTORS[said.group(1)]
     metres = ph.find_distance(r.low[: said.start()])
-    away = metres if metres is not None else COMPASS_OFFSET_M
+    little = _A_LITTLE.search(r.low[: said.start()])  # "a little north of the north crosswalk": just past it
+    away = metres if metres is not None else LITTLE_OFFSET_M if little else COMPASS_OFFSET_M
     x, y = landmark.position[0] + east * away, landmark.position[1] + north * away
     said_lane = r.lane and not r.lane_guessed and re.search(r"\b(?:lanes?|[a-z]+bound)\b", r.low)
     lane = scene.roads.lane(r.lane) if said_lane and r.lane else None
@@ -319,6 +323,9 @@ def location(
 DRIVEWAY_IN_M = 4.5
 DRIVEWAY_WIDTH_M = 7.0
 BEYOND_PLACE_M = 15.0
+# "a little north of", "just south of": a few metres past the place.
+LITTLE_OFFSET_M = 5.0
+_A_LITTLE = re.compile(r"\b(?:a little|a bit|slightly|just|a touch|a few (?:metres|meters|steps))\s*(?:to the\s*)?$")
 _COMPASS_OF = re.compile(r"\b(north|south|east|west)\s+of\b")
 _UNIT = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
 

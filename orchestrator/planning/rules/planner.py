@@ -424,8 +424,8 @@ def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:
         where = call.args.get("location") or {}
         landmark = scene.landmark(str(where.get("target"))) if call.tool == "add_asset" and isinstance(where, dict) else None
         same = [a for a in scene.assets if a.category == call.args.get("category")]
-        if landmark is None or not same:
-            continue
+        if landmark is None or not same or call.args.get("count", 1) != 1:
+            continue  # "the vehicles in lot B look plain": several, named as they are, not one described
         nearest = min(same, key=lambda a: math.dist((a.pose.x, a.pose.y), landmark.position))
         if math.dist((nearest.pose.x, nearest.pose.y), landmark.position) <= DESCRIBED_NEAR_M:
             found.append(nearest.id)
