@@ -104,7 +104,7 @@ def test_hybrid_falls_back_to_a_half_sure_rule_plan_when_the_model_is_down(
 ) -> None:
     backend = ScriptedBackend([BackendUnavailable("no server", backend="scripted")])
     session = hybrid_session(campus, backend, spelling_grounder)
-    report = session.submit("put some pylons near the big building")
+    report = session.submit("put some pylns near the library, cheers")  # a repaired word and an unknown one: 0.6
     assert report.ok, report.error
     assert report.plan is not None and report.plan.trace[0].input == "path: fallback"
     assert "no server" in report.plan.trace[0].output
