@@ -329,12 +329,12 @@ class RulePlanner:
         a kind of place several places are ("by the gate"); None when it does not."""
         low = prompt.lower()
         for said in _THE_KIND.finditer(low):
-            places = _places_called(context.scene, said.group(1))
+            places = _places_called(context.scene, said.group("kind"))
             if len(places) < 2:
                 continue
             readings = []
             for name in places[:MAX_READINGS]:
-                text = prompt[: said.start(1) - 4] + f"the {name}" + prompt[said.end(1) :]
+                text = prompt[: said.start("said")] + f"the {name}" + prompt[said.end("said") :]
                 try:
                     reading = self.plan(text, context)
                 except PlanningError:
@@ -342,9 +342,10 @@ class RulePlanner:
                 if reading.calls and _UNRECOGNISED not in reading.trace[0].output:
                     readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
             if len(readings) >= 2:
-                step = TraceStep(level="rules", input=prompt, output=f"{said.group(1)!r} names {', '.join(places)}; asking")
+                kind = said.group("kind")
+                step = TraceStep(level="rules", input=prompt, output=f"{kind!r} names {', '.join(places)}; asking")
                 return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
-                            question=Question(text=f"Which {said.group(1)} do you mean?", readings=readings))
+                            question=Question(text=f"Which {kind} do you mean?", readings=readings))
         return None
 
     def plan(self, prompt: str, context: PlanContext) -> Plan:
@@ -441,7 +442,8 @@ def _places_called(scene: Scene, word: str) -> list[str]:
 _PLACE_SAID = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|close to)\s+(?:the\s+)?"
                          r"((?:[a-z]+\s+){0,2}?[a-z]+)\s*(?:[,.;!?]|$|\b(?:and|please|with|so|for|to)\b)")
 # A place said by a word several places' names end in ("by the gate", "outside the building").
-_THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+the\s+([a-z]+)\b")
+_THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+"
+                       r"(?P<said>the\s+(?:[a-z]+\s+)?(?P<kind>[a-z]+))\b")
 
 
 def _unknown_words(clause: str, scene: Scene) -> list[str]:
@@ -894,7 +896,7 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
         where = _beside_last(scene, memory) or _fallback_place(memory)
     if where is None and notes.place is not None and r.has(("there", "instead")):
         where = dict(notes.place)
-    kind_of_place = any(_places_called(scene, m.group(1)) for m in _THE_KIND.finditer(r.low))  # "at the entrance"
+    kind_of_place = any(_places_called(scene, m.group("kind")) for m in _THE_KIND.finditer(r.low))  # "at the entrance"
     if where is None and (said_a_place(r) or kind_of_place) and kind is None:
         notes.guess(_UNRECOGNISED)
     if where is not None:
