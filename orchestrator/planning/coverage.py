@@ -24,7 +24,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
-from drivetwin.orchestrator.planning.rules.places import side_of
+from drivetwin.orchestrator.planning.rules.places import PLACE_SAID, side_of
 from drivetwin.orchestrator.planning.rules.reading import find_place, used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.base import ToolCall
@@ -663,11 +663,6 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     return list(dict.fromkeys(out))
 
 
-# Where a request says a thing should go ("at the bus stp", "around the helipad", "by the eest gate"),
-# and sayings that only look like it ("at the moment", "by the way").
-_WHERE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in front of|behind|opposite|close to)"
-                         r"\s+the\s+(?!(?:moment|same time|end of the day|way|time|least|most|latest|earliest|start|end)\b)"
-                         r"([a-z][a-z ]{1,30}?)\s*(?:[,.;!?]|$|\b(?:and|please|pls|plz|with|so|for|to|now)\b)")
 _CENTRE_SAID = re.compile(r"\b(?:cent(?:re|er)|middle|origin|0\s*,\s*0)\b")
 
 
@@ -675,7 +670,7 @@ def place_dropped(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     """A place said for what the plan puts down ("a bus at teh bus stp", "cones around the helipad")
     that the plan puts nowhere in particular (no location, or the scene's centre it never said)."""
     placing = [c for c in calls if c.tool in ("add_asset", "arrange_assets", "place_asset")]
-    said = _WHERE_SAID.search(low)
+    said = PLACE_SAID.search(low)
     if not placing or said is None or _CENTRE_SAID.search(low):
         return []
     where = [c.args.get("location") for c in placing]

@@ -27,6 +27,7 @@ from drivetwin.orchestrator.planning.rules.reading import (
     without_beneficiaries,
     without_order,
 )
+from drivetwin.orchestrator.planning.rules.replacing import swap_said
 from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.worlds.scene import Scene
 
@@ -37,7 +38,6 @@ _PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
 # A category word after these describes the thing asked for ("a vehicle that carries passengers",
 # "a bench for pedestrians") rather than naming it.
 _DESCRIBING = re.compile(r"[a-z]\s+(that|which|who|with|for|carrying|carries|full of)\b[^,.;:]*$")
-_SWAP = re.compile(r"^\s*(?:(?:please|pls|can you|could you|would you|now|then|just)\s+)*(?:replace|swap|exchange)\b")
 _LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west)bound)\b")
 _PARKED = re.compile(r"\bparked\b")
 _SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")
@@ -86,7 +86,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     kinds_text = masked if place is None else low[: place[1]] + " lot " + low[place[2] :]
     for word in ph.EGO_WORDS:
         kinds_text = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", kinds_text)
-    swapped = _SWAP.match(low) is not None  # "replace the bench with a bin": the bin is asked for, not a description
+    swapped = swap_said(low) is not None  # "replace the bench with a bin": the bin is asked for, not a description
     categories = frozenset(m.category for m in without_beneficiaries(kinds_text, ph.find_categories(kinds_text))
                            if (swapped or not _DESCRIBING.search(kinds_text[: m.start])) and not _described_head(kinds_text, m))
     exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_checked_amounts(masked))  # "a tree or two"

@@ -136,6 +136,11 @@ def _anchor_point(r: Reading, scene: Scene, after: list[ph.Mention], exclude: li
     return (things[0].pose.x, things[0].pose.y) if len(things) == 1 else None
 
 
+# Where a request says a thing should go ("at the bus stp", "around the helipad", "by the eest gate"),
+# and sayings that only look like it ("at the moment", "by the way").
+PLACE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in front of|behind|opposite|close to)"
+                         r"\s+the\s+(?!(?:moment|same time|end of the day|way|time|least|most|latest|earliest|start|end)\b)"
+                         r"([a-z][a-z ]{1,30}?)\s*(?:[,.;!?]|$|\b(?:and|please|pls|plz|with|so|for|to|now)\b)")
 # Away from a sidewalk ("shove it somewhere off the sidewalk", "get it off the pavement"): not onto one.
 _OFF_SIDEWALK = re.compile(r"\b(?:off|away from|clear of|not on) (?:of )?(?:the |that |this )?(?:sidewalk|pavement|footpath|kerb|curb)\b")
 # A relation to what an earlier clause of the prompt adds: "a rover at the gate and a sign next to it".
@@ -440,4 +445,4 @@ def said_a_place(r: Reading) -> bool:
     return bool(re.search(r"\b(near|next to|beside|by|in front of|behind|outside|close to|over by)\b", r.masked))
 
 
-__all__ = ["PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]
+__all__ = ["PLACE_SAID", "PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]

@@ -43,7 +43,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     remove,
 )
 from drivetwin.orchestrator.planning.rules.environment import LIGHTS_DOWN, environment, lights
-from drivetwin.orchestrator.planning.rules.places import Notes, cross_section, location, said_a_place
+from drivetwin.orchestrator.planning.rules.places import PLACE_SAID, Notes, cross_section, location, said_a_place
 from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
 from drivetwin.orchestrator.planning.rules.repeat import repeat, repeats
@@ -393,7 +393,7 @@ class RulePlanner:
                 return question  # "put a cone by the gate": the main gate or the east gate?
             # "by the red building": said where, and no place of the world fits; never put it just anywhere
             names = ", ".join(lm.name for lm in scene.landmarks[:MAX_PLACES_LISTED])
-            said = _PLACE_SAID.search(text.lower())
+            said = PLACE_SAID.search(text.lower())
             what = f"{said.group(1)!r}" if said else "the place you named"
             raise PlanningError(f"I do not know {what} in this world; places here include {names}")
         confidence = FULL_CONFIDENCE - UNKNOWN_WORD_PENALTY * len(unknown) - GUESS_PENALTY * len(notes.guesses)
@@ -438,9 +438,6 @@ def _places_called(scene: Scene, word: str) -> list[str]:
     return [lm.name for lm in scene.landmarks if any(ph.tokens(ph.normalise(n))[-1:] == [word] for n in lm.names())]
 
 
-# The words a clause says a place with ("by the red building", "outside the hospital").
-_PLACE_SAID = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|close to)\s+(?:the\s+)?"
-                         r"((?:[a-z]+\s+){0,2}?[a-z]+)\s*(?:[,.;!?]|$|\b(?:and|please|with|so|for|to)\b)")
 # A place said by a word several places' names end in ("by the gate", "outside the building").
 _THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+"
                        r"(?P<said>the\s+(?:[a-z]+\s+)?(?P<kind>[a-z]+))\b")

@@ -22,7 +22,12 @@ _REPLACE = re.compile(r"^\s*(?:(?:please|pls|can you|could you|would you|now|the
 
 def replaces(r: Reading) -> re.Match[str] | None:
     """The old and new parts of a clause that asks to replace things, or None."""
-    return _REPLACE.match(r.low)
+    return swap_said(r.low)
+
+
+def swap_said(low: str) -> re.Match[str] | None:
+    """The same for lower-case words ("replace the bench with a bin"), for the plan check."""
+    return _REPLACE.match(low)
 
 
 def replace_things(said: re.Match[str], scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
@@ -50,4 +55,4 @@ def replace_things(said: re.Match[str], scene: Scene, memory: Memory, notes: Not
     return calls
 
 
-__all__ = ["replace_things", "replaces"]
+__all__ = ["replace_things", "replaces", "swap_said"]
