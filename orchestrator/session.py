@@ -27,6 +27,7 @@ from drivetwin.orchestrator.planning import (
     TraceStep,
 )
 from drivetwin.orchestrator.planning.check import review
+from drivetwin.orchestrator.planning.intent import history_request
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.edits import EditConflict, WorldEdit
@@ -153,6 +154,9 @@ class Session:
                 started,
             )
         self.pending = None  # a new prompt instead of a number drops an open question
+        history = history_request(text.lower())
+        if history is not None:  # "oops, undo that": the session's undo, not an edit read from the words
+            return self._history(text, history, started)
         planner = getattr(self.planner, "name", type(self.planner).__name__)
         with logs.turn_scope() as gathered:  # which models the planner asked, for the journal and the log
             try:
@@ -226,6 +230,17 @@ class Session:
         self.pending = None
         reading = question.readings[number - 1]
         return self._run(prompt, Plan(calls=list(reading.calls), planner="chosen", answer=None), time.perf_counter())
+
+    def _history(self, prompt: str, word: str, started: float) -> TurnReport:
+        """Undo or redo asked for in words: the newest change, as the `undo` and `redo` commands do."""
+        stack = self.history.done if word == "undo" else self.history.undone
+        change = f"change {stack[-1].txn} ({stack[-1].prompt!r})" if stack else ""
+        try:
+            diff = self.undo() if word == "undo" else self.redo()
+        except SessionError as exc:
+            return self._failed(prompt, f"{exc}; the scene is as it was", started)
+        done = f"undid {change}" if word == "undo" else f"redid {change}"
+        return TurnReport(prompt, True, None, [done], diff, None, time.perf_counter() - started, done)
 
     def _failed(self, prompt: str, error: str, started: float, plan: Plan | None = None) -> TurnReport:
         turn = Turn(prompt=prompt[:500], status="failed", results=[error[:300]])

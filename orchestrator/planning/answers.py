@@ -51,7 +51,10 @@ def unanswered(request: Request, calls: Sequence[ToolCall], scene: Scene) -> lis
     if _asks_what_stands_on_road(low) and not any(_looks_on_lanes(c) for c in calls):
         out.append("you asked what is on the road, but the plan does not look at what stands on the lanes")
     out += _describes_another(request, calls, scene)
-    parts = 1 + len(_SECOND_PART.findall(low))
+    seconds = [found[0] for found in _SECOND_PART.findall(low)]
+    if any(c.tool == "find_assets" for c in calls):  # a list of the things found says how many and where
+        seconds = [word for word in seconds if word not in ("where", "how many")]
+    parts = 1 + len(seconds)
     if len(calls) < parts:
         out.append(f"you asked {parts} things, but the plan answers {len(calls)}")
     return out

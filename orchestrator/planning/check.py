@@ -61,6 +61,7 @@ from drivetwin.orchestrator.planning.coverage import (
     unpointed,
     wrong_direction,
 )
+from drivetwin.orchestrator.planning.coverage import MIN_MOVE_M
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed, nearest_landmark
 from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, REMOVE_WORDS, asks
 from drivetwin.orchestrator.planning.readings import describe
@@ -228,6 +229,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += _coverage(request, effect, scene, context.memory)
     out += _attributes(request, effect, scene)
     out += wrong_direction(request.masked, scene, _moved(effect))
+    out += _wrong_way_to(request, scene, _moved(effect))
     out += _already_there(effect, scene)
     if request.state is not None and (effect.removed or effect.changed):
         before = [scene.asset(a.id) or a for a in effect.changed]  # as it was: "the parked SUV to pull out"
@@ -467,6 +469,30 @@ def _centre(scene: Scene, place: str) -> tuple[float, float] | None:
     except ToolError:
         return None
     return target.x, target.y
+
+
+# "Further from the bus stop", "closer to the library": the way the distance to the place must go.
+_NEARER = re.compile(r"\b(?:closer|nearer)(?: to)?\b|\btowards?\b")
+_FURTHER = re.compile(r"\b(?:further|farther|more)(?: away)? from\b|\baway from\b")
+
+
+def _wrong_way_to(request: Request, scene: Scene, moved: list[AssetInstance]) -> list[str]:
+    """Things a plan moves the other way from the one place the request says they should be
+    nearer to or further from ("push the bin further from the bus stop" never brings it nearer)."""
+    nearer, further = bool(_NEARER.search(request.low)), bool(_FURTHER.search(request.low))
+    centre = _centre(scene, request.place) if request.place is not None and nearer != further else None
+    if centre is None:
+        return []
+    out = []
+    for after in moved:
+        before = scene.asset(after.id)
+        if before is None or after.id == request.place:
+            continue
+        change = math.dist((after.pose.x, after.pose.y), centre) - math.dist((before.pose.x, before.pose.y), centre)
+        if (change < -MIN_MOVE_M) if further else (change > MIN_MOVE_M):
+            way = "nearer to" if further else "further from"
+            out.append(f"you said {'further from' if further else 'closer to'} {request.place}, but the plan moves {after.id} {way} it")
+    return out
 
 
 def _brought_closer(scene: Scene, asset: AssetInstance, place: str) -> bool:

@@ -24,7 +24,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
-from drivetwin.orchestrator.planning.rules.places import PLACE_SAID, side_of
+from drivetwin.orchestrator.planning.rules.places import BY_IT, PLACE_SAID, side_of
 from drivetwin.orchestrator.planning.rules.reading import find_place, used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.base import ToolCall
@@ -670,13 +670,13 @@ def place_dropped(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     """A place said for what the plan puts down ("a bus at teh bus stp", "cones around the helipad")
     that the plan puts nowhere in particular (no location, or the scene's centre it never said)."""
     placing = [c for c in calls if c.tool in ("add_asset", "arrange_assets", "place_asset")]
-    said = PLACE_SAID.search(low)
+    said = PLACE_SAID.search(low) or BY_IT.search(low)  # "... ahead of it": where the thing named before is
     if not placing or said is None or _CENTRE_SAID.search(low):
         return []
     where = [c.args.get("location") for c in placing]
     if all(not isinstance(w, dict) or w.get("relation") == "scene_centre" for w in where):
-        return [f"you said where ({said.group(0).strip(' ,.;!?')!r}), but the plan puts it nowhere in particular; "
-                f"there is no {said.group(1)!r} in this world that I know of"]
+        unknown = f"; there is no {said.group(1)!r} in this world that I know of" if said.re is PLACE_SAID else ""
+        return [f"you said where ({said.group(0).strip(' ,.;!?')!r}), but the plan puts it nowhere in particular{unknown}"]
     return []
 
 

@@ -31,6 +31,8 @@ REMOVE_WORDS = re.compile(
     r"|\b(?:vanish|disappear)(?:es|s|ed|ing)?\b|\bpoof\b"
     r"|\b(?:want|need|like|prefer|there (?:should|must|can|may|is to|are to) be|there'?s to be|(?:should|must) (?:be )?have) (?:no|zero)\b"
     r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to|uses?|needs?|wants?)"  # "nobody should be parked there"
+    # "make sure there are no cars in lot B", "ensure nobody is standing at the bus stop": a scene without them
+    r"|\b(?:make sure|ensure|see to it|check) (?:that )?(?:there (?:is|are|'s) )?(?:no|nothing|nobody|no one|no-one)\b"
 )
 # People doing what they do ("people will eat lunch on that bench", "students often cut across"):
 # who a statement is about, not a thing asked for.
@@ -258,6 +260,29 @@ _SUGGESTED = re.compile(r"^(?:(?:maybe|perhaps|possibly|how about|if there'?s (?
                         r"|(?:a|an|one|two|three|four|five|\d+) (?!(?:question|quick question|thing)\b)(?=[a-z]))\b")
 
 
+# A request to take back the last change or bring it back, said in words rather than as the
+# `undo` command ("oops, undo that", "revert the last edit", "scratch that", "redo please"): the
+# whole request, fillers aside. A request that names what to change back ("undo the red paint")
+# is an edit like any other and is not read here.
+_FILLERS = r"(?:(?:oops|whoops|oh no|uh oh|no|nah|hmm+|actually|sorry|ok(?:ay)?|please|pls|just|can you|could you|would you)[,!.\s]+)*"
+_LAST = r"(?:\s+(?:that|it|this|the last (?:change|edit|step|one|thing|request)|my last (?:change|edit|request)|what you (?:just )?did))"
+_TRAILER = r"(?:[\s,]+(?:please|pls|thanks|thank you|again))*\s*[.!?]*\s*$"
+_UNDO = re.compile("^" + _FILLERS + r"(?:undo" + _LAST + r"?|revert" + _LAST + r"?|roll(?:" + _LAST + r")? back" + _LAST + r"?"
+                   r"|take (?:that|it) back|scratch that|cancel (?:that|the last (?:change|edit))|go back (?:one|a) step"
+                   r"|(?:put|set|change) (?:it|that|everything) back (?:to )?(?:how|the way|as) it was)" + _TRAILER)
+_REDO = re.compile("^" + _FILLERS + r"(?:redo" + _LAST + r"?|undo the undo)" + _TRAILER)
+
+
+def history_request(low: str) -> str | None:
+    """"undo" or "redo" when the (lower-case) words ask only for that, else None."""
+    text = low.strip()
+    if _UNDO.match(text):
+        return "undo"
+    if _REDO.match(text):
+        return "redo"
+    return None
+
+
 def wrapped_request(low: str) -> bool:
     """Whether the (lower-case) words wrap a request for a change in a question ("is it possible
     to make the SUV drive ...?")."""
@@ -272,5 +297,5 @@ def asks(low: str) -> bool:
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))
 
 
-__all__ = ["ADD_WORDS", "FEWER_WORDS", "KEEP_SOME", "REMOVE_WORDS", "asks", "excepted", "without_contrast", "without_reason",
+__all__ = ["ADD_WORDS", "FEWER_WORDS", "KEEP_SOME", "REMOVE_WORDS", "asks", "excepted", "history_request", "without_contrast", "without_reason",
            "wrapped_request"]

@@ -70,6 +70,10 @@ def referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[s
 def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[str]:
     if r.ids:
         return r.ids
+    if not r.mentions and _ANY_NEAREST.search(r.low):  # "whatever is closest to the ego": of every kind
+        point = _point_of(r, scene, memory)
+        pool = [a.id for a in scene.assets if a.id != "ego"]
+        return [min(pool, key=lambda i: _distance_to(scene, i, point))] if point is not None and pool else []
     # "put the SUV behind the ego": the thing named first is what moves, the ego where it goes.
     ego_anchors = (bool(r.mentions) and r.mentions[0].start < r.ego_at) or bool(
         _ANCHOR_BEFORE.search(r.low[: max(r.ego_at, 0)]))  # "everything near the ego": the ego is where
@@ -109,6 +113,10 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
     return []
 
 
+# Anything at all, picked out by what it is nearest: "whatever is closest to the ego", "the nearest
+# object to the fountain", "the thing nearest the gate".
+_ANY_NEAREST = re.compile(r"\b(?:(?:whatever|anything|something|the (?:thing|object|item|prop))\s+(?:that'?s |which is |that is |is )?"
+                          r"(?:nearest|closest)|the (?:nearest|closest) (?:thing|object|item|prop))\b")
 # A thing picked out by what it is nearest ("the car nearest the union", "the bin closest to the ego").
 _NEAREST_TO = re.compile(r"\s*(?:that is |which is |that's )?(?:nearest|closest)(?: to)?\b")
 
@@ -247,9 +255,10 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         if r.has(lx.WORKS_WORDS):
             works = [c.name for c in catalog().values() if "maintenance" in c.tags and scene.count(c.name)]
             return [ToolCall(tool="remove_assets", args={"category": c}) for c in works] or None
-        if r.landmark and r.has(("nobody", "no one", "no-one")):
-            # "nobody should be parked at X": the vehicles there; "... standing at X": the walkers
-            motion = "vehicle" if r.has(lx.BEHAVIOUR_WORDS["parked"]) else "walker"
+        parked_said = r.has(lx.BEHAVIOUR_WORDS["parked"])
+        if r.landmark and (r.has(("nobody", "no one", "no-one")) or (parked_said and r.has(("nothing",)))):
+            # "nobody should be parked at X", "nothing parked in X": the vehicles there; "... standing at X": the walkers
+            motion = "vehicle" if parked_said else "walker"
             there = [a.id for a in scene.assets if catalog()[a.category].motion == motion and a.category != "ego_vehicle"]
             ids = _at_place(scene, r.landmark, there, reach=NEAR_PLACE_M)
             return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
@@ -412,12 +421,13 @@ def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
 _UP = re.compile(r"\b(?:move|moves|moved|inch|edge|creep|roll|bring|shift)\s+(?:\S+\s+){0,3}up\b(?!\s+(?:to|the|north))")
 
 
-_TOWARD = re.compile(r"\b(?:towards?|in the direction of)\b")
+_TOWARD = re.compile(r"\b(?:towards?|in the direction of|(?:closer|nearer)(?: to)?|(?P<away>(?:further|farther|more|well)(?: away)? from|away from))\b")
 
 
 def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> dict[str, float] | None:
     """East and north for moving `ids` `shift` metres toward the place, road or ego named after
-    "toward", from the middle of where they stand; None when the words say no such move."""
+    "toward" or "closer to" (away from it after "further from" or "away from"), from the middle of
+    where they stand; None when the words say no such move."""
     said = _TOWARD.search(r.low)
     things = [a for i in ids if (a := scene.asset(i)) is not None]
     if said is None or shift is None or not things:
@@ -439,7 +449,8 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> di
     gap = math.dist((x, y), goal)
     if gap < 1e-6:
         return None
-    return {"east": round(shift * (goal[0] - x) / gap, 2), "north": round(shift * (goal[1] - y) / gap, 2)}
+    step = -shift if said.group("away") else shift
+    return {"east": round(step * (goal[0] - x) / gap, 2), "north": round(step * (goal[1] - y) / gap, 2)}
 
 
 # Words for a small step ("a bit", "a tiny bit", "slightly").
@@ -492,7 +503,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         notes.subject = [asset]
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": behaviour_spec(kind, r)})]
     # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
-    scoped = bool(r.mentions) and _scoped_by_place(r, r.mentions[0])
+    scoped = (bool(r.mentions) and _scoped_by_place(r, r.mentions[0])) or (not r.mentions and bool(_ANY_NEAREST.search(r.low)))
     anchored = (r.landmark and not scoped) or (r.ego and "ego" not in ids) or any(i not in ids for i in r.ids)
     small = r.has((*_SMALL, "a touch", "nudge", "inch", "budge", "scoot"))
     shift = metres if metres is not None else (SMALL_STEP_M if small else None)
@@ -500,6 +511,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         notes.guess("how far to move")  # "the SUV should pull forward a few metres"
         shift = DEFAULT_STEP_M
     moved: dict[str, Any] = {"asset": asset} if len(ids) == 1 else {"assets": ids}
+    if shift is None and (away := _TOWARD.search(r.low)) is not None and away.group("away"):
+        notes.guess("how far to move it")  # "push the bin further from the bus stop": a step away, never onto it
+        shift = DEFAULT_STEP_M
     toward = _toward(r, scene, ids, shift)
     if toward is not None:  # "4 m toward Main Street": straight at it, from where they stand
         return [ToolCall(tool="move_asset", args={**moved, **toward})]
@@ -520,12 +534,19 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if kind == "parked":
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
     if r.has(("move", "shift", "nudge", "push", "slide", "budge", "relocate")):
+        if (said := _DESTINATION.search(r.low)) is not None:  # a place it goes to, said but not found: never a guess
+            raise ph_error(f"I could not tell where {said.group(0)!r} is; name a place of this world or say how far which way")
         notes.guess("where to move it")
         step = metres or (SMALL_STEP_M if r.has(_SMALL) else DEFAULT_STEP_M)
         every = [scene.asset(i) for i in ids]
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]
     return None
+
+
+# Where a thing is to go, said after the verb ("move it to the gym", "shift the bench over to the
+# quad"): when no place of the world is found there, the move is not guessed.
+_DESTINATION = re.compile(r"\b(?:to|into|onto|over to|up to|across to)\s+(?:the|a|an|that|this)\s+[a-z]+")
 
 
 # A short step said with its way ("forward a tiny bit", "back 2 m", "left slightly").

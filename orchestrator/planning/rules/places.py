@@ -144,7 +144,7 @@ PLACE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in
 # Away from a sidewalk ("shove it somewhere off the sidewalk", "get it off the pavement"): not onto one.
 _OFF_SIDEWALK = re.compile(r"\b(?:off|away from|clear of|not on) (?:of )?(?:the |that |this )?(?:sidewalk|pavement|footpath|kerb|curb)\b")
 # A relation to what an earlier clause of the prompt adds: "a rover at the gate and a sign next to it".
-_BY_IT = re.compile(r"\b(?:next to|beside|by|near|behind|in front of|alongside|around)\s+(?:it|them)\b")
+BY_IT = re.compile(r"\b(?:next to|beside|by|near|behind|in front of|ahead of|alongside|around|opposite|(?:left|right) of)\s+(?:it|them|him|her)\b")
 # "There" after a turn that put things somewhere: beside the one of them within this of its focus.
 THERE_BESIDE_M = 6.0
 
@@ -288,7 +288,7 @@ def location(
         target = ids[0]
     elif target is None and r.ego and "ego" not in exclude:
         target = "ego"
-    if target is None and _BY_IT.search(r.low):
+    if target is None and BY_IT.search(r.low):
         # "... and a sign next to it": what an earlier clause adds, else the thing it or the last turn named
         # ("move the bench to the fountain and the bin next to it": the bench, the subject before the bin)
         named = [i for i in [*notes.subject, *notes.earlier, *memory.last_touched()]
@@ -445,4 +445,4 @@ def said_a_place(r: Reading) -> bool:
     return bool(re.search(r"\b(near|next to|beside|by|in front of|behind|outside|close to|over by)\b", r.masked))
 
 
-__all__ = ["PLACE_SAID", "PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]
+__all__ = ["BY_IT", "PLACE_SAID", "PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]

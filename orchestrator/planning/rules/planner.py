@@ -46,7 +46,7 @@ from drivetwin.orchestrator.planning.rules.environment import LIGHTS_DOWN, envir
 from drivetwin.orchestrator.planning.rules.places import PLACE_SAID, Notes, cross_section, location, said_a_place
 from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
-from drivetwin.orchestrator.planning.rules.repeat import repeat, repeats
+from drivetwin.orchestrator.planning.rules.repeat import correct, corrects, repeat, repeats
 from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces
 from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
@@ -510,6 +510,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return None  # "before I add anything": a circumstance, not a request
     if repeats(r):  # "repeat that outside Engineering Hall", "ditto for the bus", "do the same again?"
         return repeat(r, scene, memory, notes)
+    if corrects(r):  # "actually, make that five": the last edit's things, as many as that
+        return correct(r, scene, memory)
     if _is_question(r, asked):
         looked_up = plan_question(r, scene, memory, notes)
         if [(c.tool, c.args) for c in looked_up] == [("find_assets", {})] and not (r.mentions or r.ids or r.ego or r.landmark):

@@ -1,6 +1,7 @@
 """A request to do the last edit again ("repeat that outside Engineering Hall", "ditto for the
 bus", "do the same again"): the last edit's calls once more, at the place or on the things this
 clause names. What the clause says that the last edit has no slot for is refused, never dropped.
+A new amount for the last edit ("actually, make that five") is the same edit with that amount.
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ from typing import Any
 
 from drivetwin.orchestrator.memory import Memory, Turn
 from drivetwin.orchestrator.planning.base import PlanningError
+from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules.edits import referenced
 from drivetwin.orchestrator.planning.rules.places import Notes, location
 from drivetwin.orchestrator.planning.rules.reading import Reading
@@ -73,6 +75,49 @@ def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     return out
 
 
+# A new amount for the last edit, and nothing else: "actually make that five", "no, 2 of them",
+# "change it to six cones", "let's go with three instead". The amount is group "n", the words
+# after it (the kind, if any) group "rest".
+_SPELT_COUNT = "|".join(sorted(nb.spelt_counts(), key=len, reverse=True))
+_AMOUNT = re.compile(
+    r"^\s*(?:(?:actually|no|nah|sorry|oops|wait|hmm+|ok(?:ay)?|on second thought)[,.!\s]+)*"
+    r"(?:(?:make|change) (?:that|it|them|those) (?:to |into )?|i meant |let'?s (?:have|do|go with) |just )"
+    rf"(?P<n>\d+|{_SPELT_COUNT})(?P<rest>(?: (?!instead|in total|altogether|of them|please|thanks)[a-z]+){{0,2}})"
+    r"(?:[,\s]+(?:instead|in total|altogether|of them|please|thanks))*\s*[.!]*\s*$"
+)
+# The calls that put a number of new things down, whose amount a correction changes.
+_AMOUNT_TOOLS = ("add_asset", "arrange_assets")
+
+
+def corrects(r: Reading) -> bool:
+    """Whether the clause only gives a new amount for the last edit."""
+    return _AMOUNT.match(r.low) is not None
+
+
+def correct(r: Reading, scene: Scene, memory: Memory) -> list[ToolCall]:
+    """The last edit's things, as many as the clause now says: what it added taken away, and its
+    adding call made again with the new amount (so they stand as that request would have put them)."""
+    said = _AMOUNT.match(r.low)
+    assert said is not None
+    last, calls = _last_edit(memory)
+    added = [a for i in last.added if (a := scene.asset(i)) is not None]
+    kinds = {a.category for a in added}
+    adding = [c for c in calls if c.tool in _AMOUNT_TOOLS]
+    if len(kinds) != 1 or len(adding) != 1:
+        raise PlanningError(f"{r.text.strip()!r} changes how many things the last edit added, but {last.prompt!r} "
+                            "added " + ("nothing" if not kinds else "several kinds") + "; say the whole request")
+    kind = kinds.pop()
+    if said.group("rest").strip() and not any(m.category == kind for m in r.mentions):
+        raise PlanningError(f"the last edit added {kind.replace('_', ' ')}s, not {said.group('rest').strip()!r}; "
+                            "say the whole request")
+    value = nb.spelt_counts().get(said.group("n")) or int(said.group("n"))
+    wanted = nb.count(nb.Number(float(value), said.group("n"), said.start("n"), said.end("n")), kind.replace("_", " "))
+    if wanted == len(added):
+        raise PlanningError(f"the last edit already added {wanted} {kind.replace('_', ' ')}(s); nothing to change")
+    again = ToolCall(tool=adding[0].tool, args={**adding[0].args, "count": wanted})
+    return [ToolCall(tool="remove_assets", args={"assets": [a.id for a in added]}), again]
+
+
 def _last_edit(memory: Memory) -> tuple[Turn, list[ToolCall]]:
     """The newest turn still in the scene that changed something, with its calls read back."""
     for turn in reversed(memory.live_turns()):
@@ -109,4 +154,4 @@ def _retarget(tool: str, args: dict[str, Any], things: list[str], out: list[Tool
     return False
 
 
-__all__ = ["repeat", "repeats"]
+__all__ = ["correct", "corrects", "repeat", "repeats"]

@@ -1,0 +1,188 @@
+"""What a new user types in the first minutes of a chat: "undo that" and "redo" in words, a new
+amount for the last edit ("actually, make that five"), whatever is nearest something, moves
+closer to or further from a place, "ahead of it", a question in two parts that one search
+answers, and a scene said to be without something ("make sure there are no cars in lot B").
+The wording is this file's own, run through a Session with the rule planner on the campus world;
+the check's tests hand the session a plan that misreads the request."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from drivetwin.orchestrator.planning.intent import history_request
+from drivetwin.orchestrator.session import Session
+from drivetwin.tools.base import ToolCall
+from misreading import Fixed, add  # this folder is on sys.path (no __init__.py)
+
+
+def _added(session, campus, category):
+    return [a for a in session.scene.assets if a.category == category and campus.asset(a.id) is None]
+
+
+def _dist(a, point):
+    return math.dist((a.pose.x, a.pose.y), point)
+
+
+def _xy(a):
+    return a.pose.x, a.pose.y
+
+
+# Undo and redo said in words -----------------------------------------------------------------
+def test_undo_said_in_words_takes_the_last_change_back(session, campus):
+    assert session.submit("put a bench next to the fountain").ok
+    report = session.submit("oops, undo that please")
+    assert report.ok, report.error
+    assert session.scene.assets == campus.assets
+    assert "put a bench next to the fountain" in (report.answer or "")
+
+
+def test_redo_said_in_words_brings_it_back(session, campus):
+    session.submit("put a bench next to the fountain")
+    after = session.scene.assets
+    session.submit("scratch that")
+    report = session.submit("redo it, thanks")
+    assert report.ok, report.error
+    assert session.scene.assets == after
+
+
+def test_undo_with_nothing_done_changes_nothing_and_says_so(session, campus):
+    report = session.submit("revert the last change")
+    assert not report.ok
+    assert "nothing to undo" in (report.error or "")
+    assert session.scene == campus
+
+
+@pytest.mark.parametrize("words", ["undo the red paint on the suv", "take back the bench and put a bin there",
+                                   "cancel the rain and make it sunny"])
+def test_a_request_that_says_what_to_change_back_is_no_bare_undo(words):
+    assert history_request(words) is None
+
+
+# A new amount for the last edit ----------------------------------------------------------------
+def test_make_that_five_after_three_leaves_five_at_the_same_place(session, campus):
+    session.submit("add three cones near the east gate")
+    report = session.submit("actually, make that five")
+    assert report.ok, report.error
+    cones = _added(session, campus, "traffic_cone")
+    assert len(cones) == 5
+    gate = campus.landmark("east gate").position
+    assert all(_dist(c, gate) < 12.0 for c in cones)
+
+
+def test_fewer_than_before_takes_the_extra_ones_away(session, campus):
+    session.submit("put 4 benches by the library")
+    report = session.submit("no, make it two instead")
+    assert report.ok, report.error
+    assert len(_added(session, campus, "bench")) == 2
+
+
+def test_a_new_amount_of_another_kind_is_not_read_as_the_last_edit(session, campus):
+    session.submit("add a bench near the fountain")
+    before = session.scene
+    report = session.submit("make that two hydrants")
+    assert not report.ok
+    assert session.scene == before
+
+
+# Whatever is nearest -----------------------------------------------------------------------------
+def test_whatever_is_closest_to_the_ego_is_the_nearest_thing_of_any_kind(session, campus):
+    ego = _xy(campus.asset("ego"))
+    nearest = min((a for a in campus.assets if a.id != "ego"), key=lambda a: _dist(a, ego))
+    report = session.submit("get rid of whatever is closest to the ego")
+    assert report.ok, report.error
+    assert session.scene.asset(nearest.id) is None
+    assert len(session.scene.assets) == len(campus.assets) - 1
+
+
+def test_the_thing_nearest_a_place_is_moved_by_the_step_said(session, campus):
+    stop = campus.landmark("bus stop").position
+    nearest = min((a for a in campus.assets if a.id != "ego"), key=lambda a: _dist(a, stop))
+    report = session.submit("shift the object nearest the bus stop 3 m north")
+    assert report.ok, report.error
+    moved = session.scene.asset(nearest.id)
+    assert moved.pose.y == pytest.approx(nearest.pose.y + 3.0, abs=0.05)
+    assert moved.pose.x == pytest.approx(nearest.pose.x, abs=0.05)
+
+
+def test_a_destination_that_is_no_place_is_never_a_guessed_move(session, campus):
+    report = session.submit("move the bench over to the gym")
+    assert not report.ok
+    assert session.scene == campus
+
+
+# Closer to and further from a place ------------------------------------------------------------
+def test_further_away_from_a_place_moves_away_from_it(session, campus):
+    stop = campus.landmark("bus stop").position
+    report = session.submit("shove the trash bin further away from the bus stop")
+    assert report.ok, report.error
+    assert _dist(session.scene.asset("trash_bin_1"), stop) > _dist(campus.asset("trash_bin_1"), stop) + 1.0
+
+
+def test_a_bit_closer_is_a_small_step_towards_the_place(session, campus):
+    library = campus.landmark("Library entrance").position
+    report = session.submit("bring the bench a little closer to the library")
+    assert report.ok, report.error
+    before, after = campus.asset("bench_1"), session.scene.asset("bench_1")
+    assert 0.5 < _dist(before, library) - _dist(after, library) <= 2.0
+    assert _dist(after, _xy(before)) <= 2.0
+
+
+def test_a_plan_that_brings_a_thing_nearer_when_asked_for_further_is_not_applied(campus, registry):
+    onto_the_stop = Fixed(ToolCall(tool="place_asset", args={"asset": "trash_bin_1", "location": {
+        "relation": "at", "target": "bus stop"}}))
+    session = Session(campus, onto_the_stop, registry)
+    report = session.submit("the bin needs to be further from the bus stop")
+    assert not report.ok
+    assert session.scene == campus
+
+
+# "Ahead of it" ---------------------------------------------------------------------------------
+def test_ahead_of_it_is_ahead_of_what_the_last_turn_added(session, campus):
+    session.submit("add a truck")
+    (truck,) = _added(session, campus, "truck")
+    report = session.submit("now a car ahead of it")
+    assert report.ok, report.error
+    (car,) = _added(session, campus, "passenger_car")
+    assert _dist(car, _xy(truck)) < 12.0
+
+
+def test_ahead_of_it_in_the_same_request_is_ahead_of_the_thing_named_first(session, campus):
+    report = session.submit("the ego is lonely: give it a car ahead of it")
+    assert report.ok, report.error
+    (car,) = _added(session, campus, "passenger_car")
+    ego = campus.asset("ego")
+    ahead = (car.pose.x - ego.pose.x) * math.cos(ego.pose.yaw) + (car.pose.y - ego.pose.y) * math.sin(ego.pose.yaw)
+    assert 0.0 < ahead < 20.0
+
+
+def test_a_plan_that_drops_a_place_said_as_it_is_not_applied(campus, registry):
+    session = Session(campus, Fixed(add("passenger_car")), registry)
+    report = session.submit("put one car behind it, the ego I mean")
+    assert not report.ok
+    assert session.scene == campus
+
+
+# A question in two parts, one search ---------------------------------------------------------------
+def test_how_many_and_where_is_answered_by_one_list(session, campus):
+    report = session.submit("how many trees have we got and where")
+    assert report.ok, report.error
+    assert session.scene == campus
+    answer = report.answer or ""
+    assert "4" in answer and all(a.id in answer for a in campus.assets if a.category == "tree")
+
+
+# A scene said to be without something -------------------------------------------------------------
+def test_make_sure_there_are_no_cars_in_a_lot_removes_them_and_adds_none(session, campus):
+    lot_b = [a.id for a in campus.assets if a.id in ("passenger_car_1", "passenger_car_2", "suv_1")]
+    report = session.submit("make sure there are no cars left in lot B")
+    assert report.ok, report.error
+    assert all(session.scene.asset(i) is None for i in lot_b)
+    assert not [a for a in session.scene.assets if campus.asset(a.id) is None]
+
+
+def test_nothing_parked_at_a_place_takes_the_vehicles_there(session, campus):
+    report = session.submit("please ensure nothing is parked in parking lot B")
+    assert report.ok, report.error
+    assert session.scene.count("passenger_car") == campus.count("passenger_car") - 2
+    assert session.scene.count("suv") == campus.count("suv") - 1
