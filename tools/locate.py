@@ -10,7 +10,7 @@ from __future__ import annotations
 import difflib
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
 from drivetwin.tools.along import Side, TrackPoint, along_point, free_pose_on_track
@@ -98,6 +98,8 @@ class Anchor:
     y: float
     heading: float
     surface: Literal["any", "lane", "sidewalk"] = "any"
+    # The surface is a preference only: with no free spot on it, any spot the rules allow will do.
+    surface_preferred: bool = False
     area: list[tuple[float, float]] | None = None
     exact: bool = False
     near: Target | None = None
@@ -186,9 +188,11 @@ def resolve_anchor(scene: Scene, location: Location, new_half_length: float,
         if location.x is None or location.y is None:
             raise NotFoundError("relation 'absolute' needs both x and y (metres)")
         return Anchor(location.x, location.y, 0.0, exact=True)
-    if rel == "scene_centre":
+    if rel == "scene_centre":  # no place said: a bench or a person at the nearest verge, not in the junction
         cx, cy = scene.bounds.centre
-        return Anchor(cx, cy, 0.0)
+        kind = category(category_name) if category_name is not None else None
+        off_road = kind is not None and kind.placement != "drivable" and kind.motion in ("prop", "walker")
+        return Anchor(cx, cy, 0.0, surface="sidewalk" if off_road else "any", surface_preferred=off_road)
     if location.target is None:
         if rel in ("on_sidewalk", "in_lane"):
             target = resolve_target(scene, "ego")
@@ -342,6 +346,9 @@ def find_free_pose(
             return candidate.pose
     if last is not None and anchor.exact:
         raise last
+    if anchor.surface_preferred:  # no verge within reach (an imported map): wherever the rules allow
+        return find_free_pose(scene, template, replace(anchor, surface="any", surface_preferred=False), others, yaw,
+                              keep_clear, slots)
     where = f"({anchor.x:.1f}, {anchor.y:.1f})"
     reason = f" (last refusal: {last})" if last else ""
     raise RuleViolation(

@@ -71,11 +71,12 @@ def counts_named(masked: str) -> dict[str, int]:
     return out
 
 
-def wrong_counts(masked: str, added: Iterable[AssetInstance]) -> list[str]:
-    """Categories the plan adds a different number of than the request says."""
+def wrong_counts(masked: str, added: Iterable[AssetInstance], per: int = 1) -> list[str]:
+    """Categories the plan adds a different number of than the request says (`per` place, when it
+    says that many at each of several places)."""
     made = Counter(a.category for a in added)
-    return [f"you asked for {n} {c.replace('_', ' ')}, but the plan adds {made[c]}"
-            for c, n in counts_named(masked).items() if made[c] and made[c] != n]
+    return [f"you asked for {n} {c.replace('_', ' ')}" + (f" at each of {per} places" if per > 1 else "")
+            + f", but the plan adds {made[c]}" for c, n in counts_named(masked).items() if made[c] and made[c] != n * per]
 
 
 def off_lane(lane_id: str, scene: Scene, placed: Iterable[AssetInstance]) -> list[str]:

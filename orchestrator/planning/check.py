@@ -63,15 +63,15 @@ from drivetwin.orchestrator.planning.coverage import (
 )
 from drivetwin.orchestrator.planning.coverage import MIN_MOVE_M
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed, nearest_landmark
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, REMOVE_WORDS, asks
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, REMOVE_WORDS, asks, without_contrast
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, kept_at
+from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, kept_at
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, YARD_M, numbers_in, spelt_measures
-from drivetwin.orchestrator.planning.rules.places import says_other_place
+from drivetwin.orchestrator.planning.rules.places import each_place_named, says_other_place
 from drivetwin.orchestrator.planning.rules.reading import counted_kinds
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
@@ -222,6 +222,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                and not (_DISTANCE_SAID.search(spelt_measures(request.low)) and _names_target(effect, request.place))
                and not _at_a_target(scene, effect, a)  # a compound's other place or lane
                and not _brought_closer(scene, a, request.place)  # "3 m towards the fountain"
+               and not FURTHEST.search(request.low)  # "the tree furthest from the library"
+               and not (_FACE_SAID.search(request.low) and _turned_to_face(scene, a, request.place))  # "turn the bench to face the fountain"
                and not ((says_other_place(request.low, scene) or _MOVED_AWAY.search(request.low))
                         and _near(scene, scene.asset(a.id) or a, request.place))]  # "... in the wrong car park"
         if far:
@@ -230,6 +232,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += _attributes(request, effect, scene)
     out += wrong_direction(request.masked, scene, _moved(effect))
     out += _wrong_way_to(request, scene, _moved(effect))
+    out += _not_the_extreme(request, effect, scene)
     out += _already_there(effect, scene)
     if request.state is not None and (effect.removed or effect.changed):
         before = [scene.asset(a.id) or a for a in effect.changed]  # as it was: "the parked SUV to pull out"
@@ -290,7 +293,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += unnamed_compass_places(request.low, scene)
     out += place_dropped(request.low, effect.calls)
     out += unknown_things(request.masked, effect.calls, scene)
-    out += excepted_touched(request.excepted, _kinds_named(request), scope, scene)
+    out += excepted_touched(request.excepted, _kinds_named(request), scope, scene, without_contrast(request.low))
     return out
 
 
@@ -298,8 +301,14 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     """What the plan gives the things named (see attributes.py): counts, lane, surface, look,
     weather strength."""
     placed = [*effect.added, *_moved(effect)]
+    each = each_place_named(scene, request.low)  # "two cones at each gate": two at every one of them
     out = [] if _totals(request, effect) else wrong_counts(
-        request.masked, [a for a in effect.added if a.category not in _companions(effect)])
+        request.masked, [a for a in effect.added if a.category not in _companions(effect)], max(1, len(each)))
+    centres = {place: centre for place in each if (centre := _centre(scene, place)) is not None}
+    if effect.added and centres:  # each new thing counts for the one of those places it stands nearest
+        served = {min(centres, key=lambda p: math.dist((a.pose.x, a.pose.y), centres[p])) for a in effect.added}
+        out += [f"you said every one of {', '.join(each)}, but the plan puts nothing at {place}"
+                for place in centres if place not in served]
     out += wrong_layout(request.masked, effect.added)
     if request.place is not None and effect.added:
         out += not_around(request.low, _centre(scene, request.place), effect.added)
@@ -314,7 +323,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
         out += look_left_out(request.low, effect.calls)
     if request.place is not None and effect.removed and names_group(request.low):
         near = _nearness(scene, request.place)
-        spared = excepted_ids(request.excepted, _kinds_named(request), scene)  # "..., but keep the SUV"
+        spared = excepted_ids(request.excepted, _kinds_named(request), scene, without_contrast(request.low))  # "..., but keep the SUV"
         out += group_left_behind(request.low, effect.removed,
                                  [a for a in scene.all_assets() if near(a) and a.id not in spared])
     if request.polarity == "remove":  # "I don't want any rain any more" never makes it rain
@@ -471,6 +480,30 @@ def _centre(scene: Scene, place: str) -> tuple[float, float] | None:
     return target.x, target.y
 
 
+# One thing picked out by being nearest or furthest: "the tree furthest from the library".
+_EXTREME = re.compile(r"\b(?:(?P<near>nearest|closest)|(?P<far>furthest|farthest|most distant))\b")
+
+
+def _not_the_extreme(request: Request, effect: Effect, scene: Scene) -> list[str]:
+    """A plan that acts on one thing of the one kind named where the request picks it as the
+    nearest or furthest from a place or the ego, and that thing is not it."""
+    said = _EXTREME.search(request.masked)
+    acted = [a for a in [*effect.removed, *effect.changed] if a.id != "ego"]
+    if said is None or request.question or len(request.categories) != 1 or len(acted) != 1:
+        return []
+    kind = next(iter(request.categories))
+    ego = scene.asset("ego")
+    centre = _centre(scene, request.place) if request.place is not None else (
+        (ego.pose.x, ego.pose.y) if ego is not None and re.search(r"\bego\b", request.low[said.end():]) else None)
+    pool = [a for a in scene.assets if a.category == kind]
+    if centre is None or acted[0].category != kind or len(pool) < 2:
+        return []
+    pick = (max if said.group("far") else min)(pool, key=lambda a: math.dist((a.pose.x, a.pose.y), centre))
+    if pick.id == acted[0].id:
+        return []
+    return [f"you said the {said.group(0)} {kind.replace('_', ' ')}, which is {pick.id}, but the plan acts on {acted[0].id}"]
+
+
 # "Further from the bus stop", "closer to the library": the way the distance to the place must go.
 _NEARER = re.compile(r"\b(?:closer|nearer)(?: to)?\b|\btowards?\b")
 _FURTHER = re.compile(r"\b(?:further|farther|more)(?: away)? from\b|\baway from\b")
@@ -493,6 +526,22 @@ def _wrong_way_to(request: Request, scene: Scene, moved: list[AssetInstance]) ->
             way = "nearer to" if further else "further from"
             out.append(f"you said {'further from' if further else 'closer to'} {request.place}, but the plan moves {after.id} {way} it")
     return out
+
+
+_FACE_SAID = re.compile(r"\bfac(?:e|es|ing)\b")
+
+
+# How far off the heading to a place a thing may point and still face it.
+FACING_SLACK_DEG = 20.0
+
+
+def _turned_to_face(scene: Scene, asset: AssetInstance, place: str) -> bool:
+    """Whether the plan turns an asset that was there, without moving it, to face the place."""
+    before, centre = scene.asset(asset.id), _centre(scene, place)
+    if before is None or centre is None or (before.pose.x, before.pose.y) != (asset.pose.x, asset.pose.y):
+        return False
+    heading = math.atan2(centre[1] - asset.pose.y, centre[0] - asset.pose.x)
+    return abs(math.degrees(math.remainder(heading - asset.pose.yaw, 2 * math.pi))) <= FACING_SLACK_DEG
 
 
 def _brought_closer(scene: Scene, asset: AssetInstance, place: str) -> bool:
@@ -572,7 +621,7 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
              and (asset := scene.asset(str(c.args.get("asset")))) is not None and asset.category in request.categories]
     if fresh and not effect.added:
         out.append(Reading(text=describe(fresh), calls=fresh))
-    if request.excepted and (spared := _sparing(effect, excepted_ids(request.excepted, _kinds_named(request), scene))):
+    if request.excepted and (spared := _sparing(effect, excepted_ids(request.excepted, _kinds_named(request), scene, without_contrast(request.low)))):
         out.append(Reading(text=describe(spared), calls=spared))
     if effect.removed and (request.place or request.state):
         keep = [a.id for a in effect.removed
@@ -648,8 +697,8 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
                 text=f"There is no {name} in the scene yet. Add one?",
                 readings=[Reading(text=describe(plan.calls), calls=list(plan.calls))]))
         return Verdict("apply", outcome=effect.outcome)
-    if request.excepted and found == excepted_touched(request.excepted, _kinds_named(request), _scope(effect), context.scene):
-        spared = _sparing(effect, excepted_ids(request.excepted, _kinds_named(request), context.scene))
+    if request.excepted and found == excepted_touched(request.excepted, _kinds_named(request), _scope(effect), context.scene, without_contrast(request.low)):
+        spared = _sparing(effect, excepted_ids(request.excepted, _kinds_named(request), context.scene, without_contrast(request.low)))
         kept = dry_run(spared, context) if spared else None
         if kept is not None and not problems_of(request, kept, context):
             return Verdict("apply", found, outcome=kept.outcome, calls=spared)

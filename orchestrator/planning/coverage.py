@@ -36,7 +36,8 @@ from drivetwin.worlds.scene import AssetInstance, Scene
 _DEFINITE = ("the", "that", "this", "those", "these", "our", "my", "all", "every", "each", "both")
 # Words that ask for a new one even after a definite article ("the new bench", "another").
 _NEW = re.compile(
-    r"\b(add|adds|added|adding|new|another|more(?!\s+[a-z]+(?:al|ful|ive|ous|ic|ible|able|ly|er|y)\b)|extra|create|spawn|"
+    r"\b(add|adds|added|adding|new|another|(?<!out )(?<!apart )more(?!\s+[a-z]+(?:al|ful|ive|ous|ic|ible|able|ly|er|y)\b)(?! apart| spread)"
+    r"|extra|create|spawn|"
     r"insert|second|additional|"
     r"copy|duplicate|row of|line of|ring of|grid of)\b"
 )
@@ -274,7 +275,10 @@ def ambiguous_pick(masked: str, scope: Scope, scene: Scene, memory: Memory, plac
 # Verbs that change a thing already there: "paint the truck", said where there is no truck,
 # asks about a thing that is not there rather than for a new one.
 _CHANGES_EXISTING = frozenset(["make", "paint", "colour", "color", "recolour", "recolor", "turn", "move", "shift",
-                               "push", "pull", "nudge", "rotate", "drive", "slide", "relocate", "spin", "reverse"])
+                               "push", "pull", "nudge", "rotate", "drive", "slide", "relocate", "spin", "reverse",
+                               "space", "spread", "straighten", "rearrange", "reposition", "tidy"])
+# Words that say the things were there before: "put the cones back where they were".
+_AS_BEFORE = re.compile(r"\b(?:back where|back to where|where (?:it|they) (?:was|were|used to be)|back in place)\b")
 
 
 def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
@@ -285,7 +289,8 @@ def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     out = []
     for m in named_in(masked):
         before = m.last_words(2)
-        if len(before) == 2 and before[0] in _CHANGES_EXISTING and before[1] in _DEFINITE and not scene.count(m.category) \
+        points_at = len(before) == 2 and before[1] in _DEFINITE and (before[0] in _CHANGES_EXISTING or bool(_AS_BEFORE.search(masked)))
+        if points_at and not scene.count(m.category) \
                 and any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)
     return out
@@ -525,14 +530,14 @@ _PICKED_BY = re.compile(r"\s(?:by|near|next to|beside|at|in|on|behind|in front o
 EXCEPTED_RADIUS_M = 10.0
 
 
-def excepted_touched(excepted: Iterable[str], categories: Iterable[str], scope: Scope, scene: Scene) -> list[str]:
+def excepted_touched(excepted: Iterable[str], categories: Iterable[str], scope: Scope, scene: Scene, main: str = "") -> list[str]:
     """Things the request says it does not mean ("..., not the ego", "except the one by the bench")
     that the plan changes or removes (see `excepted_ids`); where the words name a kind but pick out
     none of it this world can find ("not the ones at the ends"), any of that kind the plan touches."""
     acted = [a for a in scope.touched if a not in scope.added]
     out = []
     for said in excepted:
-        picked = _picked_out(said, set(categories), scene)
+        picked = _picked_out(said, set(categories), scene, main)
         if isinstance(picked, frozenset):
             unsure = sorted(a.id for a in acted if a.category in picked)
             if unsure:
@@ -542,13 +547,14 @@ def excepted_touched(excepted: Iterable[str], categories: Iterable[str], scope: 
     return out
 
 
-def excepted_ids(excepted: Iterable[str], categories: Iterable[str], scene: Scene) -> set[str]:
+def excepted_ids(excepted: Iterable[str], categories: Iterable[str], scene: Scene, main: str = "") -> set[str]:
     """The ids of the things excepted. "One(s)" stands for the kinds the rest of the request
     names; a thing picked out by a place is the one of its kind nearest it, by a side ("the west
-    ones") those of its kind on that side of the others."""
+    ones") those of its kind on that side of the others; of those on the side of the road the
+    rest of the request (`main`, lower case) names, when it names one."""
     out: set[str] = set()
     for said in excepted:
-        picked = _picked_out(said, set(categories), scene)
+        picked = _picked_out(said, set(categories), scene, main)
         out |= set() if isinstance(picked, frozenset) else picked
     return out
 
@@ -557,9 +563,11 @@ def excepted_ids(excepted: Iterable[str], categories: Iterable[str], scene: Scen
 _SIDE_ONLY = re.compile(r"\s*(?:on|at|to|along) the (?:north|south|east|west)(?:ern)?(?: side| end| half| edge)?\s*")
 
 
-def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str] | frozenset[str]:
+def _picked_out(said: str, categories: set[str], scene: Scene, main: str = "") -> set[str] | frozenset[str]:
     """The ids of the things `said` ("the ego", "the suv", "the one by the bench") names in the
-    scene; a frozenset of the kinds it names when it picks out no one of them it can find."""
+    scene, of those on the side the rest of the request names ("the lamps on the north side except
+    the one nearest the library"); a frozenset of the kinds it names when it picks out no one of
+    them it can find."""
     low = f" {ph.normalise(said)} "
     cut = _PICKED_BY.search(low)
     head, where = (low[: cut.start()], low[cut.start() :]) if cut else (low, "")
@@ -575,6 +583,9 @@ def _picked_out(said: str, categories: set[str], scene: Scene) -> set[str] | fro
     alone = amount is not None and not mentions
     kinds = {m.category for m in mentions} or (categories if re.search(r"\bones?\b", head) or alone else set())
     members = [a for a in scene.all_assets() if a.category in kinds and a.id != "ego"]
+    side = side_of(main, scene) if main else None
+    if side is not None and len(chosen := [a for a in members if side[1](a)]) >= 2:
+        members = chosen
     if _SIDE_ONLY.fullmatch(where):  # "the ones on the south side" are the south ones
         head, where = f"{head} {where}", ""
     side = md.compass_direction(re.sub(r"\b(north|south|east|west)ern\b", r"\1", head))

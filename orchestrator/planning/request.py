@@ -42,7 +42,10 @@ _LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west
 _PARKED = re.compile(r"\bparked\b")
 _SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")
 # "moving" said of the thing, not denied ("not moving", "stopped driving")
-_MOVING = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!stopped )\b(driving|moving|travelling|traveling|riding)\b")
+_MOVING = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!stopped )\b(driving|moving|travelling|traveling|riding)\b"
+                     # "a car that brakes suddenly", "a van which slows down": what it does as it goes
+                     r"|\b(?:that|which|who)\s+(?:\w+ly\s+)?(?:brakes?|slows?|swerves?|speeds?|accelerates?|drives?|rides?"
+                     r"|overtakes?|merges?|reverses?|cuts?|changes? lanes?)\b")
 
 
 @dataclass(frozen=True)

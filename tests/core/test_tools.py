@@ -23,6 +23,25 @@ def test_add_puts_the_asset_at_the_scene_centre(registry, campus):
     assert len(rubble) == 1 and math.hypot(rubble[0].pose.x, rubble[0].pose.y) < 1.0
 
 
+@pytest.mark.parametrize("category", ["tree", "bench", "pedestrian", "trash_bin"])
+def test_a_thing_added_with_no_place_stands_at_the_verge_nearest_the_centre_not_in_the_junction(registry, campus, category):
+    from drivetwin.worlds.surface import surface_at
+
+    _, after = run(registry, campus, "add_asset", category=category, location={"relation": "scene_centre"})
+    (added,) = [a for a in after.assets if campus.asset(a.id) is None]
+    assert surface_at(after, added.pose.x, added.pose.y) == "sidewalk"
+    assert math.hypot(added.pose.x, added.pose.y) < 15.0
+
+
+def test_a_thing_added_with_no_place_where_no_verge_is_near_goes_where_the_rules_allow(registry, campus):
+    from drivetwin.worlds.scene import Bounds
+
+    far_from_roads = campus.model_copy(update={"bounds": Bounds(xmin=60.0, xmax=100.0, ymin=60.0, ymax=100.0)})
+    _, after = run(registry, far_from_roads, "add_asset", category="bench", location={"relation": "scene_centre"})
+    (added,) = [a for a in after.assets if campus.asset(a.id) is None]
+    assert math.hypot(added.pose.x - 80.0, added.pose.y - 80.0) < 13.0
+
+
 def test_add_refuses_a_position_inside_a_building(registry, campus):
     with pytest.raises(RuleViolation, match="inside JTEKT Building") as exc:
         run(registry, campus, "add_asset", category="bus", location={"relation": "absolute", "x": 40, "y": 30})

@@ -186,3 +186,111 @@ def test_nothing_parked_at_a_place_takes_the_vehicles_there(session, campus):
     assert report.ok, report.error
     assert session.scene.count("passenger_car") == campus.count("passenger_car") - 2
     assert session.scene.count("suv") == campus.count("suv") - 1
+
+
+# How many in all, every place of a kind, and all but one ------------------------------------------
+def test_a_count_in_total_is_what_the_scene_ends_up_with(session, campus):
+    report = session.submit("we'd like 6 trees in total")
+    assert report.ok, report.error
+    assert session.scene.count("tree") == 6
+
+
+def test_at_every_place_of_a_kind_is_one_at_each_of_them(session, campus):
+    report = session.submit("a stop sign at every crosswalk please")
+    assert report.ok, report.error
+    signs = _added(session, campus, "stop_sign")
+    assert len(signs) == 2
+    for name in ("west crosswalk", "north crosswalk"):
+        assert any(_dist(s, campus.landmark(name).position) < 15.0 for s in signs)
+
+
+def test_two_at_each_of_two_places_is_four(session, campus):
+    report = session.submit("two cones by each of the gates")
+    assert report.ok, report.error
+    cones = _added(session, campus, "traffic_cone")
+    assert len(cones) == 4
+    for gate in ("main gate", "east gate"):
+        assert sum(_dist(c, campus.landmark(gate).position) < 15.0 for c in cones) == 2
+
+
+def test_both_of_a_kind_there_are_more_of_is_not_every_one(session, campus):
+    report = session.submit("a bench outside both entrances")
+    assert len(_added(session, campus, "bench")) < 3
+
+
+def test_a_plan_that_puts_things_at_one_of_every_place_is_not_applied(campus, registry):
+    one = Fixed(add("stop_sign", location={"relation": "at", "target": "west crosswalk"}))
+    session = Session(campus, one, registry)
+    report = session.submit("stop signs at each crosswalk")
+    assert not report.ok
+    assert session.scene == campus
+
+
+def test_all_but_one_on_a_side_keeps_the_one_of_that_side(session, campus):
+    library = campus.landmark("Library entrance").position
+    north = [a for a in campus.assets if a.category == "street_light" and a.pose.y > 0]
+    kept = min(north, key=lambda a: _dist(a, library))
+    report = session.submit("take out the street lights on the north side except the one nearest the library")
+    assert report.ok, report.error
+    assert session.scene.asset(kept.id) is not None
+    assert all(session.scene.asset(a.id) is None for a in north if a.id != kept.id)
+    assert session.scene.count("street_light") == campus.count("street_light") - len(north) + 1
+
+
+# Facing something ---------------------------------------------------------------------------------
+def test_so_it_faces_the_road_turns_it_towards_the_road(session, campus):
+    report = session.submit("rotate the bench so it faces the road")
+    assert report.ok, report.error
+    bench = session.scene.asset("bench_1")
+    assert math.sin(bench.pose.yaw) == pytest.approx(1.0, abs=0.05)  # Main Street is north of it
+    assert _xy(bench) == _xy(campus.asset("bench_1"))
+
+
+def test_to_face_a_place_turns_it_towards_the_place(session, campus):
+    fountain = campus.landmark("fountain").position
+    report = session.submit("turn the bench round to face the fountain")
+    assert report.ok, report.error
+    bench = session.scene.asset("bench_1")
+    heading = math.atan2(fountain[1] - bench.pose.y, fountain[0] - bench.pose.x)
+    assert abs(math.remainder(heading - bench.pose.yaw, 2 * math.pi)) < 0.1
+
+
+def test_a_turn_of_a_thing_that_is_not_at_the_place_named_is_not_applied(session, campus):
+    report = session.submit("turn the car in lot A to face the library")
+    assert not report.ok
+    assert session.scene == campus
+
+
+# Things said to be there that are not -----------------------------------------------------------------
+@pytest.mark.parametrize("words", ["put the cones back where they were", "space the cones out more"])
+def test_things_said_as_there_that_are_not_are_asked_about_not_added(session, campus, words):
+    report = session.submit(words)
+    assert not report.ok and report.question is not None
+    assert session.scene == campus
+
+
+# Furthest, and what a new thing does as it goes -----------------------------------------------------
+def test_the_one_furthest_from_a_place_is_the_one_taken(session, campus):
+    library = campus.landmark("Library entrance").position
+    trees = [a for a in campus.assets if a.category == "tree"]
+    far = max(trees, key=lambda a: _dist(a, library))
+    report = session.submit("remove the tree that's furthest from the library")
+    assert report.ok, report.error
+    assert session.scene.asset(far.id) is None
+    assert session.scene.count("tree") == len(trees) - 1
+
+
+def test_a_plan_that_takes_the_nearest_when_the_furthest_was_said_is_not_applied(campus, registry):
+    library = campus.landmark("Library entrance").position
+    near = min((a for a in campus.assets if a.category == "tree"), key=lambda a: _dist(a, library))
+    session = Session(campus, Fixed(ToolCall(tool="remove_assets", args={"assets": [near.id]})), registry)
+    report = session.submit("get rid of the tree farthest from the library")
+    assert not report.ok
+    assert session.scene == campus
+
+
+def test_a_new_car_said_to_brake_is_not_added_standing_still(campus, registry):
+    session = Session(campus, Fixed(add("passenger_car", location={"relation": "in_front_of", "target": "ego"})), registry)
+    report = session.submit("add a car in front of the ego that brakes suddenly")
+    assert not report.ok
+    assert session.scene == campus

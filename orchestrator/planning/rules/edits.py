@@ -26,7 +26,7 @@ from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import lane_under
 from drivetwin.worlds.catalog import Category, catalog
-from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import nearest_on_polyline
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
@@ -96,10 +96,11 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         if not present:
             return []
         nearest = _NEAREST_TO.match(r.low[mention.end :])
-        if nearest is not None and not mention.plural:  # "the car nearest the Student Union"
+        furthest = _FURTHEST_FROM.match(r.low[mention.end :])
+        if (nearest or furthest) and not mention.plural:  # "the car nearest the Student Union", "... furthest from"
             point = _point_of(r, scene, memory)
             if point is not None:
-                return [min(present, key=lambda i: _distance_to(scene, i, point))]
+                return [(max if furthest else min)(present, key=lambda i: _distance_to(scene, i, point))]
         if mention.plural or r.has(("all", "every", "each", "both")):
             return present
         outermost = _outermost(r, scene, mention, present)
@@ -117,6 +118,9 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
 # object to the fountain", "the thing nearest the gate".
 _ANY_NEAREST = re.compile(r"\b(?:(?:whatever|anything|something|the (?:thing|object|item|prop))\s+(?:that'?s |which is |that is |is )?"
                           r"(?:nearest|closest)|the (?:nearest|closest) (?:thing|object|item|prop))\b")
+# The one furthest from something: "the tree furthest from the library", "the lamp farthest away from the ego".
+FURTHEST = re.compile(r"\b(?:furthest|farthest|most distant)\b")
+_FURTHEST_FROM = re.compile(r"\s*(?:that is |which is |that's )?(?:furthest|farthest|most distant)(?: away)?(?: from)?\b")
 # A thing picked out by what it is nearest ("the car nearest the union", "the bin closest to the ego").
 _NEAREST_TO = re.compile(r"\s*(?:that is |which is |that's )?(?:nearest|closest)(?: to)?\b")
 
@@ -175,8 +179,8 @@ def _but_kept(r: Reading, ids: list[str]) -> list[str]:
 
 
 # A count the scene should end with: "there should be exactly four cones in lot A", "we want only two benches".
-FINAL_COUNT = re.compile(r"\b(?:there (?:should|must|has to|needs to|is to|are to) be|(?:i|we) (?:want|need|would like|'d like))"
-                         r"\s+(?:exactly|only|just|a total of)\s+")
+FINAL_COUNT = re.compile(r"\b(?:there (?:should|must|has to|needs to|is to|are to) be|(?:i|we)(?: want| need| would like| ?'d like))"
+                         r"\s+(?:(?:exactly|only|just|a total of)\s+|(?=[^,.;!?]*\b(?:in total|altogether|in all|all told)\b))")
 
 
 # Half of the things named ("half the trees", "half of those cones").
@@ -324,6 +328,10 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         count = None
     elif not mention.plural:
         count = count or 1
+    point = _point_of(r, scene, memory) if FURTHEST.search(r.low) else None
+    if point is not None:  # "the tree furthest from the library": the Worker ranks by nearness only
+        far = sorted((a.id for a in scene.assets if a.category == name), key=lambda i: -_distance_to(scene, i, point))
+        return [ToolCall(tool="remove_assets", args={"assets": far[: count or 1]})] if far else None
     if count:
         args["count"] = count
     if r.landmark:
@@ -453,6 +461,29 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> di
     return {"east": round(step * (goal[0] - x) / gap, 2), "north": round(step * (goal[1] - y) / gap, 2)}
 
 
+# A thing a thing should face: "so it faces the road", "turn it to face the fountain", "facing the ego".
+_FACES = re.compile(r"\bfac(?:e|es|ing)\s+(?:towards?\s+|onto\s+)?(?:the\s+)?(?:(?P<road>road|street|lane|traffic|kerb|curb|carriageway)"
+                    r"|(?P<ego>ego|our car|my car)|(?P<place>§))")
+
+
+def _faced_point(r: Reading, scene: Scene, thing: AssetInstance) -> tuple[float, float] | None:
+    """The point the words say a thing should face: the nearest point of a road, the ego or the
+    place named; None when they name none."""
+    said = _FACES.search(r.masked)
+    if said is None:
+        return None
+    if said.group("road"):
+        lanes = [lane for lane in scene.roads.lanes if not r.lane or lane.id == r.lane]
+        near = min((nearest_on_polyline(thing.pose.x, thing.pose.y, lane.centreline) for lane in lanes),
+                   key=lambda p: p.distance, default=None)
+        return (near.x, near.y) if near is not None else None
+    ego = scene.asset("ego")
+    if said.group("ego") or (r.ego and not r.landmark and r.ego_at >= said.start()):  # the ego is blanked like a place
+        return (ego.pose.x, ego.pose.y) if ego is not None and thing.id != "ego" else None
+    landmark = scene.landmark(r.landmark) if r.landmark else None
+    return (landmark.position[0], landmark.position[1]) if landmark is not None else None
+
+
 # Words for a small step ("a bit", "a tiny bit", "slightly").
 _SMALL = ("a bit", "slightly", "a little", "tiny bit", "little bit", "wee bit")
 
@@ -475,13 +506,19 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
     deg = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:deg|°)", r.low) or (_bare_angle(r.low) if r.has(("turn", "rotate", "spin")) else None)
     facing = md.facing_direction(r.masked)
-    if facing is not None or (
+    faced = _faced_point(r, scene, found) if facing is None and found is not None else None
+    if facing is not None or faced is not None or (
         r.has(lx.TURN_WORDS)
         and (deg or not r.has(("drive", "driving", "walk", "circle", "circles")))
         and (deg or r.has(("turn", "turned", "rotate", "rotated", "spin", "flip", "wrong way", "other way", "faces", "face")))
     ):
         if deg:
             angle = float(deg.group(1))
+        elif faced is not None and found is not None:  # "so it faces the road": towards its nearest point
+            heading = math.degrees(math.atan2(faced[1] - found.pose.y, faced[0] - found.pose.x))
+            angle = round((heading - math.degrees(found.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
+            if abs(angle) < 1.0:
+                raise ph_error(f"{asset} already faces that way")
         elif facing is not None and found is not None:
             # "turned to face north": the turn from where it points now to that compass heading
             east, north = md.COMPASS_VECTORS[facing]
@@ -564,4 +601,4 @@ def _bare_angle(low: str) -> re.Match[str] | None:
     return found[0] if len(found) == 1 else None
 
 
-__all__ = ["behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]
+__all__ = ["FURTHEST", "behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]

@@ -153,6 +153,25 @@ _THE_ONE = re.compile(r"\b(?:in|at|to|into|over to)\s+the\s+\w+\s+one\b")
 _THE_OTHER = re.compile(r"\bthe other ([a-z]+(?: [a-z]+)?)")
 
 
+def places_called(scene: Scene, word: str) -> list[str]:
+    """The landmarks one of whose names ends in `word` ("gate": the main gate and the east gate)."""
+    return [lm.name for lm in scene.landmarks if any(ph.tokens(ph.normalise(n))[-1:] == [word] for n in lm.names())]
+
+
+# Every place of a kind: "at every crosswalk", "by each of the gates", "outside both entrances".
+EACH_PLACE = re.compile(r"\b(?:at|by|near|next to|beside|outside|in front of|behind|on|around)\s+"
+                        r"(?P<said>(?:every|each|all|both)(?: of)?(?: the)?\s+(?P<kind>[a-z]+?)s?)\b")
+
+
+def each_place_named(scene: Scene, low: str) -> list[str]:
+    """The places of the kind the words say every one of ("at every crosswalk": the west and the
+    north crosswalk); [] when they say none, or the kind is no kind of place of this world."""
+    said = EACH_PLACE.search(low)
+    places = places_called(scene, said.group("kind")) if said is not None else []
+    both = said is not None and said.group("said").startswith("both")
+    return [] if both and len(places) != 2 else places  # "both entrances" where there are six: which two is not said
+
+
 def says_other_place(low: str, scene: Scene) -> bool:
     """Whether the words name "the other" place: "the other one", "the other lot", "the other car
     park" (a name, or its head word: its last, or the one before a label such as "lot A")."""
@@ -445,4 +464,4 @@ def said_a_place(r: Reading) -> bool:
     return bool(re.search(r"\b(near|next to|beside|by|in front of|behind|outside|close to|over by)\b", r.masked))
 
 
-__all__ = ["BY_IT", "PLACE_SAID", "PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]
+__all__ = ["BY_IT", "EACH_PLACE", "PLACE_SAID", "each_place_named", "places_called", "PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]

@@ -43,7 +43,16 @@ from drivetwin.orchestrator.planning.rules.edits import (
     remove,
 )
 from drivetwin.orchestrator.planning.rules.environment import LIGHTS_DOWN, environment, lights
-from drivetwin.orchestrator.planning.rules.places import PLACE_SAID, Notes, cross_section, location, said_a_place
+from drivetwin.orchestrator.planning.rules.places import (
+    EACH_PLACE,
+    PLACE_SAID,
+    Notes,
+    cross_section,
+    each_place_named,
+    location,
+    places_called,
+    said_a_place,
+)
 from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
 from drivetwin.orchestrator.planning.rules.repeat import correct, corrects, repeat, repeats
@@ -329,7 +338,7 @@ class RulePlanner:
         a kind of place several places are ("by the gate"); None when it does not."""
         low = prompt.lower()
         for said in _THE_KIND.finditer(low):
-            places = _places_called(context.scene, said.group("kind"))
+            places = places_called(context.scene, said.group("kind"))
             if len(places) < 2:
                 continue
             readings = []
@@ -348,7 +357,25 @@ class RulePlanner:
                             question=Question(text=f"Which {kind} do you mean?", readings=readings))
         return None
 
+    def _each_place(self, prompt: str, context: PlanContext) -> Plan | None:
+        """The request done at each place of a kind it says every one of ("a stop sign at every
+        crosswalk", "cones at both gates"); None when it says no such thing."""
+        said = EACH_PLACE.search(prompt.lower())
+        places = each_place_named(context.scene, prompt.lower())
+        if said is None or len(places) < 2:
+            return None
+        parts = [self.plan(prompt[: said.start("said")] + f"the {name}" + prompt[said.end("said") :], context) for name in places]
+        if any(c.tool not in ("add_asset", "arrange_assets") for p in parts for c in p.calls):
+            return None  # "paint the bench at every crosswalk": the places pick things out, they are no destinations
+        step = TraceStep(level="rules", input=prompt, output=f"at each of {', '.join(places)}: "
+                         + "; ".join(p.trace[0].output for p in parts))
+        return Plan(calls=[c for p in parts for c in p.calls], planner=self.name, confidence=min(p.confidence for p in parts),
+                    prompt_version=PROMPT_VERSION, trace=[step])
+
     def plan(self, prompt: str, context: PlanContext) -> Plan:
+        each = self._each_place(prompt, context)
+        if each is not None:
+            return each
         started = time.perf_counter()
         scene = context.scene
         repaired = repair(prompt, scene)
@@ -433,9 +460,6 @@ def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:
     return found
 
 
-def _places_called(scene: Scene, word: str) -> list[str]:
-    """The landmarks one of whose names ends in `word` ("gate": the main gate and the east gate)."""
-    return [lm.name for lm in scene.landmarks if any(ph.tokens(ph.normalise(n))[-1:] == [word] for n in lm.names())]
 
 
 # A place said by a word several places' names end in ("by the gate", "outside the building").
@@ -895,7 +919,7 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
         where = _beside_last(scene, memory) or _fallback_place(memory)
     if where is None and notes.place is not None and r.has(("there", "instead")):
         where = dict(notes.place)
-    kind_of_place = any(_places_called(scene, m.group("kind")) for m in _THE_KIND.finditer(r.low))  # "at the entrance"
+    kind_of_place = any(places_called(scene, m.group("kind")) for m in _THE_KIND.finditer(r.low))  # "at the entrance"
     if where is None and (said_a_place(r) or kind_of_place) and kind is None:
         notes.guess(_UNRECOGNISED)
     if where is not None:
