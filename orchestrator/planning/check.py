@@ -71,7 +71,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, kept_at
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, YARD_M, numbers_in, spelt_measures
-from drivetwin.orchestrator.planning.rules.places import each_place_named, says_other_place
+from drivetwin.orchestrator.planning.rules.places import BETWEEN, each_place_named, point_named, says_other_place
 from drivetwin.orchestrator.planning.rules.reading import counted_kinds
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
@@ -233,6 +233,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += wrong_direction(request.masked, scene, _moved(effect))
     out += _wrong_way_to(request, scene, _moved(effect))
     out += _not_the_extreme(request, effect, scene)
+    out += _not_between(request, scene, [*effect.added, *_moved(effect)])
+    out += _amount_words_left_out(request, effect, scene)
     out += _already_there(effect, scene)
     if request.state is not None and (effect.removed or effect.changed):
         before = [scene.asset(a.id) or a for a in effect.changed]  # as it was: "the parked SUV to pull out"
@@ -478,6 +480,38 @@ def _centre(scene: Scene, place: str) -> tuple[float, float] | None:
     except ToolError:
         return None
     return target.x, target.y
+
+
+# Amounts said without a number: "half the lamps", "benches at both ends", "a cone on each side of it".
+_HALF_SAID = re.compile(r"\bhalf (?:of )?(?:the|those|these|them|all)\b")
+_SEVERAL_SAID = re.compile(r"\bboth\b|\b(?:each|every|all four|all the) (?:side|sides|corner|corners|end|ends)\b")
+
+
+def _amount_words_left_out(request: Request, effect: Effect, scene: Scene) -> list[str]:
+    """A plan that acts on every one of the one kind the request says half of, or adds a single
+    thing where it says both, or each side, corner or end."""
+    out = []
+    acted = [a for a in [*effect.removed, *effect.changed] if a.id != "ego"]
+    if _HALF_SAID.search(request.low) and len(request.categories) == 1 and len(acted) > 1:
+        kind = next(iter(request.categories))
+        every = [a for a in scene.assets if a.category == kind]
+        if len(every) > 1 and {a.id for a in acted} >= {a.id for a in every}:
+            out.append(f"you said half of the {kind.replace('_', ' ')}s, but the plan acts on all {len(every)}")
+    if (said := _SEVERAL_SAID.search(request.low)) is not None and len(effect.added) == 1 and not request.question:
+        out.append(f"you said {said.group(0)}, but the plan adds one {effect.added[0].category.replace('_', ' ')}")
+    return out
+
+
+def _not_between(request: Request, scene: Scene, placed: list[AssetInstance]) -> list[str]:
+    """Things a plan puts nearer one end than the middle of what the request says they go between."""
+    said = BETWEEN.search(request.low)
+    ends = [point_named(scene, f" {said.group(side)} ") for side in ("a", "b")] if said is not None else []
+    if said is None or ends[0] is None or ends[1] is None or request.question:
+        return []
+    middle = ((ends[0][0] + ends[1][0]) / 2, (ends[0][1] + ends[1][1]) / 2)
+    off = [a.id for a in placed if a.id != "ego" and math.dist((a.pose.x, a.pose.y), middle)
+           > min(math.dist((a.pose.x, a.pose.y), end) for end in ends)]
+    return [f"you said between {said.group('a')} and {said.group('b')}, but the plan puts {', '.join(off)} nearer one of them"] if off else []
 
 
 # One thing picked out by being nearest or furthest: "the tree furthest from the library".

@@ -24,8 +24,8 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
-from drivetwin.orchestrator.planning.rules.places import BY_IT, PLACE_SAID, side_of
-from drivetwin.orchestrator.planning.rules.reading import find_place, used_as_verb
+from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, side_of
+from drivetwin.orchestrator.planning.rules.reading import used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import compass_of
@@ -199,8 +199,9 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
 def _in_background(masked: str, at: int) -> bool:
     """Whether a word at `at` is said inside a clause of time, place or reason; "so" that leads to
     what should happen ("..., so the seat and the bin should go") leads to the request itself."""
+    halfway = BETWEEN.search(masked)  # "a bin between the bench and the sign": where it goes, not what
     return any(not (w.group(1) == "so" and _OUGHT.match(masked, w.end()))
-               for w in _BACKGROUND.finditer(masked[:at]))
+               for w in _BACKGROUND.finditer(masked[:at])) or (halfway is not None and halfway.start("a") <= at < halfway.end("b"))
 
 
 # Workers that set or tell the lights setting, which is what the lamps' being on or off is.
@@ -278,7 +279,7 @@ _CHANGES_EXISTING = frozenset(["make", "paint", "colour", "color", "recolour", "
                                "push", "pull", "nudge", "rotate", "drive", "slide", "relocate", "spin", "reverse",
                                "space", "spread", "straighten", "rearrange", "reposition", "tidy"])
 # Words that say the things were there before: "put the cones back where they were".
-_AS_BEFORE = re.compile(r"\b(?:back where|back to where|where (?:it|they) (?:was|were|used to be)|back in place)\b")
+_AS_BEFORE = re.compile(r"\b(?:back (?:where|to where|in|into|at|on|to)|where (?:it|they) (?:was|were|used to be)|back in place)\b")
 
 
 def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
@@ -595,7 +596,7 @@ def _picked_out(said: str, categories: set[str], scene: Scene, main: str = "") -
         return {a.id for a in members if (a.pose.x - mid_x) * east + (a.pose.y - mid_y) * north > 0}
     if not where.strip():
         return {a.id for a in members}
-    point = _point_named(where, scene)
+    point = point_named(scene, where)
     if point is None or not members:
         return frozenset(kinds)
     by_distance = sorted(members, key=lambda a: math.hypot(a.pose.x - point[0], a.pose.y - point[1]))
@@ -615,23 +616,6 @@ def _amount_word(word: str) -> int | None:
     if word.isdigit():
         return int(word)
     return spelt_counts().get(word)
-
-
-def _point_named(where: str, scene: Scene) -> tuple[float, float] | None:
-    """The place a few words name: a landmark, the ego, else the nearest-named thing of a kind ("the bench")."""
-    ego = scene.asset("ego")
-    if ego is not None and (ph.has_any(where, ph.EGO_WORDS) or re.search(r"\bego\b", where)):
-        return ego.pose.x, ego.pose.y
-    place = find_place(scene, where)
-    if place is not None:
-        landmark = scene.landmark(place[0])
-        if landmark is not None:
-            return landmark.position[0], landmark.position[1]
-    for mention in ph.find_categories(where):
-        found = [a for a in scene.all_assets() if a.category == mention.category]
-        if len(found) == 1:
-            return found[0].pose.x, found[0].pose.y
-    return None
 
 
 def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:

@@ -294,3 +294,67 @@ def test_a_new_car_said_to_brake_is_not_added_standing_still(campus, registry):
     report = session.submit("add a car in front of the ego that brakes suddenly")
     assert not report.ok
     assert session.scene == campus
+
+
+# Between two things, half of them, both and each side, the start of a lane ---------------------------
+def test_between_two_places_is_halfway_between_them(session, campus):
+    library, stop = campus.landmark("Library entrance").position, campus.landmark("bus stop").position
+    report = session.submit("plant a tree between the library and the bus stop")
+    assert report.ok, report.error
+    (tree,) = _added(session, campus, "tree")
+    middle = ((library[0] + stop[0]) / 2, (library[1] + stop[1]) / 2)
+    assert _dist(tree, middle) < min(_dist(tree, library), _dist(tree, stop))
+
+
+def test_between_two_things_names_no_thing_to_change(session, campus):
+    report = session.submit("a bin halfway between the bench and the stop sign please")
+    assert report.ok, report.error
+    assert session.scene.asset("bench_1") == campus.asset("bench_1")
+    assert len(_added(session, campus, "trash_bin")) == 1
+
+
+def test_a_plan_that_puts_a_thing_at_one_end_of_a_between_is_not_applied(campus, registry):
+    at_the_stop = Fixed(add("tree", location={"relation": "at", "target": "bus stop"}))
+    session = Session(campus, at_the_stop, registry)
+    report = session.submit("a tree in between the library and the bus stop")
+    assert not report.ok
+    assert session.scene == campus
+
+
+def test_half_of_a_kind_is_painted_not_all_of_it(session, campus):
+    lamps = [a for a in campus.assets if a.category == "street_light"]
+    report = session.submit("paint half the street lights red")
+    assert report.ok, report.error
+    changed = [a for a in session.scene.assets if a.category == "street_light" and a != campus.asset(a.id)]
+    assert len(changed) == len(lamps) // 2
+
+
+def test_a_plan_that_paints_all_when_half_was_said_is_not_applied(campus, registry):
+    session = Session(campus, Fixed(ToolCall(tool="set_asset_appearance", args={"category": "street_light", "colour": "red"})),
+                      registry)
+    report = session.submit("half of the street lights should be red")
+    assert not report.ok
+    assert session.scene == campus
+
+
+@pytest.mark.parametrize("words", ["benches at both ends of the bus stop", "a cone on each side of the hydrant",
+                                   "a bollard at every corner of the intersection"])
+def test_both_or_each_side_is_never_one_thing_added(campus, registry, words):
+    session = Session(campus, Fixed(add("bench" if "bench" in words else "traffic_cone")), registry)
+    report = session.submit(words)
+    assert not report.ok
+    assert session.scene == campus
+
+
+def test_a_thing_put_back_where_there_is_none_is_asked_about(session, campus):
+    report = session.submit("put the truck back in lot A")
+    assert not report.ok and report.question is not None
+    assert session.scene == campus
+
+
+def test_the_start_of_a_lane_is_near_where_it_begins(session, campus):
+    lane = campus.roads.lane("main_westbound")
+    report = session.submit("move the ego to the start of main street westbound")
+    assert report.ok, report.error
+    ego = session.scene.asset("ego")
+    assert _dist(ego, lane.centreline[0]) < 15.0

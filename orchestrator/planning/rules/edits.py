@@ -362,6 +362,8 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
             raise ph_error(f"there is no {r.mentions[0].category} in the scene to recolour")
         return None
     look = {k: v for k, v in (("colour", colour), ("material", material)) if v is not None}
+    if r.mentions and _HALF.search(r.low[: r.mentions[0].start]) and len(ids) > 1:  # "paint half the lamps red": the first half
+        return ToolCall(tool="set_asset_appearance", args={"assets": ids[: len(ids) // 2], **look})
     every = {a.id for a in scene.assets if r.mentions and a.category == r.mentions[0].category}
     if r.mentions and r.mentions[0].plural and not r.ids and len(ids) > 1 and set(ids) == every:
         # "paint the cones orange": every one of a kind; "the cars in lot B" (an SUV too) are those named

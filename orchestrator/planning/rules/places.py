@@ -17,9 +17,9 @@ from typing import Any
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.reading import Reading
+from drivetwin.orchestrator.planning.rules.reading import Reading, find_place
 from drivetwin.worlds.scene import AssetInstance, Landmark, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon
+from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon
 
 RELATIONS = (
     (("in front of", "ahead of", "front of", "infront", "in front"), "in_front_of"),
@@ -153,9 +153,57 @@ _THE_ONE = re.compile(r"\b(?:in|at|to|into|over to)\s+the\s+\w+\s+one\b")
 _THE_OTHER = re.compile(r"\bthe other ([a-z]+(?: [a-z]+)?)")
 
 
+def point_named(scene: Scene, where: str) -> tuple[float, float] | None:
+    """The point a few words name: the ego, a landmark, an asset by its id, else the one thing of
+    a kind the scene has ("the bench"); None when they name none of these."""
+    ego = scene.asset("ego")
+    if ego is not None and (ph.has_any(where, ph.EGO_WORDS) or re.search(r"\bego\b", where)):
+        return ego.pose.x, ego.pose.y
+    place = find_place(scene, where)
+    if place is not None:
+        landmark = scene.landmark(place[0])
+        if landmark is not None:
+            return landmark.position[0], landmark.position[1]
+    for asset in scene.all_assets():
+        if re.search(rf"\b{re.escape(asset.id)}\b", where):
+            return asset.pose.x, asset.pose.y
+    for mention in ph.find_categories(where):
+        found = [a for a in scene.all_assets() if a.category == mention.category]
+        if len(found) == 1:
+            return found[0].pose.x, found[0].pose.y
+    return None
+
+
+# A point between two things: "between the library and the bus stop", "halfway between the bench and the sign".
+BETWEEN = re.compile(r"\b(?:halfway |midway |half way |right )?(?:in )?between\s+(?P<a>.+?)\s+and\s+(?P<b>.+?)"
+                     r"(?=\s*(?:[,.;!?]|$|\b(?:please|pls|so|for|then|now)\b))")
+
+
+def between(scene: Scene, low: str) -> dict[str, Any] | None:
+    """The point halfway between the two things the words say something goes between, as an
+    absolute Location; None when they say no "between"; a PlanningError when they name a side
+    this world has no one point for."""
+    said = BETWEEN.search(low)
+    if said is None:
+        return None
+    ends = [point_named(scene, f" {said.group(side)} ") for side in ("a", "b")]
+    if ends[0] is None or ends[1] is None:
+        from drivetwin.orchestrator.planning.base import PlanningError
+
+        unknown = said.group("a") if ends[0] is None else said.group("b")
+        raise PlanningError(f"I could not tell where {unknown.strip()!r} is, to put something between; name a place or one thing")
+    return {"relation": "absolute", "x": round((ends[0][0] + ends[1][0]) / 2, 2), "y": round((ends[0][1] + ends[1][1]) / 2, 2)}
+
+
 def places_called(scene: Scene, word: str) -> list[str]:
     """The landmarks one of whose names ends in `word` ("gate": the main gate and the east gate)."""
     return [lm.name for lm in scene.landmarks if any(ph.tokens(ph.normalise(n))[-1:] == [word] for n in lm.names())]
+
+
+# Either end of a lane or road: "the start of Main Street westbound", "the far end of the lane".
+_LANE_END = re.compile(r"\b(start|beginning|entry|end) of\b")
+# How far into a lane "its start" (or short of its end) is.
+LANE_END_M = 10.0
 
 
 # Every place of a kind: "at every crosswalk", "by each of the gates", "outside both entrances".
@@ -270,6 +318,9 @@ def location(
         return {"relation": "absolute", "x": coords[0], "y": coords[1]}
     if r.has(_CENTRE) or any(c in r.low for c in _CENTRE):
         return {"relation": "scene_centre"}
+    halfway = between(scene, r.low)
+    if halfway is not None:  # "a tree between the library and the bus stop"
+        return halfway
     offset = _compass_of(r, scene) if compass else None
     if offset is not None:  # "north of the crossroads", "20 m west of the fountain", "in the northbound lane, north of ..."
         return offset
@@ -289,6 +340,13 @@ def location(
             return {"relation": "in_lane", "target": anchor, "along_m": along, **({} if r.lane_guessed else {"lane": r.lane})}
         if r.landmark:  # "the eastbound lane by the east gate": that lane, where it passes the place
             return {"relation": "in_lane", "target": r.landmark, **({} if r.lane_guessed else {"lane": r.lane})}
+        end = _LANE_END.search(r.low)
+        lane = scene.roads.lane(r.lane)
+        if end is not None and lane is not None:  # "at the start of Main Street westbound": near where the lane begins
+            length = sum(math.dist(p, q) for p, q in itertools.pairwise(lane.centreline))
+            arc = min(LANE_END_M, length / 2) if end.group(1) in ("start", "beginning", "entry") else max(length - LANE_END_M, length / 2)
+            x, y, _ = point_along(lane.centreline, arc)
+            return {"relation": "in_lane", "target": f"{x:.1f}, {y:.1f}", "lane": r.lane}
         return {"relation": "in_lane", "target": r.lane}
     target: str | None = _asset_after_relation(r, scene, exclude)
     if target is None and r.landmark is None and notes.place is not None and r.has(("its entrance", "the entrance")):
@@ -464,4 +522,4 @@ def said_a_place(r: Reading) -> bool:
     return bool(re.search(r"\b(near|next to|beside|by|in front of|behind|outside|close to|over by)\b", r.masked))
 
 
-__all__ = ["BY_IT", "EACH_PLACE", "PLACE_SAID", "each_place_named", "places_called", "PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]
+__all__ = ["BETWEEN", "BY_IT", "EACH_PLACE", "PLACE_SAID", "between", "point_named", "each_place_named", "places_called", "PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]
