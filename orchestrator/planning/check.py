@@ -223,6 +223,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                and not _at_a_target(scene, effect, a)  # a compound's other place or lane
                and not _brought_closer(scene, a, request.place)  # "3 m towards the fountain"
                and not FURTHEST.search(request.low)  # "the tree furthest from the library"
+               and not _heads_to(scene, a, request.place)  # "make him walk to the library"
                and not (_FACE_SAID.search(request.low) and _turned_to_face(scene, a, request.place))  # "turn the bench to face the fountain"
                and not ((says_other_place(request.low, scene) or _MOVED_AWAY.search(request.low))
                         and _near(scene, scene.asset(a.id) or a, request.place))]  # "... in the wrong car park"
@@ -576,6 +577,13 @@ def _turned_to_face(scene: Scene, asset: AssetInstance, place: str) -> bool:
         return False
     heading = math.atan2(centre[1] - asset.pose.y, centre[0] - asset.pose.x)
     return abs(math.degrees(math.remainder(heading - asset.pose.yaw, 2 * math.pi))) <= FACING_SLACK_DEG
+
+
+def _heads_to(scene: Scene, asset: AssetInstance, place: str) -> bool:
+    """Whether the asset is given a path that ends at the place."""
+    centre = _centre(scene, place)
+    path = getattr(asset.behaviour, "waypoints", None)
+    return centre is not None and bool(path) and math.dist(tuple(path[-1]), centre) <= PLACE_RADIUS_M / 2
 
 
 def _brought_closer(scene: Scene, asset: AssetInstance, place: str) -> bool:

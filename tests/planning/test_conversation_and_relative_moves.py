@@ -358,3 +358,71 @@ def test_the_start_of_a_lane_is_near_where_it_begins(session, campus):
     assert report.ok, report.error
     ego = session.scene.asset("ego")
     assert _dist(ego, lane.centreline[0]) < 15.0
+
+
+# Referring back over turns ------------------------------------------------------------------------------
+def test_them_moved_to_a_place_moves_every_one_of_them(session, campus):
+    session.submit("three cones near the library please")
+    cones = _added(session, campus, "traffic_cone")
+    report = session.submit("now move them to the east gate")
+    assert report.ok, report.error
+    gate = campus.landmark("east gate").position
+    assert all(_dist(session.scene.asset(c.id), gate) < 15.0 for c in cones)
+
+
+def test_same_again_but_at_another_place(session, campus):
+    session.submit("put a bin by the union")
+    report = session.submit("same again but by the library")
+    assert report.ok, report.error
+    bins = _added(session, campus, "trash_bin")
+    assert len(bins) == 2
+    assert any(_dist(b, campus.landmark("Library entrance").position) < 15.0 for b in bins)
+
+
+def test_same_again_but_another_kind_goes_where_the_last_ones_went(session, campus):
+    session.submit("2 cones at the east gate")
+    report = session.submit("same again but bollards")
+    assert report.ok, report.error
+    bollards = _added(session, campus, "bollard")
+    assert len(bollards) == 2
+    assert all(_dist(b, campus.landmark("east gate").position) < 15.0 for b in bollards)
+
+
+@pytest.mark.parametrize(("first", "then", "done"), [
+    ("paint the suv yellow", "and the cars too", lambda s, c: all(
+        s.asset(i).appearance != c.asset(i).appearance for i in ("passenger_car_1", "passenger_car_2"))),
+    ("remove the bench", "oh, and the bin", lambda s, c: s.asset("trash_bin_1") is None),
+    ("move the bench 2 m east", "and the bin as well", lambda s, c: s.asset("trash_bin_1").pose.x == pytest.approx(
+        c.asset("trash_bin_1").pose.x + 2.0, abs=0.05)),
+])
+def test_and_the_other_things_too_does_the_last_edit_to_them(session, campus, first, then, done):
+    session.submit(first)
+    report = session.submit(then)
+    assert report.ok, report.error
+    assert done(session.scene, campus)
+
+
+def test_and_a_thing_too_after_an_addition_is_not_read_as_a_repeat_on_existing_ones(session, campus):
+    session.submit("add a bench")
+    report = session.submit("and the bin too")
+    assert session.scene.asset("trash_bin_1") == campus.asset("trash_bin_1")
+
+
+def test_walking_to_a_place_is_a_walk_from_where_they_stand(session, campus):
+    session.submit("add a pedestrian at the bus stop")
+    (walker,) = _added(session, campus, "pedestrian")
+    report = session.submit("make him walk to the library")
+    assert report.ok, report.error
+    now = session.scene.asset(walker.id)
+    assert now.behaviour.kind == "follow_path"
+    assert now.behaviour.waypoints[0] == pytest.approx([walker.pose.x, walker.pose.y], abs=0.05)
+    assert math.dist(now.behaviour.waypoints[-1], campus.landmark("Library entrance").position) < 2.0
+
+
+def test_the_second_one_is_the_second_thing_the_last_turn_added(session, campus):
+    session.submit("add two benches by the fountain")
+    benches = _added(session, campus, "bench")
+    report = session.submit("paint the second one blue")
+    assert report.ok, report.error
+    assert session.scene.asset(benches[1].id).appearance != benches[1].appearance
+    assert session.scene.asset(benches[0].id) == benches[0]

@@ -107,11 +107,23 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         if outermost is not None:
             return [outermost]
         return recent[-1:] if recent else present[:1]
+    nth = _NTH_ONE.search(r.low)
+    recent = [i for i in memory.last_added() if scene.asset(i) is not None]
+    if nth is not None and recent:  # "paint the second one blue": of the things the last turn added, in order
+        at = _ORDINALS.index(nth.group(1))
+        if at >= len(recent) and nth.group(1) != "last":
+            raise ph_error(f"the last turn added {len(recent)}; there is no {nth.group(1)} one")
+        return [recent[-1] if nth.group(1) == "last" else recent[at]]
     if r.has(_POINTING):
         if notes.subject:
             return notes.subject
         return [i for i in memory.last_added() if scene.asset(i) is not None]
     return []
+
+
+# One of the things just added, by its place in the order they were added: "the second one", "the last of them".
+_ORDINALS = ("first", "second", "third", "fourth", "fifth", "sixth", "last")
+_NTH_ONE = re.compile(rf"\bthe ({'|'.join(_ORDINALS)}) (?:one|of them|of those)\b")
 
 
 # Anything at all, picked out by what it is nearest: "whatever is closest to the ego", "the nearest
@@ -566,10 +578,17 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     for word, key, sign in lx.SIDE_WORDS:
         if shift is not None and r.has((word,)) and not anchored:
             return [ToolCall(tool="move_asset", args={**moved, key: sign * shift})]
+    walks = found is not None and catalog()[found.category].motion == "walker" and _GOES_TO.search(r.low) is not None
+    goal = _point_of(r, scene, memory) if walks and not scoped and r.landmark else None
+    if goal is not None and found is not None:  # "make him walk to the library": on foot from where he stands
+        speed = FAST_WALK_MS if r.has(("run", "runs", "jog", "jogs", "hurry", "hurries", "ride", "rides", "cycle", "cycles")) else WALK_MS
+        path = [[round(found.pose.x, 2), round(found.pose.y, 2)], [round(goal[0], 2), round(goal[1], 2)]]
+        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "follow_path", "waypoints": path, "speed": speed}})]
     where = None if scoped else location(r, scene, memory, notes, exclude=ids)  # the place said which, not where to
     if where is not None:
-        notes.subject = [asset]
-        return [ToolCall(tool="place_asset", args={"asset": asset, "location": where})]
+        group = ids if where.get("relation") != "absolute" else [asset]  # "move them to the gate": each of them, side by side
+        notes.subject = group
+        return [ToolCall(tool="place_asset", args={"asset": i, "location": where}) for i in group]
     if kind == "parked":
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
     if r.has(("move", "shift", "nudge", "push", "slide", "budge", "relocate")):
@@ -581,6 +600,13 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]
     return None
+
+
+# Going somewhere on foot or by bike: "walk to the library", "head over to the fountain", "ride towards the gate".
+_GOES_TO = re.compile(r"\b(?:walk|stroll|head|go|run|jog|wander|ride|cycle|amble|hurry|hurries|make (?:his|her|their) way)"
+                      r"(?:s|es|ing)?\b(?:\s+(?:over|across|back|off|on))?\s+(?:to|towards?)\b")
+# Speeds on foot, m/s: a walk, and a run or a bike.
+WALK_MS, FAST_WALK_MS = 1.4, 3.5
 
 
 # Where a thing is to go, said after the verb ("move it to the gym", "shift the bench over to the

@@ -55,7 +55,7 @@ from drivetwin.orchestrator.planning.rules.places import (
 )
 from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
-from drivetwin.orchestrator.planning.rules.repeat import correct, corrects, repeat, repeats
+from drivetwin.orchestrator.planning.rules.repeat import correct, corrects, last_location, repeat, repeats
 from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces
 from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
@@ -532,7 +532,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         )
     if re.match(rf"\s*({'|'.join(lx.FILLER_STARTS)})\b", r.low) and not r.mentions and not r.ids:
         return None  # "before I add anything": a circumstance, not a request
-    if repeats(r):  # "repeat that outside Engineering Hall", "ditto for the bus", "do the same again?"
+    if repeats(r, memory):  # "repeat that outside Engineering Hall", "ditto for the bus", "and the bin too"
         return repeat(r, scene, memory, notes)
     if corrects(r):  # "actually, make that five": the last edit's things, as many as that
         return correct(r, scene, memory)
@@ -907,6 +907,8 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     if kind is not None:
         args["behaviour"] = behaviour_spec(kind, r)
     where = location(r, scene, memory, notes)
+    if where is None and again is not None:  # "same again but bollards": where the last ones went
+        where = last_location(memory)
     if where is not None and kind == "jaywalk" and where.get("target") == "ego":
         where = None  # the jaywalk behaviour places the walker in the ego's path itself
     mark = scene.landmark(str(where.get("target"))) if where is not None else None

@@ -25,16 +25,33 @@ _REPEAT = re.compile(
     r"(?:ditto|repeat (?:that|this|it|the last (?:one|edit|change|step))(?: (?:again|once more))?"
     r"|do (?:that|this|it|the same(?: thing)?)(?: (?:again|once more|one more time|too|as well))?"
     r"|(?:the )?same (?:again|thing)|(?:the )?same(?= (?:for|with|at|outside|by|near|on|to|in|over)\b))"
-    r"(?![\w-])(?!\s+but\b)"
+    r"(?![\w-])(?!\s+but\b(?!\s+(?:by|at|near|next to|beside|behind|in front of|outside|in|on|over by)\b))"
 )
 
 # Words that add nothing to what is repeated.
-_FILLER = re.compile(r"\b(?:again|please|pls|too|as well|once more|one more time|thanks|thank you)\b")
+_FILLER = re.compile(r"\b(?:again|please|pls|too|as well|once more|one more time|thanks|thank you)\b|^\s*but\b")
 
 
-def repeats(r: Reading) -> bool:
-    """Whether the clause asks for the last edit again."""
-    return _REPEAT.match(r.low) is not None
+# Other things named after an edit, for it to be done to them too: "and the cars too", "oh, and the
+# bin", "also those benches" (a few words after the article, no verb).
+_ALSO_THE = re.compile(r"^\s*(?:(?:oh|and|also|plus|then|ok(?:ay)?)[,\s]+)+(?:the|those|these|that|this|all the|both(?: the)?)\s+"
+                       r"(?:[a-z_0-9]+\s+){0,3}?[a-z_0-9]+(?:\s+(?:too|as well|also))?\s*[.!]*\s*$")
+# Calls that change things already there: what "and the bin too" can be done to as well.
+_ON_EXISTING = ("remove_assets", "set_asset_appearance", "move_asset", "place_asset", "set_behaviour")
+
+
+def repeats(r: Reading, memory: Memory | None = None) -> bool:
+    """Whether the clause asks for the last edit again (to other things: "and the bin too", when
+    the last edit changed things already there)."""
+    if _REPEAT.match(r.low) is not None:
+        return True
+    if memory is None or not (r.mentions or r.ids) or _ALSO_THE.match(r.low) is None:
+        return False
+    try:
+        _, calls = _last_edit(memory)
+    except PlanningError:
+        return False
+    return bool(calls) and all(c.tool in _ON_EXISTING for c in calls)
 
 
 def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
@@ -129,6 +146,17 @@ def _last_edit(memory: Memory) -> tuple[Turn, list[ToolCall]]:
     raise PlanningError("there is no earlier edit to repeat; say what to do")
 
 
+def last_location(memory: Memory) -> dict[str, Any] | None:
+    """Where the last edit still in the scene put things ("same again but bollards": there too),
+    or None when it put nothing anywhere in particular."""
+    try:
+        _, calls = _last_edit(memory)
+    except PlanningError:
+        return None
+    where = next((c.args["location"] for c in calls if isinstance(c.args.get("location"), dict)), None)
+    return dict(where) if where is not None else None
+
+
 def _alike(place: dict[str, Any], was: Any, scene: Scene) -> dict[str, Any]:
     """The place named, at the part of it the last edit used: "same again, but at lot B" after a
     line across the lot A entrance is across the lot B entrance, when lot B has one."""
@@ -154,4 +182,4 @@ def _retarget(tool: str, args: dict[str, Any], things: list[str], out: list[Tool
     return False
 
 
-__all__ = ["correct", "corrects", "repeat", "repeats"]
+__all__ = ["correct", "corrects", "last_location", "repeat", "repeats"]
