@@ -31,6 +31,9 @@ REMOVE_WORDS = re.compile(
     r"|\b(?:vanish|disappear)(?:es|s|ed|ing)?\b|\bpoof\b"
     r"|\b(?:want|need|like|prefer|there (?:should|must|can|may|is to|are to) be|there'?s to be|(?:should|must) (?:be )?have) (?:no|zero)\b"
     r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to|uses?|needs?|wants?)"  # "nobody should be parked there"
+    # "there's no need for the bench", "I don't think we need the sign anymore": not needed, so gone
+    r"|\bno (?:need|use) for\b|\b(?:is|are)(?:n'?t| not) (?:needed|necessary|wanted) (?:any ?more|any longer)\b"
+    r"|\b(?:don'?t|dont|do not|doesn'?t|does not) (?:really )?(?:think (?:we|i|you|they) )?(?:really )?need\b[^,.;!?]*\b(?:any ?more|any longer)\b"
     # "make sure there are no cars in lot B", "ensure nobody is standing at the bus stop": a scene without them
     r"|\b(?:make sure|ensure|see to it|check) (?:that )?(?:there (?:is|are|'s) )?(?:no|nothing|nobody|no one|no-one)\b"
 )

@@ -426,3 +426,21 @@ def test_the_second_one_is_the_second_thing_the_last_turn_added(session, campus)
     assert report.ok, report.error
     assert session.scene.asset(benches[1].id).appearance != benches[1].appearance
     assert session.scene.asset(benches[0].id) == benches[0]
+
+
+# Not needed any more, and a little turn --------------------------------------------------------------------
+@pytest.mark.parametrize(("words", "gone"), [("there's no need for the bus stop bench", "bench_1"),
+                                             ("i dont think we need the stop sign anymore", "stop_sign_1"),
+                                             ("the hydrant isn't needed any longer", "fire_hydrant_1")])
+def test_a_thing_no_longer_needed_is_taken_away(session, campus, words, gone):
+    report = session.submit(words)
+    assert report.ok, report.error
+    assert session.scene.asset(gone) is None
+    assert len(session.scene.assets) == len(campus.assets) - 1
+
+
+def test_a_little_turn_is_a_small_one_the_way_said(session, campus):
+    report = session.submit("could you turn the suv a little to the right")
+    assert report.ok, report.error
+    turned = math.degrees(math.remainder(session.scene.asset("suv_1").pose.yaw - campus.asset("suv_1").pose.yaw, 2 * math.pi))
+    assert -30.0 <= turned < 0.0

@@ -38,6 +38,8 @@ SCOPE_RADIUS_M = 20.0
 # Defaults for amounts a person leaves out ("back it up", "shift the bin", "spin it").
 DEFAULT_STEP_M = 3.0
 SMALL_STEP_M = 1.5
+# A turn said to be small ("angle it a little"), in degrees (anticlockwise, as turn_deg counts).
+SMALL_TURN_DEG = 15.0
 DEFAULT_SPIN_DEG = 90.0
 # Words that point at what the conversation is about: pronouns, and a demonstrative with a word
 # for any thing ("remove that thing").
@@ -541,6 +543,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
                 raise ph_error(f"{asset} already faces {facing}")
         elif r.has(("around", "round", "wrong way", "other way", "flip", "about")):  # "spin the bench round"
             angle = 180.0
+        elif r.has(_SMALL):  # "turn the suv a little to the left": a small turn, that way
+            notes.guess("how far to turn")
+            angle = -SMALL_TURN_DEG if r.has(("right", "clockwise")) and not r.has(("anticlockwise", "counterclockwise")) else SMALL_TURN_DEG
         else:
             notes.guess("how far to turn")
             angle = DEFAULT_SPIN_DEG
