@@ -444,3 +444,10 @@ def test_a_little_turn_is_a_small_one_the_way_said(session, campus):
     assert report.ok, report.error
     turned = math.degrees(math.remainder(session.scene.asset("suv_1").pose.yaw - campus.asset("suv_1").pose.yaw, 2 * math.pi))
     assert -30.0 <= turned < 0.0
+
+
+def test_more_visible_is_a_colour_that_stands_out(session, campus):
+    report = session.submit("the hydrant should be more visible")
+    assert report.ok, report.error
+    assert session.scene.asset("fire_hydrant_1").appearance != campus.asset("fire_hydrant_1").appearance
+    assert session.scene.count("fire_hydrant") == campus.count("fire_hydrant")

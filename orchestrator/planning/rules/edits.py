@@ -48,7 +48,8 @@ _POINTING = ("it", "them", "that one", "those", "they", "its", "him", "her", "th
 # Words that make what follows a reference point, not the thing acted on ("near from ego").
 _ANCHOR_BEFORE = re.compile(r"\b(?:near|from|to|behind|ahead of|in front of|of|by|beside|around|closest to|nearest)\s+(?:the\s+)?$")
 # "make the suv stand out": a look meant to be seen, in the colour of safety clothing.
-_CONSPICUOUS = ("stand out", "stands out", "hard to miss", "eye-catching", "conspicuous", "easy to spot", "easier to spot", "hi-vis", "high-vis")
+_CONSPICUOUS = ("stand out", "stands out", "hard to miss", "eye-catching", "conspicuous", "easy to spot", "easier to spot", "hi-vis", "high-vis",
+                "more visible", "easier to see", "easy to see")
 CONSPICUOUS_COLOUR = "orange"
 # A motion verb with a side and no amount ("pull forward", "nudge it left", "roll back"), not a
 # relation ("left of the bench") or a lane ("the right lane").
