@@ -45,7 +45,9 @@ _SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")
 _MOVING = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!stopped )\b(driving|moving|travelling|traveling|riding)\b"
                      # "a car that brakes suddenly", "a van which slows down": what it does as it goes
                      r"|\b(?:that|which|who)\s+(?:\w+ly\s+)?(?:brakes?|slows?|swerves?|speeds?|accelerates?|drives?|rides?"
-                     r"|overtakes?|merges?|reverses?|cuts?|changes? lanes?)\b")
+                     r"|overtakes?|merges?|reverses?|cuts?|changes? lanes?)\b"
+                     # "a slow truck ahead of the ego", "a speeding car": how fast it goes
+                     r"|\b(?:slow|slow-moving|speeding|fast-moving)\s+(?:[a-z]+\s+)?(?:car|truck|lorry|bus|van|vehicle|suv|bike|cyclist|motorbike|motorcycle)s?\b")
 
 
 @dataclass(frozen=True)

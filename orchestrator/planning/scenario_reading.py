@@ -93,6 +93,11 @@ _KNOWN = frozenset({"then", "ones", "wheel", "brake", "once", "seconds", "second
                     "behind", "crossroad", "approach", "approached", "overtake", "collisions", "pedestrians", "junctions"})
 
 
+# Setting off: what a trigger ("when the ego approaches") times as much as a manoeuvre.
+_STARTS_MOVING = re.compile(r"\b(?:pull(?:s|ing)? (?:out|away|off)|(?:drive|drives|driving) (?:off|away)|sets? off|set(?:s|ting)? off"
+                            r"|starts? (?:moving|driving|walking|to (?:move|drive|walk))|moves? off|gets? going|departs?|leaves?)\b")
+
+
 def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool:
     """Whether the words describe something happening over time: a trigger ("when the ego is
     15 m away", "after 3 seconds") with an action, or a manoeuvre only a storyboard can play
@@ -120,7 +125,8 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
     crossing = re.sub(r"\bjaywalk\w*", " ", low)
     at_the_ego = bool(_AT_THE_EGO.search(low)) and any(
         words.search(crossing) for kind, words in _COMPILED if kind in ("cross_road", "stop_mid_road"))
-    return (trigger and manoeuvre) or light_change or at_the_ego or asks_unsupported(low) or any(
+    starts = bool(_STARTS_MOVING.search(low))  # "the suv pulls out as the ego approaches": then, not now
+    return (trigger and (manoeuvre or starts)) or light_change or at_the_ego or asks_unsupported(low) or any(
         words.search(low) for kind, words in _COMPILED if kind in _ONLY_STORYBOARD)
 
 

@@ -451,3 +451,23 @@ def test_more_visible_is_a_colour_that_stands_out(session, campus):
     assert report.ok, report.error
     assert session.scene.asset("fire_hydrant_1").appearance != campus.asset("fire_hydrant_1").appearance
     assert session.scene.count("fire_hydrant") == campus.count("fire_hydrant")
+
+
+# Things that happen later, and things said to move -----------------------------------------------------
+def test_setting_off_when_the_ego_approaches_is_never_done_from_the_start(session, campus):
+    report = session.submit("the suv pulls out of lot B as the ego approaches")
+    assert not report.ok
+    assert session.scene.asset("suv_1") == campus.asset("suv_1")
+
+
+def test_setting_off_with_no_time_said_is_done_now(session, campus):
+    report = session.submit("the suv should pull out of its spot")
+    assert report.ok, report.error
+    assert session.scene.asset("suv_1").behaviour.kind == "drive_lane"
+
+
+def test_a_slow_truck_is_not_added_parked(campus, registry):
+    session = Session(campus, Fixed(add("truck", location={"relation": "in_front_of", "target": "ego"})), registry)
+    report = session.submit("a slow truck ahead of the ego please")
+    assert not report.ok
+    assert session.scene == campus
