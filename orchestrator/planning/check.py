@@ -516,7 +516,7 @@ def _not_between(request: Request, scene: Scene, placed: list[AssetInstance]) ->
 
 
 # One thing picked out by being nearest or furthest: "the tree furthest from the library".
-_EXTREME = re.compile(r"\b(?:(?P<near>nearest|closest)|(?P<far>furthest|farthest|most distant))\b")
+_EXTREME = re.compile(r"\b(?:(?P<near>nearest|closest)(?! one\b)|(?P<far>furthest|farthest|most distant)(?= (?:away )?from\b))\b")
 
 
 def _not_the_extreme(request: Request, effect: Effect, scene: Scene) -> list[str]:

@@ -471,3 +471,17 @@ def test_a_slow_truck_is_not_added_parked(campus, registry):
     report = session.submit("a slow truck ahead of the ego please")
     assert not report.ok
     assert session.scene == campus
+
+
+def test_furthest_a_compass_way_is_the_outermost_that_way_not_the_furthest_from_the_place(session, campus):
+    lot_b = [a for a in campus.assets if a.id in ("passenger_car_1", "passenger_car_2", "suv_1")]
+    east = max(lot_b, key=lambda a: a.pose.x)
+    report = session.submit("paint the car furthest east in lot B red")
+    assert report.ok, report.error
+    assert [a.id for a in session.scene.assets if a != campus.asset(a.id)] == [east.id]
+
+
+def test_a_distance_asked_between_two_things_must_name_both(campus, registry):
+    wrong_pair = Fixed(ToolCall(tool="measure_distance", args={"a": "stop_sign_1", "b": "ego"}))
+    report = Session(campus, wrong_pair, registry).submit("how many metres between the stop sign and the traffic light?")
+    assert not report.ok

@@ -134,8 +134,8 @@ _NTH_ONE = re.compile(rf"\bthe ({'|'.join(_ORDINALS)}) (?:one|of them|of those)\
 _ANY_NEAREST = re.compile(r"\b(?:(?:whatever|anything|something|the (?:thing|object|item|prop))\s+(?:that'?s |which is |that is |is )?"
                           r"(?:nearest|closest)|the (?:nearest|closest) (?:thing|object|item|prop))\b")
 # The one furthest from something: "the tree furthest from the library", "the lamp farthest away from the ego".
-FURTHEST = re.compile(r"\b(?:furthest|farthest|most distant)\b")
-_FURTHEST_FROM = re.compile(r"\s*(?:that is |which is |that's )?(?:furthest|farthest|most distant)(?: away)?(?: from)?\b")
+FURTHEST = re.compile(r"\b(?:furthest|farthest|most distant)(?: away)? from\b")  # "furthest east" is a side, not this
+_FURTHEST_FROM = re.compile(r"\s*(?:that is |which is |that's )?(?:furthest|farthest|most distant)(?: away)? from\b")
 # A thing picked out by what it is nearest ("the car nearest the union", "the bin closest to the ego").
 _NEAREST_TO = re.compile(r"\s*(?:that is |which is |that's )?(?:nearest|closest)(?: to)?\b")
 
