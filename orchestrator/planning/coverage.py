@@ -233,7 +233,8 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     arranged = {c for call in scope.calls if call.tool == "arrange_assets" for c in call.args.get("categories", [])}
     out = []
     for m in named_in(masked):
-        if not any(w in _DEFINITE for w in m.last_words(2)) or not scene.count(m.category) or m.category in arranged:
+        every = any(w in ("all", "every", "each", "both") for w in m.last_words(3))  # "line up all the cars": those there
+        if not any(w in _DEFINITE for w in m.last_words(2)) or not scene.count(m.category) or (m.category in arranged and not every):
             continue
         if any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)

@@ -485,3 +485,10 @@ def test_a_distance_asked_between_two_things_must_name_both(campus, registry):
     wrong_pair = Fixed(ToolCall(tool="measure_distance", args={"a": "stop_sign_1", "b": "ego"}))
     report = Session(campus, wrong_pair, registry).submit("how many metres between the stop sign and the traffic light?")
     assert not report.ok
+
+
+def test_lining_up_all_the_cars_there_never_adds_new_ones(campus, registry):
+    row = Fixed(ToolCall(tool="arrange_assets", args={"categories": ["passenger_car"], "shape": "parking_row",
+                                                       "location": {"relation": "at", "target": "parking lot B"}}))
+    report = Session(campus, row, registry).submit("line up all the cars in lot B next to each other")
+    assert not report.ok
