@@ -492,3 +492,23 @@ def test_lining_up_all_the_cars_there_never_adds_new_ones(campus, registry):
                                                        "location": {"relation": "at", "target": "parking lot B"}}))
     report = Session(campus, row, registry).submit("line up all the cars in lot B next to each other")
     assert not report.ok
+
+
+# "And so does the bin", "oops, I meant bins" ---------------------------------------------------------------
+@pytest.mark.parametrize(("words", "check"), [
+    ("the bench has to go, and so does the bin", lambda s: s.asset("bench_1") is None and s.asset("trash_bin_1") is None),
+    ("move the bench 2 m north and so should the bin", lambda s: s.asset("trash_bin_1").pose.y == pytest.approx(-3.5, abs=0.05)),
+])
+def test_so_does_the_other_thing_does_the_clause_before_to_it(session, campus, words, check):
+    report = session.submit(words)
+    assert report.ok, report.error
+    assert check(session.scene)
+
+
+def test_i_meant_another_thing_is_never_read_as_adding_it(session, campus):
+    session.submit("remove the bench")
+    before = session.scene
+    report = session.submit("oops, I meant bins")
+    assert not report.ok
+    assert "undo" in (report.error or "")
+    assert session.scene == before

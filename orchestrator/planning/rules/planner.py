@@ -55,7 +55,15 @@ from drivetwin.orchestrator.planning.rules.places import (
 )
 from drivetwin.orchestrator.planning.rules.questions import plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
-from drivetwin.orchestrator.planning.rules.repeat import correct, corrects, last_location, repeat, repeats
+from drivetwin.orchestrator.planning.rules.repeat import (
+    correct,
+    corrects,
+    last_location,
+    meant_instead,
+    repeat,
+    repeats,
+    retargeted,
+)
 from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces
 from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
@@ -185,6 +193,10 @@ _STATEMENT = re.compile(
 _FIX = re.compile(r"(?:(?:please|pls|just|can you|could you|now)\s+)*(?:fix|sort out|sort (?:it|that|this) out|deal with|"
                   r"do something about|solve|remedy|correct|sort)\b(?:\s+(?:it|that|this|them))?\s*(?:please|pls|now)?\s*[.!?]*$",
                   re.IGNORECASE)
+# A clause that asks for what the one before it asked, of other things: "..., and so does the bin",
+# "..., same for the benches".
+_SO_DOES = re.compile(r"^\s*(?:[a-z]+\s+)??(?:and\s+)?(?:so (?:does|do|is|are|should|must|will|can|has|have)|(?:the )?same (?:goes )?for"
+                      r"|likewise(?: for)?|ditto for)\b")
 # A clause that asks for the same again of other things ("..., and the bin too", "the bollards as well").
 _TOO = re.compile(r"\b(?:too|as well)\s*[.!?]*\s*$")
 # An ellipsis the sentence goes on after ("the bench by the stop... vanishes"): a pause, not a break.
@@ -303,6 +315,7 @@ class RulePlanner:
         unknown: list[str] = []
         skipped: list[str] = []
         described: list[ToolCall] = []
+        previous: list[ToolCall] = []  # the calls of the last clause that asked for something
         for clause, asked, intro in clauses:
             reading = read(clause, scene)
             coming = len(notes.coming)
@@ -314,6 +327,12 @@ class RulePlanner:
                 if things:
                     style = {k: v for k, v in look.args.items() if k in ("colour", "material")}
                     calls.append(ToolCall(tool="set_asset_appearance", args={"assets": things, **style}))
+                    continue
+            if previous and reading.mentions and _SO_DOES.match(reading.low):
+                things = referenced(reading, scene, context.memory, notes)
+                again = retargeted(previous, things) if things else []
+                if again:  # "the bench has to go, and so does the bin": the clause before, done to the bin
+                    calls.extend(again)
                     continue
             clause_calls = _plan_clause(reading, asked, scene, context.memory, notes)
             if reading.landmark:
@@ -330,6 +349,7 @@ class RulePlanner:
                 notes.subject = _already_there(clause_calls, scene) or notes.subject
                 continue
             calls.extend(clause_calls)
+            previous = clause_calls
             unknown += _unknown_words(clause, scene)
         return calls, unknown, skipped, described
 
@@ -536,6 +556,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return repeat(r, scene, memory, notes)
     if corrects(r):  # "actually, make that five": the last edit's things, as many as that
         return correct(r, scene, memory)
+    meant_instead(r)  # "oops, I meant bins": never a new request for bins
     if _is_question(r, asked):
         looked_up = plan_question(r, scene, memory, notes)
         if [(c.tool, c.args) for c in looked_up] == [("find_assets", {})] and not (r.mentions or r.ids or r.ego or r.landmark):

@@ -106,6 +106,20 @@ _AMOUNT = re.compile(
 _AMOUNT_TOOLS = ("add_asset", "arrange_assets")
 
 
+# "Oops, I meant bins": the thing the last request should have named, and nothing else. The rules
+# cannot take back the last edit, so this is refused with what to do; never read as a new request.
+_MEANT = re.compile(r"^\s*(?:(?:oops|sorry|no|nah|wait|argh|ugh|actually)[,.!\s]+)*i (?:meant|mean)\b(?: to say)?[,:\s]+"
+                    r"(?:the |a |an |some )?(?P<what>[a-z][a-z ]{0,30}?)\s*[.!]*\s*$")
+
+
+def meant_instead(r: Reading) -> None:
+    """A PlanningError for a clause that only says what the last request meant instead."""
+    said = _MEANT.match(r.low)
+    if said is not None:
+        raise PlanningError(f"'I meant {said.group('what')}': say 'undo' to take back the last change, then the whole "
+                            f"request again with {said.group('what')}")
+
+
 def corrects(r: Reading) -> bool:
     """Whether the clause only gives a new amount for the last edit."""
     return _AMOUNT.match(r.low) is not None
@@ -169,6 +183,15 @@ def _alike(place: dict[str, Any], was: Any, scene: Scene) -> dict[str, Any]:
     return place
 
 
+def retargeted(calls: list[ToolCall], things: list[str]) -> list[ToolCall]:
+    """`calls` made on `things` instead of what they named ("the bench has to go, and so does the
+    bin"); [] when none of them names a thing to swap."""
+    out: list[ToolCall] = []
+    for call in calls:
+        _retarget(call.tool, dict(call.args), things, out)
+    return out
+
+
 def _retarget(tool: str, args: dict[str, Any], things: list[str], out: list[ToolCall]) -> bool:
     """The call made on `things` instead of what it named (appended to `out`); False when the
     call names no thing to swap."""
@@ -182,4 +205,4 @@ def _retarget(tool: str, args: dict[str, Any], things: list[str], out: list[Tool
     return False
 
 
-__all__ = ["correct", "corrects", "last_location", "repeat", "repeats"]
+__all__ = ["correct", "corrects", "last_location", "meant_instead", "repeat", "repeats", "retargeted"]

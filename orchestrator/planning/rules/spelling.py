@@ -119,11 +119,16 @@ def english_words() -> frozenset[str]:
     return frozenset(w for w in words if w.isalpha() and w.islower())
 
 
+# Sounds people type that no word list holds: "oops, I meant bins" is not "loops".
+_INTERJECTIONS = frozenset({"oops", "whoops", "ugh", "argh", "hmm", "hmmm", "erm", "umm", "uhh", "meh", "nah",
+                            "yeah", "yep", "nope", "lol", "haha", "yay", "oof", "welp", "okay", "ok"})
+
+
 def _is_english(low: str) -> bool:
     """An English word, also as written without its apostrophe ("dont", "isnt", "thats")."""
     words = english_words()
     low = low.replace("'", "")  # "don't" is "dont": a contraction, not a misspelt "donut"
-    return low in words or (low.endswith("nt") and low[:-2] in words) or (low.endswith("s") and low[:-1] in words)
+    return low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in words) or (low.endswith("s") and low[:-1] in words)
 
 
 @dataclass
