@@ -38,6 +38,7 @@ from drivetwin.orchestrator.planning.attributes import (
 )
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
 from drivetwin.orchestrator.planning.coverage import (
+    MIN_MOVE_M,
     Scope,
     absent_but_added,
     ambiguous_pick,
@@ -61,7 +62,6 @@ from drivetwin.orchestrator.planning.coverage import (
     unpointed,
     wrong_direction,
 )
-from drivetwin.orchestrator.planning.coverage import MIN_MOVE_M
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed, nearest_landmark
 from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, REMOVE_WORDS, asks, without_contrast
 from drivetwin.orchestrator.planning.readings import describe
@@ -506,8 +506,10 @@ def _amount_words_left_out(request: Request, effect: Effect, scene: Scene) -> li
 def _not_between(request: Request, scene: Scene, placed: list[AssetInstance]) -> list[str]:
     """Things a plan puts nearer one end than the middle of what the request says they go between."""
     said = BETWEEN.search(request.low)
-    ends = [point_named(scene, f" {said.group(side)} ") for side in ("a", "b")] if said is not None else []
-    if said is None or ends[0] is None or ends[1] is None or request.question:
+    if said is None or request.question:
+        return []
+    ends = [end for side in ("a", "b") if (end := point_named(scene, f" {said.group(side)} ")) is not None]
+    if len(ends) < 2:
         return []
     middle = ((ends[0][0] + ends[1][0]) / 2, (ends[0][1] + ends[1][1]) / 2)
     off = [a.id for a in placed if a.id != "ego" and math.dist((a.pose.x, a.pose.y), middle)
@@ -583,7 +585,9 @@ def _heads_to(scene: Scene, asset: AssetInstance, place: str) -> bool:
     """Whether the asset is given a path that ends at the place."""
     centre = _centre(scene, place)
     path = getattr(asset.behaviour, "waypoints", None)
-    return centre is not None and bool(path) and math.dist(tuple(path[-1]), centre) <= PLACE_RADIUS_M / 2
+    if centre is None or not path:
+        return False
+    return math.dist(tuple(path[-1]), centre) <= PLACE_RADIUS_M / 2
 
 
 def _brought_closer(scene: Scene, asset: AssetInstance, place: str) -> bool:

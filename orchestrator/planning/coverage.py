@@ -585,8 +585,8 @@ def _picked_out(said: str, categories: set[str], scene: Scene, main: str = "") -
     alone = amount is not None and not mentions
     kinds = {m.category for m in mentions} or (categories if re.search(r"\bones?\b", head) or alone else set())
     members = [a for a in scene.all_assets() if a.category in kinds and a.id != "ego"]
-    side = side_of(main, scene) if main else None
-    if side is not None and len(chosen := [a for a in members if side[1](a)]) >= 2:
+    road_side = side_of(main, scene) if main else None
+    if road_side is not None and len(chosen := [a for a in members if road_side[1](a)]) >= 2:
         members = chosen
     if _SIDE_ONLY.fullmatch(where):  # "the ones on the south side" are the south ones
         head, where = f"{head} {where}", ""

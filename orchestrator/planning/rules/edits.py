@@ -76,7 +76,10 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
     if not r.mentions and _ANY_NEAREST.search(r.low):  # "whatever is closest to the ego": of every kind
         point = _point_of(r, scene, memory)
         pool = [a.id for a in scene.assets if a.id != "ego"]
-        return [min(pool, key=lambda i: _distance_to(scene, i, point))] if point is not None and pool else []
+        if point is None or not pool:
+            return []
+        at: tuple[float, float] = point
+        return [min(pool, key=lambda i: _distance_to(scene, i, at))]
     # "put the SUV behind the ego": the thing named first is what moves, the ego where it goes.
     ego_anchors = (bool(r.mentions) and r.mentions[0].start < r.ego_at) or bool(
         _ANCHOR_BEFORE.search(r.low[: max(r.ego_at, 0)]))  # "everything near the ego": the ego is where

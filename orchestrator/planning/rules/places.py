@@ -522,4 +522,4 @@ def said_a_place(r: Reading) -> bool:
     return bool(re.search(r"\b(near|next to|beside|by|in front of|behind|outside|close to|over by)\b", r.masked))
 
 
-__all__ = ["BETWEEN", "BY_IT", "EACH_PLACE", "PLACE_SAID", "between", "point_named", "each_place_named", "places_called", "PLACE_WORDS", "Notes", "location", "relation_of", "said_a_place", "says_other_place"]
+__all__ = ["BETWEEN", "BY_IT", "EACH_PLACE", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_of", "said_a_place", "says_other_place"]
