@@ -116,10 +116,10 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
     nth = _NTH_ONE.search(r.low)
     recent = [i for i in memory.last_added() if scene.asset(i) is not None]
     if nth is not None and recent:  # "paint the second one blue": of the things the last turn added, in order
-        at = _ORDINALS.index(nth.group(1))
-        if at >= len(recent) and nth.group(1) != "last":
+        place = _ORDINALS.index(nth.group(1))
+        if place >= len(recent) and nth.group(1) != "last":
             raise ph_error(f"the last turn added {len(recent)}; there is no {nth.group(1)} one")
-        return [recent[-1] if nth.group(1) == "last" else recent[at]]
+        return [recent[-1] if nth.group(1) == "last" else recent[place]]
     if r.has(_POINTING):
         if notes.subject:
             return notes.subject
