@@ -191,7 +191,8 @@ def resolve_anchor(scene: Scene, location: Location, new_half_length: float,
     if rel == "scene_centre":  # no place said: a bench or a person at the nearest verge, not in the junction
         cx, cy = scene.bounds.centre
         kind = category(category_name) if category_name is not None else None
-        off_road = kind is not None and kind.placement != "drivable" and kind.motion in ("prop", "walker")
+        off_road = kind is not None and kind.placement != "drivable" and (
+            kind.motion == "prop" or (kind.motion == "walker" and "vehicle" not in kind.tags))  # a bicycle rides the road
         return Anchor(cx, cy, 0.0, surface="sidewalk" if off_road else "any", surface_preferred=off_road)
     if location.target is None:
         if rel in ("on_sidewalk", "in_lane"):

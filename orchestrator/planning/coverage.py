@@ -585,9 +585,6 @@ def _picked_out(said: str, categories: set[str], scene: Scene, main: str = "") -
     alone = amount is not None and not mentions
     kinds = {m.category for m in mentions} or (categories if re.search(r"\bones?\b", head) or alone else set())
     members = [a for a in scene.all_assets() if a.category in kinds and a.id != "ego"]
-    road_side = side_of(main, scene) if main else None
-    if road_side is not None and len(chosen := [a for a in members if road_side[1](a)]) >= 2:
-        members = chosen
     if _SIDE_ONLY.fullmatch(where):  # "the ones on the south side" are the south ones
         head, where = f"{head} {where}", ""
     side = md.compass_direction(re.sub(r"\b(north|south|east|west)ern\b", r"\1", head))
@@ -600,6 +597,9 @@ def _picked_out(said: str, categories: set[str], scene: Scene, main: str = "") -
     point = point_named(scene, where)
     if point is None or not members:
         return frozenset(kinds)
+    road_side = side_of(main, scene) if main else None  # "on the north side except the one nearest X": of those
+    if road_side is not None and len(chosen := [a for a in members if road_side[1](a)]) >= 2:
+        members = chosen
     by_distance = sorted(members, key=lambda a: math.hypot(a.pose.x - point[0], a.pose.y - point[1]))
     if amount is not None and amount > 1:  # "the two nearest the ego", "the three cones by the gate"
         return {a.id for a in by_distance[:amount]}
