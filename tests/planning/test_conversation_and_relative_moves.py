@@ -512,3 +512,17 @@ def test_i_meant_another_thing_is_never_read_as_adding_it(session, campus):
     assert not report.ok
     assert "undo" in (report.error or "")
     assert session.scene == before
+
+
+def test_a_compass_way_said_with_away_from_the_road_is_the_way_moved(session, campus):
+    report = session.submit("the bin sits on the kerb; nudge it one metre north, away from the road")
+    assert report.ok, report.error
+    moved, was = session.scene.asset("trash_bin_1"), campus.asset("trash_bin_1")
+    assert (moved.pose.x, moved.pose.y) == pytest.approx((was.pose.x, was.pose.y + 1.0), abs=0.05)
+
+
+def test_things_asked_into_a_layout_are_not_just_moved_to_its_place(session, campus):
+    session.submit("arrange the trees in one line along the library front")
+    trees = [a for a in session.scene.assets if a.category == "tree"]
+    library = campus.landmark("Library entrance").position
+    assert sum(_dist(t, library) < 15.0 for t in trees if t != campus.asset(t.id)) < 4

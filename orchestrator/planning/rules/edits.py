@@ -458,8 +458,8 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> di
     where they stand; None when the words say no such move."""
     said = _TOWARD.search(r.low)
     things = [a for i in ids if (a := scene.asset(i)) is not None]
-    if said is None or shift is None or not things:
-        return None
+    if said is None or shift is None or not things or md.compass_direction(r.masked) is not None:
+        return None  # "one metre north, away from the road": the compass way says it
     x = sum(a.pose.x for a in things) / len(things)
     y = sum(a.pose.y for a in things) / len(things)
     landmark = scene.landmark(r.landmark) if r.landmark and r.landmark_at > said.start() else None
@@ -571,7 +571,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         notes.guess("how far to move")  # "the SUV should pull forward a few metres"
         shift = DEFAULT_STEP_M
     moved: dict[str, Any] = {"asset": asset} if len(ids) == 1 else {"assets": ids}
-    if shift is None and (away := _TOWARD.search(r.low)) is not None and away.group("away"):
+    if shift is None and (away := _TOWARD.search(r.low)) is not None and away.group("away") and md.compass_direction(r.masked) is None:
         notes.guess("how far to move it")  # "push the bin further from the bus stop": a step away, never onto it
         shift = DEFAULT_STEP_M
     toward = _toward(r, scene, ids, shift)
@@ -595,7 +595,8 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "follow_path", "waypoints": path, "speed": speed}})]
     where = None if scoped else location(r, scene, memory, notes, exclude=ids)  # the place said which, not where to
     if where is not None:
-        group = ids if where.get("relation") != "absolute" else [asset]  # "move them to the gate": each of them, side by side
+        # "move them to the gate": each of them, side by side; a layout ("in one line") is not one place
+        group = ids if where.get("relation") != "absolute" and md.layout_said(r.low) is None else [asset]
         notes.subject = group
         return [ToolCall(tool="place_asset", args={"asset": i, "location": where}) for i in group]
     if kind == "parked":
