@@ -526,3 +526,21 @@ def test_things_asked_into_a_layout_are_not_just_moved_to_its_place(session, cam
     trees = [a for a in session.scene.assets if a.category == "tree"]
     library = campus.landmark("Library entrance").position
     assert sum(_dist(t, library) < 15.0 for t in trees if t != campus.asset(t.id)) < 4
+
+
+# Dozens, and weather that stops ---------------------------------------------------------------------------
+@pytest.mark.parametrize(("words", "count"), [("put half a dozen pedestrians at the north crosswalk", 6),
+                                              ("two dozen cones by the east gate", 24)])
+def test_dozens_said_in_words_are_counted(session, campus, words, count):
+    report = session.submit(words)
+    assert report.ok, report.error
+    kind = "pedestrian" if "pedestrian" in words else "traffic_cone"
+    assert len(_added(session, campus, kind)) == count
+
+
+def test_make_the_rain_stop_clears_it_and_adds_no_stop_sign(session, campus):
+    session.submit("make it rain")
+    report = session.submit("make the rain stop")
+    assert report.ok, report.error
+    assert session.scene.environment.weather.kind == "clear"
+    assert session.scene.count("stop_sign") == campus.count("stop_sign")

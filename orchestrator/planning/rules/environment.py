@@ -53,7 +53,8 @@ def weather(r: Reading) -> ToolCall | None:
             ):
                 continue  # "clear the roadworks away" is a removal
             words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
-            if kind != "clear" and re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low):
+            stopped = re.search(rf"\b(?:{words})\b(?:\s+\S+){{0,2}}?\s+(?:stop|stops|end|ends|clear|clears|go away|let up)\b", r.low)
+            if kind != "clear" and (re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low) or stopped):  # "make the rain stop"
                 return ToolCall(tool="set_weather", args={"kind": "clear"})  # "I don't want any rain any more"
             args: dict[str, Any] = {"kind": kind}
             if kind != "clear":

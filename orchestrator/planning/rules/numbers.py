@@ -104,9 +104,15 @@ _OTHER_LENGTHS = re.compile(r"\b(\d+(?:\.\d+)?)\s*(yards?|yds?|(?:car|vehicle)[-
 _ONE_CAR_LENGTH = re.compile(r"\b(?:a|one) (?:car|vehicle)[- ]length\b", re.IGNORECASE)
 
 
+# Dozens said in words: "half a dozen cones" are 6, "two dozen" 24 (a bare "dozen" is the count words' 12).
+_DOZENS = re.compile(r"\b(half a|a half|a|one|two|three|four|five)[- ]dozen\b", re.IGNORECASE)
+_DOZEN_OF = {"half a": 6, "a half": 6, "a": 12, "one": 12, "two": 24, "three": 36, "four": 48, "five": 60}
+
+
 def spelt_measures(text: str) -> str:
-    """`text` with measures spelt in words written in figures ("two metres" -> "2 metres"), and
-    lengths in yards or car lengths in metres ("3 yards" -> "2.74 m")."""
+    """`text` with measures spelt in words written in figures ("two metres" -> "2 metres"), dozens
+    as counts ("half a dozen" -> "6"), and lengths in yards or car lengths in metres ("3 yards" ->
+    "2.74 m")."""
     def figures(m: re.Match[str]) -> str:
         article = m.group(1).lower() in ("a", "an")
         if article and re.match(r"(?:m|ft|km|secs?|mins?|mph|kph)\b", m.string[m.end() :], re.IGNORECASE):
@@ -117,6 +123,7 @@ def spelt_measures(text: str) -> str:
         unit = YARD_M if m.group(2).lower().startswith("y") else CAR_LENGTH_M
         return f"{float(m.group(1)) * unit:.3g} m"
 
+    text = _DOZENS.sub(lambda m: str(_DOZEN_OF[m.group(1).lower()]), text)
     text = _ONE_CAR_LENGTH.sub(f"{CAR_LENGTH_M:g} m", _SPELT_MEASURE.sub(figures, text))
     return _OTHER_LENGTHS.sub(metres, text)
 
