@@ -480,8 +480,6 @@ def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:
     return found
 
 
-
-
 # A place said by a word several places' names end in ("by the gate", "outside the building").
 _THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+"
                        r"(?P<said>the\s+(?:[a-z]+\s+)?(?P<kind>[a-z]+))\b")
