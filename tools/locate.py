@@ -18,7 +18,7 @@ from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.rules import assets_near, check_placement, footprints_overlap
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.scene import AssetInstance, Finite, Pose, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, surface_at
+from drivetwin.worlds.surface import lane_at, nearest_on_polyline, point_along, point_in_polygon, surface_at
 from pydantic import BaseModel, ConfigDict, Field
 
 Relation = Literal[
@@ -226,6 +226,11 @@ def resolve_anchor(scene: Scene, location: Location, new_half_length: float,
     gap = location.distance if location.distance is not None else (
         target.half_length * (0.5 if lateral else 1.0) + own + CLEARANCE_M
     )
+    # Ahead of or behind something on the road (debris ahead of the ego): in its lane too.
+    lane = lane_at(scene, target.x, target.y) if rel in ("in_front_of", "behind") and target.kind == "asset" else None
+    if lane is not None and category_name is not None and category(category_name).placement == "drivable":
+        return Anchor(target.x + gap * math.cos(direction), target.y + gap * math.sin(direction),
+                      target.heading, surface="lane", near=target, lane_id=lane.id)
     return Anchor(target.x + gap * math.cos(direction), target.y + gap * math.sin(direction),
                   target.heading, near=target)
 

@@ -544,3 +544,19 @@ def test_make_the_rain_stop_clears_it_and_adds_no_stop_sign(session, campus):
     assert report.ok, report.error
     assert session.scene.environment.weather.kind == "clear"
     assert session.scene.count("stop_sign") == campus.count("stop_sign")
+
+
+def test_between_a_road_and_a_place_is_between_the_place_and_the_road_nearest_it(session, campus):
+    hall = campus.landmark("Engineering Hall entrance").position
+    report = session.submit("a tree between Main Street and the Engineering Hall")
+    assert report.ok, report.error
+    (tree,) = _added(session, campus, "tree")
+    assert 0.0 < tree.pose.y < hall[1] and abs(tree.pose.x - hall[0]) < 3.0  # Main Street runs along y = 0
+
+
+def test_things_on_the_road_ahead_of_the_ego_stay_in_its_lane(session, campus):
+    report = session.submit("some debris on the road ahead of the ego")
+    assert report.ok, report.error
+    rubble = _added(session, campus, "cement_rubble")
+    ego = campus.asset("ego")
+    assert rubble and all(abs(r.pose.y - ego.pose.y) < 1.0 and r.pose.x > ego.pose.x for r in rubble)

@@ -187,12 +187,25 @@ def between(scene: Scene, low: str) -> dict[str, Any] | None:
     if said is None:
         return None
     ends = [point_named(scene, f" {said.group(side)} ") for side in ("a", "b")]
+    for side, other in ((0, 1), (1, 0)):  # "between Main Street and the hall": the road where it is nearest the hall
+        known = ends[other]
+        road = _road_named(scene, said.group("ab"[side]))
+        if ends[side] is None and known is not None and road:
+            near = min((nearest_on_polyline(known[0], known[1], lane.centreline) for lane in road), key=lambda p: p.distance)
+            ends[side] = (near.x, near.y)
     if ends[0] is None or ends[1] is None:
         from drivetwin.orchestrator.planning.base import PlanningError
 
         unknown = said.group("a") if ends[0] is None else said.group("b")
         raise PlanningError(f"I could not tell where {unknown.strip()!r} is, to put something between; name a place or one thing")
     return {"relation": "absolute", "x": round((ends[0][0] + ends[1][0]) / 2, 2), "y": round((ends[0][1] + ends[1][1]) / 2, 2)}
+
+
+def _road_named(scene: Scene, words: str) -> list[Any]:
+    """The lanes of the road or the one lane the words name ("Main Street", "the westbound lane")."""
+    low = ph.normalise(words)
+    road = [lane for lane in scene.roads.lanes if lane.road and ph.normalise(lane.road).strip() in low]
+    return road or [lane for lane in scene.roads.lanes if lane.id.replace("_", " ") in low]
 
 
 def places_called(scene: Scene, word: str) -> list[str]:
