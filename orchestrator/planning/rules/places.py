@@ -404,6 +404,8 @@ def location(
     if r.has(("sidewalk", "pavement", "footpath", "kerb", "curb")) and not _OFF_SIDEWALK.search(r.low):
         return {"relation": "on_sidewalk", **({"target": target} if target else {})}
     if r.has(("in the lane", "on the road", "in lane", "on the street")):
+        if target is not None and scene.asset(target) is not None and relation_of(r.low) in ("in_front_of", "behind"):
+            return {"relation": relation_of(r.low), "target": target}  # "on the road ahead of the ego": in its lane, ahead
         return {"relation": "in_lane", **({"target": target} if target else {})}
     if target is None:
         return None
