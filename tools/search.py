@@ -12,7 +12,7 @@ from drivetwin.tools.move import find_asset
 from drivetwin.tools.rules import footprint
 from drivetwin.worlds.catalog import UnknownCategoryError, catalog, nearest_categories, resolve_category
 from drivetwin.worlds.edits import WorldEdit
-from drivetwin.worlds.scene import EGO_ID, AssetInstance, Landmark, Lane, Scene
+from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon
 from pydantic import Field
 
@@ -128,8 +128,7 @@ class FindAssets(Tool[FindAssetsArgs]):
                     beside.add(a.id)
                 if lane is not None:
                     lanes_of[a.id] = lane.id
-            # what stands on the road in the ego's way: never the ego itself (a lane or a kind named lists it)
-            pool = [a for a in pool if a.id in lanes_of and (a.id != EGO_ID or args.category is not None or args.lane)]
+            pool = [a for a in pool if a.id in lanes_of]
         reference = args.nearest_to or args.near
         t = resolve_target(scene, reference) if reference else None
         if t is not None:

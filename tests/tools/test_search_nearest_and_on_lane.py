@@ -75,11 +75,6 @@ def test_a_lane_named_by_a_word_lists_what_is_in_it(call: Caller, campus: Scene)
     assert call(scene, "find_assets", lane="main_eastbound").data["ids"] == ["ego"]
 
 
-def test_what_stands_on_the_road_is_never_the_ego_itself(call: Caller, campus: Scene) -> None:
-    assert "ego" not in call(campus, "find_assets", on_lane=True).data["ids"]
-    assert "traffic_cone_1" in call(_with_cones(call, campus), "find_assets", on_lane=True).data["ids"]
-
-
 def test_a_road_name_covers_both_of_its_lanes(call: Caller, campus: Scene) -> None:
     scene = _with_cones(call, campus)
     assert call(scene, "find_assets", lane="Campus Drive").data["ids"] == ["traffic_cone_1"]
