@@ -105,6 +105,12 @@ def test_worker_processes_give_the_same_metrics_as_one_process(tiny_suite: Path,
     assert _comparable(pooled) == _comparable(inline)
 
 
+# Each trial's planning delay in the Ctrl-C test: long enough that the 24 trials (2 workers) are still
+# running when the signal lands on a loaded 2-core machine (at 0.1 s the whole run, 1.2 s, had twice
+# finished first in full test runs; alone it always passed).
+DELAY_S = 0.3
+
+
 def test_a_run_stopped_with_ctrl_c_resumes_where_it_stopped_and_measures_the_same(
     tiny_suite: Path, tmp_path: Path
 ) -> None:
@@ -112,7 +118,7 @@ def test_a_run_stopped_with_ctrl_c_resumes_where_it_stopped_and_measures_the_sam
     script = (
         "import json, sys\n"
         "from drivetwin.evals import run_suite\n"
-        f"s = run_suite({str(tiny_suite)!r}, {TINY!r}, planner_options={{'delay': 0.1}}, "
+        f"s = run_suite({str(tiny_suite)!r}, {TINY!r}, planner_options={{'delay': {DELAY_S}}}, "
         f"trials=3, out_path={str(out)!r}, workers=2, progress=False)\n"
         "print(json.dumps({'interrupted': s.interrupted, 'ran': s.ran}))\n"
     )
@@ -132,7 +138,7 @@ def test_a_run_stopped_with_ctrl_c_resumes_where_it_stopped_and_measures_the_sam
     done_before = len(read_run(out).records)
     assert report["interrupted"] and 0 < done_before < 24
 
-    same = {"planner_options": {"delay": 0.1}, "trials": 3, "workers": 2, "progress": False}
+    same = {"planner_options": {"delay": DELAY_S}, "trials": 3, "workers": 2, "progress": False}
     resumed = run_suite(tiny_suite, TINY, out_path=out, **same)
     assert resumed.already_done == done_before and resumed.ran == 24 - done_before
     run_suite(tiny_suite, TINY, out_path=clean, **same)
