@@ -138,7 +138,7 @@ _ANY_NEAREST = re.compile(r"\b(?:(?:whatever|anything|something|the (?:thing|obj
                           r"(?:nearest|closest)|the (?:nearest|closest) (?:thing|object|item|prop))\b")
 # The one furthest from something: "the tree furthest from the library", "the lamp farthest away from the ego".
 FURTHEST = re.compile(r"\b(?:furthest|farthest|most distant)(?: away)? from\b")  # "furthest east" is a side, not this
-_FURTHEST_FROM = re.compile(r"\s*(?:that is |which is |that's )?(?:furthest|farthest|most distant)(?: away)? from\b")
+_FURTHEST_FROM = re.compile(r"\s*(?:that is |which is |that's )?" + FURTHEST.pattern)  # right after the thing named
 # A thing picked out by what it is nearest ("the car nearest the union", "the bin closest to the ego").
 _NEAREST_TO = re.compile(r"\s*(?:that is |which is |that's )?(?:nearest|closest)(?: to)?\b")
 
