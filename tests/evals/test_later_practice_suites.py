@@ -1,4 +1,4 @@
-"""The later practice suites (practice2 to practice10): valid, big enough in every cell, written from
+"""The later practice suites (practice2 to practice11): valid, big enough in every cell, written from
 their sources, and passable. Each was written to its own brief's minimums."""
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ from drivetwin.evals import (
     practice8_source,
     practice9_source,
     practice10_source,
+    practice11_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -58,6 +59,7 @@ BRIEFS: dict[str, Brief] = {
     "practice9": Brief(200, 6, 6, practice9_source, multi_turn=15, planned=6, compound=15,
                        weighted_grades=("vague", "indirect", "erroneous")),
     "practice10": Brief(200, 6, 6, practice10_source, multi_turn=15, planned=6, compound=15, weighted_grades=("vague", "indirect", "erroneous")),
+    "practice11": Brief(200, 6, 6, practice11_source, multi_turn=15, planned=6, compound=15, weighted_grades=("vague", "indirect", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
