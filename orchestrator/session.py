@@ -180,7 +180,7 @@ class Session:
         """Check a plan against the request, then apply it, ask, or refuse."""
         if plan.verbatim:
             return self._run(text, plan, started)
-        verdict = review(text, plan, self.context())
+        verdict = review(plan.read_as or text, plan, self.context())
         if verdict.action == "refuse":
             return self._failed(text, verdict.message or "; ".join(verdict.problems), started, plan)
         if verdict.question is not None:

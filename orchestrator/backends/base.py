@@ -18,7 +18,7 @@ from typing import Any, ClassVar, Literal, TypedDict
 from drivetwin.orchestrator import logs
 from drivetwin.tools.deadline import DeadlineExceeded, call_within
 
-from .errors import BackendError, BackendTimeout, ConnectionDropped, InvalidRequest
+from .errors import BackendError, BackendTimeout, BackendUnavailable, ConnectionDropped, InvalidRequest
 
 Role = Literal["system", "user", "assistant"]
 ROLES: tuple[Role, ...] = ("system", "user", "assistant")
@@ -197,6 +197,13 @@ class Backend(ABC):
 
     def prepare(self) -> None:  # noqa: B027 - an optional hook, not an abstract method
         """Get ready for a first answer (load a model file) before the call is timed; by default nothing."""
+
+    def log_likelihoods(self, texts: Sequence[str]) -> list[float]:
+        """The natural-log probability the model gives each text, read from its start to an end
+        of text: how likely a sentence is, to choose between spellings of one request
+        (planning/llm/respell.py). Only an in-process model can answer cheaply; the others raise
+        BackendUnavailable, and callers plan without it."""
+        raise BackendUnavailable(f"the {self.name} backend cannot score text", backend=self.name)
 
     @abstractmethod
     def complete(self, request: CompletionRequest) -> Completion:

@@ -8,10 +8,12 @@ import json
 import os
 import threading
 import time
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
+
+import numpy as np
 
 from .base import DEFAULT_TIMEOUT_S, Backend, BackendInfo, BackendStatus, Completion, CompletionRequest, Message
 from .errors import BackendError, BackendTimeout, BackendUnavailable, InvalidRequest
@@ -54,12 +56,15 @@ class _LoadedModel:
 
 # Model states kept for prompt-prefix reuse, per loaded model (least recently used go first).
 PROMPT_CACHE_BYTES = 1 << 30
-_LOADED: dict[tuple[Path, int], _LoadedModel] = {}
+_LOADED: dict[tuple[Path, int, bool], _LoadedModel] = {}
+# Scoring reads short requests; it keeps every position's logits (logits_all), so a second
+# llama.cpp context of the same GGUF (its weights are memory-mapped once) does it.
+SCORING_N_CTX = 256
 _LOADED_LOCK = threading.Lock()
 
 
-def _load(path: Path, n_ctx: int, n_threads: int, model: str) -> _LoadedModel:
-    key = (path, n_ctx)
+def _load(path: Path, n_ctx: int, n_threads: int, model: str, scoring: bool = False) -> _LoadedModel:
+    key = (path, n_ctx, scoring)
     with _LOADED_LOCK:
         if key in _LOADED:
             return _LOADED[key]
@@ -76,6 +81,7 @@ def _load(path: Path, n_ctx: int, n_threads: int, model: str) -> _LoadedModel:
                 n_ctx=n_ctx,
                 n_threads=n_threads,
                 n_threads_batch=n_threads,  # else prompt reading takes every CPU regardless
+                logits_all=scoring,
                 verbose=False,
             )
         except (ValueError, RuntimeError, OSError) as error:
@@ -90,7 +96,7 @@ def _load(path: Path, n_ctx: int, n_threads: int, model: str) -> _LoadedModel:
         # SmolLM2's median time per planned prompt from 6.8 s to 1.6 s on 2 cores
         # (bench_planners). Sliding-window models (Gemma 3) save their whole window with each
         # state and cannot restart mid-window: there the cache made Gemma slower (5.7 -> 8.8 s).
-        if not any(key.endswith(".attention.sliding_window") for key in llama.metadata):
+        if not scoring and not any(key.endswith(".attention.sliding_window") for key in llama.metadata):
             from llama_cpp.llama_cache import LlamaRAMCache
 
             llama.set_cache(LlamaRAMCache(capacity_bytes=PROMPT_CACHE_BYTES))
@@ -214,6 +220,33 @@ class EmbeddedBackend(Backend):
             int(usage["prompt_tokens"]),
             int(usage["completion_tokens"]),
         )
+
+    def log_likelihoods(self, texts: Sequence[str]) -> list[float]:
+        """Each text's log-probability, from a beginning of text to an end of text. Texts that
+        share a beginning (one request spelt several ways) reuse its evaluation."""
+        loaded = _load(self._path, SCORING_N_CTX, self._n_threads, self.model, scoring=True)
+        llama = loaded.llama
+        out = []
+        with loaded.lock:
+            for text in texts:
+                tokens = [*llama.tokenize(text.encode("utf-8"), add_bos=True), llama.token_eos()]
+                if len(tokens) > SCORING_N_CTX:
+                    raise InvalidRequest(f"a text to score is {len(tokens)} tokens; at most {SCORING_N_CTX}",
+                                         backend=NAME, model=self.model)
+                kept = 0  # positions already evaluated for an earlier text with the same beginning
+                while kept < min(llama.n_tokens, len(tokens) - 1) and llama.input_ids[kept] == tokens[kept]:
+                    kept += 1
+                llama.n_tokens = kept
+                try:
+                    llama.eval(tokens[kept:])
+                except (ValueError, RuntimeError) as error:
+                    raise BackendError(f"llama.cpp failed while scoring: {error}", backend=NAME, model=self.model) from None
+                logits = np.asarray(llama.scores[: len(tokens) - 1], dtype=np.float64)
+                top = logits.max(axis=1, keepdims=True)
+                log_z = top[:, 0] + np.log(np.exp(logits - top).sum(axis=1))
+                chosen = logits[np.arange(len(tokens) - 1), tokens[1:]]
+                out.append(float((chosen - log_z).sum()))
+        return out
 
     def _grammar(self, schema: Mapping[str, Any]) -> Any:
         try:

@@ -74,6 +74,9 @@ class Plan(BaseModel):
     # The calls were given as they are (a case's reference plan, a recorded replay), not read
     # from the words, so the plan-vs-request check has nothing to compare them with.
     verbatim: bool = False
+    # The request as the planner read it, when it respelt words of it (planning/llm/respell.py):
+    # the plan-versus-request check reads the same words.
+    read_as: str | None = None
 
 
 class PlanningError(Exception):

@@ -21,10 +21,14 @@ from __future__ import annotations
 import time
 from typing import Any
 
+from drivetwin.orchestrator.backends import BackendError
 from drivetwin.orchestrator.planning.answers import SEARCH_TOOLS
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Planner, PlanningError, Question, Reading, TraceStep
 from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
+from drivetwin.orchestrator.planning.llm.respell import respell
 from drivetwin.orchestrator.planning.readings import canonical, describe, dry_run, same_outcome
+from drivetwin.orchestrator.planning.rules.planner import GUESS_PENALTY
+from drivetwin.orchestrator.planning.rules.spelling import Repaired
 from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
 from drivetwin.orchestrator.transaction import TransactionResult
 
@@ -64,6 +68,7 @@ class HybridPlanner:
         fallback: float = RULES_FALLBACK,
         retrieval: Planner | None = None,
         scenario: Planner | None = None,
+        respell: bool = True,
     ) -> None:
         """`confident`: how sure a rule plan must be to skip the LLM; None: by the model's size.
         `retrieval`: the second independent planner; None plans with rules and LLM only."""
@@ -73,6 +78,8 @@ class HybridPlanner:
         # Tried first on words that describe behaviour over time (scenario_reading's predicate).
         self.scenario = scenario
         self.confident = confident
+        # Words no planner reads are respelt in context by the LLM's likelihoods first.
+        self.respell = respell
         self.fallback = fallback
         self._small: bool | None = None
 
@@ -119,7 +126,33 @@ class HybridPlanner:
         return a_run is not None and b_run is not None and same_outcome(a_run, b_run)
 
     def plan(self, prompt: str, context: PlanContext) -> Plan:
-        """The agreed plan, a clearly surer one, the LLM's tie-break, or a clarifying question."""
+        """The agreed plan, a clearly surer one, the LLM's tie-break, or a clarifying question,
+        for the request with the words no planner reads respelt in context (when the model can
+        score text)."""
+        started = time.perf_counter()
+        respelt = self._respelt(prompt, context)
+        if respelt is None:
+            return self._plan(prompt, context)
+        step = TraceStep(level="respell", input=prompt, output="; ".join(respelt.repairs),
+                         seconds=time.perf_counter() - started)
+        plan = self._plan(respelt.text, context)
+        # Each word respelt is a guess, as each the rule planner repairs is (rules/planner.py).
+        sure = max(0.0, plan.confidence - GUESS_PENALTY * len(respelt.repairs)) if plan.calls else plan.confidence
+        return plan.model_copy(update={"read_as": respelt.text, "confidence": sure,
+                                       "trace": [*plan.trace[:1], step, *plan.trace[1:]]})
+
+    def _respelt(self, prompt: str, context: PlanContext) -> Repaired | None:
+        """The request respelt by the model's likelihoods, or None when nothing was respelt or
+        the backend cannot score text (a server: the planners read the words as typed)."""
+        if not self.respell:
+            return None
+        try:
+            respelt = respell(prompt, context.scene, self.llm.backend.log_likelihoods)
+        except BackendError:
+            return None
+        return respelt if respelt.repairs else None
+
+    def _plan(self, prompt: str, context: PlanContext) -> Plan:
         started = time.perf_counter()
         if self.scenario is not None and describes_behaviour_over_time(prompt, context.scene):
             read, _, read_why = self._candidate(self.scenario, prompt, context)

@@ -124,7 +124,7 @@ _INTERJECTIONS = frozenset({"oops", "whoops", "ugh", "argh", "hmm", "hmmm", "erm
                             "yeah", "yep", "nope", "lol", "haha", "yay", "oof", "welp", "okay", "ok"})
 
 
-def _is_english(low: str) -> bool:
+def is_english(low: str) -> bool:
     """An English word, also as written without its apostrophe ("dont", "isnt", "thats")."""
     words = english_words()
     low = low.replace("'", "")  # "don't" is "dont": a contraction, not a misspelt "donut"
@@ -200,7 +200,7 @@ def vocabulary(scene: Scene) -> frozenset[str]:
 
 
 @cache
-def _targets(vocab: frozenset[str]) -> tuple[str, ...]:
+def repair_targets(vocab: frozenset[str]) -> tuple[str, ...]:
     # Common words are protected from repair but rarely its result: "tank" is not "thanks", nor
     # is "sine" "since".
     domain = (_domain_words() - _words_of(lx.FILLER_STARTS)) | (vocab - _static_vocabulary())
@@ -241,13 +241,13 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
     low = word.lower()
     if low in _SHORT_SLIPS:
         return _SHORT_SLIPS[low]
-    if len(low) < MIN_REPAIR_LEN or is_known(low, vocab) or _is_english(low):
+    if len(low) < MIN_REPAIR_LEN or is_known(low, vocab) or is_english(low):
         return None
     joined = _joined(vocab)
     for candidate in (low, low[:-1] if low.endswith("s") else low):
         if candidate in joined:
             return joined[candidate] + low[len(candidate) :]
-    targets = _targets(vocab)
+    targets = repair_targets(vocab)
     if low.endswith("s"):  # a plural keeps its plural: "bolards" -> "bollards"
         stem = _closest(low[:-1], difflib.get_close_matches(low[:-1], targets, n=1, cutoff=REPAIR_CUTOFF), targets)
         if stem is not None:
@@ -429,4 +429,4 @@ def repair(text: str, scene: Scene) -> Repaired:
     return Repaired(_WORD.sub(fix, text), repairs)
 
 
-__all__ = ["REPAIR_CUTOFF", "Repaired", "edits", "english_words", "is_known", "repair", "vocabulary"]
+__all__ = ["REPAIR_CUTOFF", "Repaired", "edits", "english_words", "is_english", "is_known", "repair", "repair_targets", "vocabulary"]

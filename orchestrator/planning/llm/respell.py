@@ -1,0 +1,178 @@
+"""Spelling in context: a word no planner reads is replaced by a near word when the language
+model finds the whole request much likelier with it.
+
+The rule planner's own repair (rules/spelling.py) fixes a slip against the words it knows, one
+word at a time and without context, so it must leave alone what it cannot tell apart: a short
+slip ("snoe", "tel"), a real word typed for another ("remove all the tress", "tern the SUV
+around", "parked in a roe") and a word two slips from several others. Here each such word is
+judged in its sentence, as a noisy channel: the model's log-probability of the request spelt
+each way, less EDIT_COST per letter slip, against the request as typed. A word is replaced only
+when that beats the typed request by MARGIN, and a real English word by REAL_WORD_MARGIN more,
+so "ditto", "wow" and the names people use stay as they are.
+
+Candidates are the words the planners read (catalog and place names, intent, amount and
+grammar words) and, for a typed word that is no English word at all, the English words of the
+MiniLM vocabulary; the model, not a phrase list, chooses among them. Every replacement is
+reported, and the check reads the request as respelt (`Plan.read_as`), so nothing is applied on
+a reading the person cannot see.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from functools import cache
+
+from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules.spelling import (
+    Repaired,
+    edits,
+    english_words,
+    is_english,
+    is_known,
+    repair,
+    repair_targets,
+    vocabulary,
+)
+from drivetwin.worlds.scene import Scene
+from jellyfish import metaphone
+
+# Log-probability one letter slip costs: a replacement two slips away must make the sentence
+# e^6 times likelier just to break even.
+EDIT_COST = 3.0
+# How much likelier (in log-probability, after the slips' cost) the respelt request must be.
+MARGIN = 2.0
+# More for a real word, which the person may well have meant ("wow, what a lively campus").
+REAL_WORD_MARGIN = 6.0
+# Letter slips allowed: one in a word of up to four letters or a real word, else two.
+SHORT_WORD_LEN = 4
+# Metaphone consonants a sound-alike needs: two for a word the planners read ("coan", "wut"),
+# three for a real word typed or any other English word.
+SOUND, SURE_SOUND = 2, 3
+# A sound-alike's letters past the first cost this much of a slip each.
+SOUND_LETTER = 0.5
+# Extra cost of a word the planners do not read: "coan" is a cone here, not a coin.
+OTHER_WORD_COST = 3.0
+# Rounds over the request: a word respelt may make an earlier one clear.
+PASSES = 2
+# Candidates scored per word, nearest first (each costs one short model evaluation).
+MAX_CANDIDATES = 8
+_WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
+# An acronym or code as typed ("ODD", "JTEKT", "R1-1"): never a slip.
+_CODE = re.compile(r"[A-Z0-9][A-Z0-9\-]+")
+
+Scorer = Callable[[list[str]], list[float]]
+
+
+@cache
+def _domain(vocab: frozenset[str]) -> tuple[str, ...]:
+    words = set(repair_targets(vocab)) | {w for w in lx.GRAMMAR if w.isalpha() and len(w) > 1}
+    words |= {w + "s" for w in list(words) if len(w) > 2 and not w.endswith("s")}  # "tress" may be "trees"
+    return tuple(sorted(words))
+
+
+@cache
+def _sounds(words: tuple[str, ...]) -> dict[str, tuple[str, ...]]:
+    """Words by their Metaphone key: "coan" and "cone", "wut" and "what" sound alike."""
+    by_key: dict[str, list[str]] = {}
+    for word in words:
+        by_key.setdefault(metaphone(word), []).append(word)
+    return {key: tuple(group) for key, group in by_key.items()}
+
+
+@cache
+def _english() -> tuple[str, ...]:
+    return tuple(sorted(w for w in english_words() if len(w) > 2))
+
+
+def _slips_allowed(word: str, real: bool) -> int:
+    return 1 if real or len(word) <= SHORT_WORD_LEN else 2
+
+
+def slips(typed: str, meant: str) -> float:
+    """How many slips turn `meant` into `typed`: its letters changed, but a word that sounds the
+    same costs one slip and half a slip per further letter ("sooveee" for "suv": three)."""
+    letters = edits(typed, meant)
+    if metaphone(typed) == metaphone(meant):
+        return min(letters, 1 + SOUND_LETTER * (letters - 1))
+    return letters
+
+
+def _consonants(key: str) -> int:
+    return len(key.lstrip("AEIOU"))
+
+
+def candidates(word: str, vocab: frozenset[str]) -> list[str]:
+    """The words `word` may be a slip for, nearest first: words the planners read that are a
+    slip or two away or sound the same, and, for a typed non-word, English words that sound the
+    same. A sound is only trusted with enough consonants to tell words apart ("hmm" is no "home")."""
+    low = word.lower()
+    real = is_english(low)
+    domain = _domain(vocab)
+    allowed = _slips_allowed(low, real)
+    near = {t for t in domain if abs(len(t) - len(low)) <= allowed and edits(low, t) <= allowed}
+    key = metaphone(low)
+    if _consonants(key) >= (SURE_SOUND if real else SOUND):
+        near |= set(_sounds(domain).get(key, ()))
+    if not real and _consonants(key) >= SURE_SOUND:  # "finsh", "closist"
+        near |= set(_sounds(_english()).get(key, ()))
+    near.discard(low)
+    return sorted(near, key=lambda t: (cost(low, t, vocab), t))[:MAX_CANDIDATES]
+
+
+def cost(typed: str, meant: str, vocab: frozenset[str]) -> float:
+    """The channel's cost of reading `typed` as `meant`: its slips, and more for a word the
+    planners do not read, which the person less likely meant here."""
+    return EDIT_COST * slips(typed, meant) + (0.0 if meant in _domain(vocab) else OTHER_WORD_COST)
+
+
+def _suspects(text: str, scene: Scene, vocab: frozenset[str]) -> list[str]:
+    """The words of `text` no planner reads: not known, no asset id, no code, no interjection."""
+    ids = {a.id for a in scene.all_assets()}
+    out = []
+    for m in _WORD.finditer(text):
+        word = m.group(0)
+        around = text[max(0, m.start() - 1) : m.end() + 1]
+        if len(word) < 2 or "_" in around or _CODE.fullmatch(word) or word.lower() in ids:
+            continue
+        if not is_known(word.lower().strip("'-"), vocab) and word not in out:
+            out.append(word)
+    return out
+
+
+def _cased(candidate: str, typed: str) -> str:
+    return candidate.capitalize() if typed[:1].isupper() else candidate
+
+
+def respell(text: str, scene: Scene, score: Scorer) -> Repaired:
+    """`text` with each word no planner reads replaced by the near word that makes the request
+    clearly likelier to the model (`score`: log-probabilities of whole texts); the replacements
+    as 'was -> now'. The rule planner's own repairs are made first, as context, and a word is
+    judged again once a later one is respelt ("tern the sooveee around": "suv" makes "turn")."""
+    vocab = vocabulary(scene)
+    current, out = repair(text, scene).text, text
+    fixes: list[str] = []
+    tried: set[tuple[str, str]] = set()
+    for _ in range(PASSES):
+        changed = False
+        for typed in _suspects(current, scene, vocab):
+            at = re.compile(rf"(?<![A-Za-z']){re.escape(typed)}(?![A-Za-z'])")
+            options = candidates(typed, vocab)
+            if not options or not at.search(out) or (typed, current) in tried:
+                continue  # nothing near, or the rules' own repair made it (theirs to report)
+            tried.add((typed, current))
+            spelt = [at.sub(_cased(c, typed), current, count=1) for c in options]
+            base, *scores = score([current, *spelt])
+            gains = [s - base - cost(typed.lower(), c, vocab) for s, c in zip(scores, options, strict=True)]
+            best = max(range(len(options)), key=gains.__getitem__)
+            if gains[best] >= MARGIN + (REAL_WORD_MARGIN if is_english(typed.lower()) else 0.0):
+                chosen = _cased(options[best], typed)
+                current, out = spelt[best], at.sub(chosen, out, count=1)
+                fixes.append(f"{typed} -> {chosen}")
+                changed = True
+        if not changed:
+            break
+    return Repaired(out, fixes)
+
+
+__all__ = ["EDIT_COST", "MARGIN", "REAL_WORD_MARGIN", "Scorer", "candidates", "respell", "slips"]
