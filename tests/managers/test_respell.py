@@ -46,8 +46,8 @@ def test_candidates_are_near_in_letters_or_in_sound_and_short_sounds_are_not_tru
     vocab = vocabulary(campus)
     assert "cone" in candidates("coan", vocab)  # sounds alike, two letters apart
     assert "suv" in candidates("sooveee", vocab)
-    assert "trees" in candidates("tress", vocab)  # a real word one slip from a word the planners read
-    assert "home" not in candidates("hmm", vocab)  # one consonant: too little to go by
+    assert "finish" in candidates("finsh", vocab)  # an English word it sounds like
+    assert "home" not in candidates("umm", vocab)  # one consonant: too little to go by
     assert slips("snoe", "snow") == 1 and slips("sooveee", "suv") == 3 and slips("snoe", "sunny") > 1
 
 
@@ -58,9 +58,8 @@ def test_a_word_is_respelt_only_when_the_scorer_makes_it_clearly_likelier(campus
     assert respell("make it snoe", campus, prefers("make it snow", 10.0)).text == "make it snow"
     unsure = respell("make it snoe", campus, prefers("make it snow", 4.0))  # less than a slip's cost and the margin
     assert unsure.text == "make it snoe" and unsure.repairs == []
-    # A real word needs far more: "tress" may be meant.
-    assert respell("remove all the tress", campus, prefers("remove all the trees", 8.0)).repairs == []
-    assert respell("remove all the tress", campus, prefers("remove all the trees", 12.0)).repairs == ["tress -> trees"]
+    # A real word is never respelt: "Ease the tree ..." is no "East".
+    assert respell("Ease the tree towards the bench", campus, prefers("East the tree towards the bench", 50.0)).repairs == []
     # Asset ids, codes and words the planners read are never candidates for respelling.
     never = respell("move passenger_car_2 by the ODD line", campus, lambda texts: [float(len(texts) - i) for i in range(len(texts))])
     assert never.text == "move passenger_car_2 by the ODD line"

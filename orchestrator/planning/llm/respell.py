@@ -3,16 +3,19 @@ model finds the whole request much likelier with it.
 
 The rule planner's own repair (rules/spelling.py) fixes a slip against the words it knows, one
 word at a time and without context, so it must leave alone what it cannot tell apart: a short
-slip ("snoe", "tel"), a real word typed for another ("remove all the tress", "tern the SUV
-around", "parked in a roe") and a word two slips from several others. Here each such word is
-judged in its sentence, as a noisy channel: the model's log-probability of the request spelt
-each way, less EDIT_COST per letter slip, against the request as typed. A word is replaced only
-when that beats the typed request by MARGIN, and a real English word by REAL_WORD_MARGIN more,
-so "ditto", "wow" and the names people use stay as they are.
+slip ("snoe", "tel"), a word spelt by its sound ("coan", "sooveee", "wut") and a word two slips
+from several others. Here each such word is judged in its sentence, as a noisy channel: the
+model's log-probability of the request spelt each way, less EDIT_COST per slip, against the
+request as typed. A word is replaced only when that beats the typed request by MARGIN.
+
+A real English word (one of the MiniLM vocabulary's) is never respelt, however much likelier the
+model finds another: on the development prompts SmolLM2 preferred "East the tree by the Library"
+to "Ease the tree ..." and "low, what a lively campus" to "wow, ...", as strongly as it preferred
+"weather" to "whether"; a real word typed for another is left to the rules' own readings.
 
 Candidates are the words the planners read (catalog and place names, intent, amount and
-grammar words) and, for a typed word that is no English word at all, the English words of the
-MiniLM vocabulary; the model, not a phrase list, chooses among them. Every replacement is
+grammar words) a slip or two away or sounding the same, and English words sounding the same;
+the model, not a phrase list, chooses among them. Every replacement is
 reported, and the check reads the request as respelt (`Plan.read_as`), so nothing is applied on
 a reading the person cannot see.
 """
@@ -42,12 +45,10 @@ from jellyfish import metaphone
 EDIT_COST = 3.0
 # How much likelier (in log-probability, after the slips' cost) the respelt request must be.
 MARGIN = 2.0
-# More for a real word, which the person may well have meant ("wow, what a lively campus").
-REAL_WORD_MARGIN = 6.0
-# Letter slips allowed: one in a word of up to four letters or a real word, else two.
+# Letter slips allowed: one in a word of up to four letters, else two.
 SHORT_WORD_LEN = 4
 # Metaphone consonants a sound-alike needs: two for a word the planners read ("coan", "wut"),
-# three for a real word typed or any other English word.
+# three for any other English word ("finsh", "closist").
 SOUND, SURE_SOUND = 2, 3
 # A sound-alike's letters past the first cost this much of a slip each.
 SOUND_LETTER = 0.5
@@ -85,8 +86,8 @@ def _english() -> tuple[str, ...]:
     return tuple(sorted(w for w in english_words() if len(w) > 2))
 
 
-def _slips_allowed(word: str, real: bool) -> int:
-    return 1 if real or len(word) <= SHORT_WORD_LEN else 2
+def _slips_allowed(word: str) -> int:
+    return 1 if len(word) <= SHORT_WORD_LEN else 2
 
 
 def slips(typed: str, meant: str) -> float:
@@ -104,17 +105,16 @@ def _consonants(key: str) -> int:
 
 def candidates(word: str, vocab: frozenset[str]) -> list[str]:
     """The words `word` may be a slip for, nearest first: words the planners read that are a
-    slip or two away or sound the same, and, for a typed non-word, English words that sound the
-    same. A sound is only trusted with enough consonants to tell words apart ("hmm" is no "home")."""
+    slip or two away or sound the same, and English words that sound the same. A sound is only
+    trusted with enough consonants to tell words apart ("umm" is no "home")."""
     low = word.lower()
-    real = is_english(low)
     domain = _domain(vocab)
-    allowed = _slips_allowed(low, real)
+    allowed = _slips_allowed(low)
     near = {t for t in domain if abs(len(t) - len(low)) <= allowed and edits(low, t) <= allowed}
     key = metaphone(low)
-    if _consonants(key) >= (SURE_SOUND if real else SOUND):
+    if _consonants(key) >= SOUND:
         near |= set(_sounds(domain).get(key, ()))
-    if not real and _consonants(key) >= SURE_SOUND:  # "finsh", "closist"
+    if _consonants(key) >= SURE_SOUND:  # "finsh", "closist"
         near |= set(_sounds(_english()).get(key, ()))
     near.discard(low)
     return sorted(near, key=lambda t: (cost(low, t, vocab), t))[:MAX_CANDIDATES]
@@ -127,7 +127,7 @@ def cost(typed: str, meant: str, vocab: frozenset[str]) -> float:
 
 
 def _suspects(text: str, scene: Scene, vocab: frozenset[str]) -> list[str]:
-    """The words of `text` no planner reads: not known, no asset id, no code, no interjection."""
+    """The words of `text` no planner reads and no English word: not known, no asset id, no code."""
     ids = {a.id for a in scene.all_assets()}
     out = []
     for m in _WORD.finditer(text):
@@ -135,7 +135,8 @@ def _suspects(text: str, scene: Scene, vocab: frozenset[str]) -> list[str]:
         around = text[max(0, m.start() - 1) : m.end() + 1]
         if len(word) < 2 or "_" in around or _CODE.fullmatch(word) or word.lower() in ids:
             continue
-        if not is_known(word.lower().strip("'-"), vocab) and word not in out:
+        low = word.lower().strip("'-")
+        if not is_known(low, vocab) and not is_english(low) and word not in out:
             out.append(word)
     return out
 
@@ -165,7 +166,7 @@ def respell(text: str, scene: Scene, score: Scorer) -> Repaired:
             base, *scores = score([current, *spelt])
             gains = [s - base - cost(typed.lower(), c, vocab) for s, c in zip(scores, options, strict=True)]
             best = max(range(len(options)), key=gains.__getitem__)
-            if gains[best] >= MARGIN + (REAL_WORD_MARGIN if is_english(typed.lower()) else 0.0):
+            if gains[best] >= MARGIN:
                 chosen = _cased(options[best], typed)
                 current, out = spelt[best], at.sub(chosen, out, count=1)
                 fixes.append(f"{typed} -> {chosen}")
@@ -175,4 +176,4 @@ def respell(text: str, scene: Scene, score: Scorer) -> Repaired:
     return Repaired(out, fixes)
 
 
-__all__ = ["EDIT_COST", "MARGIN", "REAL_WORD_MARGIN", "Scorer", "candidates", "respell", "slips"]
+__all__ = ["EDIT_COST", "MARGIN", "Scorer", "candidates", "respell", "slips"]
