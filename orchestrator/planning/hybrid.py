@@ -144,10 +144,12 @@ class HybridPlanner:
     def _respelt(self, prompt: str, context: PlanContext) -> Repaired | None:
         """The request respelt by the model's likelihoods, or None when nothing was respelt or
         the backend cannot score text (a server: the planners read the words as typed)."""
-        if not self.respell:
+        # An LLM stand-in without a backend (a test's, a plugin's) has no model to ask.
+        score = getattr(getattr(self.llm, "backend", None), "log_likelihoods", None)
+        if not self.respell or score is None:
             return None
         try:
-            respelt = respell(prompt, context.scene, self.llm.backend.log_likelihoods)
+            respelt = respell(prompt, context.scene, score)
         except BackendError:
             return None
         return respelt if respelt.repairs else None
