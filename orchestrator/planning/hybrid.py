@@ -144,13 +144,15 @@ class HybridPlanner:
     def _respelt(self, prompt: str, context: PlanContext) -> Repaired | None:
         """The request respelt by the model's likelihoods, or None when nothing was respelt or
         the backend cannot score text (a server: the planners read the words as typed)."""
-        # An LLM stand-in without a backend (a test's, a plugin's) has no model to ask.
-        score = getattr(getattr(self.llm, "backend", None), "log_likelihoods", None)
-        if not self.respell or score is None:
-            return None
+        if not self.respell or not isinstance(self.llm, LlmPlanner):
+            return None  # a stand-in for the LLM (a test's) has no model to ask
+
+        def score(texts: list[str]) -> list[float]:  # opens the model only for a word to judge
+            return self.llm.backend.log_likelihoods(texts)
+
         try:
             respelt = respell(prompt, context.scene, score)
-        except BackendError:
+        except (BackendError, PlanningError):  # no scoring backend, or no model to open
             return None
         return respelt if respelt.repairs else None
 
