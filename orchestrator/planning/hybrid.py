@@ -14,6 +14,8 @@ goes to the LLM unless the model is small (SMALL_MODEL_PARAMETERS), whose edits 
 unsure rule plans than they repair. When nothing but a small model can plan an edit, its plan is
 offered as a reading to confirm, not applied: on the suites such plans were right about as
 often as wrong. Which path was taken, and why, is the first trace line.
+Before any of this, words no planner reads are respelt in context by the model's likelihoods
+(llm/respell.py: "make it snoe"); the plan then carries the request as read (`Plan.read_as`).
 """
 
 from __future__ import annotations
