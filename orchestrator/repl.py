@@ -97,6 +97,8 @@ def scene_summary(session: Session) -> str:
 def format_report(report: TurnReport, explain: bool) -> str:
     """A turn in plain words: plan, diff, answer or error."""
     lines = []
+    if report.plan is not None and report.plan.read_as is not None:
+        lines.append(f"  read as: {report.plan.read_as!r}")  # words respelt in context: never a hidden reading
     if report.plan is not None:
         if explain:
             lines += [f"  {line}" for line in format_trace(report.plan).splitlines()]

@@ -12,6 +12,7 @@ from drivetwin.orchestrator.planning.llm.respell import candidates, respell, sli
 from drivetwin.orchestrator.planning.retrieval import RetrievalPlanner
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.planning.rules.spelling import vocabulary
+from drivetwin.orchestrator.repl import format_report
 from drivetwin.orchestrator.session import Session
 from drivetwin.tools import ToolRegistry
 from drivetwin.worlds.scene import Scene
@@ -88,6 +89,7 @@ def test_the_hybrid_plans_and_the_check_reads_the_respelt_request(campus: Scene,
     suv = next(a for a in session.scene.assets if a.category == "suv")
     assert abs(abs(suv.pose.yaw - campus.asset(suv.id).pose.yaw) - 3.14159) < 0.01  # turned round, nothing added
     assert len(session.scene.assets) == len(campus.assets)
+    assert "read as: 'turn the suv around'" in format_report(report, explain=False)  # the person sees the reading
 
 
 def test_a_hybrid_whose_backend_cannot_score_reads_the_words_as_typed(campus: Scene, registry: ToolRegistry, tmp_path) -> None:
