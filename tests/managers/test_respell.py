@@ -62,8 +62,13 @@ def test_a_word_is_respelt_only_when_the_scorer_makes_it_clearly_likelier(campus
     # A real word is never respelt: "Ease the tree ..." is no "East".
     assert respell("Ease the tree towards the bench", campus, prefers("East the tree towards the bench", 50.0)).repairs == []
     # Asset ids, codes and words the planners read are never candidates for respelling.
-    never = respell("move passenger_car_2 by the ODD line", campus, lambda texts: [float(len(texts) - i) for i in range(len(texts))])
+    def any_change(texts: list[str]) -> list[float]:  # every respelling far likelier than the request as typed
+        return [0.0] + [100.0] * (len(texts) - 1)
+
+    never = respell("move passenger_car_2 by the ODD line", campus, any_change)
     assert never.text == "move passenger_car_2 by the ODD line"
+    assert respell("make it snoe by the ODD line", campus, any_change).repairs  # the same scorer does respell a slip
+    assert respell("the SNOE code on the sign", campus, any_change).repairs == []  # a word in capitals is a code
 
 
 @pytest.mark.llm

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from functools import cache
+from functools import cache, lru_cache
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules.spelling import (
@@ -58,6 +58,8 @@ OTHER_WORD_COST = 3.0
 PASSES = 2
 # Candidates scored per word, nearest first (each costs one short model evaluation).
 MAX_CANDIDATES = 8
+# Words whose candidates are kept (finding them scans every word the planners read).
+CANDIDATE_CACHE = 4096
 _WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
 # An acronym or code as typed ("ODD", "JTEKT", "R1-1"): never a slip.
 _CODE = re.compile(r"[A-Z0-9][A-Z0-9\-]+")
@@ -103,7 +105,8 @@ def _consonants(key: str) -> int:
     return len(key.lstrip("AEIOU"))
 
 
-def candidates(word: str, vocab: frozenset[str]) -> list[str]:
+@lru_cache(maxsize=CANDIDATE_CACHE)
+def candidates(word: str, vocab: frozenset[str]) -> tuple[str, ...]:
     """The words `word` may be a slip for, nearest first: words the planners read that are a
     slip or two away or sound the same, and English words that sound the same. A sound is only
     trusted with enough consonants to tell words apart ("umm" is no "home")."""
@@ -117,7 +120,7 @@ def candidates(word: str, vocab: frozenset[str]) -> list[str]:
     if _consonants(key) >= SURE_SOUND:  # "finsh", "closist"
         near |= set(_sounds(_english()).get(key, ()))
     near.discard(low)
-    return sorted(near, key=lambda t: (cost(low, t, vocab), t))[:MAX_CANDIDATES]
+    return tuple(sorted(near, key=lambda t: (cost(low, t, vocab), t))[:MAX_CANDIDATES])
 
 
 def cost(typed: str, meant: str, vocab: frozenset[str]) -> float:
@@ -157,11 +160,13 @@ def respell(text: str, scene: Scene, score: Scorer) -> Repaired:
     for _ in range(PASSES):
         changed = False
         for typed in _suspects(current, scene, vocab):
+            if (typed, current) in tried:
+                continue  # judged already, in this same sentence
+            tried.add((typed, current))
             at = re.compile(rf"(?<![A-Za-z']){re.escape(typed)}(?![A-Za-z'])")
             options = candidates(typed, vocab)
-            if not options or not at.search(out) or (typed, current) in tried:
+            if not options or not at.search(out):
                 continue  # nothing near, or the rules' own repair made it (theirs to report)
-            tried.add((typed, current))
             spelt = [at.sub(_cased(c, typed), current, count=1) for c in options]
             base, *scores = score([current, *spelt])
             gains = [s - base - cost(typed.lower(), c, vocab) for s, c in zip(scores, options, strict=True)]
