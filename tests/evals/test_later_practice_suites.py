@@ -1,4 +1,4 @@
-"""The later practice suites (practice2 to practice11): valid, big enough in every cell, written from
+"""The later practice suites (practice2 to practice12): valid, big enough in every cell, written from
 their sources, and passable. Each was written to its own brief's minimums."""
 
 from __future__ import annotations
@@ -21,6 +21,7 @@ from drivetwin.evals import (
     practice9_source,
     practice10_source,
     practice11_source,
+    practice12_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -60,6 +61,8 @@ BRIEFS: dict[str, Brief] = {
                        weighted_grades=("vague", "indirect", "erroneous")),
     "practice10": Brief(200, 6, 6, practice10_source, multi_turn=15, planned=6, compound=15, weighted_grades=("vague", "indirect", "erroneous")),
     "practice11": Brief(200, 6, 6, practice11_source, multi_turn=15, planned=6, compound=15, weighted_grades=("vague", "indirect", "erroneous")),
+    # Everyday wording by ordinary users; its grades are balanced on purpose (every cell 8 or 9).
+    "practice12": Brief(250, 8, 8, practice12_source, multi_turn=30, planned=12, compound=15),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
