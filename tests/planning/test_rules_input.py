@@ -1,4 +1,4 @@
-"""The rule planner reads clock times, numbers and near-miss spellings as written, and refuses
+"""The rule planner reads clock times (in digits, in words, a bare hour the clock is set to), numbers and near-miss spellings as written, and refuses
 numbers that cannot be what they quantify instead of substituting a default."""
 
 from __future__ import annotations
@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 from drivetwin.orchestrator.planning import PlanningError
 from drivetwin.orchestrator.planning.rules import numbers
+from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.planning.rules.spelling import repair
 
@@ -24,6 +25,32 @@ def test_a_clock_time_with_a_colon_is_one_clause_and_sets_that_time(session):
     report = session.submit("could the clock show 21:45 please")
     assert report.ok, report.error
     assert session.scene.environment.time_of_day == "21:45"
+
+
+@pytest.mark.parametrize(("words", "time"), [
+    ("set the time to nine in the evening", "21:00"),
+    ("seven o'clock in the morning please", "07:00"),
+    ("set the clock to 9", "09:00"),
+    ("the time should be eleven", "11:00"),
+    ("make it 9 at night", "21:00"),
+    ("set the clock for 5 in the afternoon", "17:00"),
+])
+def test_an_hour_said_in_words_or_bare_after_the_clock_is_a_time(words, time):
+    assert str(clock_time(words)) == time
+
+
+@pytest.mark.parametrize("words", ["put nine cones at the gate", "set the time to 9 minutes later",
+                                   "set the time scale to 2", "drive 9 m/s in the evening"])
+def test_a_number_that_counts_or_measures_is_not_a_time(words):
+    assert clock_time(words) is None
+
+
+def test_a_time_said_as_make_it_is_not_a_new_amount_for_the_last_edit(session):
+    assert session.submit("add 3 traffic cones by the library").ok
+    report = session.submit("make it 9 at night")
+    assert report.ok, report.error
+    assert session.scene.environment.time_of_day == "21:00"
+    assert session.scene.count("traffic_cone") == 3
 
 
 def test_a_decimal_distance_is_not_split_at_its_point(context):

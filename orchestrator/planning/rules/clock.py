@@ -1,5 +1,6 @@
 """Clock times as people say them: "18:30", "6.15 pm", "7 o'clock", "half past ten at night",
-"half seven" (British), "quarter to seven", "twenty past six in the evening", "midnight".
+"half seven" (British), "quarter to seven", "twenty past six in the evening", "midnight",
+"nine in the evening", "set the clock to 9".
 
 One reader for the rule planner (which sets the time) and the plan check (which compares the
 time a plan sets with the one the words name), so the two cannot disagree about what a
@@ -33,6 +34,11 @@ _HALF_HOUR = re.compile(rf"\bhalf {_HOUR}\b(?! (?:past|after|to|before)\b)")
 _NAMED = {"midnight": (0, 0), "noon": (12, 0), "midday": (12, 0)}
 # "18.30" without a suffix is a clock time only when the sentence is about time.
 _TIME_TOPIC = re.compile(r"\b(time|clock)\b")
+_WORD_HOUR = r"(" + "|".join(sorted((w for w, n in _WORD_NUMBERS.items() if n <= 12), key=len, reverse=True)) + ")"
+# An hour said in words with what makes it a time: "nine o'clock", "seven pm", "nine in the evening".
+_WORD_CLOCK = re.compile(rf"\b{_WORD_HOUR}(?=\s*(?:o'?\s?clock|am\b|pm\b|a\.m\.|p\.m\.|in the (?:morning|afternoon|evening)\b|at night\b|tonight\b))")
+# A bare hour the clock is set to: "set the time to 9", "the clock at nine", "time: 18".
+_SET_HOUR = re.compile(rf"\b(?:time|clock)(?: of (?:the )?day)?\s*(?:to|at|=|:|is|be|should be|reads?|shows?)\s*(\d{{1,2}}|{_WORD_HOUR[1:-1]})\b(?!\s*(?:[:.]\d|%|m\b|km|mph|metres?|meters?|minutes?|mins?|seconds?|secs?|s\b|x\b|times\b))")
 
 
 @dataclass(frozen=True)
@@ -93,8 +99,9 @@ def clock_time(text: str) -> ClockTime | None:
         separator, said_minutes, suffix = m.group(2), m.group(3), m.group(4)
         if separator == "." and suffix is None and not _TIME_TOPIC.search(text):
             continue  # "2.50 m" is a number, not ten to three
-        if separator is None and suffix in (None, "h", "hrs", "hours"):
-            continue  # a bare "7" or "7 hours" is an amount
+        said_day_half = _AFTERNOON.match(text[m.end():]) or _MORNING.match(text[m.end():])
+        if separator is None and suffix in (None, "h", "hrs", "hours") and not (suffix is None and said_day_half):
+            continue  # a bare "7" or "7 hours" is an amount; "9 in the evening" is a time
         after = text[m.end():]
         if suffix is not None and suffix.startswith(("am", "a.m", "pm", "p.m")):
             after = suffix
@@ -102,6 +109,12 @@ def clock_time(text: str) -> ClockTime | None:
         rest = text if suffix is None and not m.group(1).startswith("0") else ""  # "05:30" is the 24-hour clock
         hour = _in_half_of_day(said_hour, after, rest) if said_hour <= 12 else said_hour
         return ClockTime(hour, int(said_minutes or 0), m.group(0).strip(), *m.span())
+    for said_hour in (_WORD_CLOCK.search(text), _SET_HOUR.search(text)):
+        if said_hour is not None:
+            hour = _number(said_hour.group(1))
+            if hour <= 12:
+                hour = _in_half_of_day(hour, text[said_hour.end():], text)
+            return ClockTime(hour, 0, said_hour.group(0), *said_hour.span())
     return None
 
 

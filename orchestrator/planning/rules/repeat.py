@@ -12,6 +12,7 @@ from typing import Any
 from drivetwin.orchestrator.memory import Memory, Turn
 from drivetwin.orchestrator.planning.base import PlanningError
 from drivetwin.orchestrator.planning.rules import numbers as nb
+from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.edits import referenced
 from drivetwin.orchestrator.planning.rules.places import Notes, location
 from drivetwin.orchestrator.planning.rules.reading import Reading
@@ -121,8 +122,9 @@ def meant_instead(r: Reading) -> None:
 
 
 def corrects(r: Reading) -> bool:
-    """Whether the clause only gives a new amount for the last edit."""
-    return _AMOUNT.match(r.low) is not None
+    """Whether the clause only gives a new amount for the last edit ("make it 9 at night" names a
+    time, not an amount)."""
+    return _AMOUNT.match(r.low) is not None and clock_time(r.low) is None
 
 
 def correct(r: Reading, scene: Scene, memory: Memory) -> list[ToolCall]:
