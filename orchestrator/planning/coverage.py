@@ -498,30 +498,35 @@ _KIND_OF_LANE = re.compile(rf"\b({'|'.join(_LANE_KINDS)}) lane\b")
 _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswalk) ([a-z]|\d+)\b(?!')")
 
 
-# Where a request names the thing it wants added: the object of a verb of adding ("add a giraffe").
+# Where a request names the thing it wants added: the object of a verb of adding ("add a giraffe",
+# "needs a double rainbow"), up to four words before a word that ends a noun phrase.
 # (A question about such a thing changes nothing, so it is left to the planners' own refusals.)
 _THING_WANTED = re.compile(
-    r"\b(?:add|put|place|spawn|bring|drop|insert|create|want|need)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
-    r"of|\d+)\s+){0,3}([a-z]+)\b")
+    r"\b(?:add|put|place|spawn|bring|drop|insert|create|want|need|needs)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
+    r"of|\d+)\s+){0,3}((?:[a-z][a-z-]*\s+){0,3}?[a-z]+)(?=\s*(?:$|[,.;:!?]|\s(?:next|near|by|at|on|in|beside|behind|"
+    r"between|along|across|over|under|outside|inside|around|to|for|from|with|into|onto|and|or|so|that|which|who|"
+    r"please|here|there|too|as|if|when|where|somewhere|close|right|left|just|then)\b))")
 
 
 def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
-    """Things asked for that this world has no word for ("add a giraffe") and that no call
-    mentions: a plan that does something else instead is not what was meant. A word that only
+    """Things asked for that this world has no word for ("add a giraffe", "a mailbox next to the
+    bench") and that no call adds: a plan that does something else instead is not what was meant.
+    The thing is the phrase's last word ("a double rainbow" is a rainbow); a word that only
     describes a known thing ("a shiny bench") is not one; the words were spelling-repaired already."""
     vocab = vocabulary(scene)
-    said = " ".join(str(c.args) for c in calls).lower()
+    said = set(re.findall(r"[a-z]+", " ".join(str(v) for c in calls for k, v in c.args.items()
+                                               if k in ("category", "categories", "asset", "assets", "kind")).lower()))
     out = []
     for m in _THING_WANTED.finditer(masked):
-        word = m.group(1)
-        if masked[m.end():m.end() + 1] == "-":
-            continue  # "a mid-scale robot": part of a word that describes what follows
-        after = masked[m.end():].split()[:3]
+        phrase = m.group(1).split()
+        if phrase[0] == "to":
+            continue  # "want to be sure": a verb wanted, not a thing
+        word = phrase[-1]
+        if masked[m.end():m.end() + 1] == "-" or masked[m.end():].split()[:1] == ["of"]:
+            continue  # "a mid-scale robot", "a pile of rubble": what follows is the thing
         if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or word in ph.NUMBER_WORDS \
-                or ph.find_categories(word) or is_known(word, vocab) or word in said:
+                or ph.find_categories(" ".join(phrase)) or is_known(word, vocab) or word in said:
             continue
-        if after[:1] == ["of"] or ph.find_categories(" ".join(after)) or (after and len(after[0]) > 2 and after[0] in said):
-            continue  # "a pile of rubble", "a shiny new bench", "the scanned kerb stone" the plan adds: it describes
         out.append(f"there is no {word!r} in this world")
     return list(dict.fromkeys(out))
 

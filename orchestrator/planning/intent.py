@@ -61,6 +61,9 @@ _INFO = re.compile(r"\b(tell me|show me|let me know|tell (?:[a-z]+ ){1,2}(?:what
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
                    r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"
+                   # "I'd like to confirm there are no cars in it", "just want to be sure there isn't one": verifying
+                   r"(?:confirm|verify|double[- ]check|be (?:sure|certain)) (?:that |whether |if )?(?:there (?:is|are|was|were|'s)|"
+                   r"there (?:isn'?t|aren'?t)|(?:the|it|they|nothing|none|no|all|every)\b)|"
                    # "the distance between them is to be reported": what is wanted is an answer
                    r"(?:is|are) to be (?:reported|measured|listed|counted|checked|confirmed|stated|given))\b")
 # Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
