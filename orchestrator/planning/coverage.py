@@ -504,7 +504,8 @@ _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswa
 _THING_WANTED = re.compile(
     r"\b(?:add|put|place|spawn|bring|drop|insert|create|want|need|needs)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
     r"of|\d+)\s+){0,3}((?:[a-z][a-z-]*\s+){0,3}?[a-z]+)(?=\s*(?:$|[,.;:!?]|\s(?:next|near|by|at|on|in|beside|behind|"
-    r"between|along|across|over|under|outside|inside|around|to|for|from|with|into|onto|and|or|so|that|which|who|"
+    r"between|along|across|over|under|above|below|beneath|opposite|past|beyond|against|within|after|before|outside|inside|"
+    r"around|to|for|from|with|into|onto|and|or|so|that|which|who|"
     r"please|here|there|too|as|if|when|where|somewhere|close|right|left|just|then)\b))")
 
 

@@ -344,3 +344,19 @@ def test_a_thing_said_to_be_moving_is_not_added_standing_still(campus, registry)
 def test_fewer_lights_does_not_switch_the_street_lights_on(campus, registry):
     refused_unchanged(campus, registry, Fixed(call("set_lighting", street_lights="on")),
                       "fewer lights along the north side, please")
+
+
+def test_a_thing_the_world_has_no_word_for_is_not_replaced_by_the_one_it_stands_by(campus, registry):
+    next_to = {"relation": "next_to", "target": "bench_1"}
+    report = refused_unchanged(campus, registry, Fixed(add("bench", location=next_to)), "could you add a letterbox next to the bench")
+    assert "'letterbox'" in (report.error or "")
+    rain = Fixed(call("set_weather", kind="rain", intensity=0.6))
+    report = refused_unchanged(campus, registry, rain, "for the trailer we need a triple rainbow above the fountain")
+    assert "'rainbow'" in (report.error or "")
+    assert Session(campus, Fixed(add("bench", location=next_to)), registry).submit("add one more bench next to the bench").ok
+
+
+def test_wanting_to_be_sure_of_something_asks_and_changes_nothing(campus, registry):
+    assert read_request("before my run I'd like to verify there are no trucks near the gate", campus).question
+    assert read_request("just want to be certain the fountain is still there", campus).question
+    refused_unchanged(campus, registry, Fixed(add("truck")), "someone left a truck around last week; I want to be sure there isn't one now")
