@@ -55,6 +55,8 @@ from drivetwin.orchestrator.planning.coverage import (
     named_things,
     off_the_side,
     partial_removal,
+    picked_but_other,
+    picked_by_thing,
     place_dropped,
     unknown_places,
     unknown_things,
@@ -63,7 +65,7 @@ from drivetwin.orchestrator.planning.coverage import (
     wrong_direction,
 )
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed, nearest_landmark
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, REMOVE_WORDS, asks, without_contrast
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, KEEP_SOME, REMOVE_WORDS, asks, without_contrast
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import lexicon as lx
@@ -296,6 +298,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += unnamed_compass_places(request.low, scene)
     out += place_dropped(request.low, effect.calls)
     out += unknown_things(request.masked, effect.calls, scene)
+    out += picked_but_other(request.masked, scope, scene)
     out += excepted_touched(request.excepted, _kinds_named(request), scope, scene, without_contrast(request.low))
     return out
 
@@ -324,7 +327,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     out += off_surface(request.low, scene, placed)
     if not request.question or effect.edits:  # "could the library be painted red?" asks for an edit
         out += look_left_out(request.low, effect.calls)
-    if request.place is not None and effect.removed and names_group(request.low):
+    if request.place is not None and effect.removed and names_group(request.low) and not KEEP_SOME.search(request.low):
         near = _nearness(scene, request.place)
         spared = excepted_ids(request.excepted, _kinds_named(request), scene, without_contrast(request.low))  # "..., but keep the SUV"
         out += group_left_behind(request.low, effect.removed,
@@ -669,6 +672,10 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
         out.append(Reading(text=describe(fresh), calls=fresh))
     if request.excepted and (spared := _sparing(effect, excepted_ids(request.excepted, _kinds_named(request), scene, without_contrast(request.low)))):
         out.append(Reading(text=describe(spared), calls=spared))
+    for _, category, meant in [] if request.question else picked_by_thing(request.masked, scene):
+        if any(a.category == category and a.id not in meant for a in effect.removed):  # the one by the thing named
+            out.append(Reading(text="remove " + ", ".join(sorted(meant)), calls=[
+                ToolCall(tool="remove_assets", args={"assets": sorted(meant)})]))
     if effect.removed and (request.place or request.state):
         keep = [a.id for a in effect.removed
                 if (request.place is None or _near(scene, a, request.place))

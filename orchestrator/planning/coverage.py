@@ -411,6 +411,10 @@ def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> l
     return out
 
 
+# A part of what was pointed at: "about half of them", "some of those", "most of these".
+_PART_OF = re.compile(r"\b(?:half|most|some|a few|a couple|part|a third|a quarter) of (?:them|those|these)\b")
+
+
 def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory: Memory, scene: Scene,
                    counted: bool) -> list[str]:
     """A request that names nothing itself but points back ("move them left", "two more there",
@@ -432,7 +436,7 @@ def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory:
                    f"but the plan acts on {', '.join(strays)}")
     existing = [i for i in dict.fromkeys(earlier) if scene.asset(i) is not None]
     acted = {a.id for a in scope.touched}
-    counted = counted or KEEP_SOME.search(masked) is not None  # "just leave one of them"
+    counted = counted or KEEP_SOME.search(masked) is not None or _PART_OF.search(masked) is not None  # "just leave one of them"
     if said in _PLURAL_POINTERS and not scope.added and not counted and 0 < len(acted & set(existing)) < len(existing):
         out.append(f"you said {said!r} ({len(existing)} of them), but the plan acts on {len(acted & set(existing))}")
     if said == "there" and last.focus is not None and scope.added:
@@ -520,9 +524,9 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     out = []
     for m in _THING_WANTED.finditer(masked):
         phrase = m.group(1).split()
-        if phrase[0] == "to":
-            continue  # "want to be sure": a verb wanted, not a thing
         word = phrase[-1]
+        if phrase[0] == "to" or (len(phrase) == 1 and word.endswith("ing")):
+            continue  # "want to be sure", "needs protecting": a verb wanted, not a thing
         if masked[m.end():m.end() + 1] == "-" or masked[m.end():].split()[:1] == ["of"]:
             continue  # "a mid-scale robot", "a pile of rubble": what follows is the thing
         if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or word in ph.NUMBER_WORDS \
@@ -530,6 +534,58 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
             continue
         out.append(f"there is no {word!r} in this world")
     return list(dict.fromkeys(out))
+
+
+# An existing thing picked out by another thing it stands by: "the lamp near the stop sign", "the
+# car closest to the hydrant", "that bin next to the bench".
+_PICKED_BY_THING = re.compile(
+    r"\b(?:the|that|this|those|these)\s+(?P<a>(?:[a-z]+\s+){0,2}?[a-z]+?)\s+(?:(?:that|which|who)(?:'s| is| are)\s+)?"
+    r"(?:(?:right|just)\s+)?(?:near|by|next to|beside|behind|in front of|(?:closest|nearest)(?: to)?)\s+"
+    r"(?:the|a|an|that|this)\s+(?P<b>(?:[a-z]+\s+){0,2}[a-z]+)\b")
+# Within this of the thing named, things said in the plural ("the cones by the bench") are meant.
+PICKED_RADIUS_M = 12.0
+# Workers that take a thing somewhere: there "the bench next to the tree" may be where it goes.
+_PLACING = ("move_asset", "place_asset", "arrange_assets")
+
+
+def picked_by_thing(masked: str, scene: Scene) -> list[tuple[str, str, set[str]]]:
+    """(what was said, category, the ids it picks out) for each thing picked out by another
+    thing it stands by: the one of its kind nearest to one of those (or, in the plural, all of
+    its kind within PICKED_RADIUS_M of one)."""
+    indexed = ph.normalise(masked)
+    out = []
+    for m in _PICKED_BY_THING.finditer(indexed):
+        kinds, refs = ph.find_categories(m.group("a")), ph.find_categories(m.group("b"))
+        if not kinds or not refs or kinds[-1].category == refs[0].category:
+            continue
+        kind, ref = kinds[-1], refs[0].category
+        anchors = [(a.pose.x, a.pose.y) for a in scene.all_assets() if a.category == ref]
+        mine = [a for a in scene.all_assets() if a.category == kind.category]
+        if not anchors or not mine:
+            continue
+
+        def gap(asset: AssetInstance) -> float:
+            return min(math.dist((asset.pose.x, asset.pose.y), p) for p in anchors)
+
+        meant = {a.id for a in mine if gap(a) <= PICKED_RADIUS_M} if kind.plural else {min(mine, key=gap).id}
+        said = indexed[m.start() : m.start("b") + refs[0].end].strip()  # up to the thing it stands by
+        out.append((said, kind.category, meant))
+    return out
+
+
+def picked_but_other(masked: str, scope: Scope, scene: Scene) -> list[str]:
+    """Things picked out by a thing they stand by ("the lamp near the stop sign") that the plan
+    changes or removes others of the same kind in their stead. A plan that takes things
+    somewhere is left alone: there "the bench next to the tree" may say where it goes."""
+    if any(c.tool in _PLACING for c in scope.calls):
+        return []
+    acted = [a for a in scope.touched if a not in scope.added]
+    out = []
+    for said, category, meant in picked_by_thing(masked, scene):
+        others = [a.id for a in acted if a.category == category and a.id not in meant]
+        if others and meant:
+            out.append(f"you said {said!r}, which is {', '.join(sorted(meant))}, but the plan acts on {', '.join(others)}")
+    return out
 
 
 # Where an excepted thing's own words end and the place that picks it out begins ("the one | by the bench").

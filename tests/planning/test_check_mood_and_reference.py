@@ -360,3 +360,14 @@ def test_wanting_to_be_sure_of_something_asks_and_changes_nothing(campus, regist
     assert read_request("before my run I'd like to verify there are no trucks near the gate", campus).question
     assert read_request("just want to be certain the fountain is still there", campus).question
     refused_unchanged(campus, registry, Fixed(add("truck")), "someone left a truck around last week; I want to be sure there isn't one now")
+
+
+def test_a_thing_picked_out_by_the_thing_it_stands_by_is_the_one_acted_on(campus, registry):
+    report = refused_unchanged(campus, registry, Fixed(call("remove_assets", category="street_light", count=1)),
+                               "that lamp post by the stop sign has to go")
+    assert report.question is not None
+    offered = [r.calls for r in report.question.readings]
+    assert [ToolCall(tool="remove_assets", args={"assets": ["street_light_6"]})] in offered
+    session = Session(campus, Fixed(call("remove_assets", assets=["street_light_6"])), registry)
+    assert session.submit("that lamp post by the stop sign has to go").ok
+    assert session.scene.asset("street_light_6") is None

@@ -304,6 +304,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         if not ids and _kept(r) is not None:  # "way too many cones. keep just the one": of those just made
             ids = notes.subject or [i for i in memory.last_added() if scene.asset(i) is not None]
         ids = _but_kept(r, ids)  # "too many, just leave one of them"
+        if _HALF.search(r.low):  # "lose about half of them": the newest half
+            ids = ids[len(ids) - max(1, len(ids) // 2):]
         said = None if _kept(r) is not None else _SOME_OF_THEM.search(r.low)  # "take away 3 of them": the newest 3
         some = _amount(said.group(1)) if said else 0
         ids = ids[-some:] if 0 < some < len(ids) else ids
@@ -324,8 +326,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     args: dict[str, Any] = {"category": name}
     grouped = any(name in members for members in md.groups_said(r.low).values())
     if (grouped or _scoped_by_place(r, mention, anywhere=True)) and count is None and not fewer:
-        # "the vehicles in lot B": every one there, of every category the words cover
-        ids = referenced(r, scene, memory, notes)
+        # "the vehicles in lot B": every one there, of every category the words cover ("..., just leave one": all but one)
+        ids = _but_kept(r, referenced(r, scene, memory, notes))
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
     side = side_of(r.low, scene)
     if side is not None:  # "the street lights on the north side of Main Street": those there

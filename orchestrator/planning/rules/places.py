@@ -481,6 +481,11 @@ _SIDE_OF = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z
 _SIDE_ALONE = re.compile(r"\b(?:on|along|at) the (north|south|east|west)(?:ern)? side\b(?! of)")
 
 
+# A road's kind abbreviated after its name, as on a street sign: "Main St.", "Campus Dr".
+_ROAD_KIND = re.compile(r"(?<=[a-z] )(st|rd|ave|blvd|dr)\.?(?=\s)")
+_ROAD_KINDS = {"st": "street", "rd": "road", "ave": "avenue", "blvd": "boulevard", "dr": "drive"}
+
+
 def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
     """The side of a road or place the words name ("on the north side of Main Street"), as
     words and as a test of whether a thing stands on it (beyond the nearest point of the road,
@@ -491,7 +496,7 @@ def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool
         if alone is None or not scene.roads.lanes:
             return None
         return f"{alone.group(1)} side of the road", _beyond(_across(scene, alone.group(1)), alone.group(1))
-    rest = said.group(2)
+    rest = _ROAD_KIND.sub(lambda m: _ROAD_KINDS[m.group(1)], said.group(2) + " ")  # "main st" is Main Street
     roads = {lane.road for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())}
     points = [p for lane in scene.roads.lanes if lane.road in roads for p in lane.centreline]
     name = next(iter(roads), None)
