@@ -77,6 +77,30 @@ def test_fewer_than_before_takes_the_extra_ones_away(session, campus):
     assert len(_added(session, campus, "bench")) == 2
 
 
+def test_half_of_them_takes_away_half_of_what_the_last_turn_added(session, campus):
+    assert session.submit("put eight cones near the student union").ok
+    report = session.submit("too cluttered, lose roughly half of them")
+    assert report.ok, report.error
+    assert len(_added(session, campus, "traffic_cone")) == 4
+
+
+def test_clearing_a_place_but_leaving_one_leaves_one_there(session, campus):
+    lot = campus.landmark("parking lot B")
+    vehicles = [a.id for a in campus.assets if a.category in ("passenger_car", "suv") and _dist(a, lot.position) < 30]
+    assert len(vehicles) == 3
+    report = session.submit("clear the vehicles out of lot B but leave one of them")
+    assert report.ok, report.error
+    assert sum(session.scene.asset(i) is not None for i in vehicles) == 1
+
+
+def test_a_side_of_a_road_said_with_its_kind_abbreviated_is_that_side(session, campus):
+    report = session.submit("take away the lamps along the north side of Main St.")
+    assert report.ok, report.error
+    gone = {a.id for a in campus.assets if a.category == "street_light"} - {a.id for a in session.scene.assets}
+    assert gone and all(campus.asset(i).pose.y > 0 for i in gone)
+    assert session.scene.count("street_light") == campus.count("street_light") - len(gone) > 0
+
+
 def test_a_new_amount_of_another_kind_is_not_read_as_the_last_edit(session, campus):
     session.submit("add a bench near the fountain")
     before = session.scene
