@@ -27,6 +27,7 @@ from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
 from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, side_of
 from drivetwin.orchestrator.planning.rules.reading import used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
+from drivetwin.tools.appearance import TIME_PRESETS
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import compass_of
 from drivetwin.worlds.catalog import catalog
@@ -390,7 +391,27 @@ def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     times = [str(c.args.get("time")) for c in calls if c.tool == "set_time_of_day"]
     if clock is not None and clock.text not in _NAMED_TIMES and times and str(clock) not in times:
         out.append(f"you said {clock.text} ({clock}), but the plan sets the time to {times[0]}")
+    parts = [p for p in _DAY_PART.findall(low) if p in _HALF_OF_DAY]
+    halves = {_HALF_OF_DAY[p] for p in parts}
+    if clock is None and len(halves) == 1 and times:  # "just after sunrise" is never set as sunset
+        set_hour = _hour_of(times[-1])
+        if set_hour is not None and _half_of(set_hour) not in (None, *halves):
+            out.append(f"you said {parts[0]}, but the plan sets the time to {times[-1]}")
     return out
+
+
+# The parts of the day on either side of noon, and which a time set falls in.
+_HALF_OF_DAY = {"dawn": "morning", "sunrise": "morning", "morning": "morning",
+                "sunset": "evening", "dusk": "evening", "evening": "evening", "night": "evening"}
+
+
+def _hour_of(time: str) -> int | None:
+    said = TIME_PRESETS.get(time, time)
+    return int(said[:2]) if re.fullmatch(r"\d\d:\d\d", said) else None
+
+
+def _half_of(hour: int) -> str | None:
+    return "morning" if 4 <= hour < 12 else "evening" if hour >= 17 or hour < 4 else None
 
 
 def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> list[str]:
@@ -524,6 +545,8 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     out = []
     for m in _THING_WANTED.finditer(masked):
         phrase = m.group(1).split()
+        while len(phrase) > 1 and phrase[-1].endswith("ly"):
+            phrase.pop()  # "a low sun shortly after dawn": the thing comes before the adverb
         word = phrase[-1]
         if phrase[0] == "to" or (len(phrase) == 1 and word.endswith("ing")):
             continue  # "want to be sure", "needs protecting": a verb wanted, not a thing

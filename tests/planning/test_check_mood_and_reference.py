@@ -371,3 +371,11 @@ def test_a_thing_picked_out_by_the_thing_it_stands_by_is_the_one_acted_on(campus
     session = Session(campus, Fixed(call("remove_assets", assets=["street_light_6"])), registry)
     assert session.submit("that lamp post by the stop sign has to go").ok
     assert session.scene.asset("street_light_6") is None
+
+
+def test_a_time_in_the_other_half_of_the_day_from_the_one_said_is_not_applied(campus, registry):
+    refused_unchanged(campus, registry, Fixed(call("set_time_of_day", time="sunset")),
+                      "for the glare run I need a low sun shortly after dawn")
+    refused_unchanged(campus, registry, Fixed(call("set_time_of_day", time="09:00")), "a night drive in the fog, no moon")
+    assert Session(campus, Fixed(call("set_time_of_day", time="sunrise")), registry).submit(
+        "for the glare run I need a low sun shortly after dawn").ok

@@ -88,7 +88,8 @@ def time_of_day(r: Reading) -> ToolCall | None:
         return ToolCall(tool="set_time_of_day", args={"time": str(said)})  # the tool refuses "25:70"
     if r.has(("lunchtime", "lunch time", "lunch")):
         return ToolCall(tool="set_time_of_day", args={"time": "12:30"})
-    if _BEFORE_DARK.search(r.low) or _SUN_SINKING.search(r.low):  # "the last light before the sun goes down": not yet night
+    rising = r.has(("sunrise", "dawn", "daybreak", "morning", "sun comes up", "sun is up", "sun rises"))  # a low sun in the morning
+    if _BEFORE_DARK.search(r.low) or (_SUN_SINKING.search(r.low) and not rising):  # "the last light before the sun goes down": not yet night
         return ToolCall(tool="set_time_of_day", args={"time": "sunset"})
     for words, preset in lx.TIME_PRESETS:
         if r.has(words):
