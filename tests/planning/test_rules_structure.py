@@ -28,6 +28,19 @@ def test_one_verb_governs_each_thing_joined_to_it(context):
     ]
 
 
+def test_one_verb_governs_the_ego_joined_to_another_thing(context):
+    calls = calls_of(context, "could you park the SUV in lot B and the ego car in lot A")
+    assert [(tool, args["asset"], args["location"]["target"]) for tool, args in calls] == [
+        ("place_asset", "suv_1", "parking lot B"), ("place_asset", "ego", "parking lot A")]
+
+
+def test_a_colour_said_once_after_things_joined_colours_each_of_them(context):
+    calls = calls_of(context, "paint the hydrant and the bin yellow")
+    assert [(tool, args["colour"]) for tool, args in calls] == [("set_asset_appearance", "yellow")] * 2
+    calls = calls_of(context, "paint the hydrant green and the bin yellow")
+    assert [args["colour"] for _, args in calls] == ["green", "yellow"]
+
+
 def test_things_joined_inside_a_layout_stay_one_clause(context):
     ((tool, args),) = calls_of(context, "a ring of cones and a barrier round the fountain")
     assert tool == "arrange_assets" and set(args["categories"]) == {"traffic_cone", "road_barrier"}
