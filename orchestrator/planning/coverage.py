@@ -545,8 +545,10 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     out = []
     for m in _THING_WANTED.finditer(masked):
         phrase = m.group(1).split()
-        while len(phrase) > 1 and phrase[-1].endswith("ly"):
-            phrase.pop()  # "a low sun shortly after dawn": the thing comes before the adverb
+        cut = next((i for i, w in enumerate(phrase) if i and w in lx.GRAMMAR), len(phrase))
+        phrase = phrase[:cut]  # "a deer crossing the road": the phrase ends before "the"
+        while len(phrase) > 1 and phrase[-1].endswith(("ly", "ing")):
+            phrase.pop()  # "a low sun shortly after dawn", "a deer crossing": the thing comes before
         word = phrase[-1]
         if phrase[0] == "to" or (len(phrase) == 1 and word.endswith("ing")):
             continue  # "want to be sure", "needs protecting": a verb wanted, not a thing

@@ -379,3 +379,8 @@ def test_a_time_in_the_other_half_of_the_day_from_the_one_said_is_not_applied(ca
     refused_unchanged(campus, registry, Fixed(call("set_time_of_day", time="09:00")), "a night drive in the fog, no moon")
     assert Session(campus, Fixed(call("set_time_of_day", time="sunrise")), registry).submit(
         "for the glare run I need a low sun shortly after dawn").ok
+
+
+def test_an_unknown_thing_doing_something_is_still_the_thing_asked_for(campus, registry):
+    report = refused_unchanged(campus, registry, Fixed(add("pedestrian")), "add a moose wandering across the road by the gate")
+    assert "'moose'" in (report.error or "")

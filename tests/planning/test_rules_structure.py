@@ -34,6 +34,12 @@ def test_one_verb_governs_the_ego_joined_to_another_thing(context):
         ("place_asset", "suv_1", "parking lot B"), ("place_asset", "ego", "parking lot A")]
 
 
+def test_a_verb_with_its_particle_governs_each_thing_joined_to_it(context):
+    calls = calls_of(context, "could you take out the hydrant and the stop sign")
+    assert [(tool, args.get("category")) for tool, args in calls] == [
+        ("remove_assets", "fire_hydrant"), ("remove_assets", "stop_sign")]
+
+
 def test_a_colour_said_once_after_things_joined_colours_each_of_them(context):
     calls = calls_of(context, "paint the hydrant and the bin yellow")
     assert [(tool, args["colour"]) for tool, args in calls] == [("set_asset_appearance", "yellow")] * 2

@@ -295,7 +295,8 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     parts.append(clause[start:])
     if len(parts) < 2 or not all(ph.find_categories(p) or ph.has_any(p.lower(), ph.EGO_WORDS) for p in parts):
         return [clause]  # each part names a thing ("park the SUV in lot A and the ego in lot B")
-    lead = clause[: verb.end()]
+    particle = re.match(r"\s+(?:out|away|off|down|up|rid of)\b", clause[verb.end():], re.IGNORECASE)
+    lead = clause[: verb.end() + (particle.end() if particle else 0)]  # "take out the hydrant and the sign": both taken out
     colour = re.search(rf"\s+((?:{'|'.join(COLOURS)}))\s*[.!]*\s*$", parts[-1].lower())
     if colour is not None and not any(re.search(rf"\b(?:{'|'.join(COLOURS)})\b", p.lower()) for p in parts[:-1]):
         parts[:-1] = [f"{p} {colour.group(1)}" for p in parts[:-1]]  # "paint the bench and the bin red": both red
