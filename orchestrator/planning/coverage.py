@@ -545,7 +545,9 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     out = []
     for m in _THING_WANTED.finditer(masked):
         phrase = m.group(1).split()
-        cut = next((i for i, w in enumerate(phrase) if i and w in lx.GRAMMAR), len(phrase))
+        cut = next((i for i, w in enumerate(phrase) if i and (w in lx.GRAMMAR or w == "of")), len(phrase))
+        if phrase[cut:cut + 1] == ["of"]:
+            continue  # "a heap of benches", "a pile of rubble": what follows is the thing
         phrase = phrase[:cut]  # "a deer crossing the road": the phrase ends before "the"
         while len(phrase) > 1 and phrase[-1].endswith(("ly", "ing")):
             phrase.pop()  # "a low sun shortly after dawn", "a deer crossing": the thing comes before

@@ -70,6 +70,11 @@ def test_a_short_word_with_two_letters_swapped_is_repaired_and_one_with_a_letter
     assert repair("a tuck by the gate", campus).repairs == []  # "tuck" is a word, "truck" one letter away
 
 
+def test_a_command_verb_with_letters_swapped_is_repaired(campus):
+    assert repair("paitn the hydrant blue", campus).text == "paint the hydrant blue"
+    assert repair("plase rotaet the bench", campus).text.endswith("rotate the bench")
+
+
 def test_an_exponent_distance_is_read_in_full(context):
     calls = plan(context, "shift the ego forward by 1e1 metres").calls
     assert 10.0 in _numbers(calls[0].args)

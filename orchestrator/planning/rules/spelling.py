@@ -204,7 +204,7 @@ def repair_targets(vocab: frozenset[str]) -> tuple[str, ...]:
     # Common words are protected from repair but rarely its result: "tank" is not "thanks", nor
     # is "sine" "since".
     domain = (_domain_words() - _words_of(lx.FILLER_STARTS)) | (vocab - _static_vocabulary())
-    return tuple(sorted(domain | set(_REPAIRABLE_GRAMMAR)))
+    return tuple(sorted(domain | set(_REPAIRABLE_GRAMMAR) | set(_COMMAND_VERBS)))  # "paitn the bench": paint
 
 
 def is_known(word: str, vocab: frozenset[str]) -> bool:
