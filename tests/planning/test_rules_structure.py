@@ -136,6 +136,12 @@ def test_a_letter_that_names_a_lot_is_not_an_article(campus):
     assert find_place(campus, " by lot b's entrance ")[0] == "parking lot B entrance"
 
 
+def test_the_entrance_to_a_place_is_that_place_s_entrance(campus):
+    assert find_place(campus, " cones at the entrance to lot b please ")[:1] == ("parking lot B entrance",)
+    assert find_place(campus, " a bin by the driveway into the lot a ")[0] == "parking lot A entrance"
+    assert find_place(campus, " two bikes at the entrance of the library ")[0] == "Library entrance"
+
+
 @pytest.mark.parametrize(
     ("words", "question"),
     [

@@ -94,6 +94,10 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
         for name in landmark.names():
             key = _ARTICLES.sub("", ph.normalise(name)).strip()
             spaced = r"\s+".join(map(re.escape, key.split()))
+            part = re.fullmatch(r"(.+) (entrance|driveway|gate|exit)", key)
+            if part is not None:  # "the entrance to lot B" is the lot B entrance
+                base = r"\s+".join(map(re.escape, part.group(1).split()))
+                spaced = rf"(?:{spaced}|{part.group(2)}\s+(?:to|of|for|into|from)\s+(?:the\s+)?{base})"
             # as written first: the "a" of "lot a instead" is the lot's letter, not an article
             m = re.search(rf"(?<![a-z0-9]){spaced}(?![a-z0-9])", low) or re.search(
                 rf"(?<![a-z0-9]){spaced}(?![a-z0-9])", bare
@@ -109,7 +113,7 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
             if best is None or rank > best[0]:
                 # Map the span back to `low` by finding the same words there.
                 words = r"\s+(?:(?:the|a|an)\s+)?".join(re.escape(w) for w in key.split())
-                span = re.search(rf"(?<![a-z0-9]){words}(?![a-z0-9])", low)
+                span = re.search(rf"(?<![a-z0-9])(?:{words}|{spaced})(?![a-z0-9])", low)
                 start, end = (span.start(), span.end()) if span else (0, 0)
                 best = (rank, landmark.name, start, end)
     if best is not None and not best[0][0] and (labelled := _labelled(scene, low, best[3])) is not None:
