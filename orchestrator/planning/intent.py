@@ -297,9 +297,16 @@ def wrapped_request(low: str) -> bool:
     return bool(_WRAPPED.search(low))
 
 
+# A sentence that opens with a command ("umm remove the bus, I think there's one somewhere?"): a
+# command, whatever question mark ends it.
+_IMPERATIVE = re.compile(r"^(?:(?:um+|uh+|erm|ok(?:ay)?|so|hey|right|now|then|and|also|please|pls|just)[,\s]+)*"
+                         r"(?:add|put|place|remove|delete|move|get rid of|take (?:away|out|off)|paint|park|spawn|create|shift|rotate|clear"
+                         r"|set|turn|make|change|bring)\b(?!-)")
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
-    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low))
+    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip()))
     return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
         not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))

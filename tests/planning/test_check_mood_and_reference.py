@@ -384,3 +384,9 @@ def test_a_time_in_the_other_half_of_the_day_from_the_one_said_is_not_applied(ca
 def test_an_unknown_thing_doing_something_is_still_the_thing_asked_for(campus, registry):
     report = refused_unchanged(campus, registry, Fixed(add("pedestrian")), "add a moose wandering across the road by the gate")
     assert "'moose'" in (report.error or "")
+
+
+def test_a_command_that_ends_with_a_question_mark_is_a_command(campus, registry):
+    assert not read_request("umm take away the truck, there's one somewhere I think?", campus).question
+    assert not read_request("ok so paint the bench red?", campus).question
+    refused_unchanged(campus, registry, Fixed(call("find_assets", category="bus")), "remove the bus, I believe there's one?")
