@@ -75,6 +75,11 @@ def test_a_command_verb_with_letters_swapped_is_repaired(campus):
     assert repair("plase rotaet the bench", campus).text.endswith("rotate the bench")
 
 
+def test_a_slip_in_a_clock_word_is_repaired_and_the_time_read(context):
+    calls = plan(context, "could the clock show a quater past eight in the evening").calls
+    assert [(c.tool, c.args) for c in calls] == [("set_time_of_day", {"time": "20:15"})]
+
+
 def test_an_exponent_distance_is_read_in_full(context):
     calls = plan(context, "shift the ego forward by 1e1 metres").calls
     assert 10.0 in _numbers(calls[0].args)

@@ -19,6 +19,8 @@ _WORD_NUMBERS = {
     "ten": 10, "eleven": 11, "twelve": 12, "fifteen": 15, "twenty": 20, "twenty-five": 25,
     "twenty five": 25, "thirty": 30,
 }
+# The words a clock time is said in, which a slip in them ("quater to seven") is repaired to.
+CLOCK_WORDS = ("quarter", "half", "past", "o'clock", *_WORD_NUMBERS)
 _HOUR = r"(\d{1,2}|" + "|".join(sorted(_WORD_NUMBERS, key=len, reverse=True)) + ")"
 # Words after a time that say which half of the day it is in.
 _AFTERNOON = re.compile(r"^\s*(pm|p\.m\.|(?:in|of|during) (?:the )?(afternoon|evening)|at night|tonight|(?:in the|of|of the) night)\b")
@@ -118,4 +120,4 @@ def clock_time(text: str) -> ClockTime | None:
     return None
 
 
-__all__ = ["ClockTime", "clock_time"]
+__all__ = ["CLOCK_WORDS", "ClockTime", "clock_time"]

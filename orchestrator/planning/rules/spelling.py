@@ -17,6 +17,7 @@ from pathlib import Path
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.clock import CLOCK_WORDS
 from drivetwin.orchestrator.planning.rules.inflection import forms
 from drivetwin.orchestrator.planning.rules.numbers import spelt_measures
 from drivetwin.tools.appearance import COLOURS
@@ -204,7 +205,8 @@ def repair_targets(vocab: frozenset[str]) -> tuple[str, ...]:
     # Common words are protected from repair but rarely its result: "tank" is not "thanks", nor
     # is "sine" "since".
     domain = (_domain_words() - _words_of(lx.FILLER_STARTS)) | (vocab - _static_vocabulary())
-    return tuple(sorted(domain | set(_REPAIRABLE_GRAMMAR) | set(_COMMAND_VERBS)))  # "paitn the bench": paint
+    # "paitn the bench": paint; "quater to seven": quarter
+    return tuple(sorted(domain | set(_REPAIRABLE_GRAMMAR) | set(_COMMAND_VERBS) | {w for w in CLOCK_WORDS if " " not in w}))
 
 
 def is_known(word: str, vocab: frozenset[str]) -> bool:
