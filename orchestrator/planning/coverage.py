@@ -219,6 +219,8 @@ def missing_categories(categories: Iterable[str], scope: Scope, scene: Scene) ->
             continue
         if "light" in catalog()[category].tags and any(c.tool in _LIGHTING_TOOLS for c in scope.calls):
             continue  # "are the street lamps on?": the lights setting is what says
+        if catalog()[category].motion == "vehicle" and any("vehicle_lights" in c.args for c in scope.calls):
+            continue  # "the headlights on all the cars": every vehicle's lights are one setting
         if category in said or any(re.search(rf"\b{re.escape(i)}\b", said) for i in _ids_of(scene, category)):
             continue
         out.append(category)

@@ -301,7 +301,7 @@ def wrapped_request(low: str) -> bool:
 # command, whatever question mark ends it.
 _IMPERATIVE = re.compile(r"^(?:(?:um+|uh+|erm|ok(?:ay)?|so|hey|right|now|then|and|also|please|pls|just)[,\s]+)*"
                          r"(?:add|put|place|remove|delete|move|get rid of|take (?:away|out|off)|paint|park|spawn|create|shift|rotate|clear"
-                         r"|set|turn|make|change|bring)\b(?!-)")
+                         r"|set|turn|make|change|bring|do (?:the same|that|this|it)(?: again)?)\b(?!-)")
 
 
 def asks(low: str) -> bool:

@@ -390,3 +390,9 @@ def test_a_command_that_ends_with_a_question_mark_is_a_command(campus, registry)
     assert not read_request("umm take away the truck, there's one somewhere I think?", campus).question
     assert not read_request("ok so paint the bench red?", campus).question
     refused_unchanged(campus, registry, Fixed(call("find_assets", category="bus")), "remove the bus, I believe there's one?")
+
+
+def test_switching_every_vehicle_s_lights_on_does_something_with_the_cars_named(campus, registry):
+    lights = Fixed(call("set_lighting", vehicle_lights="on"))
+    assert Session(campus, lights, registry).submit("switch the headlights of every car on").ok
+    assert not read_request("do the same in lot A", campus).question

@@ -136,6 +136,13 @@ def test_a_letter_that_names_a_lot_is_not_an_article(campus):
     assert find_place(campus, " by lot b's entrance ")[0] == "parking lot B entrance"
 
 
+def test_the_middle_of_a_place_is_that_place_and_the_middle_alone_the_scene_s_centre(context):
+    ((_, args),) = calls_of(context, "a 2 by 2 grid of bins right in the middle of lot A")
+    assert args["location"] == {"relation": "at", "target": "parking lot A"}
+    ((_, args),) = calls_of(context, "one bin in the middle, please")
+    assert args["location"] == {"relation": "scene_centre"}
+
+
 def test_the_entrance_to_a_place_is_that_place_s_entrance(campus):
     assert find_place(campus, " cones at the entrance to lot b please ")[:1] == ("parking lot B entrance",)
     assert find_place(campus, " a bin by the driveway into the lot a ")[0] == "parking lot A entrance"

@@ -329,7 +329,8 @@ def location(
     coords = ph.find_coordinates(r.text)
     if coords is not None:
         return {"relation": "absolute", "x": coords[0], "y": coords[1]}
-    if r.has(_CENTRE) or any(c in r.low for c in _CENTRE):
+    of_place = r.landmark and re.search(r"\b(?:middle|centre) of (?:the )?(?!scene|map|world|campus)[a-z]", r.low)
+    if (r.has(_CENTRE) or any(c in r.low for c in _CENTRE)) and not of_place:  # "the middle of lot B" is lot B
         return {"relation": "scene_centre"}
     halfway = between(scene, r.low)
     if halfway is not None:  # "a tree between the library and the bus stop"
