@@ -143,6 +143,13 @@ def test_the_middle_of_a_place_is_that_place_and_the_middle_alone_the_scene_s_ce
     assert args["location"] == {"relation": "scene_centre"}
 
 
+def test_past_a_place_in_a_lane_named_is_further_along_that_lane(context):
+    ((_, args),) = calls_of(context, "two barriers in the westbound lane a way beyond the crossroads")
+    assert args["location"] == {"relation": "in_lane", "target": "main intersection", "lane": "main_westbound", "distance": 25.0}
+    ((_, args),) = calls_of(context, "a cone in the eastbound lane 12 m past the main gate")
+    assert args["location"]["distance"] == 12.0 and args["location"]["lane"] == "main_eastbound"
+
+
 def test_the_entrance_to_a_place_is_that_place_s_entrance(campus):
     assert find_place(campus, " cones at the entrance to lot b please ")[:1] == ("parking lot B entrance",)
     assert find_place(campus, " a bin by the driveway into the lot a ")[0] == "parking lot A entrance"

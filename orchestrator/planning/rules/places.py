@@ -19,7 +19,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_place
 from drivetwin.worlds.scene import AssetInstance, Landmark, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon
+from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, polyline_length
 
 RELATIONS = (
     (("in front of", "ahead of", "front of", "infront", "in front"), "in_front_of"),
@@ -320,6 +320,29 @@ def _compass_of(r: Reading, scene: Scene) -> dict[str, Any] | None:
     return {"relation": "absolute", "x": round(x, 2), "y": round(y, 2), **({"distance": metres} if metres else {})}
 
 
+# "past the junction", "beyond the east gate" in a lane the words name: further along that lane,
+# the way its traffic runs.
+_PAST = re.compile(r"\b(?:past|beyond|after)\s+(?:the\s+)?(?=\S)")
+PAST_OFFSET_M = 25.0
+
+
+def _past_along_lane(r: Reading, scene: Scene) -> dict[str, Any] | None:
+    """A point in the lane named, past the place named along the lane's direction (the Worker's
+    in_lane distance is metres ahead of the lane's point nearest the place); None when the words
+    say no such thing."""
+    said = _PAST.search(r.low)
+    if said is None or not r.landmark or r.landmark_at < said.end() - 1 or not r.lane or r.lane_guessed:
+        return None
+    lane, landmark = scene.roads.lane(r.lane), scene.landmark(r.landmark)
+    if lane is None or landmark is None:
+        return None
+    metres = ph.find_distance(r.low[: said.start()])
+    away = metres if metres is not None else LITTLE_OFFSET_M if _A_LITTLE.search(r.low[: said.start()]) else PAST_OFFSET_M
+    on = nearest_on_polyline(landmark.position[0], landmark.position[1], lane.centreline)
+    ahead = min(away, polyline_length(lane.centreline) - on.arc_length)  # never off the lane's end
+    return {"relation": "in_lane", "target": landmark.name, "lane": lane.id, "distance": round(ahead, 2)}
+
+
 def location(
     r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: list[str] | None = None, compass: bool = True
 ) -> dict[str, Any] | None:
@@ -335,7 +358,7 @@ def location(
     halfway = between(scene, r.low)
     if halfway is not None:  # "a tree between the library and the bus stop"
         return halfway
-    offset = _compass_of(r, scene) if compass else None
+    offset = (_compass_of(r, scene) or _past_along_lane(r, scene)) if compass else None
     if offset is not None:  # "north of the crossroads", "20 m west of the fountain", "in the northbound lane, north of ..."
         return offset
     # A road named only as context ("across Main Street at the east gate") yields to the place.
