@@ -223,3 +223,12 @@ def test_the_world_named_by_its_own_name_is_no_place_in_it(campus):
     assert find_place(campus, " two people at union ")[0] == "Student Union entrance"
     named_union = campus.model_copy(update={"name": "union"})  # "in town" in a world called town
     assert find_place(named_union, " how many people are in union ") is None
+
+
+def test_a_speed_for_one_thing_there_keeps_what_it_does_at_that_speed(context):
+    ((tool, args),) = calls_of(context, "please change the ego's speed to 7 m/s")
+    assert (tool, args) == ("set_behaviour", {"asset": "ego", "behaviour": {"kind": "drive_lane", "lane": "main_eastbound", "speed": 7.0}})
+    ((_, args),) = calls_of(context, "hmm, can the ego be a little slower")
+    assert args["behaviour"]["speed"] < 5.0 and args["behaviour"]["lane"] == "main_eastbound"
+    ((_, args),) = calls_of(context, "the suv should circle at 4 m/s")
+    assert args["behaviour"]["kind"] == "circle"  # another behaviour is planned as one

@@ -447,6 +447,51 @@ def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
     return spec
 
 
+# A new speed for one thing that is there: "set the ego's speed to 8 m/s", "the truck should be doing
+# about 10 m/s", "could the ego go a bit slower?" (by PACE_FACTOR when no speed is said).
+_PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|driving|travel(?:s|ling|ing)?|move|moves|moving"
+                        r"|cruise|cruising|ride|rides|riding|walk|walks|walking)\b")
+_SLOWER = re.compile(r"\b(?:slower|slow (?:it |them |him |her )?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
+_FASTER = re.compile(r"\b(?:faster|quicker|speed (?:it |them |him |her )?up|(?:increase|raise) (?:its |the |their )?speed)\b")
+PACE_FACTOR = 1.5
+# A moving thing's speed when its behaviour does not say one (the Workers' own default).
+DEFAULT_PACE_MS = 5.0
+_ADDING = ("add", "spawn", "put", "place", "create", "insert", "another", "new")
+
+
+def new_pace(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall] | None:
+    """set_behaviour keeping what one thing there does, at the speed said (or slower, faster);
+    None when the clause says no speed, adds things, names several, or asks for another behaviour."""
+    speed = ph.find_speed(r.text)
+    slower, faster = _SLOWER.search(r.low) is not None, _FASTER.search(r.low) is not None
+    if (speed is None and slower == faster) or (speed is not None and not _PACE_SAID.search(r.low)) or r.has(_ADDING):
+        return None
+    if r.ids or (r.ego and not r.mentions):
+        ids = r.ids or ["ego"]
+    elif len(r.mentions) == 1 and not r.mentions[0].plural:
+        ids = [a.id for a in scene.assets if a.category == r.mentions[0].category]
+    else:
+        ids = notes.subject if not r.mentions and not r.ego else []  # "..., it should be doing 10 m/s"
+    found = scene.asset(ids[0]) if len(ids) == 1 else None
+    if found is None:
+        return None
+    category = catalog()[found.category]
+    now = found.behaviour
+    kind = now.kind if now.kind != "parked" else "drive_lane" if category.drives else None
+    said = behaviour_kind(r, category)
+    if kind is None or said not in (None, kind, "parked" if now.kind == "parked" else kind):
+        return None  # "make the suv circle at 5 m/s": another behaviour, planned as one
+    if speed is None:
+        notes.guess("how much slower" if slower else "how much faster")
+        current = now.speed or DEFAULT_PACE_MS
+        speed = round(current / PACE_FACTOR if slower else current * PACE_FACTOR, 2)
+    spec = {**now.model_dump(exclude_none=True), "kind": kind, "speed": speed}
+    if kind == "drive_lane" and r.lane:
+        spec["lane"] = r.lane
+    notes.subject = [found.id]
+    return [ToolCall(tool="set_behaviour", args={"asset": found.id, "behaviour": spec})]
+
+
 # "Up" said of moving a thing that drives: forward, as a queue moves up.
 _UP = re.compile(r"\b(?:move|moves|moved|inch|edge|creep|roll|bring|shift)\s+(?:\S+\s+){0,3}up\b(?!\s+(?:to|the|north))")
 

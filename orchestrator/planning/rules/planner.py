@@ -38,6 +38,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     behaviour_spec,
     edit_existing,
     kept_at,
+    new_pace,
     recolour,
     referenced,
     remove,
@@ -567,6 +568,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return looked_up
     if (swap := replaces(r)) is not None:  # "swap the bench for a bin": it goes, a bin stands there
         return replace_things(swap, scene, memory, notes)
+    paced = new_pace(r, scene, notes)
+    if paced is not None:  # "set the ego's speed to 8 m/s", "could the truck go a bit slower?"
+        return paced
     if r.mentions and _TOPIC.fullmatch(_without_mentions(r)):
         referenced(r, scene, memory, notes)  # "the cars... where are they?": what the next clause is about
         return []
