@@ -53,6 +53,7 @@ from drivetwin.orchestrator.planning.coverage import (
     landmark_thing_changed,
     missing_categories,
     named_things,
+    off_the_road,
     off_the_side,
     partial_removal,
     picked_but_other,
@@ -186,7 +187,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     # A request that only takes away never adds, and one that only adds never removes; with
     # words of both ("swap", "replace", "instead"), each half is judged by what it names.
     says_add = bool(ADD_WORDS.search(request.low))
-    added = [a for a in effect.added if a.category not in _companions(effect)]
+    # what a layout adds unasked is its own business, never a thing the request wants gone
+    added = [a for a in effect.added if a.category not in _companions(effect) or a.category in request.categories]
     if request.polarity == "remove" and added and (not effect.removed or not says_add):
         out.append("you asked to take something away, but the plan adds " + _names(added))
     elif request.polarity == "remove" and not effect.removed and not added and _moved(effect):
@@ -299,6 +301,8 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += place_dropped(request.low, effect.calls)
     out += unknown_things(request.masked, effect.calls, scene)
     out += picked_but_other(request.masked, scope, scene)
+    if request.place is None and not request.question:
+        out += off_the_road(request.low, scope, scene)
     out += excepted_touched(request.excepted, _kinds_named(request), scope, scene, without_contrast(request.low))
     return out
 

@@ -24,7 +24,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
-from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, side_of
+from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, road_said, side_of
 from drivetwin.orchestrator.planning.rules.reading import used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
 from drivetwin.tools.appearance import TIME_PRESETS
@@ -600,6 +600,16 @@ def picked_by_thing(masked: str, scene: Scene) -> list[tuple[str, str, set[str]]
         said = indexed[m.start() : m.start("b") + refs[0].end].strip()  # up to the thing it stands by
         out.append((said, kind.category, meant))
     return out
+
+
+def off_the_road(low: str, scope: Scope, scene: Scene) -> list[str]:
+    """Things the plan takes away that do not stand by the road the words say they are on ("the
+    street lights on Campus Drive"); a thing set driving "on Main Street" is where it goes."""
+    road = road_said(low, scene)
+    if road is None:
+        return []
+    far = [a.id for a in scope.removed if not road[1](a)]
+    return [f"you said on {road[0]}, but the plan acts on {', '.join(far)} away from it"] if far else []
 
 
 def picked_but_other(masked: str, scope: Scope, scene: Scene) -> list[str]:

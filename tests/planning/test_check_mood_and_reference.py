@@ -396,3 +396,18 @@ def test_switching_every_vehicle_s_lights_on_does_something_with_the_cars_named(
     lights = Fixed(call("set_lighting", vehicle_lights="on"))
     assert Session(campus, lights, registry).submit("switch the headlights of every car on").ok
     assert not read_request("do the same in lot A", campus).question
+
+
+def test_a_layout_of_the_things_a_request_wants_gone_is_not_applied(campus, registry):
+    ring = Fixed(call("arrange_assets", categories=["pedestrian"], shape="ring", location={"relation": "at", "target": "fountain"}))
+    refused_unchanged(campus, registry, ring, "honestly I'd rather not have people standing around the fountain")
+
+
+def test_things_said_to_be_on_a_road_are_the_ones_by_that_road(campus, registry):
+    every_lamp = Fixed(call("remove_assets", category="street_light"))
+    refused_unchanged(campus, registry, every_lamp, "take away the street lamps on Campus Drive")
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("remove the street lights along Campus Dr.")
+    assert not report.ok and "no street light on Campus Drive" in (report.error or "")
+    assert session.submit("remove the street lights along Main Street").ok
+    assert session.scene.count("street_light") == 0

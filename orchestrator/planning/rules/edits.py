@@ -20,7 +20,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.inflection import inflected
-from drivetwin.orchestrator.planning.rules.places import Notes, location, side_of
+from drivetwin.orchestrator.planning.rules.places import Notes, location, road_said, side_of
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
@@ -329,6 +329,12 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         # "the vehicles in lot B": every one there, of every category the words cover ("..., just leave one": all but one)
         ids = _but_kept(r, referenced(r, scene, memory, notes))
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
+    road = road_said(r.low, scene)
+    if road is not None and not r.landmark:  # "no street lights on Campus Drive": those by it, or none
+        ids = [a.id for a in scene.assets if a.category == name and road[1](a)]
+        if not ids:
+            raise ph_error(f"there is no {name.replace('_', ' ')} on {road[0]} to take away")
+        return [ToolCall(tool="remove_assets", args={"assets": ids[:count] if count else ids})]
     side = side_of(r.low, scene)
     if side is not None:  # "the street lights on the north side of Main Street": those there
         ids = [a.id for a in scene.assets if a.category == name and side[1](a)]

@@ -505,6 +505,25 @@ _SIDE_OF = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z
 _SIDE_ALONE = re.compile(r"\b(?:on|along|at) the (north|south|east|west)(?:ern)? side\b(?! of)")
 
 
+# A road said to be where things stand: "the lights on Campus Drive", "cones along Main Street".
+_ON_ROAD = r"\b(?:on|along|alongside|lining|beside|by)\s+(?:the\s+)?"
+# Within this of a road's lane centrelines a thing stands on or by that road (its kerb and lamps).
+ROAD_REACH_M = 8.0
+
+
+def road_said(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
+    """The road the words say things stand on or along ("on Campus Drive"), and a test of
+    whether a thing stands by it; None when they name none (or name a side of it: see side_of)."""
+    if _SIDE_OF.search(low):
+        return None
+    low = _ROAD_KIND.sub(lambda m: _ROAD_KINDS[m.group(1)], low + " ")
+    for road in sorted({lane.road for lane in scene.roads.lanes if lane.road}, key=len, reverse=True):
+        if re.search(_ON_ROAD + re.escape(ph.normalise(road).strip()) + r"\b", low):
+            lines = [lane.centreline for lane in scene.roads.lanes if lane.road == road]
+            return road, lambda a, lines=lines: min(nearest_on_polyline(a.pose.x, a.pose.y, ln).distance for ln in lines) <= ROAD_REACH_M
+    return None
+
+
 # A road's kind abbreviated after its name, as on a street sign: "Main St.", "Campus Dr".
 _ROAD_KIND = re.compile(r"(?<=[a-z] )(st|rd|ave|blvd|dr)\.?(?=\s)")
 _ROAD_KINDS = {"st": "street", "rd": "road", "ave": "avenue", "blvd": "boulevard", "dr": "drive"}
