@@ -232,3 +232,10 @@ def test_a_speed_for_one_thing_there_keeps_what_it_does_at_that_speed(context):
     assert args["behaviour"]["speed"] < 5.0 and args["behaviour"]["lane"] == "main_eastbound"
     ((_, args),) = calls_of(context, "the suv should circle at 4 m/s")
     assert args["behaviour"]["kind"] == "circle"  # another behaviour is planned as one
+
+
+def test_a_new_thing_said_to_face_a_compass_way_is_turned_that_way(session):
+    report = session.submit("could you add a bus at the shuttle stop, pointing west")
+    assert report.ok, report.error
+    bus = next(a for a in session.scene.assets if a.category == "bus")
+    assert abs(math.remainder(bus.pose.yaw - math.pi, math.tau)) < 0.05

@@ -957,6 +957,10 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     colour = next((c for c in COLOURS if r.has((c,))), None)
     if colour is not None:
         args["colour"] = colour
+    facing = md.facing_direction(r.masked)
+    if facing is not None:  # "a stop sign at the north crosswalk facing south": turned that way
+        east, north = md.COMPASS_VECTORS[facing]
+        args["yaw_deg"] = round(math.degrees(math.atan2(north, east)), 1)
     sides = _EACH_SIDE.search(r.low) if where is not None and where.get("relation") in ("at", "next_to") else None
     calls = [ToolCall(tool="add_asset", args=args)]
     if sides is not None and where is not None and where.get("target"):  # "a bin on each side of the door": one left, one right
