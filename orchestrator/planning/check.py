@@ -66,7 +66,14 @@ from drivetwin.orchestrator.planning.coverage import (
     wrong_direction,
 )
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed, nearest_landmark
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, FEWER_WORDS, KEEP_SOME, REMOVE_WORDS, asks, without_contrast
+from drivetwin.orchestrator.planning.intent import (
+    ADD_WORDS,
+    FEWER_WORDS,
+    KEEP_SOME,
+    REMOVE_WORDS,
+    asks,
+    without_contrast,
+)
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import lexicon as lx

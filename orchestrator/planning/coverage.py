@@ -593,7 +593,7 @@ def picked_by_thing(masked: str, scene: Scene) -> list[tuple[str, str, set[str]]
         if not anchors or not mine:
             continue
 
-        def gap(asset: AssetInstance) -> float:
+        def gap(asset: AssetInstance, anchors: list[tuple[float, float]] = anchors) -> float:
             return min(math.dist((asset.pose.x, asset.pose.y), p) for p in anchors)
 
         meant = {a.id for a in mine if gap(a) <= PICKED_RADIUS_M} if kind.plural else {min(mine, key=gap).id}

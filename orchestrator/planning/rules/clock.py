@@ -111,12 +111,12 @@ def clock_time(text: str) -> ClockTime | None:
         rest = text if suffix is None and not m.group(1).startswith("0") else ""  # "05:30" is the 24-hour clock
         hour = _in_half_of_day(said_hour, after, rest) if said_hour <= 12 else said_hour
         return ClockTime(hour, int(said_minutes or 0), m.group(0).strip(), *m.span())
-    for said_hour in (_WORD_CLOCK.search(text), _SET_HOUR.search(text)):
-        if said_hour is not None:
-            hour = _number(said_hour.group(1))
+    for hour_said in (_WORD_CLOCK.search(text), _SET_HOUR.search(text)):
+        if hour_said is not None:
+            hour = _number(hour_said.group(1))
             if hour <= 12:
-                hour = _in_half_of_day(hour, text[said_hour.end():], text)
-            return ClockTime(hour, 0, said_hour.group(0), *said_hour.span())
+                hour = _in_half_of_day(hour, text[hour_said.end():], text)
+            return ClockTime(hour, 0, hour_said.group(0), *hour_said.span())
     return None
 
 

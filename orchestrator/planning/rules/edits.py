@@ -489,7 +489,7 @@ def new_pace(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall] | None:
         return None  # "make the suv circle at 5 m/s": another behaviour, planned as one
     if speed is None:
         notes.guess("how much slower" if slower else "how much faster")
-        current = now.speed or DEFAULT_PACE_MS
+        current = getattr(now, "speed", None) or DEFAULT_PACE_MS  # a parked thing has none
         speed = round(current / PACE_FACTOR if slower else current * PACE_FACTOR, 2)
     spec = {**now.model_dump(exclude_none=True), "kind": kind, "speed": speed}
     if kind == "drive_lane" and r.lane:
