@@ -411,3 +411,9 @@ def test_things_said_to_be_on_a_road_are_the_ones_by_that_road(campus, registry)
     assert not report.ok and "no street light on Campus Drive" in (report.error or "")
     assert session.submit("remove the street lights along Main Street").ok
     assert session.scene.count("street_light") == 0
+
+
+def test_a_thing_wanted_that_a_lookup_tells_is_no_unknown_thing(campus, registry):
+    measure = Fixed(call("measure_distance", a="Library entrance", b="fountain"))
+    report = Session(campus, measure, registry).submit("I want the straight-line distance between the library and the fountain")
+    assert report.ok, report.error
