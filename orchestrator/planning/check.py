@@ -326,8 +326,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
         served = {min(centres, key=lambda p: math.dist((a.pose.x, a.pose.y), centres[p])) for a in effect.added}
         out += [f"you said every one of {', '.join(each)}, but the plan puts nothing at {place}"
                 for place in centres if place not in served]
-    laid = {k for c in effect.calls if c.tool == "arrange_assets" for k in c.args.get("categories", ())}
-    out += wrong_layout(request.masked, [a for a in effect.added if not laid or a.category in laid])  # not the sign put by them
+    out += wrong_layout(request.masked, effect.added)
     if request.place is not None and effect.added:
         out += not_around(request.low, _centre(scene, request.place), effect.added)
     out += wrong_heading(request.low, placed)

@@ -239,11 +239,3 @@ def test_a_new_thing_said_to_face_a_compass_way_is_turned_that_way(session):
     assert report.ok, report.error
     bus = next(a for a in session.scene.assets if a.category == "bus")
     assert abs(math.remainder(bus.pose.yaw - math.pi, math.tau)) < 0.05
-
-
-def test_next_to_them_after_a_layout_names_the_things_it_lays(session):
-    report = session.submit("close the lot A entrance with a line of three barriers and stand a roadworks sign next to them")
-    assert report.ok, report.error
-    sign = next(a for a in session.scene.assets if a.category == "construction_sign")
-    barriers = [a for a in session.scene.assets if a.category == "road_barrier"]
-    assert len(barriers) == 3 and min(math.dist((sign.pose.x, sign.pose.y), (b.pose.x, b.pose.y)) for b in barriers) < 4.0

@@ -760,7 +760,6 @@ def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
         args["spacing"] = round(min(across.width / count, spacing), 2)  # every lane covered, none overhung
     if count:
         args["count"] = count
-    _laying(scene, args, notes)
     return ToolCall(tool="arrange_assets", args=args)
 
 
@@ -894,16 +893,7 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     elif args["shape"] == "line" and place.get("relation") in ("in_front_of", "behind") and "distance" not in place and (
             (driver := scene.asset(str(place.get("target")))) is not None and catalog()[driver.category].drives):
         args["location"] = {**place, "distance": LINE_ACROSS_M}  # across a vehicle's way, where it can be seen coming
-    _laying(scene, args, notes)
     return ToolCall(tool="arrange_assets", args=args)
-
-
-def _laying(scene: Scene, args: dict[str, Any], notes: Notes) -> None:
-    """Note the ids a layout of one kind and a said count will get, so that a later clause's "next
-    to them" names them ("a line of three barriers and a sign next to them")."""
-    if len(args["categories"]) == 1 and args.get("count"):
-        notes.adding(scene, args["categories"][0], int(args["count"]))
-        notes.named, notes.subject = notes.subject, notes.coming[-int(args["count"]):]
 
 
 # A line longer than this cannot stand across a road: one said "ahead of" a thing runs along its path.
