@@ -557,8 +557,6 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         word = phrase[-1]
         if phrase[0] == "to" or (len(phrase) == 1 and word.endswith("ing")):
             continue  # "want to be sure", "needs protecting": a verb wanted, not a thing
-        if masked[m.end():m.end() + 1] == "-" or masked[m.end():].split()[:1] == ["of"]:
-            continue  # "a mid-scale robot", "a pile of rubble": what follows is the thing
         if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or word in ph.NUMBER_WORDS \
                 or ph.find_categories(" ".join(phrase)) or is_known(word, vocab) or word in said:
             continue

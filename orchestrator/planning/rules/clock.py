@@ -36,11 +36,11 @@ _HALF_HOUR = re.compile(rf"\bhalf {_HOUR}\b(?! (?:past|after|to|before)\b)")
 _NAMED = {"midnight": (0, 0), "noon": (12, 0), "midday": (12, 0)}
 # "18.30" without a suffix is a clock time only when the sentence is about time.
 _TIME_TOPIC = re.compile(r"\b(time|clock)\b")
-_WORD_HOUR = r"(" + "|".join(sorted((w for w, n in _WORD_NUMBERS.items() if n <= 12), key=len, reverse=True)) + ")"
+_WORD_HOURS = "|".join(sorted((w for w, n in _WORD_NUMBERS.items() if n <= 12), key=len, reverse=True))
 # An hour said in words with what makes it a time: "nine o'clock", "seven pm", "nine in the evening".
-_WORD_CLOCK = re.compile(rf"\b{_WORD_HOUR}(?=\s*(?:o'?\s?clock|am\b|pm\b|a\.m\.|p\.m\.|in the (?:morning|afternoon|evening)\b|at night\b|tonight\b))")
+_WORD_CLOCK = re.compile(rf"\b({_WORD_HOURS})(?=\s*(?:o'?\s?clock|am\b|pm\b|a\.m\.|p\.m\.|in the (?:morning|afternoon|evening)\b|at night\b|tonight\b))")
 # A bare hour the clock is set to: "set the time to 9", "the clock at nine", "time: 18".
-_SET_HOUR = re.compile(rf"\b(?:time|clock)(?: of (?:the )?day)?\s*(?:to|at|=|:|is|be|should be|reads?|shows?)\s*(\d{{1,2}}|{_WORD_HOUR[1:-1]})\b(?!\s*(?:[:.]\d|%|m\b|km|mph|metres?|meters?|minutes?|mins?|seconds?|secs?|s\b|x\b|times\b))")
+_SET_HOUR = re.compile(rf"\b(?:time|clock)(?: of (?:the )?day)?\s*(?:to|at|=|:|is|be|should be|reads?|shows?)\s*(\d{{1,2}}|{_WORD_HOURS})\b(?!\s*(?:[:.]\d|%|m\b|km|mph|metres?|meters?|minutes?|mins?|seconds?|secs?|s\b|x\b|times\b))")
 
 
 @dataclass(frozen=True)

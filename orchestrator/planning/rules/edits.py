@@ -484,8 +484,8 @@ def new_pace(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall] | None:
     category = catalog()[found.category]
     now = found.behaviour
     kind = now.kind if now.kind != "parked" else "drive_lane" if category.drives else None
-    said = behaviour_kind(r, category)
-    if kind is None or said not in (None, kind, "parked" if now.kind == "parked" else kind):
+    allowed = {None, kind, "parked"} if now.kind == "parked" else {None, kind}  # "the parked suv": its state now
+    if kind is None or behaviour_kind(r, category) not in allowed:
         return None  # "make the suv circle at 5 m/s": another behaviour, planned as one
     if speed is None:
         notes.guess("how much slower" if slower else "how much faster")
