@@ -186,14 +186,14 @@ def not_around(low: str, centre: tuple[float, float] | None, added: Iterable[Ass
 def wrong_heading(low: str, placed: Iterable[AssetInstance]) -> list[str]:
     """Things the request has face a compass direction ("facing east") that the plan turns
     elsewhere."""
-    said = _FACING.search(low)
-    if said is None:
+    said = [m.group(1) for m in _FACING.finditer(low)]
+    if not said:
         return []
-    east, north = md.COMPASS_VECTORS[said.group(1)]
-    want = math.atan2(north, east)
+    # "a bus heading east and a lorry heading west": each faces one of the ways said
+    wants = [math.atan2(md.COMPASS_VECTORS[w][1], md.COMPASS_VECTORS[w][0]) for w in said]
     slack = math.radians(HEADING_SLACK_DEG)
-    off = [a.id for a in placed if abs(math.remainder(a.pose.yaw - want, math.tau)) > slack]
-    return [f"you said facing {said.group(1)}, but the plan turns {', '.join(off)} another way"] if off else []
+    off = [a.id for a in placed if all(abs(math.remainder(a.pose.yaw - want, math.tau)) > slack for want in wants)]
+    return [f"you said facing {' or '.join(dict.fromkeys(said))}, but the plan turns {', '.join(off)} another way"] if off else []
 
 
 def wrong_side(low: str, scene: Scene, added: Iterable[AssetInstance]) -> list[str]:

@@ -96,6 +96,8 @@ Action = Literal["apply", "ask", "refuse"]
 # Metres from a named place within which an edit counts as "at" it (a parking lot or a building
 # front is tens of metres across; the campus's places are 60 m or more apart).
 PLACE_RADIUS_M = 30.0
+# Within this of a thing a plan puts something by, it stands by that thing.
+BY_A_THING_M = 8.0
 # A description grounds to a category only when MiniLM is at least this sure and the plan's
 # category scores at least this much less (a plain synonym scores 1.0 and is read directly).
 DESCRIPTION_SCORE, DESCRIPTION_MARGIN = 0.45, 0.08
@@ -110,6 +112,9 @@ SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 MAX_READINGS = 3
 # A distance said ("20 m north of the library", "ten feet behind it"): only then may a thing the
 # plan puts by a named place stand further than PLACE_RADIUS_M from it.
+# A question about the scene's settings ("time + weather?", "what's the weather doing"): the
+# environment is what it must look up.
+_SETTING_ASKED = re.compile(r"\b(?:weather|what time|the time|time of day)\b")
 _DISTANCE_SAID = re.compile(r"\d\s*(?:m|metres?|meters?|ft|feet|foot|yards?|km)\b")
 # Tools that act on a list of assets as well as on one.
 _GROUP_TOOLS = ("move_asset", "remove_assets", "set_asset_appearance")
@@ -190,6 +195,12 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         said = " ".join(str(c.args) for c in effect.calls).lower().replace("_", " ")
         out += [f"you asked about {name}, but the plan looks up something else"
                 for name in _topics(request, scene) if not _looked_up(name, said, effect.calls, scene)]
+    if request.question and _SETTING_ASKED.search(request.low) and not any(
+            c.tool in ("describe_environment", "set_weather", "set_time_of_day") for c in effect.calls):
+        out.append("you asked about the weather or the time, but the plan looks up something else")
+    if any(c.tool == "measure_distance" and "ego" in (c.args.get("a"), c.args.get("b")) for c in effect.calls) \
+            and not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked):
+        out.append("the plan measures from the ego, which your words do not name")  # "how far is the hosptial from the gate"
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
     # A request that only takes away never adds, and one that only adds never removes; with
     # words of both ("swap", "replace", "instead"), each half is judged by what it names.
@@ -231,7 +242,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         far = [a for a in [*last.values(), *effect.removed] if a.id != "ego"
                and not _near(scene, a, request.place)
                and not (_DISTANCE_SAID.search(spelt_measures(request.low)) and _names_target(effect, request.place))
-               and not _at_a_target(scene, effect, a)  # a compound's other place or lane
+               and not _at_a_target(scene, effect, a, request.categories)  # a compound's other place, lane or thing
                and not _brought_closer(scene, a, request.place)  # "3 m towards the fountain"
                and not FURTHEST.search(request.low)  # "the tree furthest from the library"
                and not _heads_to(scene, a, request.place)  # "make him walk to the library"
@@ -327,8 +338,12 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
         out += [f"you said every one of {', '.join(each)}, but the plan puts nothing at {place}"
                 for place in centres if place not in served]
     out += wrong_layout(request.masked, effect.added)
-    if request.place is not None and effect.added:
-        out += not_around(request.low, _centre(scene, request.place), effect.added)
+    # around what the layout names ("around the tree just north of lot A"), else the place named
+    ringed = [str(c.args["location"]["target"]) for c in effect.calls if c.tool == "arrange_assets"
+              and isinstance(c.args.get("location"), dict) and c.args["location"].get("target")]
+    around = ringed[0] if ringed else request.place
+    if around is not None and effect.added:
+        out += not_around(request.low, _centre(scene, around), effect.added)
     out += wrong_heading(request.low, placed)
     out += wrong_side(request.low, scene, effect.added)
     if not effect.removed and not effect.added and not request.excepted:  # "all but the SUV" is not all
@@ -633,9 +648,10 @@ def _nearness(scene: Scene, place: str) -> Callable[[AssetInstance], bool]:
     return near
 
 
-def _at_a_target(scene: Scene, effect: Effect, asset: AssetInstance) -> bool:
-    """Whether the asset ends up at a landmark or on a lane that one of the plan's calls names
-    (a compound request names several places: "a bus on Main Street and a truck at the JTEKT")."""
+def _at_a_target(scene: Scene, effect: Effect, asset: AssetInstance, named: frozenset[str] = frozenset()) -> bool:
+    """Whether the asset ends up at a landmark or on a lane that one of the plan's calls names, or
+    by a thing of a kind the request `named` (a compound request names several places: "a bus on
+    Main Street and a truck at the JTEKT", "the bin next to the hydrant and the bench at the gate")."""
     def strings(value: Any) -> list[str]:
         if isinstance(value, dict):
             return [s for v in value.values() for s in strings(v)]
@@ -646,6 +662,10 @@ def _at_a_target(scene: Scene, effect: Effect, asset: AssetInstance) -> bool:
             return True
         lane = scene.roads.lane(said)
         if lane is not None and nearest_on_polyline(asset.pose.x, asset.pose.y, lane.centreline).distance <= lane.width:
+            return True
+        by = scene.asset(said)
+        if (by is not None and by.id != asset.id and by.category in named
+                and math.dist((by.pose.x, by.pose.y), (asset.pose.x, asset.pose.y)) <= BY_A_THING_M):
             return True
     return False
 

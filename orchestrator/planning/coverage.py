@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.intent import FORBIDDEN, HABITUAL, KEEP_SOME, asks
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, FORBIDDEN, HABITUAL, KEEP_SOME, asks
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -101,6 +101,12 @@ _RELATION_WORDS = frozenset(
 )
 # Weather kinds a request names directly (a goal such as "test the wipers" is read by the planner).
 _WEATHER_NAMES = ("rain", "snow", "fog", "cloud", "clear sky", "clear skies", "sunny", "sunshine")
+# The kind of weather each of those names asks for, and words before a name that deny it or
+# complain of it or say how it is now ("no rain", "it's too sunny", "it's raining, make it sunny").
+_KIND_OF_WEATHER = {"rain": "rain", "snow": "snow", "fog": "fog", "cloud": "cloudy", "overcast": "cloudy",
+                    "sunny": "clear", "sunshine": "clear", "clear sk": "clear"}
+_WEATHER_DENIED = re.compile(r"\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently)\b[^,.;]*$")
+_WEATHER_ENDED = re.compile(r"\w*(?:\s+\S+){0,2}?\s+(?:stops?|ends?|clears?|go(?:es)? away|lets? up)\b")
 # Clock times said by name: the time tool has presets for them, checked as parts of the day.
 _NAMED_TIMES = ("midnight", "noon", "midday")
 # Parts of the day a request names as a time to set; "this morning" is when, not what.
@@ -235,9 +241,15 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     # "put the cones in a ring": a layout may make the things it arranges; it makes nothing else
     arranged = {c for call in scope.calls if call.tool == "arrange_assets" for c in call.args.get("categories", [])}
     out = []
+    asks_to_add = ADD_WORDS.search(masked) is not None
     for m in named_in(masked):
         every = any(w in ("all", "every", "each", "both") for w in m.last_words(3))  # "line up all the cars": those there
-        if not any(w in _DEFINITE for w in m.last_words(2)) or not scene.count(m.category) or (m.category in arranged and not every):
+        # "stop sign to the other side of the road": a thing named bare, with no word for adding,
+        # of which the scene holds one, is that one
+        bare = (not m.plural and not asks_to_add and scene.count(m.category) == 1
+                and not any(w in _INDEFINITE or w in ph.NUMBER_WORDS or w.isdigit() for w in m.last_words(1)))
+        if (not (bare or any(w in _DEFINITE for w in m.last_words(2))) or not scene.count(m.category)
+                or (m.category in arranged and not every)):
             continue
         if any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)
@@ -383,6 +395,14 @@ def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     weather = [w for w in _WEATHER_NAMES if re.search(rf"\b{w}", low)]
     if weather and "set_weather" not in tools:
         out.append(f"you mentioned {weather[0]}, but the plan does not set the weather")
+    kinds_set = {str(c.args.get("kind")) for c in calls if c.tool == "set_weather"}
+    for name, kind in _KIND_OF_WEATHER.items():
+        said = re.search(rf"\b{name}", low)
+        if (said and kinds_set and kind not in kinds_set and not _WEATHER_DENIED.search(low[: said.start()][-24:])
+                and not _WEATHER_ENDED.match(low[said.end() :])  # "make the rain stop"
+                and not (kind == "cloudy" and kinds_set & {"rain", "snow"})):  # rain falls from clouds
+            out.append(f"you mentioned {name}, but the plan sets the weather to {', '.join(sorted(kinds_set))}")
+            break
     clock = clock_time(low)
     day = _DAY_PART.search(low)
     day_part = day.group(1) if day else None
@@ -552,16 +572,24 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         if phrase[cut:cut + 1] == ["of"]:
             continue  # "a heap of benches", "a pile of rubble": what follows is the thing
         phrase = phrase[:cut]  # "a deer crossing the road": the phrase ends before "the"
-        while len(phrase) > 1 and phrase[-1].endswith(("ly", "ing")):
-            phrase.pop()  # "a low sun shortly after dawn", "a deer crossing": the thing comes before
+        while len(phrase) > 1 and phrase[-1].endswith(("ly", "ing", "more", "where", "wards")):
+            phrase.pop()  # "a low sun shortly after dawn", "a deer crossing", "the sign anymore": the thing comes before
         word = phrase[-1]
         if phrase[0] == "to" or (len(phrase) == 1 and word.endswith("ing")):
             continue  # "want to be sure", "needs protecting": a verb wanted, not a thing
         if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or word in ph.NUMBER_WORDS \
-                or ph.find_categories(" ".join(phrase)) or is_known(word, vocab) or word in said:
+                or _heads(phrase) or is_known(word, vocab) or word in said:
             continue
         out.append(f"there is no {word!r} in this world")
     return list(dict.fromkeys(out))
+
+
+def _heads(phrase: list[str]) -> bool:
+    """Whether a category's name ends the phrase: "a yellow cab" names one, "a bus shelter"
+    names a shelter, not a bus."""
+    text = ph.normalise(" ".join(phrase))
+    return any(phrase[-1] in text[m.start : m.end].split() or text[m.end :].strip() in ("", "s")
+               for m in ph.find_categories(" ".join(phrase)))
 
 
 # An existing thing picked out by another thing it stands by: "the lamp near the stop sign", "the

@@ -24,7 +24,8 @@ REMOVE_WORDS = re.compile(
     # "the seat and the bin should both go": gone, with no place or way to go to after it
     r"|(?:should|can|could|must|may|has to|have to|needs? to) (?:all |both |just )?go(?: away)?"
     r"(?=\s*(?:[,.;!?]|$|(?:i guess|i think|please|now|too|as well)\b)))\b"
-    r"|^no (?=[a-z])"  # "no hydrant": a request that opens with "no" and a thing wants it gone
+    r"|^(?:(?:actually|ok|okay|so|hmm+|oh|wait|um+|and|then|right|sorry)\W+)*no (?=[a-z])"  # "no hydrant", "actually, no people": it goes
+    r"|\b(?:they|it|those|these|that|this|the \w+)(?: \w+)? (?:were|was)(?:n't| not) (?:there|here)\b"  # "I'd rather they weren't there"
     # "I want no bins on campus", "there should be no signals at the crossroads": a scene without them
     # "the lamp shall be removed", "they should get taken away": the edit said in the passive
     r"|\b(?:be|been|being|get|gets|got)\s+(?:\w+ly\s+)?(?:removed|deleted|eliminated|erased|discarded|scrapped|taken (?:away|out|off)"
@@ -51,7 +52,7 @@ FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|t
 KEEP_SOME = re.compile(r"\b(?:keep|leave)\s+(?:just |only |me )?(?:the )?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
-_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question),?\s+)?(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats"
+_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question),?\s+)?(which|what|where|how|is there|are there|is the|are the|does|do any|who|whats|wheres|hows|whos"
                              r"|is anything|is any|are any|is something|has anything|have any|do the)\b"
                              # "the gates, where are they": the thing first, the question after it
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
@@ -63,6 +64,7 @@ _INFO = re.compile(r"\b(tell me|show me|let me know|tell (?:[a-z]+ ){1,2}(?:what
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
                    r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"
+                   r"(?:write|note|jot|put) (?:it )?down (?:what|which|where|how|whether|if)|"  # "asked me to write down which lane ..."
                    # "I'd like to confirm there are no cars in it", "just want to be sure there isn't one": verifying
                    r"(?:confirm|verify|double[- ]check|be (?:sure|certain)) (?:that |whether |if )?(?:there (?:is|are|was|were|'s)|"
                    r"there (?:isn'?t|aren'?t)|(?:the|it|they|nothing|none|no|all|every)\b)|"
@@ -79,9 +81,9 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      r"|^(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:add|put|drop|place|move|make|set|"
                      r"remove|take|get|give|turn|paint|park|bring|have|let'?s)\b"
                      # "could the second car go in lot A?": a wish for where a thing should be
-                     r"|^(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive)\b"
+                     r"|(?:^|[.!;]\s*)(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive|face|turn|get)\b"
                      # "the car you just put there, could it go forward?": the same wish for a thing named first
-                     r"|(?:^|[,.;:!-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift|look|be|get)\b")
+                     r"|(?:^|[,.;:!-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift|look|be|get|face)\b")
 
 
 # English's ways of wrapping a request in a question ("is it possible to park ...", "any chance we

@@ -46,6 +46,7 @@ from drivetwin.orchestrator.planning.scenario_triggers import (
     steps,
 )
 from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import EGO_ID, AssetInstance, Scene
 
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
@@ -98,6 +99,13 @@ _STARTS_MOVING = re.compile(r"\b(?:pull(?:s|ing)? (?:out|away|off)|(?:drive|driv
                             r"|starts? (?:moving|driving|walking|to (?:move|drive|walk))|moves? off|gets? going|departs?|leaves?)\b")
 
 
+# The catalog's names of things in more than one word ("stop sign", "halt sign"): a manoeuvre's
+# word inside one names no manoeuvre. Lamps and signals are left: the light words read them.
+_THING_NAMES = tuple(sorted({n.replace("_", " ") for e in catalog().values() for n in (e.name, *e.synonyms)
+                             if " " in n.replace("_", " ") and not re.search(r"light|lamp|signal", n)},
+                            key=len, reverse=True))
+
+
 def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool:
     """Whether the words describe something happening over time: a trigger ("when the ego is
     15 m away", "after 3 seconds") with an action, or a manoeuvre only a storyboard can play
@@ -108,6 +116,8 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
     low = re.sub(r"[a-z]+", lambda m: _SLIPS.get(m.group(0), m.group(0)), low)
     for name in (n for place in (scene.landmarks if scene is not None else []) for n in place.names()):
         low = re.sub(rf"\b{re.escape(ph.normalise(name).strip())}\b", " place ", low)  # "bus stop" is no stop
+    for name in _THING_NAMES:
+        low = re.sub(rf"\b{re.escape(name)}s?\b", " thing ", low)  # "the stop sign" is no stop
     trigger = bool(TRIGGER.search(low) and re.search(r"\b(ego|it|car|m|metres?|meters?|seconds?|approach\w*)\b", low)) \
         or bool(DELAY.search(low))
     manoeuvre = any(words.search(low) for kind, words in _COMPILED[1:])

@@ -423,7 +423,9 @@ def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
         if said and said.group(0).startswith("leav") and _LEFT_AT.match(ph.normalise(r.masked)[said.end() :]):
             said = None  # "leave it at the Student Union": where it stays
         plain = kind != "drive_lane" and r.has(lx.BEHAVIOUR_WORDS[kind])  # the driving words are read inflected
-        if not said and not plain and not (kind == "cross_road" and _GOING_ACROSS.search(r.masked)):
+        # "someone crossing at the west crosswalk": the walker named, then what it is doing
+        doing = kind == "cross_road" and any(re.match(r"\s*crossing\b", r.low[m.end :]) for m in r.mentions)
+        if not said and not plain and not doing and not (kind == "cross_road" and _GOING_ACROSS.search(r.masked)):
             continue
         if category is not None and (
             (kind in ("jaywalk", "cross_road") and category.motion != "walker")

@@ -39,12 +39,30 @@ _WEATHER_TO = re.compile(r"\bweather\b(?:\s+(?:be|is|should|must|gets?|to|set|ch
                          r"please)\b)*\s*(?::|=|\bto\b|\bas\b)?\s*([a-z]+)")
 
 
+# Words that ask for what follows them ("make it cloudy", "needs overcast skies"), and words that
+# complain of it ("it's too sunny"): with two kinds of weather said, the one asked for is set.
+_ASKED_FOR = r"\b(?:make it|set (?:it |the weather )?to|turn (?:it )?|change (?:it )?to|switch (?:it )?to|wants?|needs?|should be|could be|go)\s+(?:\S+\s+){0,2}?"
+_COMPLAINED_OF = r"\b(?:too|way too|far too|so) "
+
+
+def _asked_for(r: Reading) -> tuple[str, ...]:
+    """The one kind of weather the words ask for when they name others too, else every kind in
+    the order they are tried."""
+    def words(kind: str) -> str:
+        return "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
+
+    said = [k for k in _WEATHER_ORDER if r.has(lx.WEATHER_WORDS[k])]
+    asked = [k for k in said if re.search(rf"{_ASKED_FOR}(?:{words(k)})\b", r.low)
+             and not re.search(rf"{_COMPLAINED_OF}(?:{words(k)})\b", r.low)]
+    return tuple(asked) if len(said) > 1 and len(asked) == 1 else _WEATHER_ORDER
+
+
 def weather(r: Reading) -> ToolCall | None:
     """The weather a clause asks for, with its intensity, or None."""
     named = _WEATHER_TO.search(r.low)
     if named is not None and named.group(1) in ("clear", "fine", "sunny", "dry") and not r.has(("no", "not")):
         return ToolCall(tool="set_weather", args={"kind": "clear"})  # "the weather be set to clear"
-    for kind in _WEATHER_ORDER:
+    for kind in _asked_for(r):
         if r.has(lx.WEATHER_WORDS[kind]) and not (kind == "clear" and _SUN_MOVING.search(r.low) and not r.has(("sunny", "sky", "clear"))):
             if (
                 kind == "clear"
@@ -62,7 +80,7 @@ def weather(r: Reading) -> ToolCall | None:
                 said_of_weather = re.search(rf"\blight\s+(?:{'|'.join(map(re.escape, lx.WEATHER_WORDS[kind]))})\b", r.low)
                 # "rainy but not too strong": a strength denied is a light one
                 denied = re.search(rf"\bnot (?:too |so |very )?(?:much )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)
-                heavy = r.has(lx.HEAVY) and denied is None
+                heavy = (r.has(lx.HEAVY) or re.search(r"[a-z]storm\b", r.low) is not None) and denied is None  # "a snowstorm"
                 light = denied is not None or (r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT)))
                 args["intensity"] = HEAVY_INTENSITY if heavy else LIGHT_INTENSITY if light else DEFAULT_INTENSITY
                 said = _INTENSITY.search(r.low)
@@ -168,7 +186,8 @@ def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:
     if found is not None:
         # "light up the streets" is lamps, not daylight.
         # "lights on, it's too dark": the dark is why, not a time to set.
-        masked = re.sub(r"\blight up\b|\b(?:it'?s |is )?(?:too |so |very )?dark\b", " ", r.masked)
+        # "it needs to be dark with the lamps on" still asks for the dark.
+        masked = re.sub(r"\blight up\b|\b(?:(?:it'?s|is|too|so|very) )+dark\b", " ", r.masked)
         masked_for_time = Reading(r.text, r.low, masked, r.mentions)
     weather_call = weather(r)
     if weather_call is not None:

@@ -45,7 +45,7 @@ WEATHER_WORDS: dict[str, tuple[str, ...]] = {
     "rain": ("rain", "raining", "rainy", "drizzle", "drizzling", "downpour", "storm", "stormy", "wet",
              "showers", "pouring", "pour", "pours", "wipers", "wiper", "umbrella", "puddles", "precipitation"),
     "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy", "visibility", "murky", "smog"),
-    "snow": ("snow", "snowy", "snowing", "blizzard", "snowfall", "wintry", "winter", "icy", "sleet"),
+    "snow": ("snow", "snowy", "snowing", "snowstorm", "blizzard", "snowfall", "wintry", "winter", "icy", "sleet"),
     "cloudy": ("cloudy", "overcast", "clouds", "grey sky", "gloomy"),
     "clear": ("clear weather", "clear the weather", "clear sky", "sunny", "make it clear", "sun",
               "sunshine", "stop raining", "stop the rain", "no rain", "fine weather", "clear skies",
@@ -96,7 +96,7 @@ CONCEPTS: dict[str, tuple[str, ...]] = {
     "bench": ("somewhere to sit", "to sit", "sit down", "seat", "seats", "chairs"),  # not "sit" said of a thing ("the car should sit")
     "construction_sign": ("warn", "warned", "warning", "warning sign", "heads-up"),
     "road_barrier": ("fence off", "cordon off", "barriers", "block the road", "block off"),
-    "pedestrian": ("foot traffic", "crowd", "passers-by", "someone", "somebody", "kid", "child", "guy"),
+    "pedestrian": ("foot traffic", "crowd", "passers-by", "someone", "somebody", "anyone", "anybody", "kid", "child", "guy"),
     "trash_bin": ("rubbish", "litter", "garbage"), "passenger_car": ("traffic",),  # after "foot traffic"
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.

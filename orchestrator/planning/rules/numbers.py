@@ -109,9 +109,15 @@ _DOZENS = re.compile(r"\b(half a|a half|a|one|two|three|four|five)[- ]dozen\b", 
 _DOZEN_OF = {"half a": 6, "a half": 6, "a": 12, "one": 12, "two": 24, "three": 36, "four": 48, "five": 60}
 
 
+# Hundreds and thousands of things: "a thousand people" are 1000, "two hundred cones" 200 (a
+# measure, "a hundred and eighty degrees", is spelt out in figures before).
+_MULTIPLES = re.compile(rf"\b({_BELOW_HUNDRED}|a)[- ](hundred|thousand)\b(?! and\b)", re.IGNORECASE)
+_MULTIPLE_OF = {"hundred": 100, "thousand": 1000}
+
+
 def spelt_measures(text: str) -> str:
-    """`text` with measures spelt in words written in figures ("two metres" -> "2 metres"), dozens
-    as counts ("half a dozen" -> "6"), and lengths in yards or car lengths in metres ("3 yards" ->
+    """`text` with measures spelt in words written in figures ("two metres" -> "2 metres"), dozens,
+    hundreds and thousands as counts ("half a dozen" -> "6", "a thousand" -> "1000"), and lengths in yards or car lengths in metres ("3 yards" ->
     "2.74 m")."""
     def figures(m: re.Match[str]) -> str:
         article = m.group(1).lower() in ("a", "an")
@@ -125,6 +131,7 @@ def spelt_measures(text: str) -> str:
 
     text = _DOZENS.sub(lambda m: str(_DOZEN_OF[m.group(1).lower()]), text)
     text = _ONE_CAR_LENGTH.sub(f"{CAR_LENGTH_M:g} m", _SPELT_MEASURE.sub(figures, text))
+    text = _MULTIPLES.sub(lambda m: f"{_spelt_value(m.group(1)) * _MULTIPLE_OF[m.group(2).lower()]:g}", text)
     return _OTHER_LENGTHS.sub(metres, text)
 
 

@@ -109,12 +109,14 @@ _ASKED_ABOUT = re.compile(r"\b(?:how many|where (?:is|are|do|does|did|can|could|
 
 
 # A question about how the world is now, not a wish ("is it raining?"; "bit of drizzle?" asks for it).
-_ASKS_HOW_IT_IS = re.compile(r"\s*(?:(?:so|ok|and|hey)\W+)*(?:what|what's|whats|how|is|are|was|does|do|which|when|tell me|can you tell)\b")
+_ASKS_HOW_IT_IS = re.compile(r"\s*(?:(?:so|ok|and|hey)\W+)*(?:what|what's|whats|how|hows|is|are|was|does|do|which|when|tell me|can you tell)\b")
 # The settings a question can ask about by their general words.
 # Things switched with the lights setting, and a question about whether they are on.
 _SWITCHED = frozenset({"street_light"})
 _ON_OFF = re.compile(r"\b(?:on or off|off or on|switched on|turned on|lit|on|off)\s*[?.!]*\s*(?:right now|now|at the moment)?\s*[?.!]*\s*$"
                      r"|\b(?:are|is) (?:the |all the |any of the )?(?:street ?)?(?:lights?|lamps?) (?:on|off|lit)\b")
+# A clause of a question that is only a setting's word ("time + weather?", "the weather?").
+_SETTING_ALONE = re.compile(r"\W*(?:and\s+|the\s+)*(?:weather|time|lighting|lights)(?:\W+(?:and\W+)?(?:the\s+)?(?:weather|time|lighting|lights))*\W*$")
 _SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|bright|light)|how(?:'s| is) the light"
                       r"|lights? (?:on|off)|lit)\b")
 
@@ -125,7 +127,8 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if len(texts) > 1:  # "which way and how": a part that names nothing belongs to the question before
         readings = [read(t, scene) for t in texts]
         kept = [t for t, reading in zip(texts, readings, strict=True) if not _names_nothing(reading)
-                or _BACK.search(reading.masked) or reading.has(lx.PROPERTY_WORDS) or _PROPERTY.search(reading.low)]
+                or _BACK.search(reading.masked) or reading.has(lx.PROPERTY_WORDS) or _PROPERTY.search(reading.low)
+                or _SETTING_ALONE.match(reading.low) or _SETTING.search(reading.low)]
         texts = kept if kept else texts[:1]
     kinds = list(dict.fromkeys(m.category for m in r.mentions))
     if len(texts) == 1 and len(kinds) > 1 and not r.ids and (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(r.low)):
@@ -135,7 +138,7 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     earlier: Anchor | None = None
     calls: list[ToolCall] = []
     for text in texts:
-        reading = r if len(texts) == 1 else read(text, scene)
+        reading = r if texts == [r.text] else read(text, scene)  # a part kept alone is read alone
         part = _plan_part(reading, scene, memory, notes, earlier)
         if part is None:
             continue
@@ -165,7 +168,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
 
         raise PlanningError(f"there is no {asked_about.group(1)!r} in this world; things here are such as "
                             f"{', '.join(sorted({a.category for a in scene.assets})[:8])}")
-    if _names_nothing(r) and _ASKS_HOW_IT_IS.match(low) and (_SETTING.search(low) or environment(r, scene.environment)):
+    if _names_nothing(r) and ((_ASKS_HOW_IT_IS.match(low) and (_SETTING.search(low) or environment(r, scene.environment)))
+                              or _SETTING_ALONE.match(low)):
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "is it raining?", "what's the weather like"
     if r.mentions and {m.category for m in r.mentions} <= _SWITCHED and _ON_OFF.search(low):
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "street lamps - on or off right now?"
