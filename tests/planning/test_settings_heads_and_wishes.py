@@ -1,0 +1,128 @@
+"""Readings from the thirteenth practice round, worded this file's own way on the packaged campus
+world: questions that are only a setting's word, the weather asked for beside the weather
+complained of, wishes that things were gone, counts in hundreds, a bare name for the one thing
+of its kind, a compound noun's head, and the check's flags for each misreading a planner made."""
+
+from __future__ import annotations
+
+import pytest
+from drivetwin.tools.base import ToolCall
+from misreading import Fixed, add  # this folder is on sys.path (no __init__.py)
+from test_check import submit
+
+
+def test_a_question_of_bare_setting_words_describes_the_environment(session, campus):
+    report = session.submit("lighting + weather?")
+    assert report.ok, report.error
+    assert [c.tool for c in report.plan.calls] == ["describe_environment"]
+    assert session.scene.environment == campus.environment
+
+
+def test_setting_words_before_a_second_question_are_answered_with_it(session):
+    report = session.submit("weather, and is anybody near the fountain?")
+    assert report.ok, report.error
+    calls = report.plan.calls
+    assert [c.tool for c in calls] == ["describe_environment", "find_assets"]
+    assert calls[1].args["category"] == "pedestrian"
+
+
+def test_a_question_opened_without_its_apostrophe_changes_nothing(session, campus):
+    report = session.submit("hows the weather out there")
+    assert report.ok, report.error
+    assert [c.tool for c in report.plan.calls] == ["describe_environment"]
+    report = session.submit("wheres the nearest hydrant to the fountain")
+    assert report.ok, report.error
+    assert session.scene.assets == campus.assets
+
+
+@pytest.mark.parametrize(("prompt", "kind"), [("way too sunny for this test; could we have it overcast", "cloudy"),
+                                              ("it's foggy now, make it snow instead", "snow"),
+                                              ("the dataset wants clouds, but no rain", "cloudy")])
+def test_with_two_kinds_of_weather_said_the_one_asked_for_is_set(session, prompt, kind):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert session.scene.environment.weather.kind == kind
+
+
+def test_a_storm_word_is_heavy_and_dark_with_lamps_on_still_sets_the_night(session):
+    assert session.submit("we need a snowstorm, please").ok
+    assert session.scene.environment.weather.intensity >= 0.8
+    report = session.submit("we want it dark with all the street lamps on")
+    assert report.ok, report.error
+    assert {c.tool for c in report.plan.calls} == {"set_lighting", "set_time_of_day"}
+
+
+def test_the_check_refuses_a_weather_kind_said_but_not_set(campus, registry):
+    session, report = submit(campus, registry, Fixed(ToolCall(tool="set_weather", args={"kind": "clear"})),
+                             "switch it to fog for the sensor run")
+    assert not report.ok and session.scene.environment == campus.environment
+
+
+def test_the_check_refuses_a_question_about_the_weather_answered_with_a_search(campus, registry):
+    session, report = submit(campus, registry, Fixed(ToolCall(tool="find_assets", args={})), "weather and time?")
+    assert not report.ok and "weather" in (report.error or "") and session.scene.assets == campus.assets
+
+
+@pytest.mark.parametrize(("setup", "prompt", "category"), [
+    ("put three people by the fountain", "hmm, no people after all", "pedestrian"),
+    ("put two cones at the bus stop", "the cones look silly; I wish they weren't there", "traffic_cone")])
+def test_a_wish_that_things_were_gone_takes_them_away(session, campus, setup, prompt, category):
+    assert session.submit(setup).ok
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert session.scene.count(category) == campus.count(category)
+
+
+def test_hundreds_and_thousands_are_counts_the_world_refuses_past_its_limit(session, campus):
+    report = session.submit("put a thousand cones on Main Street")
+    assert not report.ok and session.scene.count("traffic_cone") == campus.count("traffic_cone")
+    assert "50" in (report.error or "")
+
+
+def test_a_bare_name_of_the_one_thing_of_its_kind_is_not_added_anew(campus, registry):
+    session, report = submit(campus, registry, Fixed(add("fire_hydrant")), "fire hydrant over by the library")
+    assert not report.ok and session.scene.count("fire_hydrant") == campus.count("fire_hydrant")
+
+
+def test_a_compound_nouns_head_is_the_thing_asked_for(campus, registry):
+    session, report = submit(campus, registry, Fixed(add("bus")), "put a bus kiosk near the gate")
+    assert not report.ok and "kiosk" in (report.error or "")
+    assert session.scene.count("bus") == campus.count("bus")
+
+
+def test_the_check_refuses_a_distance_measured_from_an_ego_never_named(campus, registry):
+    session, report = submit(campus, registry, Fixed(ToolCall(tool="measure_distance", args={"a": "fountain", "b": "ego"})),
+                             "how far is the stadium from the fountain")
+    assert not report.ok and "ego" in (report.error or "") and session.scene.assets == campus.assets
+
+
+def test_a_stop_sign_moved_is_no_stop_manoeuvre(session):
+    from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
+
+    assert not describes_behaviour_over_time("stop sign over to the far side of the street", session.scene)
+    assert describes_behaviour_over_time("the car ahead stops hard when the ego is 20 m behind it", session.scene)
+
+
+def test_a_walker_said_to_be_crossing_crosses(session):
+    report = session.submit("a kid crossing at the north crosswalk")
+    assert report.ok, report.error
+    added = session.scene.asset(session.memory.last_added()[0])
+    assert added is not None and added.behaviour.kind == "cross_road"
+
+
+def test_each_thing_may_face_one_of_the_ways_said(session):
+    report = session.submit("add a truck heading west on Main Street and a car heading east")
+    assert report.ok, report.error
+
+
+def test_a_polite_wish_for_a_brighter_picture_is_a_request(session, campus):
+    report = session.submit("The screen looks murky to me. Could the picture be a little brighter?")
+    assert report.ok, report.error
+    assert session.scene.environment.lighting.exposure > campus.environment.lighting.exposure
+
+
+def test_writing_down_which_lane_is_a_question(session, campus):
+    report = session.submit("for my notes I have to write down which lane the ego is in")
+    assert report.ok, report.error
+    assert [c.tool for c in report.plan.calls] == ["find_lanes"]
+    assert session.scene.assets == campus.assets
