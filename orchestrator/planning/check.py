@@ -59,6 +59,7 @@ from drivetwin.orchestrator.planning.coverage import (
     picked_but_other,
     picked_by_thing,
     place_dropped,
+    place_moved,
     unknown_places,
     unknown_things,
     unnamed_compass_places,
@@ -112,6 +113,10 @@ SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 MAX_READINGS = 3
 # A distance said ("20 m north of the library", "ten feet behind it"): only then may a thing the
 # plan puts by a named place stand further than PLACE_RADIUS_M from it.
+# The catalog's tags of what a layout may add unnamed: markers, blocks, signs, roadworks.
+_LAYOUT_KIT = {"maintenance", "block", "marker", "sign"}
+# Words asking for one more of a thing there: what answers them adds.
+_ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
 # A question about the scene's settings ("time + weather?", "what's the weather doing"): the
 # environment is what it must look up.
 _SETTING_ASKED = re.compile(r"\b(?:weather|what time|the time|time of day)\b")
@@ -214,6 +219,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.polarity == "remove" and not effect.removed and any(
             c.tool == "set_lighting" and c.args.get("street_lights") == "on" for c in effect.calls):
         out.append("you asked for less, but the plan switches the street lights on")  # "fewer lights over there"
+    if _ANOTHER_ONE.search(request.low) and not effect.added and _moved(effect) and not request.question:
+        out.append("you asked for another one, but the plan only moves " + _names(_moved(effect)))  # "a copy of that one by the gate"
     if request.polarity == "add" and effect.removed and (not effect.added or not REMOVE_WORDS.search(request.low)):
         out.append("you asked for more, but the plan removes " + _names(effect.removed))
     touched = [*effect.added, *effect.removed, *(a for a in effect.changed if a.id != "ego")]
@@ -315,6 +322,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     if request.place is None and request.lane is None and (strays := unpointed(request.masked, scope, scene)):
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
     out += unknown_places(request.masked, effect.calls, scene)
+    out += place_moved(request.low, scope, scene)
     out += unnamed_compass_places(request.low, scene)
     out += place_dropped(request.low, effect.calls)
     out += unknown_things(request.masked, effect.calls, scene)
@@ -397,8 +405,11 @@ def _category_descriptions() -> tuple[tuple[str, ...], Any]:
 
 
 def _companions(effect: Effect) -> set[str]:
-    # Arrangements add what a layout needs; the check only weighs what was asked for by name.
-    return {a.category for a in effect.added} if any(c.tool == "arrange_assets" for c in effect.calls) else set()
+    # Arrangements add what a layout needs (a work zone's cones, barriers, posts and signs); the
+    # check only weighs what was asked for by name. A bench in a line of cones is no such kit.
+    if not any(c.tool == "arrange_assets" for c in effect.calls):
+        return set()
+    return {a.category for a in effect.added if a.category in catalog() and set(catalog()[a.category].tags) & _LAYOUT_KIT}
 
 
 def _topics(request: Request, scene: Scene) -> list[str]:

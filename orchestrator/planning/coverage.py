@@ -35,6 +35,8 @@ from drivetwin.worlds.scene import AssetInstance, Scene
 
 # Words before a category that point at one already in the scene ("the SUV", "those cones").
 _DEFINITE = ("the", "that", "this", "those", "these", "our", "my", "all", "every", "each", "both")
+# What comes before a thing named bare as a clause's topic: nothing, a stop, a filler, a wish.
+_BARE_TOPIC = re.compile(r"(?:^|[,.;:!?]|\b(?:ok|okay|so|and|then|now|hmm|um|want|need))\s*$")
 # Words that ask for a new one even after a definite article ("the new bench", "another").
 _NEW = re.compile(
     r"\b(add|adds|added|adding|new|another|(?<!out )(?<!apart )more(?!\s+[a-z]+(?:al|ful|ive|ous|ic|ible|able|ly|er|y)\b)(?! apart| spread)"
@@ -244,10 +246,10 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     asks_to_add = ADD_WORDS.search(masked) is not None
     for m in named_in(masked):
         every = any(w in ("all", "every", "each", "both") for w in m.last_words(3))  # "line up all the cars": those there
-        # "stop sign to the other side of the road": a thing named bare, with no word for adding,
-        # of which the scene holds one, is that one
+        # "stop sign to the other side of the road", "I want stop sign near ...": a thing named
+        # bare as the clause's topic, with no word for adding, of which the scene holds one, is that one
         bare = (not m.plural and not asks_to_add and scene.count(m.category) == 1
-                and not any(w in _INDEFINITE or w in ph.NUMBER_WORDS or w.isdigit() for w in m.last_words(1)))
+                and _BARE_TOPIC.search(m.before) is not None)
         if (not (bare or any(w in _DEFINITE for w in m.last_words(2))) or not scene.count(m.category)
                 or (m.category in arranged and not every)):
             continue
@@ -745,6 +747,29 @@ def _amount_word(word: str) -> int | None:
     if word.isdigit():
         return int(word)
     return spelt_counts().get(word)
+
+
+# Verbs that take a thing somewhere or away: their object is what the plan must act on.
+_MOVING_VERB = r"\b(?:move|moving|shift|relocate|drag|slide|push|pull|remove|delete|get rid of|take away|knock down|demolish)\s+(?:the\s+|that\s+|our\s+)?"
+
+
+# What follows a place said as a verb's object (not "the lot A cars", "the bus stop sign").
+_PLACE_ENDS = (r"(?=\s*(?:$|[,.;!?]|(?:to|closer|further|farther|nearer|away|over|up|down|back|next|near|by|towards?|from|out|off"
+               r"|and|so|because|please|entirely|completely|altogether|\d)\b))")
+
+
+def place_moved(low: str, scope: Scope, scene: Scene) -> list[str]:
+    """A place of the world (a landmark, a road) said as the thing to move or take away ("move
+    the bus stop closer to the gate"): places stay where they are, so a plan that moves or removes
+    a thing instead (the stop sign) does something else."""
+    if not (scope.removed or scope.touched):
+        return []
+    places = {n for lm in scene.landmarks for n in lm.names()} | {lane.road for lane in scene.roads.lanes if lane.road}
+    for name in sorted(places, key=len, reverse=True):
+        said = ph.normalise(name).strip()
+        if re.search(_MOVING_VERB + re.escape(said) + _PLACE_ENDS, low):
+            return [f"{name} is a place of this world; it stays where it is, but things at it can be moved or removed"]
+    return []
 
 
 def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:

@@ -306,6 +306,11 @@ _IMPERATIVE = re.compile(r"^(?:(?:um+|uh+|erm|ok(?:ay)?|so|hey|right|now|then|an
                          r"|set|turn|make|change|bring|do (?:the same|that|this|it)(?: again)?)\b(?!-)")
 
 
+def commands(low: str) -> bool:
+    """Whether the (lower-case) clause opens with a command ("umm remove the bus", "do the same")."""
+    return _IMPERATIVE.match(low.strip()) is not None
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
     polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip()))
@@ -314,5 +319,5 @@ def asks(low: str) -> bool:
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))
 
 
-__all__ = ["ADD_WORDS", "FEWER_WORDS", "KEEP_SOME", "REMOVE_WORDS", "asks", "excepted", "history_request", "without_contrast", "without_reason",
+__all__ = ["ADD_WORDS", "FEWER_WORDS", "KEEP_SOME", "REMOVE_WORDS", "asks", "commands", "excepted", "history_request", "without_contrast", "without_reason",
            "wrapped_request"]

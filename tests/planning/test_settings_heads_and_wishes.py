@@ -126,3 +126,47 @@ def test_writing_down_which_lane_is_a_question(session, campus):
     assert report.ok, report.error
     assert [c.tool for c in report.plan.calls] == ["find_lanes"]
     assert session.scene.assets == campus.assets
+
+
+def test_the_check_refuses_moving_a_place_by_moving_a_thing_at_it(campus, registry):
+    sign = ToolCall(tool="place_asset", args={"asset": "stop_sign_1", "location": {"relation": "at", "target": "main gate"}})
+    session, report = submit(campus, registry, Fixed(sign), "shift the bus stop over towards the main gate")
+    assert not report.ok and "bus stop" in (report.error or "")
+    assert session.scene.asset("stop_sign_1") == campus.asset("stop_sign_1")
+
+
+def test_an_arranged_kind_the_request_never_names_is_no_companion(campus, registry):
+    line = ToolCall(tool="arrange_assets", args={"categories": ["traffic_cone", "bench"], "shape": "line",
+                                                 "location": {"relation": "at", "target": "parking lot B"}})
+    session, report = submit(campus, registry, Fixed(line), "a row of cones across lot B")
+    assert not report.ok and session.scene.count("bench") == campus.count("bench")
+
+
+def test_a_story_before_a_verifying_question_is_what_it_looks_up(session, campus):
+    report = session.submit("Our tester said there's a hydrant by the crossroads. I'd like to confirm it's there.")
+    assert report.ok, report.error
+    assert [(c.tool, c.args.get("category")) for c in report.plan.calls] == [("find_assets", "fire_hydrant")]
+    assert session.scene.assets == campus.assets
+
+
+def test_a_thing_left_somewhere_stays_there(session):
+    report = session.submit("please leave a van over in lot B")
+    assert report.ok, report.error
+    added = session.scene.asset(session.memory.last_added()[0])
+    assert added is not None and added.behaviour.kind == "parked"
+
+
+def test_another_just_like_it_has_its_colour(session):
+    assert session.submit("add a green bus at the east gate").ok
+    report = session.submit("now put another bus just like that one behind it")
+    assert report.ok, report.error
+    first, second = (session.scene.asset(i) for i in ("bus_1", "bus_2"))
+    assert second is not None and first is not None and first.appearance.rgba is not None
+    assert second.appearance.rgba is not None  # the same colour, to the 8 bits a colour is written in
+    assert all(abs(a - b) <= 1 / 255 for a, b in zip(second.appearance.rgba, first.appearance.rgba, strict=True))
+
+
+def test_the_check_refuses_a_copy_answered_with_a_move(campus, registry):
+    move = ToolCall(tool="place_asset", args={"asset": "bench_1", "location": {"relation": "at", "target": "fountain"}})
+    session, report = submit(campus, registry, Fixed(move), "make a duplicate of the bench over by the fountain")
+    assert not report.ok and session.scene.asset("bench_1") == campus.asset("bench_1")

@@ -23,6 +23,7 @@ from drivetwin.orchestrator.planning.intent import (
     HABITUAL,
     REMOVE_WORDS,
     asks,
+    commands,
     without_reason,
     wrapped_request,
 )
@@ -429,6 +430,11 @@ class RulePlanner:
             )
         if not calls:
             calls = described
+        calls = _alike(calls, text.lower(), scene, context.memory)  # "another exactly like it"
+        if calls and asks(text.lower()) and not any(commands(clause.lower()) for clause, _, _ in clauses):
+            # "a driver mentioned a stop sign by the crossing; I want to confirm it's there": what the
+            # story names is what the question is about, never something to add
+            calls = _as_searches(calls)
         if not calls and skipped:
             strange = [w for clause in skipped for w in _unknown_words(clause, scene)]
             first = f"there is no {strange[0]!r} in this world that I know of; " if strange else ""
@@ -463,6 +469,50 @@ class RulePlanner:
             prompt_version=PROMPT_VERSION,
             trace=[step],
         )
+
+
+# A new thing said to be like one there: "another one exactly like it", "a copy of that one".
+_LIKE_IT = re.compile(r"\b(?:(?:exactly|just) like|identical to|(?:the )?same as|a copy of|matching) "
+                      r"(?:it|that|this|that one|this one|the (?:other|last|first) one)\b")
+
+
+def _alike(calls: list[ToolCall], low: str, scene: Scene, memory: Memory) -> list[ToolCall]:
+    """Additions said to be like a thing there, given its colour: the thing their place names
+    when it is of their kind, else the last one of their kind added."""
+    if not _LIKE_IT.search(low):
+        return calls
+    out = []
+    for call in calls:
+        category = call.args.get("category")
+        where = call.args.get("location") or {}
+        target = scene.asset(str(where.get("target"))) if isinstance(where, dict) else None
+        if target is None or target.category != category:
+            target = next((a for i in reversed(memory.last_added(str(category))) if (a := scene.asset(i)) is not None), None)
+        rgba = target.appearance.rgba if target is not None else None
+        if call.tool == "add_asset" and rgba is not None and "colour" not in call.args:
+            hexed = "#" + "".join(f"{round(float(c) * 255):02x}" for c in rgba[:3])
+            call = call.model_copy(update={"args": {**call.args, "colour": hexed}})
+        out.append(call)
+    return out
+
+
+def _as_searches(calls: list[ToolCall]) -> list[ToolCall]:
+    """A question's calls with each addition a story named made a search for its kind at its place
+    (and a search for anything at all dropped beside a search for a kind)."""
+    out: list[ToolCall] = []
+    for call in calls:
+        if call.tool == "add_asset" and call.args.get("category"):
+            where = call.args.get("location") or {}
+            target = where.get("target") if isinstance(where, dict) else None
+            args: dict[str, Any] = {"category": call.args["category"]}
+            if target:
+                args |= {"near": target, "within": DESCRIBED_NEAR_M}
+            call = ToolCall(tool="find_assets", args=args)
+        if call not in out:
+            out.append(call)
+    if any(c.tool == "find_assets" and c.args.get("category") for c in out):
+        out = [c for c in out if not (c.tool == "find_assets" and not c.args.get("category"))]
+    return out
 
 
 # How far from the place a statement names the thing it describes may stand ("a hydrant by the crossroads").
