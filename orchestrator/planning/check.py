@@ -203,8 +203,9 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.question and _SETTING_ASKED.search(request.low) and not any(
             c.tool in ("describe_environment", "set_weather", "set_time_of_day") for c in effect.calls):
         out.append("you asked about the weather or the time, but the plan looks up something else")
-    if any(c.tool == "measure_distance" and "ego" in (c.args.get("a"), c.args.get("b")) for c in effect.calls) \
-            and not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked):
+    from_ego = any(c.tool == "measure_distance" and "ego" in (c.args.get("a"), c.args.get("b")) for c in effect.calls)
+    two_ends = re.search(r"\b(?:from|between|and)\b", request.masked)  # "how far is X from Y": neither is the asker
+    if from_ego and two_ends and not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked):
         out.append("the plan measures from the ego, which your words do not name")  # "how far is the hosptial from the gate"
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
     # A request that only takes away never adds, and one that only adds never removes; with

@@ -12,7 +12,7 @@ from test_check import submit
 
 
 def test_a_question_of_bare_setting_words_describes_the_environment(session, campus):
-    report = session.submit("lighting + weather?")
+    report = session.submit("weather + lighting?")
     assert report.ok, report.error
     assert [c.tool for c in report.plan.calls] == ["describe_environment"]
     assert session.scene.environment == campus.environment
@@ -170,3 +170,19 @@ def test_the_check_refuses_a_copy_answered_with_a_move(campus, registry):
     move = ToolCall(tool="place_asset", args={"asset": "bench_1", "location": {"relation": "at", "target": "fountain"}})
     session, report = submit(campus, registry, Fixed(move), "make a duplicate of the bench over by the fountain")
     assert not report.ok and session.scene.asset("bench_1") == campus.asset("bench_1")
+
+
+@pytest.mark.parametrize(("prompt", "a", "b"), [("what way is the main gate from the fountain", "fountain", "main gate"),
+                                                ("in which direction should I go for the east gate", "ego", "east gate")])
+def test_which_way_measures_from_the_start_towards_the_end(session, prompt, a, b):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    call = report.plan.calls[0]
+    assert call.tool == "measure_distance" and (call.args["a"], call.args["b"]) == (a, b)
+    assert " to the " in (report.answer or "")  # the answer says the way
+
+
+def test_a_distance_from_the_asker_to_one_place_is_still_measured(session):
+    report = session.submit("how far off is the fountain?")
+    assert report.ok, report.error
+    assert report.plan.calls[0].tool == "measure_distance"

@@ -498,7 +498,9 @@ def _alike(calls: list[ToolCall], low: str, scene: Scene, memory: Memory) -> lis
 
 def _as_searches(calls: list[ToolCall]) -> list[ToolCall]:
     """A question's calls with each addition a story named made a search for its kind at its place
-    (and a search for anything at all dropped beside a search for a kind)."""
+    (and a search for anything there dropped beside a search for a kind there)."""
+    if not any(c.tool == "add_asset" and c.args.get("category") for c in calls):
+        return calls
     out: list[ToolCall] = []
     for call in calls:
         if call.tool == "add_asset" and call.args.get("category"):
@@ -510,9 +512,10 @@ def _as_searches(calls: list[ToolCall]) -> list[ToolCall]:
             call = ToolCall(tool="find_assets", args=args)
         if call not in out:
             out.append(call)
-    if any(c.tool == "find_assets" and c.args.get("category") for c in out):
-        out = [c for c in out if not (c.tool == "find_assets" and not c.args.get("category"))]
-    return out
+    kinds = [c.args for c in out if c.tool == "find_assets" and c.args.get("category")]
+    # "anything near the crossing" beside "a stop sign near the crossing": the search for the kind
+    return [c for c in out if not (c.tool == "find_assets" and not c.args.get("category")
+                                   and any(c.args.items() <= k.items() for k in kinds))]
 
 
 # How far from the place a statement names the thing it describes may stand ("a hydrant by the crossroads").

@@ -52,6 +52,7 @@ _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
 # "how far apart are X and Y"): one thing named is measured from the asker. A superlative asks
 # which thing is nearest instead, and a range ("within 20 m") asks what is around.
 _DISTANCE = re.compile(r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|"
+                       r"which way|what way|(?:in )?(?:which|what) direction|"  # the distance says the way too"
                        r"stone'?s throw (?:from|to|of)|(?:a |long |short )?walk (?:from|to)|how many (?:metres|"
                        r"meters|feet|yards) (?:from|to|between|apart))\b|\bfar\s*\??\s*$")
 _SUPERLATIVE = re.compile(r"\b(?:nearest|closest|furthest|farthest|most near|most close|nearer|closer)\b")
@@ -116,7 +117,8 @@ _SWITCHED = frozenset({"street_light"})
 _ON_OFF = re.compile(r"\b(?:on or off|off or on|switched on|turned on|lit|on|off)\s*[?.!]*\s*(?:right now|now|at the moment)?\s*[?.!]*\s*$"
                      r"|\b(?:are|is) (?:the |all the |any of the )?(?:street ?)?(?:lights?|lamps?) (?:on|off|lit)\b")
 # A clause of a question that is only a setting's word ("time + weather?", "the weather?").
-_SETTING_ALONE = re.compile(r"\W*(?:and\s+|the\s+)*(?:weather|time|lighting|lights)(?:\W+(?:and\W+)?(?:the\s+)?(?:weather|time|lighting|lights))*\W*$")
+# ("lights?" alone asks for the street lights, things of the scene.)
+_SETTING_ALONE = re.compile(r"\W*(?:and\s+|the\s+)*(?:weather|time)(?:\W+(?:and\W+)?(?:the\s+)?(?:weather|time|lighting))*\W*$")
 _SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|bright|light)|how(?:'s| is) the light"
                       r"|lights? (?:on|off)|lit)\b")
 
@@ -177,6 +179,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
     back = _back_reference(r, scene, memory, notes, earlier)
     if _names_nothing(r) and _OF_EACH.search(r.masked) and notes.subject:
         return None  # "bins? benches? how many of each": the earlier clauses already ask it
+    if _WAY_ASKED.search(low) and re.search(r"\b(?:from|to)\b", low) and (way := _distance(r, scene, back)) is not None:
+        return way  # "which way is the fountain from the bus stop": not which way a thing faces
     if (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low)) and not r.mentions and not r.ids and (
             r.lane or _asks_for_lanes(r)):  # "how wide is the lane on Main Street": the lanes' facts
         return Part(_lanes(r, scene, back), None)
@@ -370,11 +374,18 @@ def _distance(r: Reading, scene: Scene, back: Anchor | None) -> Part | None:
             ends.append(found)
     if not ends:
         return None
-    if len(ends) == 1:
+    asker = len(ends) == 1
+    if asker:
         if ends[0].name == EGO_ID:
             return None
         ends.append(Anchor("asset", EGO_ID))
+    low = r.text.lower()
+    if _WAY_ASKED.search(low) and (asker or (re.search(r"\bfrom\b", low) and not re.search(r"\bfrom\b.*\bto\b", low))):
+        ends.reverse()  # "which way is the fountain from the bus stop": from the stop (or the asker) to the fountain
     return Part(ToolCall(tool="measure_distance", args={"a": ends[0].name, "b": ends[1].name}), ends[0])
+
+
+_WAY_ASKED = re.compile(r"\b(?:which way|what way|(?:which|what) direction)\b")
 
 
 def _around(r: Reading, scene: Scene, anchor: Anchor) -> Part:
