@@ -186,3 +186,10 @@ def test_a_distance_from_the_asker_to_one_place_is_still_measured(session):
     report = session.submit("how far off is the fountain?")
     assert report.ok, report.error
     assert report.plan.calls[0].tool == "measure_distance"
+
+
+def test_a_place_word_offered_as_readings_is_not_asked_about_again_without_end(session, campus):
+    # it asked "which gate?" of each reading it tried, each of which asked again: a RecursionError
+    report = session.submit("Line five cones across the westbound lane near the east gate, then a roadworks sign by them.")
+    if not report.ok:
+        assert session.scene.assets == campus.assets

@@ -371,7 +371,7 @@ class RulePlanner:
             for name in places[:MAX_READINGS]:
                 text = prompt[: said.start("said")] + f"the {name}" + prompt[said.end("said") :]
                 try:
-                    reading = self.plan(text, context)
+                    reading = self._plan(text, context, which_place=False)
                 except PlanningError:
                     continue
                 if reading.calls and _UNRECOGNISED not in reading.trace[0].output:
@@ -399,6 +399,11 @@ class RulePlanner:
                     prompt_version=PROMPT_VERSION, trace=[step])
 
     def plan(self, prompt: str, context: PlanContext) -> Plan:
+        return self._plan(prompt, context)
+
+    def _plan(self, prompt: str, context: PlanContext, which_place: bool = True) -> Plan:
+        """The plan; `which_place`: whether a place word several places share may be asked about
+        (not while reading one of the places offered, which would ask again without end)."""
         each = self._each_place(prompt, context)
         if each is not None:
             return each
@@ -446,7 +451,7 @@ class RulePlanner:
         for clause in skipped:
             notes.guess(f"ignored {clause!r}")
         if _UNRECOGNISED in notes.guesses:
-            question = self._which_place(prompt, context)
+            question = self._which_place(prompt, context) if which_place else None
             if question is not None:
                 return question  # "put a cone by the gate": the main gate or the east gate?
             # "by the red building": said where, and no place of the world fits; never put it just anywhere
