@@ -193,3 +193,11 @@ def test_a_place_word_offered_as_readings_is_not_asked_about_again_without_end(s
     report = session.submit("Line five cones across the westbound lane near the east gate, then a roadworks sign by them.")
     if not report.ok:
         assert session.scene.assets == campus.assets
+
+
+def test_things_lining_one_side_of_a_road_are_those_beside_its_lane_on_that_side(session, campus):
+    report = session.submit("count the street lamps along the southern side of Main Street")
+    assert report.ok, report.error
+    assert report.plan.calls[0].args.get("lane") == "main_eastbound"
+    south = [a for a in campus.assets if a.category == "street_light" and -10 < a.pose.y < 0 and abs(a.pose.x) <= 110]
+    assert report.answer is not None and report.answer.startswith(f"{len(south)} street_light")

@@ -551,6 +551,26 @@ def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool
     return f"{said.group(1)} side of {name}", _beyond(points, said.group(1))
 
 
+def side_lane(low: str, scene: Scene) -> str | None:
+    """The lane of a road on the side the words name ("the north side of Main Street": the
+    westbound lane, the one furthest north), whose edge what stands on that side lines; None when
+    they name no side of a road of two or more lanes."""
+    said = _SIDE_OF.search(low)
+    if said is None:
+        return None
+    rest = _ROAD_KIND.sub(lambda m: _ROAD_KINDS[m.group(1)], said.group(2) + " ")
+    lanes = [lane for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())]
+    if len(lanes) < 2:
+        return None
+    dx, dy = md.COMPASS_VECTORS[said.group(1)]
+
+    def reach(lane: Any) -> float:
+        return sum(x * dx + y * dy for x, y in lane.centreline) / len(lane.centreline)
+
+    ranked = sorted(lanes, key=reach, reverse=True)
+    return str(ranked[0].id) if reach(ranked[0]) > reach(ranked[1]) + 0.5 else None
+
+
 def _across(scene: Scene, way: str) -> list[tuple[float, float]]:
     """Lane centreline points where the road runs across compass direction `way` (the north side
     is judged from roads that run east-west, not from a crossing street)."""
@@ -585,4 +605,5 @@ def said_a_place(r: Reading) -> bool:
     return bool(re.search(r"\b(near|next to|beside|by|in front of|behind|outside|close to|over by)\b", r.masked))
 
 
-__all__ = ["BETWEEN", "BY_IT", "EACH_PLACE", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_of", "said_a_place", "says_other_place"]
+__all__ = [
+    "BETWEEN", "BY_IT", "EACH_PLACE", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_of", "said_a_place", "says_other_place", "side_lane"]

@@ -22,12 +22,13 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.environment import environment
-from drivetwin.orchestrator.planning.rules.places import Notes
+from drivetwin.orchestrator.planning.rules.places import Notes, side_lane
 from drivetwin.orchestrator.planning.rules.reading import Reading, read
 from drivetwin.orchestrator.planning.rules.spelling import is_known, vocabulary
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.search import FindAssets, FindAssetsArgs
+from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import EGO_ID, Scene
 
 # Radius of a search "around" a place when the question gives none, metres: the campus's things
@@ -144,11 +145,23 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         part = _plan_part(reading, scene, memory, notes, earlier)
         if part is None:
             continue
-        calls.append(_of_group(part.call, reading))
+        calls.append(_on_side(_of_group(part.call, reading), reading, scene))
         earlier = part.referent or earlier
         if part.found:
             notes.subject = list(part.found)  # what a later clause's "them" or "each" means
     return calls
+
+
+def _on_side(call: ToolCall, r: Reading, scene: Scene) -> ToolCall:
+    """A search for things that line roads on the side of a road the words name ("the street lights
+    on the north side of Main Street"): those beside that side's lane."""
+    category = str(call.args.get("category")) if call.tool == "find_assets" else ""
+    if category not in catalog() or catalog()[category].placement != "sidewalk":
+        return call  # a car "on the east side" may stand anywhere east, not only by the kerb
+    lane = side_lane(r.low, scene)
+    if lane is None or any(k in call.args for k in ("lane", "near", "nearest_to")):
+        return call
+    return call.model_copy(update={"args": {**call.args, "lane": lane}})
 
 
 def _of_group(call: ToolCall, r: Reading) -> ToolCall:
