@@ -1,4 +1,4 @@
-"""The later practice suites (practice2 to practice13): valid, big enough in every cell, written from
+"""The later practice suites (practice2 to practice14): valid, big enough in every cell, written from
 their sources, and passable. Each was written to its own brief's minimums."""
 
 from __future__ import annotations
@@ -23,6 +23,7 @@ from drivetwin.evals import (
     practice11_source,
     practice12_source,
     practice13_source,
+    practice14_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -65,6 +66,7 @@ BRIEFS: dict[str, Brief] = {
     # Everyday wording by ordinary users; its grades are balanced on purpose (every cell 8 or 9).
     "practice12": Brief(250, 8, 8, practice12_source, multi_turn=30, planned=12, compound=15),
     "practice13": Brief(250, 8, 8, practice13_source, multi_turn=30, planned=12, compound=15),
+    "practice14": Brief(250, 8, 8, practice14_source, multi_turn=30, planned=12, compound=15),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
