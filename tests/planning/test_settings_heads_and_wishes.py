@@ -201,3 +201,10 @@ def test_things_lining_one_side_of_a_road_are_those_beside_its_lane_on_that_side
     assert report.plan.calls[0].args.get("lane") == "main_eastbound"
     south = [a for a in campus.assets if a.category == "street_light" and -10 < a.pose.y < 0 and abs(a.pose.x) <= 110]
     assert report.answer is not None and report.answer.startswith(f"{len(south)} street_light")
+
+
+def test_a_count_asked_with_a_describing_word_and_the_weather_beside_it_answers_both(session, campus):
+    report = session.submit("Give me a quick tally of the benches, and the weather as well.")
+    assert report.ok, report.error
+    assert [c.tool for c in report.plan.calls] == ["find_assets", "describe_environment"]
+    assert session.scene.assets == campus.assets

@@ -575,7 +575,7 @@ def _changes_them(r: Reading) -> bool:
 
 
 # What "give me ..." asks for when it asks for information.
-_INFO_NOUNS = "list|number|count|names?|positions?|locations?|coordinates|overview|summary|rundown|info|information|details|ids?"
+_INFO_NOUNS = "list|number|count|tally|inventory|names?|positions?|locations?|coordinates|overview|summary|rundown|info|information|details|ids?"
 
 
 def _is_question(r: Reading, asked: bool) -> bool:
@@ -585,7 +585,7 @@ def _is_question(r: Reading, asked: bool) -> bool:
     command = re.sub(r"^(?:(?:please|pls|kindly|can|could|would|will|maybe|perhaps)\s+(?:you\s+)?(?:please\s+)?)+", "", words)
     if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command) or wrapped_request(words):
         return False
-    if re.match(rf"give (?:me|us)\b(?!\s+(?:a |an |the )?(?:{_INFO_NOUNS})\b)", command):
+    if re.match(rf"give (?:me|us)\b(?!\s+(?:a |an |the )?(?:[a-z]+ )?(?:{_INFO_NOUNS})\b)", command):  # "a rough count"
         return False  # "give me some rain" asks for rain; "give me a list of ..." for information
     within = re.search(r"(\s,\s*(where|which|what)|how many|how much)\b", r.low)
     # "I need the number of trees", "tell me which cars ...": the check's reading of a question

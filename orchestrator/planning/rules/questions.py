@@ -149,6 +149,8 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         earlier = part.referent or earlier
         if part.found:
             notes.subject = list(part.found)  # what a later clause's "them" or "each" means
+    if calls and _SETTING.search(r.low) and not any(c.tool == "describe_environment" for c in calls):
+        calls.append(ToolCall(tool="describe_environment", args={}))  # "a count of everything, and the weather too"
     return calls
 
 
