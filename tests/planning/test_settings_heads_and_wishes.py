@@ -208,3 +208,13 @@ def test_a_count_asked_with_a_describing_word_and_the_weather_beside_it_answers_
     assert report.ok, report.error
     assert [c.tool for c in report.plan.calls] == ["find_assets", "describe_environment"]
     assert session.scene.assets == campus.assets
+
+
+def test_taking_away_things_a_place_has_none_of_is_refused_not_read_as_adding(campus, registry):
+    from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+    from drivetwin.orchestrator.session import Session
+
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("could we lose any benches out by lot B")
+    assert not report.ok and session.scene.count("bench") == campus.count("bench")
+    assert report.plan is None or not any(c.tool == "add_asset" for c in report.plan.calls)

@@ -328,6 +328,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     if (grouped or _scoped_by_place(r, mention, anywhere=True)) and (count is None or _kept(r) is not None) and not fewer:
         # "the vehicles in lot B": every one there, of every category the words cover ("..., just leave one": all but one)
         ids = _but_kept(r, referenced(r, scene, memory, notes))
+        if not ids and r.landmark and not grouped:  # "lose the trees by lot A" with none there: never an addition
+            raise ph_error(f"there is no {name.replace('_', ' ')} at {r.landmark} to take away")
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
     road = road_said(r.low, scene)
     if road is not None and not r.landmark:  # "no street lights on Campus Drive": those by it, or none
@@ -338,7 +340,9 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     side = side_of(r.low, scene)
     if side is not None:  # "the street lights on the north side of Main Street": those there
         ids = [a.id for a in scene.assets if a.category == name and side[1](a)]
-        return [ToolCall(tool="remove_assets", args={"assets": ids[:count] if count else ids})] if ids else None
+        if not ids:
+            raise ph_error(f"there is no {name.replace('_', ' ')} on the {side[0]} to take away")
+        return [ToolCall(tool="remove_assets", args={"assets": ids[:count] if count else ids})]
     outermost = None if mention.plural else _outermost(r, scene, mention, [a.id for a in scene.assets if a.category == name])
     if outermost is not None:
         return [ToolCall(tool="remove_assets", args={"assets": [outermost]})]
