@@ -135,6 +135,8 @@ def group_left_behind(low: str, removed: Iterable[AssetInstance], candidates: It
         return []
     out = []
     for tag, members in md.groups_said(low).items():
+        if re.search(rf"\b(?:those|these)\s+(?:\w+\s+)?{re.escape(tag)}s\b", low):
+            continue  # "so those signs shouldn't be there": the ones just talked of, not every sign
         ids = {a.id for a in gone}
         left = [a.id for a in candidates if a.category in members and a.id not in ids and a.id != "ego"]
         if left and any(a.category in members for a in gone):

@@ -815,11 +815,17 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
 _CENTRE_SAID = re.compile(r"\b(?:cent(?:re|er)|middle|origin|0\s*,\s*0)\b")
 
 
+# Where a layout is said to go in words the place readers may not know ("a line of barriers across
+# the lot be entrance"): not the scene's centre, which a plan falls back to.
+_LAID_SOMEWHERE = re.compile(r"\b(?:across|along|in|into|on|onto|over)\s+the\s+(?!(?:scene|world|map|middle|centre|center|"
+                             r"road|roads|street|way|same|lane)\b)([a-z][a-z ]{1,30}?)\s*(?:[,.;!?]|$|\b(?:and|please|with|so|for|now)\b)")
+
+
 def place_dropped(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     """A place said for what the plan puts down ("a bus at teh bus stp", "cones around the helipad")
     that the plan puts nowhere in particular (no location, or the scene's centre it never said)."""
     placing = [c for c in calls if c.tool in ("add_asset", "arrange_assets", "place_asset")]
-    said = PLACE_SAID.search(low) or BY_IT.search(low)  # "... ahead of it": where the thing named before is
+    said = PLACE_SAID.search(low) or BY_IT.search(low) or _LAID_SOMEWHERE.search(low)  # "... ahead of it": where the thing named before is
     if not placing or said is None or _CENTRE_SAID.search(low):
         return []
     where = [c.args.get("location") for c in placing]

@@ -47,9 +47,12 @@ HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|p
 # on it, not a thing asked for.
 FORBIDDEN = re.compile(r"\s+(?:mustn'?t|must not|shouldn'?t|should not|can'?t|cannot|won'?t|may not)\b")
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
-FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
+FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
 # How many of them to keep: "keep just two", "leave one of them" (the amount is group 1).
-KEEP_SOME = re.compile(r"\b(?:keep|leave)\s+(?:just |only |me )?(?:the )?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
+# "one is plenty", "two of them would be enough": as many kept as that.
+KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)"
+                       r"|(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?: of (?:them|those|these))? (?:is|are|'s|would be|will be|will do)"
+                       r" (?:plenty|enough|all (?:we|i) need)\b))(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
 _QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question),?\s+)?(which|what|in which|in what|where|how|is there|are there|is the|are the|does|do any|who|whats|wheres|hows|whos"
@@ -58,7 +61,7 @@ _QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
-_INFO = re.compile(r"\b(tell me|show me|let me know|tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|"
+_INFO = re.compile(r"(?<!s )\b(tell me|show me|let me know|tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|"
                    r"(?:inventory|rundown|overview|summary|tally) of|how many|how far|how much|number of|count of|list of|"
                    r"distance (?:between|from)|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
@@ -78,10 +81,12 @@ _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s
 # cars?", "could the bus go ..."): a command even when it ends with a question mark.
 _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^\s*please\b(?!\s*,?\s*(?:where|what|which|how|who|is there|are there)\b)"
                      # "maybe drop a car by the library?": a suggestion, hedged
+                     # "could there be a couple of people at the stop?": a wish for what should be there
+                     r"|(?:^|[.!;]\s*)(?:can|could) there be\b"
                      r"|^(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:add|put|drop|place|move|make|set|"
                      r"remove|take|get|give|turn|paint|park|bring|have|let'?s)\b"
                      # "could the second car go in lot A?": a wish for where a thing should be
-                     r"|(?:^|[.!;]\s*)(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive|face|turn|get)\b"
+                     r"|(?:^|[.!;]\s*)(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come)\b"
                      # "the car you just put there, could it go forward?": the same wish for a thing named first
                      r"|(?:^|[,.;:!-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift|look|be|get|face)\b")
 
@@ -306,6 +311,28 @@ _IMPERATIVE = re.compile(r"^(?:(?:um+|uh+|erm|ok(?:ay)?|so|hey|right|now|then|an
                          r"|set|turn|make|change|bring|do (?:the same|that|this|it)(?: again)?)\b(?!-)")
 
 
+# A speaker taking back a whole request in the same breath and saying another ("put the bench by
+# the fountain... no wait, scrap that, just turn it round"), and a number corrected with a bare "no"
+# ("two, no, three cones"). A word taken back ("3 m north, no wait, south") is without_slip's.
+_RETRACTED = re.compile(r"(?:\.{2,}|\u2026|[,;:.!?])\s*(?:(?:no|oh|um+|uh+|hmm+|sorry)[,.!]*\s+)*(?:(?:wait|hang on|hold on)[,.!]*\s+)?"
+                        r"(?:scrap|scratch|forget|cancel|ignore|strike)\s+(?:that|this|it)\b[,.;:!?\s]*")
+_SAID_NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)"
+_NUMBER_CORRECTED = re.compile(rf"\b{_SAID_NUMBER},?\s+no,?\s+(?={_SAID_NUMBER}\b)", re.IGNORECASE)
+# Fewer words than this after "scrap that" correct a word, not the request.
+_REQUEST_WORDS = 3
+
+
+def taken_back(text: str) -> tuple[str, str]:
+    """The request as meant and the request the speaker took back in it: what follows the last
+    "scrap that" when it is a request of its own, and the second of a number corrected with "no";
+    what was taken back is "" when nothing was."""
+    text = _NUMBER_CORRECTED.sub("", text)
+    last = next(reversed(list(_RETRACTED.finditer(text))), None)
+    if last is None or last.start() == 0 or len(re.findall(r"[a-z]+", text[last.end() :], re.IGNORECASE)) < _REQUEST_WORDS:
+        return text, ""
+    return text[last.end() :], text[: last.start()]
+
+
 def commands(low: str) -> bool:
     """Whether the (lower-case) clause opens with a command ("umm remove the bus", "do the same")."""
     return _IMPERATIVE.match(low.strip()) is not None
@@ -319,5 +346,17 @@ def asks(low: str) -> bool:
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))
 
 
-__all__ = ["ADD_WORDS", "FEWER_WORDS", "KEEP_SOME", "REMOVE_WORDS", "asks", "commands", "excepted", "history_request", "without_contrast", "without_reason",
-           "wrapped_request"]
+__all__ = [
+    "ADD_WORDS",
+    "FEWER_WORDS",
+    "KEEP_SOME",
+    "REMOVE_WORDS",
+    "asks",
+    "commands",
+    "excepted",
+    "history_request",
+    "taken_back",
+    "without_contrast",
+    "without_reason",
+    "wrapped_request",
+]

@@ -13,7 +13,7 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks, excepted, without_reason
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks, excepted, taken_back, without_reason
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -70,7 +70,7 @@ class Request:
 
 def read_request(prompt: str, scene: Scene) -> Request:
     """The request's signals: polarity, categories, numbers, place, lane, state and mood."""
-    repaired = repair(prompt, scene).text
+    repaired = taken_back(repair(prompt, scene).text)[0]  # "..., no wait, scrap that, ...": what follows
     given = condition(repaired, scene)  # "if there's a bus, paint it yellow": the bus there, or a question
     repaired = given.request if given is not None and given.met else repaired
     low = ph.normalise(without_reason(repaired)).strip()

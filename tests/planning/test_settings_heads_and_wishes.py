@@ -218,3 +218,64 @@ def test_taking_away_things_a_place_has_none_of_is_refused_not_read_as_adding(ca
     report = session.submit("could we lose any benches out by lot B")
     assert not report.ok and session.scene.count("bench") == campus.count("bench")
     assert report.plan is None or not any(c.tool == "add_asset" for c in report.plan.calls)
+
+
+def test_what_the_speaker_takes_back_in_the_same_breath_is_not_done(session, campus):
+    report = session.submit("move the bin to the fountain... no, hang on, forget that, just spin it round where it is")
+    assert report.ok, report.error
+    assert [c.tool for c in report.plan.calls] == ["move_asset"]
+    bin_now, bin_before = session.scene.asset("trash_bin_1"), campus.asset("trash_bin_1")
+    assert (bin_now.pose.x, bin_now.pose.y) == (bin_before.pose.x, bin_before.pose.y)
+    report = session.submit("put four, no, two bollards at the main gate")
+    assert report.ok, report.error
+    assert session.scene.count("bollard") == campus.count("bollard") + 2
+
+
+def test_the_check_refuses_a_layout_dropped_at_the_centre_when_a_place_was_said(campus, registry):
+    line = ToolCall(tool="arrange_assets", args={"categories": ["road_barrier"], "shape": "line",
+                                                 "location": {"relation": "scene_centre"}})
+    session, report = submit(campus, registry, Fixed(line), "a line of barriers across the lot bee driveway")
+    assert not report.ok and session.scene.count("road_barrier") == campus.count("road_barrier")
+
+
+def test_what_others_tell_me_is_a_story_not_a_question(session):
+    assert session.submit("put three cones by the library entrance").ok
+    report = session.submit("the gardeners tell me they finished, so those cones shouldn't be there any more")
+    assert report.ok, report.error
+    assert session.scene.count("traffic_cone") == 0
+
+
+def test_the_exposure_asked_to_come_down_goes_down(session, campus):
+    report = session.submit("the frames look washed out; could the exposure come down a little?")
+    assert report.ok, report.error
+    assert session.scene.environment.lighting.exposure < campus.environment.lighting.exposure
+
+
+def test_could_there_be_asks_for_things_and_the_stop_is_the_one_place_called_that(session, campus):
+    report = session.submit("could there be two people waiting at the stop?")
+    assert report.ok, report.error
+    assert session.scene.count("pedestrian") == campus.count("pedestrian") + 2
+    assert report.plan.calls[0].args["location"]["target"] == "bus stop"
+
+
+def test_a_thing_going_round_in_circles_asked_to_go_faster_keeps_circling(session):
+    assert session.submit("have a robot drive in a loop around lot B").ok
+    report = session.submit("could it go a little quicker?")
+    assert report.ok, report.error
+    robot = session.scene.asset("ackermann_robot_1")
+    assert robot is not None and robot.behaviour.kind == "circle"
+
+
+def test_standing_out_more_is_a_look_not_more_things(session, campus):
+    assert session.submit("add an SUV by the library entrance").ok
+    report = session.submit("it should stand out more")
+    assert report.ok, report.error
+    assert session.scene.count("suv") == campus.count("suv") + 1
+    assert [c.tool for c in report.plan.calls] == ["set_asset_appearance"]
+
+
+def test_one_being_plenty_of_what_the_speaker_ended_up_with_keeps_one(session, campus):
+    assert session.submit("put two benches at the east gate").ok
+    report = session.submit("seems I ended up with two benches at the east gate, one is plenty")
+    assert report.ok, report.error
+    assert session.scene.count("bench") == campus.count("bench") + 1

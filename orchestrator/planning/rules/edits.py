@@ -471,9 +471,10 @@ DEFAULT_PACE_MS = 5.0
 _ADDING = ("add", "spawn", "put", "place", "create", "insert", "another", "new")
 
 
-def new_pace(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall] | None:
+def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[ToolCall] | None:
     """set_behaviour keeping what one thing there does, at the speed said (or slower, faster);
-    None when the clause says no speed, adds things, names several, or asks for another behaviour."""
+    None when the clause says no speed, adds things, names several, or asks for another behaviour.
+    "It" with nothing named in the request is the one thing the last turn made or changed."""
     speed = ph.find_speed(r.text)
     slower, faster = _SLOWER.search(r.low) is not None, _FASTER.search(r.low) is not None
     if (speed is None and slower == faster) or (speed is not None and not _PACE_SAID.search(r.low)) or r.has(_ADDING):
@@ -484,6 +485,8 @@ def new_pace(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall] | None:
         ids = [a.id for a in scene.assets if a.category == r.mentions[0].category]
     else:
         ids = notes.subject if not r.mentions and not r.ego else []  # "..., it should be doing 10 m/s"
+        if not ids and not r.mentions and not r.ego and r.has(("it", "he", "she")):  # "can it go a bit faster?"
+            ids = list(dict.fromkeys(i for i in memory.last_touched() if scene.asset(i) is not None))
     found = scene.asset(ids[0]) if len(ids) == 1 else None
     if found is None:
         return None
@@ -491,13 +494,18 @@ def new_pace(r: Reading, scene: Scene, notes: Notes) -> list[ToolCall] | None:
     now = found.behaviour
     kind = now.kind if now.kind != "parked" else "drive_lane" if category.drives else None
     allowed = {None, kind, "parked"} if now.kind == "parked" else {None, kind}  # "the parked suv": its state now
-    if kind is None or behaviour_kind(r, category) not in allowed:
+    asked = behaviour_kind(r, category)
+    if asked == "drive_lane" and not re.search(r"\b(?:drive|drives|driving|lane|road|street)\b", r.low):
+        asked = None  # "can it go a bit faster?": going is the pace, not a drive along a lane
+    if kind is None or asked not in allowed:
         return None  # "make the suv circle at 5 m/s": another behaviour, planned as one
     if speed is None:
         notes.guess("how much slower" if slower else "how much faster")
         current = getattr(now, "speed", None) or DEFAULT_PACE_MS  # a parked thing has none
         speed = round(current / PACE_FACTOR if slower else current * PACE_FACTOR, 2)
     spec = {**now.model_dump(exclude_none=True), "kind": kind, "speed": speed}
+    if isinstance(spec.get("centre"), (tuple, list)):  # a circle's centre as the Worker takes it: "x,y"
+        spec["centre"] = ",".join(f"{float(v):g}" for v in spec["centre"])
     if kind == "drive_lane" and r.lane:
         spec["lane"] = r.lane
     notes.subject = [found.id]

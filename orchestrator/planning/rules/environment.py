@@ -141,8 +141,12 @@ _SHIFT = re.compile(r"\b(?:(an?|one|two|three|four|five|six|\d{1,2}) (?:more )?h
 _HOURS = {"a": 1, "an": 1, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 # Exposure for "brighter" (divided by it for "dimmer"), and its ceiling and floor.
 BRIGHTER_FACTOR, MAX_EXPOSURE, MIN_EXPOSURE = 1.5, 4.0, 0.25
-_BRIGHTER = re.compile(r"\b(brighter|lighter|more exposure|too dark|overexpose|brighten)\b")
-_DIMMER = re.compile(r"\b(dimmer|less bright|(?:too|so|very|far too|way too) (?:bright|glaring|dazzling)|less exposure"
+# The exposure or brightness said to go up or down ("can the exposure come down?", "lower the brightness").
+_LEVEL = r"(?:the )?(?:exposure|brightness)"
+_UP = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) up|(?:raise|increase|turn up|bring up|push up) {_LEVEL}"
+_DOWN = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) down|(?:lower|reduce|turn down|bring down|pull down) {_LEVEL}"
+_BRIGHTER = re.compile(rf"\b(brighter|lighter|more exposure|too dark|overexpose|brighten|{_UP})\b")
+_DIMMER = re.compile(rf"\b({_DOWN}|washed out|dimmer|less bright|(?:too|so|very|far too|way too) (?:bright|glaring|dazzling)|less exposure"
                      r"|underexpose|(?:tone|turn) down the (?:brightness|exposure|glare)|dim (?:it|the scene|things) down)\b")
 
 

@@ -18,7 +18,7 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_place
-from drivetwin.worlds.scene import AssetInstance, Landmark, Scene
+from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, polyline_length
 
 RELATIONS = (
@@ -564,8 +564,8 @@ def side_lane(low: str, scene: Scene) -> str | None:
         return None
     dx, dy = md.COMPASS_VECTORS[said.group(1)]
 
-    def reach(lane: Any) -> float:
-        return sum(x * dx + y * dy for x, y in lane.centreline) / len(lane.centreline)
+    def reach(lane: Lane) -> float:
+        return float(sum(x * dx + y * dy for x, y in lane.centreline) / len(lane.centreline))
 
     ranked = sorted(lanes, key=reach, reverse=True)
     return str(ranked[0].id) if reach(ranked[0]) > reach(ranked[1]) + 0.5 else None

@@ -24,6 +24,7 @@ from drivetwin.orchestrator.planning.intent import (
     REMOVE_WORDS,
     asks,
     commands,
+    taken_back,
     without_reason,
     wrapped_request,
 )
@@ -178,6 +179,8 @@ _NEGATED_WISH = re.compile(
 # trees block the view"), unless it says what should be ("the bus should stop", "it belongs in lot A").
 _STATEMENT = re.compile(
     r"\s*(?:(?:now|still|and|but)\s+)?(?:(?:the|this|that|these|those|it|they|there)\b[^,;]*?\b(?:is|are|was|were)\b"
+    # "looks like I ended up with two benches there": what the speaker has now, not what to add
+    r"|(?:(?:it )?looks like |it seems |seems )?(?:i|we)(?:'ve| have)? (?:ended up with|now have|can see|noticed|spotted)\b"
     r"|(?:it|that|there|they)(?:'s|'re) (?!(?:got to|gotta|going to|supposed to|meant to|time)\b)"
     r"|(?:the|this|that|these|those|whoever|anyone who|everyone who)\s+"
     # "the ego rolls up to the east gate": a story's move to a place is what to stage
@@ -365,6 +368,15 @@ class RulePlanner:
         low = prompt.lower()
         for said in _THE_KIND.finditer(low):
             places = places_called(context.scene, said.group("kind"))
+            if len(places) == 1:  # "at the stop": the one place called that, the bus stop
+                text = prompt[: said.start("said")] + f"the {places[0]}" + prompt[said.end("said") :]
+                try:
+                    only = self._plan(text, context, which_place=False)
+                except PlanningError:
+                    continue
+                if only.calls and _UNRECOGNISED not in only.trace[0].output:
+                    return only
+                continue
             if len(places) < 2:
                 continue
             readings = []
@@ -417,6 +429,7 @@ class RulePlanner:
         text = repaired.text
         if (given := condition(text, scene)) is not None:  # "if there's a bus, paint it yellow"
             text = given.request if given.met else given.question  # no bus: whether there is one
+        text = _as_meant(text)  # "put the bench by the fountain... no wait, scrap that, just turn it round"
         text = topic_first(text, scene) or text  # "the tree near the fountain, move it 3 m north"
         clauses = _clauses(text, places)
         if not clauses:
@@ -476,6 +489,18 @@ class RulePlanner:
         )
 
 
+def _as_meant(text: str) -> str:
+    """The request without what the speaker took back (intent.taken_back), its pronouns still
+    meaning what the words taken back named ("put the bench by the fountain... scrap that, just
+    turn it round": it is the bench)."""
+    rest, dropped = taken_back(text)
+    named = ph.find_categories(dropped)
+    if named and not ph.find_categories(rest) and re.search(r"\b(?:it|them|that one|those)\b", rest.lower()):
+        said = ph.normalise(dropped)[named[0].start : named[0].end].strip()
+        return f"the {said}, {rest}"
+    return rest
+
+
 # A new thing said to be like one there: "another one exactly like it", "a copy of that one".
 _LIKE_IT = re.compile(r"\b(?:(?:exactly|just) like|identical to|(?:the )?same as|a copy of|matching) "
                       r"(?:it|that|this|that one|this one|the (?:other|last|first) one)\b")
@@ -528,18 +553,22 @@ DESCRIBED_NEAR_M = 20.0
 
 
 def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:
-    """The things a statement describes as if new ("who put a hydrant by the crossroads") that
-    the scene already has at that place: for each addition, the nearest one of its kind there."""
-    found = []
+    """The things a statement describes as if new ("who put a hydrant by the crossroads", "I ended
+    up with two benches at the fountain") that the scene already has at that place: for each
+    addition, as many of its kind there as it says, nearest first."""
+    found: list[str] = []
     for call in described:
         where = call.args.get("location") or {}
         landmark = scene.landmark(str(where.get("target"))) if call.tool == "add_asset" and isinstance(where, dict) else None
         same = [a for a in scene.assets if a.category == call.args.get("category")]
-        if landmark is None or not same or call.args.get("count", 1) != 1:
-            continue  # "the vehicles in lot B look plain": several, named as they are, not one described
-        nearest = min(same, key=lambda a: math.dist((a.pose.x, a.pose.y), landmark.position))
-        if math.dist((nearest.pose.x, nearest.pose.y), landmark.position) <= DESCRIBED_NEAR_M:
-            found.append(nearest.id)
+        count = int(call.args.get("count", 1))
+        if landmark is None or not same:
+            continue
+        # "I ended up with two benches at the fountain": the two there nearest it, when there are that many
+        there = sorted((a for a in same if math.dist((a.pose.x, a.pose.y), landmark.position) <= DESCRIBED_NEAR_M),
+                       key=lambda a: math.dist((a.pose.x, a.pose.y), landmark.position))
+        if len(there) >= count:
+            found.extend(a.id for a in there[:count])
     return found
 
 
@@ -559,6 +588,8 @@ def _more_of_a_thing(r: Reading) -> bool:
     """Whether "more" asks for more things ("more cones", "two more there"), not more of a quality
     ("more realistic")."""
     for said in re.finditer(r"\bmore\b", r.low):
+        if re.search(r"\b(?:out|up|down|off|over|away|apart|back|it|them|that|this)\s+$", r.low[: said.start()]):
+            continue  # "make it stand out more", "spread them more": more of how, not of what
         after = r.low[said.end() :]
         if not after.strip() or re.match(r"\s+(?:of|there|here|please|too|like|next|by|near|beside|around"
                                          r"|along|across)\b", after):
@@ -626,7 +657,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return looked_up
     if (swap := replaces(r)) is not None:  # "swap the bench for a bin": it goes, a bin stands there
         return replace_things(swap, scene, memory, notes)
-    paced = new_pace(r, scene, notes)
+    paced = new_pace(r, scene, notes, memory)
     if paced is not None:  # "set the ego's speed to 8 m/s", "could the truck go a bit slower?"
         return paced
     if r.mentions and _TOPIC.fullmatch(_without_mentions(r)):
