@@ -279,3 +279,10 @@ def test_one_being_plenty_of_what_the_speaker_ended_up_with_keeps_one(session, c
     report = session.submit("seems I ended up with two benches at the east gate, one is plenty")
     assert report.ok, report.error
     assert session.scene.count("bench") == campus.count("bench") + 1
+
+
+def test_a_slip_opening_a_command_before_a_thing_is_the_command_verb(session):
+    report = session.submit("plase the bench at the east gate and the bin at the main gate")
+    assert report.ok, report.error
+    assert [(c.tool, c.args.get("asset")) for c in report.plan.calls] == [("place_asset", "bench_1"),
+                                                                          ("place_asset", "trash_bin_1")]

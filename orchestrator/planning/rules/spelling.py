@@ -405,6 +405,11 @@ def _verb_of(m: re.Match[str]) -> str:
     return next(v for v in _COMMAND_VERBS if v in (stem, stem + "e", stem[:-1]))
 
 
+# Where a clause's command verb stands, and the thing that follows one.
+_COMMAND_SLOT = re.compile(r"(?:^|[,.;:!?]|\b(?:and|then|now|so|pls|please|just))\s*$", re.IGNORECASE)
+_THING_NEXT = re.compile(r"\s+(?:the|a|an|all|every|some|that|those|this|these|\d+)\b", re.IGNORECASE)
+
+
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
@@ -423,6 +428,12 @@ def repair(text: str, scene: Scene) -> Repaired:
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
         new = _repair_word(word, vocab)
+        if new is not None and new not in _COMMAND_VERBS and _COMMAND_SLOT.search(text[: m.start()]) \
+                and _THING_NEXT.match(text[m.end() :]):
+            # "plase the suv in lot A": a slip opening a clause before a thing is the command verb
+            # it is as near to as to anything else ("place", not "please")
+            near = [v for v in _COMMAND_VERBS if edits(word.lower(), v) <= edits(word.lower(), new)]
+            new = min(near, key=lambda v: edits(word.lower(), v)) if near else new
         if new is None or new == word.lower():
             return word
         repairs.append(f"{word} -> {new}")
