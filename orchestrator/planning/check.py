@@ -111,8 +111,6 @@ QUERY_TOOLS = tuple(sorted(SEARCH_TOOLS))
 # Workers that write the storyboard: their readings are the scenario reader's to judge.
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 MAX_READINGS = 3
-# A distance said ("20 m north of the library", "ten feet behind it"): only then may a thing the
-# plan puts by a named place stand further than PLACE_RADIUS_M from it.
 # The catalog's tags of what a layout may add unnamed: markers, blocks, signs, roadworks.
 _LAYOUT_KIT = {"maintenance", "block", "marker", "sign"}
 # Words asking for one more of a thing there: what answers them adds.
@@ -120,6 +118,8 @@ _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one m
 # A question about the scene's settings ("time + weather?", "what's the weather doing"): the
 # environment is what it must look up.
 _SETTING_ASKED = re.compile(r"\b(?:weather|what time|the time|time of day)\b")
+# A distance said ("20 m north of the library", "ten feet behind it"): only then may a thing the
+# plan puts by a named place stand further than PLACE_RADIUS_M from it.
 _DISTANCE_SAID = re.compile(r"\d\s*(?:m|metres?|meters?|ft|feet|foot|yards?|km)\b")
 # Tools that act on a list of assets as well as on one.
 _GROUP_TOOLS = ("move_asset", "remove_assets", "set_asset_appearance")
