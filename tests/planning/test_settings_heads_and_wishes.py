@@ -286,3 +286,11 @@ def test_a_slip_opening_a_command_before_a_thing_is_the_command_verb(session):
     assert report.ok, report.error
     assert [(c.tool, c.args.get("asset")) for c in report.plan.calls] == [("place_asset", "bench_1"),
                                                                           ("place_asset", "trash_bin_1")]
+
+
+def test_a_story_question_about_a_kind_said_as_a_group_counts_the_whole_group(session, campus):
+    report = session.submit("A colleague said the lot is full. Could you give me a rough idea how many cars are parked there?")
+    assert report.ok, report.error
+    cars = [a for a in campus.assets if a.category in ("passenger_car", "suv")]
+    assert report.answer is not None and report.answer.startswith(f"{len(cars)} ")
+    assert session.scene.assets == campus.assets

@@ -56,7 +56,7 @@ from drivetwin.orchestrator.planning.rules.places import (
     places_called,
     said_a_place,
 )
-from drivetwin.orchestrator.planning.rules.questions import plan_question
+from drivetwin.orchestrator.planning.rules.questions import of_group, plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
 from drivetwin.orchestrator.planning.rules.repeat import (
     correct,
@@ -452,7 +452,7 @@ class RulePlanner:
         if calls and asks(text.lower()) and not any(commands(clause.lower()) for clause, _, _ in clauses):
             # "a driver mentioned a stop sign by the crossing; I want to confirm it's there": what the
             # story names is what the question is about, never something to add
-            calls = _as_searches(calls)
+            calls = [of_group(c, read(text, scene)) for c in _as_searches(calls)]  # "how many cars": SUVs too
         if not calls and skipped:
             strange = [w for clause in skipped for w in _unknown_words(clause, scene)]
             first = f"there is no {strange[0]!r} in this world that I know of; " if strange else ""

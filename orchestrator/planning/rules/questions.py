@@ -145,7 +145,7 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         part = _plan_part(reading, scene, memory, notes, earlier)
         if part is None:
             continue
-        calls.append(_on_side(_of_group(part.call, reading), reading, scene))
+        calls.append(_on_side(of_group(part.call, reading), reading, scene))
         earlier = part.referent or earlier
         if part.found:
             notes.subject = list(part.found)  # what a later clause's "them" or "each" means
@@ -166,7 +166,7 @@ def _on_side(call: ToolCall, r: Reading, scene: Scene) -> ToolCall:
     return call.model_copy(update={"args": {**call.args, "lane": lane}})
 
 
-def _of_group(call: ToolCall, r: Reading) -> ToolCall:
+def of_group(call: ToolCall, r: Reading) -> ToolCall:
     """A search for a category that the words name as a whole kind ("which vehicles are parked
     there"): made a search for the kind, said in the plural as the Worker takes it."""
     said = call.args.get("category")
@@ -494,4 +494,4 @@ def _found(call: ToolCall, scene: Scene) -> Part:
     return Part(call, Anchor("asset", found[0]) if found else None, found)
 
 
-__all__ = ["SEARCH_NEAR_M", "plan_question"]
+__all__ = ["SEARCH_NEAR_M", "of_group", "plan_question"]
