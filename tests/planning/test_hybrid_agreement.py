@@ -133,3 +133,13 @@ def test_real_rules_and_retrieval_agree_on_a_plain_request(context: PlanContext)
     plan = planner.plan("make it snow", context)
     assert path(plan) == "path: agree" and plan.calls[0].tool == "set_weather"
     assert plan.calls[0].args["kind"] == "snow"
+
+
+def test_a_rule_edit_read_past_three_unknown_words_is_offered_to_confirm(context: PlanContext) -> None:
+    llm = SmallModel("llm", SNOW)
+    plan = hybrid(Fixed("rules", RAIN, 0.2), Fixed("retrieval", None), llm).plan("x", context)
+    assert path(plan) == "path: ask" and plan.calls == [] and llm.asked == 0
+    assert plan.question is not None and [r.calls for r in plan.question.readings] == [RAIN]
+    # a little surer, it is used as before
+    plan = hybrid(Fixed("rules", RAIN, 0.35), Fixed("retrieval", None), llm).plan("x", context)
+    assert path(plan) == "path: fast" and plan.calls == RAIN
