@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import re
 import time
+from functools import cache
 from typing import Any
 
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, Reading, TraceStep
@@ -99,11 +100,14 @@ _STARTS_MOVING = re.compile(r"\b(?:pull(?:s|ing)? (?:out|away|off)|(?:drive|driv
                             r"|starts? (?:moving|driving|walking|to (?:move|drive|walk))|moves? off|gets? going|departs?|leaves?)\b")
 
 
-# The catalog's names of things in more than one word ("stop sign", "halt sign"): a manoeuvre's
-# word inside one names no manoeuvre. Lamps and signals are left: the light words read them.
-_THING_NAMES = tuple(sorted({n.replace("_", " ") for e in catalog().values() for n in (e.name, *e.synonyms)
-                             if " " in n.replace("_", " ") and not re.search(r"light|lamp|signal", n)},
-                            key=len, reverse=True))
+@cache
+def _thing_names() -> re.Pattern[str]:
+    """The catalog's names of things in more than one word ("stop sign", "halt sign"), longest
+    first: a manoeuvre's word inside one names no manoeuvre. Lamps and signals are left out: the
+    light words read them."""
+    names = {n.replace("_", " ") for e in catalog().values() for n in (e.name, *e.synonyms)}
+    kept = sorted((n for n in names if " " in n and not re.search(r"light|lamp|signal", n)), key=len, reverse=True)
+    return re.compile(rf"\b(?:{'|'.join(map(re.escape, kept))})s?\b")
 
 
 def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool:
@@ -116,8 +120,7 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
     low = re.sub(r"[a-z]+", lambda m: _SLIPS.get(m.group(0), m.group(0)), low)
     for name in (n for place in (scene.landmarks if scene is not None else []) for n in place.names()):
         low = re.sub(rf"\b{re.escape(ph.normalise(name).strip())}\b", " place ", low)  # "bus stop" is no stop
-    for name in _THING_NAMES:
-        low = re.sub(rf"\b{re.escape(name)}s?\b", " thing ", low)  # "the stop sign" is no stop
+    low = _thing_names().sub(" thing ", low)  # "the stop sign" is no stop
     trigger = bool(TRIGGER.search(low) and re.search(r"\b(ego|it|car|m|metres?|meters?|seconds?|approach\w*)\b", low)) \
         or bool(DELAY.search(low))
     manoeuvre = any(words.search(low) for kind, words in _COMPILED[1:])

@@ -364,22 +364,12 @@ class RulePlanner:
 
     def _which_place(self, prompt: str, context: PlanContext) -> Plan | None:
         """A question offering the request at each place its place word may mean, when it names
-        a kind of place several places are ("by the gate"); None when it does not."""
+        a kind of place several places are ("by the gate"), or the request at the one place called
+        that ("at the stop"); None when it does neither."""
         low = prompt.lower()
         for said in _THE_KIND.finditer(low):
             places = places_called(context.scene, said.group("kind"))
-            if len(places) == 1:  # "at the stop": the one place called that, the bus stop
-                text = prompt[: said.start("said")] + f"the {places[0]}" + prompt[said.end("said") :]
-                try:
-                    only = self._plan(text, context, which_place=False)
-                except PlanningError:
-                    continue
-                if only.calls and _UNRECOGNISED not in only.trace[0].output:
-                    return only
-                continue
-            if len(places) < 2:
-                continue
-            readings = []
+            plans = []
             for name in places[:MAX_READINGS]:
                 text = prompt[: said.start("said")] + f"the {name}" + prompt[said.end("said") :]
                 try:
@@ -387,7 +377,10 @@ class RulePlanner:
                 except PlanningError:
                     continue
                 if reading.calls and _UNRECOGNISED not in reading.trace[0].output:
-                    readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
+                    plans.append(reading)
+            if len(places) == 1 and plans:
+                return plans[0]  # "at the stop": the one place called that, the bus stop
+            readings = [Choice(text=describe(p.calls), calls=p.calls) for p in plans]
             if len(readings) >= 2:
                 kind = said.group("kind")
                 step = TraceStep(level="rules", input=prompt, output=f"{kind!r} names {', '.join(places)}; asking")

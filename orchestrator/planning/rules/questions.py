@@ -52,8 +52,10 @@ _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
 # A distance asked between two things ("how far is X from Y", "the distance between X and Y",
 # "how far apart are X and Y"): one thing named is measured from the asker. A superlative asks
 # which thing is nearest instead, and a range ("within 20 m") asks what is around.
+# A way asked between two places ("which way is the fountain from here"): what a distance says too.
+_WAY = r"which way|what way|(?:which|what) direction"
 _DISTANCE = re.compile(r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|"
-                       r"which way|what way|(?:in )?(?:which|what) direction|"  # the distance says the way too"
+                       rf"{_WAY}|"  # the distance says the way too"
                        r"stone'?s throw (?:from|to|of)|(?:a |long |short )?walk (?:from|to)|how many (?:metres|"
                        r"meters|feet|yards) (?:from|to|between|apart))\b|\bfar\s*\??\s*$")
 _SUPERLATIVE = re.compile(r"\b(?:nearest|closest|furthest|farthest|most near|most close|nearer|closer)\b")
@@ -400,7 +402,7 @@ def _distance(r: Reading, scene: Scene, back: Anchor | None) -> Part | None:
     return Part(ToolCall(tool="measure_distance", args={"a": ends[0].name, "b": ends[1].name}), ends[0])
 
 
-_WAY_ASKED = re.compile(r"\b(?:which way|what way|(?:which|what) direction)\b")
+_WAY_ASKED = re.compile(rf"\b(?:{_WAY})\b")
 
 
 def _around(r: Reading, scene: Scene, anchor: Anchor) -> Part:
