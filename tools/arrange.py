@@ -15,7 +15,7 @@ from drivetwin.tools.rules import check_placement, footprint
 from drivetwin.worlds.catalog import category, placeable_categories
 from drivetwin.worlds.edits import AddAsset, WorldEdit
 from drivetwin.worlds.scene import AssetInstance, Pose, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon
+from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, polyline_length
 from pydantic import Field
 
 Shape = Literal["line", "ring", "grid", "lane_edge", "parking_row"]
@@ -62,12 +62,14 @@ class ArrangeArgs(ToolArgs):
 
 
 
-def _enclosing_radius(scene: Scene, centre: tuple[float, float], widths: list[float]) -> float:
-    """A ring radius that clears everything already standing near `centre`."""
+def _enclosing_radius(scene: Scene, centre: tuple[float, float], widths: list[float], kin: str | None) -> float:
+    """A ring radius that clears what stands near `centre` and belongs inside: work-zone kit (the
+    rubble and its cones) and things of the ringed thing's kind, not a bench beside a tree."""
     radius = 0.0
     for asset in scene.assets:
         distance = math.hypot(asset.pose.x - centre[0], asset.pose.y - centre[1])
-        if distance <= ENCLOSE_WITHIN_M:
+        inside = asset.category == kin or "maintenance" in category(asset.category).tags
+        if distance <= ENCLOSE_WITHIN_M and inside:
             reach = distance + category(asset.category).footprint_radius * asset.scale
             radius = max(radius, reach + RING_GAP_M + max(widths) / 2)
     return radius
@@ -77,16 +79,19 @@ def _ring(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[floa
     anchor = resolve_anchor(scene, Location(relation="at", target=args.location.target)
                             if args.location.target else args.location, 0.0)
     target_half = 0.0
+    kin = None
     if args.location.target:
         t = resolve_target(scene, args.location.target)
         target_half = t.half_length
+        ringed = scene.asset(t.name) if t.kind == "asset" else None
+        kin = ringed.category if ringed is not None else None
         # A ring around an asset encloses the asset and its neighbours added with it.
         anchor_xy = (t.x, t.y) if t.kind == "asset" else (anchor.x, anchor.y)
     else:
         anchor_xy = (anchor.x, anchor.y)
     largest = max(sizes)
     radius = args.radius or max(
-        target_half + RING_CLEARANCE_M + largest / 2, _enclosing_radius(scene, anchor_xy, widths), 2.0
+        target_half + RING_CLEARANCE_M + largest / 2, _enclosing_radius(scene, anchor_xy, widths, kin), 2.0
     )
     count = args.count or max(4, int(2 * math.pi * radius / (largest + (args.spacing or 1.0))))
     step = 2 * math.pi / count
@@ -194,6 +199,7 @@ def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list
             start += location.distance or 0.0
     spacing = args.spacing or 3.0
     count = args.count or 8
+    start = _row_start(scene, lane.centreline, start, spacing, count)
     # Right of the direction of travel unless told otherwise, just inside the lane.
     offset = location.offset_m if location.offset_m is not None else lane.width / 2 - max(sizes) / 2 - 0.2
     if location.side == "left":
@@ -203,6 +209,34 @@ def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list
         x, y, heading = point_along(lane.centreline, start + k * spacing)
         poses.append(Pose(x=x + offset * math.sin(heading), y=y - offset * math.cos(heading), yaw=heading))
     return poses
+
+
+# How far a row along a lane slides, at most, to keep on the lane and out of a junction.
+ROW_SLIDE_MAX_M = 25.0
+
+
+def _row_start(scene: Scene, line: list[tuple[float, float]], start: float, spacing: float, count: int) -> float:
+    """Where a row along a lane starts: `start`, else the nearest start (ahead or back, by up to
+    ROW_SLIDE_MAX_M or the row's length) whose row stays on the lane, short of its ends, and out of
+    the areas it crosses (a junction): "line the eastbound lane" is not lined through the crossroads,
+    nor "the lane by the main gate" past the world's edge."""
+    length = polyline_length(line)
+    row = (count - 1) * spacing
+    areas = [lm.polygon for lm in scene.landmarks if lm.kind == "area" and lm.polygon]
+
+    def clear(at: float) -> bool:
+        if at < 0.0 or at + row > length:
+            return False
+        points = (point_along(line, at + k * spacing) for k in range(count))
+        return not any(point_in_polygon(x, y, area) for x, y, _ in points for area in areas)
+
+    reach = max(ROW_SLIDE_MAX_M, row)
+    steps = int(reach / spacing) if spacing > 0 else 0
+    for k in range(steps + 1):
+        for at in ((start,) if k == 0 else (start + k * spacing, start - k * spacing)):
+            if clear(at):
+                return at
+    return start
 
 
 def _row_at(x: float, y: float, heading: float, spacing: float, count: int) -> list[Pose]:
@@ -292,6 +326,17 @@ def _closed_up(args: ArrangeArgs, sizes: list[float]) -> list[tuple[ArrangeArgs,
     return out
 
 
+def _across_variants(args: ArrangeArgs, sizes: list[float]) -> list[tuple[ArrangeArgs, str]]:
+    """A line across a path as asked, closed up; where no count was asked, then fewer (down to
+    two), each closed up in turn: "a row of barriers ahead of the ego" spans the road it can."""
+    variants = _closed_up(args, sizes)
+    if args.count is None:
+        for count in range(DEFAULT_LINE - 1, 1, -1):
+            fewer = args.model_copy(update={"count": count})
+            variants += [(v, f"{note}, {count} to fit across (no count was asked)") for v, note in _closed_up(fewer, sizes)]
+    return variants
+
+
 def _across_refusal(args: ArrangeArgs, sizes: list[float], first: RuleViolation) -> RuleViolation:
     """Why a line across a path cannot be built as asked, and what can be."""
     count = args.count or DEFAULT_LINE
@@ -360,7 +405,7 @@ class ArrangeAssets(Tool[ArrangeArgs]):
         groups: list[list[tuple[list[Pose], str]]]
         if across:
             groups = [[(_line(variant, scene, sizes, widths), note)]
-                      for variant, note in _closed_up(args, sizes)]
+                      for variant, note in _across_variants(args, sizes)]
         else:
             groups = [[(LAYOUTS[args.shape](args, scene, sizes, widths), "")]]
             if args.shape == "line" and args.heading_deg is None:

@@ -19,7 +19,7 @@ from drivetwin.tools.footprints import (
     overlap,
     overlapping,
 )
-from drivetwin.worlds.catalog import Category, category
+from drivetwin.worlds.catalog import Category, catalog, category
 from drivetwin.worlds.edits import AddAsset, EditConflict, RemoveAsset, UpdateAsset, WorldEdit
 from drivetwin.worlds.scene import EGO_ID, MAX_ASSETS, AssetInstance, Scene
 from drivetwin.worlds.surface import DRIVABLE, building_at, road_height, surface_at
@@ -117,6 +117,14 @@ def check_placement(scene: Scene, asset: AssetInstance, others: Iterable[AssetIn
         )
 
 
+def _instead(cat: Category, ground: str) -> str:
+    """What could stand on `ground` in a drivable-only thing's place: kinds that share its purpose
+    (a tag such as "block" or "maintenance") and may stand anywhere, as a hint to end a refusal."""
+    kin = [c.name for c in catalog().values()
+           if c.placement == "anywhere" and c.motion == "prop" and set(c.tags) & set(cat.tags) - {"temporary", "permanent"}]
+    return f"; {' or '.join(k.replace('_', ' ') + 's' for k in kin)} can stand on {ground}" if kin else ""
+
+
 def _check_surface(scene: Scene, asset: AssetInstance, cat: Category) -> None:
     x, y = asset.pose.x, asset.pose.y
     ground = surface_at(scene, x, y)
@@ -124,7 +132,7 @@ def _check_surface(scene: Scene, asset: AssetInstance, cat: Category) -> None:
         raise RuleViolation(
             "surface",
             f"a {cat.name} must stand on a road, crossing or paved area; ({x:.1f}, {y:.1f}) "
-            f"is {ground}",
+            f"is {ground}{_instead(cat, ground)}",
         )
     if cat.placement == "sidewalk" and ground not in ("sidewalk", "ground"):
         raise RuleViolation(

@@ -137,6 +137,8 @@ def group_left_behind(low: str, removed: Iterable[AssetInstance], candidates: It
     for tag, members in md.groups_said(low).items():
         if re.search(rf"\b(?:those|these)\s+(?:\w+\s+)?{re.escape(tag)}s\b", low):
             continue  # "so those signs shouldn't be there": the ones just talked of, not every sign
+        if re.search(rf"\b(?:\w+)\s+of\s+(?:the|those|these|our|my|its)\s+(?:\w+\s+)?{re.escape(tag)}s\b", low):
+            continue  # "one of the cars in lot B", "a couple of the vehicles": some of them, as many as said
         ids = {a.id for a in gone}
         left = [a.id for a in candidates if a.category in members and a.id not in ids and a.id != "ego"]
         if left and any(a.category in members for a in gone):
@@ -154,7 +156,7 @@ def wrong_layout(masked: str, added: Iterable[AssetInstance]) -> list[str]:
     centred = points - points.mean(axis=0)
     out = []
     said = md.layout_said(masked)
-    if said in ("line", "row"):
+    if said in ("line", "row") and md.BOTH_SIDES.search(masked) is None:  # a row each side is two lines
         spread = np.linalg.svd(centred, compute_uv=False)
         if spread[0] <= 0 or spread[1] / spread[0] > LINE_SPREAD:
             out.append(f"you asked for a {said}, but the plan scatters them")

@@ -280,6 +280,11 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         standing = [a for a in effect.added if a.category in movers and a.behaviour.kind == "parked"]
         if standing and len(standing) == len([a for a in effect.added if a.category in request.categories]):
             out.append(f"you said moving ones, but the plan adds {_names(standing)} standing still")
+    on_foot = _ON_FOOT.search(request.low)
+    if on_foot and not request.question:  # "a pedestrian walking toward the gate" is not one standing there
+        walkers = [a for a in effect.added if catalog()[a.category].motion == "walker"]
+        if walkers and all(a.behaviour.kind == "parked" for a in walkers):
+            out.append(f"you said {on_foot.group(1)}, but the plan adds {_names(walkers)} standing still")
     roads = "|".join(re.escape(ph.normalise(lane.road).strip()) for lane in scene.roads.lanes if lane.road)
     unnamed = re.sub(rf"\b(?:{roads})\b", " ", request.low) if roads else request.low  # "Campus Drive" asks no one to drive
     if _DRIVE_VERB.search(unnamed) and not request.question:
@@ -334,13 +339,21 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     return out
 
 
+# On foot or pedal, said of what is added: "a jogger running along Main Street" (not "stop walking").
+_ON_FOOT = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!no )\b(walking|jogging|running|strolling|wandering"
+                      r"|pacing|cycling|pedalling|pedaling)\b")
+_EACH_SIDE = re.compile(r"\b(?:each|either|every)\s+side\b")
+
+
 def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     """What the plan gives the things named (see attributes.py): counts, lane, surface, look,
     weather strength."""
     placed = [*effect.added, *_moved(effect)]
     each = each_place_named(scene, request.low)  # "two cones at each gate": two at every one of them
+    # "six bollards on each side of it": that many on either side, two sides
+    per = max(1, len(each)) * (2 if _EACH_SIDE.search(request.low) else 1)
     out = [] if _totals(request, effect) else wrong_counts(
-        request.masked, [a for a in effect.added if a.category not in _companions(effect)], max(1, len(each)))
+        request.masked, [a for a in effect.added if a.category not in _companions(effect)], per)
     centres = {place: centre for place in each if (centre := _centre(scene, place)) is not None}
     if effect.added and centres:  # each new thing counts for the one of those places it stands nearest
         served = {min(centres, key=lambda p: math.dist((a.pose.x, a.pose.y), centres[p])) for a in effect.added}

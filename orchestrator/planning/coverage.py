@@ -49,8 +49,8 @@ _PLACE_PREPOSITION = re.compile(
     r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|"
     r"along|alongside|across|through|past|beyond|"
     r"(?:far|away|distance|metres|meters|m)\b(?:[^,.;?]{0,40}?\s)?from|"  # "how far is the ego from the ..."
-    r"close to|opposite|where is|where's|where are)\s+the\s+(?=([a-z][a-z' -]*))"  # (a look-ahead: "from the
-)  # library to the pool" is read for both places)
+    r"close to|opposite|where is|where's|where are)\s+the[ \t]?(?=([a-z][a-z' -]*))"  # (a look-ahead: "from the
+)  # library to the pool" is read for both places; a known place masked to blanks is no name: "to the   anymore")
 # Arguments by which a call says where: a repaired place name ends up in one of them.
 _PLACE_ARG = re.compile(r"'(?:location|near|nearest_to|lane|asset|assets|target|x|y)':")
 # Words after "the" that are part of a relation, not a place ("on the right", "to the north").
@@ -574,8 +574,9 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         if phrase[cut:cut + 1] == ["of"]:
             continue  # "a heap of benches", "a pile of rubble": what follows is the thing
         phrase = phrase[:cut]  # "a deer crossing the road": the phrase ends before "the"
-        while len(phrase) > 1 and phrase[-1].endswith(("ly", "ing", "more", "where", "wards")):
-            phrase.pop()  # "a low sun shortly after dawn", "a deer crossing", "the sign anymore": the thing comes before
+        while len(phrase) > 1 and (phrase[-1].endswith(("ly", "ing", "more", "where", "wards"))
+                                   or (phrase[-1].endswith("est") and is_known(phrase[-2], vocab))):
+            phrase.pop()  # "a low sun shortly after dawn", "a deer crossing", "the sign anymore", "the tree closest": the thing comes before
         word = phrase[-1]
         if phrase[0] == "to" or (len(phrase) == 1 and word.endswith("ing")):
             continue  # "want to be sure", "needs protecting": a verb wanted, not a thing

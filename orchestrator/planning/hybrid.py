@@ -21,7 +21,7 @@ Before any of this, words no planner reads are respelt in context by the model's
 from __future__ import annotations
 
 import time
-from typing import Any
+from typing import Any, NamedTuple
 
 from drivetwin.orchestrator.backends import BackendError
 from drivetwin.orchestrator.planning.answers import SEARCH_TOOLS
@@ -59,6 +59,15 @@ RETRIEVAL_READING = 0.45
 RULES_PLANNER = "rules"
 # Readings offered in a clarifying question (the interface allows 1-3).
 MAX_READINGS = 3
+
+
+class Candidate(NamedTuple):
+    """One planner's plan and its dry run, why (for the path log), and a plan the dry run refused."""
+
+    plan: Plan | None
+    run: TransactionResult | None
+    why: str
+    refused: Plan | None = None
 
 
 class HybridPlanner:
@@ -111,19 +120,17 @@ class HybridPlanner:
             return RULES_CONFIDENT  # sure enough whatever the model: no need to open it
         return self.confidence_needed()
 
-    def _candidate(
-        self, planner: Planner, prompt: str, context: PlanContext
-    ) -> tuple[Plan | None, TransactionResult | None, str]:
+    def _candidate(self, planner: Planner, prompt: str, context: PlanContext) -> Candidate:
         try:
             plan = planner.plan(prompt, context)
         except PlanningError as exc:
-            return None, None, f"{planner.name} could not plan it ({exc})"
+            return Candidate(None, None, f"{planner.name} could not plan it ({exc})")
         if not plan.calls:
-            return plan, None, f"{planner.name}: no calls"
+            return Candidate(plan, None, f"{planner.name}: no calls")
         outcome = dry_run(plan.calls, context.registry, context.scene)
         if isinstance(outcome, str):
-            return None, None, f"a dry run refused the {planner.name} plan: {outcome}"
-        return plan, outcome, f"{planner.name} confidence {plan.confidence:.2f}"
+            return Candidate(None, None, f"a dry run refused the {planner.name} plan: {outcome}", plan)
+        return Candidate(plan, outcome, f"{planner.name} confidence {plan.confidence:.2f}")
 
     def agree(self, a: Plan, a_run: TransactionResult | None, b: Plan, b_run: TransactionResult | None, context: PlanContext) -> bool:
         """Whether two candidates mean the same: equal calls up to defaults, or equal outcomes."""
@@ -165,14 +172,19 @@ class HybridPlanner:
     def _plan(self, prompt: str, context: PlanContext) -> Plan:
         started = time.perf_counter()
         if self.scenario is not None and describes_behaviour_over_time(prompt, context.scene):
-            read, _, read_why = self._candidate(self.scenario, prompt, context)
+            read, _, read_why, _ = self._candidate(self.scenario, prompt, context)
             if read is not None and (read.calls or read.question is not None):
                 return self._mark(read, "scenario", started, read_why)
-        rule_plan, rule_run, rule_why = self._candidate(self.rules, prompt, context)
+        rule_plan, rule_run, rule_why, rules_refused = self._candidate(self.rules, prompt, context)
         if self.retrieval is None:
             return self._rules_then_llm(prompt, context, rule_plan, rule_why, started)
-        found, found_run, found_why = self._candidate(self.retrieval, prompt, context)
+        found, found_run, found_why, _ = self._candidate(self.retrieval, prompt, context)
         why = f"{rule_why}; {found_why}"
+        if rules_refused is not None and rules_refused.confidence >= RULES_CONFIDENT and (
+                found is None or found.confidence < RETRIEVAL_CONFIDENT):
+            # Every word read and the world says no ("a ring of cones round the tree": cones stand
+            # on paving): its reason is the answer, not another planner's guess at something else.
+            raise PlanningError(_not_understood(rule_why))
         if rule_plan is None or found is None or not rule_plan.calls or not found.calls:
             if rule_plan is not None:
                 return self._rules_then_llm(prompt, context, rule_plan, why, started, [found] if found else [])

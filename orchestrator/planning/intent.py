@@ -12,7 +12,7 @@ import re
 from drivetwin.tools.appearance import COLOURS
 
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|out of scope|clear (away|out|the)|no longer|don'?t want|do not want"
+    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|out of scope|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|be (?:there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
@@ -178,10 +178,16 @@ _CONTRAST_END = re.compile(r"\s+[-\u2013\u2014]\s+|[,.;!?]|$"
                            rf"|\s+(?:(?:to|in)\s+)?(?:{'|'.join(COLOURS)})\b(?=(?:\s+(?:please|pls|too|now|instead))?\s*[.!?]*\s*$)")
 
 
+# "but" after a word for every one of them is "except": "everything at the stop but the bench".
+_ALL_BUT = re.compile(rf"\s+but\s+(?={_DETERMINER}\b)", re.IGNORECASE)
+_EVERY = re.compile(r"\b(?:everything|anything|all|every|each)\b[^,.;!?]*$", re.IGNORECASE)
+
+
 def _contrasts(text: str) -> list[tuple[int, int, int]]:
     """(start, start of the excepted words, end) of each contrast clause after the request's first words."""
     out = []
-    for m in _CONTRAST.finditer(text):
+    found = [*_CONTRAST.finditer(text), *(m for m in _ALL_BUT.finditer(text) if _EVERY.search(text[: m.start()]))]
+    for m in sorted(found, key=lambda m: m.start()):
         if len(text[: m.start()].split()) < 2:
             continue  # "Hmm, not the bus - the truck": a correction, said first, stays as it is
         end = _CONTRAST_END.search(text, m.end())

@@ -110,6 +110,10 @@ def groups_said(text: str) -> dict[str, frozenset[str]]:
 _LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|side by side|next to each other|avenue)s?\b")
 
 
+# Both edges said: "on both sides", "either kerb", "each edge of the lane": two rows, one a side.
+BOTH_SIDES = re.compile(r"\b(?:both|either|each)\s+(?:sides?|edges?|kerbs?|curbs?)\b|\bon (?:both|each|either) side\b")
+
+
 def layout_said(text: str) -> str | None:
     """The shape of layout the words ask for ("in a line", "a row of", "a ring", "side by side"
     is a row), if any."""

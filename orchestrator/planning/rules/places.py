@@ -18,8 +18,11 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_place
+from drivetwin.tools.errors import ToolError
+from drivetwin.tools.locate import Location, resolve_anchor
 from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, polyline_length
+from pydantic import ValidationError
 
 RELATIONS = (
     (("in front of", "ahead of", "front of", "infront", "in front"), "in_front_of"),
@@ -451,6 +454,15 @@ _COMPASS_OF = re.compile(r"\b(north|south|east|west)\s+of\b")
 _UNIT = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
 
 
+# A closure of one lane says so: "block the eastbound lane" (not "close Main Street", not "both lanes").
+_ONE_LANE = re.compile(r"\b(?<!both )(?<!all )(?<!two )lane\b")
+
+
+def one_lane_named(r: Reading) -> bool:
+    """Whether the words name one lane of a road ("the eastbound lane"), not the road or both lanes."""
+    return r.lane is not None and _ONE_LANE.search(r.low) is not None
+
+
 @dataclass(frozen=True)
 class CrossSection:
     """Where a line closing a road or driveway stands: its middle, the way it runs, how wide it is."""
@@ -475,8 +487,11 @@ def cross_section(r: Reading, scene: Scene, where: dict[str, Any] | None) -> Cro
         return CrossSection(round(x - DRIVEWAY_IN_M * math.cos(heading), 2), round(y - DRIVEWAY_IN_M * math.sin(heading), 2),
                             round(math.degrees(heading) + 90.0, 1), DRIVEWAY_WIDTH_M)
     lane = scene.roads.lane(r.lane) if r.lane else None
+    spot = _spot_by_a_thing(scene, where) if place is None else None
     if place is not None:
         x, y = place.position
+    elif spot is not None:  # "block the eastbound lane 30 m ahead of the ego": there, not the lane's middle
+        x, y = spot
     elif lane is not None:
         x, y = lane.centreline[len(lane.centreline) // 2]
     else:
@@ -491,13 +506,26 @@ def cross_section(r: Reading, scene: Scene, where: dict[str, Any] | None) -> Cro
         lane = min(scene.roads.lanes, key=lambda ln: nearest_on_polyline(x, y, ln.centreline).distance, default=None)
     if lane is None:
         return None
-    road = [ln for ln in scene.roads.lanes if ln.road == lane.road] if lane.road else [lane]
+    # A lane named is closed alone ("block the eastbound lane"); else every lane of the road there.
+    road = [ln for ln in scene.roads.lanes if ln.road == lane.road] if lane.road and not one_lane_named(r) else [lane]
     feet = [nearest_on_polyline(x, y, ln.centreline) for ln in road]
     near = nearest_on_polyline(x, y, lane.centreline)
     kept = [(ln, f) for ln, f in zip(road, feet, strict=True) if math.dist((f.x, f.y), (near.x, near.y)) <= ln.width + lane.width]
     mx = sum(f.x for _, f in kept) / len(kept)
     my = sum(f.y for _, f in kept) / len(kept)
     return CrossSection(round(mx, 2), round(my, 2), round(math.degrees(near.heading) + 90.0, 1), sum(ln.width for ln, _ in kept))
+
+
+def _spot_by_a_thing(scene: Scene, where: dict[str, Any] | None) -> tuple[float, float] | None:
+    """The point a location relative to a thing (an asset or the ego, not a lane) names, or None."""
+    target = str((where or {}).get("target") or "")
+    if not target or scene.roads.lane(target) is not None or (scene.asset(target) is None and target != "ego"):
+        return None
+    try:
+        anchor = resolve_anchor(scene, Location.model_validate(where), 0.0)
+    except (ToolError, ValidationError):
+        return None
+    return anchor.x, anchor.y
 
 
 _SIDE_OF = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z][a-z ]*)")

@@ -53,6 +53,7 @@ from drivetwin.orchestrator.planning.rules.places import (
     cross_section,
     each_place_named,
     location,
+    one_lane_named,
     places_called,
     said_a_place,
 )
@@ -685,13 +686,17 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         if env:
             return env
     closure = _ACROSS_ROAD.search(r.low) and r.mentions and all(_closes_roads(m.category) for m in r.mentions)
+    closure = closure or (_SEALED_OFF.search(r.low) is not None and _way_through(r, scene))
     if (r.has(lx.BLOCK_WORDS) or _CLOSE_ROAD.search(r.low) or closure) and not r.ids:
         return [_block(r, scene, memory, notes)]
     instrument = _WITH_LAYOUT.search(r.low) or _LAYOUT_VERB_WITH.search(r.low)
     if instrument is not None and any(m.start > instrument.start() for m in r.mentions):
         # "stop cars driving in through the gate with a row of bollards": the row is what to build
         laid = [m for m in r.mentions if m.start > instrument.start()]
-        return [_arrange(replace(r, mentions=laid), scene, memory, notes)]
+        around = _AROUND.search(r.low[: instrument.start()])
+        # "cordon the tree by the library off with bollards": what is ringed stays named
+        ringed = [m for m in r.mentions if around is not None and around.start() < m.start < instrument.start()]
+        return _both_sides(_arrange(replace(r, mentions=[*laid, *ringed]), scene, memory, notes), r, scene)
     strict_add = r.has(tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r) or filled
     mention = r.mentions[0] if r.mentions else None
     # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
@@ -739,11 +744,11 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return env or None
     laid_out = (r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
                 or _AROUND_BY.search(r.low) is not None  # "the fountain should be ringed by six benches"
-                or (mention.plural and r.has(("along",)))  # "trees along one side of lot A"
+                or (mention.plural and (r.has(("along",)) or _LINING.search(r.low) is not None))  # "trees along one side of lot A"
                 or (mention.plural and nb.spacing_said(r.low) is not None))  # "four cones 8 m apart": a line
     moving = behaviour_kind(r, catalog()[mention.category]) not in (None, "parked")  # a row may be parked
     if (laid_out and not moving) or r.has(("to mark",)):
-        return [_arrange(r, scene, memory, notes)]
+        return _both_sides(_arrange(r, scene, memory, notes), r, scene)
     return _add(r, scene, memory, notes)
 
 
@@ -836,13 +841,33 @@ def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     across = cross_section(r, scene, where) if where.get("relation") not in ("absolute", "in_front_of", "behind") else None
     if across is not None:
         spacing = CLOSURE_SPACING_M.get(kinds[0], CLOSURE_SPACING_DEFAULT_M)
-        count = count or max(2, round(across.width / spacing))
+        length = catalog()[kinds[0]].length
+        # Unless told, one every `spacing` metres, at least three where three fit (a line), two at least.
+        fit = int((across.width + CLOSURE_GAP_M) // (length + CLOSURE_GAP_M))
+        count = count or max(2, min(fit, max(3, round(across.width / spacing))))
         args["location"] = {"relation": "absolute", "x": across.x, "y": across.y}
         args["heading_deg"] = across.heading_deg
-        args["spacing"] = round(min(across.width / count, spacing), 2)  # every lane covered, none overhung
+        # Every lane covered, none overhung, and neighbours never overlapping (two barriers in one lane).
+        args["spacing"] = round(max(min(across.width / count, spacing), length + CLOSURE_GAP_M), 2)
     if count:
         args["count"] = count
     return ToolCall(tool="arrange_assets", args=args)
+
+
+# Closing a way through off: "fence off the lot A entrance", "seal off the east gate with cones".
+_SEALED_OFF = re.compile(r"\b(?:fenc|cordon|seal|rop|barricad)(?:e|es|ed|ing)?\s+(?:[\w-]+\s+){0,4}?off\b")
+
+
+def _way_through(r: Reading, scene: Scene) -> bool:
+    """Whether the place named is a way through that a line closes (a road, a lane, a gate or a
+    lot's entrance), not a thing or a place that a fence rings (a tree, the fountain, a lot)."""
+    if r.ids or any(not _closes_roads(m.category) for m in r.mentions):
+        return False
+    if r.landmark is None:
+        return r.lane is not None
+    place = scene.landmark(r.landmark)
+    lots = [lm.name for lm in scene.landmarks if lm.kind == "area"]
+    return place is not None and (place.name.endswith(" gate") or any(place.name == f"{lot} entrance" for lot in lots))
 
 
 def _closes_roads(category: str) -> bool:
@@ -852,11 +877,13 @@ def _closes_roads(category: str) -> bool:
 
 
 # A line laid across the road, or one meant to stop traffic: a closure ("5 cones across the street").
-_ACROSS_ROAD = re.compile(r"\b(?:across|over|spanning) (?:the )?(?:whole )?(?:road|street|carriageway)\b"
+_ACROSS_ROAD = re.compile(r"\b(?:across|over|spanning) (?:the )?(?:whole )?(?:[a-z]+bound )?(?:road|street|carriageway|lanes?)\b"
                           r"|\bso (?:that )?(?:nobody|no one|no cars?|nothing|no traffic) can (?:drive|get|pass|go)\b")
 # Spacing of a closure's line: barriers end to end, anything smaller (cones, bollards) closer.
 CLOSURE_SPACING_M = {"road_barrier": 2.5}
 CLOSURE_SPACING_DEFAULT_M = 1.5
+# The least gap between neighbours of a closure's line.
+CLOSURE_GAP_M = 0.1
 
 
 # "a grid with 3 columns"; "colum" is how the word is often typed.
@@ -918,6 +945,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     parking = r.has(("parked", "side by side", "car park", "parking")) or "parking" in str(r.landmark or notes.place)
     if vehicles and parking and (r.has(("row", "rows", "line", "side by side", "next to each other")) or r.has(lx.ARRANGE_WORDS)):
         args["shape"] = "parking_row"  # "a row of parked cars in lot B": side by side in bays
+    elif _LINING.search(r.low) and not r.has(("across",)):
+        args["shape"] = "lane_edge"  # "line the road near the gate with cones", "cones along the kerb"
     elif r.has(("rows", "across")) or md.layout_said(r.low) in ("line", "row") or (
             md.layout_said(r.low) is None and nb.spacing_said(r.low) is not None):
         args["shape"] = "line"
@@ -937,12 +966,15 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         args["shape"] = "line"  # "benches along the north side of lot B"
     else:
         args["shape"] = "ring"
+    if args["shape"] == "ring" and _VAGUE_AMOUNT.search(r.low[: first.start]):
+        args.pop("count", None)  # "some bollards round the tree": as many as the ring needs
     where = location(r, scene, memory, notes)
     if args["shape"] == "lane_edge" and where is not None and where.get("relation") == "on_sidewalk" and r.landmark:
         where = {"relation": "at", "target": r.landmark}
     if args["shape"] == "ring":
         targets = [m for m in mentions if m.category not in layout]
-        named = [a for a in scene.assets if targets and a.category == targets[0].category]
+        # The first thing named that stands here ("cordon off" names barriers, none of them standing)
+        named = next(([a for a in scene.assets if a.category == t.category] for t in targets if scene.count(t.category)), [])
         if named and r.landmark and (mark := scene.landmark(r.landmark)) is not None:  # "the tree by the fountain"
             named.sort(key=lambda a: -math.hypot(a.pose.x - mark.position[0], a.pose.y - mark.position[1]))
         if named:
@@ -976,6 +1008,52 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
             (driver := scene.asset(str(place.get("target")))) is not None and catalog()[driver.category].drives):
         args["location"] = {**place, "distance": LINE_ACROSS_M}  # across a vehicle's way, where it can be seen coming
     return ToolCall(tool="arrange_assets", args=args)
+
+
+# Lining a road, a lane or its edge: "line the road with cones", "the edges of the bus lane", "along the kerb".
+_LINING = re.compile(
+    r"\bline[sd]?\s+(?:the\s+|both\s+|each\s+|either\s+|our\s+)?(?:[a-z]+\s+){0,2}?(?:roads?|lanes?|streets?|kerbs?|curbs?|edges?)\b"
+    r"|\b(?:edges?|kerbs?|curbs?) of (?:the |that |this |our )?(?:[a-z]+\s+){0,2}?(?:lanes?|roads?|streets?)\b"
+    r"|\balong (?:the |both |each |either )?(?:edges?|kerbs?|curbs?)\b|\blane edges?\b"
+)
+
+
+def _both_sides(call: ToolCall, r: Reading, scene: Scene) -> list[ToolCall]:
+    """A lane_edge row said on both sides, as one row per edge: a lane named alone is lined on its
+    left and right; a road, at each lane's kerb. Anything else is returned as it is."""
+    both = md.BOTH_SIDES.search(r.low)
+    if call.args.get("shape") != "lane_edge" or both is None:
+        return [call]
+    place = dict(call.args["location"])
+    lane = scene.roads.lane(str(place.get("lane") or place.get("target") or "")) or (scene.roads.lane(r.lane) if r.lane else None)
+    if lane is None:
+        x, y = _point_of(scene, place)
+        if x is None or y is None:
+            return [call]
+        lane = min(scene.roads.lanes, key=lambda ln: nearest_on_polyline(x, y, ln.centreline).distance)
+    count = call.args.get("count")
+    if count and "each" not in both.group(0):  # "ten cones on both sides": five a side
+        count = math.ceil(int(count) / 2)
+    sides: list[dict[str, Any]]
+    if one_lane_named(r) or not lane.road:
+        sides = [{**place, "lane": lane.id, "side": side} for side in ("right", "left")]
+    else:
+        sides = [{**place, "lane": ln.id} for ln in scene.roads.lanes if ln.road == lane.road]
+    if place.get("target") == lane.id:
+        sides = [{**side, "target": side["lane"]} for side in sides]
+    return [ToolCall(tool=call.tool, args={**call.args, "location": side, **({"count": count} if count else {})}) for side in sides]
+
+
+def _point_of(scene: Scene, place: dict[str, Any]) -> tuple[float | None, float | None]:
+    """The point a place's target stands at (a landmark or an asset), else (x, y) as given."""
+    target = str(place.get("target") or "")
+    mark = scene.landmark(target) if target else None
+    if mark is not None:
+        return mark.position
+    thing = scene.ego if target == "ego" else scene.asset(target) if target else None
+    if thing is not None:
+        return thing.pose.x, thing.pose.y
+    return place.get("x"), place.get("y")
 
 
 # A line longer than this cannot stand across a road: one said "ahead of" a thing runs along its path.

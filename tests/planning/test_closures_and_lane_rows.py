@@ -1,0 +1,152 @@
+"""Closures and rows along lanes, tried in this file's own words on the packaged campus world:
+a lane blocked a distance ahead of the ego, a lot entrance or a gate sealed off, a ring round a
+thing that keeps its neighbours out, a lane lined on both sides or as a whole, and what the
+world says when a fully read request cannot stand where it was asked."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from drivetwin.orchestrator.planning import PlanContext, PlanningError
+from drivetwin.orchestrator.planning.hybrid import HybridPlanner
+from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
+from drivetwin.orchestrator.planning.retrieval import RetrievalPlanner
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.tools import ToolRegistry
+from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.surface import point_in_polygon
+from misreading import Fixed  # this folder is on sys.path (no __init__.py)
+from test_check import submit
+
+
+def added(session, before: Scene, category: str):
+    old = {a.id for a in before.assets}
+    return [a for a in session.scene.assets if a.category == category and a.id not in old]
+
+
+def lane_of(scene: Scene, x: float, y: float) -> str:
+    return min(scene.roads.lanes, key=lambda ln: min(math.dist((x, y), p) for p in ln.centreline)).id
+
+
+def test_a_lane_blocked_a_distance_ahead_of_the_ego_is_closed_there_and_only_that_lane(session, campus):
+    report = session.submit("we need the eastbound lane shut 25 metres in front of our car, use barriers")
+    assert report.ok, report.error
+    barriers = added(session, campus, "road_barrier")
+    assert len(barriers) >= 2
+    ego = campus.ego.pose
+    assert all(abs(b.pose.x - (ego.x + 25)) < 3 for b in barriers)  # there, not the lane's middle
+    assert all(b.pose.y < 0.5 for b in barriers)  # the eastbound half of Main Street only
+
+
+def test_a_lane_named_alone_is_closed_alone_and_the_road_whole_when_the_road_is_named(session, campus):
+    assert session.submit("close off the westbound lane by the east gate").ok
+    lane_only = added(session, campus, "road_barrier")
+    assert lane_only and all(b.pose.y > 0 for b in lane_only)
+    before = session.scene
+    assert session.submit("close Main Street just west of the crossroads").ok
+    road = added(session, before, "road_barrier")
+    assert min(b.pose.y for b in road) < -1 and max(b.pose.y for b in road) > 1
+
+
+def test_a_row_across_a_path_with_no_count_is_as_many_as_fit(campus, registry):
+    tool = registry.get("arrange_assets")
+    result = tool.propose(tool.Args(categories=["road_barrier"], shape="line",
+                                    location={"relation": "in_front_of", "target": "ego", "distance": 30}), campus)
+    ids = result.data["ids"]
+    assert 2 <= len(ids) < 5 and "to fit across" in result.text
+    with pytest.raises(Exception, match="does not fit"):  # a count asked for is kept, or refused
+        tool.propose(tool.Args(categories=["road_barrier"], shape="line", count=6,
+                               location={"relation": "in_front_of", "target": "ego", "distance": 30}), campus)
+
+
+@pytest.mark.parametrize("prompt", ["barricade off the entrance to lot A", "seal the main gate off with cones"])
+def test_sealing_off_a_way_in_lays_a_line_across_it(session, campus, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    calls = report.plan.calls
+    assert [c.args["shape"] for c in calls] == ["line"]
+    where = "parking lot A entrance" if "lot A" in prompt else "main gate"
+    mark = campus.landmark(where)
+    assert mark is not None
+    new = [a for a in session.scene.assets if a.id not in {b.id for b in campus.assets}]
+    assert new and all(math.dist((a.pose.x, a.pose.y), mark.position) < 12 for a in new)
+
+
+def test_fencing_off_a_thing_rings_that_thing_and_leaves_its_neighbours_outside(session, campus):
+    report = session.submit("could you fence off the tree by the library with some bollards")
+    assert report.ok, report.error
+    tree = campus.asset("tree_1")
+    bench = campus.asset("bench_1")
+    assert tree is not None and bench is not None
+    bollards = added(session, campus, "bollard")
+    radii = [math.dist((b.pose.x, b.pose.y), (tree.pose.x, tree.pose.y)) for b in bollards]
+    assert len(bollards) >= 4 and max(radii) - min(radii) < 0.01
+    assert max(radii) < math.dist((bench.pose.x, bench.pose.y), (tree.pose.x, tree.pose.y))
+
+
+def test_a_road_lined_on_both_sides_gets_a_row_at_each_kerb_inside_the_world(session, campus):
+    report = session.submit("near the main gate, cones down both sides of the road please")
+    assert report.ok, report.error
+    cones = added(session, campus, "traffic_cone")
+    lanes = {lane_of(campus, c.pose.x, c.pose.y) for c in cones}
+    assert lanes == {"main_eastbound", "main_westbound"}
+    assert all(-110 <= c.pose.x <= 110 for c in cones)
+
+
+def test_one_lane_lined_on_both_edges_keeps_to_that_lane(session, campus):
+    report = session.submit("i'd like bollards on each edge of the northbound lane of Campus Drive")
+    assert report.ok, report.error
+    bollards = added(session, campus, "bollard")
+    xs = {round(b.pose.x, 1) for b in bollards}
+    assert len(xs) == 2 and all(0 < x < 3.5 for x in xs)  # its left and right edges
+
+
+def test_a_lane_lined_as_a_whole_is_not_lined_through_the_junction(session, campus):
+    report = session.submit("line the eastbound lane with barriers")
+    assert report.ok, report.error
+    junction = campus.landmark("main intersection")
+    assert junction is not None and junction.polygon is not None
+    barriers = added(session, campus, "road_barrier")
+    assert barriers and not any(point_in_polygon(b.pose.x, b.pose.y, junction.polygon) for b in barriers)
+
+
+def test_a_fully_read_request_the_world_refuses_says_why_and_what_could_stand_there() -> None:
+    from drivetwin.worlds.defaults import load_world
+
+    context = PlanContext(scene=load_world("campus"), registry=ToolRegistry.default(plugins=False))
+    planner = HybridPlanner(RulePlanner(), LlmPlanner(model="no-such-model"), retrieval=RetrievalPlanner())
+    with pytest.raises(PlanningError, match=r"^I could not do it: .*must stand on a road.*bollards can stand on"):
+        planner.plan("surround the fountain with barriers", context)
+
+
+def test_the_check_counts_each_side_and_refuses_walkers_added_standing(campus, registry):
+    twelve = [ToolCall(tool="add_asset", args={"category": "bollard", "count": 6, "location": loc})
+              for loc in ({"relation": "left_of", "target": "bus stop", "distance": 2.0},
+                          {"relation": "right_of", "target": "bus stop", "distance": 2.0})]
+    session, report = submit(campus, registry, Fixed(*twelve), "six bollards either side of the bus stop")
+    assert report.ok, report.error
+    standing = ToolCall(tool="add_asset", args={"category": "pedestrian", "location": {"relation": "at", "target": "fountain"}})
+    session, report = submit(campus, registry, Fixed(standing), "someone jogging past the fountain would be nice")
+    assert not report.ok and "jogging" in (report.error or "")
+    assert session.scene.assets == campus.assets
+
+
+def test_everything_but_one_thing_keeps_that_thing(session, campus):
+    report = session.submit("take everything away from the bus stop but the bench")
+    assert report.ok, report.error
+    assert session.scene.asset("bench_1") is not None
+    assert session.scene.asset("trash_bin_1") is None
+
+
+def test_one_of_a_group_is_removed_without_the_check_asking_for_all(session, campus):
+    report = session.submit("lose one of the cars over in lot B, any will do")
+    assert report.ok, report.error
+    assert len(session.scene.assets) == len(campus.assets) - 1
+
+
+def test_a_thing_picked_by_a_superlative_after_it_is_no_unknown_thing(session, campus):
+    report = session.submit("we don't need the tree nearest the fountain any more")
+    assert report.ok, report.error
+    assert session.scene.asset("tree_2") is None and session.scene.asset("tree_3") is not None
