@@ -12,7 +12,7 @@ from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.locate import SEARCH_RADIUS_M, Location, resolve_anchor, resolve_target
 from drivetwin.tools.rules import check_placement, footprint
-from drivetwin.worlds.catalog import category, placeable_categories
+from drivetwin.worlds.catalog import category, is_layout_kit, placeable_categories
 from drivetwin.worlds.edits import AddAsset, WorldEdit
 from drivetwin.worlds.scene import AssetInstance, Pose, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, polyline_length
@@ -63,12 +63,13 @@ class ArrangeArgs(ToolArgs):
 
 
 def _enclosing_radius(scene: Scene, centre: tuple[float, float], widths: list[float], kin: str | None) -> float:
-    """A ring radius that clears what stands near `centre` and belongs inside: work-zone kit (the
-    rubble and its cones) and things of the ringed thing's kind, not a bench beside a tree."""
+    """A ring radius that clears what stands near `centre` and belongs inside: work-zone kit and
+    the posts of an earlier ring (the rubble and its cones, a ring of bollards) and things of the
+    ringed thing's kind, not a bench beside a tree."""
     radius = 0.0
     for asset in scene.assets:
         distance = math.hypot(asset.pose.x - centre[0], asset.pose.y - centre[1])
-        inside = asset.category == kin or "maintenance" in category(asset.category).tags
+        inside = asset.category == kin or is_layout_kit(asset.category)
         if distance <= ENCLOSE_WITHIN_M and inside:
             reach = distance + category(asset.category).footprint_radius * asset.scale
             radius = max(radius, reach + RING_GAP_M + max(widths) / 2)

@@ -193,6 +193,17 @@ def category(name: str) -> Category:
     return found
 
 
+# Tags of the kit that layouts are built of: work-zone things, posts and markers (cones,
+# barriers, rubble, bollards). A ring encloses these where they stand at its centre, and a line
+# of them can close a road.
+LAYOUT_KIT_TAGS = frozenset({"maintenance", "block", "marker"})
+
+
+def is_layout_kit(name: str) -> bool:
+    """Whether the category `name` is layout kit (see LAYOUT_KIT_TAGS)."""
+    return bool(LAYOUT_KIT_TAGS & set(category(name).tags))
+
+
 def placeable_categories() -> list[str]:
     """Categories a Worker may add (everything but the ego vehicle)."""
     return [name for name, c in catalog().items() if "ego" not in c.tags]

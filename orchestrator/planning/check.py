@@ -89,7 +89,7 @@ from drivetwin.orchestrator.transaction import TransactionError, TransactionResu
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
-from drivetwin.worlds.catalog import catalog, placeable_categories
+from drivetwin.worlds.catalog import LAYOUT_KIT_TAGS, catalog, placeable_categories
 from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon
 
@@ -112,7 +112,7 @@ QUERY_TOOLS = tuple(sorted(SEARCH_TOOLS))
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 MAX_READINGS = 3
 # The catalog's tags of what a layout may add unnamed: markers, blocks, signs, roadworks.
-_LAYOUT_KIT = {"maintenance", "block", "marker", "sign"}
+_LAYOUT_KIT = LAYOUT_KIT_TAGS | {"sign"}
 # Words asking for one more of a thing there: what answers them adds.
 _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
 # A question about the scene's settings ("time + weather?", "what's the weather doing"): the

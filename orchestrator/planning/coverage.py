@@ -49,7 +49,7 @@ _PLACE_PREPOSITION = re.compile(
     r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|"
     r"along|alongside|across|through|past|beyond|"
     r"(?:far|away|distance|metres|meters|m)\b(?:[^,.;?]{0,40}?\s)?from|"  # "how far is the ego from the ..."
-    r"close to|opposite|where is|where's|where are)\s+the[ \t]?(?=([a-z][a-z' -]*))"  # (a look-ahead: "from the
+    r"close to|opposite|where is|where's|where are)\s+the (?=([a-z][a-z' -]*))"  # (a look-ahead: "from the
 )  # library to the pool" is read for both places; a known place masked to blanks is no name: "to the   anymore")
 # Arguments by which a call says where: a repaired place name ends up in one of them.
 _PLACE_ARG = re.compile(r"'(?:location|near|nearest_to|lane|asset|assets|target|x|y)':")
@@ -250,7 +250,9 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
         # bare as the clause's topic, with no word for adding, of which the scene holds one, is that one
         bare = (not m.plural and not asks_to_add and scene.count(m.category) == 1
                 and _BARE_TOPIC.search(m.before) is not None)
-        if (not (bare or any(w in _DEFINITE for w in m.last_words(2))) or not scene.count(m.category)
+        # "the red bench", but not "give the bus stop a bench": the nearest article is the noun's
+        indefinite = m.last_words(1)[-1:] in (["a"], ["an"], ["some"], ["any"])
+        if (not (bare or (any(w in _DEFINITE for w in m.last_words(2)) and not indefinite)) or not scene.count(m.category)
                 or (m.category in arranged and not every)):
             continue
         if any(a.category == m.category for a in scope.added) and m.category not in out:

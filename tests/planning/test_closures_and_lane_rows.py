@@ -150,3 +150,42 @@ def test_a_thing_picked_by_a_superlative_after_it_is_no_unknown_thing(session, c
     report = session.submit("we don't need the tree nearest the fountain any more")
     assert report.ok, report.error
     assert session.scene.asset("tree_2") is None and session.scene.asset("tree_3") is not None
+
+
+def test_a_side_of_a_road_is_its_lane_on_that_side_and_a_side_of_a_lot_is_no_lane(session, campus):
+    report = session.submit("add a car on the north side of Main Street")
+    assert report.ok, report.error
+    assert report.plan.calls[0].args["location"].get("target") == "main_westbound"
+    from drivetwin.orchestrator.planning.rules.reading import find_lane
+
+    assert find_lane(campus, "benches along the south side of lot b") is None  # a compass word saying where
+
+
+def test_a_possessive_before_a_known_place_is_no_unknown_place(campus, registry):
+    move = ToolCall(tool="place_asset", args={"asset": "suv_1", "location": {"relation": "at", "target": "JTEKT building entrance"}})
+    session, report = submit(campus, registry, Fixed(move), "the visitors are from JTEKT, so the SUV goes at their entrance")
+    assert report.ok, report.error
+
+
+def test_a_thing_that_casts_a_shadow_across_the_road_is_no_road_closure(session, campus):
+    report = session.submit("that tree by the library throws shade across the road")
+    assert session.scene.count("tree") <= campus.count("tree")
+    assert not report.ok or all(c.tool != "arrange_assets" for c in report.plan.calls)
+
+
+@pytest.mark.parametrize(("prompt", "place"), [("could we get some roadworks going by the east gate", "east gate"),
+                                               ("make it look like a building site outside the library", "Library entrance")])
+def test_roadworks_named_alone_are_cones_and_a_sign_at_the_place(session, campus, prompt, place):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    mark = campus.landmark(place)
+    assert mark is not None
+    cones, signs = added(session, campus, "traffic_cone"), added(session, campus, "construction_sign")
+    assert len(cones) >= 3 and len(signs) == 1
+    assert all(math.dist((a.pose.x, a.pose.y), mark.position) < 15 for a in [*cones, *signs])
+
+
+def test_roadworks_with_no_place_ask_where(session, campus):
+    report = session.submit("the scene needs roadworks")
+    assert not report.ok and "where" in (report.error or "")
+    assert session.scene.assets == campus.assets

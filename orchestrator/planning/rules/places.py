@@ -17,7 +17,7 @@ from typing import Any
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.reading import Reading, find_place
+from drivetwin.orchestrator.planning.rules.reading import Reading, find_place, lane_on_side
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import Location, resolve_anchor
 from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
@@ -559,8 +559,8 @@ _ROAD_KINDS = {"st": "street", "rd": "road", "ave": "avenue", "blvd": "boulevard
 
 def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
     """The side of a road or place the words name ("on the north side of Main Street"), as
-    words and as a test of whether a thing stands on it (beyond the nearest point of the road,
-    or the place, that way); None when they name none."""
+    words and as a test of whether a thing stands on it (beyond the road's middle, or the
+    place, that way); None when they name none."""
     said = _SIDE_OF.search(low)
     if said is None:
         alone = _SIDE_ALONE.search(low)
@@ -569,14 +569,14 @@ def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool
         return f"{alone.group(1)} side of the road", _beyond(_across(scene, alone.group(1)), alone.group(1))
     rest = _ROAD_KIND.sub(lambda m: _ROAD_KINDS[m.group(1)], said.group(2) + " ")  # "main st" is Main Street
     roads = {lane.road for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())}
-    points = [p for lane in scene.roads.lanes if lane.road in roads for p in lane.centreline]
+    lanes = [lane for lane in scene.roads.lanes if lane.road in roads]
     name = next(iter(roads), None)
-    if not points:
-        marks = [lm for lm in scene.landmarks if any(rest.startswith(ph.normalise(n).strip()) for n in lm.names())]
-        points, name = ([marks[0].position], marks[0].name) if marks else ([], None)
-    if not points:
+    if lanes:  # beyond the road's middle: the lane on that side is on that side
+        return f"{said.group(1)} side of {name}", _beyond_middle(lanes, said.group(1))
+    marks = [lm for lm in scene.landmarks if any(rest.startswith(ph.normalise(n).strip()) for n in lm.names())]
+    if not marks:
         return None
-    return f"{said.group(1)} side of {name}", _beyond(points, said.group(1))
+    return f"{said.group(1)} side of {marks[0].name}", _beyond([marks[0].position], said.group(1))
 
 
 def side_lane(low: str, scene: Scene) -> str | None:
@@ -588,15 +588,8 @@ def side_lane(low: str, scene: Scene) -> str | None:
         return None
     rest = _ROAD_KIND.sub(lambda m: _ROAD_KINDS[m.group(1)], said.group(2) + " ")
     lanes = [lane for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())]
-    if len(lanes) < 2:
-        return None
-    dx, dy = md.COMPASS_VECTORS[said.group(1)]
-
-    def reach(lane: Lane) -> float:
-        return float(sum(x * dx + y * dy for x, y in lane.centreline) / len(lane.centreline))
-
-    ranked = sorted(lanes, key=reach, reverse=True)
-    return str(ranked[0].id) if reach(ranked[0]) > reach(ranked[1]) + 0.5 else None
+    furthest = lane_on_side(lanes, said.group(1))
+    return furthest.id if furthest is not None else None
 
 
 def _across(scene: Scene, way: str) -> list[tuple[float, float]]:
@@ -615,6 +608,19 @@ def _across(scene: Scene, way: str) -> list[tuple[float, float]]:
 
 # A road runs across a compass direction when its heading is within 60 degrees of square to it.
 ACROSS_COS = 0.5
+
+
+def _beyond_middle(lanes: list[Lane], way: str) -> Callable[[AssetInstance], bool]:
+    """Whether a thing stands beyond the middle of a road (between its lanes' nearest points) in
+    compass direction `way`."""
+    dx, dy = md.COMPASS_VECTORS[way]
+
+    def beyond(a: AssetInstance) -> bool:
+        feet = [nearest_on_polyline(a.pose.x, a.pose.y, lane.centreline) for lane in lanes]
+        mx, my = sum(f.x for f in feet) / len(feet), sum(f.y for f in feet) / len(feet)
+        return (a.pose.x - mx) * dx + (a.pose.y - my) * dy > 0
+
+    return beyond
 
 
 def _beyond(points: list[tuple[float, float]], way: str) -> Callable[[AssetInstance], bool]:

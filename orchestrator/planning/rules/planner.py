@@ -72,7 +72,7 @@ from drivetwin.orchestrator.planning.rules.replacing import replace_things, repl
 from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
-from drivetwin.worlds.catalog import catalog, nearest_categories
+from drivetwin.worlds.catalog import catalog, is_layout_kit, nearest_categories
 from drivetwin.worlds.scene import Scene
 from drivetwin.worlds.surface import nearest_on_polyline, surface_at
 
@@ -175,6 +175,8 @@ _NEGATED_WISH = re.compile(
 )
 
 
+# The guess noted when a request is only a statement, read as the edit it describes.
+STATEMENT_READ = "read a statement of how things are as the request"
 # A clause that says how things are ("the bench by the stop is in the way"), not what to do.
 # So is one that opens on a thing and says what it does ("the test car starts too close", "the two
 # trees block the view"), unless it says what should be ("the bus should stop", "it belongs in lot A").
@@ -440,8 +442,9 @@ class RulePlanner:
                 "I can tell what is wrong, but not what you want instead; say how it should be, "
                 "e.g. 'make it daytime', 'remove the cones'"
             )
-        if not calls:
-            calls = described
+        if not calls and described:
+            calls = described  # "the bench by the stop is in the way", and nothing else: what it says is a guess at the wish
+            notes.guess(STATEMENT_READ)
         calls = _alike(calls, text.lower(), scene, context.memory)  # "another exactly like it"
         if calls and asks(text.lower()) and not any(commands(clause.lower()) for clause, _, _ in clauses):
             # "a driver mentioned a stop sign by the crossing; I want to confirm it's there": what the
@@ -685,6 +688,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         env = environment(r, scene.environment)
         if env:
             return env
+    gone = taken_away or fewer or r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS)
+    if not (r.mentions or r.ids or r.ego or gone) and r.has(lx.WORKS_WORDS):
+        return _work_zone(r, scene, memory, notes)  # "set up roadworks by the east gate", "make it look like a building site"
     closure = _ACROSS_ROAD.search(r.low) and r.mentions and all(_closes_roads(m.category) for m in r.mentions)
     closure = closure or (_SEALED_OFF.search(r.low) is not None and _way_through(r, scene))
     if (r.has(lx.BLOCK_WORDS) or _CLOSE_ROAD.search(r.low) or closure) and not r.ids:
@@ -870,10 +876,31 @@ def _way_through(r: Reading, scene: Scene) -> bool:
     return place is not None and (place.name.endswith(" gate") or any(place.name == f"{lot} entrance" for lot in lots))
 
 
+# What roadworks said with no things named are made of: a line of cones, and a sign beside them.
+WORK_ZONE_CONES = 5
+# Metres east of a line of cones said by coordinates that its sign stands (beside, not on, the middle cone).
+WORK_ZONE_SIGN_M = 3.0
+
+
+def _work_zone(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
+    """Roadworks asked for by name alone, at the place said: a line of cones marked as
+    maintenance and a construction sign next to it; asked where when no place is said."""
+    where = location(r, scene, memory, notes) or (dict(notes.place) if notes.place else None)
+    if where is None:
+        raise PlanningError("where should the roadworks go? name a place, e.g. 'roadworks by the east gate'")
+    cones = ToolCall(tool="arrange_assets", args={"categories": ["traffic_cone"], "shape": "line", "count": WORK_ZONE_CONES,
+                                                   "location": where, "label": "maintenance"})
+    beside = ({**where, "relation": "next_to"} if where.get("target") else
+              {**where, "x": float(where.get("x") or 0.0) + WORK_ZONE_SIGN_M} if where.get("relation") == "absolute" else where)
+    sign = ToolCall(tool="add_asset", args={"category": "construction_sign", "label": "maintenance", "location": beside})
+    return [cones, sign]
+
+
 def _closes_roads(category: str) -> bool:
-    """Whether a line of these can close a road: a prop that may stand in a lane (cones, barriers)."""
+    """Whether a line of these can close a road: work-zone or blocking kit that may stand in a lane
+    (cones, barriers, bollards, rubble), not a tree whose shadow falls "across the road"."""
     kind = catalog()[category]
-    return kind.motion == "prop" and kind.placement != "sidewalk"
+    return kind.motion == "prop" and kind.placement != "sidewalk" and is_layout_kit(category)
 
 
 # A line laid across the road, or one meant to stop traffic: a closure ("5 cones across the street").

@@ -15,13 +15,15 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.worlds.catalog import catalog
-from drivetwin.worlds.scene import AssetInstance, Scene
+from drivetwin.worlds.scene import AssetInstance, Lane, Scene
 
 # An article before a word; "lot A" at the end of a name keeps its letter.
 _ARTICLES = re.compile(r"\b(the|a|an)\s+(?=[a-z0-9])")
 _NEW_DETERMINERS = {"a", "an", "some", "another", "new", "more", "extra", "additional", "few", "several"}
 _OLD_DETERMINERS = {"the", "that", "those", "these", "our", "its", "their", "his", "her", "this", "my", "your"}
 _DIRECTIONS = {"west": "westbound", "east": "eastbound", "north": "northbound", "south": "southbound"}
+_COMPASS_PLACE = re.compile(r"\b(?:north|south|east|west)(?:ern)?(?= side of\b| end of\b| of\b| corner\b| half\b| edge\b)"
+                            r"|\bto the (?:north|south|east|west)\b")
 
 
 @dataclass
@@ -200,7 +202,15 @@ def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
         pos = spaced.find(key)
         if pos >= 0:
             return lane.id, pos, pos + len(key), False
-    words = set(ph.tokens(spaced))
+    side = _ROAD_SIDE.search(spaced)
+    if side is not None:  # "the north side of Main Street": that road's lane furthest north
+        lanes = [ln for ln in scene.roads.lanes if ln.road and side.group(2).startswith(ln.road.lower())]
+        furthest = lane_on_side(lanes, side.group(1))
+        if furthest is not None:
+            return furthest.id, side.start(), side.end(), False
+    # "the south side of lot B", "north of the fountain", "to the east": a compass word saying
+    # where, not which way a lane runs
+    words = set(ph.tokens(_COMPASS_PLACE.sub(" ", spaced)))
     directions = {_DIRECTIONS.get(w.removesuffix("wards").removesuffix("ward"), w) for w in words}
     matches = [lane for lane in scene.roads.lanes if lane.id.rsplit("_", 1)[-1] in directions]
     roads = [lane for lane in matches if lane.road.lower() in spaced] or matches
@@ -211,6 +221,22 @@ def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
         if pos >= 0:
             return lane.id, pos, pos + len(lane.road), True
     return None
+
+
+_ROAD_SIDE = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z][a-z ]*)")
+
+
+def lane_on_side(lanes: list[Lane], way: str) -> Lane | None:
+    """Of a road's lanes, the one furthest `way` (a compass word), when one clearly is."""
+    if len(lanes) < 2:
+        return None
+    dx, dy = md.COMPASS_VECTORS[way]
+
+    def reach(lane: Lane) -> float:
+        return float(sum(x * dx + y * dy for x, y in lane.centreline) / len(lane.centreline))
+
+    ranked = sorted(lanes, key=reach, reverse=True)
+    return ranked[0] if reach(ranked[0]) > reach(ranked[1]) + 0.5 else None
 
 
 _PERCEPTION_TASK = re.compile(r"\s*(?:detection|detector|tracking|recognition|classification|perception)\b")
