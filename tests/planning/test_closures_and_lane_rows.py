@@ -165,6 +165,7 @@ def test_a_possessive_before_a_known_place_is_no_unknown_place(campus, registry)
     move = ToolCall(tool="place_asset", args={"asset": "suv_1", "location": {"relation": "at", "target": "JTEKT building entrance"}})
     session, report = submit(campus, registry, Fixed(move), "the visitors are from JTEKT, so the SUV goes at their entrance")
     assert report.ok, report.error
+    assert session.scene.asset("suv_1") != campus.asset("suv_1")
 
 
 def test_a_thing_that_casts_a_shadow_across_the_road_is_no_road_closure(session, campus):
