@@ -190,3 +190,15 @@ def test_roadworks_with_no_place_ask_where(session, campus):
     report = session.submit("the scene needs roadworks")
     assert not report.ok and "where" in (report.error or "")
     assert session.scene.assets == campus.assets
+
+
+def test_a_place_said_to_feel_empty_is_never_emptied(session, campus):
+    report = session.submit("honestly the bus stop looks empty")
+    assert all(session.scene.asset(a.id) is not None for a in campus.assets)  # nothing taken away
+    assert not report.ok or not any(c.tool == "remove_assets" for c in report.plan.calls)
+
+
+def test_lamps_that_should_be_working_are_switched_on(session):
+    report = session.submit("for tonight's run the street lamps should be working")
+    assert report.ok, report.error
+    assert session.scene.environment.lighting.street_lights == "on"

@@ -672,7 +672,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         if removed is not None:
             return removed
     # "turn the lamps on", and a state wished for: "the street lights must be on", "lamps should be lit"
-    switch = re.search(r"\b(turn|switch|put|flick|make)\b.*\b(on|off)\b|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit)\b"
+    switch = re.search(r"\b(turn|switch|put|flick|make)\b.*\b(on|off)\b|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit|working)\b"
                        r"|\b((?:street\s?)?lights?|(?:street\s?)?lamps?)\s+(on|off)\s*[.!]*\s*$", r.low)  # "street lights on."
     switch = switch or LIGHTS_DOWN.search(r.low)  # "the street lamps are out": off
     if switch and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
