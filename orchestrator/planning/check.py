@@ -45,6 +45,7 @@ from drivetwin.orchestrator.planning.coverage import (
     away_from_thing,
     back_reference,
     definite_but_added,
+    described_not_destination,
     environment_left_out,
     excepted_ids,
     excepted_touched,
@@ -270,6 +271,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += _not_between(request, scene, [*effect.added, *_moved(effect)])
     out += _amount_words_left_out(request, effect, scene)
     out += _already_there(effect, scene)
+    out += described_not_destination(request.low, effect.calls, scene)
     if request.state is not None and (effect.removed or effect.changed):
         before = [scene.asset(a.id) or a for a in effect.changed]  # as it was: "the parked SUV to pull out"
         wrong = [a for a in [*effect.removed, *before] if a.id != "ego"

@@ -516,7 +516,8 @@ def unpointed(masked: str, scope: Scope, scene: Scene) -> list[AssetInstance]:
         return []
     if any(re.search(rf"\b{re.escape(i)}\b", masked) for a in acted for i in (a.id, a.id.replace("_", " "))):
         return []
-    return acted
+    # a mass word for their kind points at them ("drop the greenery": the trees)
+    return [a for a in acted if not any(re.search(rf"\b{re.escape(w)}\b", low) for w in lx.CONCEPTS.get(a.category, ()))]
 
 
 def _category_of(asset_id: str, scene: Scene) -> str | None:
@@ -773,6 +774,38 @@ def place_moved(low: str, scope: Scope, scene: Scene) -> list[str]:
         if re.search(_MOVING_VERB + re.escape(said) + _PLACE_ENDS, low):
             return [f"{name} is a place of this world; it stays where it is, but things at it can be moved or removed"]
     return []
+
+
+# A relation said right after a thing's name, picking it out ("the tree behind the bus stop"), and a
+# predicate or a destination after that ("... is diseased", "... to the fountain"): where it stands.
+_WHERE_IT_STANDS = r"\s+(?:right |just )?(?:behind|next to|beside|by|near|in front of|at|opposite|across from|outside)\s+(?:the\s+)?"
+_PREDICATE = re.compile(r"\b(?:is|are|was|were|has|have|had|needs?|must|should|keeps?|looks?|seems?|throws?|blocks?|casts?"
+                        r"|gets?|hides?|spoils?|ruins?)\b"
+                        r"|\b(?:to|into|onto|towards?)\s+(?:the\s+)?[a-z]")  # or where it should go, said after it
+
+
+def described_not_destination(low: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
+    """Things put at the place the words only pick them out by ("the tree behind the bus stop is
+    diseased and has to come down"): the plan moves them to where they are said to stand."""
+    out = []
+    indexed = ph.normalise(low)
+    mentions = ph.find_categories(low)
+    for call in calls:
+        where = call.args.get("location") if call.tool == "place_asset" else None
+        thing = scene.asset(str(call.args.get("asset"))) if isinstance(where, dict) else None
+        target = str(where.get("target") or "") if isinstance(where, dict) else ""
+        if thing is None or not target:
+            continue
+        mark = scene.landmark(target)
+        other = scene.asset(target)
+        names = ([n for name in mark.names() for n in (ph.normalise(name).strip(), ph.normalise(name).split()[0])] if mark
+                 else [other.category.replace("_", " ")] if other else [])
+        for m in (m for m in mentions if m.category == thing.category):
+            said = re.match(_WHERE_IT_STANDS + "(?:" + "|".join(re.escape(n) for n in names if n) + r")\b", indexed[m.end :])
+            if names and said and _PREDICATE.search(re.split(r"[.;!?]", indexed[m.end + said.end() :])[0]):
+                out.append(f"you said where the {thing.category.replace('_', ' ')} stands"
+                           f" ({indexed[m.start : m.end + said.end()].strip()!r}), not where it should go")
+    return out
 
 
 def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:

@@ -12,7 +12,7 @@ import re
 from drivetwin.tools.appearance import COLOURS
 
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|out of scope|clear (away|out|the)|no longer|don'?t want|do not want"
+    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here)\b)|out of scope|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|be (?:there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
@@ -195,6 +195,19 @@ def _contrasts(text: str) -> list[tuple[int, int, int]]:
     return out
 
 
+# A greeting, thanks or sign-off said as a clause of its own ("Good afternoon.", "hi there,", "Thank
+# you kindly, Margaret."); "good night" is left alone: it may ask for the night.
+_SALUTATION = re.compile(
+    r"(?:^|(?<=[.!?]))\s*(?:good\s+(?:morning|afternoon|evening|day)|hello|hi|hey|hiya|greetings|dear\s+\w+"
+    r"|(?:many\s+)?thanks?(?:\s+you)?(?:\s+(?:so\s+much|kindly|very\s+much|in\s+advance|a\s+lot))?|cheers|(?:kind\s+|best\s+)?regards)"
+    r"(?:\s*,?\s+(?:there|all|everyone|team|folks|[a-z]+))?\s*(?:[,.!]+|$)", re.IGNORECASE)
+
+
+def without_salutations(text: str) -> str:
+    """`text` without the clauses that only greet, thank or sign off."""
+    return _SALUTATION.sub(" ", text).strip()
+
+
 def excepted(text: str) -> list[str]:
     """The things a request says it does not mean ("remove the cars, not the ego" -> ["the ego"])."""
     return [text[said:end].strip() for _, said, end in _contrasts(text) if text[said:end].strip()]
@@ -364,5 +377,6 @@ __all__ = [
     "taken_back",
     "without_contrast",
     "without_reason",
+    "without_salutations",
     "wrapped_request",
 ]

@@ -13,7 +13,15 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, asks, excepted, taken_back, without_reason
+from drivetwin.orchestrator.planning.intent import (
+    ADD_WORDS,
+    REMOVE_WORDS,
+    asks,
+    excepted,
+    taken_back,
+    without_reason,
+    without_salutations,
+)
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -73,7 +81,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     repaired = taken_back(repair(prompt, scene).text)[0]  # "..., no wait, scrap that, ...": what follows
     given = condition(repaired, scene)  # "if there's a bus, paint it yellow": the bus there, or a question
     repaired = given.request if given is not None and given.met else repaired
-    low = ph.normalise(without_reason(repaired)).strip()
+    low = ph.normalise(without_reason(without_salutations(repaired) or repaired)).strip()
     place = _named_place(scene, low)
     masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for

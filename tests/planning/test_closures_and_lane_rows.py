@@ -202,3 +202,34 @@ def test_lamps_that_should_be_working_are_switched_on(session):
     report = session.submit("for tonight's run the street lamps should be working")
     assert report.ok, report.error
     assert session.scene.environment.lighting.street_lights == "on"
+
+
+@pytest.mark.parametrize("prompt", ["that tree behind the bus stop is rotten and should be felled",
+                                    "shift the bench by the bus stop over to the fountain"])
+def test_a_thing_picked_out_by_where_it_stands_is_not_moved_there(campus, registry, prompt):
+    thing = "tree_1" if "tree" in prompt else "bench_1"
+    there = ToolCall(tool="place_asset", args={"asset": thing, "location": {"relation": "behind" if "tree" in prompt else "next_to",
+                                                                             "target": "bus stop"}})
+    session, report = submit(campus, registry, Fixed(there), prompt)
+    said = report.error or (report.question.text if report.question else "")
+    assert not report.ok and "not where it should go" in said
+    assert session.scene.assets == campus.assets
+    # said as where it should go, the same plan is applied
+    session, report = submit(campus, registry, Fixed(there), f"put the {'tree' if 'tree' in prompt else 'bench'} by the bus stop")
+    assert report.ok, report.error
+
+
+def test_a_greeting_and_a_sign_off_set_no_time_of_day(session, campus):
+    report = session.submit("Good evening! Could we have a bench by the fountain? Many thanks, Ruth.")
+    assert report.ok, report.error
+    assert [c.tool for c in report.plan.calls] == ["add_asset"]
+    assert session.scene.environment == campus.environment
+
+
+def test_dropping_the_things_there_takes_them_away_and_a_mass_word_points_at_them(session, campus):
+    report = session.submit("drop the vegetation")
+    assert report.ok, report.error
+    assert session.scene.count("tree") == 0
+    report = session.submit("drop a bench next to the bus stop")
+    assert report.ok, report.error
+    assert session.scene.count("bench") == campus.count("bench") + 1

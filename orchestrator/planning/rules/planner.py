@@ -26,6 +26,7 @@ from drivetwin.orchestrator.planning.intent import (
     commands,
     taken_back,
     without_reason,
+    without_salutations,
     wrapped_request,
 )
 from drivetwin.orchestrator.planning.readings import describe
@@ -220,6 +221,7 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
     """The clauses of a prompt, each with whether it was asked as a question and whether it only
     introduces what follows its colon ("our robot needs a warning: put ..."); without the clauses
     that say why unless `reasons`."""
+    prompt = without_salutations(prompt) or prompt  # "Good afternoon. ...": manners, not a time of day
     kept = prompt if reasons else without_reason(prompt).strip() or prompt
     parts = _SPLIT.split(_TRAILING_OFF.sub(" ", kept))
     out: list[tuple[str, bool, bool]] = []
