@@ -233,3 +233,22 @@ def test_dropping_the_things_there_takes_them_away_and_a_mass_word_points_at_the
     report = session.submit("drop a bench next to the bus stop")
     assert report.ok, report.error
     assert session.scene.count("bench") == campus.count("bench") + 1
+
+
+def test_a_spacing_in_feet_is_laid_out_in_metres(session, campus):
+    report = session.submit("a line of 4 bollards ten feet apart in lot B")
+    assert report.ok, report.error
+    xs = sorted((b.pose.x, b.pose.y) for b in added(session, campus, "bollard"))
+    gaps = [math.dist(a, b) for a, b in zip(xs, xs[1:], strict=False)]
+    assert len(gaps) == 3 and all(abs(g - 3.05) < 0.1 for g in gaps)
+
+
+def test_a_side_of_an_area_is_just_inside_that_edge(session, campus):
+    report = session.submit("three benches in a line along the western edge of the parking lot B")
+    assert report.ok, report.error
+    lot = campus.landmark("parking lot B")
+    assert lot is not None and lot.polygon is not None
+    west = min(x for x, _ in lot.polygon)
+    benches = added(session, campus, "bench")
+    assert len(benches) == 3 and all(b.pose.x - west < 6 for b in benches)
+    assert max(b.pose.y for b in benches) - min(b.pose.y for b in benches) > 1  # running along that edge

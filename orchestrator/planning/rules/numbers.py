@@ -96,11 +96,12 @@ def spelt_counts() -> dict[str, int]:
     return counts | {"hundred": 100}
 
 
-# Lengths in other units, said in metres by every reader: a yard, and a car's length as people
+# Lengths in other units, said in metres by every reader: a yard, a foot, and a car's length as people
 # measure gaps on a road ("nudge it up a car length", "two car lengths back").
 YARD_M = 0.9144
 CAR_LENGTH_M = 4.5
-_OTHER_LENGTHS = re.compile(r"\b(\d+(?:\.\d+)?)\s*(yards?|yds?|(?:car|vehicle)[- ]lengths?)\b", re.IGNORECASE)
+FOOT_M = 0.3048
+_OTHER_LENGTHS = re.compile(r"\b(\d+(?:\.\d+)?)\s*(yards?|yds?|feet|foot|ft|(?:car|vehicle)[- ]lengths?)\b(?!\s*tall)", re.IGNORECASE)
 _ONE_CAR_LENGTH = re.compile(r"\b(?:a|one) (?:car|vehicle)[- ]length\b", re.IGNORECASE)
 
 
@@ -118,7 +119,7 @@ _MULTIPLE_OF = {"hundred": 100, "thousand": 1000}
 def spelt_measures(text: str) -> str:
     """`text` with measures spelt in words written in figures ("two metres" -> "2 metres"), dozens,
     hundreds and thousands as counts ("half a dozen" -> "6", "a thousand" -> "1000"), and lengths in yards or car lengths in metres ("3 yards" ->
-    "2.74 m")."""
+    "2.74 m", "5 feet" -> "1.52 m")."""
     def figures(m: re.Match[str]) -> str:
         article = m.group(1).lower() in ("a", "an")
         if article and re.match(r"(?:m|ft|km|secs?|mins?|mph|kph)\b", m.string[m.end() :], re.IGNORECASE):
@@ -126,7 +127,8 @@ def spelt_measures(text: str) -> str:
         return f"{_spelt_value(m.group(1)):g} "
 
     def metres(m: re.Match[str]) -> str:
-        unit = YARD_M if m.group(2).lower().startswith("y") else CAR_LENGTH_M
+        said = m.group(2).lower()
+        unit = YARD_M if said.startswith("y") else FOOT_M if said.startswith("f") else CAR_LENGTH_M
         return f"{float(m.group(1)) * unit:.3g} m"
 
     text = _DOZENS.sub(lambda m: str(_DOZEN_OF[m.group(1).lower()]), text)

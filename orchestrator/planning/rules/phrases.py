@@ -18,7 +18,7 @@ from drivetwin.worlds.scene import EGO_ID, Scene
 # Counts in words: every number spelt as one word ("seventy", "thirty-five"), and the words for a few.
 NUMBER_WORDS = nb.spelt_counts() | {"a": 1, "an": 1, "single": 1, "pair": 2, "couple": 2, "few": 3, "some": 3,
                                     "several": 4, "dozen": 12}
-FOOT_M = 0.3048  # "33 ft" is said in feet, placed in metres
+
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
 # Tokens with their spans, numbers written with separators kept whole ("10,000").
 _TOKEN_SPANS = re.compile(r"\d{1,3}(?:,\d{3})+(?![\d,])|[a-z0-9_#.\-'+]+")
@@ -207,7 +207,7 @@ def find_distance(text: str) -> float | None:
     if m is None:
         return None
     said = nb.finite(nb.Number(nb.parse(m.group(1)), m.group(1), m.start(1), m.end(1)), "a distance in metres")
-    return round(said * FOOT_M, 2) if m.group(2).startswith("f") else said
+    return round(said * nb.FOOT_M, 2) if m.group(2).startswith("f") else said
 
 
 def find_speed(text: str) -> float | None:

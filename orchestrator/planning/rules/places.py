@@ -323,6 +323,28 @@ def _compass_of(r: Reading, scene: Scene) -> dict[str, Any] | None:
     return {"relation": "absolute", "x": round(x, 2), "y": round(y, 2), **({"distance": metres} if metres else {})}
 
 
+# A compass side of an area ("the north edge of lot A", "the east end of the lot"): just inside its
+# boundary that way.
+EDGE_OF = re.compile(r"\b(north|south|east|west)(?:ern)?\s+(?:side|edge|end|half|corner|part|fringe|border)\s+of\s+(?:the\s+)?(?=\S)")
+EDGE_INSET_M = 3.0
+
+
+def _edge_of(r: Reading, scene: Scene) -> dict[str, Any] | None:
+    """An absolute point just inside the side of the area the words name; None when they name
+    no side of an area (a side of a road is its lane: see side_lane)."""
+    said = EDGE_OF.search(r.low)
+    if said is None or not r.landmark or r.landmark_at < said.end() - 1:
+        return None
+    area = scene.landmark(r.landmark)
+    if area is None or area.kind != "area" or not area.polygon:
+        return None
+    dx, dy = md.COMPASS_VECTORS[said.group(1)]
+    cx, cy = area.position
+    reach = max((x - cx) * dx + (y - cy) * dy for x, y in area.polygon)
+    away = max(0.0, reach - EDGE_INSET_M)
+    return {"relation": "absolute", "x": round(cx + dx * away, 2), "y": round(cy + dy * away, 2)}
+
+
 # "past the junction", "beyond the east gate" in a lane the words name: further along that lane,
 # the way its traffic runs.
 _PAST = re.compile(r"\b(?:past|beyond|after)\s+(?:the\s+)?(?=\S)")
@@ -361,7 +383,7 @@ def location(
     halfway = between(scene, r.low)
     if halfway is not None:  # "a tree between the library and the bus stop"
         return halfway
-    offset = (_compass_of(r, scene) or _past_along_lane(r, scene)) if compass else None
+    offset = (_edge_of(r, scene) or _compass_of(r, scene) or _past_along_lane(r, scene)) if compass else None
     if offset is not None:  # "north of the crossroads", "20 m west of the fountain", "in the northbound lane, north of ..."
         return offset
     # A road named only as context ("across Main Street at the east gate") yields to the place.
@@ -640,4 +662,4 @@ def said_a_place(r: Reading) -> bool:
 
 
 __all__ = [
-    "BETWEEN", "BY_IT", "EACH_PLACE", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_of", "said_a_place", "says_other_place", "side_lane"]
+    "BETWEEN", "BY_IT", "EACH_PLACE", "EDGE_OF", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_of", "said_a_place", "says_other_place", "side_lane"]

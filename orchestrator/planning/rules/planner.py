@@ -49,6 +49,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
 from drivetwin.orchestrator.planning.rules.environment import LIGHTS_DOWN, environment, lights
 from drivetwin.orchestrator.planning.rules.places import (
     EACH_PLACE,
+    EDGE_OF,
     PLACE_SAID,
     Notes,
     cross_section,
@@ -1016,6 +1017,9 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
                 where = {"relation": "at", "target": focus_target}
     # "the student car park should look busy: a row of six cars": the place of the clause before
     args["location"] = where or (dict(notes.place) if notes.place else None) or _fallback_place(memory)
+    edge = EDGE_OF.search(r.low)
+    if args["shape"] == "line" and edge is not None and args["location"].get("relation") == "absolute":
+        args["heading_deg"] = 90.0 if edge.group(1) in ("east", "west") else 0.0  # along that edge of the area
     spacing = nb.spacing_said(r.low)
     if spacing is not None:
         args["spacing"] = spacing
