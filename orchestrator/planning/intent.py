@@ -15,7 +15,7 @@ REMOVE_WORDS = re.compile(
     r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here)\b)|out of scope|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
-    r"|(?:must|should|may) ?n(?:o|')t (?:appear|be (?:there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
+    r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)"
     # "clear most of the cars out of lot B", "clear the junk off the road": gone from there
@@ -326,8 +326,8 @@ def wrapped_request(low: str) -> bool:
 # A sentence that opens with a command ("umm remove the bus, I think there's one somewhere?"): a
 # command, whatever question mark ends it.
 _IMPERATIVE = re.compile(r"^(?:(?:um+|uh+|erm|ok(?:ay)?|so|hey|right|now|then|and|also|please|pls|just)[,\s]+)*"
-                         r"(?:add|put|place|remove|delete|move|get rid of|take (?:away|out|off)|paint|park|spawn|create|shift|rotate|clear"
-                         r"|set|turn|make|change|bring|do (?:the same|that|this|it)(?: again)?)\b(?!-)")
+                         r"(?:add|put|place|remove|delete|move|get rid of|take|paint|park|spawn|create|shift|rotate|clear|empty|drop"
+                         r"|close|block|lose|swap|replace|line|surround|fence|set|turn|make|change|bring|do (?:the same|that|this|it)(?: again)?)\b(?!-)")
 
 
 # A speaker taking back a whole request in the same breath and saying another ("put the bench by

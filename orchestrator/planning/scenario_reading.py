@@ -110,6 +110,10 @@ def _thing_names() -> re.Pattern[str]:
     return re.compile(rf"\b(?:{'|'.join(map(re.escape, kept))})s?\b")
 
 
+# A command that puts a thing somewhere, not a description of what it does.
+_PLACING = re.compile(r"\s*(?:(?:please|pls|now|just|can you|could you)\s+)*(?:move|put|place|shift|set|stand|drag|carry|relocate|bring)\b")
+
+
 def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool:
     """Whether the words describe something happening over time: a trigger ("when the ego is
     15 m away", "after 3 seconds") with an action, or a manoeuvre only a storyboard can play
@@ -139,7 +143,9 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
     at_the_ego = bool(_AT_THE_EGO.search(low)) and any(
         words.search(crossing) for kind, words in _COMPILED if kind in ("cross_road", "stop_mid_road"))
     starts = bool(_STARTS_MOVING.search(low))  # "the suv pulls out as the ego approaches": then, not now
-    return (trigger and (manoeuvre or starts)) or light_change or at_the_ego or asks_unsupported(low) or any(
+    # "move the bin onto the sidewalk" puts a thing somewhere; "the car mounts the kerb" is a manoeuvre
+    unsupported = asks_unsupported(low) and not _PLACING.match(low)
+    return (trigger and (manoeuvre or starts)) or light_change or at_the_ego or unsupported or any(
         words.search(low) for kind, words in _COMPILED if kind in _ONLY_STORYBOARD)
 
 

@@ -252,3 +252,33 @@ def test_a_side_of_an_area_is_just_inside_that_edge(session, campus):
     benches = added(session, campus, "bench")
     assert len(benches) == 3 and all(b.pose.x - west < 6 for b in benches)
     assert max(b.pose.y for b in benches) - min(b.pose.y for b in benches) > 1  # running along that edge
+
+
+def test_a_command_before_a_colon_acts_on_what_follows_it_once(session, campus):
+    report = session.submit("Take the parked cars away from lot B: the two sedans and the SUV.")
+    assert report.ok, report.error
+    assert session.scene.count("passenger_car") == 0 and session.scene.count("suv") == 0
+    assert len(session.scene.assets) == len(campus.assets) - 3
+
+
+def test_a_clause_with_no_verb_ending_in_too_repeats_the_one_before(session, campus):
+    report = session.submit("the hydrant must go, and the bench as well")
+    assert report.ok, report.error
+    assert session.scene.asset("fire_hydrant_1") is None and session.scene.asset("bench_1") is None
+    assert session.scene.count("bench") == campus.count("bench") - 1
+
+
+def test_a_thing_that_should_not_exist_is_removed_and_fewer_of_a_group_is_some_of_it(session, campus):
+    report = session.submit("that hydrant should not exist")
+    assert report.ok, report.error
+    assert session.scene.asset("fire_hydrant_1") is None
+    report = session.submit("I'd like fewer vehicles parked in lot B")
+    assert report.ok, report.error
+    assert 0 < sum(session.scene.count(c) for c in ("passenger_car", "suv")) < 3
+
+
+def test_moving_a_thing_onto_the_sidewalk_is_a_placement_not_a_manoeuvre(session, campus):
+    report = session.submit("please move the hydrant onto the sidewalk by the bus stop")
+    assert report.ok, report.error
+    hydrant = session.scene.asset("fire_hydrant_1")
+    assert hydrant is not None and math.dist((hydrant.pose.x, hydrant.pose.y), (-30.0, -5.5)) < 10

@@ -218,12 +218,18 @@ _INTERJECTION = re.compile(r"^\s*(?:(?:ugh+|argh+|oh+|ah+|hmm+|um+|uh+|erm|well|
                            r"ok|okay|so|right|yeah|hey|huh|damn|dang|whoa|oops)\b\s*[,!.]+\s*)+")
 
 
+# A sentence up to a colon: a command before it ("clear lot B: both sedans and the SUV") is one clause
+# with what follows, which says what it acts on.
+_COMMAND_COLON = re.compile(r"(?:(?<=^)|(?<=[.!?;]\s))([^.!?;:]+):\s+")
+
+
 def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -> list[tuple[str, bool, bool]]:
     """The clauses of a prompt, each with whether it was asked as a question and whether it only
     introduces what follows its colon ("our robot needs a warning: put ..."); without the clauses
     that say why unless `reasons`."""
     prompt = without_salutations(prompt) or prompt  # "Good afternoon. ...": manners, not a time of day
     kept = prompt if reasons else without_reason(prompt).strip() or prompt
+    kept = _COMMAND_COLON.sub(lambda m: f"{m.group(1)}, " if commands(m.group(1).lower()) else m.group(0), kept)
     parts = _SPLIT.split(_TRAILING_OFF.sub(" ", kept))
     out: list[tuple[str, bool, bool]] = []
     lead = ""  # the last clause's words up to its verb, for a clause that only names another thing
@@ -308,6 +314,9 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
         return [clause]  # each part names a thing ("park the SUV in lot A and the ego in lot B")
     particle = re.match(r"\s+(?:out|away|off|down|up|rid of)\b", clause[verb.end():], re.IGNORECASE)
     lead = clause[: verb.end() + (particle.end() if particle else 0)]  # "take out the hydrant and the sign": both taken out
+    apart = None if particle else re.search(r"\b(away|out|off)\b", clause[verb.end() : cuts[0].start()], re.IGNORECASE)
+    if apart is not None:  # "take the cars away from lot B, the sedans and the SUV": each taken away
+        lead = f"{lead} {apart.group(1)}"
     colour = re.search(rf"\s+((?:{'|'.join(COLOURS)}))\s*[.!]*\s*$", parts[-1].lower())
     if colour is not None and not any(re.search(rf"\b(?:{'|'.join(COLOURS)})\b", p.lower()) for p in parts[:-1]):
         parts[:-1] = [f"{p} {colour.group(1)}" for p in parts[:-1]]  # "paint the bench and the bin red": both red
@@ -343,7 +352,9 @@ class RulePlanner:
                     style = {k: v for k, v in look.args.items() if k in ("colour", "material")}
                     calls.append(ToolCall(tool="set_asset_appearance", args={"assets": things, **style}))
                     continue
-            if previous and reading.mentions and _SO_DOES.match(reading.low):
+            # "..., and so does the bin", "..., and the bench too": the clause before, done to them
+            if previous and reading.mentions and (_SO_DOES.match(reading.low) or (
+                    _TOO.search(reading.low) and _VERB_AT.search(reading.low) is None)):
                 things = referenced(reading, scene, context.memory, notes)
                 again = retargeted(previous, things) if things else []
                 if again:  # "the bench has to go, and so does the bin": the clause before, done to the bin
@@ -449,6 +460,7 @@ class RulePlanner:
             calls = described  # "the bench by the stop is in the way", and nothing else: what it says is a guess at the wish
             notes.guess(STATEMENT_READ)
         calls = _alike(calls, text.lower(), scene, context.memory)  # "another exactly like it"
+        calls = _not_removed_twice(calls, scene)  # "clear the cars out of lot B: both sedans and the SUV"
         if calls and asks(text.lower()) and not any(commands(clause.lower()) for clause, _, _ in clauses):
             # "a driver mentioned a stop sign by the crossing; I want to confirm it's there": what the
             # story names is what the question is about, never something to add
@@ -550,6 +562,29 @@ def _as_searches(calls: list[ToolCall]) -> list[ToolCall]:
 
 # How far from the place a statement names the thing it describes may stand ("a hydrant by the crossroads").
 DESCRIBED_NEAR_M = 20.0
+
+
+def _not_removed_twice(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
+    """`calls` without a removal of what an earlier call already takes away (a request that names
+    its things again after a colon or a comma): the ids left to take, or no call when none are."""
+    gone: set[str] = set()
+    out = []
+    for call in calls:
+        if call.tool != "remove_assets":
+            out.append(call)
+            continue
+        named = call.args.get("assets")
+        if isinstance(named, list):
+            left = [i for i in named if i not in gone]
+            gone |= set(left)
+            if left:
+                out.append(call if left == named else ToolCall(tool=call.tool, args={**call.args, "assets": left}))
+            continue
+        kind = [a.id for a in scene.assets if a.category == call.args.get("category")]
+        if kind and set(kind) <= gone:
+            continue  # every one of that kind is already going
+        out.append(call)
+    return out
 
 
 def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:
