@@ -5,6 +5,7 @@ world says when a fully read request cannot stand where it was asked."""
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import pytest
@@ -239,7 +240,7 @@ def test_a_spacing_in_feet_is_laid_out_in_metres(session, campus):
     report = session.submit("a line of 4 bollards ten feet apart in lot B")
     assert report.ok, report.error
     xs = sorted((b.pose.x, b.pose.y) for b in added(session, campus, "bollard"))
-    gaps = [math.dist(a, b) for a, b in zip(xs, xs[1:], strict=False)]
+    gaps = [math.dist(a, b) for a, b in itertools.pairwise(xs)]
     assert len(gaps) == 3 and all(abs(g - 3.05) < 0.1 for g in gaps)
 
 
