@@ -570,6 +570,7 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     said = set(re.findall(r"[a-z]+", " ".join(str(v) for c in calls for k, v in c.args.items()
                                                if k in ("category", "categories", "asset", "assets", "kind")).lower()))
     said |= {w for c in calls for w in c.tool.split("_")}  # "I want the distance between ...": what measure_distance tells
+    said |= {w for c in calls for k in c.args for w in k.split("_")}  # "drop the exposure to 0.5": what set_lighting sets
     out = []
     for m in _THING_WANTED.finditer(masked):
         phrase = m.group(1).split()

@@ -168,6 +168,8 @@ _CONTRAST = re.compile(
     rf"|\s+(?:except(?:\s+for)?|other\s+than|apart\s+from|excluding|save\s+for)\s+(?={_DETERMINER})"
     # "remove the cars from lot B, but keep the SUV": what is kept is excepted
     rf"|,?\s+but\s+(?:keep|leave|spare)\s+(?={_DETERMINER})"
+    # "paint the bench green and leave the bin as it is": what is left alone is excepted
+    rf"|,?\s+and\s+(?:keep|leave)\s+(?={_DETERMINER}\b[^,.;]*\b(?:as (?:it|they) (?:is|are)|alone|untouched|where (?:it|they) (?:is|are)|in place|be)\b)"
     r"|\s+rather\s+than\s+(?=(?:the|that|this|those|these|a|an|in|at|on|by|near|its|their)\b)"
     r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
     re.IGNORECASE,

@@ -283,3 +283,33 @@ def test_moving_a_thing_onto_the_sidewalk_is_a_placement_not_a_manoeuvre(session
     assert report.ok, report.error
     hydrant = session.scene.asset("fire_hydrant_1")
     assert hydrant is not None and math.dist((hydrant.pose.x, hydrant.pose.y), (-30.0, -5.5)) < 10
+
+
+@pytest.mark.parametrize(("prompt", "time"), [("clock to 0545 please", "05:45"), ("run it at 2215 hours", "22:15")])
+def test_four_figures_on_the_24_hour_clock_set_the_time(session, prompt, time):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert session.scene.environment.time_of_day == time
+
+
+def test_an_exposure_value_said_is_set(session):
+    report = session.submit("lower the camera exposure to 0.6")
+    assert report.ok, report.error
+    assert session.scene.environment.lighting.exposure == pytest.approx(0.6)
+
+
+@pytest.mark.parametrize("said", ["12 m/s", "12 metres per second", "43.2 kilometres an hour"])
+def test_a_speed_however_written_is_a_speed_and_never_a_distance(session, campus, said):
+    report = session.submit(f"add a car in front of the ego doing {said}")
+    assert report.ok, report.error
+    car = added(session, campus, "passenger_car")[0]
+    assert car.behaviour.kind == "drive_lane" and car.behaviour.speed == pytest.approx(12.0, abs=0.05)
+    assert "distance" not in report.plan.calls[0].args["location"]
+
+
+def test_what_is_left_as_it_is_is_excepted_and_no_moment_in_time(session, campus):
+    report = session.submit("paint the bench blue and leave the bin as it is")
+    assert report.ok, report.error
+    assert session.scene.asset("trash_bin_1") == campus.asset("trash_bin_1")
+    bench = session.scene.asset("bench_1")
+    assert bench is not None and bench.appearance != campus.asset("bench_1").appearance

@@ -43,6 +43,12 @@ _WORD_CLOCK = re.compile(rf"\b({_WORD_HOURS})(?=\s*(?:o'?\s?clock|am\b|pm\b|a\.m
 _SET_HOUR = re.compile(rf"\b(?:time|clock)(?: of (?:the )?day)?\s*(?:to|at|=|:|is|be|should be|reads?|shows?)\s*(\d{{1,2}}|{_WORD_HOURS})\b(?!\s*(?:[:.]\d|%|m\b|km|mph|metres?|meters?|minutes?|mins?|seconds?|secs?|s\b|x\b|times\b))")
 
 
+# Four figures on the 24-hour clock, said as the time the clock is set to or with "hours":
+# "set the time to 0630", "clock: 1845", "0300 hours" (never "1000 cones").
+_MILITARY = re.compile(r"(?P<set>\b(?:time|clock)(?: of (?:the )?day)?\s*(?:to|at|=|:|is|should be)?\s*)?(?<![\d.,:])"
+                       r"(?P<hour>[01]\d|2[0-3])(?P<minute>[0-5]\d)(?![\d.,:])(?P<hours>\s*(?:h|hrs|hours)\b)?")
+
+
 @dataclass(frozen=True)
 class ClockTime:
     """A time read from words: hour and minute as said (possibly impossible), and the words."""
@@ -97,6 +103,9 @@ def clock_time(text: str) -> ClockTime | None:
     if half is not None and _number(half.group(1)) <= 12:
         hour = _in_half_of_day(_number(half.group(1)), text[half.end():], text)
         return ClockTime(hour, 30, half.group(0), *half.span())
+    military = next((m for m in _MILITARY.finditer(text) if m.group("set") or m.group("hours")), None)
+    if military is not None:  # "set the time to 0630", "0300 hours"
+        return ClockTime(int(military.group("hour")), int(military.group("minute")), military.group(0).strip(), *military.span())
     for m in _DIGITAL.finditer(text):
         separator, said_minutes, suffix = m.group(2), m.group(3), m.group(4)
         if separator == "." and suffix is None and not _TIME_TOPIC.search(text):

@@ -437,6 +437,8 @@ def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
         ):
             continue
         return kind
+    if category is not None and category.drives and ph.find_speed(r.text):
+        return "drive_lane"  # "a car in front of the ego doing 12 m/s": a speed said is a thing on the move
     return None
 
 

@@ -145,6 +145,7 @@ BRIGHTER_FACTOR, MAX_EXPOSURE, MIN_EXPOSURE = 1.5, 4.0, 0.25
 _LEVEL = r"(?:the )?(?:exposure|brightness)"
 _UP = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) up|(?:raise|increase|turn up|bring up|push up) {_LEVEL}"
 _DOWN = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) down|(?:lower|reduce|turn down|bring down|pull down) {_LEVEL}"
+_EXPOSURE_TO = re.compile(r"\b(?:exposure|brightness)\s+(?:to|at|of|=|:)?\s*(\d+(?:\.\d+)?)(?!\s*(?:%|percent|m\b))")
 _BRIGHTER = re.compile(rf"\b(brighter|lighter|more exposure|too dark|overexpose|brighten|{_UP})\b")
 _DIMMER = re.compile(rf"\b({_DOWN}|washed out|dimmer|less bright|(?:too|so|very|far too|way too) (?:bright|glaring|dazzling)|less exposure"
                      r"|underexpose|(?:tone|turn) down the (?:brightness|exposure|glare)|dim (?:it|the scene|things) down)\b")
@@ -163,10 +164,13 @@ def shifted_time(r: Reading, now: Environment) -> ToolCall | None:
 
 
 def brighter(r: Reading, now: Environment) -> ToolCall | None:
-    """More exposure for "brighter", less for "too bright", keeping the time the scene is set to
+    """The exposure said ("exposure to 0.5"), more for "brighter", less for "too bright", keeping the time the scene is set to
     (a night scene made brighter is still night); None when lamps are what is to be lit."""
     if r.has(_LAMP_CONTEXT):
         return None
+    said = _EXPOSURE_TO.search(r.masked)
+    if said is not None:  # "drop the camera exposure to 0.5": that value, within what the renderer takes
+        return ToolCall(tool="set_lighting", args={"exposure": min(MAX_EXPOSURE, max(MIN_EXPOSURE, float(said.group(1))))})
     if _BRIGHTER.search(r.masked) is not None:
         exposure = min(MAX_EXPOSURE, now.lighting.exposure * BRIGHTER_FACTOR)
     elif _DIMMER.search(r.masked) is not None:
