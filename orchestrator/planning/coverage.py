@@ -778,11 +778,12 @@ def place_moved(low: str, scope: Scope, scene: Scene) -> list[str]:
 
 
 # A relation said right after a thing's name, picking it out ("the tree behind the bus stop"), and a
-# predicate or a destination after that ("... is diseased", "... to the fountain"): where it stands.
+# predicate or a destination right after that ("..., by the library, is diseased", "... to the
+# fountain"): where it stands.
 _WHERE_IT_STANDS = r"\s+(?:right |just )?(?:behind|next to|beside|by|near|in front of|at|opposite|across from|outside)\s+(?:the\s+)?"
-_PREDICATE = re.compile(r"\b(?:is|are|was|were|has|have|had|needs?|must|should|keeps?|looks?|seems?|throws?|blocks?|casts?"
-                        r"|gets?|hides?|spoils?|ruins?)\b"
-                        r"|\b(?:to|into|onto|towards?)\s+(?:the\s+)?[a-z]")  # or where it should go, said after it
+_PREDICATE = re.compile(r"\s*(?:,[^,.;]*,\s*)?(?:(?:is|are|was|were|has|have|had|needs?|must|should|keeps?|looks?|seems?|throws?"
+                        r"|blocks?|casts?|gets?|hides?|spoils?|ruins?|drips?)\b"
+                        r"|(?:over\s+)?(?:to|into|onto|towards?)\s+(?:the\s+)?[a-z])")  # or where it should go, said after it
 
 
 def described_not_destination(low: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
@@ -791,6 +792,7 @@ def described_not_destination(low: str, calls: tuple[ToolCall, ...], scene: Scen
     out = []
     indexed = ph.normalise(low)
     mentions = ph.find_categories(low)
+    gone = {i for c in calls if c.tool == "remove_assets" for i in c.args.get("assets") or []}  # moved, then gone: moot
     for call in calls:
         where = call.args.get("location") if call.tool == "place_asset" else None
         thing = scene.asset(str(call.args.get("asset"))) if isinstance(where, dict) else None
@@ -803,7 +805,7 @@ def described_not_destination(low: str, calls: tuple[ToolCall, ...], scene: Scen
                  else [other.category.replace("_", " ")] if other else [])
         for m in (m for m in mentions if m.category == thing.category):
             said = re.match(_WHERE_IT_STANDS + "(?:" + "|".join(re.escape(n) for n in names if n) + r")\b", indexed[m.end :])
-            if names and said and _PREDICATE.search(re.split(r"[.;!?]", indexed[m.end + said.end() :])[0]):
+            if names and said and _PREDICATE.match(indexed[m.end + said.end() :]) and thing.id not in gone:
                 out.append(f"you said where the {thing.category.replace('_', ' ')} stands"
                            f" ({indexed[m.start : m.end + said.end()].strip()!r}), not where it should go")
     return out

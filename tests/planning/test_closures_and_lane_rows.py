@@ -313,3 +313,13 @@ def test_what_is_left_as_it_is_is_excepted_and_no_moment_in_time(session, campus
     assert session.scene.asset("trash_bin_1") == campus.asset("trash_bin_1")
     bench = session.scene.asset("bench_1")
     assert bench is not None and bench.appearance != campus.asset("bench_1").appearance
+
+
+def test_a_thing_that_has_to_come_down_is_removed_and_a_spec_placing_it_is_a_move(session, campus):
+    report = session.submit("the tree behind the bus stop is dying and needs to come down")
+    assert report.ok, report.error
+    assert session.scene.asset("tree_1") is None and session.scene.count("tree") == campus.count("tree") - 1
+    report = session.submit("the plan puts the hydrant at the west crosswalk, not where it is now")
+    assert report.ok, report.error
+    hydrant = session.scene.asset("fire_hydrant_1")
+    assert hydrant is not None and math.dist((hydrant.pose.x, hydrant.pose.y), (-11.5, 0.0)) < 10

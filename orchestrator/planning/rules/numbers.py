@@ -175,6 +175,12 @@ def spacing_said(text: str) -> float | None:
     return float(said.group(1)) if said else None
 
 
+# A speed's unit: metres a second however written ("m/s", "mps", "metres per second", "meters a sec"),
+# km/h and mph ("an hour" may read "1 hour"); a bare "ms" after "at" is a speed typed in a hurry.
+SPEED_UNIT = (r"(m/s|m/sec|mps|m\s?per\s?s(?:ec(?:ond)?)?|met(?:re|er)s?\s(?:per|an?|1)\s(?:sec(?:ond)?|secnd|s)\b|km/h|kmh|kph"
+              r"|km\s?per\s?hour|kilomet(?:re|er)s?\s(?:per|an?|1)\shour|mph|miles?\s(?:per|an?|1)\shour)")
+
+
 # The radius of a ring or a circle driven ("a radius of 3 m", "at a 3 m radius", "radius 5", "r=3 m").
 RADIUS = re.compile(r"\b(?:radius|r\s*=)\s*(?:of )?(\d+(?:\.\d+)?)(?:\s*(?:m|metres?|meters?)\b)?|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?\s*radius\b")
 
@@ -185,5 +191,5 @@ def radius_said(text: str) -> float | None:
     return float(said.group(1) or said.group(2)) if said else None
 
 
-__all__ = ["MAX_COUNT", "NUMBER", "RADIUS", "SPACING", "Number", "NumberError", "count", "finite", "numbers_in", "parse",
+__all__ = ["FOOT_M", "MAX_COUNT", "NUMBER", "RADIUS", "SPACING", "SPEED_UNIT", "Number", "NumberError", "count", "finite", "numbers_in", "parse",
            "radius_said", "spacing_said", "spelt_measures"]

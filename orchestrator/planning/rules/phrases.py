@@ -18,7 +18,6 @@ from drivetwin.worlds.scene import EGO_ID, Scene
 # Counts in words: every number spelt as one word ("seventy", "thirty-five"), and the words for a few.
 NUMBER_WORDS = nb.spelt_counts() | {"a": 1, "an": 1, "single": 1, "pair": 2, "couple": 2, "few": 3, "some": 3,
                                     "several": 4, "dozen": 12}
-
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
 # Tokens with their spans, numbers written with separators kept whole ("10,000").
 _TOKEN_SPANS = re.compile(r"\d{1,3}(?:,\d{3})+(?![\d,])|[a-z0-9_#.\-'+]+")
@@ -203,7 +202,7 @@ def find_coordinates(text: str) -> tuple[float, float] | None:
 def find_distance(text: str) -> float | None:
     """A distance in metres ('5 m', '10 metres'); a spacing ('4 m apart'), a radius or a speed ('10 m/s') is not one."""
     low = nb.RADIUS.sub(lambda m: " " * len(m.group(0)), nb.SPACING.sub(lambda m: " " * len(m.group(0)), text.lower()))
-    low = re.sub(rf"({nb.NUMBER})\s*{_SPEED_UNIT}", lambda m: " " * len(m.group(0)), low)
+    low = re.sub(rf"({nb.NUMBER})\s*{nb.SPEED_UNIT}", lambda m: " " * len(m.group(0)), low)
     m = re.search(rf"({nb.NUMBER})\s*(m\b|metres?\b|meters?\b|ft\b|feet\b|foot\b)", low)
     if m is None:
         return None
@@ -212,20 +211,14 @@ def find_distance(text: str) -> float | None:
 
 
 def find_speed(text: str) -> float | None:
-    """A speed: 'at 3 m/s' or 'at 20 km/h' (converted to m/s)."""
+    """A speed: 'at 3 m/s', 'at 20 km/h' (converted to m/s), however the unit is written (nb.SPEED_UNIT)."""
     low = text.lower()
-    m = re.search(rf"({nb.NUMBER})\s*{_SPEED_UNIT}", low) or re.search(rf"\b(?:at|to|of|doing) ({nb.NUMBER})\s*(ms)\b", low)
+    m = re.search(rf"({nb.NUMBER})\s*{nb.SPEED_UNIT}", low) or re.search(rf"\b(?:at|to|of|doing) ({nb.NUMBER})\s*(ms)\b", low)
     if m is None:
         return None
     value = nb.finite(nb.Number(nb.parse(m.group(1)), m.group(1), m.start(1), m.end(1)), "a speed")
     unit = m.group(2)
     return value / 3.6 if unit.startswith(("k", "kilo")) else value * 0.447 if unit.startswith(("mph", "mile")) else value
-
-
-# A speed's unit: metres a second however written ("m/s", "mps", "metres per second", "meters a sec"),
-# km/h and mph; a bare "ms" after "at" is a speed typed in a hurry ("circle at 4 ms").
-_SPEED_UNIT = (r"(m/s|m/sec|mps|m\s?per\s?s(?:ec(?:ond)?)?|met(?:re|er)s?\s(?:per|an?|1)\s(?:sec(?:ond)?|secnd|s)\b|km/h|kmh|kph"
-               r"|km\s?per\s?hour|kilomet(?:re|er)s?\s(?:per|an?|1)\shour|mph|miles?\s(?:per|an?|1)\shour)")  # "an hour" may read "1 hour"
 
 
 @cache
