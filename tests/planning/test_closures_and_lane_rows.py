@@ -323,3 +323,14 @@ def test_a_thing_that_has_to_come_down_is_removed_and_a_spec_placing_it_is_a_mov
     assert report.ok, report.error
     hydrant = session.scene.asset("fire_hydrant_1")
     assert hydrant is not None and math.dist((hydrant.pose.x, hydrant.pose.y), (-11.5, 0.0)) < 10
+
+
+@pytest.mark.parametrize("prompt", ["move fire_hydrant_1 next to stop_sign_1", "put the hydrant beside stop_sign_1"])
+def test_an_id_after_a_relation_is_where_the_thing_goes_not_a_second_thing_moved(session, campus, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert session.scene.asset("stop_sign_1") == campus.asset("stop_sign_1")
+    hydrant, sign = session.scene.asset("fire_hydrant_1"), campus.asset("stop_sign_1")
+    assert hydrant is not None and sign is not None
+    assert math.dist((hydrant.pose.x, hydrant.pose.y), (sign.pose.x, sign.pose.y)) < 4
+    assert session.scene.count("fire_hydrant") == campus.count("fire_hydrant")

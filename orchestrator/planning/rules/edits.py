@@ -20,7 +20,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.inflection import inflected
-from drivetwin.orchestrator.planning.rules.places import Notes, location, road_said, side_of
+from drivetwin.orchestrator.planning.rules.places import Notes, location, relation_objects, road_said, side_of
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
@@ -71,8 +71,9 @@ def referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[s
 
 
 def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[str]:
-    if r.ids:
-        return r.ids
+    moved = [i for i in r.ids if i not in relation_objects(r)]  # "move trash_bin_1 next to bench_1": the bench is where
+    if moved:
+        return moved
     if not r.mentions and _ANY_NEAREST.search(r.low):  # "whatever is closest to the ego": of every kind
         point = _point_of(r, scene, memory)
         pool = [a.id for a in scene.assets if a.id != "ego"]

@@ -104,9 +104,18 @@ def relation_of(low: str) -> str:
     return "at"
 
 
+def relation_objects(r: Reading) -> list[str]:
+    """The ids the clause names as where something goes ("next to bench_1", "behind the suv_1"), in order."""
+    words = "|".join(re.escape(w).replace(r"\ ", r"\s+") for ws, _ in RELATIONS for w in ws if not w.endswith(" the"))
+    return [i for i in r.ids if re.search(rf"\b(?:{words}|near|by|at|to)\s+(?:the\s+)?{re.escape(i).replace('_', '[_ ]')}\b", r.low)]
+
+
 def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str | None:
     # "next to the bench at the bus stop": the bench nearest that stop; "near the hydrant" too. The
     # relation said first is the one meant: "beside the bin that's next to the bench" is by the bin.
+    objects = [i for i in relation_objects(r) if i not in exclude]
+    if objects:
+        return objects[0]  # "place trash_bin_1 next to bench_1": by that one
     said = sorted((pos, word) for words in [*(w for w, _ in RELATIONS), ("near", "nearby")] for word in words
                   if (pos := r.low.find(f" {word} ")) >= 0)
     for pos, word in said:
@@ -662,4 +671,4 @@ def said_a_place(r: Reading) -> bool:
 
 
 __all__ = [
-    "BETWEEN", "BY_IT", "EACH_PLACE", "EDGE_OF", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_of", "said_a_place", "says_other_place", "side_lane"]
+    "BETWEEN", "BY_IT", "EACH_PLACE", "EDGE_OF", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_objects", "relation_of", "said_a_place", "says_other_place", "side_lane"]
