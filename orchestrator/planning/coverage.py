@@ -78,6 +78,9 @@ _RELATION_WORDS = frozenset(
         "bottom",
         "same",
         "other",
+        "opposite",
+        "far",
+        "near",
         "first",
         "last",
         "next",
@@ -578,7 +581,7 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         if phrase[cut:cut + 1] == ["of"]:
             continue  # "a heap of benches", "a pile of rubble": what follows is the thing
         phrase = phrase[:cut]  # "a deer crossing the road": the phrase ends before "the"
-        while len(phrase) > 1 and (phrase[-1].endswith(("ly", "ing", "more", "where", "wards"))
+        while len(phrase) > 1 and (phrase[-1].endswith(("ly", "ing", "more", "where", "wards", "way"))
                                    or (phrase[-1].endswith("est") and is_known(phrase[-2], vocab))):
             phrase.pop()  # "a low sun shortly after dawn", "a deer crossing", "the sign anymore", "the tree closest": the thing comes before
         word = phrase[-1]

@@ -334,3 +334,11 @@ def test_an_id_after_a_relation_is_where_the_thing_goes_not_a_second_thing_moved
     assert hydrant is not None and sign is not None
     assert math.dist((hydrant.pose.x, hydrant.pose.y), (sign.pose.x, sign.pose.y)) < 4
     assert session.scene.count("fire_hydrant") == campus.count("fire_hydrant")
+
+
+@pytest.mark.parametrize("prompt", ["a bench directly across the road from the bus stop", "put a bench opposite the bus stop"])
+def test_across_from_a_place_is_the_far_side_of_the_road(session, campus, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    bench = added(session, campus, "bench")[0]
+    assert bench.pose.y > 3.5 and abs(bench.pose.x - (-30.0)) < 3  # the bus stop is south of Main Street

@@ -213,6 +213,33 @@ def between(scene: Scene, low: str) -> dict[str, Any] | None:
     return {"relation": "absolute", "x": round((ends[0][0] + ends[1][0]) / 2, 2), "y": round((ends[0][1] + ends[1][1]) / 2, 2)}
 
 
+# Across the road from a place or thing: "across from the JTEKT entrance", "opposite the bus stop",
+# "on the other side of the road from the bench".
+ACROSS_FROM = re.compile(r"\b(?:(?:right |directly |just )?(?:across|over) (?:the (?:road|street) )?from|opposite(?: to)?"
+                         r"|on the (?:other|opposite|far) side of the (?:road|street) from)\s+(?P<what>.+?)(?=\s*(?:[,.;!?]|$|\b(?:please|pls|so|for|then|now|and)\b))")
+# How far past the road's middle the far side is: its half width and a sidewalk's half.
+FAR_SIDE_BEYOND_M = 2.0
+
+
+def across_from(scene: Scene, low: str) -> dict[str, Any] | None:
+    """The point across the nearest road from the place or thing the words name: as far past the
+    road's middle as it stands before it, at most to the far sidewalk; None when they say no such thing."""
+    said = ACROSS_FROM.search(low)
+    point = point_named(scene, f" {said.group('what')} ") if said else None
+    if point is None or not scene.roads.lanes:
+        return None
+    lane = min(scene.roads.lanes, key=lambda ln: nearest_on_polyline(point[0], point[1], ln.centreline).distance)
+    road = [ln for ln in scene.roads.lanes if ln.road == lane.road] if lane.road else [lane]
+    feet = [nearest_on_polyline(point[0], point[1], ln.centreline) for ln in road]
+    mx, my = sum(f.x for f in feet) / len(feet), sum(f.y for f in feet) / len(feet)
+    away = math.dist(point, (mx, my))
+    if away < 0.5:
+        return None  # on the road's middle: no side to be across from
+    far = min(away, sum(ln.width for ln in road) / 2 + FAR_SIDE_BEYOND_M)
+    ux, uy = (mx - point[0]) / away, (my - point[1]) / away
+    return {"relation": "absolute", "x": round(mx + ux * far, 2), "y": round(my + uy * far, 2)}
+
+
 def _road_named(scene: Scene, words: str) -> list[Any]:
     """The lanes of the road or the one lane the words name ("Main Street", "the westbound lane")."""
     low = ph.normalise(words)
@@ -392,6 +419,9 @@ def location(
     halfway = between(scene, r.low)
     if halfway is not None:  # "a tree between the library and the bus stop"
         return halfway
+    facing = across_from(scene, r.low)
+    if facing is not None:  # "a car parked across from the JTEKT entrance": the road's far side
+        return facing
     offset = (_edge_of(r, scene) or _compass_of(r, scene) or _past_along_lane(r, scene)) if compass else None
     if offset is not None:  # "north of the crossroads", "20 m west of the fountain", "in the northbound lane, north of ..."
         return offset
@@ -671,4 +701,4 @@ def said_a_place(r: Reading) -> bool:
 
 
 __all__ = [
-    "BETWEEN", "BY_IT", "EACH_PLACE", "EDGE_OF", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_objects", "relation_of", "said_a_place", "says_other_place", "side_lane"]
+    "ACROSS_FROM", "BETWEEN", "BY_IT", "EACH_PLACE", "EDGE_OF", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_objects", "relation_of", "said_a_place", "says_other_place", "side_lane"]
