@@ -231,17 +231,21 @@ class FindLanes(Tool[FindLanesArgs]):
         from drivetwin.worlds.surface import nearest_on_polyline
 
         lanes = [ln for ln in scene.roads.lanes if not args.road or args.road.lower() in ln.road.lower()]
+        lead = ""
         if args.near:
             t = resolve_target(scene, args.near)
             lanes.sort(key=lambda ln: nearest_on_polyline(t.x, t.y, ln.centreline).distance)
             lanes = lanes[:1]
+            thing = scene.asset(t.name) if t.kind == "asset" else None
+            if thing is not None and lane_under(thing, scene.roads.lanes) is None:
+                lead = f"{thing.id} stands {_standing_in(scene, thing)}; the nearest lane: "  # "which lane is the SUV in"
         lines = []
         for ln in lanes:
             (x1, y1), (x2, y2) = ln.centreline[0], ln.centreline[-1]
             heading = math.degrees(math.atan2(y2 - y1, x2 - x1))
             length = sum(math.dist(p, q) for p, q in zip(ln.centreline, ln.centreline[1:], strict=False))
             lines.append(f"{ln.id} on {ln.road}, heading {heading:.0f} deg, {ln.width:g} m wide, {length:.0f} m long")
-        return ToolResult(WorldEdit(), f"{len(lanes)} lane(s): " + "; ".join(lines),
+        return ToolResult(WorldEdit(), f"{lead}{len(lanes)} lane(s): " + "; ".join(lines),
                           data={"lanes": [ln.id for ln in lanes]})
 
 
@@ -310,6 +314,34 @@ def _lamps(setting: str, night: bool) -> str:
     return "on (they light at night)" if night else "off (they light at night)"
 
 
+def _doing(a: AssetInstance) -> str:
+    """What an asset's behaviour does, with its speed and where ("drive_lane in main_eastbound at 5 m/s")."""
+    b = a.behaviour
+    speed = getattr(b, "speed", None)
+    said = b.kind + (f" in {b.lane}" if hasattr(b, "lane") else "") + (f" round ({b.centre[0]:g}, {b.centre[1]:g})"
+                                                                       if hasattr(b, "centre") else "")
+    return said + (f" at {speed:g} m/s" if speed is not None else "")
+
+
+def _standing_in(scene: Scene, a: AssetInstance) -> str:
+    """The lane an asset stands in, else the area (a parking lot) or that it is in no lane."""
+    lane = lane_under(a, scene.roads.lanes)
+    if lane is not None:
+        return f"in lane {lane.id}"
+    area = next((lm.name for lm in scene.landmarks if lm.kind == "area" and lm.polygon
+                 and point_in_polygon(a.pose.x, a.pose.y, lm.polygon)), None)
+    return f"in no lane ({area})" if area else "in no lane"
+
+
+def _colour_name(rgba: tuple[float, float, float, float] | None) -> str:
+    """A colour by its name where it is one of the named ones, else its RGBA; "default" when unset."""
+    if rgba is None:
+        return "default"
+    from drivetwin.tools.appearance import COLOURS
+
+    return next((name for name, value in COLOURS.items() if value == tuple(rgba)), str(tuple(rgba)))
+
+
 class PropertiesArgs(ToolArgs):
     asset: str | None = Field(None, description="asset id to describe")
     category: str | None = Field(None, description="or: a catalog category to describe")
@@ -324,9 +356,9 @@ class AssetProperties(Tool[PropertiesArgs]):
     def propose(self, args: PropertiesArgs, scene: Scene) -> ToolResult:
         if args.asset:
             a = find_asset(scene, args.asset)
-            text = (f"{a.id}: {a.category} at ({a.pose.x:.1f}, {a.pose.y:.1f}), yaw "
+            text = (f"{a.id}: {a.category} at ({a.pose.x:.1f}, {a.pose.y:.1f}), {_standing_in(scene, a)}, yaw "
                     f"{math.degrees(a.pose.yaw):.0f} deg, mass {a.physics.mass:g} kg, "
-                    f"behaviour {a.behaviour.kind}, colour {a.appearance.rgba or 'default'}")
+                    f"behaviour {_doing(a)}, colour {_colour_name(a.appearance.rgba)}")
             return ToolResult(WorldEdit(), text, data={"asset": a.model_dump()})
         if args.category:
             name = resolve_category(args.category)

@@ -342,3 +342,15 @@ def test_across_from_a_place_is_the_far_side_of_the_road(session, campus, prompt
     assert report.ok, report.error
     bench = added(session, campus, "bench")[0]
     assert bench.pose.y > 3.5 and abs(bench.pose.x - (-30.0)) < 3  # the bus stop is south of Main Street
+
+
+def test_a_things_answers_say_its_lane_speed_and_colour_by_name(session, campus):
+    assert session.submit("paint the suv red").ok
+    report = session.submit("what lane is the suv in?")
+    assert report.ok and report.answer is not None
+    assert "suv_1 stands in no lane (parking lot B)" in report.answer
+    report = session.submit("tell me about the ego")
+    assert report.ok and report.answer is not None
+    assert "in lane main_eastbound" in report.answer and "at 5 m/s" in report.answer
+    report = session.submit("describe suv_1")
+    assert report.ok and report.answer is not None and "colour red" in report.answer
