@@ -76,7 +76,22 @@ def normalised(prompt: str, scene: Scene) -> str:
     low = re.sub(r"\b(" + "|".join(_NUMBER_WORDS) + r")\b(?=\s*(?:" + _UNIT[3:-1] + r"|,|$| and| " + _LIGHT_STATE + r"))",
                  lambda m: str(_NUMBER_WORDS[m.group(1)]), low)
     low = re.sub(r"(\d)(m|s|secs?|sec|seconds?|metres?)\b", r"\1 \2", low)
+    low = _stop_at_place(low, scene)
     return re.sub(r"\s+", " ", low.replace("²", "2").replace("^2", "2").replace(".", " . ")).strip()
+
+
+# Stopping at a place of the world: "have the ego stop at the west crosswalk" is a stop when it gets there.
+_STOP_AT = re.compile(r"\b(stops?|stopping|brakes?|braking|halts?|pulls? up)(?:\s+(?:completely|fully|dead|there))?\s+at\s+(?=the\s+)")
+
+
+def _stop_at_place(low: str, scene: Scene) -> str:
+    """`low` with "stop at <a landmark>" said as "stop when it gets to <it>", which a reach trigger reads."""
+    names = [ph.normalise(n).strip() for lm in scene.landmarks for n in lm.names()]
+    said = _STOP_AT.search(low)
+    if said is None or not any(low[said.end() :].startswith(f"the {n}") for n in names):
+        return low
+    verb = said.group(1) if said.group(1).startswith("brak") else "stop"  # "pull up", "halt": a stop
+    return low[: said.start()] + f"{verb} when it gets to " + low[said.end() :]
 
 
 def _repair_word(word: str) -> str:

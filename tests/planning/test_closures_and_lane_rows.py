@@ -354,3 +354,22 @@ def test_a_things_answers_say_its_lane_speed_and_colour_by_name(session, campus)
     assert "in lane main_eastbound" in report.answer and "at 5 m/s" in report.answer
     report = session.submit("describe suv_1")
     assert report.ok and report.answer is not None and "colour red" in report.answer
+
+
+def test_a_vehicle_told_to_follow_a_driving_one_drives_its_lane_behind_it(session, campus):
+    report = session.submit("have the SUV tail the ego")
+    assert report.ok, report.error
+    suv, ego = session.scene.asset("suv_1"), session.scene.asset("ego")
+    assert suv is not None and ego is not None and suv.behaviour.kind == "drive_lane"
+    assert suv.behaviour.lane == "main_eastbound" and suv.pose.x < ego.pose.x  # behind it, eastbound
+    report = session.submit("make the ego follow passenger_car_2")
+    assert not report.ok and "parked" in (report.error or "")
+
+
+def test_stopping_at_a_place_is_a_stop_when_it_gets_there(session, campus):
+    report = session.submit("the ego should pull up at the north crosswalk")
+    assert report.ok, report.error
+    assert [c.tool for c in report.plan.calls] == ["add_event"]
+    when = report.plan.calls[0].args["when"]
+    assert when["kind"] == "reach" and when["place"] == "north crosswalk"
+    assert session.scene.asset("ego") == campus.asset("ego")  # nothing moves now

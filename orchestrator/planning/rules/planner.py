@@ -75,7 +75,7 @@ from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, voc
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog, is_layout_kit, nearest_categories
-from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.scene import DriveLane, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, surface_at
 
 PROMPT_VERSION = "rules-2"
@@ -695,6 +695,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     paced = new_pace(r, scene, notes, memory)
     if paced is not None:  # "set the ego's speed to 8 m/s", "could the truck go a bit slower?"
         return paced
+    following = _follow(r, scene, memory, notes)
+    if following is not None:  # "let the parked car follow the ego": behind it in its lane, at its pace
+        return following
     if r.mentions and _TOPIC.fullmatch(_without_mentions(r)):
         referenced(r, scene, memory, notes)  # "the cars... where are they?": what the next clause is about
         return []
@@ -912,6 +915,41 @@ def _way_through(r: Reading, scene: Scene) -> bool:
     place = scene.landmark(r.landmark)
     lots = [lm.name for lm in scene.landmarks if lm.kind == "area"]
     return place is not None and (place.name.endswith(" gate") or any(place.name == f"{lot} entrance" for lot in lots))
+
+
+# A vehicle told to follow another: "let the parked car follow the ego", "the SUV should tail passenger_car_1".
+_FOLLOWS = re.compile(r"\b(?:follows?|following|tails?|tailing|trails?|trailing|shadows?|shadowing)\s+(?:behind\s+)?(?:the\s+)?")
+# How far behind the vehicle it follows a follower starts, metres.
+FOLLOW_GAP_M = 12.0
+
+
+def _follow(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
+    """A vehicle put behind the one it is to follow, driving that one's lane at its speed; None when
+    the clause asks no one vehicle to follow another."""
+    said = _FOLLOWS.search(r.low)
+    if said is None:
+        return None
+    after = r.low[said.end() :]
+    lead = "ego" if re.match(r"(?:ego\b|us\b|me\b)", after) or ph.has_any(f" {after[:20]} ", ph.EGO_WORDS) else None
+    lead = lead or next((i for i in r.ids if re.match(re.escape(i).replace("_", "[_ ]"), after)), None)
+    if lead is None:
+        later = [m for m in r.mentions if m.start >= said.end()]
+        kind = [a for a in scene.assets if later and a.category == later[0].category]
+        lead = kind[0].id if len(kind) == 1 else None
+    before = replace(r, mentions=[m for m in r.mentions if m.start < said.start()], ids=[i for i in r.ids if i != lead],
+                     ego=r.ego and lead != "ego")
+    followers = [i for i in referenced(before, scene, memory, notes) if i != lead]
+    leader = scene.asset(lead) if lead else None
+    follower = scene.asset(followers[0]) if len(followers) == 1 else None
+    if leader is None or follower is None or not catalog()[follower.category].drives:
+        return None
+    if not isinstance(leader.behaviour, DriveLane):
+        raise PlanningError(f"{leader.id} is {leader.behaviour.kind.replace('_', ' ')}, so there is no way to follow it; "
+                            f"make it drive a lane first, or put {follower.id} behind it")
+    behaviour = {"kind": "drive_lane", "lane": leader.behaviour.lane, "speed": leader.behaviour.speed}
+    return [ToolCall(tool="place_asset", args={"asset": follower.id, "location": {"relation": "behind", "target": leader.id,
+                                                                                 "distance": FOLLOW_GAP_M}}),
+            ToolCall(tool="set_behaviour", args={"asset": follower.id, "behaviour": behaviour})]
 
 
 # What roadworks said with no things named are made of: a line of cones, and a sign beside them.
