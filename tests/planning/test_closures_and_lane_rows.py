@@ -366,7 +366,13 @@ def test_a_vehicle_told_to_follow_a_driving_one_drives_its_lane_behind_it(sessio
     assert not report.ok and "parked" in (report.error or "")
 
 
-def test_stopping_at_a_place_is_a_stop_when_it_gets_there(session, campus):
+def test_stopping_at_a_place_is_a_stop_when_it_gets_there(campus, registry):
+    from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
+    from drivetwin.orchestrator.session import Session
+
+    planner = HybridPlanner(RulePlanner(), LlmPlanner(model="no-such-model"), retrieval=RetrievalPlanner(),
+                            scenario=ScenarioReader(), respell=False)
+    session = Session(campus, planner, registry)
     report = session.submit("the ego should pull up at the north crosswalk")
     assert report.ok, report.error
     assert [c.tool for c in report.plan.calls] == ["add_event"]
