@@ -379,3 +379,11 @@ def test_stopping_at_a_place_is_a_stop_when_it_gets_there(campus, registry):
     when = report.plan.calls[0].args["when"]
     assert when["kind"] == "reach" and when["place"] == "north crosswalk"
     assert session.scene.asset("ego") == campus.asset("ego")  # nothing moves now
+
+
+def test_a_line_too_long_to_stand_across_the_road_runs_along_the_path(session, campus):
+    report = session.submit("five cones 2 m apart ahead of the ego please")
+    assert report.ok, report.error
+    cones = added(session, campus, "traffic_cone")
+    ys = {round(c.pose.y, 1) for c in cones}
+    assert len(cones) == 5 and len(ys) == 1 and all(c.pose.x > campus.ego.pose.x for c in cones)

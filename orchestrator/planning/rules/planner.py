@@ -1162,8 +1162,8 @@ def _point_of(scene: Scene, place: dict[str, Any]) -> tuple[float | None, float 
     return place.get("x"), place.get("y")
 
 
-# A line longer than this cannot stand across a road: one said "ahead of" a thing runs along its path.
-ACROSS_MAX_M = 8.0
+# A line longer than this does not fit across a two-lane road (7 m): one said "ahead of" a thing runs along its path.
+ACROSS_MAX_M = 6.5
 # Metres from the thing to the first of a line along its path, when the words give none.
 LINE_START_M = 4.0
 # Metres ahead of (or behind) a thing that a line across its way stands, when the words give none.
