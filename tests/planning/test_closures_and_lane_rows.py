@@ -387,3 +387,19 @@ def test_a_line_too_long_to_stand_across_the_road_runs_along_the_path(session, c
     cones = added(session, campus, "traffic_cone")
     ys = {round(c.pose.y, 1) for c in cones}
     assert len(cones) == 5 and len(ys) == 1 and all(c.pose.x > campus.ego.pose.x for c in cones)
+
+
+def test_the_nearest_thing_of_a_kind_is_nearest_the_asker_not_itself(session):
+    report = session.submit("where's the closest fire hydrant?")
+    assert report.ok, report.error
+    assert report.plan.calls[0].args.get("nearest_to") == "ego"
+    assert report.answer is not None and "fire_hydrant_1" in report.answer
+
+
+def test_a_lane_closed_with_no_place_said_is_closed_midway_off_the_junction(session, campus):
+    report = session.submit("shut the southbound lane of Campus Drive")
+    assert report.ok, report.error
+    junction = campus.landmark("main intersection")
+    assert junction is not None and junction.polygon is not None
+    barriers = added(session, campus, "road_barrier")
+    assert barriers and all(-90 < b.pose.y < 90 and not point_in_polygon(b.pose.x, b.pose.y, junction.polygon) for b in barriers)

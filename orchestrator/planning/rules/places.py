@@ -519,6 +519,31 @@ _UNIT = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": 
 _ONE_LANE = re.compile(r"\b(?<!both )(?<!all )(?<!two )lane\b")
 
 
+# Steps by which a lane's middle is slid along it off an area it crosses (the junction), and the
+# margin kept from that area's edge.
+LANE_MIDDLE_STEP_M, AREA_MARGIN_M = 2.0, 5.0
+
+
+def _lane_middle(scene: Scene, lane: Lane) -> tuple[float, float]:
+    """The point halfway along a lane, or the nearest one along it a margin clear of the areas it
+    crosses (a junction in the middle of the road)."""
+    length = polyline_length(lane.centreline)
+    areas = [lm.polygon for lm in scene.landmarks if lm.kind == "area" and lm.polygon]
+
+    def clear(arc: float) -> bool:
+        x, y, heading = point_along(lane.centreline, arc)
+        ahead = [(x + d * math.cos(heading), y + d * math.sin(heading)) for d in (-AREA_MARGIN_M, 0.0, AREA_MARGIN_M)]
+        return not any(point_in_polygon(px, py, area) for px, py in ahead for area in areas)
+
+    for k in range(int(length / 2 / LANE_MIDDLE_STEP_M) + 1):
+        for arc in (length / 2 + k * LANE_MIDDLE_STEP_M, length / 2 - k * LANE_MIDDLE_STEP_M):
+            if 0.0 <= arc <= length and clear(arc):
+                x, y, _ = point_along(lane.centreline, arc)
+                return x, y
+    x, y, _ = point_along(lane.centreline, length / 2)
+    return x, y
+
+
 def one_lane_named(r: Reading) -> bool:
     """Whether the words name one lane of a road ("the eastbound lane"), not the road or both lanes."""
     return r.lane is not None and _ONE_LANE.search(r.low) is not None
@@ -554,7 +579,7 @@ def cross_section(r: Reading, scene: Scene, where: dict[str, Any] | None) -> Cro
     elif spot is not None:  # "block the eastbound lane 30 m ahead of the ego": there, not the lane's middle
         x, y = spot
     elif lane is not None:
-        x, y = lane.centreline[len(lane.centreline) // 2]
+        x, y = _lane_middle(scene, lane)  # "put a barrier across the westbound lane": its middle, off the junction
     else:
         return None
     way = _COMPASS_OF.search(r.masked)

@@ -210,6 +210,10 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
     nearest = _NEAREST.search(low)
     if nearest is not None:
         anchor = _anchor_after(r, scene, nearest.end(), back, prefer_preposition=True)
+        head = next((m for m in r.mentions if m.start >= nearest.end()), None)
+        if (anchor is not None and head is not None and _PREPOSITION.search(low, head.end) is None
+                and anchor.name == _only_instance(r, scene, head)):
+            anchor = Anchor("asset", EGO_ID)  # "where's the nearest bin": nearest the asker, not itself
         if anchor is not None:
             return _nearest(r, scene, anchor)
     on_road = r.mentions and _road_named(r, scene) is not None and _ALONG.search(low) is not None  # "stop signs on Campus Drive"
