@@ -866,7 +866,9 @@ _LAID_SOMEWHERE = re.compile(r"\b(?:across|along|in|into|on|onto|over)\s+the\s+(
 def place_dropped(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     """A place said for what the plan puts down ("a bus at teh bus stp", "cones around the helipad")
     that the plan puts nowhere in particular (no location, or the scene's centre it never said)."""
-    placing = [c for c in calls if c.tool in ("add_asset", "arrange_assets", "place_asset")]
+    # a jaywalker stands where it crosses: ahead of the ego, which is where "in front of the ego" puts it
+    placing = [c for c in calls if c.tool in ("add_asset", "arrange_assets", "place_asset")
+               and (c.args.get("behaviour") or {}).get("kind") != "jaywalk"]
     said = PLACE_SAID.search(low) or BY_IT.search(low) or _LAID_SOMEWHERE.search(low)  # "... ahead of it": where the thing named before is
     if not placing or said is None or _CENTRE_SAID.search(low):
         return []

@@ -403,3 +403,10 @@ def test_a_lane_closed_with_no_place_said_is_closed_midway_off_the_junction(sess
     assert junction is not None and junction.polygon is not None
     barriers = added(session, campus, "road_barrier")
     assert barriers and all(-90 < b.pose.y < 90 and not point_in_polygon(b.pose.x, b.pose.y, junction.polygon) for b in barriers)
+
+
+def test_a_walker_who_jaywalks_is_added_jaywalking(session, campus):
+    report = session.submit("a kid jaywalks in front of our car")
+    assert report.ok, report.error
+    walker = added(session, campus, "pedestrian")[0]
+    assert walker.behaviour.kind == "jaywalk"
