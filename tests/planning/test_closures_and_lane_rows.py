@@ -410,3 +410,13 @@ def test_a_walker_who_jaywalks_is_added_jaywalking(session, campus):
     assert report.ok, report.error
     walker = added(session, campus, "pedestrian")[0]
     assert walker.behaviour.kind == "jaywalk"
+
+
+@pytest.mark.parametrize(("said", "turn"), [("30 degrees clockwise", -30.0), ("30 degrees to the right", -30.0),
+                                            ("30 degrees anticlockwise", 30.0), ("30 degrees", 30.0)])
+def test_a_turn_said_clockwise_or_right_turns_that_way(session, campus, said, turn):
+    report = session.submit(f"rotate the hydrant {said}")
+    assert report.ok, report.error
+    before, after = campus.asset("fire_hydrant_1"), session.scene.asset("fire_hydrant_1")
+    assert before is not None and after is not None
+    assert math.degrees(math.remainder(after.pose.yaw - before.pose.yaw, math.tau)) == pytest.approx(turn, abs=0.01)

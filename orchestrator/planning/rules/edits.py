@@ -602,8 +602,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         and (deg or not r.has(("drive", "driving", "walk", "circle", "circles")))
         and (deg or r.has(("turn", "turned", "rotate", "rotated", "spin", "flip", "wrong way", "other way", "faces", "face")))
     ):
-        if deg:
-            angle = float(deg.group(1))
+        if deg:  # "45 degrees clockwise", "30 to the right": turn_deg counts anticlockwise
+            right = r.has(("right", "clockwise")) and not r.has(("anticlockwise", "counterclockwise", "counter-clockwise"))
+            angle = -float(deg.group(1)) if right else float(deg.group(1))
         elif faced is not None and found is not None:  # "so it faces the road": towards its nearest point
             heading = math.degrees(math.atan2(faced[1] - found.pose.y, faced[0] - found.pose.x))
             angle = round((heading - math.degrees(found.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
