@@ -76,8 +76,26 @@ def wrong_counts(masked: str, added: Iterable[AssetInstance], per: int = 1) -> l
     """Categories the plan adds a different number of than the request says (`per` place, when it
     says that many at each of several places)."""
     made = Counter(a.category for a in added)
+    more = _more_unnamed(masked)
     return [f"you asked for {n} {c.replace('_', ' ')}" + (f" at each of {per} places" if per > 1 else "")
-            + f", but the plan adds {made[c]}" for c, n in counts_named(masked).items() if made[c] and made[c] != n * per]
+            + f", but the plan adds {made[c]}" for c, n in counts_named(masked).items()
+            if made[c] and made[c] not in (n * per, n + more)]
+
+
+# More of the thing just named with its noun left out ("two cones at the gate and another two at
+# the fountain", "three more by the library"): the amount after "another", or before "more".
+_MORE_SAID = re.compile(r"\banother\s+(\d+|[a-z]+)\b|\b(\d+|[a-z]+)\s+more\b")
+
+
+def _more_unnamed(masked: str) -> int:
+    """How many more of the thing named before the words ask for without naming it again."""
+    total = 0
+    for m in _MORE_SAID.finditer(masked):
+        word = m.group(1) or m.group(2)
+        amount = int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
+        if amount is not None and not ph.find_categories(" ".join(masked[m.end() :].split()[:2])):
+            total += amount
+    return total
 
 
 def off_lane(lane_id: str, scene: Scene, placed: Iterable[AssetInstance]) -> list[str]:

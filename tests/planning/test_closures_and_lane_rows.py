@@ -420,3 +420,14 @@ def test_a_turn_said_clockwise_or_right_turns_that_way(session, campus, said, tu
     before, after = campus.asset("fire_hydrant_1"), session.scene.asset("fire_hydrant_1")
     assert before is not None and after is not None
     assert math.degrees(math.remainder(after.pose.yaw - before.pose.yaw, math.tau)) == pytest.approx(turn, abs=0.01)
+
+
+def test_more_of_the_same_at_a_second_place_and_a_comma_list_of_looks(session, campus):
+    report = session.submit("put three cones by the main gate and another two by the east gate")
+    assert report.ok, report.error
+    cones = added(session, campus, "traffic_cone")
+    assert sorted(sum(1 for c in cones if (c.pose.x < 0) == west) for west in (True, False)) == [2, 3]
+    report = session.submit("colour the bench green, the bin white and the hydrant black")
+    assert report.ok, report.error
+    looks = {i: session.scene.asset(i).appearance.rgba for i in ("bench_1", "trash_bin_1", "fire_hydrant_1")}
+    assert len(set(looks.values())) == 3 and None not in looks.values()

@@ -110,6 +110,9 @@ _VERBS = (
     "create",
     "change",
     "paint",
+    "repaint",
+    "colour",
+    "color",
     "spawn",
     "switch",
     "arrange",
@@ -289,6 +292,11 @@ def _comma_and(text: str) -> list[str]:
 # same verb (kept only where every part names a thing).
 _CONJUNCT = re.compile(r"\s*(?:,\s*)?(?:\band\b|\bplus\b|\+|&)\s+(?=[a-z0-9])")
 _VERB_AT = re.compile(rf"\b(?:{'|'.join(_VERBS)})\b")
+# A list of things by commas, each with its own words ("paint the bench red, the bin blue and ...").
+_LISTED = re.compile(r"\s*,\s+(?=(?:the|a|an|one|two|three|four|five|\d+)\s)")
+# More of the thing just named, its noun left out: "another two", "two more", "one more", "another".
+_MORE_OF = re.compile(r"^\s*(?:another(?:\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten))?"
+                      r"|(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+more)\b", re.IGNORECASE)
 
 
 def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
@@ -304,12 +312,19 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     verb = _VERB_AT.search(low)
     if verb is None or any(w in low for w in (*lx.ARRANGE_WORDS, "between", " line", " row", " grid", "mix")):
         return [clause]
-    cuts = [m for m in _CONJUNCT.finditer(clause) if m.start() > verb.end()]
+    cuts = sorted([m for m in (*_CONJUNCT.finditer(clause), *_LISTED.finditer(clause)) if m.start() > verb.end()],
+                  key=lambda m: m.start())
     parts, start = [], 0
     for cut in cuts:
-        parts.append(clause[start : cut.start()])
-        start = cut.end()
+        if cut.start() >= start:
+            parts.append(clause[start : cut.start()])
+            start = cut.end()
     parts.append(clause[start:])
+    said = ph.find_categories(parts[0])
+    if said:  # "two cones at the main gate and another two at the east gate": more of the same thing
+        noun = ph.normalise(parts[0])[said[0].start : said[0].end].strip()  # the text find_categories indexes
+        parts[1:] = [_MORE_OF.sub(lambda m: f"{m.group(0)} {noun}", p, count=1) if not ph.find_categories(p) else p
+                     for p in parts[1:]]
     if len(parts) < 2 or not all(ph.find_categories(p) or ph.has_any(p.lower(), ph.EGO_WORDS) for p in parts):
         return [clause]  # each part names a thing ("park the SUV in lot A and the ego in lot B")
     particle = re.match(r"\s+(?:out|away|off|down|up|rid of)\b", clause[verb.end():], re.IGNORECASE)

@@ -211,7 +211,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
     if nearest is not None:
         anchor = _anchor_after(r, scene, nearest.end(), back, prefer_preposition=True)
         head = next((m for m in r.mentions if m.start >= nearest.end()), None)
-        if (anchor is not None and head is not None and _PREPOSITION.search(low, head.end) is None
+        right_after = head is not None and not r.low[nearest.end() : head.start].strip()  # "nearest bin", not "nearest the bin"
+        if (anchor is not None and head is not None and right_after and _PREPOSITION.search(low, head.end) is None
                 and anchor.name == _only_instance(r, scene, head)):
             anchor = Anchor("asset", EGO_ID)  # "where's the nearest bin": nearest the asker, not itself
         if anchor is not None:
