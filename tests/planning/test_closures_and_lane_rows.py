@@ -431,3 +431,11 @@ def test_more_of_the_same_at_a_second_place_and_a_comma_list_of_looks(session, c
     assert report.ok, report.error
     looks = {i: session.scene.asset(i).appearance.rgba for i in ("bench_1", "trash_bin_1", "fire_hydrant_1")}
     assert len(set(looks.values())) == 3 and None not in looks.values()
+
+
+def test_a_new_thing_where_a_removed_one_was_stands_on_its_spot(session, campus):
+    report = session.submit("get rid of the bin and put a bench where it used to be")
+    assert report.ok, report.error
+    bin_ = campus.asset("trash_bin_1")
+    bench = next(a for a in added(session, campus, "bench"))
+    assert bin_ is not None and math.dist((bench.pose.x, bench.pose.y), (bin_.pose.x, bin_.pose.y)) < 1.5

@@ -371,6 +371,9 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         args["near"] = "ego"  # "the two lamps closest to the ego"
     elif count and memory.last_focus() is not None and recent:
         args["near"] = recent[0]
+    present = [a.id for a in scene.assets if a.category == name]
+    if count == 1 and len(present) == 1:
+        notes.subject = present  # "remove the hydrant, then put a bench where it was": that one
     return [ToolCall(tool="remove_assets", args=args)]
 
 

@@ -422,6 +422,10 @@ def location(
     facing = across_from(scene, r.low)
     if facing is not None:  # "a car parked across from the JTEKT entrance": the road's far side
         return facing
+    was = _WHERE_IT_WAS.search(r.low)
+    gone = next((scene.asset(i) for i in notes.subject if scene.asset(i) is not None), None) if was else None
+    if gone is not None:  # "remove the hydrant, then add a bench where it was": the spot it stood on
+        return {"relation": "absolute", "x": round(gone.pose.x, 2), "y": round(gone.pose.y, 2)}
     offset = (_edge_of(r, scene) or _compass_of(r, scene) or _past_along_lane(r, scene)) if compass else None
     if offset is not None:  # "north of the crossroads", "20 m west of the fountain", "in the northbound lane, north of ..."
         return offset
@@ -517,6 +521,10 @@ _UNIT = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": 
 
 # A closure of one lane says so: "block the eastbound lane" (not "close Main Street", not "both lanes").
 _ONE_LANE = re.compile(r"\b(?<!both )(?<!all )(?<!two )lane\b")
+
+
+# Where a thing just named stood: "where it was", "where they used to be", "in its old spot".
+_WHERE_IT_WAS = re.compile(r"\bwhere (?:it|they|that one|those) (?:was|were|stood|used to (?:be|stand))\b|\bin (?:its|their) old (?:spot|place)\b")
 
 
 # Steps by which a lane's middle is slid along it off an area it crosses (the junction), and the
