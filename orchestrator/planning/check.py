@@ -105,9 +105,10 @@ BY_A_THING_M = 8.0
 DESCRIPTION_SCORE, DESCRIPTION_MARGIN = 0.45, 0.08
 # Tolerance when matching a number of the request with one of the plan (rounding, unit maths).
 NUMBER_TOLERANCE = 0.02
-# Unit conversions a planner may apply to a number: km/h and mph to m/s, feet, yards and car lengths to
-# metres, per cent.
-UNIT_FACTORS = (1.0, 1 / 3.6, 0.44704, 0.3048, 0.01, YARD_M, CAR_LENGTH_M)
+# Unit conversions a planner may apply to a number, each when its unit is said: km/h and mph to m/s,
+# feet, yards and car lengths to metres, per cent (ten metres is not "3 m" read as ten feet).
+UNIT_FACTORS = {r"km|kph|kilomet": 1 / 3.6, r"mph|mile": 0.44704, r"\bf(?:ee)?t\b|\bfoot\b": 0.3048, r"%|per ?cent": 0.01,
+                r"\byards?\b|\byds?\b": YARD_M, r"(?:car|vehicle)[- ]lengths?": CAR_LENGTH_M}
 QUERY_TOOLS = tuple(sorted(SEARCH_TOOLS))
 # Workers that write the storyboard: their readings are the scenario reader's to judge.
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
@@ -246,7 +247,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
             out.append(f"your words describe a {meant.replace('_', ' ')}, but the plan uses "
                        + ", ".join(sorted(plan_categories)))
     totals = set(_totals(request, effect).values())  # "there should be exactly four cones": how many are left
-    missing = [n for n in request.numbers if not _accounts_for(n, effect, scene) and n not in totals]
+    factors = [1.0, *(f for unit, f in UNIT_FACTORS.items() if re.search(unit, request.low))]
+    missing = [n for n in request.numbers if not _accounts_for(n, effect, scene, factors) and n not in totals]
     if missing and effect.calls:
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
     if request.place is not None and effect.edits and not effect.environment:
@@ -501,16 +503,19 @@ def _numbers_in_args(value: Any) -> list[float]:
     return []
 
 
-def _accounts_for(number: float, effect: Effect, scene: Scene) -> bool:
+def _accounts_for(number: float, effect: Effect, scene: Scene, factors: list[float]) -> bool:
     if not math.isfinite(number):
         return False
     counts = [float(len(effect.added)), float(len(effect.removed)), float(len(effect.changed))]
+    # "the two sedans and the SUV": how many of each kind the plan takes, adds or changes
+    counts += [float(n) for group in (effect.added, effect.removed, effect.changed)
+               for n in Counter(a.category for a in group).values()]
     used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + counts
     used += _reach(effect, scene)  # "starting 20 m ahead of our car": where a layout begins and ends
     used += [math.hypot(float(c.args.get("east", 0)), float(c.args.get("north", 0)))  # a move at a slant
              for c in effect.calls if c.tool == "move_asset" and "east" in c.args and "north" in c.args]
     return any(math.isclose(abs(number) * f, abs(u), rel_tol=NUMBER_TOLERANCE, abs_tol=NUMBER_TOLERANCE)
-               for u in used for f in UNIT_FACTORS)
+               for u in used for f in factors)
 
 
 def _totals(request: Request, effect: Effect) -> dict[str, int]:

@@ -439,3 +439,11 @@ def test_a_new_thing_where_a_removed_one_was_stands_on_its_spot(session, campus)
     bin_ = campus.asset("trash_bin_1")
     bench = next(a for a in added(session, campus, "bench"))
     assert bin_ is not None and math.dist((bench.pose.x, bench.pose.y), (bin_.pose.x, bin_.pose.y)) < 1.5
+
+
+def test_a_number_is_not_accounted_for_by_a_unit_never_said(campus, registry):
+    speed_only = ToolCall(tool="set_behaviour", args={"asset": "ego", "behaviour": {"kind": "drive_lane", "speed": 3.0}})
+    session, report = submit(campus, registry, Fixed(speed_only),
+                             "the ego should start ten metres further back and roll at three metres a second")
+    assert not report.ok and "10" in (report.error or "")  # ten metres is no 3 m read as ten feet
+    assert session.scene.asset("ego") == campus.asset("ego")

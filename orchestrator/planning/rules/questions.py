@@ -212,9 +212,10 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         anchor = _anchor_after(r, scene, nearest.end(), back, prefer_preposition=True)
         head = next((m for m in r.mentions if m.start >= nearest.end()), None)
         right_after = head is not None and not r.low[nearest.end() : head.start].strip()  # "nearest bin", not "nearest the bin"
-        if (anchor is not None and head is not None and right_after and _PREPOSITION.search(low, head.end) is None
-                and anchor.name == _only_instance(r, scene, head)):
-            anchor = Anchor("asset", EGO_ID)  # "where's the nearest bin": nearest the asker, not itself
+        if anchor is not None and head is not None and right_after and anchor.name == _only_instance(r, scene, head):
+            # "where's the nearest bin": nearest the asker, not itself; "the closest bin too the stop": the stop
+            later = [e for pos, e in _entities(r, scene, back) if pos > head.end and e.name != anchor.name]
+            anchor = later[0] if later else Anchor("asset", EGO_ID)
         if anchor is not None:
             return _nearest(r, scene, anchor)
     on_road = r.mentions and _road_named(r, scene) is not None and _ALONG.search(low) is not None  # "stop signs on Campus Drive"
