@@ -106,8 +106,8 @@ DESCRIPTION_SCORE, DESCRIPTION_MARGIN = 0.45, 0.08
 # Tolerance when matching a number of the request with one of the plan (rounding, unit maths).
 NUMBER_TOLERANCE = 0.02
 # Unit conversions a planner may apply to a number, each when its unit is said: km/h and mph to m/s,
-# feet, yards and car lengths to metres, per cent (ten metres is not "3 m" read as ten feet).
-UNIT_FACTORS = {r"km|kph|kilomet": 1 / 3.6, r"mph|mile": 0.44704, r"\bf(?:ee)?t\b|\bfoot\b": 0.3048, r"%|per ?cent": 0.01,
+# feet, yards, car lengths and centimetres to metres, per cent (ten metres is not "3 m" read as ten feet).
+UNIT_FACTORS = {r"km|kph|kilomet": 1 / 3.6, r"mph|mile": 0.44704, r"\bf(?:ee)?t\b|\bfoot\b": 0.3048, r"%|per ?cent|\bcm\b|centimet": 0.01,
                 r"\byards?\b|\byds?\b": YARD_M, r"(?:car|vehicle)[- ]lengths?": CAR_LENGTH_M}
 QUERY_TOOLS = tuple(sorted(SEARCH_TOOLS))
 # Workers that write the storyboard: their readings are the scenario reader's to judge.

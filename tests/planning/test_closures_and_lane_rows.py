@@ -447,3 +447,11 @@ def test_a_number_is_not_accounted_for_by_a_unit_never_said(campus, registry):
                              "the ego should start ten metres further back and roll at three metres a second")
     assert not report.ok and "10" in (report.error or "")  # ten metres is no 3 m read as ten feet
     assert session.scene.asset("ego") == campus.asset("ego")
+
+
+def test_a_distance_in_centimetres_moves_that_far_and_its_compass_word_is_no_lane(session, campus):
+    report = session.submit("shift the hydrant 80 cm south")
+    assert report.ok, report.error
+    before, after = campus.asset("fire_hydrant_1"), session.scene.asset("fire_hydrant_1")
+    assert before is not None and after is not None
+    assert after.pose.y == pytest.approx(before.pose.y - 0.8) and after.pose.x == pytest.approx(before.pose.x)

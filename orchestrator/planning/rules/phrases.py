@@ -203,11 +203,11 @@ def find_distance(text: str) -> float | None:
     """A distance in metres ('5 m', '10 metres'); a spacing ('4 m apart'), a radius or a speed ('10 m/s') is not one."""
     low = nb.RADIUS.sub(lambda m: " " * len(m.group(0)), nb.SPACING.sub(lambda m: " " * len(m.group(0)), text.lower()))
     low = re.sub(rf"({nb.NUMBER})\s*{nb.SPEED_UNIT}", lambda m: " " * len(m.group(0)), low)
-    m = re.search(rf"({nb.NUMBER})\s*(m\b|metres?\b|meters?\b|ft\b|feet\b|foot\b)", low)
+    m = re.search(rf"({nb.NUMBER})\s*(m\b|metres?\b|meters?\b|ft\b|feet\b|foot\b|cm\b|centimet(?:re|er)s?\b)", low)
     if m is None:
         return None
     said = nb.finite(nb.Number(nb.parse(m.group(1)), m.group(1), m.start(1), m.end(1)), "a distance in metres")
-    return round(said * nb.FOOT_M, 2) if m.group(2).startswith("f") else said
+    return round(said * nb.FOOT_M, 2) if m.group(2).startswith("f") else said / 100 if m.group(2).startswith("c") else said
 
 
 def find_speed(text: str) -> float | None:
