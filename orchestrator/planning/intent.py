@@ -56,7 +56,7 @@ KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
 _QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question),?\s+)?(which|what|in which|in what|where|how|is there|are there|is the|are the|does|do any|who|whats|wheres|hows|whos"
-                             r"|is anything|is any|are any|is something|has anything|have any|do the)\b"
+                             r"|is anything|is any|is anyone|is anybody|is someone|is somebody|is nobody|are any|is something|has anything|has anyone|have any|do the)\b"
                              # "the gates, where are they": the thing first, the question after it
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need

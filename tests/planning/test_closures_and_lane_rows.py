@@ -455,3 +455,11 @@ def test_a_distance_in_centimetres_moves_that_far_and_its_compass_word_is_no_lan
     before, after = campus.asset("fire_hydrant_1"), session.scene.asset("fire_hydrant_1")
     assert before is not None and after is not None
     assert after.pose.y == pytest.approx(before.pose.y - 0.8) and after.pose.x == pytest.approx(before.pose.x)
+
+
+@pytest.mark.parametrize("prompt", ["is anything parked on Campus Drive", "is anybody standing by the fountain"])
+def test_a_yes_no_question_about_anything_or_anyone_changes_nothing(session, campus, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert report.plan.calls and all(c.tool == "find_assets" for c in report.plan.calls)
+    assert session.scene.assets == campus.assets

@@ -63,6 +63,7 @@ _ENDS = re.compile(r"\b(?:from|to|and|between|apart)\b")
 _ASKER_ALONE = re.compile(r"^\W*(?:me|us|i|we|here)\W*$")
 # A road named as where things are, by its name ("the stop signs on Campus Drive").
 _ALONG = re.compile(r"\b(?:on|along|alongside|beside|lining|lines?|down)\s+(?:the\s+)?[a-z]+\s+(?:street|drive|road|avenue|lane|way|st|rd|ave)\b")
+_ANYTHING = re.compile(r"\b(?:any|anything|something|anyone|anybody|someone|somebody|what|whatever|stuff)\b")
 # How full a place is ("how busy is the car park", "is the bus stop crowded"): what stands there.
 _BUSY = re.compile(r"\b(?:busy|busier|full|crowded|packed|empty|quiet|occupied|deserted|free spaces?|room left)\b")
 # What a question can ask for by kind rather than by name.
@@ -218,7 +219,9 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
             anchor = later[0] if later else Anchor("asset", EGO_ID)
         if anchor is not None:
             return _nearest(r, scene, anchor)
-    on_road = r.mentions and _road_named(r, scene) is not None and _ALONG.search(low) is not None  # "stop signs on Campus Drive"
+    # "stop signs on Campus Drive", "is anything parked on Campus Drive": what stands on that road
+    anything = not r.mentions and _ANYTHING.search(low) is not None
+    on_road = (r.mentions or anything) and _road_named(r, scene) is not None and _ALONG.search(low) is not None
     if (_ON_LANE.search(low) is not None or on_road) and not _asks_for_lanes(r):
         args: dict[str, Any] = {"on_lane": True}
         road = _road_named(r, scene) or (back.name if back is not None and back.kind == "lane" else None)
