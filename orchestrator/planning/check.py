@@ -248,7 +248,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                        + ", ".join(sorted(plan_categories)))
     totals = set(_totals(request, effect).values())  # "there should be exactly four cones": how many are left
     factors = [1.0, *(f for unit, f in UNIT_FACTORS.items() if re.search(unit, request.low))]
-    missing = [n for n in request.numbers if not _accounts_for(n, effect, scene, factors) and n not in totals]
+    missing = [n for n in request.numbers if not _accounts_for(n, effect, scene, factors, request.place) and n not in totals]
     if missing and effect.calls:
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
     if request.place is not None and effect.edits and not effect.environment:
@@ -503,13 +503,20 @@ def _numbers_in_args(value: Any) -> list[float]:
     return []
 
 
-def _accounts_for(number: float, effect: Effect, scene: Scene, factors: list[float]) -> bool:
+def _accounts_for(number: float, effect: Effect, scene: Scene, factors: list[float], place: str | None = None) -> bool:
     if not math.isfinite(number):
         return False
     counts = [float(len(effect.added)), float(len(effect.removed)), float(len(effect.changed))]
     # "the two sedans and the SUV": how many of each kind the plan takes, adds or changes
     counts += [float(n) for group in (effect.added, effect.removed, effect.changed)
                for n in Counter(a.category for a in group).values()]
+    # "I ended up with two benches at the gate, one is plenty": how many of a kind it acts on stood there
+    near = _nearness(scene, place) if place else (lambda a: True)
+    counts += [float(sum(1 for a in scene.assets if a.category == kind and near(a)))
+               for kind in {a.category for a in (*effect.removed, *effect.changed)}]
+    # "the car number 2": the number in the id of a thing the plan names
+    counts += [float(m.group(1)) for c in effect.calls for v in c.args.values() for i in (v if isinstance(v, list) else [v])
+               if isinstance(i, str) and (m := re.search(r"_(\d+)$", i)) and scene.asset(i) is not None]
     used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + counts
     used += _reach(effect, scene)  # "starting 20 m ahead of our car": where a layout begins and ends
     used += [math.hypot(float(c.args.get("east", 0)), float(c.args.get("north", 0)))  # a move at a slant

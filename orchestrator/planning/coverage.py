@@ -119,6 +119,9 @@ _DAY_PART = re.compile(r"(?<!this )\b(morning|afternoon|evening|night|midnight|n
 # Words that open background ("where people relax", "before I plan the pedestrian test"):
 # a category named after them is circumstance, not something the plan must act on.
 _BACKGROUND = re.compile(r"\b(where|when|while|before|after|because|so that|so|since|until|unless)\b")
+# A reason said before ", so ..." ("the visitors are from JTEKT, so ..."): its things are the setting.
+_SO_AFTER = re.compile(r"[^.;!?]*,\s*so\b")
+_STATE_VERB = re.compile(r"\b(?:is|are|was|were|come|comes|came)\b")
 _OUGHT = re.compile(r"[^,.;]*\b(?:should|must|needs? to|has to|have to|ought to)\b")
 # A thing named after a preposition of place ("from behind the parked bus", "next to a bench")
 # is where something is, not something the plan must act on.
@@ -203,6 +206,8 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
             continue
         if _LOCATIVE.search(masked[max(0, m.start - 40) : m.start]):
             continue
+        if _SO_AFTER.match(masked, m.end) and _STATE_VERB.search(masked, m.end, m.end + 30):
+            continue  # "the visitors are from JTEKT, so the SUV goes ...": who the reason is about
         if not (near_place or compound):
             out.add(m.category)
     return out

@@ -425,7 +425,8 @@ _LEFT_AT = re.compile(r"\s+(?:it|them|that|this|those|these|(?:the|that|this|a|a
 def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
     """The behaviour a clause names, if it suits an asset of `category`."""
     for kind in ("jaywalk", "circle", "cross_road", "drive_lane", "parked"):
-        said = inflected(lx.BEHAVIOUR_WORDS[kind]).search(ph.normalise(r.masked)) if kind in ("drive_lane", "jaywalk") else None
+        said = inflected(lx.BEHAVIOUR_WORDS[kind]).search(ph.normalise(r.masked)) if kind == "drive_lane" else None
+        said = said or (re.search(r"\bjaywalk\w*", r.masked) if kind == "jaywalk" else None)  # "jaywalks", "jaywalked"
         if said and said.group(0).startswith("head") and r.has(lx.BEHAVIOUR_WORDS["parked"]):
             said = None  # "park a car in lot A, heading north": which way it faces
         if said and said.group(0).startswith("leav") and _LEFT_AT.match(ph.normalise(r.masked)[said.end() :]):

@@ -22,7 +22,8 @@ _ARTICLES = re.compile(r"\b(the|a|an)\s+(?=[a-z0-9])")
 _NEW_DETERMINERS = {"a", "an", "some", "another", "new", "more", "extra", "additional", "few", "several"}
 _OLD_DETERMINERS = {"the", "that", "those", "these", "our", "its", "their", "his", "her", "this", "my", "your"}
 _DIRECTIONS = {"west": "westbound", "east": "eastbound", "north": "northbound", "south": "southbound"}
-_COMPASS_PLACE = re.compile(r"\b(?:north|south|east|west)(?:ern)?(?= side of\b| end of\b| of\b| corner\b| half\b| edge\b)"
+_COMPASS_PLACE = re.compile(r"\b(?:north|south|east|west)(?:ern)?(?= side of\b| end of\b| of\b| corner\b| half\b| edge\b"
+                            r"| sidewalk\b| pavement\b| footpath\b| kerb\b| curb\b| verge\b)"
                             r"|\bto the (?:north|south|east|west)\b")
 
 
