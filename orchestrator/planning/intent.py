@@ -86,9 +86,10 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      r"|^(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:add|put|drop|place|move|make|set|"
                      r"remove|take|get|give|turn|paint|park|bring|have|let'?s)\b"
                      # "could the second car go in lot A?": a wish for where a thing should be
-                     r"|(?:^|[.!;]\s*)(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come)\b"
+                     r"|(?:^|[.!;?]\s*)(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come|disappear|vanish|leave)\b"
                      # "the car you just put there, could it go forward?": the same wish for a thing named first
-                     r"|(?:^|[,.;:!-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift|look|be|get|face)\b")
+                     r"|(?:^|[,.;:!?-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift|look|be|get|face"
+                     r"|disappear|vanish|leave)\b")
 
 
 # English's ways of wrapping a request in a question ("is it possible to park ...", "any chance we

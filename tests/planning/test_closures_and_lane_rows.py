@@ -472,3 +472,12 @@ def test_everyday_words_for_a_person_add_a_pedestrian_and_a_sidewalks_compass_wo
     report = session.submit("one more commuter on the south sidewalk")
     assert report.ok, report.error
     assert all(c.args.get("location", {}).get("relation") != "in_lane" for c in report.plan.calls)
+
+
+def test_can_it_disappear_asks_for_it_gone_and_two_things_asked_are_two_calls(session, campus):
+    report = session.submit("the bench by the bus stop blocks my shot. could it vanish?")
+    assert report.ok, report.error
+    assert session.scene.asset("bench_1") is None
+    report = session.submit("Two questions: how far is the fountain from the east gate, and is it raining?")
+    assert report.ok, report.error
+    assert len(report.plan.calls) == 2
