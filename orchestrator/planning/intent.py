@@ -18,6 +18,8 @@ REMOVE_WORDS = re.compile(
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)"
+    # "get those cars out of lot B": gone from there (moving them elsewhere says where to)
+    r"|(?:get|take|clear) (?:\w+ ){1,3}out of (?![^,.;]*\b(?:into|to|onto|and (?:put|park|move))\b)"
     # "clear most of the cars out of lot B", "clear the junk off the road": gone from there
     r"|clear (?:\w+ ){1,4}(?:out of|off|from)"
     r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much"

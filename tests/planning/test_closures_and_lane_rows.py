@@ -481,3 +481,16 @@ def test_can_it_disappear_asks_for_it_gone_and_two_things_asked_are_two_calls(se
     report = session.submit("Two questions: how far is the fountain from the east gate, and is it raining?")
     assert report.ok, report.error
     assert len(report.plan.calls) == 2
+
+
+def test_too_many_along_a_road_takes_some_never_all(session, campus):
+    report = session.submit("there are way too many street lamps along Main Street")
+    assert report.ok, report.error
+    left = session.scene.count("street_light")
+    assert 0 < left < campus.count("street_light")
+
+
+def test_getting_things_out_of_a_place_takes_them_away_unless_it_says_where_to(session, campus):
+    report = session.submit("get the cars out of lot B, but not the SUV")
+    assert report.ok, report.error
+    assert session.scene.count("passenger_car") == 0 and session.scene.asset("suv_1") == campus.asset("suv_1")

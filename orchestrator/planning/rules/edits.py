@@ -337,13 +337,13 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         ids = [a.id for a in scene.assets if a.category == name and road[1](a)]
         if not ids:
             raise ph_error(f"there is no {name.replace('_', ' ')} on {road[0]} to take away")
-        return [ToolCall(tool="remove_assets", args={"assets": ids[:count] if count else ids})]
+        return [ToolCall(tool="remove_assets", args={"assets": _some(ids, count, fewer, notes)})]
     side = side_of(r.low, scene)
     if side is not None:  # "the street lights on the north side of Main Street": those there
         ids = [a.id for a in scene.assets if a.category == name and side[1](a)]
         if not ids:
             raise ph_error(f"there is no {name.replace('_', ' ')} on the {side[0]} to take away")
-        return [ToolCall(tool="remove_assets", args={"assets": ids[:count] if count else ids})]
+        return [ToolCall(tool="remove_assets", args={"assets": _some(ids, count, fewer, notes)})]
     outermost = None if mention.plural else _outermost(r, scene, mention, [a.id for a in scene.assets if a.category == name])
     if outermost is not None:
         return [ToolCall(tool="remove_assets", args={"assets": [outermost]})]
@@ -375,6 +375,17 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     if count == 1 and len(present) == 1:
         notes.subject = present  # "remove the hydrant, then put a bench where it was": that one
     return [ToolCall(tool="remove_assets", args=args)]
+
+
+def _some(ids: list[str], count: int | None, fewer: bool, notes: Notes) -> list[str]:
+    """Which of `ids` go: as many as said, else all, but only some when fewer are asked for ("too
+    many lamps along Main Street": every other one, a guess, never every one)."""
+    if count:
+        return ids[:count]
+    if fewer:
+        notes.guess("how many fewer")
+        return ids[1::2] or ids[:1]
+    return ids
 
 
 def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall | None:
