@@ -70,7 +70,7 @@ LIGHTS_WORDS = ("street lights", "streetlights", "street lamps", "headlights", "
 ARRANGE_WORDS = ("around", "surround", "ring", "circle of", "encircle", "mark", "cordon", "enclose",
                  "line of", "row of", "in a line", "in a row", "in line", "in row", "grid", "along the",
                  "in circle", "in a circle", "fence off", "cordon off", "block off", "rows of",
-                 "arrange", "arranged", "lay out", "laid out", "across the", "across", "like a grid", "formation")
+                 "arrange", "arranged", "lay out", "laid out", "across the", "across", "like a grid", "formation", "slalom")
 # Saying these about a road means: put barriers across it.
 BLOCK_WORDS = ("block the road", "block the street", "close the road", "close the street",
                "block the lane", "close the lane", "shut the road", "road closed", "closed for",
@@ -101,7 +101,7 @@ CONCEPTS: dict[str, tuple[str, ...]] = {
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.
 COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6,
-                     "row": 0, "line": 0, "ring": 0, "circle": 0, "group": 0, "set": 0, "cluster": 0}
+                     "row": 0, "line": 0, "ring": 0, "circle": 0, "group": 0, "set": 0, "cluster": 0, "crowd": 8}
 ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "last": -1, "other": 2}
 # Things whose colour people name instead of the colour.
 COLOUR_OF = {"grass": "green", "leaves": "green", "sky": "blue", "sea": "blue", "snow": "white",

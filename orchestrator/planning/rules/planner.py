@@ -1065,7 +1065,7 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         args["shape"] = "parking_row"  # "a row of parked cars in lot B": side by side in bays
     elif _LINING.search(r.low) and not r.has(("across",)):
         args["shape"] = "lane_edge"  # "line the road near the gate with cones", "cones along the kerb"
-    elif r.has(("rows", "across")) or md.layout_said(r.low) in ("line", "row") or (
+    elif r.has(("rows", "across", "slalom")) or md.layout_said(r.low) in ("line", "row") or (
             md.layout_said(r.low) is None and nb.spacing_said(r.low) is not None):
         args["shape"] = "line"
     elif r.has(("grid",)):
@@ -1105,6 +1105,14 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
                 where = {"relation": "at", "target": focus_target}
     # "the student car park should look busy: a row of six cars": the place of the clause before
     args["location"] = where or (dict(notes.place) if notes.place else None) or _fallback_place(memory)
+    if r.has(("slalom",)):  # cones a car weaves between: a few, well apart, down the middle of the lane
+        if args.get("count") == 1:
+            args.pop("count")  # "a cone slalom": one slalom, not one cone
+        args.setdefault("count", SLALOM_CONES)
+        args["spacing"] = SLALOM_SPACING_M
+        place = args["location"] or {}
+        if place.get("relation") == "in_lane" and scene.roads.lane(str(place.get("target"))) is not None:
+            args["shape"], args["location"] = "lane_edge", {**place, "side": "right", "offset_m": 0.0}
     edge = EDGE_OF.search(r.low)
     if args["shape"] == "line" and edge is not None and args["location"].get("relation") == "absolute":
         args["heading_deg"] = 90.0 if edge.group(1) in ("east", "west") else 0.0  # along that edge of the area
@@ -1131,6 +1139,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     return ToolCall(tool="arrange_assets", args=args)
 
 
+# A slalom unless told otherwise: this many cones, this far apart.
+SLALOM_CONES, SLALOM_SPACING_M = 6, 5.0
 # Lining a road, a lane or its edge: "line the road with cones", "the edges of the bus lane", "along the kerb".
 _LINING = re.compile(
     r"\bline[sd]?\s+(?:the\s+|both\s+|each\s+|either\s+|our\s+)?(?:[a-z]+\s+){0,2}?(?:roads?|lanes?|streets?|kerbs?|curbs?|edges?)\b"

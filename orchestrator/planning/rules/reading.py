@@ -438,6 +438,9 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
     partitive = md.partitive_count(before)
     if partitive is not None:
         return partitive
+    itself = reading.low[mention.start : mention.end].strip()
+    if lx.COLLECTIVE_COUNTS.get(itself) and not re.search(r"\b(?:\d+|a few|several)\s*$", before):
+        return lx.COLLECTIVE_COUNTS[itself]  # "a crowd at the fountain": a crowd's worth, not one
     after = _COUNT_AFTER.search(reading.low[mention.end :])  # "cones x4", "a ring of people, 6 of them"
     if after is not None:
         word = next(g for g in after.groups() if g)
