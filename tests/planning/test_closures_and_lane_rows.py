@@ -502,6 +502,6 @@ def test_a_crowd_is_several_people_and_a_slalom_is_cones_well_apart_down_a_lane(
     assert session.scene.count("pedestrian") - campus.count("pedestrian") >= 5
     report = session.submit("lay out a slalom with cones in the westbound lane")
     assert report.ok, report.error
-    cones = sorted((c.pose.x for c in added(session, campus, "traffic_cone")))
+    cones = sorted(c.pose.x for c in added(session, campus, "traffic_cone"))
     assert len(cones) >= 4 and all(b - a >= 4 for a, b in itertools.pairwise(cones))
     assert all(1.0 < c.pose.y < 2.5 for c in added(session, campus, "traffic_cone"))  # down the lane's middle
