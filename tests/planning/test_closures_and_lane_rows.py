@@ -466,7 +466,7 @@ def test_a_yes_no_question_about_anything_or_anyone_changes_nothing(session, cam
 
 
 def test_everyday_words_for_a_person_add_a_pedestrian_and_a_sidewalks_compass_word_is_no_lane(session, campus):
-    report = session.submit("a couple of tourists by the fountain, and a wheelchair user at the bus stop")
+    report = session.submit("a couple of tourists by the fountain, and a visitor at the bus stop")
     assert report.ok, report.error
     assert session.scene.count("pedestrian") == campus.count("pedestrian") + 3
     report = session.submit("one more commuter on the south sidewalk")
