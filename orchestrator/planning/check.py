@@ -510,10 +510,9 @@ def _accounts_for(number: float, effect: Effect, scene: Scene, factors: list[flo
     # ("two things for my notes: ..." asks as many things as the plan does) "the two sedans and the SUV": how many of each kind the plan takes, adds or changes
     counts += [float(n) for group in (effect.added, effect.removed, effect.changed)
                for n in Counter(a.category for a in group).values()]
-    # "I ended up with two benches at the gate, one is plenty": how many of a kind it acts on stood there
+    # "I ended up with two benches at the gate, one is plenty": how many of a kind it takes stood there
     near = _nearness(scene, place) if place else (lambda a: True)
-    counts += [float(sum(1 for a in scene.assets if a.category == kind and near(a)))
-               for kind in {a.category for a in (*effect.removed, *effect.changed)}]
+    counts += [float(sum(1 for a in scene.assets if a.category == kind and near(a))) for kind in {a.category for a in effect.removed}]
     # "the car number 2": the number in the id of a thing the plan names
     counts += [float(m.group(1)) for c in effect.calls for v in c.args.values() for i in (v if isinstance(v, list) else [v])
                if isinstance(i, str) and (m := re.search(r"_(\d+)$", i)) and scene.asset(i) is not None]
