@@ -637,7 +637,7 @@ def _wrong_way_to(request: Request, scene: Scene, moved: list[AssetInstance]) ->
     return out
 
 
-_FACE_SAID = re.compile(r"\bfac(?:e|es|ing)\b")
+_FACE_SAID = re.compile(r"\bfac(?:e|es|ing)\b|\bpoint(?:s|ed|ing)?\b(?=[^,.;]*\b(?:at|towards?)\b)")
 
 
 # How far off the heading to a place a thing may point and still face it.

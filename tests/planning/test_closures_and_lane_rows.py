@@ -505,3 +505,15 @@ def test_a_crowd_is_several_people_and_a_slalom_is_cones_well_apart_down_a_lane(
     cones = sorted(c.pose.x for c in added(session, campus, "traffic_cone"))
     assert len(cones) >= 4 and all(b - a >= 4 for a, b in itertools.pairwise(cones))
     assert all(1.0 < c.pose.y < 2.5 for c in added(session, campus, "traffic_cone"))  # down the lane's middle
+
+
+def test_pointing_a_thing_at_a_place_turns_it_there_and_never_moves_it_there(session, campus):
+    report = session.submit("point the bench towards the fountain")
+    assert report.ok, report.error
+    before, after = campus.asset("bench_1"), session.scene.asset("bench_1")
+    assert before is not None and after is not None
+    assert (after.pose.x, after.pose.y) == (before.pose.x, before.pose.y) and after.pose.yaw != before.pose.yaw
+    fountain = campus.landmark("fountain")
+    assert fountain is not None
+    towards = math.atan2(fountain.position[1] - after.pose.y, fountain.position[0] - after.pose.x)
+    assert abs(math.remainder(after.pose.yaw - towards, math.tau)) < 0.05

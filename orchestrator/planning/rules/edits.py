@@ -567,7 +567,8 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> di
 
 
 # A thing a thing should face: "so it faces the road", "turn it to face the fountain", "facing the ego".
-_FACES = re.compile(r"\bfac(?:e|es|ing)\s+(?:towards?\s+|onto\s+)?(?:the\s+)?(?:(?P<road>road|street|lane|traffic|kerb|curb|carriageway)"
+_FACES = re.compile(r"\b(?:fac(?:e|es|ing)|point(?:s|ed|ing)?(?:\s+(?:it|them|the\s+\w+|\w+_\d+|ego))?)\s+(?:towards?\s+|onto\s+|at\s+)?"
+                    r"(?:the\s+)?(?:(?P<road>road|street|lane|traffic|kerb|curb|carriageway)"
                     r"|(?P<ego>ego|our car|my car)|(?P<place>§))")
 
 
