@@ -244,7 +244,8 @@ class FindLanes(Tool[FindLanesArgs]):
             (x1, y1), (x2, y2) = ln.centreline[0], ln.centreline[-1]
             heading = math.degrees(math.atan2(y2 - y1, x2 - x1))
             length = sum(math.dist(p, q) for p, q in zip(ln.centreline, ln.centreline[1:], strict=False))
-            lines.append(f"{ln.id} on {ln.road}, heading {heading:.0f} deg, {ln.width:g} m wide, {length:.0f} m long")
+            lines.append(f"{ln.id} on {ln.road}, heading {heading:.0f} deg, {ln.width:g} m wide, {length:.0f} m long, "
+                         f"speed limit {ln.speed_limit:g} m/s ({ln.speed_limit * 3.6:.0f} km/h)")
         return ToolResult(WorldEdit(), f"{lead}{len(lanes)} lane(s): " + "; ".join(lines),
                           data={"lanes": [ln.id for ln in lanes]})
 

@@ -517,3 +517,10 @@ def test_pointing_a_thing_at_a_place_turns_it_there_and_never_moves_it_there(ses
     assert fountain is not None
     towards = math.atan2(fountain.position[1] - after.pose.y, fountain.position[0] - after.pose.x)
     assert abs(math.remainder(after.pose.yaw - towards, math.tau)) < 0.05
+
+
+def test_a_roads_lanes_say_their_speed_limit(session, campus):
+    report = session.submit("what's the speed limit on Campus Drive?")
+    assert report.ok and report.answer is not None
+    limit = next(ln.speed_limit for ln in campus.roads.lanes if ln.road == "Campus Drive")
+    assert f"speed limit {limit:g} m/s" in report.answer
