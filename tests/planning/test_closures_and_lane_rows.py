@@ -524,3 +524,15 @@ def test_a_roads_lanes_say_their_speed_limit(session, campus):
     assert report.ok and report.answer is not None
     limit = next(ln.speed_limit for ln in campus.roads.lanes if ln.road == "Campus Drive")
     assert f"speed limit {limit:g} m/s" in report.answer
+
+
+def test_turning_a_thing_into_another_kind_replaces_it_on_its_spot(session, campus):
+    report = session.submit("turn the fire hydrant into a bench")
+    assert report.ok, report.error
+    hydrant = campus.asset("fire_hydrant_1")
+    bench = added(session, campus, "bench")
+    assert hydrant is not None and session.scene.asset("fire_hydrant_1") is None and len(bench) == 1
+    assert math.dist((bench[0].pose.x, bench[0].pose.y), (hydrant.pose.x, hydrant.pose.y)) < 1.5
+    report = session.submit("change the time to a foggy morning")
+    assert report.ok, report.error
+    assert session.scene.environment.weather.kind == "fog"

@@ -8,6 +8,7 @@ import re
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import PlanningError
+from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import referenced
 from drivetwin.orchestrator.planning.rules.places import Notes
 from drivetwin.orchestrator.planning.rules.reading import Reading, read
@@ -16,8 +17,10 @@ from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.scene import Scene
 
 # "replace X with Y", "swap X for Y", "substitute Y for X" is not read (its order is the other way).
+# "turn the hydrant into a bench", "change the suv to a truck": the same swap, said as a change of kind.
 _REPLACE = re.compile(r"^\s*(?:(?:please|pls|can you|could you|would you|now|then|just)\s+)*"
-                      r"(?:replace|swap|exchange)\s+(?P<old>.+?)\s+(?:with|for|by)\s+(?P<new>.+?)\s*[.!?]*\s*$")
+                      r"(?:(?:replace|swap|exchange)\s+(?P<old>.+?)\s+(?:with|for|by)\s+"
+                      r"|(?:turn|change|convert|make)\s+(?P<was>.+?)\s+(?:into|to)\s+(?=an?\s))(?P<new>.+?)\s*[.!?]*\s*$")
 
 
 def replaces(r: Reading) -> re.Match[str] | None:
@@ -26,22 +29,26 @@ def replaces(r: Reading) -> re.Match[str] | None:
 
 
 def swap_said(low: str) -> re.Match[str] | None:
-    """The same for lower-case words ("replace the bench with a bin"), for the plan check."""
-    return _REPLACE.match(low)
+    """The same for lower-case words ("replace the bench with a bin"), for the plan check; a change
+    of kind names a thing on both sides ("change the time to a sunny afternoon" is no swap)."""
+    said = _REPLACE.match(low)
+    if said is not None and said["was"] and not (ph.find_categories(said["was"]) and ph.find_categories(said["new"])):
+        return None
+    return said
 
 
 def replace_things(said: re.Match[str], scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
     """remove_assets for the things named first, and add_asset of the new kind at each one's spot."""
-    old, new = read(said["old"], scene), read(said["new"], scene)
+    old, new = read(said["old"] or said["was"], scene), read(said["new"], scene)
     if not new.mentions:
-        raise PlanningError(f"say what should stand in place of {said['old'].strip()}, e.g. 'replace the bench with a bin'")
+        raise PlanningError(f"say what should stand in place of {(said['old'] or said['was']).strip()}, e.g. 'replace the bench with a bin'")
     category = new.mentions[0].category
     ids = referenced(old, scene, memory, notes)
     if "ego" in ids:
         raise PlanningError(f"the ego vehicle cannot be replaced or removed; I can move it, restyle it, or add a "
                             f"{category.replace('_', ' ')} beside it")
     if not ids:
-        raise PlanningError(f"there is no {re.sub(r'^(?:the|a|an|those|these|that|this) ', '', said['old'].strip())} "
+        raise PlanningError(f"there is no {re.sub(r'^(?:the|a|an|those|these|that|this) ', '', (said['old'] or said['was']).strip())} "
                             "in the scene to replace")
     colour = next((c for c in COLOURS if new.has((c,))), None)
     calls = [ToolCall(tool="remove_assets", args={"assets": ids})]
