@@ -200,7 +200,7 @@ def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list
             start += location.distance or 0.0
     spacing = args.spacing or 3.0
     count = args.count or 8
-    start = _row_start(scene, lane.centreline, start, spacing, count)
+    start = row_start(scene, lane.centreline, start, spacing, count)
     # Right of the direction of travel unless told otherwise, just inside the lane.
     offset = location.offset_m if location.offset_m is not None else lane.width / 2 - max(sizes) / 2 - 0.2
     if location.side == "left":
@@ -216,7 +216,7 @@ def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list
 ROW_SLIDE_MAX_M = 25.0
 
 
-def _row_start(scene: Scene, line: list[tuple[float, float]], start: float, spacing: float, count: int) -> float:
+def row_start(scene: Scene, line: list[tuple[float, float]], start: float, spacing: float, count: int) -> float:
     """Where a row along a lane starts: `start`, else the nearest start (ahead or back, by up to
     ROW_SLIDE_MAX_M or the row's length) whose row stays on the lane, short of its ends, and out of
     the areas it crosses (a junction): "line the eastbound lane" is not lined through the crossroads,

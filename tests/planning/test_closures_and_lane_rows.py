@@ -27,6 +27,12 @@ def added(session, before: Scene, category: str):
     return [a for a in session.scene.assets if a.category == category and a.id not in old]
 
 
+def in_junction(scene: Scene, asset) -> bool:
+    junction = scene.landmark("main intersection")
+    assert junction is not None and junction.polygon is not None
+    return point_in_polygon(asset.pose.x, asset.pose.y, junction.polygon)
+
+
 def lane_of(scene: Scene, x: float, y: float) -> str:
     return min(scene.roads.lanes, key=lambda ln: min(math.dist((x, y), p) for p in ln.centreline)).id
 
@@ -107,10 +113,8 @@ def test_one_lane_lined_on_both_edges_keeps_to_that_lane(session, campus):
 def test_a_lane_lined_as_a_whole_is_not_lined_through_the_junction(session, campus):
     report = session.submit("line the eastbound lane with barriers")
     assert report.ok, report.error
-    junction = campus.landmark("main intersection")
-    assert junction is not None and junction.polygon is not None
     barriers = added(session, campus, "road_barrier")
-    assert barriers and not any(point_in_polygon(b.pose.x, b.pose.y, junction.polygon) for b in barriers)
+    assert barriers and not any(in_junction(campus, b) for b in barriers)
 
 
 def test_a_fully_read_request_the_world_refuses_says_why_and_what_could_stand_there() -> None:
@@ -399,10 +403,8 @@ def test_the_nearest_thing_of_a_kind_is_nearest_the_asker_not_itself(session):
 def test_a_lane_closed_with_no_place_said_is_closed_midway_off_the_junction(session, campus):
     report = session.submit("shut the southbound lane of Campus Drive")
     assert report.ok, report.error
-    junction = campus.landmark("main intersection")
-    assert junction is not None and junction.polygon is not None
     barriers = added(session, campus, "road_barrier")
-    assert barriers and all(-90 < b.pose.y < 90 and not point_in_polygon(b.pose.x, b.pose.y, junction.polygon) for b in barriers)
+    assert barriers and all(-90 < b.pose.y < 90 and not in_junction(campus, b) for b in barriers)
 
 
 def test_a_walker_who_jaywalks_is_added_jaywalking(session, campus):

@@ -18,6 +18,7 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_place, lane_on_side
+from drivetwin.tools.arrange import row_start
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import Location, resolve_anchor
 from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
@@ -527,28 +528,16 @@ _ONE_LANE = re.compile(r"\b(?<!both )(?<!all )(?<!two )lane\b")
 _WHERE_IT_WAS = re.compile(r"\bwhere (?:it|they|that one|those) (?:was|were|stood|used to (?:be|stand))\b|\bin (?:its|their) old (?:spot|place)\b")
 
 
-# Steps by which a lane's middle is slid along it off an area it crosses (the junction), and the
-# margin kept from that area's edge.
-LANE_MIDDLE_STEP_M, AREA_MARGIN_M = 2.0, 5.0
+# The margin a lane's middle keeps from an area it crosses (the junction).
+AREA_MARGIN_M = 5.0
 
 
 def _lane_middle(scene: Scene, lane: Lane) -> tuple[float, float]:
     """The point halfway along a lane, or the nearest one along it a margin clear of the areas it
-    crosses (a junction in the middle of the road)."""
+    crosses (a junction in the middle of the road), as a row of three a margin apart (row_start)."""
     length = polyline_length(lane.centreline)
-    areas = [lm.polygon for lm in scene.landmarks if lm.kind == "area" and lm.polygon]
-
-    def clear(arc: float) -> bool:
-        x, y, heading = point_along(lane.centreline, arc)
-        ahead = [(x + d * math.cos(heading), y + d * math.sin(heading)) for d in (-AREA_MARGIN_M, 0.0, AREA_MARGIN_M)]
-        return not any(point_in_polygon(px, py, area) for px, py in ahead for area in areas)
-
-    for k in range(int(length / 2 / LANE_MIDDLE_STEP_M) + 1):
-        for arc in (length / 2 + k * LANE_MIDDLE_STEP_M, length / 2 - k * LANE_MIDDLE_STEP_M):
-            if 0.0 <= arc <= length and clear(arc):
-                x, y, _ = point_along(lane.centreline, arc)
-                return x, y
-    x, y, _ = point_along(lane.centreline, length / 2)
+    start = row_start(scene, lane.centreline, length / 2 - AREA_MARGIN_M, AREA_MARGIN_M, 3)
+    x, y, _ = point_along(lane.centreline, start + AREA_MARGIN_M)
     return x, y
 
 
