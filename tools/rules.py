@@ -9,6 +9,7 @@ asset, so they stay fast in worlds of thousands of assets.
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
+from functools import cache
 
 from drivetwin.tools.errors import RuleViolation
 from drivetwin.tools.footprints import (
@@ -117,11 +118,13 @@ def check_placement(scene: Scene, asset: AssetInstance, others: Iterable[AssetIn
         )
 
 
-def _instead(cat: Category, ground: str) -> str:
+@cache
+def _instead(name: str, ground: str) -> str:
     """What could stand on `ground` in a drivable-only thing's place: kinds that share its purpose
-    (a tag such as "block" or "maintenance") and may stand anywhere, as a hint to end a refusal."""
-    kin = [c.name for c in catalog().values()
-           if c.placement == "anywhere" and c.motion == "prop" and set(c.tags) & set(cat.tags) - {"temporary", "permanent"}]
+    (a tag such as "block" or "maintenance") and may stand anywhere, as a hint to end a refusal.
+    Cached: a refused free-spot search raises this refusal thousands of times."""
+    tags = set(category(name).tags) - {"temporary", "permanent"}
+    kin = [c.name for c in catalog().values() if c.placement == "anywhere" and c.motion == "prop" and set(c.tags) & tags]
     return f"; {' or '.join(k.replace('_', ' ') + 's' for k in kin)} can stand on {ground}" if kin else ""
 
 
@@ -132,7 +135,7 @@ def _check_surface(scene: Scene, asset: AssetInstance, cat: Category) -> None:
         raise RuleViolation(
             "surface",
             f"a {cat.name} must stand on a road, crossing or paved area; ({x:.1f}, {y:.1f}) "
-            f"is {ground}{_instead(cat, ground)}",
+            f"is {ground}{_instead(cat.name, ground)}",
         )
     if cat.placement == "sidewalk" and ground not in ("sidewalk", "ground"):
         raise RuleViolation(
