@@ -506,8 +506,9 @@ def _numbers_in_args(value: Any) -> list[float]:
 def _accounts_for(number: float, effect: Effect, scene: Scene, factors: list[float], place: str | None = None) -> bool:
     if not math.isfinite(number):
         return False
+    # how many things the plan adds, takes and changes, and how many calls it makes ("two things for my notes: ...")
     counts = [float(len(effect.added)), float(len(effect.removed)), float(len(effect.changed)), float(len(effect.calls))]
-    # ("two things for my notes: ..." asks as many things as the plan does) "the two sedans and the SUV": how many of each kind the plan takes, adds or changes
+    # "the two sedans and the SUV": how many of each kind the plan takes, adds or changes
     counts += [float(n) for group in (effect.added, effect.removed, effect.changed)
                for n in Counter(a.category for a in group).values()]
     # "I ended up with two benches at the gate, one is plenty": how many of a kind it takes stood there
