@@ -5,6 +5,7 @@ from __future__ import annotations
 import difflib
 import math
 
+from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, ToolArgumentError
 from drivetwin.tools.locate import Target, resolve_target
@@ -338,8 +339,6 @@ def _colour_name(rgba: tuple[float, float, float, float] | None) -> str:
     """A colour by its name where it is one of the named ones, else its RGBA; "default" when unset."""
     if rgba is None:
         return "default"
-    from drivetwin.tools.appearance import COLOURS
-
     return next((name for name, value in COLOURS.items() if value == tuple(rgba)), str(tuple(rgba)))
 
 

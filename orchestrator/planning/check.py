@@ -248,7 +248,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                        + ", ".join(sorted(plan_categories)))
     totals = set(_totals(request, effect).values())  # "there should be exactly four cones": how many are left
     factors = [1.0, *(f for unit, f in UNIT_FACTORS.items() if re.search(unit, request.low))]
-    missing = [n for n in request.numbers if not _accounts_for(n, effect, scene, factors, request.place) and n not in totals]
+    used = _numbers_used(effect, scene, request.place) if request.numbers else []
+    missing = [n for n in request.numbers if not _accounts_for(n, used, factors) and n not in totals]
     if missing and effect.calls:
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
     if request.place is not None and effect.edits and not effect.environment:
@@ -351,7 +352,6 @@ _ON_FOOT = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!no )\b(walkin
                       r"|pacing|cycling|pedalling|pedaling)\b")
 # A place said to be empty as it is ("feels empty", "looks a bit bare"): a lack, not "empty it".
 _BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b")
-_EACH_SIDE = re.compile(r"\b(?:each|either|every)\s+side\b")
 
 
 def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
@@ -360,7 +360,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     placed = [*effect.added, *_moved(effect)]
     each = each_place_named(scene, request.low)  # "two cones at each gate": two at every one of them
     # "six bollards on each side of it": that many on either side, two sides
-    per = max(1, len(each)) * (2 if _EACH_SIDE.search(request.low) else 1)
+    per = max(1, len(each)) * (2 if md.EACH_SIDE.search(request.low) else 1)
     out = [] if _totals(request, effect) else wrong_counts(
         request.masked, [a for a in effect.added if a.category not in _companions(effect)], per)
     centres = {place: centre for place in each if (centre := _centre(scene, place)) is not None}
@@ -503,9 +503,8 @@ def _numbers_in_args(value: Any) -> list[float]:
     return []
 
 
-def _accounts_for(number: float, effect: Effect, scene: Scene, factors: list[float], place: str | None = None) -> bool:
-    if not math.isfinite(number):
-        return False
+def _numbers_used(effect: Effect, scene: Scene, place: str | None) -> list[float]:
+    """Every number the plan can be said to account for: its arguments and what they come to."""
     # how many things the plan adds, takes and changes, and how many calls it makes ("two things for my notes: ...")
     counts = [float(len(effect.added)), float(len(effect.removed)), float(len(effect.changed)), float(len(effect.calls))]
     # "the two sedans and the SUV": how many of each kind the plan takes, adds or changes
@@ -521,8 +520,13 @@ def _accounts_for(number: float, effect: Effect, scene: Scene, factors: list[flo
     used += _reach(effect, scene)  # "starting 20 m ahead of our car": where a layout begins and ends
     used += [math.hypot(float(c.args.get("east", 0)), float(c.args.get("north", 0)))  # a move at a slant
              for c in effect.calls if c.tool == "move_asset" and "east" in c.args and "north" in c.args]
-    return any(math.isclose(abs(number) * f, abs(u), rel_tol=NUMBER_TOLERANCE, abs_tol=NUMBER_TOLERANCE)
-               for u in used for f in factors)
+    return used
+
+
+def _accounts_for(number: float, used: list[float], factors: list[float]) -> bool:
+    """Whether `number`, in one of the units said (`factors`), is among the numbers `used`."""
+    return math.isfinite(number) and any(
+        math.isclose(abs(number) * f, abs(u), rel_tol=NUMBER_TOLERANCE, abs_tol=NUMBER_TOLERANCE) for u in used for f in factors)
 
 
 def _totals(request: Request, effect: Effect) -> dict[str, int]:

@@ -110,6 +110,8 @@ def groups_said(text: str) -> dict[str, frozenset[str]]:
 _LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|side by side|next to each other|avenue)s?\b")
 
 
+# That many on each side ("six bollards on each side of it"): two sides' worth.
+EACH_SIDE = re.compile(r"\b(?:each|either|every)\s+side\b")
 # Both edges said: "on both sides", "either kerb", "each edge of the lane": two rows, one a side.
 BOTH_SIDES = re.compile(r"\b(?:both|either|each)\s+(?:sides?|edges?|kerbs?|curbs?)\b|\bon (?:both|each|either) side\b")
 

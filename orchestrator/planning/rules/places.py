@@ -17,7 +17,7 @@ from typing import Any
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.reading import Reading, find_place, lane_on_side
+from drivetwin.orchestrator.planning.rules.reading import SIDE_OF, Reading, find_place, lane_of_side, road_kinds_spelt
 from drivetwin.tools.arrange import row_start
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import Location, resolve_anchor
@@ -611,7 +611,6 @@ def _spot_by_a_thing(scene: Scene, where: dict[str, Any] | None) -> tuple[float,
     return anchor.x, anchor.y
 
 
-_SIDE_OF = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z][a-z ]*)")
 # A side said with no place ("the lamps on the north side"): the side of the road nearest each thing.
 _SIDE_ALONE = re.compile(r"\b(?:on|along|at) the (north|south|east|west)(?:ern)? side\b(?! of)")
 
@@ -625,9 +624,9 @@ ROAD_REACH_M = 8.0
 def road_said(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
     """The road the words say things stand on or along ("on Campus Drive"), and a test of
     whether a thing stands by it; None when they name none (or name a side of it: see side_of)."""
-    if _SIDE_OF.search(low):
+    if SIDE_OF.search(low):
         return None
-    low = _ROAD_KIND.sub(lambda m: _ROAD_KINDS[m.group(1)], low + " ")
+    low = road_kinds_spelt(low)
     for road in sorted({lane.road for lane in scene.roads.lanes if lane.road}, key=len, reverse=True):
         if re.search(_ON_ROAD + re.escape(ph.normalise(road).strip()) + r"\b", low):
             lines = [lane.centreline for lane in scene.roads.lanes if lane.road == road]
@@ -635,22 +634,17 @@ def road_said(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bo
     return None
 
 
-# A road's kind abbreviated after its name, as on a street sign: "Main St.", "Campus Dr".
-_ROAD_KIND = re.compile(r"(?<=[a-z] )(st|rd|ave|blvd|dr)\.?(?=\s)")
-_ROAD_KINDS = {"st": "street", "rd": "road", "ave": "avenue", "blvd": "boulevard", "dr": "drive"}
-
-
 def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
     """The side of a road or place the words name ("on the north side of Main Street"), as
     words and as a test of whether a thing stands on it (beyond the road's middle, or the
     place, that way); None when they name none."""
-    said = _SIDE_OF.search(low)
+    said = SIDE_OF.search(low)
     if said is None:
         alone = _SIDE_ALONE.search(low)
         if alone is None or not scene.roads.lanes:
             return None
         return f"{alone.group(1)} side of the road", _beyond(_across(scene, alone.group(1)), alone.group(1))
-    rest = _ROAD_KIND.sub(lambda m: _ROAD_KINDS[m.group(1)], said.group(2) + " ")  # "main st" is Main Street
+    rest = road_kinds_spelt(said.group(2))  # "main st" is Main Street
     roads = {lane.road for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())}
     lanes = [lane for lane in scene.roads.lanes if lane.road in roads]
     name = next(iter(roads), None)
@@ -666,13 +660,8 @@ def side_lane(low: str, scene: Scene) -> str | None:
     """The lane of a road on the side the words name ("the north side of Main Street": the
     westbound lane, the one furthest north), whose edge what stands on that side lines; None when
     they name no side of a road of two or more lanes."""
-    said = _SIDE_OF.search(low)
-    if said is None:
-        return None
-    rest = _ROAD_KIND.sub(lambda m: _ROAD_KINDS[m.group(1)], said.group(2) + " ")
-    lanes = [lane for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())]
-    furthest = lane_on_side(lanes, said.group(1))
-    return furthest.id if furthest is not None else None
+    found = lane_of_side(low, scene)
+    return found[0].id if found is not None else None
 
 
 def _across(scene: Scene, way: str) -> list[tuple[float, float]]:

@@ -55,7 +55,7 @@ _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
 # A way asked between two places ("which way is the fountain from here"): what a distance says too.
 _WAY = r"which way|what way|(?:which|what) direction"
 _DISTANCE = re.compile(r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|"
-                       rf"{_WAY}|"  # the distance says the way too"
+                       rf"{_WAY}|"  # the distance says the way too
                        r"stone'?s throw (?:from|to|of)|(?:a |long |short )?walk (?:from|to)|how many (?:metres|"
                        r"meters|feet|yards) (?:from|to|between|apart))\b|\bfar\s*\??\s*$")
 _SUPERLATIVE = re.compile(r"\b(?:nearest|closest|furthest|farthest|most near|most close|nearer|closer)\b")

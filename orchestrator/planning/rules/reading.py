@@ -203,12 +203,9 @@ def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
         pos = spaced.find(key)
         if pos >= 0:
             return lane.id, pos, pos + len(key), False
-    side = _ROAD_SIDE.search(spaced)
+    side = lane_of_side(spaced, scene)
     if side is not None:  # "the north side of Main Street": that road's lane furthest north
-        lanes = [ln for ln in scene.roads.lanes if ln.road and side.group(2).startswith(ln.road.lower())]
-        furthest = lane_on_side(lanes, side.group(1))
-        if furthest is not None:
-            return furthest.id, side.start(), side.end(), False
+        return side[0].id, side[1].start(), side[1].end(), False
     # "the south side of lot B", "north of the fountain", "to the east": a compass word saying
     # where, not which way a lane runs
     words = set(ph.tokens(_COMPASS_PLACE.sub(" ", spaced)))
@@ -224,7 +221,29 @@ def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
     return None
 
 
-_ROAD_SIDE = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z][a-z ]*)")
+# A compass side of a road or place: "the north side of Main Street", "the east side of the library".
+SIDE_OF = re.compile(r"\b(north|south|east|west)(?:ern)? side of (?:the )?([a-z][a-z ]*)")
+# A road's kind abbreviated after its name, as on a street sign: "Main St.", "Campus Dr".
+_ROAD_KIND = re.compile(r"(?<=[a-z] )(st|rd|ave|blvd|dr)\.?(?=\s)")
+_ROAD_KINDS = {"st": "street", "rd": "road", "ave": "avenue", "blvd": "boulevard", "dr": "drive"}
+
+
+def road_kinds_spelt(text: str) -> str:
+    """`text` (lower case) with a road's abbreviated kind spelt out, and a space at the end: "main st" is Main Street."""
+    return _ROAD_KIND.sub(lambda m: _ROAD_KINDS[m.group(1)], text + " ")
+
+
+def lane_of_side(low: str, scene: Scene) -> tuple[Lane, re.Match[str]] | None:
+    """The lane of a road on the side the words name ("the north side of Main Street": the
+    westbound lane, the one furthest north) and the words; None when they name no side of a road
+    of two or more lanes."""
+    said = SIDE_OF.search(low)
+    if said is None:
+        return None
+    rest = road_kinds_spelt(said.group(2))
+    lanes = [lane for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())]
+    furthest = lane_on_side(lanes, said.group(1))
+    return (furthest, said) if furthest is not None else None
 
 
 def lane_on_side(lanes: list[Lane], way: str) -> Lane | None:
