@@ -11,7 +11,7 @@ from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.footprints import track
 from drivetwin.tools.locate import SEARCH_RADIUS_M, Anchor, Location, find_free_pose, resolve_anchor
-from drivetwin.tools.move import BehaviourSpec, resolve_behaviour
+from drivetwin.tools.move import BehaviourSpec, resolve_behaviour, start_towards
 from drivetwin.tools.rules import NON_COLLIDING_MOTION, check_placement
 from drivetwin.worlds import edits
 from drivetwin.worlds.asset_table import asset_table
@@ -86,6 +86,16 @@ class AddAsset(Tool[AddArgs]):
             template = new_asset(scene, cat.name, {a.id for a in placed}, args.label, args.colour)
             start: Pose | None = None
             spec = args.behaviour
+            if spec is not None and spec.kind == "follow_path" and spec.to is not None:
+                # Going somewhere: placed first (where said, else some way off), then on its way from there.
+                start_at = anchor if located else start_towards(scene, cat.name, spec.to)
+                here = start_at if not placed else replace(start_at, exact=False)
+                pose = find_free_pose(scene, template, here, [*others, *placed], yaw if yaw is not None else start_at.heading,
+                                      keep_clear=[*walkers, *placed], slots=args.count)
+                moved = template.model_copy(update={"pose": pose})
+                behaviour, _ = resolve_behaviour(scene, moved, spec)
+                placed.append(moved.model_copy(update={"behaviour": behaviour}))
+                continue
             if spec is not None and spec.kind == "drive_lane":
                 pose = _driving_pose(scene, template, spec, anchor, located, [*others, *placed], not placed)
                 moved = template.model_copy(update={"pose": pose})

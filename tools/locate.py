@@ -18,7 +18,14 @@ from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.rules import assets_near, check_placement, footprints_overlap
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.scene import AssetInstance, Finite, Pose, Scene
-from drivetwin.worlds.surface import lane_at, nearest_on_polyline, point_along, point_in_polygon, surface_at
+from drivetwin.worlds.surface import (
+    lane_at,
+    nearest_on_polyline,
+    point_along,
+    point_in_polygon,
+    polyline_length,
+    surface_at,
+)
 from pydantic import BaseModel, ConfigDict, Field
 
 Relation = Literal[
@@ -49,7 +56,7 @@ class Location(BaseModel):
     )
     target: str | None = Field(
         None,
-        description="a landmark name, asset id, lane id or 'ego'; not needed for "
+        description="a landmark name, asset id, lane id, sidewalk id or 'ego'; not needed for "
         "scene_centre or absolute",
     )
     x: Finite | None = Field(None, description="metres east, for relation 'absolute'")
@@ -81,7 +88,7 @@ class Target:
     """A resolved target: where it is, which way it faces, and how big it is."""
 
     name: str
-    kind: Literal["landmark", "area", "asset", "lane", "centre", "point"]
+    kind: Literal["landmark", "area", "asset", "lane", "sidewalk", "centre", "point"]
     x: float
     y: float
     heading: float
@@ -114,6 +121,7 @@ def target_names(scene: Scene) -> list[str]:
     names = [n for lm in scene.landmarks for n in lm.names()]
     names += [a.id for a in scene.all_assets()]
     names += [lane.id for lane in scene.roads.lanes]
+    names += [walk.id for walk in scene.roads.sidewalks]
     names += [b.name for b in scene.buildings]
     return names
 
@@ -160,6 +168,10 @@ def resolve_target(scene: Scene, name: str) -> Target:
         mid = len(lane.centreline) // 2
         mx, my = lane.centreline[mid] if len(lane.centreline) > 2 else ((x1 + x2) / 2, (y1 + y2) / 2)
         return Target(lane.id, "lane", mx, my, math.atan2(y2 - y1, x2 - x1), lane_id=lane.id)
+    walk = next((w for w in scene.roads.sidewalks if w.id == key), None)
+    if walk is not None:  # a sidewalk: its middle, facing along it
+        mx, my, heading = point_along(walk.polyline, polyline_length(walk.polyline) / 2)
+        return Target(walk.id, "sidewalk", mx, my, heading)
     for building in scene.buildings:
         if key.lower() in (building.name.lower(), building.id):
             xs = [p[0] for p in building.footprint]
@@ -204,6 +216,8 @@ def resolve_anchor(scene: Scene, location: Location, new_half_length: float,
     if rel == "in_lane":
         return _lane_anchor(scene, target, location.distance, location.lane)
     if rel == "on_sidewalk":
+        return _sidewalk_anchor(scene, target)
+    if rel == "at" and target.kind == "sidewalk":
         return _sidewalk_anchor(scene, target)
     if rel == "at":
         if target.kind in ("area", "centre"):

@@ -12,9 +12,10 @@ import difflib
 import math
 from typing import Literal
 
+from drivetwin.tools.along import track_kind_for, tracks
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, RuleViolation, ToolArgumentError
-from drivetwin.tools.locate import Location, find_free_pose, resolve_anchor, resolve_target
+from drivetwin.tools.locate import Anchor, Location, find_free_pose, resolve_anchor, resolve_target
 from drivetwin.tools.rules import check_placement
 from drivetwin.worlds.catalog import category
 from drivetwin.worlds.edits import UpdateAsset, WorldEdit
@@ -32,7 +33,14 @@ from drivetwin.worlds.scene import (
     Pose,
     Scene,
 )
-from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, point_along, point_in_polygon, surface_at
+from drivetwin.worlds.surface import (
+    DRIVABLE,
+    nearest_on_polyline,
+    point_along,
+    point_in_polygon,
+    polyline_length,
+    surface_at,
+)
 from pydantic import Field
 
 BehaviourKind = Literal["parked", "drive_lane", "follow_path", "circle", "cross_road", "jaywalk"]
@@ -66,6 +74,10 @@ class BehaviourSpec(ToolArgs):
     clockwise: bool = False
     centre: str | None = Field(None, description="landmark or asset to circle around")
     waypoints: list[tuple[float, float]] | None = Field(None, description="[[x, y], ...] metres")
+    to: str | None = Field(
+        None, description="follow_path: a landmark, asset or 'x, y' to go to from where it starts, "
+        "instead of waypoints (a new walker with no location starts some way off, on a sidewalk)"
+    )
     start_time: float | None = Field(None, ge=0.0, le=3600.0, description="seconds from now")
     ahead: float | None = Field(
         None, gt=2.0, le=150.0, description="jaywalk: metres ahead of the ego to cross"
@@ -213,16 +225,57 @@ def resolve_behaviour(
             pose = Pose(x=asset.pose.x, y=asset.pose.y, yaw=near.heading)
         return DriveLane(lane=lane.id, speed=spec.speed or min(5.0, lane.speed_limit)), pose
     if spec.kind == "follow_path":
-        if not spec.waypoints or len(spec.waypoints) < 2:
-            raise RuleViolation("behaviour", "follow_path needs at least two waypoints [[x, y], ...]")
+        waypoints = [(asset.pose.x, asset.pose.y), goal_of(scene, asset, spec.to)] if spec.to else spec.waypoints
+        if not waypoints or len(waypoints) < 2:
+            raise RuleViolation("behaviour", "follow_path needs a place to go to or at least two waypoints [[x, y], ...]")
         default = 1.4 if cat.motion == "walker" else 4.0
-        return FollowPath(waypoints=spec.waypoints, speed=spec.speed or default,
+        return FollowPath(waypoints=waypoints, speed=spec.speed or default,
                           start_time=spec.start_time or 0.0), None
     if spec.kind == "circle":
         return _circle(scene, asset, spec, anchor)
     if spec.kind == "cross_road":
         return _cross_road(scene, spec, anchor or (asset.pose.x, asset.pose.y))
     return _jaywalk(scene, spec)
+
+
+# A walk to a thing ends this far short of its edge, beside it rather than inside it.
+GOAL_SHORT_M = 1.0
+# A new walker going somewhere, with no start said, starts this far from where it goes.
+WALK_LEAD_M = 25.0
+
+
+def goal_of(scene: Scene, asset: AssetInstance, name: str) -> tuple[float, float]:
+    """Where `asset` going to the target called `name` ends: the place itself, or beside a thing."""
+    target = resolve_target(scene, name)
+    here = (asset.pose.x, asset.pose.y)
+    gap = math.dist(here, (target.x, target.y))
+    short = target.half_length + GOAL_SHORT_M if target.kind == "asset" else 0.0
+    if gap <= short + 0.5:
+        raise RuleViolation("behaviour", f"{asset.id} is already at {target.name}; say where else it should go")
+    f = (gap - short) / gap
+    return (round(here[0] + f * (target.x - here[0]), 2), round(here[1] + f * (target.y - here[1]), 2))
+
+
+def start_towards(scene: Scene, category_name: str, name: str) -> Anchor:
+    """Where a new walker (or vehicle) going to the target called `name` starts when no place is
+    said: the spot of its track kind (a sidewalk, a lane) nearest WALK_LEAD_M from the target,
+    facing it."""
+    target = resolve_target(scene, name)
+    kind = track_kind_for(category(category_name)) or "sidewalk"
+    best: tuple[float, float, float] | None = None
+    for track in tracks(scene, kind):
+        for step in range(int(polyline_length(track.polyline)) + 1):
+            x, y, _ = point_along(track.polyline, float(step))
+            miss = abs(math.dist((x, y), (target.x, target.y)) - WALK_LEAD_M)
+            if best is None or miss < best[0]:
+                best = (miss, x, y)
+    if best is None:  # a world without that kind of track: on the ground, towards the world's middle
+        cx, cy = scene.bounds.centre
+        away = math.atan2(cy - target.y, cx - target.x)
+        best = (0.0, target.x + WALK_LEAD_M * math.cos(away), target.y + WALK_LEAD_M * math.sin(away))
+    _, x, y = best
+    facing = math.atan2(target.y - y, target.x - x)
+    return Anchor(x, y, facing, surface=kind, surface_preferred=True)
 
 
 def follow_placement(scene: Scene, moved: AssetInstance) -> tuple[AssetInstance, str]:

@@ -169,6 +169,8 @@ def wrong_layout(masked: str, added: Iterable[AssetInstance]) -> list[str]:
     """New things the request lays out ("in a row", "a ring of", "4 m apart") that the plan
     places otherwise: judged on where they end up, whichever Worker put them there."""
     placed = [a for a in added if a.id != "ego"]
+    kinds = Counter(a.category for a in placed)  # "six cones in a row and a sign by them": the row is the cones
+    placed = [a for a in placed if kinds[a.category] > 1 or len(kinds) == 1] or placed
     if len(placed) < MIN_LAYOUT:
         return []
     points = np.array([[a.pose.x, a.pose.y] for a in placed])

@@ -349,7 +349,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
 
 # On foot or pedal, said of what is added: "a jogger running along Main Street" (not "stop walking").
 _ON_FOOT = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!no )\b(walking|jogging|running|strolling|wandering|jaywalking|jaywalks"
-                      r"|pacing|cycling|pedalling|pedaling)\b")
+                      r"|pacing|cycling|pedalling|pedaling|(?:walks|strolls|jogs|wanders|hurries|runs|heads|rides)(?= (?:to|towards?|across|along|over|for|from|into|up|down)\b))\b")
 # A place said to be empty as it is ("feels empty", "looks a bit bare"): a lack, not "empty it".
 _BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b")
 

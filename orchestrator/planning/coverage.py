@@ -561,6 +561,8 @@ _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswa
 # Where a request names the thing it wants added: the object of a verb of adding ("add a giraffe",
 # "needs a double rainbow"), up to four words before a word that ends a noun phrase.
 # (A question about such a thing changes nothing, so it is left to the planners' own refusals.)
+# A setting given a value by name: "set the weather to hail", "change the sky to purple".
+_SET_TO = re.compile(r"\b(?:set|change|switch)\b[^.,;:!?]*?\bto\s+(?:a\s+|an\s+|some\s+)?([a-z]+)\s*(?=$|[.,;:!?])")
 _THING_WANTED = re.compile(
     r"\b(?:add|put|place|spawn|bring|drop|insert|create|want|need|needs)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
     r"of|\d+)\s+){0,3}((?:[a-z][a-z-]*\s+){0,3}?[a-z]+)(?=\s*(?:$|[,.;:!?]|\s(?:next|near|by|at|on|in|beside|behind|"
@@ -580,6 +582,9 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     said |= {w for c in calls for w in c.tool.split("_")}  # "I want the distance between ...": what measure_distance tells
     said |= {w for c in calls for k in c.args for w in k.split("_")}  # "drop the exposure to 0.5": what set_lighting sets
     out = []
+    for m in _SET_TO.finditer(masked):  # "set the precipitation type to hail": a setting this world has no word for
+        if len(m.group(1)) >= 3 and not is_known(m.group(1), vocab) and m.group(1) not in said and m.group(1) not in lx.GRAMMAR:
+            out.append(f"there is no {m.group(1)!r} in this world")
     for m in _THING_WANTED.finditer(masked):
         phrase = m.group(1).split()
         cut = next((i for i, w in enumerate(phrase) if i and (w in lx.GRAMMAR or w == "of")), len(phrase))

@@ -33,6 +33,7 @@ from drivetwin.orchestrator.planning.rules.reading import (
     find_lane,
     find_place,
     without_beneficiaries,
+    without_goals,
     without_order,
 )
 from drivetwin.orchestrator.planning.rules.replacing import swap_said
@@ -100,7 +101,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     for word in ph.EGO_WORDS:
         kinds_text = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", kinds_text)
     swapped = swap_said(low) is not None  # "replace the bench with a bin": the bin is asked for, not a description
-    categories = frozenset(m.category for m in without_beneficiaries(kinds_text, ph.find_categories(kinds_text))
+    categories = frozenset(m.category for m in without_goals(kinds_text, without_beneficiaries(kinds_text, ph.find_categories(kinds_text)))
                            if (swapped or not _DESCRIBING.search(kinds_text[: m.start])) and not _described_head(kinds_text, m))
     exact = re.sub(r"\S+ or \S+", lambda m: " " * len(m.group(0)), _without_checked_amounts(masked))  # "a tree or two"
     numbers = tuple(n.value for n in numbers_in(exact) if not _is_reference(masked, n.start))

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import replace
-from typing import Any
+from typing import Any, NamedTuple
 
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.intent import FEWER_WORDS, KEEP_SOME, REMOVE_WORDS
@@ -21,13 +21,13 @@ from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.inflection import inflected
 from drivetwin.orchestrator.planning.rules.places import Notes, location, relation_objects, road_said, side_of
-from drivetwin.orchestrator.planning.rules.reading import Reading, find_count
+from drivetwin.orchestrator.planning.rules.reading import GOAL_REACH, GOES_TO, Reading, find_count, find_place
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import lane_under
 from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
-from drivetwin.worlds.surface import nearest_on_polyline
+from drivetwin.worlds.surface import nearest_on_polyline, point_along
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
 NEAR_PLACE_M = 8.0
@@ -590,6 +590,24 @@ def _faced_point(r: Reading, scene: Scene, thing: AssetInstance) -> tuple[float,
     return (landmark.position[0], landmark.position[1]) if landmark is not None else None
 
 
+# Driving the other way: "going the other way", "in the opposite direction".
+_OTHER_WAY = re.compile(r"\b(?:go|goes|going|drive|drives|driving|head|heading|travel\w*|run|running)\s+(?:\w+\s+)?"
+                        r"(?:the\s+)?(?:other|opposite)\s+(?:way|direction)\b|\bin the opposite direction\b")
+
+
+def _lane_back(found: AssetInstance, scene: Scene) -> str | None:
+    """For a vehicle driving a lane, its road's lane that runs the other way; else None."""
+    if found.behaviour.kind != "drive_lane":
+        return None
+    lane = scene.roads.lane(found.behaviour.lane)
+    if lane is None:
+        return None
+    here = nearest_on_polyline(found.pose.x, found.pose.y, lane.centreline)
+    back = [other for other in scene.roads.lanes if other.road == lane.road and other.id != lane.id
+            and math.cos(nearest_on_polyline(found.pose.x, found.pose.y, other.centreline).heading - here.heading) < -0.5]
+    return min(back, key=lambda o: nearest_on_polyline(found.pose.x, found.pose.y, o.centreline).distance).id if back else None
+
+
 # Words for a small step ("a bit", "a tiny bit", "slightly").
 _SMALL = ("a bit", "slightly", "a little", "tiny bit", "little bit", "wee bit")
 
@@ -610,6 +628,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         return [ToolCall(tool="move_asset", args={"asset": asset, "forward": -abs(step)})]
     if r.has(lx.STOP_WORDS) and motion in ("vehicle", "walker") and not r.has(("stop sign",)):
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
+    back = _lane_back(found, scene) if found is not None and _OTHER_WAY.search(r.low) else None
+    if back is not None:  # "the ego should be going the other way down Main Street": the road's lane that runs back
+        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "drive_lane", "lane": back}})]
     deg = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:deg|°)", r.low) or (_bare_angle(r.low) if r.has(("turn", "rotate", "spin")) else None)
     facing = md.facing_direction(r.masked)
     faced = _faced_point(r, scene, found) if facing is None and found is not None else None
@@ -642,6 +663,10 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
             angle = DEFAULT_SPIN_DEG
         return [ToolCall(tool="move_asset", args={"asset": asset, "turn_deg": angle})]
     kind = behaviour_kind(r, catalog()[found.category] if found is not None else None)
+    drive = drive_towards(r, scene, found) if found is not None and kind in (None, "drive_lane") and catalog()[found.category].drives else None
+    if drive is not None and found is not None and catalog()[found.category].motion == "vehicle":
+        notes.subject = [asset]  # "the suv drives to the main gate": into the lane that leads there, where it stands
+        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": drive[0]})]
     if kind == "drive_lane" and r.landmark and not r.lane and r.has(("go", "goes")):
         kind = None  # "could the car go in lot A?": a place to be, not a lane to drive
     if kind == "drive_lane" and r.has(("go", "goes")) and _STEP_SAID.search(r.low):
@@ -674,12 +699,11 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     for word, key, sign in lx.SIDE_WORDS:
         if shift is not None and r.has((word,)) and not anchored:
             return [ToolCall(tool="move_asset", args={**moved, key: sign * shift})]
-    walks = found is not None and catalog()[found.category].motion == "walker" and _GOES_TO.search(r.low) is not None
-    goal = _point_of(r, scene, memory) if walks and not scoped and r.landmark else None
-    if goal is not None and found is not None:  # "make him walk to the library": on foot from where he stands
-        speed = FAST_WALK_MS if r.has(("run", "runs", "jog", "jogs", "hurry", "hurries", "ride", "rides", "cycle", "cycles")) else WALK_MS
-        path = [[round(found.pose.x, 2), round(found.pose.y, 2)], [round(goal[0], 2), round(goal[1], 2)]]
-        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "follow_path", "waypoints": path, "speed": speed}})]
+    kind_of = found.category if found is not None else asset.rpartition("_")[0] if asset in notes.coming else None  # one an earlier clause adds
+    walker = kind_of in catalog() and catalog()[kind_of].motion == "walker"
+    walk = walk_said(r, scene, exclude=ids) if walker and not scoped else None
+    if walk is not None:  # "make him walk to the library": on foot from where he stands
+        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": walk.behaviour})]
     where = None if scoped else location(r, scene, memory, notes, exclude=ids)  # the place said which, not where to
     if where is not None:
         # "move them to the gate": each of them, side by side; a layout ("in one line") is not one place
@@ -699,11 +723,86 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     return None
 
 
-# Going somewhere on foot or by bike: "walk to the library", "head over to the fountain", "ride towards the gate".
-_GOES_TO = re.compile(r"\b(?:walk|stroll|head|go|run|jog|wander|ride|cycle|amble|hurry|hurries|make (?:his|her|their) way)"
-                      r"(?:s|es|ing)?\b(?:\s+(?:over|across|back|off|on))?\s+(?:to|towards?)\b")
+# Where the walk starts, when said: "walks from the bus stop to the library".
+_FROM = re.compile(r"\bfrom\s+")
 # Speeds on foot, m/s: a walk, and a run or a bike.
 WALK_MS, FAST_WALK_MS = 1.4, 3.5
+_FAST = ("run", "runs", "running", "ran", "rode", "jog", "jogs", "jogging", "hurry", "hurries", "hurrying", "rush", "rushes", "rushing",
+         "sprint", "sprints", "sprinting", "ride", "rides", "riding", "cycle", "cycles", "cycling")
+
+
+class Walk(NamedTuple):
+    """A walk the words say: the follow_path behaviour to where it goes, and where it starts if said."""
+
+    behaviour: dict[str, Any]
+    start: str | None
+
+
+def _named_at(scene: Scene, text: str, exclude: list[str]) -> str | None:
+    """The place, asset or ego named at the start of `text` ("the fountain", "bench_1", "our car")."""
+    place = find_place(scene, text[: GOAL_REACH + 24])  # the first place said, not a longer one later
+    if place is not None and place[1] <= GOAL_REACH:
+        return place[0]
+    if re.match(r"\s*(?:the |our )?(?:ego|ego car|ego vehicle|our car|test vehicle)\b", text):
+        return "ego"
+    ids = [i for i in ph.find_asset_ids(scene, text.replace(" ", "  ")) if i in ph.tokens(text[:GOAL_REACH + 12])]
+    ids = [i for i in ids if i not in exclude]
+    if ids:
+        return ids[0]
+    head = ph.find_categories(text[:GOAL_REACH + 12])
+    if head and head[0].start <= GOAL_REACH:
+        present = [a.id for a in scene.assets if a.category == head[0].category and a.id not in exclude]
+        return present[0] if len(present) == 1 else None
+    return None
+
+
+def walk_said(r: Reading, scene: Scene, exclude: list[str]) -> Walk | None:
+    """The walk to a place a clause says of a walker ("a woman walking towards the fountain",
+    "he runs from the bus stop to the library"); None when it names no going to a place."""
+    going = GOES_TO.search(r.low)
+    if going is None:
+        return None
+    goal = _named_at(scene, r.low[going.end() :], exclude)
+    if goal is None:
+        return None
+    said_from = _FROM.search(r.low)
+    start = None
+    if said_from is not None:  # "from the bus stop to the library": the words up to where it goes
+        upto = r.low.find(" to", said_from.end()) if said_from.start() < going.end() else -1
+        start = _named_at(scene, r.low[said_from.end() : upto if upto > 0 else None], exclude)
+    speed = ph.find_speed(r.text) or (FAST_WALK_MS if r.has(_FAST) else WALK_MS)
+    return Walk({"kind": "follow_path", "to": goal, "speed": speed}, start if start != goal else None)
+
+
+# A vehicle heading for a place starts this far before it along a lane that leads there.
+DRIVE_LEAD_M = 40.0
+# ...a lane that passes within this of the place.
+DRIVE_REACH_M = 12.0
+
+
+def drive_towards(r: Reading, scene: Scene, mover: AssetInstance | None = None) -> tuple[dict[str, Any], dict[str, Any]] | None:
+    """For a vehicle heading for a place ("a truck heading for the main gate", "the suv drives to
+    the main gate"): a drive along the lane that leads there, and where a new one starts,
+    DRIVE_LEAD_M before it (the `mover` that is there joins the lane where it stands); None when
+    no place is said or no lane leads there."""
+    walk = walk_said(r, scene, exclude=[mover.id] if mover is not None else [])
+    goal = (walk and scene.landmark(walk.behaviour["to"])) or (walk and scene.asset(walk.behaviour["to"]))
+    if walk is None or goal is None:
+        return None
+    gx, gy = goal.position if not isinstance(goal, AssetInstance) else (goal.pose.x, goal.pose.y)
+    leading = []
+    for lane in scene.roads.lanes:
+        near = nearest_on_polyline(gx, gy, lane.centreline)
+        start = DRIVE_LEAD_M if mover is None else nearest_on_polyline(mover.pose.x, mover.pose.y, lane.centreline).arc_length
+        if near.distance <= DRIVE_REACH_M and near.arc_length >= max(start, DRIVE_REACH_M):
+            leading.append((near.distance, lane))
+    if not leading:
+        return None
+    lane = min(leading, key=lambda pair: pair[0])[1]
+    x, y, _ = point_along(lane.centreline, nearest_on_polyline(gx, gy, lane.centreline).arc_length - DRIVE_LEAD_M)
+    speed = ph.find_speed(r.text)
+    behaviour = {"kind": "drive_lane", "lane": lane.id, **({"speed": speed} if speed else {})}
+    return behaviour, {"relation": "in_lane", "target": f"{x:.1f}, {y:.1f}", "lane": lane.id}
 
 
 # Where a thing is to go, said after the verb ("move it to the gym", "shift the bench over to the

@@ -96,7 +96,7 @@ CONCEPTS: dict[str, tuple[str, ...]] = {
     "bench": ("somewhere to sit", "to sit", "sit down", "seat", "seats", "chairs"),  # not "sit" said of a thing ("the car should sit")
     "construction_sign": ("warn", "warned", "warning", "warning sign", "heads-up"),
     "road_barrier": ("fence off", "cordon off", "barriers", "block the road", "block off"),
-    "pedestrian": ("foot traffic", "crowd", "passers-by", "someone", "somebody", "anyone", "anybody", "kid", "child", "guy"),
+    "pedestrian": ("foot traffic", "crowd", "passers-by", "someone", "somebody", "anyone", "anybody", "guy"),
     "trash_bin": ("rubbish", "litter", "garbage"), "passenger_car": ("traffic",),  # after "foot traffic"
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.
@@ -112,7 +112,7 @@ GENERIC_THINGS = ("clutter", "stuff", "things", "junk", "mess", "everything", "o
                   "obstacles", "anything", "something", "whatever")
 # Maintenance words: what "the roadworks" or "the work area" are made of.
 WORKS_WORDS = ("roadworks", "road works", "roadwork", "the works", "maintenance", "construction",
-               "work area", "work zone", "building site", "worksite")
+               "work area", "work zone", "building site", "worksite", "traffic control", "traffic management")
 FILLER_STARTS = ("before", "after", "once", "when", "while", "since", "because", "as soon as")
 PROMPT_INJECTION = ("ignore", "pretend", "disregard", "jailbreak", "system prompt", "bypass")
 # Common words that carry no slot: knowing them is not "understanding less".

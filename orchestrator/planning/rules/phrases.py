@@ -105,8 +105,8 @@ def find_categories(text: str) -> list[Mention]:
                 variants = [" ".join([*words[:-1], last + s]) for s in ("s", "es")]
                 if last.endswith("y"):
                     variants.append(" ".join([*words[:-1], last[:-1] + "ies"]))
-                if last == "person":
-                    variants.append(" ".join([*words[:-1], "people"]))
+                if last in ("person", "child"):  # the irregular plurals
+                    variants.append(" ".join([*words[:-1], "people" if last == "person" else "children"]))
             for variant in variants:
                 for m in _whole(variant).finditer(low):
                     span = (m.start(), m.end())
@@ -119,9 +119,9 @@ def find_categories(text: str) -> list[Mention]:
 
 @cache
 def _whole(phrase: str) -> re.Pattern[str]:
-    # apart, hyphenated or closed up ("road-work"); not the first word of a place ("the bus stop")
+    # apart, hyphenated or closed up ("road-work"); not the first word of a place ("the bus stop"; "benches lot A" is two)
     said = r"(?:\s|-)?".join(re.escape(w) for w in phrase.split())
-    return re.compile(rf"(?<![a-z0-9_]){said}(?![a-z0-9_])(?!(?:\s+|-)(?:car park|park|parking|lot|stop|station|rack|union)\b)")
+    return re.compile(rf"(?<![a-z0-9_]){said}(?![a-z0-9_])(?!(?:\s+|-)(?:car park|park|parking|lot(?!\s+[a-z0-9]\b)|stop|station|rack|union)\b)")
 
 
 def find_count(text: str, before: int | None = None, what: str = "things") -> int | None:

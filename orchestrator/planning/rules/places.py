@@ -21,6 +21,7 @@ from drivetwin.orchestrator.planning.rules.reading import SIDE_OF, Reading, find
 from drivetwin.tools.arrange import row_start
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import Location, resolve_anchor
+from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, polyline_length
 from pydantic import ValidationError
@@ -111,7 +112,7 @@ def relation_objects(r: Reading) -> list[str]:
     return [i for i in r.ids if re.search(rf"\b(?:{words}|near|by|at|to)\s+(?:the\s+)?{re.escape(i).replace('_', '[_ ]')}\b", r.low)]
 
 
-def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str | None:
+def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str], memory: Memory) -> str | None:
     # "next to the bench at the bus stop": the bench nearest that stop; "near the hydrant" too. The
     # relation said first is the one meant: "beside the bin that's next to the bench" is by the bin.
     objects = [i for i in relation_objects(r) if i not in exclude]
@@ -131,6 +132,9 @@ def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str]) -> str |
         point = _anchor_point(r, scene, later[1:], exclude)
         if point is not None:
             present.sort(key=lambda a: math.dist((a.pose.x, a.pose.y), point))
+        elif len(present) > 1:  # "next to that bench": the one the last turn added or moved, if it did
+            recent = memory.last_touched()
+            present.sort(key=lambda a: a.id not in recent)
         return present[0].id
     return None
 
@@ -405,6 +409,58 @@ def _past_along_lane(r: Reading, scene: Scene) -> dict[str, Any] | None:
     return {"relation": "in_lane", "target": landmark.name, "lane": lane.id, "distance": round(ahead, 2)}
 
 
+# A sidewalk named by its side: "the north sidewalk", "the pavement on the south side of Main Street".
+_SIDEWALK_WORD = r"(?:sidewalk|side walk|pavement|footpath|walkway)"
+_SIDEWALK_OF_SIDE = re.compile(rf"\b(north|south|east|west)(?:ern)?(?:[- ]side)?\s+{_SIDEWALK_WORD}\b"
+                               rf"|\b{_SIDEWALK_WORD}\s+on\s+(?:the\s+)?(north|south|east|west)(?:ern)?\s+side\b")
+
+
+def _off_road(r: Reading, scene: Scene, exclude: list[str]) -> bool:
+    """Whether what the clause puts somewhere stands off the road: a walker, a bench, a sign (not a
+    cone, a car or a bike)."""
+    moved = scene.asset(exclude[0]) if exclude else None
+    name = r.mentions[0].category if r.mentions else moved.category if moved is not None else None
+    kind = catalog().get(name) if name is not None else None
+    return kind is not None and kind.placement != "drivable" and "vehicle" not in kind.tags
+
+
+# A sidewalk belongs to the road whose lane is at most this far from its middle.
+SIDEWALK_ROAD_M = 12.0
+
+
+def sidewalk_of_side(r: Reading, scene: Scene, exclude: list[str]) -> dict[str, Any] | None:
+    """The Location on the sidewalk the words name by its compass side ("on the north sidewalk of
+    Main Street", "a bench on the south side of Main Street"): of the road named (else any), the sidewalk on that side nearest the place, thing
+    or ego the clause names; on it, at the point nearest that. None when no such sidewalk is named."""
+    said = _SIDEWALK_OF_SIDE.search(r.low)
+    side = SIDE_OF.search(r.low) if said is None and _off_road(r, scene, exclude) else None
+    if said is None and (side is None or lane_of_side(r.low, scene) is None):
+        return None  # "the north side of Main Street" is its sidewalk for a bench or a walker, not for a cone
+    way = said.group(1) or said.group(2) if said is not None else side.group(1) if side is not None else "north"
+    dx, dy = md.COMPASS_VECTORS[way]
+    roads = {lane.road for lane in scene.roads.lanes if lane.road and re.search(
+        rf"\b{re.escape(ph.normalise(lane.road).strip())}\b", road_kinds_spelt(r.low))}
+    lanes = [lane for lane in scene.roads.lanes if not roads or lane.road in roads]
+    sides = []
+    for walk in scene.roads.sidewalks:
+        mx, my, _ = point_along(walk.polyline, polyline_length(walk.polyline) / 2)
+        road = min(lanes, key=lambda lane: nearest_on_polyline(mx, my, lane.centreline).distance, default=None)
+        near = nearest_on_polyline(mx, my, road.centreline) if road is not None else None
+        if near is not None and near.distance <= SIDEWALK_ROAD_M and (mx - near.x) * dx + (my - near.y) * dy > 0.5 * near.distance:
+            sides.append(walk)  # the road's nearest lane lies the other way: this walk is on that side
+    # by the place or thing named, else where the thing moved stands, else by the ego
+    anchor = r.landmark or next((i for i in r.ids if i not in exclude), None) or next(iter(exclude), "ego")
+    mark, thing = scene.landmark(anchor), scene.asset(anchor)
+    if not sides or (mark is None and thing is None):
+        return None
+    x, y = mark.position if mark is not None else (thing.pose.x, thing.pose.y) if thing is not None else (0.0, 0.0)
+    walk = min(sides, key=lambda w: nearest_on_polyline(x, y, w.polyline).distance)
+    if anchor == "ego":
+        return {"relation": "on_sidewalk", "target": walk.id}
+    on = nearest_on_polyline(x, y, walk.polyline)
+    return {"relation": "on_sidewalk", "target": f"{on.x:.1f}, {on.y:.1f}"}
+
+
 def location(
     r: Reading, scene: Scene, memory: Memory, notes: Notes, exclude: list[str] | None = None, compass: bool = True
 ) -> dict[str, Any] | None:
@@ -427,6 +483,9 @@ def location(
     gone = next((scene.asset(i) for i in notes.subject if scene.asset(i) is not None), None) if was else None
     if gone is not None:  # "remove the hydrant, then add a bench where it was": the spot it stood on
         return {"relation": "absolute", "x": round(gone.pose.x, 2), "y": round(gone.pose.y, 2)}
+    walkway = sidewalk_of_side(r, scene, exclude)
+    if walkway is not None:  # "on the north sidewalk of Main Street": that sidewalk, not a lane of the road
+        return walkway
     offset = (_edge_of(r, scene) or _compass_of(r, scene) or _past_along_lane(r, scene)) if compass else None
     if offset is not None:  # "north of the crossroads", "20 m west of the fountain", "in the northbound lane, north of ..."
         return offset
@@ -454,7 +513,7 @@ def location(
             x, y, _ = point_along(lane.centreline, arc)
             return {"relation": "in_lane", "target": f"{x:.1f}, {y:.1f}", "lane": r.lane}
         return {"relation": "in_lane", "target": r.lane}
-    target: str | None = _asset_after_relation(r, scene, exclude)
+    target: str | None = _asset_after_relation(r, scene, exclude, memory)
     if target is None and r.landmark is None and notes.place is not None and r.has(("its entrance", "the entrance")):
         # "... in lot A and a sign at its entrance": the entrance of the place just named
         entrance = scene.landmark(f"{notes.place.get('target')} entrance")

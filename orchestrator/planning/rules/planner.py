@@ -39,12 +39,14 @@ from drivetwin.orchestrator.planning.rules.edits import (
     FINAL_COUNT,
     behaviour_kind,
     behaviour_spec,
+    drive_towards,
     edit_existing,
     kept_at,
     new_pace,
     recolour,
     referenced,
     remove,
+    walk_said,
 )
 from drivetwin.orchestrator.planning.rules.environment import LIGHTS_DOWN, environment, lights
 from drivetwin.orchestrator.planning.rules.places import (
@@ -95,8 +97,8 @@ GUESS_PENALTY = 0.2
 MIN_CONFIDENCE = 0.05
 
 # Clause breaks: a stop or colon between digits is part of a number or a clock time ("2.5 m",
-# "18:30"), not a break.
-_SPLIT = re.compile(r"((?:[;!?\n]|(?<!\d)[.:]|[.:](?!\d))+|,?\s+(?:and then|then|and also|after that)\s+)")
+# "18:30"), not a break; nor is "then" after "who" ("a man who then walks to the bench": one thing).
+_SPLIT = re.compile(r"((?:[;!?\n]|(?<!\d)[.:]|[.:](?!\d))+|(?<!\bwho),?\s+(?:and then|then|and also|after that)\s+)")
 _VERBS = (
     "add",
     "make",
@@ -810,8 +812,22 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
                 or (mention.plural and nb.spacing_said(r.low) is not None))  # "four cones 8 m apart": a line
     moving = behaviour_kind(r, catalog()[mention.category]) not in (None, "parked")  # a row may be parked
     if (laid_out and not moving) or r.has(("to mark",)):
-        return _both_sides(_arrange(r, scene, memory, notes), r, scene)
+        row = _arrange(r, scene, memory, notes)
+        # "six cones in a row and a sign next to them": the row, then the sign beside it (a ring's centre stays)
+        once = [c for c in _said_once(r) if c in row.args["categories"]] if row.args["shape"] != "ring" else []
+        row = _arrange(replace(r, mentions=[m for m in r.mentions if m.category not in once]), scene, memory, notes) if once else row
+        beside = [ToolCall(tool="add_asset", args={"category": c, "count": 1, "location": row.args["location"]}) for c in once]
+        return [*_both_sides(row, r, scene), *beside]
     return _add(r, scene, memory, notes)
+
+
+def _said_once(r: Reading) -> list[str]:
+    """Categories a clause names one of ("a sign") beside another it names several of ("six cones"):
+    those stand beside the layout, not in it."""
+    counts = {m.category: find_count(r, m) or (3 if m.plural else 1) for m in r.mentions}
+    if len(counts) < 2 or max(counts.values()) < 2:
+        return []
+    return [c for c, n in counts.items() if n == 1 and not any(m.plural for m in r.mentions if m.category == c)]
 
 
 # Filling a place with things: an addition, whatever the place is called ("the empty half").
@@ -1213,7 +1229,7 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     """add_asset for the first thing the clause names: `count` of them, else as many as it says."""
     mention = r.mentions[0]
     word = r.low[mention.start : mention.end].strip()
-    mass = word.endswith(("ing", "ery"))  # "seating", "greenery": more than one
+    mass = word.endswith(("ing", "ery")) and word not in lx.CONCEPTS["construction_sign"]  # "seating": several; "a warning": one
     again = len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None
     count = count or find_count(r, mention) or again or (3 if mention.plural or mass else 1)
     # The count is passed as said: the Worker refuses what is too many, in words.
@@ -1222,9 +1238,18 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     kind = behaviour_kind(r, category)
     if kind is None and word == "traffic":
         kind = "drive_lane"  # "more traffic on Main Street": vehicles that drive, not parked ones
-    if kind is not None:
+    walk = walk_said(r, scene, exclude=[]) if category.motion == "walker" and kind in (None, "cross_road", "drive_lane") else None
+    drive = drive_towards(r, scene) if category.drives and category.motion == "vehicle" and kind in (None, "drive_lane") else None
+    if walk is not None:  # "a man walking towards the fountain": on his way there, from where said or some way off
+        kind, args["behaviour"] = "follow_path", walk.behaviour
+    elif drive is not None:  # "a truck heading for the main gate": in the lane that leads there, some way before it
+        kind, args["behaviour"] = "drive_lane", drive[0]
+    elif kind is not None:
         args["behaviour"] = behaviour_spec(kind, r)
-    where = location(r, scene, memory, notes)
+    where = location(r, scene, memory, notes) if walk is None or walk.start is None else {"relation": "at", "target": walk.start}
+    where = drive[1] if drive is not None else where
+    if walk is not None and where is not None and where.get("target") == walk.behaviour["to"]:
+        where = None  # "a man walking to the fountain": where he goes, not where he stands; he starts some way off
     if where is None and again is not None:  # "same again but bollards": where the last ones went
         where = last_location(memory)
     if where is not None and kind == "jaywalk" and where.get("target") == "ego":

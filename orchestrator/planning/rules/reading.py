@@ -360,8 +360,8 @@ def used_as_verb(low: str, start: int, end: int) -> bool:
 
 
 # Concept words that name one person or thing, not a crowd or a mass ("somewhere to sit" is one bench).
-_ONE_THING = ("someone", "somebody", "kid", "child", "guy", "somewhere to sit", "to sit", "sit down", "seat", "shrub",
-              "bush", "palm", "warning sign")
+_ONE_THING = ("someone", "somebody", "guy", "somewhere to sit", "to sit", "sit down", "seat", "shrub",
+              "bush", "palm", "warning", "warning sign")
 
 # A wish said of someone with the thing wished for after it ("the students could use somewhere to
 # sit", "drivers need a warning").
@@ -373,18 +373,50 @@ def without_beneficiaries(low: str, mentions: list[ph.Mention]) -> list[ph.Menti
     """`mentions` without those who would have what is wished for: they are not what is asked."""
     wish = _WISHED.search(low)
     return mentions if wish is None else [m for m in mentions if m.start >= wish.end()]
+# Going somewhere on foot or by bike: "walk to the library", "head over to the fountain", "ride towards
+# the gate", "a man heading for the east gate", "someone on her way to the union".
+GOES_TO = re.compile(r"\b(?:walk|stroll|head|go|run|jog|wander|rid|cycl|ambl|hurr(?:y|i)|march|strid|trudg|rush|sprint"
+                     r"|driv|make (?:his|her|their) way|on (?:his|her|their) way|strode|rode|drove|ran|went)"
+                     r"(?:e|s|es|e?d|(?:n|g)?ing|(?:g)?ed)?\b(?:\s+(?:over|across|back|off|on|up|down|straight|along))?"
+                     r"(?:\s+from(?:\s+[a-z0-9_'§]+){1,5}?)?\s+(?:to|towards?|for|into)\s+")
+# The words before a walk whose walker was named before them ("a man at the stop who then walks to the
+# bench", "now have her jog over to the hydrant").
+_SUBJECT_GONE = re.compile(r"(?:.*\b(?:who|he|she|they|him|her|them)\s+)?\s*(?:(?:and|then|now|later|after that|afterwards|slowly|quickly)\s+)*")
+# A place named this far into the words after "to" is where the walk goes ("to the big fountain").
+GOAL_REACH = 16
+
+
+def without_goals(low: str, mentions: list[ph.Mention]) -> list[ph.Mention]:
+    """`mentions` without where a walker named before it goes ("a man who walks to the bench"):
+    the bench is a destination, not a thing asked for."""
+    going = GOES_TO.search(low)
+    walker = going is not None and (any(m.end <= going.start() and catalog()[m.category].motion == "walker" for m in mentions)
+                                    or _SUBJECT_GONE.fullmatch(low[: going.start()]) is not None)  # "..., then walks to"
+    if going is None or not walker:
+        return mentions
+    return [m for m in mentions if not going.end() <= m.start <= going.end() + GOAL_REACH]
+
+
+# A warning about people on foot is the pedestrian sign's.
+_ABOUT_WALKERS = re.compile(r"\b(?:cross(?:es|ing)?|crosswalk|pedestrians?|children|kids|people|walkers|school)\b")
 # Words for a person who does something to a thing named beside them.
 _AGENTS = ("someone", "somebody")
 
 
 def _concepts(low: str, taken: list[ph.Mention]) -> list[ph.Mention]:
     found: list[ph.Mention] = []
+    # "the traffic control" is the work zone's kit, not traffic
+    works = [w.span() for word in lx.WORKS_WORDS for w in re.finditer(rf"(?<![a-z]){re.escape(word)}(?![a-z])", low)]
     for category, words in lx.CONCEPTS.items():
         for word in words:
             m = re.search(rf"(?<![a-z]){re.escape(word)}(?![a-z])", low)
+            if m and any(s <= m.start() and m.end() <= e for s, e in works):
+                continue
             if m and not any(t.start < m.end() and m.start() < t.end for t in taken + found):
                 if word in _AGENTS and any(t.start > m.end() for t in taken):
                     continue  # "someone left their car there": the car is the thing, not the someone
+                if category == "construction_sign" and _ABOUT_WALKERS.search(low):
+                    category = "pedestrian_sign"  # "a warning that children cross here": the crossing sign
                 found.append(ph.Mention(category, m.start(), m.end(), word not in _ONE_THING))
     return found
 
@@ -420,7 +452,7 @@ def read(text: str, scene: Scene) -> Reading:
     if len(mentions) > 1 or place is not None:
         kept = [m for m in mentions if not re.search(r"\bfor\s+(the\s+|a\s+|an\s+)?$", low[: m.start])]
         mentions = kept if kept or place is not None else mentions
-    mentions = without_beneficiaries(low, mentions)
+    mentions = without_goals(low, without_beneficiaries(low, mentions))
     # "a night test of pedestrian detection": what a sensor task is about is its topic, not a thing asked for
     mentions = [m for m in mentions if not _PERCEPTION_TASK.match(low[m.end :])]
     ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in ph.tokens(low)]

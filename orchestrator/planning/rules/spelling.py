@@ -259,6 +259,60 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
     return _closest(low, difflib.get_close_matches(low, targets, n=1, cutoff=cutoff), targets)
 
 
+def _glued_places(scene: Scene) -> dict[str, str]:
+    """A place's name (or the tail of it) run together, and as written: "lota" -> "lot a",
+    "busstop" -> "bus stop", "parkinglotb" -> "parking lot b"."""
+    out: dict[str, str] = {}
+    for landmark in scene.landmarks:
+        for name in landmark.names():
+            words = ph.tokens(ph.normalise(name))
+            for i, j in itertools.combinations(range(len(words) + 1), 2):
+                if j - i >= 2:
+                    out["".join(words[i:j])] = " ".join(words[i:j])
+    return out
+
+
+def _place_glued(word: str, scene: Scene) -> str | None:
+    """A place's name written as one word ("lotA", "busstop"), spaced out; else None."""
+    return _glued_places(scene).get(word.lower())
+
+
+# A console-style command ("/spawn cone", "/find suv"): the word is the command.
+_SLASH_COMMAND = re.compile(r"(?:^|(?<=[\s;,]))/(?=[a-z])", re.IGNORECASE)
+# A thing's word with its number run on ("car2", "cone3"): the thing and its number, when there is one.
+_NUMBER_GLUED = re.compile(r"(?<![\w-])([a-z]{2,})(\d+)\b", re.IGNORECASE)
+
+
+def _names_one(scene: Scene, word: str, number: str) -> bool:
+    """Whether "car" and "2" name a thing of the scene (passenger_car_2)."""
+    said = ph.find_categories(word)
+    return bool(said) and scene.asset(f"{said[0].category}_{int(number)}") is not None
+
+
+# Two words run together are at least this long ("atthe").
+GLUED_MIN_LEN = 5
+# The little words that run into a thing's or place's name ("atthe", "conesnear"); two other words
+# run together are usually one word ("standstill", "westernmost"), so only these are split off.
+_GLUE_WORDS = ("at", "to", "in", "on", "by", "of", "the", "near", "next", "behind", "beside", "from", "with", "and")
+
+
+def _split_glued(word: str, scene: Scene, vocab: frozenset[str]) -> str | None:
+    """A known word run into a place's name, or a little word run into a known one, that no slip
+    explains ("nearlotb" -> "near lot b", "conesnear" -> "cones near"); else None."""
+    low, places = word.lower(), _glued_places(scene)
+    if len(low) < GLUED_MIN_LEN or is_known(low, vocab) or is_english(low):
+        return None
+    for k in range(len(low) - 2, 1, -1):
+        head, tail = low[:k], low[k:]
+        if not (is_known(head, vocab) or is_english(head)):
+            continue
+        if tail in places:
+            return f"{head} {places[tail]}"
+        if (head in _GLUE_WORDS and is_known(tail, vocab)) or (tail in _GLUE_WORDS and is_known(head, vocab) and len(head) >= 3):
+            return f"{head} {tail}"
+    return None
+
+
 def _closest(low: str, close: list[str], targets: tuple[str, ...]) -> str | None:
     # difflib's pick, unless a target fewer slips away exists ("bycicle" is "bicycle", not "circle").
     by_edits = _nearest_by_edits(low, targets)
@@ -420,6 +474,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _THING_PRONOUN.sub("it", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
     text = _RIGHT_THERE.sub("", text)
+    text = _SLASH_COMMAND.sub("", text)
+    text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
     repairs: list[str] = []
 
@@ -427,7 +483,7 @@ def repair(text: str, scene: Scene) -> Repaired:
         word = m.group(0)
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
-        new = _repair_word(word, vocab)
+        new = _place_glued(word, scene) or _repair_word(word, vocab) or _split_glued(word, scene, vocab)
         if new is not None and new not in _COMMAND_VERBS and _COMMAND_SLOT.search(text[: m.start()]) \
                 and _THING_NEXT.match(text[m.end() :]):
             # "plase the suv in lot A": a slip opening a clause before a thing is the command verb

@@ -1,0 +1,235 @@
+"""Walks to a place, sidewalks named by their side, and words run together, tried in this file's
+own words on the packaged campus world: a walker added on his way somewhere starts some way off
+and walks there, a vehicle heading for a gate drives the lane that leads there, "the north
+sidewalk of Main Street" is that sidewalk (not a lane of the road), "lotA" and "nearlotb" are
+places, and "that bench" is the one the last turn added."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from drivetwin.orchestrator.planning.rules.spelling import repair
+from drivetwin.orchestrator.transaction import TransactionError, execute
+from drivetwin.tools import ToolRegistry
+from drivetwin.tools.base import ToolCall
+from drivetwin.tools.errors import RuleViolation
+from drivetwin.worlds.scene import FollowPath, Scene
+from drivetwin.worlds.surface import surface_at
+
+
+def added(session, before: Scene, category: str):
+    old = {a.id for a in before.assets}
+    return [a for a in session.scene.assets if a.category == category and a.id not in old]
+
+
+def place(scene: Scene, name: str) -> tuple[float, float]:
+    landmark = scene.landmark(name)
+    assert landmark is not None
+    return landmark.position
+
+
+# --- the Worker: a walk to a target, a sidewalk as a target ------------------------------------
+
+
+def test_a_new_walker_going_somewhere_with_no_start_said_starts_on_a_sidewalk_some_way_off(campus, registry: ToolRegistry):
+    done = execute(registry, campus, [ToolCall(tool="add_asset", args={
+        "category": "pedestrian", "behaviour": {"kind": "follow_path", "to": "fountain"}})])
+    walker = next(a for a in done.after.assets if a.category == "pedestrian")
+    fountain = place(campus, "fountain")
+    assert isinstance(walker.behaviour, FollowPath)
+    assert walker.behaviour.waypoints[0] == pytest.approx((walker.pose.x, walker.pose.y), abs=0.01)
+    assert walker.behaviour.waypoints[-1] == pytest.approx(fountain, abs=0.01)
+    assert 15.0 <= math.dist((walker.pose.x, walker.pose.y), fountain) <= 35.0
+    assert surface_at(campus, walker.pose.x, walker.pose.y) == "sidewalk"
+
+
+def test_a_walk_to_a_thing_ends_beside_it_and_one_already_there_is_refused(campus, registry: ToolRegistry):
+    done = execute(registry, campus, [ToolCall(tool="add_asset", args={
+        "category": "pedestrian", "location": {"relation": "at", "target": "bus stop"},
+        "behaviour": {"kind": "follow_path", "to": "bench_1"}})])
+    walker = next(a for a in done.after.assets if a.category == "pedestrian")
+    bench = campus.asset("bench_1")
+    assert bench is not None and isinstance(walker.behaviour, FollowPath)
+    end = walker.behaviour.waypoints[-1]
+    assert 0.5 < math.dist(end, (bench.pose.x, bench.pose.y)) < 3.0  # beside the bench, not in it
+    with pytest.raises(TransactionError, match="already at") as refused:
+        execute(registry, done.after, [ToolCall(tool="set_behaviour", args={
+            "asset": walker.id, "behaviour": {"kind": "follow_path", "to": f"{walker.pose.x}, {walker.pose.y}"}})])
+    assert isinstance(refused.value.error, RuleViolation)
+
+
+def test_a_sidewalk_is_a_target_by_its_id(campus, registry: ToolRegistry):
+    done = execute(registry, campus, [ToolCall(tool="add_asset", args={
+        "category": "bench", "location": {"relation": "at", "target": "main_north_east"}})])
+    bench = next(a for a in done.after.assets if a.id not in {b.id for b in campus.assets})
+    assert bench.pose.x > 9 and bench.pose.y > 3.5 and surface_at(campus, bench.pose.x, bench.pose.y) == "sidewalk"
+
+
+# --- walks and drives read from the words --------------------------------------------------------
+
+
+def test_a_walker_added_on_his_way_somewhere_walks_there_from_some_way_off(session, campus):
+    assert session.submit("a man walks toward the fountain").ok
+    (walker,) = added(session, campus, "pedestrian")
+    assert isinstance(walker.behaviour, FollowPath)
+    assert walker.behaviour.waypoints[-1] == pytest.approx(place(campus, "fountain"), abs=0.01)
+    assert math.dist((walker.pose.x, walker.pose.y), place(campus, "fountain")) > 15  # not standing at it
+
+
+def test_a_walk_from_one_place_to_another_starts_at_the_first(session, campus):
+    assert session.submit("a pedestrian walks from the bus stop to the library entrance").ok
+    (walker,) = added(session, campus, "pedestrian")
+    assert math.dist((walker.pose.x, walker.pose.y), place(campus, "bus stop")) < 3
+    assert isinstance(walker.behaviour, FollowPath)
+    assert walker.behaviour.waypoints[-1] == pytest.approx(place(campus, "Library entrance"), abs=0.01)
+
+
+def test_where_a_walker_goes_is_not_a_thing_to_add_and_then_after_who_is_the_same_walker(session, campus):
+    assert session.submit("put a pedestrian at the bus stop who then walks to the bench").ok
+    assert not added(session, campus, "bench")
+    (walker,) = added(session, campus, "pedestrian")
+    assert isinstance(walker.behaviour, FollowPath) and math.dist(walker.behaviour.waypoints[-1], (-26.0, -6.9)) < 3
+
+
+def test_a_walker_there_told_to_run_somewhere_runs_there_from_where_she_stands(session, campus):
+    assert session.submit("add a pedestrian at the fountain").ok
+    (walker,) = added(session, campus, "pedestrian")
+    report = session.submit("now have her jog over to the hydrant")
+    assert report.ok, report.error
+    now = session.scene.asset(walker.id)
+    assert now is not None and isinstance(now.behaviour, FollowPath)
+    assert now.behaviour.speed > 2.0 and math.dist(now.behaviour.waypoints[-1], (16.0, 5.5)) < 3
+    assert (now.pose.x, now.pose.y) == (walker.pose.x, walker.pose.y)  # from where she stood, not moved there
+
+
+def test_a_new_walker_then_told_to_walk_in_the_same_prompt_walks(session, campus):
+    assert session.submit("add a pedestrian at the fountain and then make him walk to the east gate").ok
+    (walker,) = added(session, campus, "pedestrian")
+    assert isinstance(walker.behaviour, FollowPath)
+    assert walker.behaviour.waypoints[-1] == pytest.approx(place(campus, "east gate"), abs=0.01)
+    assert math.dist((walker.pose.x, walker.pose.y), place(campus, "fountain")) < 3  # still where he was put
+
+
+def test_a_vehicle_heading_for_a_gate_drives_the_lane_that_leads_there(session, campus):
+    assert session.submit("a truck heading for the main gate").ok
+    (truck,) = added(session, campus, "truck")
+    gate = place(campus, "main gate")
+    assert truck.behaviour.kind == "drive_lane" and truck.behaviour.lane == "main_westbound"
+    assert 20 < truck.pose.x - gate[0] < 60  # some way east of the gate, driving west towards it
+    assert session.submit("the suv drives to the main gate").ok
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.kind == "drive_lane" and suv.behaviour.lane == "main_westbound"
+
+
+# --- sidewalks named by their side -------------------------------------------------------------
+
+
+def test_the_north_sidewalk_of_main_street_is_that_sidewalk_not_a_lane(session, campus):
+    assert session.submit("put a pedestrian on the north sidewalk of main street").ok
+    (walker,) = added(session, campus, "pedestrian")
+    assert walker.pose.y > 3.5 and surface_at(campus, walker.pose.x, walker.pose.y) == "sidewalk"
+
+
+def test_a_sidewalk_on_a_side_of_campus_drive_and_a_bench_on_a_side_of_main_street(session, campus):
+    assert session.submit("put a hydrant on the sidewalk on the west side of campus drive").ok
+    (hydrant,) = [a for a in added(session, campus, "fire_hydrant")]
+    assert hydrant.pose.x < -3.5 and abs(hydrant.pose.x + 5.5) < 1.5  # Campus Drive's west sidewalk
+    before = session.scene
+    assert session.submit("add a bench on the south side of main street").ok
+    (bench,) = added(session, before, "bench")
+    assert bench.pose.y < -3.5 and surface_at(campus, bench.pose.x, bench.pose.y) == "sidewalk"
+
+
+def test_a_cone_on_a_side_of_the_road_still_goes_in_that_sides_lane(session, campus):
+    assert session.submit("put a cone on the north side of main street").ok
+    (cone,) = added(session, campus, "traffic_cone")
+    assert 0 < cone.pose.y < 3.5  # the westbound lane, the north half of the road
+
+
+def test_a_thing_moved_to_the_north_sidewalk_goes_across_from_where_it_stood(session, campus):
+    assert session.submit("move the bench to the north sidewalk").ok
+    bench = session.scene.asset("bench_1")
+    assert bench is not None and bench.pose.y > 3.5 and abs(bench.pose.x - (-26.0)) < 3
+
+
+# --- words run together, console commands, and "that" one ---------------------------------------
+
+
+@pytest.mark.parametrize(("said", "read"), [
+    ("add 2 benchs lotA", "add 2 benchs lot a"),
+    ("/find suv nearlotb", "find suv near lot b"),
+    ("put a cone atthe busstop", "put a cone at the bus stop"),
+    ("conesnear the eastgate", "cones near the east gate"),
+    ("car2 drive westbond main st", "car 2 drive westbound main st"),  # a slip, not "west bond"
+])
+def test_words_run_together_are_read_apart(campus, said: str, read: str):
+    assert repair(said, campus).text == read
+
+
+def test_glued_places_and_a_console_command_are_done_as_meant(session, campus):
+    assert session.submit("add 2 benchs lotA").ok
+    benches = added(session, campus, "bench")
+    lot = campus.landmark("parking lot A")
+    assert len(benches) == 2 and lot is not None and all(math.dist((b.pose.x, b.pose.y), lot.position) < 6 for b in benches)
+    before = session.scene
+    report = session.submit("/find suv nearlotb")
+    assert report.ok and report.answer is not None and "suv_1" in report.answer
+    assert session.scene == before
+
+
+def test_that_bench_is_the_one_the_last_turn_added(session, campus):
+    assert session.submit("Add a bench by the fountain.").ok
+    (bench,) = added(session, campus, "bench")
+    before = session.scene
+    assert session.submit("now add a rubbish bin next to that bench").ok
+    (bin_,) = added(session, before, "trash_bin")
+    assert math.dist((bin_.pose.x, bin_.pose.y), (bench.pose.x, bench.pose.y)) < 4
+
+
+def test_children_and_kids_are_people(session, campus):
+    assert session.submit("add three kids at the bus stop").ok
+    assert len(added(session, campus, "pedestrian")) == 3
+    assert session.submit("remove the children").ok
+    assert session.scene.count("pedestrian") == 0
+
+
+def test_a_warning_that_children_cross_is_a_pedestrian_sign(session, campus):
+    assert session.submit("drivers coming up to the west crosswalk need some warning that children cross there").ok
+    assert added(session, campus, "pedestrian_sign") and not added(session, campus, "construction_sign")
+    assert not added(session, campus, "pedestrian")
+
+
+def test_a_row_of_several_and_one_thing_beside_it_is_the_row_and_the_one(session, campus):
+    report = session.submit("put a construction sign and six cones along the westbound lane by the JTEKT drop-off")
+    assert report.ok, report.error
+    assert len(added(session, campus, "traffic_cone")) == 6 and len(added(session, campus, "construction_sign")) == 1
+    before = session.scene
+    report = session.submit("put three cones in a row at the lot a entrance and a road work sign next to them")
+    assert report.ok, report.error  # the sign beside the row is not "scattering" it
+    assert len(added(session, before, "traffic_cone")) == 3 and len(added(session, before, "construction_sign")) == 1
+
+
+def test_a_thing_named_with_its_number_run_on_is_that_thing_and_only_if_it_is_there(session, campus):
+    assert repair("car2 drive westbound", campus).text == "car 2 drive westbound"
+    assert repair("paint bench2 red", campus).text == "paint bench2 red"  # there is no bench 2: not bench_1
+    assert session.submit("car2 drive westbond main st").ok
+    car = session.scene.asset("passenger_car_2")
+    assert car is not None and car.behaviour.kind == "drive_lane" and car.behaviour.lane == "main_westbound"
+
+
+def test_driving_the_other_way_is_the_roads_other_lane_not_a_parked_u_turn(session, campus):
+    assert session.submit("the ego should be going the other way down main street").ok
+    ego = session.scene.ego
+    assert ego.behaviour.kind == "drive_lane" and ego.behaviour.lane == "main_westbound"
+    assert session.submit("turn the bench the other way").ok  # a thing that does not drive is turned
+    bench = session.scene.asset("bench_1")
+    assert bench is not None and abs(math.remainder(bench.pose.yaw - (campus.asset("bench_1").pose.yaw + math.pi), 2 * math.pi)) < 0.01
+
+
+def test_the_temporary_traffic_control_is_the_work_zone_not_the_traffic(session, campus):
+    assert session.submit("put a construction sign and six cones along the westbound lane by the JTEKT drop-off").ok
+    report = session.submit("remove the temporary traffic control")
+    assert report.ok, report.error
+    assert session.scene.count("traffic_cone") == 0 and session.scene.count("construction_sign") == 0
+    assert session.scene.count("passenger_car") == campus.count("passenger_car")
