@@ -70,6 +70,7 @@ from drivetwin.orchestrator.planning.coverage import (
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed, nearest_landmark
 from drivetwin.orchestrator.planning.intent import (
     ADD_WORDS,
+    BARE_STATE,
     FEWER_WORDS,
     KEEP_SOME,
     REMOVE_WORDS,
@@ -222,7 +223,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.polarity == "remove" and not effect.removed and any(
             c.tool == "set_lighting" and c.args.get("street_lights") == "on" for c in effect.calls):
         out.append("you asked for less, but the plan switches the street lights on")  # "fewer lights over there"
-    if _BARE_STATE.search(request.low) and effect.removed and not request.question:
+    if BARE_STATE.search(request.low) and effect.removed and not request.question:
         # "the bus stop feels empty": what is missing is wanted, never the rest taken away
         out.append("you said it is empty, but the plan takes away " + _names(effect.removed))
     if _ANOTHER_ONE.search(request.low) and not effect.added and _moved(effect) and not request.question:
@@ -350,8 +351,6 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
 # On foot or pedal, said of what is added: "a jogger running along Main Street" (not "stop walking").
 _ON_FOOT = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!no )\b(walking|jogging|running|strolling|wandering|jaywalking|jaywalks"
                       r"|pacing|cycling|pedalling|pedaling|(?:walks|strolls|jogs|wanders|hurries|runs|heads|rides)(?= (?:to|towards?|across|along|over|for|from|into|up|down)\b))\b")
-# A place said to be empty as it is ("feels empty", "looks a bit bare"): a lack, not "empty it".
-_BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b")
 
 
 def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:

@@ -11,6 +11,8 @@ import re
 
 from drivetwin.tools.appearance import COLOURS
 
+# A place said to be empty as it is ("feels empty", "looks a bit bare"): a lack, not "empty it".
+BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b")
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here)\b)|out of scope|clear (away|out|the)|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
@@ -372,6 +374,7 @@ def asks(low: str) -> bool:
 
 __all__ = [
     "ADD_WORDS",
+    "BARE_STATE",
     "FEWER_WORDS",
     "KEEP_SOME",
     "REMOVE_WORDS",

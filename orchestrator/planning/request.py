@@ -108,7 +108,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+(?:-[a-z]+)?", exact)
                      if w.group(0) in _AMOUNTS and not _is_reference(masked, w.start()))
     state: Literal["parked", "moving"] | None = (
-        "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) else None
+        "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) and not md.SET_GOING.search(low) else None
     )
     return Request(prompt, question, polarity, categories, numbers, place[0] if place else None,
                    lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)), low, masked,

@@ -233,3 +233,50 @@ def test_the_temporary_traffic_control_is_the_work_zone_not_the_traffic(session,
     assert report.ok, report.error
     assert session.scene.count("traffic_cone") == 0 and session.scene.count("construction_sign") == 0
     assert session.scene.count("passenger_car") == campus.count("passenger_car")
+
+
+def test_slowing_a_car_down_for_where_children_walk_adds_no_children(session, campus):
+    report = session.submit("slow our car down, it's going far too fast for somewhere children walk")
+    assert report.ok, report.error
+    assert session.scene.count("pedestrian") == campus.count("pedestrian")
+    assert session.scene.ego.behaviour.kind == "drive_lane" and session.scene.ego.behaviour.speed < campus.ego.behaviour.speed
+
+
+def test_setting_a_parked_car_going_drives_it_and_that_said_last_is_the_last_thing_added(session, campus):
+    assert session.submit("get the suv moving").ok
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.kind == "drive_lane"
+    assert session.submit("add a delivery truck at the JTEKT entrance").ok
+    assert session.submit("actually get rid of that").ok
+    assert session.scene.count("truck") == 0 and session.scene.asset("suv_1") is not None
+
+
+def test_a_place_said_to_look_empty_is_not_emptied_and_the_next_clause_fills_it(session, campus):
+    report = session.submit("lot A looks empty in the renders. fix with 3 parked cars")
+    assert report.ok, report.error
+    lot = campus.landmark("parking lot A")
+    assert lot is not None and lot.polygon is not None
+    cars = added(session, campus, "passenger_car")
+    assert len(cars) == 3 and all(c.pose.x < -60 and c.pose.y > 10 for c in cars)
+    assert all(session.scene.asset(a.id) is not None for a in campus.assets)  # nothing taken away
+
+
+def test_both_of_a_kind_written_in_the_plural_are_both(session, campus):
+    assert session.submit("delte both trafic lights").ok
+    assert session.scene.count("traffic_light") == 0
+
+
+@pytest.mark.parametrize(("said", "read"), [
+    ("witch lane is the suv in", "which lane is the suv in"),
+    ("make the ego break at ten seconds", "make the ego brake at 10 seconds"),
+    ("the car breaks hard", "the car brakes hard"),
+    ("the car should break down", "the car should break down"),  # a breakdown is not a brake
+])
+def test_words_that_sound_alike_are_the_ones_meant(campus, said: str, read: str):
+    assert repair(said, campus).text == read
+
+
+def test_a_kid_running_out_into_the_road_jaywalks(session, campus):
+    assert session.submit("a kid runs out into the road").ok
+    (kid,) = added(session, campus, "pedestrian")
+    assert kid.behaviour.kind == "jaywalk"

@@ -45,6 +45,8 @@ DEFAULT_SPIN_DEG = 90.0
 # for any thing ("remove that thing").
 _POINTING = ("it", "them", "that one", "those", "they", "its", "him", "her", "that thing", "this thing",
              "that object", "this object", "those things", "these things")
+# "get rid of that", "lose this": a demonstrative said last is the thing itself.
+_THAT_LAST = re.compile(r"\b(?:that|this)\s*(?:please|pls|now|too|again|as well)?\s*[.!?]*\s*$")
 # Words that make what follows a reference point, not the thing acted on ("near from ego").
 _ANCHOR_BEFORE = re.compile(r"\b(?:near|from|to|behind|ahead of|in front of|of|by|beside|around|closest to|nearest)\s+(?:the\s+)?$")
 # "make the suv stand out": a look meant to be seen, in the colour of safety clothing.
@@ -121,7 +123,7 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         if place >= len(recent) and nth.group(1) != "last":
             raise ph_error(f"the last turn added {len(recent)}; there is no {nth.group(1)} one")
         return [recent[-1] if nth.group(1) == "last" else recent[place]]
-    if r.has(_POINTING):
+    if r.has(_POINTING) or _THAT_LAST.search(r.low):
         if notes.subject:
             return notes.subject
         return [i for i in memory.last_added() if scene.asset(i) is not None]
@@ -481,8 +483,8 @@ def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
 # about 10 m/s", "could the ego go a bit slower?" (by PACE_FACTOR when no speed is said).
 _PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|driving|travel(?:s|ling|ing)?|move|moves|moving"
                         r"|cruise|cruising|ride|rides|riding|walk|walks|walking)\b")
-_SLOWER = re.compile(r"\b(?:slower|slow (?:it |them |him |her )?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
-_FASTER = re.compile(r"\b(?:faster|quicker|speed (?:it |them |him |her )?up|(?:increase|raise) (?:its |the |their )?speed)\b")
+_SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
+_FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed)\b")
 PACE_FACTOR = 1.5
 # A moving thing's speed when its behaviour does not say one (the Workers' own default).
 DEFAULT_PACE_MS = 5.0
@@ -663,6 +665,8 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
             angle = DEFAULT_SPIN_DEG
         return [ToolCall(tool="move_asset", args={"asset": asset, "turn_deg": angle})]
     kind = behaviour_kind(r, catalog()[found.category] if found is not None else None)
+    if kind is None and found is not None and catalog()[found.category].drives and md.SET_GOING.search(r.low):
+        kind = "drive_lane"  # "get the suv moving": off it drives
     drive = drive_towards(r, scene, found) if found is not None and kind in (None, "drive_lane") and catalog()[found.category].drives else None
     if drive is not None and found is not None and catalog()[found.category].motion == "vehicle":
         notes.subject = [asset]  # "the suv drives to the main gate": into the lane that leads there, where it stands

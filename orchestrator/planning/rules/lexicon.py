@@ -78,7 +78,7 @@ BLOCK_WORDS = ("block the road", "block the street", "close the road", "close th
 BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
     "jaywalk": ("jaywalk", "jaywalking", "jaywalker", "cut across", "cuts across", "cutting across",
                 "run across", "runs across", "darts across", "dart across", "ego's path",
-                "ego vehicle's path", "in front of the ego", "step out", "steps out", "steps onto the road", "step onto the road"),
+                "ego vehicle's path", "in front of the ego", "step out", "steps out", "steps onto the road", "step onto the road", "runs out", "run out", "darts out", "dart out"),
     "circle": ("skidpad", "skid pad", "circle", "circles", "circling", "donut", "donuts",
                "doughnut", "loop around", "round and round", "loops", "in a loop"),
     "cross_road": ("cross the road", "crossing the road", "cross the street", "crossing the street",

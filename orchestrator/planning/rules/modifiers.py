@@ -110,6 +110,8 @@ def groups_said(text: str) -> dict[str, frozenset[str]]:
 _LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|side by side|next to each other|avenue)s?\b")
 
 
+# Setting a thing in motion: "get the suv moving", "start the truck rolling" (not a pick of moving ones).
+SET_GOING = re.compile(r"\b(?:get|gets|start|starts|set|sets)\s+(?:[a-z_0-9']+\s+){1,3}(?:moving|going|driving|rolling)\b")
 # That many on each side ("six bollards on each side of it"): two sides' worth.
 EACH_SIDE = re.compile(r"\b(?:each|either|every)\s+side\b")
 # Both edges said: "on both sides", "either kerb", "each edge of the lane": two rows, one a side.

@@ -75,6 +75,7 @@ class Notes:
     guesses: list[str] = field(default_factory=list)
     # The prompt's own context: the place and the assets its earlier clauses named.
     place: dict[str, Any] | None = None
+    scene_set: dict[str, Any] | None = None  # the place a clause that asks nothing named ("lot A looks empty.")
     subject: list[str] = field(default_factory=list)
     named: list[str] = field(default_factory=list)  # the subject before new things became it
     earlier: list[str] = field(default_factory=list)  # the subjects before it, newest first

@@ -19,6 +19,7 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, TraceStep
 from drivetwin.orchestrator.planning.base import Reading as Choice
 from drivetwin.orchestrator.planning.intent import (
+    BARE_STATE,
     FEWER_WORDS,
     HABITUAL,
     REMOVE_WORDS,
@@ -382,6 +383,7 @@ class RulePlanner:
                 notes.place = {"relation": "at", "target": reading.landmark}
             if clause_calls is None:
                 skipped.append(clause)
+                notes.scene_set = notes.place if reading.landmark else notes.scene_set
                 continue
             if (intro or _STATEMENT.match(_INTERJECTION.sub("", reading.low))) and not asked:
                 described.extend(clause_calls)  # "the bench by the stop is in the way": context, unless all there is
@@ -690,6 +692,8 @@ def _without_mentions(r: Reading) -> str:
 
 
 def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
+    if (bare := BARE_STATE.search(r.masked)) is not None:  # "lot A looks empty": how it is, not "empty it"
+        r = replace(r, masked=r.masked[: bare.start()] + " " * (bare.end() - bare.start()) + r.masked[bare.end() :])
     if r.has(lx.PROMPT_INJECTION) and not (r.mentions or r.ego or r.ids):
         raise PlanningError(
             f"{r.text!r} is not a scene edit; the world's rules always apply and cannot be switched off"
@@ -1238,7 +1242,7 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     kind = behaviour_kind(r, category)
     if kind is None and word == "traffic":
         kind = "drive_lane"  # "more traffic on Main Street": vehicles that drive, not parked ones
-    walk = walk_said(r, scene, exclude=[]) if category.motion == "walker" and kind in (None, "cross_road", "drive_lane") else None
+    walk = walk_said(r, scene, exclude=[]) if category.motion == "walker" and kind in (None, "drive_lane") else None
     drive = drive_towards(r, scene) if category.drives and category.motion == "vehicle" and kind in (None, "drive_lane") else None
     if walk is not None:  # "a man walking towards the fountain": on his way there, from where said or some way off
         kind, args["behaviour"] = "follow_path", walk.behaviour
@@ -1264,6 +1268,8 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
         where = _beside_last(scene, memory) or _fallback_place(memory)
     if where is None and notes.place is not None and r.has(("there", "instead")):
         where = dict(notes.place)
+    if where is None and notes.scene_set is not None and kind in (None, "parked"):
+        where = dict(notes.scene_set)  # "lot A looks empty in the renders. fix with 3 parked cars": there
     kind_of_place = any(places_called(scene, m.group("kind")) for m in _THE_KIND.finditer(r.low))  # "at the entrance"
     if where is None and (said_a_place(r) or kind_of_place) and kind is None:
         notes.guess(_UNRECOGNISED)

@@ -421,6 +421,10 @@ def _concepts(low: str, taken: list[ph.Mention]) -> list[ph.Mention]:
     return found
 
 
+# Who something is for, or where they are ("for the students", "for somewhere children walk"): not what is asked.
+_FOR_WHOM = re.compile(r"\bfor\s+(?:the\s+|a\s+|an\s+|somewhere\s+|anywhere\s+|a place\s+(?:where\s+)?|where\s+)?$")
+
+
 def read(text: str, scene: Scene) -> Reading:
     """Parse one clause against the scene."""
     low = ph.normalise(text)
@@ -449,9 +453,9 @@ def read(text: str, scene: Scene) -> Reading:
     mentions += _concepts(masked, mentions)
     mentions.sort(key=lambda m: m.start)
     # "somewhere for students to sit": the students are who it is for, not what is asked.
-    if len(mentions) > 1 or place is not None:
-        kept = [m for m in mentions if not re.search(r"\bfor\s+(the\s+|a\s+|an\s+)?$", low[: m.start])]
-        mentions = kept if kept or place is not None else mentions
+    if len(mentions) > 1 or place is not None or ego is not None:  # "slow our car down, ... for somewhere children walk"
+        kept = [m for m in mentions if not _FOR_WHOM.search(low[: m.start])]
+        mentions = kept if kept or place is not None or ego is not None else mentions
     mentions = without_goals(low, without_beneficiaries(low, mentions))
     # "a night test of pedestrian detection": what a sensor task is about is its topic, not a thing asked for
     mentions = [m for m in mentions if not _PERCEPTION_TASK.match(low[m.end :])]

@@ -407,6 +407,9 @@ _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those
 # south ones" (except), "a stop sine" (sign).
 _SOUND_ALIKES = (
     (re.compile(r"\bbuy(?= (?:the|a|an|that|this|those|these)\b)", re.IGNORECASE), "by"),
+    (re.compile(r"^witch(?= (?:lane|one|way|car|side|road|street|of|is)\b)", re.IGNORECASE), "which"),
+    # "make the ego break at ten seconds": a vehicle brakes
+    (re.compile(r"\b(ego|car|suv|truck|bus|van|vehicle|it|to|and) break(s?|ing)\b(?! (?:down|up|off|into)\b)", re.IGNORECASE), r"\1 brake\2"),
     # text-speak "r" and "ur", only between the words that make them a verb or a pronoun ("r there", "ur car")
     (re.compile(r"(?<=[a-z] )r(?= (?:there|they|these|those|the|all|any|u|you|we)\b)", re.IGNORECASE), "are"),
     (re.compile(r"\bur(?= (?:car|ego|own)\b)", re.IGNORECASE), "your"),
