@@ -241,7 +241,7 @@ def resolve_behaviour(
 # A walk to a thing ends this far short of its edge, beside it rather than inside it.
 GOAL_SHORT_M = 1.0
 # A new walker going somewhere, with no start said, starts this far from where it goes.
-WALK_LEAD_M = 25.0
+WALK_LEAD_M = 12.0
 
 
 def goal_of(scene: Scene, asset: AssetInstance, name: str) -> tuple[float, float]:

@@ -234,6 +234,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.categories and touched:
         grouped = {c for members in md.groups_said(request.low).values() for c in members}  # "the vehicles"
         grouped |= counted_kinds(request.low)  # "the second car from the left": SUVs are cars too
+        grouped |= {a.category for a in context.scene.all_assets() if re.search(rf"\b{a.id}\b", request.low)}  # by id
         strays = {a.category for a in touched} - request.categories - grouped - _companions(effect)
         if strays:
             out.append(f"you named {', '.join(sorted(request.categories))}, but the plan touches {', '.join(sorted(strays))}")

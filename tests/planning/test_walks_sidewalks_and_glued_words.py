@@ -280,3 +280,33 @@ def test_a_kid_running_out_into_the_road_jaywalks(session, campus):
     assert session.submit("a kid runs out into the road").ok
     (kid,) = added(session, campus, "pedestrian")
     assert kid.behaviour.kind == "jaywalk"
+
+
+def test_two_things_trade_places_each_keeping_its_heading(session, campus):
+    bench, bin_ = campus.asset("bench_1"), campus.asset("trash_bin_1")
+    assert bench is not None and bin_ is not None
+    report = session.submit("swap the bench and the bin around")
+    assert report.ok, report.error
+    assert session.scene.count("bench") == 1 and session.scene.count("trash_bin") == 1  # no ring of new ones
+    now_bench, now_bin = session.scene.asset("bench_1"), session.scene.asset("trash_bin_1")
+    assert now_bench is not None and now_bin is not None
+    assert math.dist((now_bench.pose.x, now_bench.pose.y), (bin_.pose.x, bin_.pose.y)) < 0.1
+    assert math.dist((now_bin.pose.x, now_bin.pose.y), (bench.pose.x, bench.pose.y)) < 0.1
+    assert now_bench.pose.yaw == pytest.approx(bench.pose.yaw, abs=0.01)
+    assert session.submit("switch the street lights on").ok  # a switch of a setting is no trade
+    assert session.scene.environment.lighting.street_lights == "on"
+
+
+def test_closer_to_the_road_stops_at_the_kerb(session, campus):
+    assert session.submit("push the bin closer to the road").ok
+    moved = session.scene.asset("trash_bin_1")
+    assert moved is not None and -5.0 < moved.pose.y < -3.5  # nearer the road, still off it
+    assert surface_at(campus, moved.pose.x, moved.pose.y) != "lane"
+
+
+def test_every_thing_a_turn_names_is_turned_each_its_own_way_round(session, campus):
+    report = session.submit("turn the cars in lot B to face south")
+    assert report.ok, report.error
+    for car in ("passenger_car_1", "passenger_car_2", "suv_1"):
+        asset = session.scene.asset(car)
+        assert asset is not None and math.sin(asset.pose.yaw) == pytest.approx(-1.0, abs=0.01)

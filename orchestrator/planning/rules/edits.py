@@ -539,6 +539,12 @@ _UP = re.compile(r"\b(?:move|moves|moved|inch|edge|creep|roll|bring|shift)\s+(?:
 _TOWARD = re.compile(r"\b(?:towards?|in the direction of|(?:closer|nearer)(?: to)?|(?P<away>(?:further|farther|more|well)(?: away)? from|away from))\b")
 
 
+# A thing moved closer to the road stops this far short of its edge.
+KERB_MARGIN_M = 0.5
+# The road as such, after "closer to": "closer to the road", "nearer the kerb".
+_ROAD_AFTER = re.compile(r"\s+(?:to\s+)?(?:the\s+)?(?:road|street|kerb|curb|carriageway|traffic|lane)\b")
+
+
 def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> dict[str, float] | None:
     """East and north for moving `ids` `shift` metres toward the place, road or ego named after
     "toward" or "closer to" (away from it after "further from" or "away from"), from the middle of
@@ -559,10 +565,15 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> di
         goal = (near.x, near.y)
     elif r.ego and "ego" not in ids:
         goal = (scene.ego.pose.x, scene.ego.pose.y)
+    elif _ROAD_AFTER.match(r.low, said.end()) and scene.roads.lanes:  # "closer to the road": its nearest lane
+        lane, near = min(((ln, nearest_on_polyline(x, y, ln.centreline)) for ln in scene.roads.lanes), key=lambda p: p[1].distance)
+        goal = (near.x, near.y)
+        if not said.group("away"):  # up to the kerb, never onto the road
+            shift = min(shift, max(0.0, near.distance - lane.width / 2 - KERB_MARGIN_M))
     else:
         return None
     gap = math.dist((x, y), goal)
-    if gap < 1e-6:
+    if gap < 1e-6 or shift <= 0.0:
         return None
     step = -shift if said.group("away") else shift
     return {"east": round(step * (goal[0] - x) / gap, 2), "north": round(step * (goal[1] - y) / gap, 2)}
@@ -610,6 +621,28 @@ def _lane_back(found: AssetInstance, scene: Scene) -> str | None:
     return min(back, key=lambda o: nearest_on_polyline(found.pose.x, found.pose.y, o.centreline).distance).id if back else None
 
 
+def _turn_for(r: Reading, scene: Scene, thing: AssetInstance, deg: re.Match[str] | None, facing: str | None,
+              notes: Notes) -> float:
+    """How far to turn `thing` (degrees, anticlockwise) for what the words say: an angle, to face a
+    point or a compass way (from where it points now), round, or a small or default turn."""
+    faced = _faced_point(r, scene, thing) if facing is None else None
+    if deg:  # "45 degrees clockwise", "30 to the right": turn_deg counts anticlockwise
+        right = r.has(("right", "clockwise")) and not r.has(("anticlockwise", "counterclockwise", "counter-clockwise"))
+        return -float(deg.group(1)) if right else float(deg.group(1))
+    if faced is not None:  # "so it faces the road": towards its nearest point
+        heading = math.degrees(math.atan2(faced[1] - thing.pose.y, faced[0] - thing.pose.x))
+        return round((heading - math.degrees(thing.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
+    if facing is not None:  # "turned to face north": the turn from where it points now to that compass heading
+        east, north = md.COMPASS_VECTORS[facing]
+        return round((math.degrees(math.atan2(north, east) - thing.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
+    if r.has(("around", "round", "wrong way", "other way", "flip", "about")):  # "spin the bench round"
+        return 180.0
+    notes.guess("how far to turn")
+    if r.has(_SMALL):  # "turn the suv a little to the left": a small turn, that way
+        return -SMALL_TURN_DEG if r.has(("right", "clockwise")) and not r.has(("anticlockwise", "counterclockwise")) else SMALL_TURN_DEG
+    return DEFAULT_SPIN_DEG
+
+
 # Words for a small step ("a bit", "a tiny bit", "slightly").
 _SMALL = ("a bit", "slightly", "a little", "tiny bit", "little bit", "wee bit")
 
@@ -641,29 +674,15 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         and (deg or not r.has(("drive", "driving", "walk", "circle", "circles")))
         and (deg or r.has(("turn", "turned", "rotate", "rotated", "spin", "flip", "wrong way", "other way", "faces", "face")))
     ):
-        if deg:  # "45 degrees clockwise", "30 to the right": turn_deg counts anticlockwise
-            right = r.has(("right", "clockwise")) and not r.has(("anticlockwise", "counterclockwise", "counter-clockwise"))
-            angle = -float(deg.group(1)) if right else float(deg.group(1))
-        elif faced is not None and found is not None:  # "so it faces the road": towards its nearest point
-            heading = math.degrees(math.atan2(faced[1] - found.pose.y, faced[0] - found.pose.x))
-            angle = round((heading - math.degrees(found.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
-            if abs(angle) < 1.0:
-                raise ph_error(f"{asset} already faces that way")
-        elif facing is not None and found is not None:
-            # "turned to face north": the turn from where it points now to that compass heading
-            east, north = md.COMPASS_VECTORS[facing]
-            angle = round((math.degrees(math.atan2(north, east) - found.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
-            if abs(angle) < 1.0:
-                raise ph_error(f"{asset} already faces {facing}")
-        elif r.has(("around", "round", "wrong way", "other way", "flip", "about")):  # "spin the bench round"
-            angle = 180.0
-        elif r.has(_SMALL):  # "turn the suv a little to the left": a small turn, that way
-            notes.guess("how far to turn")
-            angle = -SMALL_TURN_DEG if r.has(("right", "clockwise")) and not r.has(("anticlockwise", "counterclockwise")) else SMALL_TURN_DEG
-        else:
-            notes.guess("how far to turn")
-            angle = DEFAULT_SPIN_DEG
-        return [ToolCall(tool="move_asset", args={"asset": asset, "turn_deg": angle})]
+        # each thing named is turned: "turn the cars in lot B to face south" is all three, each its own way round
+        things = [a for i in ids if (a := scene.asset(i)) is not None] or ([found] if found is not None else [])
+        turns = [(thing.id, _turn_for(r, scene, thing, deg, facing, notes)) for thing in things] if things else [(asset, None)]
+        wanted = [(i, angle) for i, angle in turns if angle is None or abs(angle) >= 1.0]
+        if not wanted:
+            way = facing or "that way"  # "suv_1 already faces north"
+            raise ph_error(f"{', '.join(i for i, _ in turns)} already face{'s' if len(turns) == 1 else ''} {way}")
+        return [ToolCall(tool="move_asset", args={"asset": i, "turn_deg": angle if angle is not None else DEFAULT_SPIN_DEG})
+                for i, angle in wanted]
     kind = behaviour_kind(r, catalog()[found.category] if found is not None else None)
     if kind is None and found is not None and catalog()[found.category].drives and md.SET_GOING.search(r.low):
         kind = "drive_lane"  # "get the suv moving": off it drives
@@ -687,8 +706,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         notes.guess("how far to move")  # "the SUV should pull forward a few metres"
         shift = DEFAULT_STEP_M
     moved: dict[str, Any] = {"asset": asset} if len(ids) == 1 else {"assets": ids}
-    if shift is None and (away := _TOWARD.search(r.low)) is not None and away.group("away") and md.compass_direction(r.masked) is None:
-        notes.guess("how far to move it")  # "push the bin further from the bus stop": a step away, never onto it
+    if shift is None and (away := _TOWARD.search(r.low)) is not None and (away.group("away") or _ROAD_AFTER.match(r.low, away.end())) \
+            and md.compass_direction(r.masked) is None:
+        notes.guess("how far to move it")  # "push the bin further from the bus stop", "closer to the road": a step, never onto it
         shift = DEFAULT_STEP_M
     toward = _toward(r, scene, ids, shift)
     if toward is not None:  # "4 m toward Main Street": straight at it, from where they stand
@@ -779,7 +799,7 @@ def walk_said(r: Reading, scene: Scene, exclude: list[str]) -> Walk | None:
 
 
 # A vehicle heading for a place starts this far before it along a lane that leads there.
-DRIVE_LEAD_M = 40.0
+DRIVE_LEAD_M = 25.0
 # ...a lane that passes within this of the place.
 DRIVE_REACH_M = 12.0
 

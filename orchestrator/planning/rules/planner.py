@@ -73,7 +73,7 @@ from drivetwin.orchestrator.planning.rules.repeat import (
     repeats,
     retargeted,
 )
-from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces
+from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces, trades_places
 from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
@@ -713,6 +713,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return looked_up
     if (swap := replaces(r)) is not None:  # "swap the bench for a bin": it goes, a bin stands there
         return replace_things(swap, scene, memory, notes)
+    if (traded := trades_places(r, scene, memory, notes)) is not None:  # "swap the bench and the bin": each where the other stood
+        return traded
     paced = new_pace(r, scene, notes, memory)
     if paced is not None:  # "set the ego's speed to 8 m/s", "could the truck go a bit slower?"
         return paced

@@ -4,6 +4,7 @@ cannot go, so replacing it is refused with what can be done instead."""
 
 from __future__ import annotations
 
+import math
 import re
 
 from drivetwin.orchestrator.memory import Memory
@@ -62,4 +63,40 @@ def replace_things(said: re.Match[str], scene: Scene, memory: Memory, notes: Not
     return calls
 
 
-__all__ = ["replace_things", "replaces", "swap_said"]
+# Two things trading places: "swap the bench and the bin", "the bench and the bin should switch places",
+# "exchange the positions of car 1 and car 2" (not "switch the lights on", "swap lanes", "swap X for Y").
+_TRADE = re.compile(r"\b(?:swap|switch|exchange|trade)(?:s|ped|ping|ed|ing)?\b(?!\s+(?:on|off|lanes?|to)\b)")
+_TRADE_PLACES = re.compile(r"\b(?:swap|switch|exchange|trade)\w*\s+(?:the\s+)?(?:places|positions|spots|round|around|over)\b")
+
+
+def trades_places(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
+    """Two things named trading places, as one edit: the second is set aside, the first put where
+    it stood, then the second where the first stood, each keeping its heading; None when the
+    clause says no such thing."""
+    said = _TRADE.search(r.low)
+    if said is None or " and " not in r.low or re.search(r"\b(?:for|with)\b", r.low[said.end() :]):
+        return None
+    if not _TRADE_PLACES.search(r.low) and not re.match(r"\s+(?:the\s+)?\S+.*\band\b", r.low[said.end() :]):
+        return None
+    things = list(r.ids) + (["ego"] if r.ego else [])
+    for mention in r.mentions:
+        present = [a.id for a in scene.assets if a.category == mention.category and a.id not in things]
+        if len(present) != 1:
+            raise PlanningError(f"which {mention.category.replace('_', ' ')} should trade places? there are {len(present)}")
+        things.append(present[0])
+    if len(things) != 2:
+        return None
+    first, second = (scene.asset(i) for i in things)
+    if first is None or second is None:
+        return None
+    notes.subject = things
+    return [
+        ToolCall(tool="place_asset", args={"asset": second.id, "location": {"relation": "scene_centre"}}),  # out of the way
+        ToolCall(tool="place_asset", args={"asset": first.id, "yaw_deg": round(math.degrees(first.pose.yaw), 1), "location": {
+            "relation": "absolute", "x": round(second.pose.x, 2), "y": round(second.pose.y, 2)}}),
+        ToolCall(tool="place_asset", args={"asset": second.id, "yaw_deg": round(math.degrees(second.pose.yaw), 1), "location": {
+            "relation": "absolute", "x": round(first.pose.x, 2), "y": round(first.pose.y, 2)}}),
+    ]
+
+
+__all__ = ["replace_things", "replaces", "swap_said", "trades_places"]
