@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import difflib
 import math
+import re
 
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
@@ -205,10 +206,12 @@ class FindLandmarks(Tool[FindLandmarksArgs]):
         marks = scene.landmarks
         if args.query:
             exact = scene.landmark(args.query)
-            if exact is not None:
+            q = args.query.lower()
+            # a word every one of a kind is called by ("crosswalk", "gate") is all of them, though one has it as its alias
+            kind = [lm for lm in marks if any(re.search(rf"\b{re.escape(q)}\b", n.lower()) for n in lm.names())]
+            if exact is not None and (len(kind) < 2 or " " in q.strip()):
                 marks = [exact]
             else:
-                q = args.query.lower()
                 marks = [lm for lm in marks if any(q in n.lower() or n.lower() in q for n in lm.names())]
                 if not marks:
                     names = [n for lm in scene.landmarks for n in lm.names()]

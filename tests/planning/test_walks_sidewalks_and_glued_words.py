@@ -310,3 +310,30 @@ def test_every_thing_a_turn_names_is_turned_each_its_own_way_round(session, camp
     for car in ("passenger_car_1", "passenger_car_2", "suv_1"):
         asset = session.scene.asset(car)
         assert asset is not None and math.sin(asset.pose.yaw) == pytest.approx(-1.0, abs=0.01)
+
+
+# --- questions about kinds of place and lanes --------------------------------------------------
+
+
+def test_a_kind_of_place_near_another_is_looked_up_among_that_kind(session, campus):
+    for asked in ("is there a crossing near the library?", "which crosswalk is closest to the library?",
+                  "where should pedestrians cross near the library?"):
+        report = session.submit(asked)
+        assert report.ok and report.answer is not None, (asked, report.error)
+        assert report.answer.startswith("nearest landmark to Library entrance: west crosswalk"), (asked, report.answer)
+    report = session.submit("where are the crosswalks?")
+    assert report.answer is not None and "west crosswalk" in report.answer and "north crosswalk" in report.answer
+    assert session.scene == campus
+
+
+def test_anything_occupying_a_lane_is_a_search_of_what_stands_on_lanes(session, campus):
+    report = session.submit("is anything occupying a travel lane at the moment?")
+    assert report.ok and report.plan is not None
+    assert [(c.tool, c.args.get("on_lane")) for c in report.plan.calls] == [("find_assets", True)]
+
+
+def test_the_sun_coming_up_or_going_down_is_sunrise_or_sunset(session, campus):
+    assert session.submit("i want to test the camera when the sun is just coming up").ok
+    assert session.scene.environment.time_of_day == "sunrise" or session.scene.environment.time_of_day < "08:00"
+    assert session.submit("now the sun is just going down").ok
+    assert session.scene.environment.time_of_day > "17:00"

@@ -94,7 +94,10 @@ def weather(r: Reading) -> ToolCall | None:
 
 
 # The sun low in the sky, going down: sunset ("the sun sinks low over the campus").
-_SUN_SINKING = re.compile(r"\bsun\s+(?:is\s+)?(?:sinks?|sinking|dips?|dipping|hangs? low|hanging low|low in the sky)\b")
+_SUN_SINKING = re.compile(r"\bsun\s+(?:is\s+)?(?:just\s+|only\s+)?(?:sinks?|sinking|dips?|dipping|hangs? low|hanging low|low in the sky"
+                          r"|going down|setting)\b")  # "once the sun goes down" is night (lexicon)
+# The sun just up: "when the sun is just coming up", "as the sun rises".
+_SUN_RISING = re.compile(r"\bsun\s+(?:is\s+)?(?:just\s+|only\s+)?(?:coming up|comes up|came up|rising|rises|rose)\b")
 # The time just before dark, said by what comes after it.
 _BEFORE_DARK = re.compile(r"\b(?:just |right )?before (?:the )?(?:sun (?:goes|has gone|is going) down|sun sets|sunset|sundown|dark|nightfall)\b")
 
@@ -109,6 +112,8 @@ def time_of_day(r: Reading) -> ToolCall | None:
     rising = r.has(("sunrise", "dawn", "daybreak", "morning", "sun comes up", "sun is up", "sun rises"))  # a low sun in the morning
     if _BEFORE_DARK.search(r.low) or (_SUN_SINKING.search(r.low) and not rising):  # "the last light before the sun goes down": not yet night
         return ToolCall(tool="set_time_of_day", args={"time": "sunset"})
+    if _SUN_RISING.search(r.low):
+        return ToolCall(tool="set_time_of_day", args={"time": "sunrise"})
     for words, preset in lx.TIME_PRESETS:
         if r.has(words):
             return ToolCall(tool="set_time_of_day", args={"time": preset})

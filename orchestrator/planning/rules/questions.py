@@ -23,7 +23,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.environment import environment
 from drivetwin.orchestrator.planning.rules.places import Notes, side_lane
-from drivetwin.orchestrator.planning.rules.reading import Reading, read
+from drivetwin.orchestrator.planning.rules.reading import Reading, place_kind_said, read
 from drivetwin.orchestrator.planning.rules.spelling import is_known, vocabulary
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
@@ -41,7 +41,7 @@ _NEXT_PART = re.compile(r",?\s+(?:and|also|plus)\s+(?=(?:which|what|where|how|is
 # not a phrasing of a particular request.
 _NEAREST = re.compile(r"\b(?:nearest|closest|most near|most close|nearer|closer|how far)\b")
 _ON_LANE = re.compile(
-    r"\b(?:block\w*|obstruct\w*|in (?:the|its|our|their|my|his|her) way"
+    r"\b(?:block\w*|obstruct\w*|occupy\w*|in (?:the|its|our|their|my|his|her) way"
     r"|(?:on|in|across|along) (?:the |a |any |our )?(?:[a-z]+ )?(?:lanes?|roads?|streets?|carriageway))\b"
 )
 # "of" after a word for an amount or a list ("the number of benches") names what is counted.
@@ -69,7 +69,7 @@ _BUSY = re.compile(r"\b(?:busy|busier|full|crowded|packed|empty|quiet|occupied|d
 # What a question can ask for by kind rather than by name.
 _LANE_KIND = re.compile(r"\blanes?\b")
 # A lane named as where something is: the object of "on", "in", "along" ("in the northbound lane").
-_LANE_AS_PLACE = re.compile(r"\b(?:on|in|along|across|into|onto|block\w*)\s+(?:(?:the|a|any|our|its|either)\s+)?(?:\S+\s+)?$")
+_LANE_AS_PLACE = re.compile(r"\b(?:on|in|along|across|into|onto|block\w*|occupy\w*|obstruct\w*)\s+(?:(?:the|a|any|our|its|either)\s+)?(?:\S+\s+)?$")
 _ROAD_KIND = re.compile(r"\b(?:roads?|streets?)\b")
 _PLACE_KIND = re.compile(r"\b(?:landmarks?|places?|buildings?|entrances?|locations?|spots?)\b")
 _ANY_KIND = re.compile(rf"\b(?:{'|'.join(lx.GENERIC_THINGS)}|what|what's|whats|who)\b")
@@ -179,6 +179,10 @@ def of_group(call: ToolCall, r: Reading) -> ToolCall:
     return call.model_copy(update={"args": {**call.args, "category": groups[0] + "s"}})
 
 
+# Where to cross a road on foot: "where can people cross the road?", "where should I cross?".
+_WHERE_TO_CROSS = re.compile(r"\bwhere\s+(?:can|could|should|do|does|would|may|might|are|is)\s+(?:[a-z']+\s+){1,3}?cross\b")
+
+
 def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None) -> Part | None:
     low = r.low
     asked_about = _ASKED_ABOUT.search(r.masked)
@@ -191,6 +195,10 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
     if _names_nothing(r) and ((_ASKS_HOW_IT_IS.match(low) and (_SETTING.search(low) or environment(r, scene.environment)))
                               or _SETTING_ALONE.match(low)):
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "is it raining?", "what's the weather like"
+    if _WHERE_TO_CROSS.search(low) and {m.category for m in r.mentions} <= {"pedestrian"}:
+        # "where can people cross the road?": the marked crossings, nearest the place said first
+        near = {"nearest_to": r.landmark} if r.landmark else {}
+        return Part(ToolCall(tool="find_landmarks", args={"query": "crossing", **near}), None)
     if r.mentions and {m.category for m in r.mentions} <= _SWITCHED and _ON_OFF.search(low):
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "street lamps - on or off right now?"
     named = _named(r, scene)
@@ -240,8 +248,10 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
     if anchor is None and r.landmark and (r.mentions or _ANY_KIND.search(r.masked) or busy):
         anchor = Anchor("landmark", r.landmark)  # "what signals control the crossroads", "how busy is lot A"
     if anchor is not None and not _WHERE.search(low):
-        if _PLACE_KIND.search(r.masked) and not r.mentions:  # "which buildings are near the fountain"
-            return Part(ToolCall(tool="find_landmarks", args={"nearest_to": anchor.name}), anchor)
+        kind = place_kind_said(r, scene)
+        if (_PLACE_KIND.search(r.masked) or kind) and not r.mentions:  # "which buildings are near the fountain"
+            # "is there a crossing near the library": the crossings, nearest first
+            return Part(ToolCall(tool="find_landmarks", args={"nearest_to": anchor.name, **({"query": kind} if kind else {})}), anchor)
         if r.mentions or _ANY_KIND.search(r.masked) or anchor.kind != "landmark" or busy:
             return _around(r, scene, anchor)
     return _what_or_where(r, scene, named, back, notes.subject)
@@ -359,7 +369,8 @@ def _nearest(r: Reading, scene: Scene, anchor: Anchor) -> Part:
     """What is nearest the anchor, of the kind asked for: a landmark, a lane, assets."""
     kind_at = {m.start: m for m in r.mentions}
     lane = _LANE_KIND.search(r.masked)
-    place = _PLACE_KIND.search(r.masked) or (re.search(re.escape(r.landmark_word), r.masked) if r.landmark_word else None)
+    kind_word = place_kind_said(r, scene)
+    place = _PLACE_KIND.search(r.masked) or (re.search(re.escape(kind_word), r.masked) if kind_word else None)
     subject_landmark = r.landmark if r.landmark and r.landmark != anchor.name else None
     firsts = [(m.start, "category") for m in kind_at.values() if _only_instance(r, scene, m) != anchor.name]
     firsts += [(lane.start(), "lane")] if lane else []
@@ -370,8 +381,8 @@ def _nearest(r: Reading, scene: Scene, anchor: Anchor) -> Part:
         return Part(ToolCall(tool="find_lanes", args={"near": anchor.name}), anchor)
     if kind == "landmark":
         args: dict[str, Any] = {"nearest_to": anchor.name}
-        if subject_landmark or r.landmark_word:  # "how far is the bus stop from us", "which gate is nearest"
-            args["query"] = subject_landmark or r.landmark_word
+        if subject_landmark or kind_word:  # "how far is the bus stop from us", "which gate is nearest"
+            args["query"] = subject_landmark or kind_word
         return Part(ToolCall(tool="find_landmarks", args=args), anchor)
     args = {"nearest_to": anchor.name}
     category = next((m.category for m in r.mentions if _only_instance(r, scene, m) != anchor.name), None)

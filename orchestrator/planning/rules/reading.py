@@ -90,8 +90,9 @@ def _place_by_compass(scene: Scene, low: str) -> tuple[str, int, int] | None:
 def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
     """The landmark named in normalised text (articles ignored; a name with a letter or number
     that labels it wins, then the longest name), and its span."""
-    best: tuple[tuple[bool, int], str, int, int] | None = None
+    best: tuple[tuple[bool, bool, int], str, int, int] | None = None
     low = re.sub(r"(?<=[a-z0-9])'s\b", "  ", low)  # "lot B's entrance" is the lot B entrance
+    kinds = _kind_words(scene)
     bare = _ARTICLES.sub("", low)
     for landmark in scene.landmarks:
         for name in landmark.names():
@@ -111,15 +112,16 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
                 continue  # "a pedestrian crossing the road": a walker crossing, not the crossing
             if _thing_named_with(m.group(0), m.string[m.end() :]):
                 continue  # "the pedestrian crossing sign": a thing whose name holds a place's
-            # "by lot a, the car park there": the lot's letter says which car park (its letter, not an article)
-            rank = (any(_is_label(w) for w in ph.tokens(ph.normalise(name))[1:]), len(key))
+            # "by lot a, the car park there": the lot's letter says which car park (its letter, not an article);
+            # a word for a kind of place ("crosswalk", an alias of one of two) yields to a place named outright
+            rank = (key not in kinds, any(_is_label(w) for w in ph.tokens(ph.normalise(name))[1:]), len(key))
             if best is None or rank > best[0]:
                 # Map the span back to `low` by finding the same words there.
                 words = r"\s+(?:(?:the|a|an)\s+)?".join(re.escape(w) for w in key.split())
                 span = re.search(rf"(?<![a-z0-9])(?:{words}|{spaced})(?![a-z0-9])", low)
                 start, end = (span.start(), span.end()) if span else (0, 0)
                 best = (rank, landmark.name, start, end)
-    if best is not None and not best[0][0] and (labelled := _labelled(scene, low, best[3])) is not None:
+    if best is not None and not best[0][1] and (labelled := _labelled(scene, low, best[3])) is not None:
         return labelled[0], best[2], labelled[1]  # "car park A" where only lot B is called the car park
     by_compass = _place_by_compass(scene, low)
     if by_compass is not None and (best is None or by_compass[1] < best[2] < by_compass[2]):
@@ -135,6 +137,15 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
         if m and word not in world:
             return name, m.start(), m.end()
     return None
+
+
+def _kind_words(scene: Scene) -> set[str]:
+    """Words that end the names of two places or more ("crosswalk", "gate"): a kind of place."""
+    owners: dict[str, set[str]] = {}
+    for landmark in scene.landmarks:
+        for name in landmark.names():
+            owners.setdefault(_head(ph.tokens(ph.normalise(name))), set()).add(landmark.name)
+    return {word for word, marks in owners.items() if len(marks) > 1}
 
 
 def _is_label(word: str) -> bool:
@@ -187,6 +198,12 @@ def _place_head_word(scene: Scene, low: str, mentions: list[ph.Mention]) -> str 
                 m.start <= said.start() < m.end for m in mentions):
             return ph.singular(word)
     return None
+
+
+def place_kind_said(r: Reading, scene: Scene) -> str | None:
+    """A kind of place the clause names besides the place it names ("is there a crossing near the
+    library": crossing), or None."""
+    return r.landmark_word or _place_head_word(scene, r.masked, r.mentions)
 
 
 def _head(words: list[str]) -> str:
@@ -532,4 +549,5 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
     return not present  # a bare noun: the one there is, if there is one
 
 
-__all__ = ["FIRST_PERSON_EGO", "Reading", "counted_kinds", "find_count", "find_lane", "find_place", "is_new", "read", "without_order"]
+__all__ = ["FIRST_PERSON_EGO", "Reading", "counted_kinds", "find_count", "find_lane", "find_place", "is_new", "place_kind_said", "read",
+           "without_order"]
