@@ -337,3 +337,37 @@ def test_the_sun_coming_up_or_going_down_is_sunrise_or_sunset(session, campus):
     assert session.scene.environment.time_of_day == "sunrise" or session.scene.environment.time_of_day < "08:00"
     assert session.submit("now the sun is just going down").ok
     assert session.scene.environment.time_of_day > "17:00"
+
+
+def test_where_another_thing_is_or_was(session, campus):
+    assert session.submit("put the bus where the suv is now").ok
+    (bus,) = added(session, campus, "bus")
+    suv = campus.asset("suv_1")
+    assert suv is not None and math.dist((bus.pose.x, bus.pose.y), (suv.pose.x, suv.pose.y)) < 8
+    before = session.scene
+    assert session.submit("remove the bench and put a tree where the bench was").ok
+    (tree,) = added(session, before, "tree")
+    assert math.dist((tree.pose.x, tree.pose.y), (-26.0, -6.9)) < 0.5
+
+
+def test_a_vehicle_across_the_road_parks_in_the_far_lane_and_a_bench_on_the_far_sidewalk(session, campus):
+    assert session.submit("there should be a truck parked on the far side of the road from the bus stop").ok
+    (truck,) = added(session, campus, "truck")
+    assert 0 < truck.pose.y < 3.5  # the far (westbound) lane, not the far sidewalk
+    before = session.scene
+    assert session.submit("put a bench across the road from the bus stop").ok
+    (bench,) = added(session, before, "bench")
+    assert bench.pose.y > 3.5
+
+
+def test_who_asks_about_people(session, campus):
+    assert session.submit("add two pedestrians by the fountain").ok
+    report = session.submit("who is standing near the fountain?")
+    assert report.answer is not None and "pedestrian" in report.answer and "tree" not in report.answer
+
+
+def test_leaving_bikes_somewhere_is_parking_them_not_riding_off(session, campus):
+    report = session.submit("I need a place for cyclists to leave their bikes near the union")
+    assert report.ok, report.error
+    bikes = added(session, campus, "bicycle")
+    assert bikes and all(b.behaviour.kind == "parked" for b in bikes)

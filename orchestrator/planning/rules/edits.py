@@ -431,7 +431,8 @@ _GOING_ACROSS = re.compile(r"\b(?:walk|run|hurr|dash|dart|jog|head|go|stroll|ste
 
 
 # What "leave" leaves somewhere ("leave it at the union", "leave a car in lot A"): a place to stay.
-_LEFT_AT = re.compile(r"\s+(?:it|them|that|this|those|these|(?:the|that|this|a|an|one|another|some|two|three) [a-z_]+(?: [a-z_]+)?)\s+"
+_LEFT_AT = re.compile(r"\s+(?:it|them|that|this|those|these|(?:the|that|this|a|an|one|another|some|two|three|their|his|her|my|our|your)"
+                      r" [a-z_]+(?: [a-z_]+)?)\s+"
                       r"(?:at|by|near|in|on|outside|next|beside|behind|there|here|§)")
 
 

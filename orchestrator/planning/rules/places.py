@@ -21,7 +21,7 @@ from drivetwin.orchestrator.planning.rules.reading import SIDE_OF, Reading, find
 from drivetwin.tools.arrange import row_start
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import Location, resolve_anchor
-from drivetwin.worlds.catalog import catalog
+from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, polyline_length
 from pydantic import ValidationError
@@ -227,9 +227,10 @@ ACROSS_FROM = re.compile(r"\b(?:(?:right |directly |just )?(?:across|over) (?:th
 FAR_SIDE_BEYOND_M = 2.0
 
 
-def across_from(scene: Scene, low: str) -> dict[str, Any] | None:
+def across_from(scene: Scene, low: str, on_road: bool = False) -> dict[str, Any] | None:
     """The point across the nearest road from the place or thing the words name: as far past the
-    road's middle as it stands before it, at most to the far sidewalk; None when they say no such thing."""
+    road's middle as it stands before it, at most to the far sidewalk (for what stands `on_road`,
+    the far lane's middle); None when they say no such thing."""
     said = ACROSS_FROM.search(low)
     point = point_named(scene, f" {said.group('what')} ") if said else None
     if point is None or not scene.roads.lanes:
@@ -241,7 +242,8 @@ def across_from(scene: Scene, low: str) -> dict[str, Any] | None:
     away = math.dist(point, (mx, my))
     if away < 0.5:
         return None  # on the road's middle: no side to be across from
-    far = min(away, sum(ln.width for ln in road) / 2 + FAR_SIDE_BEYOND_M)
+    half = sum(ln.width for ln in road) / 2
+    far = half - min(ln.width for ln in road) / 2 if on_road else min(away, half + FAR_SIDE_BEYOND_M)
     ux, uy = (mx - point[0]) / away, (my - point[1]) / away
     return {"relation": "absolute", "x": round(mx + ux * far, 2), "y": round(my + uy * far, 2)}
 
@@ -416,12 +418,17 @@ _SIDEWALK_OF_SIDE = re.compile(rf"\b(north|south|east|west)(?:ern)?(?:[- ]side)?
                                rf"|\b{_SIDEWALK_WORD}\s+on\s+(?:the\s+)?(north|south|east|west)(?:ern)?\s+side\b")
 
 
+def _placed_kind(r: Reading, scene: Scene, exclude: list[str]) -> Category | None:
+    """The kind of what the clause puts somewhere: the first thing named, else the thing moved."""
+    moved = scene.asset(exclude[0]) if exclude else None
+    name = r.mentions[0].category if r.mentions else moved.category if moved is not None else None
+    return catalog().get(name) if name is not None else None
+
+
 def _off_road(r: Reading, scene: Scene, exclude: list[str]) -> bool:
     """Whether what the clause puts somewhere stands off the road: a walker, a bench, a sign (not a
     cone, a car or a bike)."""
-    moved = scene.asset(exclude[0]) if exclude else None
-    name = r.mentions[0].category if r.mentions else moved.category if moved is not None else None
-    kind = catalog().get(name) if name is not None else None
+    kind = _placed_kind(r, scene, exclude)
     return kind is not None and kind.placement != "drivable" and "vehicle" not in kind.tags
 
 
@@ -477,9 +484,13 @@ def location(
     halfway = between(scene, r.low)
     if halfway is not None:  # "a tree between the library and the bus stop"
         return halfway
-    facing = across_from(scene, r.low)
+    kind = _placed_kind(r, scene, exclude)
+    facing = across_from(scene, r.low, on_road=kind is not None and kind.placement == "drivable")
     if facing is not None:  # "a car parked across from the JTEKT entrance": the road's far side
         return facing
+    other = where_thing(r, scene, exclude)
+    if other is not None:  # "put the bus where the suv is now": beside it
+        return other
     was = _WHERE_IT_WAS.search(r.low)
     gone = next((scene.asset(i) for i in notes.subject if scene.asset(i) is not None), None) if was else None
     if gone is not None:  # "remove the hydrant, then add a bench where it was": the spot it stood on
@@ -586,6 +597,26 @@ _ONE_LANE = re.compile(r"\b(?<!both )(?<!all )(?<!two )lane\b")
 
 # Where a thing just named stood: "where it was", "where they used to be", "in its old spot".
 _WHERE_IT_WAS = re.compile(r"\bwhere (?:it|they|that one|those) (?:was|were|stood|used to (?:be|stand))\b|\bin (?:its|their) old (?:spot|place)\b")
+# Where another thing is: "put the bus where the suv is now" (beside it), "where the bench was" (its spot).
+_WHERE_THING = re.compile(r"\bwhere\s+(?:the|that|this|our)\s+(?P<thing>[a-z_0-9 ]+?)\s+"
+                          r"(?P<verb>is|are|stands|sits|is parked|was|were|stood|used to (?:be|stand))\b")
+
+
+def where_thing(r: Reading, scene: Scene, exclude: list[str]) -> dict[str, Any] | None:
+    """The Location of "where the suv is" (beside it) or "where the bench was" (its spot), when one
+    thing there is meant; None otherwise."""
+    said = _WHERE_THING.search(r.low)
+    if said is None:
+        return None
+    ids = [i for i in r.ids if i not in exclude and said.start("thing") <= r.low.find(i.replace("_", " ")) < said.end("thing")]
+    kinds = [m.category for m in r.mentions if said.start("thing") <= m.start < said.end("thing")]
+    present = ids or ([a.id for a in scene.assets if a.category == kinds[0] and a.id not in exclude] if kinds else [])
+    thing = scene.asset(present[0]) if len(present) == 1 else None
+    if thing is None:
+        return None
+    if said.group("verb") in ("was", "were", "stood") or said.group("verb").startswith("used"):
+        return {"relation": "absolute", "x": round(thing.pose.x, 2), "y": round(thing.pose.y, 2)}
+    return {"relation": "next_to", "target": thing.id}
 
 
 # The margin a lane's middle keeps from an area it crosses (the junction).
