@@ -488,9 +488,9 @@ def location(
     facing = across_from(scene, r.low, on_road=kind is not None and kind.placement == "drivable")
     if facing is not None:  # "a car parked across from the JTEKT entrance": the road's far side
         return facing
-    other = where_thing(r, scene, exclude)
-    if other is not None:  # "put the bus where the suv is now": beside it
-        return other
+    by_thing = where_thing(r, scene, exclude)
+    if by_thing is not None:  # "put the bus where the suv is now": beside it
+        return by_thing
     was = _WHERE_IT_WAS.search(r.low)
     gone = next((scene.asset(i) for i in notes.subject if scene.asset(i) is not None), None) if was else None
     if gone is not None:  # "remove the hydrant, then add a bench where it was": the spot it stood on
