@@ -72,6 +72,7 @@ from drivetwin.orchestrator.planning.intent import (
     ADD_WORDS,
     BARE_STATE,
     FEWER_WORDS,
+    HOW_THINGS_GO,
     KEEP_SOME,
     REMOVE_WORDS,
     asks,
@@ -223,6 +224,11 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.polarity == "remove" and not effect.removed and any(
             c.tool == "set_lighting" and c.args.get("street_lights") == "on" for c in effect.calls):
         out.append("you asked for less, but the plan switches the street lights on")  # "fewer lights over there"
+    going = HOW_THINGS_GO.match(request.low.strip())
+    said_of = {m.category for m in ph.find_categories(going.group(0))} if going is not None else set()
+    if going is not None and any(a.category in said_of for a in effect.added):
+        # "kids can't see the cars": how it is for them, never more of them
+        out.append("you said how things are for " + ", ".join(sorted(said_of)) + ", but the plan adds more of them")
     if BARE_STATE.search(request.low) and effect.removed and not request.question:
         # "the bus stop feels empty": what is missing is wanted, never the rest taken away
         out.append("you said it is empty, but the plan takes away " + _names(effect.removed))

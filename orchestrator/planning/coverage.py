@@ -18,7 +18,7 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, FORBIDDEN, HABITUAL, KEEP_SOME, asks
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, FORBIDDEN, HABITUAL, HOW_THINGS_GO, KEEP_SOME, asks
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -217,6 +217,9 @@ def _in_background(masked: str, at: int) -> bool:
     """Whether a word at `at` is said inside a clause of time, place or reason; "so" that leads to
     what should happen ("..., so the seat and the bin should go") leads to the request itself."""
     halfway = None if asks(masked) else BETWEEN.search(masked)  # "a bin between the bench and the sign": where it goes, not what
+    sentence = masked[max(masked.rfind(".", 0, at), masked.rfind("?", 0, at), masked.rfind("!", 0, at)) + 1 :]
+    if HOW_THINGS_GO.match(sentence.strip()):
+        return True  # "people there must have nowhere to throw their wrappers": who the request is for
     return any(not (w.group(1) == "so" and _OUGHT.match(masked, w.end()))
                for w in _BACKGROUND.finditer(masked[:at])) or (halfway is not None and halfway.start("a") <= at < halfway.end("b"))
 

@@ -11,6 +11,12 @@ import re
 
 from drivetwin.tools.appearance import COLOURS
 
+# How things go, said of people or many things: "people there must have nowhere to ...", "cars keep
+# getting hidden behind ...", "the kids can't see them": a state of affairs, not a request.
+HOW_THINGS_GO = re.compile(
+    r"(?:people|drivers|kids|children|students|pedestrians|visitors|folks|passengers|everyone|nobody|no one)\b[^,;.]*?"
+    r"\b(?:must have|keep|keeps|can't|cannot|couldn't|don't|doesn't|never|always|have nowhere|has nowhere|have no|struggle)\b"
+    r"|\b[a-z]+s\s+(?:keep|kept)\s+(?:getting|being|on)\b")
 # A place said to be empty as it is ("feels empty", "looks a bit bare"): a lack, not "empty it".
 BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b")
 REMOVE_WORDS = re.compile(
@@ -65,7 +71,8 @@ _QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
-_INFO = re.compile(r"(?<!s )\b(tell me|show me|let me know|tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|"
+_INFO = re.compile(r"(?<!s )\b(tell me|show me|let me know|inform (?:me|us)|advise (?:me|us)|"
+                   r"tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|at what distance|how long is|"
                    r"(?:inventory|rundown|overview|summary|tally) of|how many|how far|how much|number of|count of|list of|"
                    r"distance (?:between|from)|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
@@ -168,7 +175,8 @@ _LAYOUT_HEADING = re.compile(r"^\s*(ring|circle|line|row|grid)\s*:", re.IGNORECA
 # bin" is left alone: it asks for a swap, the bin included.
 _DETERMINER = r"(?:the|that|this|those|these|a|an|any|my|our|its|their|his|her|ego\b|[a-z_]+_\d+)"  # or an id
 _CONTRAST = re.compile(
-    rf"(?:,\s*(?:but\s+|and\s+)?|\s+but\s+)(?:not|never)\s+(?=(?:{_DETERMINER}|in|at|on|by|near)\b"
+    rf"(?:,\s*(?:but\s+|and\s+)?|\s+but\s+)(?:not|never)\s+(?=(?:(?:way|right|all the way|over|out|down|up|somewhere)\s+){{0,2}}"
+    rf"(?:{_DETERMINER}|in|at|on|by|near|next|beside|outside)\b"
     r"|(?:\d+(?:\.\d+)?|a few|several|so|that|too)\s*(?:m|metres?|meters?|feet|ft|far|away)\b)"
     rf"|\s+(?:except(?:\s+for)?|other\s+than|apart\s+from|excluding|save\s+for)\s+(?={_DETERMINER})"
     # "remove the cars from lot B, but keep the SUV": what is kept is excepted
@@ -376,6 +384,7 @@ __all__ = [
     "ADD_WORDS",
     "BARE_STATE",
     "FEWER_WORDS",
+    "HOW_THINGS_GO",
     "KEEP_SOME",
     "REMOVE_WORDS",
     "asks",

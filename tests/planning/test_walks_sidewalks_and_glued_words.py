@@ -371,3 +371,41 @@ def test_leaving_bikes_somewhere_is_parking_them_not_riding_off(session, campus)
     assert report.ok, report.error
     bikes = added(session, campus, "bicycle")
     assert bikes and all(b.behaviour.kind == "parked" for b in bikes)
+
+
+# --- statements, polite requests and places not meant --------------------------------------------
+
+
+def test_a_polite_request_asked_as_a_question_is_done_whole(session, campus):
+    report = session.submit("Could you put the fire hydrant beside the stop sign, please, and the rubbish bin beside the bench? Thank you.")
+    assert report.ok, report.error
+    hydrant, bin_ = session.scene.asset("fire_hydrant_1"), session.scene.asset("trash_bin_1")
+    assert hydrant is not None and math.dist((hydrant.pose.x, hydrant.pose.y), (-13.5, -5.5)) < 4
+    assert bin_ is not None and math.dist((bin_.pose.x, bin_.pose.y), (-26.0, -6.9)) < 4
+
+
+def test_how_things_go_for_people_adds_no_people_and_it_is_the_one_thing_named(session, campus):
+    report = session.submit("Would you be so kind as to put the rubbish bin somewhere near the Student Union? "
+                            "People there must have nowhere to throw their wrappers.")
+    assert report.ok, report.error
+    assert session.scene.count("pedestrian") == 0
+    report = session.submit("Cars keep getting hidden behind that wheelie bin so the kids can't see them coming. Can you get rid of it?")
+    assert report.ok, report.error
+    assert session.scene.count("trash_bin") == 0 and session.scene.count("passenger_car") == campus.count("passenger_car")
+    assert not session.submit("kids can't see the cars").ok  # how it is for them: never more of them
+    assert session.scene.count("pedestrian") == 0
+
+
+def test_a_place_said_not_to_be_meant_is_not_where_it_goes(session, campus):
+    report = session.submit("People coming out of Engineering Hall need a bench right outside the door, not way over by the bus stop.")
+    assert report.ok, report.error
+    (bench,) = added(session, campus, "bench")
+    assert math.dist((bench.pose.x, bench.pose.y), place(campus, "Engineering Hall entrance")) < 5
+
+
+def test_asking_to_be_told_a_distance_or_the_conditions_changes_nothing(session, campus):
+    report = session.submit("Please inform me at what distance the suv is standing from the ego.")
+    assert report.ok and report.answer is not None and "m" in report.answer
+    report = session.submit("sanity check. environment?")
+    assert report.answer is not None and "weather" in report.answer
+    assert session.scene == campus

@@ -22,6 +22,7 @@ from drivetwin.orchestrator.planning.intent import (
     BARE_STATE,
     FEWER_WORDS,
     HABITUAL,
+    HOW_THINGS_GO,
     REMOVE_WORDS,
     asks,
     commands,
@@ -201,6 +202,8 @@ _STATEMENT = re.compile(
     r"will|would|can|could|shall|may|might|let|gets?|to be)\b)[a-z' -]+\s(?:[a-z]+s|block|blocks|sit|stand|stay|face|look)\b"
     # "who put a hydrant on the pavement?": a complaint about what someone did, not a request
     r"|who\s+(?:\w+\s+)?(?:put|left|parked|placed|moved|dumped|stuck|added|thought|decided)\b"
+    # "people there must have nowhere to ...", "cars keep getting hidden behind ...": how things go, not a request
+    rf"|{HOW_THINGS_GO.pattern}"
     rf"|{HABITUAL.pattern})"
 )
 
@@ -257,13 +260,17 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
             text = f"{lead} {text}"  # "remove the hydrant and also the bin": the bin is removed too
         elif verb is not None:
             lead = text[: verb.end()]
-        asked = i + 1 < len(parts) and "?" in parts[i + 1]
+        # "Could you put the hydrant by the sign, and the bin beside the bench?": a request, every part of it
+        asked = i + 1 < len(parts) and "?" in parts[i + 1] and not _POLITE_REQUEST.match(text.lower())
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text) for q in _comma_and(p)]
         out.extend((c, asked, intro) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,"), places))
     return out
 
 
+# A request asked as a question: "could you put the hydrant by the sign, and the bin by the bench?".
+_POLITE_REQUEST = re.compile(rf"\s*(?:please\s+)?(?:could|can|would|will)\s+(?:you|u)\s+(?:please\s+|kindly\s+|just\s+)?"
+                             rf"(?:{'|'.join(_VERBS)})\b")
 # A command after a comma: "..., make it day", "..., please give me some clouds".
 _COMMA_COMMAND = re.compile(rf",\s+(?=(?:(?:please|pls|just|so|now|then|let'?s)\s+)*(?:{'|'.join(_VERBS)}|give)\b)")
 
@@ -390,8 +397,9 @@ class RulePlanner:
                 if set(notes.subject) & set(notes.coming[coming:]):
                     notes.subject = notes.named  # nor is it what a later "it" means
                 del notes.coming[coming:]  # what it would add is not coming
-                # "who put a hydrant by the crossroads? get rid of it": the one there is what "it" means
-                notes.subject = _already_there(clause_calls, scene) or notes.subject
+                # "who put a hydrant by the crossroads? get rid of it": the one there is what "it" means;
+                # "cars keep getting hidden behind that bin ... get rid of it": the one thing it names singly
+                notes.subject = _already_there(clause_calls, scene) or _named_singly(reading, scene) or notes.subject
                 continue
             calls.extend(clause_calls)
             previous = clause_calls
@@ -604,6 +612,14 @@ def _not_removed_twice(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
             continue  # every one of that kind is already going
         out.append(call)
     return out
+
+
+def _named_singly(r: Reading, scene: Scene) -> list[str]:
+    """The one thing a statement names in the singular that the scene has one of ("that wheelie bin"
+    among "cars" and "kids"), as a list; [] when it names no such one thing."""
+    ones = {a.id for m in r.mentions if not m.plural
+            for a in [x for x in scene.assets if x.category == m.category] if scene.count(m.category) == 1}
+    return sorted(ones) if len(ones) == 1 else []
 
 
 def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:

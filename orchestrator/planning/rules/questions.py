@@ -122,9 +122,10 @@ _ON_OFF = re.compile(r"\b(?:on or off|off or on|switched on|turned on|lit|on|off
                      r"|\b(?:are|is) (?:the |all the |any of the )?(?:street ?)?(?:lights?|lamps?) (?:on|off|lit)\b")
 # A clause of a question that is only a setting's word ("time + weather?", "the weather?").
 # ("lights?" alone asks for the street lights, things of the scene.)
-_SETTING_ALONE = re.compile(r"\W*(?:and\s+|the\s+)*(?:weather|time)(?:\W+(?:and\W+)?(?:the\s+)?(?:weather|time|lighting))*\W*$")
+_SETTING_ALONE = re.compile(r"\W*(?:and\s+|the\s+)*(?:weather|time|environment|conditions)"
+                            r"(?:\W+(?:and\W+)?(?:the\s+)?(?:weather|time|lighting|environment|conditions))*\W*$")
 _SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|bright|light)|how(?:'s| is) the light"
-                      r"|lights? (?:on|off)|lit)\b")
+                      r"|lights? (?:on|off)|lit|environment|conditions|(?:it|things) like out(?: there| here|side)?)\b")
 
 
 def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
