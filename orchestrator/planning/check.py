@@ -85,7 +85,13 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, kept_at
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, YARD_M, numbers_in, spelt_measures
-from drivetwin.orchestrator.planning.rules.places import BETWEEN, each_place_named, point_named, says_other_place
+from drivetwin.orchestrator.planning.rules.places import (
+    BETWEEN,
+    each_place_named,
+    point_named,
+    says_other_place,
+    side_of,
+)
 from drivetwin.orchestrator.planning.rules.reading import counted_kinds
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
@@ -262,6 +268,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
     if request.place is not None and effect.edits and not effect.environment:
         last = {a.id: a for a in [*effect.added, *effect.changed]}  # where each ends up, after every call
+        beyond = side_of(request.low, scene) if _COMPASS_OF.search(request.low) else None
         far = [a for a in [*last.values(), *effect.removed] if a.id != "ego"
                and not _near(scene, a, request.place)
                and not (_DISTANCE_SAID.search(spelt_measures(request.low)) and _names_target(effect, request.place))
@@ -269,6 +276,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                and not _brought_closer(scene, a, request.place)  # "3 m towards the fountain"
                and not FURTHEST.search(request.low)  # "the tree furthest from the library"
                and not _heads_to(scene, a, request.place)  # "make him walk to the library"
+               and not (beyond is not None and beyond[1](a))  # "the lamps east of the crossroads": that side of it
                and not (_FACE_SAID.search(request.low) and _turned_to_face(scene, a, request.place))  # "turn the bench to face the fountain"
                and not ((says_other_place(request.low, scene) or _MOVED_AWAY.search(request.low))
                         and _near(scene, scene.asset(a.id) or a, request.place))]  # "... in the wrong car park"
@@ -331,7 +339,8 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
         out += environment_left_out(request.low, effect.calls)
     # a number, a place, a lane, a state, "fewer" or a side limits how many go
     limited = bool(request.numbers or request.place or request.lane or request.state or FEWER_WORDS.search(request.low)
-                   or md.outer_direction(request.low) or request.excepted)  # "the westernmost lamp", "not the ego"
+                   or md.outer_direction(request.low) or request.excepted  # "the westernmost lamp", "not the ego"
+                   or side_of(request.low, scene) is not None)  # "the lamps west of Campus Drive"
     out += partial_removal(request.masked, scope, scene, limited)
     out += [f"you asked for a new {c.replace('_', ' ')}, but the plan moves one that is there"
             for c in indefinite_but_moved(request.masked, scope, scene)]
@@ -355,6 +364,8 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     return out
 
 
+# A place said as the side of it things are on: "east of the crossroads".
+_COMPASS_OF = re.compile(r"\b(?:north|south|east|west)(?:ern)?\s+of\b")
 # On foot or pedal, said of what is added: "a jogger running along Main Street" (not "stop walking").
 _ON_FOOT = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!no )\b(walking|jogging|running|strolling|wandering|jaywalking|jaywalks"
                       r"|pacing|cycling|pedalling|pedaling|(?:walks|strolls|jogs|wanders|hurries|runs|heads|rides)(?= (?:to|towards?|across|along|over|for|from|into|up|down)\b))\b")

@@ -17,6 +17,8 @@ HOW_THINGS_GO = re.compile(
     r"(?:people|drivers|kids|children|students|pedestrians|visitors|folks|passengers|everyone|nobody|no one)\b[^,;.]*?"
     r"\b(?:must have|keep|keeps|can't|cannot|couldn't|don't|doesn't|never|always|have nowhere|has nowhere|have no|struggle)\b"
     r"|\b[a-z]+s\s+(?:keep|kept)\s+(?:getting|being|on)\b")
+# What a test is for, said as a case to see: "I want to see what happens if a child runs out in front of us".
+WHAT_IF = re.compile(r"\b(?:see|know|find out|check|test)\s+what (?:happens|would happen|will happen|the ego does)\s+(?:if|when)\b")
 # A place said to be empty as it is ("feels empty", "looks a bit bare"): a lack, not "empty it".
 BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b")
 REMOVE_WORDS = re.compile(
@@ -129,7 +131,7 @@ _REASON = re.compile(
 _REASON_FIRST = re.compile(
     r"^[^.;!?]*?,\s*(?:and\s+)?so\s+(?=(?:please\s+|just\s+|(?:can|could|would) you\s+)?(?:give|make|add|put|set|let|"
     r"turn|bring|place|create|remove|take|move|get|start|switch|change|clear|park|spawn|drop|line|block|close|fence|"
-    r"ring|surround|cordon|mark)\b)",
+    r"ring|surround|cordon|mark|have|let|paint|rotate|turn|slow|speed)\b)",
     re.IGNORECASE,
 )
 
@@ -270,6 +272,18 @@ def without_slip(text: str) -> str:
     return " ".join(p for p in (before[:cut].rstrip(), fix.strip(), rest.strip()) if p)
 
 
+def without_reason_first(text: str) -> str:
+    """`text` without a reason said first and followed by ", so" and what to do ("my learner needs
+    practice, so have the ego brake"); when what follows points back into it ("..., so put bikes at
+    its entrance"), the reason stays as the context of a colon."""
+    first = _REASON_FIRST.match(text)
+    if first is not None and not _POINTS_BACK.search(text[first.end() :]):
+        return text[first.end() :]
+    if first is not None:
+        return text[: first.start() + text[: first.end()].rindex(",")] + ": " + text[first.end() :]
+    return text
+
+
 def without_reason(text: str) -> str:
     """`text` without the clauses that only say why ("so buses can pass", "to test the wipers,
     so give me rain") or what is not meant (", not the ego"), without labels pasted with it
@@ -279,11 +293,7 @@ def without_reason(text: str) -> str:
     if (nominal := _NOMINAL_EDIT.match(text)) is not None:
         text = _ASKED_FOR.sub("", _NOMINAL[nominal.group(1).lower()] + text[nominal.end() :])
     text = without_contrast(_LAYOUT_HEADING.sub(r"\1 of", _LABEL.sub(" ", text))).strip()
-    first = _REASON_FIRST.match(text)
-    if first is not None and not _POINTS_BACK.search(text[first.end() :]):
-        text = text[first.end() :]
-    elif first is not None:  # "..., so put bikes at its entrance": the reason introduces what "its" means
-        text = text[: first.start() + text[: first.end()].rindex(",")] + ": " + text[first.end() :]
+    text = without_reason_first(text)
     because = _BECAUSE_FIRST.match(text)
     if because is not None and not _POINTS_BACK.search(text[because.end() :]):
         text = text[because.end() :]
@@ -387,6 +397,7 @@ __all__ = [
     "HOW_THINGS_GO",
     "KEEP_SOME",
     "REMOVE_WORDS",
+    "WHAT_IF",
     "asks",
     "commands",
     "excepted",
@@ -394,6 +405,7 @@ __all__ = [
     "taken_back",
     "without_contrast",
     "without_reason",
+    "without_reason_first",
     "without_salutations",
     "wrapped_request",
 ]

@@ -17,6 +17,7 @@ from drivetwin.orchestrator.planning.intent import (
     ADD_WORDS,
     HOW_THINGS_GO,
     REMOVE_WORDS,
+    WHAT_IF,
     asks,
     excepted,
     taken_back,
@@ -52,6 +53,8 @@ _LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west
 _PARKED = re.compile(r"\bparked\b")
 _SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")
 # "moving" said of the thing, not denied ("not moving", "stopped driving")
+# Moving as what a thing should be doing, not which ones: "the SUV needs to be driving down Main Street".
+_TO_BE_MOVING = re.compile(r"\b(?:to be|should be|must be|start|keep|be)\s+(?:\w+\s+)?(?:driving|moving|travelling|traveling|riding)\b")
 _MOVING = re.compile(r"(?<!not )(?<!n't )(?<!never )(?<!stop )(?<!stopped )\b(driving|moving|travelling|traveling|riding)\b"
                      # "a car that brakes suddenly", "a van which slows down": what it does as it goes
                      r"|\b(?:that|which|who)\s+(?:\w+ly\s+)?(?:brakes?|slows?|swerves?|speeds?|accelerates?|drives?|rides?"
@@ -90,6 +93,8 @@ def read_request(prompt: str, scene: Scene) -> Request:
         masked = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", masked)
     masked = FIRST_PERSON_EGO.sub(lambda m: m.group(0)[: m.start(1) - m.start()] + "ego", masked)  # "behind us"
     masked = without_order(masked)  # "the third car from the west": which one, not which way
+    # "I want to see what happens if a child runs out ...": the case to see, not what to do
+    masked = re.sub(r"[^.!?]*", lambda m: " " * len(m.group(0)) if WHAT_IF.search(m.group(0)) else m.group(0), masked)
     # A lane is named by its id, or by a direction said of a lane ("the westbound lane"), not by a
     # compass word alone ("2 m east", "facing north").
     lane = find_lane(scene, masked) if _LANE_WORDS.search(masked) else None
@@ -112,7 +117,8 @@ def read_request(prompt: str, scene: Scene) -> Request:
     numbers += tuple(float(_AMOUNTS[w.group(0)]) for w in re.finditer(r"[a-z]+(?:-[a-z]+)?", exact)
                      if w.group(0) in _AMOUNTS and not _is_reference(masked, w.start()))
     state: Literal["parked", "moving"] | None = (
-        "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) and not md.SET_GOING.search(low) else None
+        "parked" if _PARKED.search(low) else "moving" if _MOVING.search(low) and not md.SET_GOING.search(low)
+        and not _TO_BE_MOVING.search(low) else None
     )
     return Request(prompt, question, polarity, categories, numbers, place[0] if place else None,
                    lane[0] if lane and not lane[3] else None, state, bool(_PLACE_TOPIC.search(masked)), low, masked,

@@ -18,7 +18,7 @@ from functools import cache
 from typing import Any
 
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, Reading, TraceStep
-from drivetwin.orchestrator.planning.intent import asks
+from drivetwin.orchestrator.planning.intent import asks, without_reason_first
 from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, repair
@@ -65,6 +65,7 @@ _ADDING = re.compile(r"^\s*(please\s+)?(add|put|place|spawn|create|insert|bring 
 
 def normalised(prompt: str, scene: Scene) -> str:
     """Lower-case words with typos repaired, number words as digits and units spaced ("15m")."""
+    prompt = without_reason_first(prompt).strip() or prompt  # "my learner needs practice, so have the ego brake ...": what to do
     repaired = repair(re.sub(r"\b[uU][\s-]?turn", "uturn", prompt), scene)  # "U-turn" is one word, not "a turn"
     text = repaired.text
     for change in repaired.repairs:  # the lexicon's repair does not know manoeuvre verbs ("swerve")

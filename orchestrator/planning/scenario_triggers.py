@@ -36,7 +36,8 @@ TRIGGER = re.compile(r"\b(as soon as|whenever|when|once|as|if|until)\b|\b(?:just
                      r"(?=[^,.;]*\b(?:gets?|reach(?:es)?|arrives?|comes?)\b)")
 _SECONDS = r"(?:s|secs?|seconds?)"
 # The start of the run, which a delay may be counted from ("4 s into the run", "2 s after the start").
-_START = r"(?:the (?:start|beginning)|(?:the )?(?:run|scenario|simulation|test|clip)(?: starts| begins)?|it (?:starts|begins))"
+_START = (r"(?:the (?:start|beginning)|(?:the |our |my )?(?:run|scenario|simulation|test|clip|drive|ride|journey|lesson|take|shot"
+          r"|recording|sequence)(?: starts| begins)?|it (?:starts|begins))")
 DELAY = re.compile(rf"\b(?:after|in|at)\s+(?:t\s*=\s*)?(\d+(?:\.\d+)?)\s*{_SECONDS}\b"
                    rf"|\b(\d+(?:\.\d+)?)\s*{_SECONDS}\s+(?:in\b(?!to)|into {_START}|after {_START}|from {_START})"
                    r"|\b(after a (?:bit|while|moment)|shortly|in a (?:bit|moment|while)|a bit later|soon)\b")

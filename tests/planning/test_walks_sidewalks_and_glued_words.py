@@ -9,7 +9,9 @@ from __future__ import annotations
 import math
 
 import pytest
+from drivetwin.orchestrator.planning.registry import make_planner
 from drivetwin.orchestrator.planning.rules.spelling import repair
+from drivetwin.orchestrator.session import Session
 from drivetwin.orchestrator.transaction import TransactionError, execute
 from drivetwin.tools import ToolRegistry
 from drivetwin.tools.base import ToolCall
@@ -409,3 +411,54 @@ def test_asking_to_be_told_a_distance_or_the_conditions_changes_nothing(session,
     report = session.submit("sanity check. environment?")
     assert report.answer is not None and "weather" in report.answer
     assert session.scene == campus
+
+
+# --- sides of roads and places as a scope, times into the drive, reasons first -------------------
+
+
+def test_things_west_of_a_road_are_those_only(session, campus):
+    assert session.submit("remove the lamps west of campus drive").ok
+    gone = {a.id for a in campus.assets} - {a.id for a in session.scene.assets}
+    assert gone == {f"street_light_{n}" for n in range(1, 7)}  # x < 0 only
+    assert all(a.pose.x > 0 for a in session.scene.assets if a.category == "street_light")
+
+
+def test_the_north_side_east_of_the_crossroads_is_both_at_once(session, campus):
+    report = session.submit("decommission the luminaires on the north side of Main Street east of the crossroads")
+    assert report.ok, report.error
+    gone = {a.id for a in campus.assets} - {a.id for a in session.scene.assets}
+    assert gone == {"street_light_7", "street_light_9", "street_light_11"}
+
+
+def test_a_time_into_the_drive_and_a_reason_said_first_make_a_timed_stop(campus, registry, tmp_path):
+    session = Session(campus, make_planner("hybrid"), registry, journal_path=tmp_path / "journal.jsonl")  # the embedded model, for real
+    report = session.submit("My learner needs to practise an emergency stop, so have the ego brake hard about ten seconds into the drive.")
+    assert report.ok and report.plan is not None, report.error
+    (call,) = report.plan.calls  # the ego's stop at 10 s, and no stop sign
+    assert call.tool == "add_manoeuvre" and call.args.get("actor") == "ego" and call.args.get("at_time") == 10.0
+
+
+def test_the_case_a_test_is_for_is_not_a_request(session, campus):
+    assert session.submit("add a child standing at the bus stop").ok
+    report = session.submit("I want to see what happens if a child runs out in front of our car. Make that child dart across the road.")
+    assert report.ok, report.error
+    assert session.scene.count("pedestrian") == 1 and session.scene.asset("pedestrian_1").behaviour.kind == "jaywalk"
+
+
+def test_a_thing_that_should_be_driving_is_set_driving_and_a_count_in_pieces_is_a_count(session, campus):
+    report = session.submit("For the tracking shot the SUV needs to be driving down Main Street, heading west.")
+    assert report.ok, report.error
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.kind == "drive_lane" and suv.behaviour.lane == "main_westbound"
+    before = session.scene
+    report = session.submit("We wish the cones standing in one row along the side of the westbound lane, beginning from the east gate, ten pieces.")
+    assert report.ok, report.error
+    assert len(added(session, before, "traffic_cone")) == 10
+
+
+def test_a_bare_thing_and_how_it_is_then_what_it_needs(session, campus):
+    report = session.submit("bin's in a dumb spot. needs to be by the library door")
+    assert report.ok, report.error
+    bin_ = session.scene.asset("trash_bin_1")
+    assert bin_ is not None and math.dist((bin_.pose.x, bin_.pose.y), place(campus, "Library entrance")) < 5
+    assert session.scene.count("trash_bin") == 1

@@ -223,6 +223,8 @@ def _scoped_by_place(r: Reading, mention: ph.Mention, anywhere: bool = False) ->
     destination)."""
     if r.landmark is None or not (mention.plural or r.has(("all", "every", "each"))):
         return False
+    if re.search(r"\b(?:north|south|east|west)(?:ern)?\s+of\s+(?:the\s+)?$", r.low[: max(0, r.landmark_at)]):
+        return False  # "the lamps east of the crossroads": a side of it (side_of), not those at it
     if anywhere or (0 <= r.landmark_at < mention.start and not r.masked[r.landmark_at : mention.start].strip(" §")):
         return True  # a removal's place, or one said right before the things ("the lot B cars")
     return r.landmark_at >= mention.end and bool(_SCOPE.fullmatch(r.low[mention.end : r.landmark_at] + " "))

@@ -726,9 +726,31 @@ def road_said(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bo
 
 
 def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
-    """The side of a road or place the words name ("on the north side of Main Street"), as
-    words and as a test of whether a thing stands on it (beyond the road's middle, or the
-    place, that way); None when they name none."""
+    """The side of a road or place the words name ("on the north side of Main Street", "west of
+    Campus Drive", both at once), as words and as a test of whether a thing stands on it (beyond
+    the road's middle, or the place, that way); None when they name none."""
+    sides = [side for side in (_side_named(low, scene), _compass_of_road(low, scene)) if side is not None]
+    if len(sides) < 2:
+        return sides[0] if sides else None
+    (one, first), (other, second) = sides
+    return f"{one}, {other}", lambda a: first(a) and second(a)
+
+
+def _compass_of_road(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
+    """"West of Campus Drive", "east of the crossroads": beyond that road's middle, or that place, that way."""
+    for said in re.finditer(r"\b(north|south|east|west)(?:ern)?\s+of\s+(?:the\s+)?([a-z][a-z ]*)", low):
+        rest = road_kinds_spelt(said.group(2))
+        lanes = [lane for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())]
+        if lanes:
+            return f"{said.group(1)} of {lanes[0].road}", _beyond_middle(lanes, said.group(1))
+        found = find_place(scene, f" {rest} ")
+        mark = scene.landmark(found[0]) if found is not None else None
+        if mark is not None and re.match(r"\s*(?:the\s+)?" + re.escape(ph.normalise(rest).split()[0]), rest):
+            return f"{said.group(1)} of {mark.name}", _beyond([mark.position], said.group(1))
+    return None
+
+
+def _side_named(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
     said = SIDE_OF.search(low)
     if said is None:
         alone = _SIDE_ALONE.search(low)

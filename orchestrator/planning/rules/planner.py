@@ -24,6 +24,7 @@ from drivetwin.orchestrator.planning.intent import (
     HABITUAL,
     HOW_THINGS_GO,
     REMOVE_WORDS,
+    WHAT_IF,
     asks,
     commands,
     taken_back,
@@ -204,6 +205,9 @@ _STATEMENT = re.compile(
     r"|who\s+(?:\w+\s+)?(?:put|left|parked|placed|moved|dumped|stuck|added|thought|decided)\b"
     # "people there must have nowhere to ...", "cars keep getting hidden behind ...": how things go, not a request
     rf"|{HOW_THINGS_GO.pattern}"
+    # "bin is in a dumb spot", "car's way too close": a thing named bare and how it is
+    r"|(?:[a-z]+\s+){1,2}(?:is|are)\s+(?:in|on|at|too|not|still|way|over|under|blocking|parked|standing|sitting|facing|so|very|really"
+    r"|always|just|kind of|a bit)\b"
     rf"|{HABITUAL.pattern})"
 )
 
@@ -255,6 +259,8 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         if said is not None:  # "it's too dark, make it day": how it is, then what to do
             out.append((said[0], False, True))
             text = said[1]
+        if _SUBJECTLESS.match(text.lower()):
+            text = f"it {text}"  # "bin's in a dumb spot. needs to be by the library door": it needs to
         verb = _VERB_AT.search(text.lower())
         if verb is None and lead and re.search(r"and also", parts[i - 1]) and ph.find_categories(text):
             text = f"{lead} {text}"  # "remove the hydrant and also the bin": the bin is removed too
@@ -268,6 +274,8 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
     return out
 
 
+# A sentence whose subject went unsaid, the thing the one before named: "needs to be by the door".
+_SUBJECTLESS = re.compile(r"\s*(?:needs?|has|have|should|must|ought|wants?)\s+(?:to\s+)?(?:be|go|stand|sit|move|face)\b")
 # A request asked as a question: "could you put the hydrant by the sign, and the bin by the bench?".
 _POLITE_REQUEST = re.compile(rf"\s*(?:please\s+)?(?:could|can|would|will)\s+(?:you|u)\s+(?:please\s+|kindly\s+|just\s+)?"
                              rf"(?:{'|'.join(_VERBS)})\b")
@@ -716,6 +724,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         )
     if re.match(rf"\s*({'|'.join(lx.FILLER_STARTS)})\b", r.low) and not r.mentions and not r.ids:
         return None  # "before I add anything": a circumstance, not a request
+    if WHAT_IF.search(r.low):
+        return None  # "I want to see what happens if a child runs out": what the test is for, not yet a request
     if repeats(r, memory):  # "repeat that outside Engineering Hall", "ditto for the bus", "and the bin too"
         return repeat(r, scene, memory, notes)
     if corrects(r):  # "actually, make that five": the last edit's things, as many as that

@@ -499,7 +499,7 @@ def read(text: str, scene: Scene) -> Reading:
 
 # A count said after the thing: "cones x4", "... 6 of them".
 # "cones x4", "a ring of people, 6 of them", "lining the lane with cones, like 10" (a rough count said last)
-_COUNT_AFTER = re.compile(r"^\s*[x×]\s?(\d+)\b|\b(\d+|[a-z]+) of them\b"
+_COUNT_AFTER = re.compile(r"^\s*[x×]\s?(\d+)\b|\b(\d+|[a-z]+) (?:of them|pieces|pcs|units|items)\b"
                           r"|,\s*(?:like|about|around|roughly|maybe|say|approximately|approx\.?)\s+(\d+)\s*(?:or so)?\s*[.!?]*\s*$")
 
 

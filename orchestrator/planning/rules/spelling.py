@@ -277,6 +277,9 @@ def _place_glued(word: str, scene: Scene) -> str | None:
     return _glued_places(scene).get(word.lower())
 
 
+# "bin's in a dumb spot": a thing's "is", not its belongings (not "it's", "that's": read as they are).
+_IS_CONTRACTED = re.compile(r"\b(?!(?:it|that|there|here|what|who|let|he|she)'s)([a-z]+)'s\s+(?=(?:in|on|at|too|not|still|now|right|way|over"
+                            r"|under|by|near|blocking|parked|standing|sitting|facing|a bit|so|very|really|always|just)\b)", re.IGNORECASE)
 # A console-style command ("/spawn cone", "/find suv"): the word is the command.
 _SLASH_COMMAND = re.compile(r"(?:^|(?<=[\s;,]))/(?=[a-z])", re.IGNORECASE)
 # A thing's word with its number run on ("car2", "cone3"): the thing and its number, when there is one.
@@ -478,6 +481,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _OFF_SLIP.sub(r"\1 off", text)
     text = _RIGHT_THERE.sub("", text)
     text = _SLASH_COMMAND.sub("", text)
+    text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
     repairs: list[str] = []
