@@ -358,11 +358,12 @@ def _first_fit(
     place: Placer, args: ArrangeArgs, scene: Scene, groups: list[list[tuple[list[Pose], str]]],
     shifts: list[tuple[float, float]], refusals: list[RuleViolation],
 ) -> tuple[list[AssetInstance], list[Pose], str] | None:
-    """The first layout that fits: group by group, each group's candidates at each shift in
-    turn; every refusal is appended to `refusals`."""
+    """The first layout that fits: group by group, each group's candidates in turn at each shift
+    (a line as asked, slid a little along its sidewalk, before it is turned across it); every
+    refusal is appended to `refusals`."""
     for group in groups:
-        for dx, dy in shifts:
-            for candidate, note in group:
+        for candidate, note in group:
+            for dx, dy in shifts:
                 poses = [p.model_copy(update={"x": p.x + dx, "y": p.y + dy}) for p in candidate]
                 try:
                     return place(args, scene, poses), poses, note

@@ -360,7 +360,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += picked_but_other(request.masked, scope, scene)
     if request.place is None and not request.question:
         out += off_the_road(request.low, scope, scene)
-    out += excepted_touched(request.excepted, _kinds_named(request), scope, scene, without_contrast(request.low))
+    out += excepted_touched(request.excepted, _kinds_named(request), scope, scene, without_contrast(request.low), memory.last_added())
     return out
 
 

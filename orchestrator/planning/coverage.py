@@ -683,14 +683,18 @@ _PICKED_BY = re.compile(r"\s(?:by|near|next to|beside|at|in|on|behind|in front o
 EXCEPTED_RADIUS_M = 10.0
 
 
-def excepted_touched(excepted: Iterable[str], categories: Iterable[str], scope: Scope, scene: Scene, main: str = "") -> list[str]:
+def excepted_touched(excepted: Iterable[str], categories: Iterable[str], scope: Scope, scene: Scene, main: str = "",
+                     recent: Iterable[str] = ()) -> list[str]:
     """Things the request says it does not mean ("..., not the ego", "except the one by the bench")
     that the plan changes or removes (see `excepted_ids`); where the words name a kind but pick out
-    none of it this world can find ("not the ones at the ends"), any of that kind the plan touches."""
+    none of it this world can find ("not the ones at the ends"), any of that kind the plan touches.
+    "The old one" is one of the kinds named the last turn did not add (`recent`)."""
     acted = [a for a in scope.touched if a not in scope.added]
     out = []
     for said in excepted:
         picked = _picked_out(said, set(categories), scene, main)
+        if _OLD.search(said) and recent:  # "colour the new hydrant, leave the old one as it is"
+            picked = {a.id for a in scene.assets if a.category in set(categories) and a.id not in set(recent)}
         if isinstance(picked, frozenset):
             unsure = sorted(a.id for a in acted if a.category in picked)
             if unsure:
@@ -698,6 +702,9 @@ def excepted_touched(excepted: Iterable[str], categories: Iterable[str], scope: 
         elif hit := sorted({a.id for a in acted} & picked):
             out.append(f"you said not {said}, but the plan changes {', '.join(hit)}")
     return out
+
+
+_OLD = re.compile(r"\b(?:old|older|original|existing)\b")
 
 
 def excepted_ids(excepted: Iterable[str], categories: Iterable[str], scene: Scene, main: str = "") -> set[str]:

@@ -120,7 +120,7 @@ _WRAPPED = re.compile(
 # A clause saying why ("... so traffic can flow again", "... so that the ego has to stop", "in
 # order to test the wipers"): the reason for a request, not a second request.
 _REASON = re.compile(
-    r",?\s+(?:so that|so as to|in order to|in order that|so)\s+(?:(?:the |a |our |we |they |it |cars |traffic |people )?\w*\s*)?"
+    r",?\s+(?:so that|so as to|in order to|in order that|so)\s+(?:(?:the |a |our |we |they |it |cars |traffic |people )?(?:[a-z'-]+\s+){0,2}\w*\s*)?"
     r"(?:can|could|will|would|may|might|won'?t|can'?t|cannot|doesn'?t|don'?t|has to|have to|gets?|is|are)\b[^.;!?]*",
     re.IGNORECASE,
 )

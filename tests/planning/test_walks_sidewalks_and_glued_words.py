@@ -462,3 +462,27 @@ def test_a_bare_thing_and_how_it_is_then_what_it_needs(session, campus):
     bin_ = session.scene.asset("trash_bin_1")
     assert bin_ is not None and math.dist((bin_.pose.x, bin_.pose.y), place(campus, "Library entrance")) < 5
     assert session.scene.count("trash_bin") == 1
+
+
+def test_the_new_one_is_the_one_just_added_and_the_old_one_is_left(session, campus):
+    assert session.submit("add a fire hydrant by the bench").ok
+    (new,) = added(session, campus, "fire_hydrant")
+    report = session.submit("Please colour the new fire hydrant yellow, and leave the old one as it is.")
+    assert report.ok, report.error
+    assert session.scene.count("fire_hydrant") == 2
+    assert session.scene.asset(new.id).appearance.rgba is not None
+    assert session.scene.asset("fire_hydrant_1").appearance.rgba is None
+
+
+def test_a_building_keeps_its_look_and_a_reason_after_so_adds_no_one(session, campus):
+    report = session.submit("paint the library walls something brighter so partially sighted visitors can find it")
+    assert not report.ok and "buildings" in (report.error or "")
+    assert session.scene == campus
+
+
+def test_a_straight_line_along_a_side_past_a_place_runs_along_that_sidewalk(session, campus):
+    report = session.submit("plant 4 trees in a straight line along the north side of main st, east of the JTEKT building")
+    assert report.ok, report.error
+    trees = added(session, campus, "tree")
+    assert len(trees) == 4 and all(surface_at(campus, t.pose.x, t.pose.y) == "sidewalk" for t in trees)
+    assert all(t.pose.x > 37.5 for t in trees)  # east of the JTEKT entrance

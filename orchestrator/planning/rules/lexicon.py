@@ -131,6 +131,6 @@ GRAMMAR = frozenset(
     put set give want like into via per each both either other same spot place area bay we're i'm you're they're that's
     outside inside between towards toward closer close far next along through west east north
     south westbound eastbound northbound southbound westwards eastwards northwards southwards
-    coloured colored painted paint recolour just really very quite rather too so than test""".split()  # noqa: SIM905 - a paragraph of words
+    coloured colored painted paint recolour just really very quite rather too so than test straight""".split()  # noqa: SIM905 - a paragraph of words
 )
 # fmt: on

@@ -462,8 +462,12 @@ def sidewalk_of_side(r: Reading, scene: Scene, exclude: list[str]) -> dict[str, 
     if not sides or (mark is None and thing is None):
         return None
     x, y = mark.position if mark is not None else (thing.pose.x, thing.pose.y) if thing is not None else (0.0, 0.0)
+    past = _COMPASS_OF.search(r.low)
+    if past is not None and mark is not None:  # "on the north side of Main Street, east of the JTEKT building": past it
+        ux, uy = _UNIT[past.group(1)]
+        x, y = x + ux * BEYOND_PLACE_M, y + uy * BEYOND_PLACE_M
     walk = min(sides, key=lambda w: nearest_on_polyline(x, y, w.polyline).distance)
-    if anchor == "ego":
+    if anchor == "ego" and past is None:
         return {"relation": "on_sidewalk", "target": walk.id}
     on = nearest_on_polyline(x, y, walk.polyline)
     return {"relation": "on_sidewalk", "target": f"{on.x:.1f}, {on.y:.1f}"}

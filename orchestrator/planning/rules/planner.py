@@ -168,6 +168,8 @@ _STRICT_ADD = (
     "give me",
 )
 
+_THE_NEW = re.compile(r"\b(?:the|that|this|those|these|our|my)\s+new(?:er|est)?\b")
+
 # Closing a road by its name or kind ("close Main Street at the east gate", "shut the lane").
 _CLOSE_ROAD = re.compile(r"^\s*(?:please )?(?:close|block|shut|seal)(?: off)? (?:the )?(?:[\w-]+ ){0,3}?"
                          r"(?:road|street|lane|avenue|drive|driveway|entrance|access road|car park|parking lot|lot [a-z0-9])\b")
@@ -276,6 +278,9 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
 
 # A sentence whose subject went unsaid, the thing the one before named: "needs to be by the door".
 _SUBJECTLESS = re.compile(r"\s*(?:needs?|has|have|should|must|ought|wants?)\s+(?:to\s+)?(?:be|go|stand|sit|move|face)\b")
+# A new look asked for ("paint ...", "repaint ...", "recolour ..."), and a building's parts.
+_REPAINT = re.compile(r"\b(?:paint|repaint|recolou?r|colou?r)\b")
+_BUILDING = re.compile(r"\b(?:walls?|facade|façade|building|roof|doors?|windows?)\b")
 # A request asked as a question: "could you put the hydrant by the sign, and the bin by the bench?".
 _POLITE_REQUEST = re.compile(rf"\s*(?:please\s+)?(?:could|can|would|will)\s+(?:you|u)\s+(?:please\s+|kindly\s+|just\s+)?"
                              rf"(?:{'|'.join(_VERBS)})\b")
@@ -724,6 +729,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         )
     if re.match(rf"\s*({'|'.join(lx.FILLER_STARTS)})\b", r.low) and not r.mentions and not r.ids:
         return None  # "before I add anything": a circumstance, not a request
+    if _REPAINT.search(r.low) and (r.landmark or _BUILDING.search(r.masked)) and not (r.mentions or r.ids or r.ego):
+        raise PlanningError(f"the buildings and places of this world keep their look; I can restyle the things in it "
+                            f"(colour or material), e.g. 'paint the bench by {r.landmark or 'the bus stop'} yellow'")
     if WHAT_IF.search(r.low):
         return None  # "I want to see what happens if a child runs out": what the test is for, not yet a request
     if repeats(r, memory):  # "repeat that outside Engineering Hall", "ditto for the bus", "and the bin too"
@@ -793,7 +801,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         # "cordon the tree by the library off with bollards": what is ringed stays named
         ringed = [m for m in r.mentions if around is not None and around.start() < m.start < instrument.start()]
         return _both_sides(_arrange(replace(r, mentions=[*laid, *ringed]), scene, memory, notes), r, scene)
-    strict_add = r.has(tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r) or filled
+    # "the new fire hydrant" is the one just added, not one more
+    strict_add = ph.has_any(_THE_NEW.sub(" ", r.masked), tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r) or filled
     mention = r.mentions[0] if r.mentions else None
     # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
     present = mention is not None and scene.count(mention.category) >= (2 if mention.plural else 1)

@@ -542,6 +542,8 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
             # "all three vehicles", "the two cars": a number of things already there
             return words[k - 1 : k] == [] or words[k - 1] not in (*_OLD_DETERMINERS, "all", "both")
         collective = word in lx.COLLECTIVE_COUNTS and (word not in ("lot", "lots") or words[k + 1 : k + 2] == ["of"])
+        if word in ("new", "newer", "newest") and k > 0 and words[k - 1] in _OLD_DETERMINERS:
+            return False  # "the new fire hydrant": the one just added, there now
         if word in _NEW_DETERMINERS or collective:
             return True
         if word in _OLD_DETERMINERS or word in ("all", "both", "every", "each"):

@@ -67,6 +67,7 @@ _SHORT_SLIPS = {
     "alot": "a lot",
 }
 _REPAIRABLE_GRAMMAR = (
+    "straight",  # "a streight line" is straight, not a streetlight
     "much",
     "which",
     "where",
