@@ -151,7 +151,8 @@ THERE_RADIUS_M = 30.0
 # Words before a category that ask for one not there yet ("a tree", "some cones", "another").
 _INDEFINITE = frozenset(["a", "an", "some", "another", "new", "extra", "more", "additional"])
 # "Inside the library", "into the JTEKT building": a building named after a word of containment.
-_INSIDE = re.compile(r"\b(?:inside|into|within|on top of|on the roof of|onto the roof of|atop)(?: of)?\s+(?:the\s+)?([a-z][a-z ]*)")
+_INSIDE = re.compile(r"\b(?:inside|into|within|on top of|on the roof of|onto the roof of|atop)(?: of)?\s+(?:the\s+)?([a-z][a-z ]*)"
+                     r"|\b(?:on|onto|up on)\s+(?:the\s+)?([a-z][a-z ]*?)\s+(?:roof|rooftop)\b")  # "up on the library roof"
 
 
 @dataclass(frozen=True)
@@ -395,9 +396,10 @@ def off_the_side(low: str, scope: Scope, scene: Scene) -> list[str]:
 def inside_building(masked: str, scene: Scene) -> list[str]:
     """Putting something inside a building, which this world's buildings cannot hold."""
     for m in _INSIDE.finditer(masked):
+        said = m.group(1) or m.group(2)
         for building in scene.buildings:
             name = ph.normalise(building.name).strip()
-            if name and (m.group(1).startswith(name) or name.startswith(m.group(1).strip())):
+            if name and (said.startswith(name) or name.startswith(said.strip())):
                 return [f"things cannot go inside or on top of the {building.name} in this world, only around it "
                         "(its entrance is the nearest place)"]
     return []

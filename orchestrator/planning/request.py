@@ -106,9 +106,8 @@ def read_request(prompt: str, scene: Scene) -> Request:
     kinds_text = masked if place is None else low[: place[1]] + " lot " + low[place[2] :]
     for word in ph.EGO_WORDS:
         kinds_text = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", kinds_text)
-    # "cars keep getting hidden behind that bin. get rid of it": how things go names no thing asked for
-    kinds_text = re.sub(r"(?:^|(?<=[.!?]))[^.!?]*", lambda m: " " * len(m.group(0)) if HOW_THINGS_GO.match(m.group(0).strip())
-                        and re.search(r"[.!?]", kinds_text[m.end() : m.end() + 1]) else m.group(0), kinds_text)
+    # "cars keep getting hidden behind that bin", "people keep saying ...": who things go so for is no thing asked for
+    kinds_text = HOW_THINGS_GO.sub(lambda m: " " * len(m.group(0)), kinds_text)
     swapped = swap_said(low) is not None  # "replace the bench with a bin": the bin is asked for, not a description
     categories = frozenset(m.category for m in without_goals(kinds_text, without_beneficiaries(kinds_text, ph.find_categories(kinds_text)))
                            if (swapped or not _DESCRIBING.search(kinds_text[: m.start])) and not _described_head(kinds_text, m))

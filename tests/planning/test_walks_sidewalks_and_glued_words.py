@@ -486,3 +486,23 @@ def test_a_straight_line_along_a_side_past_a_place_runs_along_that_sidewalk(sess
     trees = added(session, campus, "tree")
     assert len(trees) == 4 and all(surface_at(campus, t.pose.x, t.pose.y) == "sidewalk" for t in trees)
     assert all(t.pose.x > 37.5 for t in trees)  # east of the JTEKT entrance
+
+
+def test_nowhere_to_sit_that_people_keep_mentioning_is_a_bench(session, campus):
+    report = session.submit("people keep saying there's nowhere to sit outside the student union")
+    assert report.ok, report.error
+    assert len(added(session, campus, "bench")) == 1 and not added(session, campus, "pedestrian")
+
+
+def test_how_traffic_is_then_what_the_ego_should_do_is_only_the_ego(session, campus):
+    report = session.submit("Traffic on Main Street is crawling this morning; the ego should be down to about two metres a second.")
+    assert report.ok, report.error
+    assert all(session.scene.asset(a.id) == a for a in campus.assets)  # the parked cars stay where they are
+    assert session.scene.ego.behaviour.speed == pytest.approx(2.0)
+
+
+def test_back_from_the_kerb_is_away_from_the_road_and_a_roof_is_no_place(session, campus):
+    assert session.submit("push the bin back from the kerb a little").ok
+    moved = session.scene.asset("trash_bin_1")
+    assert moved is not None and moved.pose.y < -5.5 - 0.5  # south, away from Main Street
+    assert not session.submit("stick the bench up on the library roof").ok

@@ -539,7 +539,7 @@ def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[Too
 _UP = re.compile(r"\b(?:move|moves|moved|inch|edge|creep|roll|bring|shift)\s+(?:\S+\s+){0,3}up\b(?!\s+(?:to|the|north))")
 
 
-_TOWARD = re.compile(r"\b(?:towards?|in the direction of|(?:closer|nearer)(?: to)?|(?P<away>(?:further|farther|more|well)(?: away)? from|away from))\b")
+_TOWARD = re.compile(r"\b(?:towards?|in the direction of|(?:closer|nearer)(?: to)?|(?P<away>(?:further|farther|more|well|back)(?: away)? from|away from))\b")
 
 
 # A thing moved closer to the road stops this far short of its edge.

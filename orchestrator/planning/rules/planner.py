@@ -207,9 +207,10 @@ _STATEMENT = re.compile(
     r"|who\s+(?:\w+\s+)?(?:put|left|parked|placed|moved|dumped|stuck|added|thought|decided)\b"
     # "people there must have nowhere to ...", "cars keep getting hidden behind ...": how things go, not a request
     rf"|{HOW_THINGS_GO.pattern}"
-    # "bin is in a dumb spot", "car's way too close": a thing named bare and how it is
-    r"|(?:[a-z]+\s+){1,2}(?:is|are)\s+(?:in|on|at|too|not|still|way|over|under|blocking|parked|standing|sitting|facing|so|very|really"
-    r"|always|just|kind of|a bit)\b"
+    # "bin is in a dumb spot", "traffic on Main Street is crawling": a thing named bare and how it is
+    rf"|(?!(?:{'|'.join(_VERBS)}|please|pls|can|could|would|will|make sure)\b)[a-z]+(?:\s+[a-z]+){{0,4}}\s+(?:is|are)\s+"
+    r"(?:in|on|at|too|not|still|way|over|under|blocking|parked|standing|sitting|facing|so|very|really|always|just|kind of|a bit"
+    r"|crawling|jammed|gridlocked|busy|quiet|empty|full|crowded|pitch)\b"
     rf"|{HABITUAL.pattern})"
 )
 

@@ -11,6 +11,7 @@ import math
 import re
 from dataclasses import dataclass, field, replace
 
+from drivetwin.orchestrator.planning.intent import HOW_THINGS_GO
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -474,6 +475,9 @@ def read(text: str, scene: Scene) -> Reading:
         kept = [m for m in mentions if not _FOR_WHOM.search(low[: m.start])]
         mentions = kept if kept or place is not None or ego is not None else mentions
     mentions = without_goals(low, without_beneficiaries(low, mentions))
+    going = HOW_THINGS_GO.match(low, len(low) - len(low.lstrip()))
+    if going is not None and any(m.start >= going.end() for m in mentions):  # "people keep saying there's nowhere to sit"
+        mentions = [m for m in mentions if m.start >= going.end()]
     # "a night test of pedestrian detection": what a sensor task is about is its topic, not a thing asked for
     mentions = [m for m in mentions if not _PERCEPTION_TASK.match(low[m.end :])]
     ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in ph.tokens(low)]
@@ -533,8 +537,8 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:
     """Whether a mention asks for a new asset ("a cone") rather than names one there ("the cone")."""
-    if add_verb or re.search(r"\b(?:somewhere|something)\b(?:\s+[\w'-]+){0,5}\s*$", reading.low[: mention.end]):
-        return True  # "somewhere to sit" asks for a new one, as "a seat" does
+    if add_verb or re.search(r"\b(?:somewhere|something|nowhere|nothing)\b(?:\s+[\w'-]+){0,5}\s*$", reading.low[: mention.end]):
+        return True  # "somewhere to sit" asks for a new one, as "a seat" does; "nowhere to sit" lacks one
     words = ph.tokens(reading.low[: mention.start])
     for k in range(len(words) - 1, max(-1, len(words) - 4), -1):
         word = words[k]

@@ -68,6 +68,7 @@ _SHORT_SLIPS = {
 }
 _REPAIRABLE_GRAMMAR = (
     "straight",  # "a streight line" is straight, not a streetlight
+    "corner",
     "much",
     "which",
     "where",
