@@ -87,6 +87,7 @@ from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, k
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import (
     BETWEEN,
+    FROM_TO,
     each_place_named,
     point_named,
     says_other_place,
@@ -277,6 +278,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                and not FURTHEST.search(request.low)  # "the tree furthest from the library"
                and not _heads_to(scene, a, request.place)  # "make him walk to the library"
                and not (beyond is not None and beyond[1](a))  # "the lamps east of the crossroads": that side of it
+               and not FROM_TO.search(request.low)  # "cones from the ego to the crossroads": between the two
                and not (_FACE_SAID.search(request.low) and _turned_to_face(scene, a, request.place))  # "turn the bench to face the fountain"
                and not ((says_other_place(request.low, scene) or _MOVED_AWAY.search(request.low))
                         and _near(scene, scene.asset(a.id) or a, request.place))]  # "... in the wrong car park"
@@ -533,6 +535,9 @@ def _numbers_used(effect: Effect, scene: Scene, place: str | None) -> list[float
     # "the car number 2": the number in the id of a thing the plan names
     counts += [float(m.group(1)) for c in effect.calls for v in c.args.values() for i in (v if isinstance(v, list) else [v])
                if isinstance(i, str) and (m := re.search(r"_(\d+)$", i)) and scene.asset(i) is not None]
+    # a grid of 12 in 4 columns is 3 rows
+    counts += [float(math.ceil(int(c.args["count"]) / int(c.args["columns"]))) for c in effect.calls
+               if isinstance(c.args.get("count"), int) and isinstance(c.args.get("columns"), int) and c.args["columns"] > 0]
     used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + counts
     used += _reach(effect, scene)  # "starting 20 m ahead of our car": where a layout begins and ends
     used += [math.hypot(float(c.args.get("east", 0)), float(c.args.get("north", 0)))  # a move at a slant

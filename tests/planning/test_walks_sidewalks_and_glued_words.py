@@ -6,6 +6,7 @@ places, and "that bench" is the one the last turn added."""
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import pytest
@@ -506,3 +507,36 @@ def test_back_from_the_kerb_is_away_from_the_road_and_a_roof_is_no_place(session
     moved = session.scene.asset("trash_bin_1")
     assert moved is not None and moved.pose.y < -5.5 - 0.5  # south, away from Main Street
     assert not session.submit("stick the bench up on the library roof").ok
+
+
+def test_how_many_with_nothing_named_counts_what_the_last_turn_made(session, campus):
+    assert session.submit("add three benches along the north side of lot A").ok
+    report = session.submit("how many are there now?")
+    assert report.answer is not None and report.answer.startswith("4 bench")
+
+
+def test_a_line_every_few_metres_from_one_thing_to_another(session, campus):
+    report = session.submit("cones every 3 m from the ego to the crossroads")
+    assert report.ok, report.error
+    cones = sorted(added(session, campus, "traffic_cone"), key=lambda c: c.pose.x)
+    assert len(cones) >= 15 and cones[0].pose.x > -60 and cones[-1].pose.x < 0  # between the two, not at either
+    assert all(abs(b.pose.x - a.pose.x - 3.0) < 0.5 for a, b in itertools.pairwise(cones))
+
+
+def test_a_cone_every_few_metres_six_of_them_is_a_spaced_line(session, campus):
+    report = session.submit("put a cone every 5 m ahead of the ego, six of them")
+    assert report.ok, report.error
+    cones = sorted(added(session, campus, "traffic_cone"), key=lambda c: c.pose.x)
+    assert len(cones) == 6 and all(abs(b.pose.x - a.pose.x - 5.0) < 0.5 for a, b in itertools.pairwise(cones))
+
+
+def test_a_grid_said_in_rows_of_so_many(session, campus):
+    report = session.submit("a grid of cones, 3 rows of 4, in lot B")
+    assert report.ok, report.error
+    cones = added(session, campus, "traffic_cone")
+    assert len(cones) == 12  # three rows of four, whichever way the lot runs
+    assert sorted([len({round(c.pose.x, 1) for c in cones}), len({round(c.pose.y, 1) for c in cones})]) == [3, 4]
+
+
+def test_a_word_found_only_inflected_is_no_slip(campus):
+    assert repair("scatter some rubble on the westbound lane", campus).text == "scatter some rubble on the westbound lane"

@@ -765,7 +765,7 @@ class Walk(NamedTuple):
     start: str | None
 
 
-def _named_at(scene: Scene, text: str, exclude: list[str]) -> str | None:
+def named_at(scene: Scene, text: str, exclude: list[str]) -> str | None:
     """The place, asset or ego named at the start of `text` ("the fountain", "bench_1", "our car")."""
     place = find_place(scene, text[: GOAL_REACH + 24])  # the first place said, not a longer one later
     if place is not None and place[1] <= GOAL_REACH:
@@ -789,14 +789,14 @@ def walk_said(r: Reading, scene: Scene, exclude: list[str]) -> Walk | None:
     going = GOES_TO.search(r.low)
     if going is None:
         return None
-    goal = _named_at(scene, r.low[going.end() :], exclude)
+    goal = named_at(scene, r.low[going.end() :], exclude)
     if goal is None:
         return None
     said_from = _FROM.search(r.low)
     start = None
     if said_from is not None:  # "from the bus stop to the library": the words up to where it goes
         upto = r.low.find(" to", said_from.end()) if said_from.start() < going.end() else -1
-        start = _named_at(scene, r.low[said_from.end() : upto if upto > 0 else None], exclude)
+        start = named_at(scene, r.low[said_from.end() : upto if upto > 0 else None], exclude)
     speed = ph.find_speed(r.text) or (FAST_WALK_MS if r.has(_FAST) else WALK_MS)
     return Walk({"kind": "follow_path", "to": goal, "speed": speed}, start if start != goal else None)
 

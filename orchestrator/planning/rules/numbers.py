@@ -166,13 +166,18 @@ def count(number: Number, what: str) -> int:
 
 
 # A spacing between things laid out ("4 m apart"): not a distance to a place.
-SPACING = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+apart\b")
+SPACING = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+apart\b"
+                     r"|\b(?:every|spaced(?: out)?(?: by)?|at)\s+(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b(?:\s+intervals?)?")
 
 
 def spacing_said(text: str) -> float | None:
-    """The spacing the words ask for between things laid out ("4 m apart"), in metres."""
-    said = SPACING.search(text.lower())
-    return float(said.group(1)) if said else None
+    """The spacing the words ask for between things laid out ("4 m apart", "every 3 m", "at 5 m
+    intervals"), in metres."""
+    for said in SPACING.finditer(text.lower()):
+        if said.group(0).startswith("at") and not said.group(0).endswith(("interval", "intervals")):
+            continue  # "at 5 m" is where, not how far apart
+        return float(said.group(1) or said.group(2))
+    return None
 
 
 # A speed's unit: metres a second however written ("m/s", "mps", "metres per second", "meters a sec"),

@@ -154,6 +154,8 @@ def _anchor_point(r: Reading, scene: Scene, after: list[ph.Mention], exclude: li
     return (things[0].pose.x, things[0].pose.y) if len(things) == 1 else None
 
 
+# Things laid "from X to Y": between the two, not at either.
+FROM_TO = re.compile(r"\bfrom\s+(?P<a>.+?)\s+(?:to|up to|as far as|until)\s+(?P<b>.+)$")
 # Where a request says a thing should go ("at the bus stp", "around the helipad", "by the eest gate"),
 # and sayings that only look like it ("at the moment", "by the way").
 PLACE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in front of|behind|opposite|close to)"

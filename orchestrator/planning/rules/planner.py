@@ -45,6 +45,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     drive_towards,
     edit_existing,
     kept_at,
+    named_at,
     new_pace,
     recolour,
     referenced,
@@ -55,6 +56,7 @@ from drivetwin.orchestrator.planning.rules.environment import LIGHTS_DOWN, envir
 from drivetwin.orchestrator.planning.rules.places import (
     EACH_PLACE,
     EDGE_OF,
+    FROM_TO,
     PLACE_SAID,
     Notes,
     cross_section,
@@ -851,25 +853,27 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     laid_out = (r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
                 or _AROUND_BY.search(r.low) is not None  # "the fountain should be ringed by six benches"
                 or (mention.plural and (r.has(("along",)) or _LINING.search(r.low) is not None))  # "trees along one side of lot A"
-                or (mention.plural and nb.spacing_said(r.low) is not None))  # "four cones 8 m apart": a line
+                or ((mention.plural or (find_count(r, mention) or 1) > 1 or r.has(("every",)))
+                    and nb.spacing_said(r.low) is not None))  # "four cones 8 m apart", "a cone every 5 m": a line
     moving = behaviour_kind(r, catalog()[mention.category]) not in (None, "parked")  # a row may be parked
     if (laid_out and not moving) or r.has(("to mark",)):
         row = _arrange(r, scene, memory, notes)
         # "six cones in a row and a sign next to them": the row, then the sign beside it (a ring's centre stays)
-        once = [c for c in _said_once(r) if c in row.args["categories"]] if row.args["shape"] != "ring" else []
+        once = [c for c in _said_once(r, scene) if c in row.args["categories"]] if row.args["shape"] != "ring" else []
         row = _arrange(replace(r, mentions=[m for m in r.mentions if m.category not in once]), scene, memory, notes) if once else row
         beside = [ToolCall(tool="add_asset", args={"category": c, "count": 1, "location": row.args["location"]}) for c in once]
         return [*_both_sides(row, r, scene), *beside]
     return _add(r, scene, memory, notes)
 
 
-def _said_once(r: Reading) -> list[str]:
+def _said_once(r: Reading, scene: Scene) -> list[str]:
     """Categories a clause names one of ("a sign") beside another it names several of ("six cones"):
     those stand beside the layout, not in it."""
     counts = {m.category: find_count(r, m) or (3 if m.plural else 1) for m in r.mentions}
     if len(counts) < 2 or max(counts.values()) < 2:
         return []
-    return [c for c, n in counts.items() if n == 1 and not any(m.plural for m in r.mentions if m.category == c)]
+    there = {m.category for m in r.mentions if not is_new(r, m, False, scene.count(m.category) > 0)}  # "from the bench"
+    return [c for c, n in counts.items() if n == 1 and c not in there and not any(m.plural for m in r.mentions if m.category == c)]
 
 
 # Filling a place with things: an addition, whatever the place is called ("the empty half").
@@ -1065,7 +1069,7 @@ CLOSURE_GAP_M = 0.1
 # "a grid with 3 columns"; "colum" is how the word is often typed.
 _COLUMNS = re.compile(r"\b(\d+|[a-z]+)\s+(?:columns?|colums?|cols?)\b")
 # "a 3 by 3 grid", "four-by-four", "2x3": rows by columns.
-_GRID_SIZE = re.compile(r"\b(\d{1,2}|[a-z]+)\s*(?:-?\s*by\s*-?|x|\*)\s*(\d{1,2}|[a-z]+)\b")
+_GRID_SIZE = re.compile(r"\b(\d{1,2}|[a-z]+)\s*(?:-?\s*by\s*-?|x|\*|\s+rows?\s+of\s+)\s*(\d{1,2}|[a-z]+)\b")
 # "Same again but bollards": the last turn's amount, of what this turn names.
 _SAME_AGAIN = re.compile(r"\b(?:same (?:again|as before|thing)|the same but|again but)\b")
 
@@ -1093,6 +1097,36 @@ def _grid_size(low: str) -> tuple[int, int, int, int] | None:
     return (rows, columns, said.start(), said.end()) if rows > 0 and columns > 0 else None
 
 
+# A line "from X to Y": its ends, a little short of each (never on top of what it runs from).
+FROM_TO_END_GAP_M = 3.0
+# With no spacing said, a line from one place to another has things this far apart, at most this many.
+FROM_TO_SPACING_M = 5.0
+MAX_FROM_TO = 50
+
+
+def _from_to(r: Reading, scene: Scene) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """The two ends of a line said "from X to Y" (places, things or the ego), each a little
+    short of what it names; None when the words name no two such ends."""
+    said = FROM_TO.search(r.low)
+    if said is None:
+        return None
+    points = []
+    for part in (said.group("a"), said.group("b")):
+        name = named_at(scene, f" {part}", [])
+        thing = scene.ego if name == "ego" else scene.asset(name) if name else None
+        mark = scene.landmark(name) if name and thing is None else None
+        if thing is None and mark is None:
+            return None
+        points.append((thing.pose.x, thing.pose.y) if thing is not None else mark.position if mark is not None else (0.0, 0.0))
+    (x1, y1), (x2, y2) = points
+    length = math.dist(points[0], points[1])
+    if length <= 2 * FROM_TO_END_GAP_M:
+        return None
+    ux, uy = (x2 - x1) / length, (y2 - y1) / length
+    gap = FROM_TO_END_GAP_M
+    return (x1 + ux * gap, y1 + uy * gap), (x2 - ux * gap, y2 - uy * gap)
+
+
 def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     size = _grid_size(r.low)
     mentions = [m for m in r.mentions if size is None or not size[2] <= m.start < size[3]]  # "four-by-four" is no SUV here
@@ -1106,7 +1140,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
             return m.start > by.start()
         return around_pos < 0 or m.start < around_pos or bool(_WITH.search(r.low[: m.start]))
 
-    layout = [m.category for m in mentions if laid_out(m)] or [mentions[0].category]
+    fresh = [m for m in mentions if is_new(r, m, False, scene.count(m.category) > 0)]  # "... from the bench": not laid out
+    layout = [m.category for m in mentions if laid_out(m) and (m in fresh or not fresh)] or [mentions[0].category]
     layout = list(dict.fromkeys(layout))
     args: dict[str, Any] = {"categories": layout[:4]}
     first = next(m for m in mentions if m.category == layout[0]) if any(laid_out(m) for m in mentions) else mentions[0]
@@ -1123,7 +1158,7 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         args["shape"] = "parking_row"  # "a row of parked cars in lot B": side by side in bays
     elif _LINING.search(r.low) and not r.has(("across",)):
         args["shape"] = "lane_edge"  # "line the road near the gate with cones", "cones along the kerb"
-    elif r.has(("rows", "across", "slalom")) or md.layout_said(r.low) in ("line", "row") or (
+    elif (r.has(("rows", "across", "slalom")) and not r.has(("grid",))) or md.layout_said(r.low) in ("line", "row") or (
             md.layout_said(r.low) is None and nb.spacing_said(r.low) is not None):
         args["shape"] = "line"
     elif r.has(("grid",)):
@@ -1182,6 +1217,16 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         args["radius"] = radius
     if r.has(("maintenance", "construction")):
         args["label"] = "maintenance"
+    ends = _from_to(r, scene) if args["shape"] == "line" else None
+    if ends is not None:  # "cones every 3 m from the ego to the crossroads": a line between the two, as many as fit
+        (x1, y1), (x2, y2) = ends
+        length = math.dist(ends[0], ends[1])
+        if "count" not in args:
+            args["count"] = max(2, min(MAX_FROM_TO, int(length / float(args.get("spacing") or FROM_TO_SPACING_M)) + 1))
+        args["spacing"] = round(length / (int(args["count"]) - 1), 2)
+        args["location"] = {"relation": "absolute", "x": round((x1 + x2) / 2, 2), "y": round((y1 + y2) / 2, 2)}
+        args["heading_deg"] = round(math.degrees(math.atan2(y2 - y1, x2 - x1)), 1)
+        return ToolCall(tool="arrange_assets", args=args)
     along = _heading_along(r, scene, args)
     length = (int(args.get("count") or 5) - 1) * float(args.get("spacing") or 0.0)
     place = args["location"] or {}

@@ -255,7 +255,7 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
             return Part(ToolCall(tool="find_landmarks", args={"nearest_to": anchor.name, **({"query": kind} if kind else {})}), anchor)
         if r.mentions or _ANY_KIND.search(r.masked) or anchor.kind != "landmark" or busy:
             return _around(r, scene, anchor)
-    return _what_or_where(r, scene, named, back, notes.subject)
+    return _what_or_where(r, scene, named, back, notes.subject, memory.last_touched())
 
 
 def _names_nothing(r: Reading) -> bool:
@@ -483,8 +483,9 @@ def _lanes(r: Reading, scene: Scene, back: Anchor | None) -> ToolCall:
 
 
 def _what_or_where(r: Reading, scene: Scene, named: Anchor | None, back: Anchor | None,
-                   notes_subject: list[str]) -> Part:
-    """A question with no relation: the thing named, where it is or how many there are."""
+                   notes_subject: list[str], recent: list[str]) -> Part:
+    """A question with no relation: the thing named, where it is or how many there are (of the
+    kind the last turn made or changed, when the question names none: "how many are there now?")."""
     if r.mentions:
         args: dict[str, Any] = {"category": r.mentions[0].category}
         if r.landmark:
@@ -502,6 +503,9 @@ def _what_or_where(r: Reading, scene: Scene, named: Anchor | None, back: Anchor 
     kind = md.kind_of({a.category for a in several}) if len(several) > 1 and _PLURAL_BACK.search(r.masked) else None
     if kind is not None:  # "the cars... where are they?": all of them
         return _found(ToolCall(tool="find_assets", args={"category": kind}), scene)
+    last = md.kind_of({a.category for i in recent if (a := scene.asset(i)) is not None}) if recent else None
+    if kind is None and last is not None and re.search(r"\bhow many\b", r.low) and not _ANY_KIND.search(r.masked):
+        return _found(ToolCall(tool="find_assets", args={"category": last}), scene)
     if back is not None and back.kind == "asset" and not _ANY_KIND.search(r.masked):
         return Part(ToolCall(tool="asset_properties", args={"asset": back.name}), back)  # "where is it now"
     if back is not None and back.kind == "landmark" and _WHERE.search(r.low):

@@ -122,6 +122,8 @@ def english_words() -> frozenset[str]:
     return frozenset(w for w in words if w.isalpha() and w.islower())
 
 
+# A word this long found only with an ending added is a word of its own ("scatter": "scattered").
+_INFLECTED_MIN = 5
 # Sounds people type that no word list holds: "oops, I meant bins" is not "loops".
 _INTERJECTIONS = frozenset({"oops", "whoops", "ugh", "argh", "hmm", "hmmm", "erm", "umm", "uhh", "meh", "nah",
                             "yeah", "yep", "nope", "lol", "haha", "yay", "oof", "welp", "okay", "ok"})
@@ -131,7 +133,9 @@ def is_english(low: str) -> bool:
     """An English word, also as written without its apostrophe ("dont", "isnt", "thats")."""
     words = english_words()
     low = low.replace("'", "")  # "don't" is "dont": a contraction, not a misspelt "donut"
-    return low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in words) or (low.endswith("s") and low[:-1] in words)
+    return (low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in words) or (low.endswith("s") and low[:-1] in words)
+            # a word the vocabulary holds only inflected ("scattered", not "scatter"): a word, not a slip for "scooter"
+            or (len(low) >= _INFLECTED_MIN and any(low + ending in words for ending in ("ed", "d", "ing", "s", "es"))))
 
 
 @dataclass
