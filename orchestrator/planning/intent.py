@@ -121,7 +121,9 @@ _WRAPPED = re.compile(
 # order to test the wipers"): the reason for a request, not a second request.
 _REASON = re.compile(
     r",?\s+(?:so that|so as to|in order to|in order that|so)\s+(?:(?:the |a |our |we |they |it |cars |traffic |people )?(?:[a-z'-]+\s+){0,2}\w*\s*)?"
-    r"(?:can|could|will|would|may|might|won'?t|can'?t|cannot|doesn'?t|don'?t|has to|have to|gets?|is|are)\b[^.;!?]*",
+    r"(?:can|could|will|would|may|might|won'?t|can'?t|cannot|doesn'?t|don'?t|has to|have to|gets?|is|are)\b[^.;!?]*"
+    # "... so that it blocks oncoming traffic": whatever follows "so that" says why
+    r"|,?\s+(?:so that|in order that)\s+[^.;!?]*",
     re.IGNORECASE,
 )
 
@@ -185,7 +187,9 @@ _CONTRAST = re.compile(
     rf"|,?\s+but\s+(?:keep|leave|spare)\s+(?={_DETERMINER})"
     # "paint the bench green and leave the bin as it is": what is left alone is excepted
     rf"|,?\s+and\s+(?:keep|leave)\s+(?={_DETERMINER}\b[^,.;]*\b(?:as (?:it|they) (?:is|are)|alone|untouched|where (?:it|they) (?:is|are)|in place|be)\b)"
-    r"|\s+rather\s+than\s+(?=(?:the|that|this|those|these|a|an|in|at|on|by|near|its|their)\b)"
+    r"|\s+rather\s+than\s+(?=[a-z])"
+    # "remove the cars from lot B, the SUV should stay": what stays is excepted
+    rf"|,\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:should|must|can|will|is to|has to)\s+(?:stay|remain|be left|be kept)\b)"
     r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
     re.IGNORECASE,
 )

@@ -540,3 +540,46 @@ def test_a_grid_said_in_rows_of_so_many(session, campus):
 
 def test_a_word_found_only_inflected_is_no_slip(campus):
     assert repair("scatter some rubble on the westbound lane", campus).text == "scatter some rubble on the westbound lane"
+
+
+# --- wishes, reasons and polite forms -------------------------------------------------------------
+
+
+def test_a_wish_for_a_thing_there_changes_it_and_a_reason_after_so_that_adds_nothing(session, campus):
+    report = session.submit("As a test designer I want passenger_car_1 put in the westbound lane of Main Street so that it blocks oncoming traffic.")
+    assert report.ok, report.error
+    car = session.scene.asset("passenger_car_1")
+    assert car is not None and 0 < car.pose.y < 3.5 and session.scene.count("passenger_car") == campus.count("passenger_car")
+    assert session.submit("I want the bench painted wooden").ok
+    assert session.scene.count("bench") == 1 and session.scene.asset("bench_1").appearance.material == "wood"
+    assert session.submit("I want the bench gone").ok and session.scene.count("bench") == 0
+
+
+def test_what_should_stay_is_spared(session, campus):
+    report = session.submit("Please remove both the cars from parking lot B only, the SUV should stay itself.")
+    assert report.ok, report.error
+    assert session.scene.asset("suv_1") is not None and session.scene.count("passenger_car") == 0
+
+
+def test_a_lot_wanted_emptied_is_emptied(session, campus):
+    report = session.submit("As a QA lead I want lot B emptied of vehicles so that the parking test starts from a blank lot.")
+    assert report.ok, report.error
+    assert session.scene.asset("suv_1") is None and session.scene.count("passenger_car") == 0
+
+
+def test_a_polite_wrapped_request_and_the_thing_as_well_are_both_done(session, campus):
+    report = session.submit("Would it be possible to take out the fire hydrant, and the stop sign as well?")
+    assert report.ok, report.error
+    assert session.scene.count("fire_hydrant") == 0 and session.scene.count("stop_sign") == 0
+
+
+def test_a_time_said_rather_than_another_is_that_time(session, campus):
+    assert session.submit("make it night").ok
+    report = session.submit("Actually, would you mind making it a bit earlier? Dusk rather than pitch dark.")
+    assert report.ok, report.error
+    assert session.scene.environment.time_of_day not in ("night", "22:00")
+
+
+def test_a_stop_the_ego_has_to_make_is_no_stop_sign(session, campus):
+    session.submit("I need the ego to have to stop for someone walking out in front of it.")
+    assert session.scene.count("stop_sign") == campus.count("stop_sign")

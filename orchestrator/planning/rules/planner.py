@@ -170,6 +170,10 @@ _STRICT_ADD = (
     "give me",
 )
 
+# Wishes that ask for a thing when it is new ("I want a bench"), a change when it is there ("I want the bench painted").
+_WISHES = ("i want", "i need", "we need", "we want", "there should be", "give me")
+_DEFINITE = re.compile(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z-]+\s+){0,2}$")
+_MOVE_VERBS = ("move", "shift", "relocate", "drag", "carry", "bring", "shove", "push", "slide", "nudge")
 _THE_NEW = re.compile(r"\b(?:the|that|this|those|these|our|my)\s+new(?:er|est)?\b")
 
 # Closing a road by its name or kind ("close Main Street at the east gate", "shut the lane").
@@ -285,8 +289,9 @@ _SUBJECTLESS = re.compile(r"\s*(?:needs?|has|have|should|must|ought|wants?)\s+(?
 _REPAINT = re.compile(r"\b(?:paint|repaint|recolou?r|colou?r)\b")
 _BUILDING = re.compile(r"\b(?:walls?|facade|façade|building|roof|doors?|windows?)\b")
 # A request asked as a question: "could you put the hydrant by the sign, and the bin by the bench?".
-_POLITE_REQUEST = re.compile(rf"\s*(?:please\s+)?(?:could|can|would|will)\s+(?:you|u)\s+(?:please\s+|kindly\s+|just\s+)?"
-                             rf"(?:{'|'.join(_VERBS)})\b")
+_POLITE_REQUEST = re.compile(rf"\s*(?:please\s+)?(?:(?:could|can|would|will)\s+(?:you|u|we)|(?:would|is)\s+it\s+be\s+possible\s+to"
+                             rf"|is\s+it\s+possible\s+to|would\s+you\s+mind)\s+(?:please\s+|kindly\s+|just\s+)?"
+                             rf"(?:{'|'.join(_VERBS)})\w*\b")
 # A command after a comma: "..., make it day", "..., please give me some clouds".
 _COMMA_COMMAND = re.compile(rf",\s+(?=(?:(?:please|pls|just|so|now|then|let'?s)\s+)*(?:{'|'.join(_VERBS)}|give)\b)")
 
@@ -317,7 +322,7 @@ def _comma_and(text: str) -> list[str]:
 # "and the trash bin", "plus a pedestrian", "+ two cones", "and both cars": a second thing for the
 # same verb (kept only where every part names a thing).
 _CONJUNCT = re.compile(r"\s*(?:,\s*)?(?:\band\b|\bplus\b|\+|&)\s+(?=[a-z0-9])")
-_VERB_AT = re.compile(rf"\b(?:{'|'.join(_VERBS)})\b")
+_VERB_AT = re.compile(rf"\b(?:{'|'.join(_VERBS)})\b(?! sign\b)")  # "the stop sign" names a thing, no verb
 # A list of things by commas, each with its own words ("paint the bench red, the bin blue and ...").
 _LISTED = re.compile(r"\s*,\s+(?=(?:the|a|an|one|two|three|four|five|\d+)\s)")
 # More of the thing just named, its noun left out: "another two", "two more", "one more", "another".
@@ -804,8 +809,11 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         # "cordon the tree by the library off with bollards": what is ringed stays named
         ringed = [m for m in r.mentions if around is not None and around.start() < m.start < instrument.start()]
         return _both_sides(_arrange(replace(r, mentions=[*laid, *ringed]), scene, memory, notes), r, scene)
-    # "the new fire hydrant" is the one just added, not one more
-    strict_add = ph.has_any(_THE_NEW.sub(" ", r.masked), tuple(w for w in _STRICT_ADD if w != "more")) or _more_of_a_thing(r) or filled
+    # "the new fire hydrant" is the one just added, not one more; "I want the bench painted" wants it changed
+    first = r.mentions[0] if r.mentions else None
+    definite = first is not None and scene.count(first.category) > 0 and bool(_DEFINITE.search(r.low[: first.start]))
+    said_add = tuple(w for w in _STRICT_ADD if w != "more" and not (definite and w in _WISHES))
+    strict_add = ph.has_any(_THE_NEW.sub(" ", r.masked), said_add) or _more_of_a_thing(r) or filled
     mention = r.mentions[0] if r.mentions else None
     # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
     present = mention is not None and scene.count(mention.category) >= (2 if mention.plural else 1)
@@ -829,7 +837,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             plural = counted.group(1) not in ("1", "one")
         named = ph.Mention(last.category, at, at, plural=plural)
         return _add(replace(r, mentions=[named]), scene, memory, notes)
-    if not fresh and not r.has(("add", "create", "spawn", "place a", "put a")):
+    moved_only = r.has(_MOVE_VERBS) and not r.has(("paint", "repaint", "colour", "color", "recolour", "make", "turn", "look"))
+    if not fresh and not r.has(("add", "create", "spawn", "place a", "put a")) and not moved_only:  # "move that wooden seat": which seat
         colour = recolour(r, scene, memory, notes)
         if colour is not None:
             return [colour]

@@ -371,7 +371,8 @@ def used_as_verb(low: str, start: int, end: int) -> bool:
     """Whether the catalog word at low[start:end] is a verb here: one that is also a verb ("stop
     the ego", "fence it off", "fence off the tree") before a noun phrase or at the start."""
     return low[start:end] in _VERB_NOUNS and bool(
-        start <= 1 or re.match(r"\s+(?:off\s+)?(the|our|it|that|ego|an?|some|\d+|two|three|four|five|six)\b", low[end:])
+        start <= 1 or re.search(r"\b(?:to|must|should|will|would|can|could|may|might|'ll|gonna|has to|have to|had to)\s+$", low[:start])
+        or re.match(r"\s+(?:off\s+)?(the|our|it|that|ego|an?|some|\d+|two|three|four|five|six)\b", low[end:])
         # "make the rain stop", "the snow should stop now": a weather word's verb, at the end of the clause
         or (re.search(r"\b(?:rain|raining|snow|snowing|fog|drizzle|storm|wind|sleet|hail)\s+(?:to\s+|should\s+|must\s+|will\s+)?$", low[:start])
             and re.match(r"\s*(?:now|please|pls|already)?\s*[.!?]*\s*$", low[end:])))
