@@ -583,3 +583,10 @@ def test_a_time_said_rather_than_another_is_that_time(session, campus):
 def test_a_stop_the_ego_has_to_make_is_no_stop_sign(session, campus):
     session.submit("I need the ego to have to stop for someone walking out in front of it.")
     assert session.scene.count("stop_sign") == campus.count("stop_sign")
+
+
+def test_a_slip_that_drops_a_letter_is_still_repaired_and_one_every_step_is_no_count(session, campus):
+    assert repair("remov the bench", campus).text == "remove the bench"  # "removed" is a word; "remov" is a slip
+    report = session.submit("put a barrier every 10 m along main street")
+    assert report.ok, report.error
+    assert len(added(session, campus, "road_barrier")) > 1

@@ -1159,6 +1159,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         count = None  # "some bollards all the way around it": as many as the ring needs
     if count == 1 and md.layout_said(" ".join(r.low[: mentions[0].start].split()[-3:])):
         count = None  # "a little grid of benches": the article counts the layout, not the benches
+    if count == 1 and r.has(("every",)):
+        count = None  # "a barrier every 10 m": one at each step, not one in all
     if count:
         args["count"] = count
     vehicles = all(catalog()[c].motion == "vehicle" for c in layout)

@@ -122,7 +122,8 @@ def english_words() -> frozenset[str]:
     return frozenset(w for w in words if w.isalpha() and w.islower())
 
 
-# A word this long found only with an ending added is a word of its own ("scatter": "scattered").
+# A word this long found only with an ending added is a word of its own ("scatter": "scattered"),
+# unless one slip away from a known word ("remov" is "remove", though "removed" is a word).
 _INFLECTED_MIN = 5
 # Sounds people type that no word list holds: "oops, I meant bins" is not "loops".
 _INTERJECTIONS = frozenset({"oops", "whoops", "ugh", "argh", "hmm", "hmmm", "erm", "umm", "uhh", "meh", "nah",
@@ -133,9 +134,13 @@ def is_english(low: str) -> bool:
     """An English word, also as written without its apostrophe ("dont", "isnt", "thats")."""
     words = english_words()
     low = low.replace("'", "")  # "don't" is "dont": a contraction, not a misspelt "donut"
-    return (low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in words) or (low.endswith("s") and low[:-1] in words)
-            # a word the vocabulary holds only inflected ("scattered", not "scatter"): a word, not a slip for "scooter"
-            or (len(low) >= _INFLECTED_MIN and any(low + ending in words for ending in ("ed", "d", "ing", "s", "es"))))
+    return low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in words) or (low.endswith("s") and low[:-1] in words)
+
+
+def _word_only_inflected(low: str) -> bool:
+    """Whether the vocabulary holds `low` only with an ending ("scattered", not "scatter")."""
+    words = english_words()
+    return len(low) >= _INFLECTED_MIN and any(low + ending in words for ending in ("ed", "d", "ing", "s", "es"))
 
 
 @dataclass
@@ -497,6 +502,8 @@ def repair(text: str, scene: Scene) -> Repaired:
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
         new = _place_glued(word, scene) or _repair_word(word, vocab) or _split_glued(word, scene, vocab)
+        if new is not None and " " not in new and _word_only_inflected(word.lower()) and edits(word.lower(), new) >= 2:
+            new = None  # "scatter" is a word the vocabulary holds only as "scattered", not a slip for "scooter"
         if new is not None and new not in _COMMAND_VERBS and _COMMAND_SLOT.search(text[: m.start()]) \
                 and _THING_NEXT.match(text[m.end() :]):
             # "plase the suv in lot A": a slip opening a clause before a thing is the command verb
