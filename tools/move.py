@@ -258,12 +258,20 @@ def goal_of(scene: Scene, asset: AssetInstance, name: str) -> tuple[float, float
 
 def start_towards(scene: Scene, category_name: str, name: str) -> Anchor:
     """Where a new walker (or vehicle) going to the target called `name` starts when no place is
-    said: the spot of its track kind (a sidewalk, a lane) nearest WALK_LEAD_M from the target,
-    facing it."""
+    said: the spot of its track kind (a sidewalk, a lane) nearest WALK_LEAD_M from the target, or
+    for a walker going to a place further than that from any sidewalk, WALK_LEAD_M from it on the
+    way from the nearest sidewalk; facing it."""
     target = resolve_target(scene, name)
     kind = track_kind_for(category(category_name)) or "sidewalk"
+    options = tracks(scene, kind)
+    nearest = min((nearest_on_polyline(target.x, target.y, t.polyline) for t in options), key=lambda p: p.distance, default=None)
+    if nearest is not None and nearest.distance > WALK_LEAD_M and kind == "sidewalk":
+        # a place off the sidewalks (a fountain on the grass): WALK_LEAD_M from it, on the way from the nearest sidewalk
+        f = WALK_LEAD_M / nearest.distance
+        x, y = target.x + f * (nearest.x - target.x), target.y + f * (nearest.y - target.y)
+        return Anchor(x, y, math.atan2(target.y - y, target.x - x), surface="any", surface_preferred=False)
     best: tuple[float, float, float] | None = None
-    for track in tracks(scene, kind):
+    for track in options:
         for step in range(int(polyline_length(track.polyline)) + 1):
             x, y, _ = point_along(track.polyline, float(step))
             miss = abs(math.dist((x, y), (target.x, target.y)) - WALK_LEAD_M)
