@@ -739,7 +739,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         return [ToolCall(tool="place_asset", args={"asset": i, "location": where}) for i in group]
     if kind == "parked":
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
-    if r.has(("move", "shift", "nudge", "push", "slide", "budge", "relocate")):
+    if r.has(lx.SHIFT_VERBS):
         if (said := _DESTINATION.search(r.low)) is not None:  # a place it goes to, said but not found: never a guess
             raise ph_error(f"I could not tell where {said.group(0)!r} is; name a place of this world or say how far which way")
         notes.guess("where to move it")

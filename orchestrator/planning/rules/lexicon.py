@@ -34,6 +34,7 @@ MOVE_WORDS = ("move", "shift", "relocate", "put", "place", "send", "bring", "tak
               "slide", "nudge", "scoot", "drag", "reposition", "park", "transfer", "should be", "would be",
               "belongs", "wants its", "closer to", "over to", " to the ", "to ")
 REVERSE_WORDS = ("reverse", "back up", "back out", "backwards", "backward", "back off", "go back")
+SHIFT_VERBS = ("move", "shift", "nudge", "push", "slide", "budge", "relocate", "drag", "carry", "shove")  # only ever a move
 TURN_WORDS = ("turn", "turned", "rotate", "rotated", "spin", "flip", "face", "faces", "facing", "wrong way", "other way",
               "around", "about face")
 STOP_WORDS = ("stop", "halt", "wait", "stand still", "stay put", "stay where", "freeze", "hold",

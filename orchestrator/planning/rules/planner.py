@@ -173,7 +173,6 @@ _STRICT_ADD = (
 # Wishes that ask for a thing when it is new ("I want a bench"), a change when it is there ("I want the bench painted").
 _WISHES = ("i want", "i need", "we need", "we want", "there should be", "give me")
 _DEFINITE = re.compile(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z-]+\s+){0,2}$")
-_MOVE_VERBS = ("move", "shift", "relocate", "drag", "carry", "bring", "shove", "push", "slide", "nudge")
 _THE_NEW = re.compile(r"\b(?:the|that|this|those|these|our|my)\s+new(?:er|est)?\b")
 
 # Closing a road by its name or kind ("close Main Street at the east gate", "shut the lane").
@@ -276,7 +275,7 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         elif verb is not None:
             lead = text[: verb.end()]
         # "Could you put the hydrant by the sign, and the bin beside the bench?": a request, every part of it
-        asked = i + 1 < len(parts) and "?" in parts[i + 1] and not _POLITE_REQUEST.match(text.lower())
+        asked = i + 1 < len(parts) and "?" in parts[i + 1] and asks(f"{text.lower()}?")
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text) for q in _comma_and(p)]
         out.extend((c, asked, intro) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,"), places))
@@ -288,10 +287,6 @@ _SUBJECTLESS = re.compile(r"\s*(?:needs?|has|have|should|must|ought|wants?)\s+(?
 # A new look asked for ("paint ...", "repaint ...", "recolour ..."), and a building's parts.
 _REPAINT = re.compile(r"\b(?:paint|repaint|recolou?r|colou?r)\b")
 _BUILDING = re.compile(r"\b(?:walls?|facade|façade|building|roof|doors?|windows?)\b")
-# A request asked as a question: "could you put the hydrant by the sign, and the bin by the bench?".
-_POLITE_REQUEST = re.compile(rf"\s*(?:please\s+)?(?:(?:could|can|would|will)\s+(?:you|u|we)|(?:would|is)\s+it\s+be\s+possible\s+to"
-                             rf"|is\s+it\s+possible\s+to|would\s+you\s+mind)\s+(?:please\s+|kindly\s+|just\s+)?"
-                             rf"(?:{'|'.join(_VERBS)})\w*\b")
 # A command after a comma: "..., make it day", "..., please give me some clouds".
 _COMMA_COMMAND = re.compile(rf",\s+(?=(?:(?:please|pls|just|so|now|then|let'?s)\s+)*(?:{'|'.join(_VERBS)}|give)\b)")
 
@@ -837,7 +832,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             plural = counted.group(1) not in ("1", "one")
         named = ph.Mention(last.category, at, at, plural=plural)
         return _add(replace(r, mentions=[named]), scene, memory, notes)
-    moved_only = r.has(_MOVE_VERBS) and not r.has(("paint", "repaint", "colour", "color", "recolour", "make", "turn", "look"))
+    moved_only = r.has(lx.SHIFT_VERBS) and not r.has(("paint", "repaint", "colour", "color", "recolour", "make", "turn", "look"))
     if not fresh and not r.has(("add", "create", "spawn", "place a", "put a")) and not moved_only:  # "move that wooden seat": which seat
         colour = recolour(r, scene, memory, notes)
         if colour is not None:
