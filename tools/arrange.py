@@ -34,6 +34,10 @@ PARKING_BAY_WIDTH_M = 2.7
 PARKING_SIDE_GAP_M = 0.6
 # Row positions tried across a parking lot, on a grid this fine.
 PARKING_SEARCH_STEP_M = 1.0
+# A ring with no count asked for may leave out the positions its things cannot stand on (grass
+# round a bench by the road) when at least this share of it, and MIN_RING things, still stand.
+RING_KEPT_SHARE = 0.5
+MIN_RING = 4
 DEFAULT_ROW = 4
 DEFAULT_LINE = 5
 
@@ -421,6 +425,8 @@ class ArrangeAssets(Tool[ArrangeArgs]):
         movable = args.shape in ("line", "grid") and args.location.relation != "absolute"
         shifts = _SHIFTS if movable else [(0.0, 0.0)]
         fitted = _first_fit(self._placed, args, scene, groups, shifts, refusals)
+        if fitted is None and args.shape == "ring" and args.count is None:
+            fitted = self._partial_ring(args, scene, groups[0][0][0])  # "cones around the bench": on the paving
         if fitted is None:
             if across:
                 raise _across_refusal(args, sizes, refusals[0])
@@ -432,6 +438,27 @@ class ArrangeAssets(Tool[ArrangeArgs]):
         kinds = "/".join(c.name for c in cats)
         return ToolResult(edit, f"arranged {len(placed)} {kinds} as a {args.shape} at ({cx:.1f}, {cy:.1f}){note}",
                           (cx, cy), {"ids": [a.id for a in placed]})
+
+    @classmethod
+    def _partial_ring(cls, args: ArrangeArgs, scene: Scene, poses: list[Pose]
+                      ) -> tuple[list[AssetInstance], list[Pose], str] | None:
+        """A ring with no count asked for, without the positions where its things cannot stand
+        (a cone on the grass round a bench by the road), when at least RING_KEPT_SHARE of it
+        stands; None when any other rule refuses a position or too little is left."""
+        kept: list[Pose] = []
+        for pose in poses:
+            try:
+                cls._placed(args, scene, [*kept, pose])
+            except RuleViolation as exc:
+                if exc.rule != "surface":
+                    return None
+                continue
+            kept.append(pose)
+        if len(kept) < max(MIN_RING, math.ceil(RING_KEPT_SHARE * len(poses))):
+            return None
+        left_out = len(poses) - len(kept)
+        return cls._placed(args, scene, kept), kept, (
+            f", leaving out {left_out} of the ring's {len(poses)} positions where it cannot stand" if left_out else "")
 
     @staticmethod
     def _placed(args: ArrangeArgs, scene: Scene, poses: list[Pose]) -> list[AssetInstance]:

@@ -198,14 +198,23 @@ def not_around(low: str, centre: tuple[float, float] | None, added: Iterable[Ass
     """New things put "around" a place or thing (a ring, a cordon) that stand on one side of it:
     the widest empty arc seen from its centre must be under half a turn."""
     placed = [a for a in added if a.id != "ego"]
-    if centre is None or len(placed) < MIN_LAYOUT or _AROUND.search(low) is None:
+    said = _AROUND.search(low)
+    if centre is None or len(placed) < MIN_LAYOUT or said is None:
         return []
+    if said.group(1).endswith(" off") and _in_a_line(placed):
+        return []  # "cordon off the east gate": a way through closed by a line across it
     angles = sorted(math.atan2(a.pose.y - centre[1], a.pose.x - centre[0]) for a in placed)
     gaps = [b - a for a, b in itertools.pairwise(angles)] + [angles[0] + math.tau - angles[-1]]
     if max(gaps) >= math.pi:
         empty = math.degrees(max(gaps))
         return [f"you asked for them around it, but the plan leaves an empty side of {empty:.0f} degrees"]
     return []
+
+
+def _in_a_line(placed: list[AssetInstance]) -> bool:
+    centred = np.array([(a.pose.x, a.pose.y) for a in placed]) - np.mean([(a.pose.x, a.pose.y) for a in placed], axis=0)
+    spread = np.linalg.svd(centred, compute_uv=False)
+    return bool(spread[0] > 0 and spread[1] / spread[0] <= LINE_SPREAD)
 
 
 def wrong_heading(low: str, placed: Iterable[AssetInstance]) -> list[str]:

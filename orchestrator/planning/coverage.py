@@ -490,7 +490,9 @@ def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory:
         return []
     said = pointer.group(1)
     out = []
-    strays = sorted({a.category for a in scope.touched if a.category not in kinds and a.id != "ego"})
+    around = {str((c.args.get("location") or {}).get("target")) for c in scope.calls if c.tool in ("add_asset", "arrange_assets")}
+    placed_by = {a.id for a in scope.added} if around & set(earlier) else set()  # "cordon it off with cones": it is where
+    strays = sorted({a.category for a in scope.touched if a.category not in kinds and a.id != "ego" and a.id not in placed_by})
     if strays:
         out.append(f"you said {said!r} after a turn about {', '.join(sorted(str(k) for k in kinds))}, "
                    f"but the plan acts on {', '.join(strays)}")

@@ -35,6 +35,7 @@ from drivetwin.orchestrator.planning.scenario_manoeuvres import (
     read_manoeuvre,
     refuse_unsupported,
 )
+from drivetwin.orchestrator.planning.scenario_newcomer import arrive, as_story, brings_in, hazard_story, parked_only
 from drivetwin.orchestrator.planning.scenario_triggers import (
     DELAY,
     NOT_POSSIBLE_DELAY,
@@ -77,7 +78,7 @@ def normalised(prompt: str, scene: Scene) -> str:
     low = re.sub(r"\b(" + "|".join(_NUMBER_WORDS) + r")\b(?=\s*(?:" + _UNIT[3:-1] + r"|,|$| and| " + _LIGHT_STATE + r"))",
                  lambda m: str(_NUMBER_WORDS[m.group(1)]), low)
     low = re.sub(r"(\d)(m|s|secs?|sec|seconds?|metres?)\b", r"\1 \2", low)
-    low = _stop_at_place(low, scene)
+    low = hazard_story(_stop_at_place(low, scene))
     return re.sub(r"\s+", " ", low.replace("²", "2").replace("^2", "2").replace(".", " . ")).strip()
 
 
@@ -205,17 +206,23 @@ class ScenarioReader:
         started = time.perf_counter()
         scene = context.scene
         low = normalised(prompt, scene)
-        if _ADDING.match(low):
+        story = as_story(low)  # "add a pedestrian that crosses when ...": a newcomer's story
+        if _ADDING.match(low) and story is None:
             raise PlanningError("this adds an asset; add it first, then describe what it does over time")
-        timing = split(low)
+        timing = split(story or low)
         refuse_unsupported(timing.action)
         first, later = steps(_LEADING.sub("", timing.action.strip(" ,.")).strip())
-        readings: list[tuple[list[ToolCall], int]] = []
-        for actor, manoeuvre, spec, done_to in _readings(first, scene):
-            calls, defaults = _calls(actor, manoeuvre, spec, timing, done_to, scene)
-            for words, gap in later:
-                calls = _followed_by(calls, actor, words, gap, scene)
-            readings.append((calls, defaults + manoeuvre.defaults + int(timing.vague)))
+        arrived: list[ToolCall] = []
+        try:
+            readings = _stories(first, later, timing, scene)
+        except _NoActor as missing:
+            if not brings_in(missing.subject):
+                raise
+            # "a pedestrian steps out in front of the ego" with none there: one is brought in
+            arrival = arrive(missing.subject, first[missing.verb_at :], scene, context.registry)
+            arrived = [arrival.call]
+            readings = _stories(f"{arrival.id} {first[missing.verb_at :]}", later, timing, arrival.scene)
+        readings = [([*arrived, *calls], defaults) for calls, defaults in readings]
         fine = [(c, d) for c, d in readings if context.check(c) is None]
         step = TraceStep(level="scenario", input=f"action {first!r}; then {later}; trigger {timing.trigger!r}; "
                          f"delay {timing.delay}", output=f"{len(fine)} of {len(readings)} readings accepted by a dry run",
@@ -233,6 +240,25 @@ class ScenarioReader:
                     trace=[step])
 
 
+def _stories(first: str, later: list[tuple[str, float | None]], timing: Timing, scene: Scene) -> list[tuple[list[ToolCall], int]]:
+    """Each reading of the story's calls with the defaults it needed: its first step, then each later one."""
+    readings: list[tuple[list[ToolCall], int]] = []
+    for actor, manoeuvre, spec, done_to in _readings(first, scene):
+        calls, defaults = _calls(actor, manoeuvre, spec, timing, done_to, scene)
+        for words, gap in later:
+            calls = _followed_by(calls, actor, words, gap, scene)
+        readings.append((calls, defaults + manoeuvre.defaults + int(timing.vague)))
+    return readings
+
+
+class _NoActor(PlanningError):
+    """No actor in the scene fits the subject (`subject`, its verb at `verb_at` of the action)."""
+
+    def __init__(self, message: str, subject: str, verb_at: int) -> None:
+        super().__init__(message)
+        self.subject, self.verb_at = subject, verb_at
+
+
 def _readings(action: str, scene: Scene, doer: AssetInstance | None = None
               ) -> list[tuple[AssetInstance, Manoeuvre, dict[str, Any], str | None]]:
     """Each (actor, manoeuvre, spec, what it is done to) the action clause may mean, up to three
@@ -247,8 +273,8 @@ def _readings(action: str, scene: Scene, doer: AssetInstance | None = None
             actors, what = [doer], doer.id
         else:
             actors, what = candidates(subject or "the ego", scene, moving_manoeuvre=True)
-        if not actors:
-            raise PlanningError(f"there is no {what} in the scene to act; {POSSIBLE}")
+        if not actors or (brings_in(subject) and parked_only(actors, read_manoeuvre(action[verb_at:], motion(actors[0])).kind)):
+            raise _NoActor(f"there is no {what} in the scene to act; {POSSIBLE}", subject, verb_at)
         kind = motion(actors[0])
     manoeuvre = read_manoeuvre(action[verb_at:] if kind != "light" else action, kind)
     out = []

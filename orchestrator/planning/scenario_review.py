@@ -73,9 +73,11 @@ def _other_story(prompt: str, plan: Plan, context: PlanContext) -> MissedScenari
 
 
 def read_as_scenario(prompt: str, plan: Plan, context: PlanContext) -> bool:
-    """Whether `plan` only writes the storyboard and is what the scenario reader reads from
-    `prompt` (the same calls up to defaults): such a plan needs no static check."""
-    if not plan.calls or any(c.tool not in SCENARIO_TOOLS for c in plan.calls):
+    """Whether `plan` writes the storyboard (bringing in its newcomer, if any) and is what the
+    scenario reader reads from `prompt` (the same calls up to defaults): such a plan needs no
+    static check."""
+    if not any(c.tool in SCENARIO_TOOLS for c in plan.calls) or any(
+            c.tool not in (*SCENARIO_TOOLS, "add_asset") for c in plan.calls):
         return False
     try:
         reading = ScenarioReader().plan(prompt, context)

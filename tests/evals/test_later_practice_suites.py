@@ -26,6 +26,7 @@ from drivetwin.evals import (
     practice14_source,
     practice15_source,
     practice16_source,
+    practice17_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -71,6 +72,7 @@ BRIEFS: dict[str, Brief] = {
     "practice14": Brief(250, 8, 8, practice14_source, multi_turn=30, planned=12, compound=15),
     "practice15": Brief(250, 8, 8, practice15_source, multi_turn=30, planned=12, compound=15),
     "practice16": Brief(250, 8, 8, practice16_source, multi_turn=30, planned=12, compound=15),
+    "practice17": Brief(250, 8, 8, practice17_source, multi_turn=30, planned=12, compound=15),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)

@@ -962,6 +962,8 @@ def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     place named: every lane of the road there ("close Main Street east of the crossroads")."""
     # What is kept out ("closed to traffic") is not what the line is made of.
     layout = [m for m in r.mentions if _closes_roads(m.category)]
+    made_of = [m for m in layout if re.search(r"\bwith (?:\w+ )?$", r.low[: m.start])]
+    layout = made_of or layout  # "cordon off the gate with cones": cones, not the barriers "cordon off" names
     kinds = [m.category for m in layout] or ["road_barrier"]
     where = location(r, scene, memory, notes, compass=False) or _fallback_place(memory)
     args: dict[str, Any] = {"categories": kinds[:4], "shape": "line", "location": where}
@@ -1198,6 +1200,13 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
             where = {"relation": "at", "target": named[-1].id}
         elif where is None and r.has(("it", "them")) and notes.subject and scene.asset(notes.subject[0]) is not None:
             where = {"relation": "at", "target": notes.subject[0]}  # "the hydrant is being serviced: ring it with bollards"
+        elif (where is None or where.get("relation") == "absolute") and r.has(("it", "them", "that", "this")) and (
+                recent := [i for i in memory.last_touched() if (a := scene.asset(i)) is not None and a.category not in layout]):
+            where = {"relation": "at", "target": recent[0]}  # "cordon it off": what the last turn touched, not where it stood
+        elif where is None and notes.place is None and r.has(("it", "them", "that", "this")) and not r.has(lx.WORKS_WORDS):
+            # "cone that off" with nothing before it to ring: never a ring in the middle of the map
+            raise PlanningError(f"I cannot tell what to put the {' and '.join(c.replace('_', ' ') + 's' for c in layout)} "
+                                "around; name the thing or place, e.g. 'cone off the bench'")
         elif where is None or r.has(lx.WORKS_WORDS):
             focus_target = _maintenance_target(scene, memory)
             if focus_target is not None and where is None:

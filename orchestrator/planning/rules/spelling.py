@@ -227,6 +227,8 @@ def is_known(word: str, vocab: frozenset[str]) -> bool:
         return True
     for suffix in _SUFFIXES:
         if w.endswith(suffix) and len(w) - len(suffix) >= 3:
+            if suffix in ("er", "ers") and english_words() and not is_english(w):
+                continue  # "closer" is a word, "coner" a slip for cone: no thing takes "-er"
             stem = w[: -len(suffix)]
             doubled = stem[-1:] == stem[-2:-1] and stem[-1:] not in "wxy"  # "running", never "snowwing"
             if suffix == "ing" and stem.endswith("e") and not stem.endswith("ee"):
@@ -414,6 +416,24 @@ _RIGHT_THERE = re.compile(r"(?<!turn )(?<!turns )(?<!turning )(?<!go )(?<!goes )
 
 # "turn of the street light": "of" right after a switching verb is a slip for "off".
 _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
+# A marker's name said as the verb: "cone that off", "bollard off the hydrant" ring it with them.
+_MARKER_OFF = re.compile(r"\b(cone|bollard|barrier)s?\s+((?:[\w'-]+\s+){0,4}?)off\b(?!\s+with\b)", re.IGNORECASE)
+
+
+def _marker_off(text: str) -> str:
+    """ "cone that off" as "cordon that off with cones", "cone off the bench" as "cordon off the
+    bench with cones" (what it is done with at the end of its clause)."""
+    for m in _MARKER_OFF.finditer(text):
+        if not re.search(r"(?:^|[,.;:!?]|\b(?:and|then|now|so|pls|please|just|can you|could you|let's|go|to))\s*$",
+                         text[: m.start()], re.IGNORECASE):
+            continue  # "take the cones off the road": the things, no verb
+        what = f" with {m.group(1).lower()}s"
+        if m.group(2):
+            return text[: m.start()] + f"cordon {m.group(2)}off{what}" + _marker_off(text[m.end() :])
+        end = re.search(r"\s*(?:[,.;!?]|\b(?:and|then|but|so)\b)|$", text[m.end() :])
+        cut = m.end() + (end.start() if end else 0)
+        return text[: m.start()] + "cordon off" + text[m.end() : cut] + what + _marker_off(text[cut:])
+    return text
 
 
 # Words voice typing writes for their sound-alikes, where the words around them leave no doubt:
@@ -479,6 +499,13 @@ def _verb_of(m: re.Match[str]) -> str:
 # Where a clause's command verb stands, and the thing that follows one.
 _COMMAND_SLOT = re.compile(r"(?:^|[,.;:!?]|\b(?:and|then|now|so|pls|please|just))\s*$", re.IGNORECASE)
 _THING_NEXT = re.compile(r"\s+(?:the|a|an|all|every|some|that|those|this|these|\d+)\b", re.IGNORECASE)
+# A command verb and its article or count: the slip after it names the thing ("add a coner": cone).
+_THING_SLOT = re.compile(rf"\b(?:{'|'.join(_COMMAND_VERBS)})\s+(?:a|an|the|some|another|\d+)\s+$", re.IGNORECASE)
+
+
+@cache
+def _thing_words() -> tuple[str, ...]:
+    return tuple(sorted({w.lower() for cat in catalog().values() for w in cat.words if " " not in w}))
 
 
 def repair(text: str, scene: Scene) -> Repaired:
@@ -490,6 +517,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _THERE_SLIP.sub("there", text)
     text = _THING_PRONOUN.sub("it", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
+    text = _marker_off(text)
     text = _RIGHT_THERE.sub("", text)
     text = _SLASH_COMMAND.sub("", text)
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
@@ -510,6 +538,9 @@ def repair(text: str, scene: Scene) -> Repaired:
             # it is as near to as to anything else ("place", not "please")
             near = [v for v in _COMMAND_VERBS if edits(word.lower(), v) <= edits(word.lower(), new)]
             new = min(near, key=lambda v: edits(word.lower(), v)) if near else new
+        if new is not None and new not in _thing_words() and _THING_SLOT.search(text[: m.start()]):
+            near = [t for t in _thing_words() if edits(word.lower(), t) <= edits(word.lower(), new)]
+            new = near[0] if len(near) == 1 else new  # one thing as near as the other word: the thing
         if new is None or new == word.lower():
             return word
         repairs.append(f"{word} -> {new}")
