@@ -187,10 +187,12 @@ def wrong_layout(masked: str, added: Iterable[AssetInstance]) -> list[str]:
             out.append(f"you asked for a {said}, but the plan does not put them round a centre")
     wanted = nb.spacing_said(masked)
     if wanted is not None:
-        axis = np.linalg.svd(centred)[2][0]
-        gaps = np.diff(np.sort(centred @ axis))
-        if abs(float(np.median(gaps)) - wanted) > SPACING_TOLERANCE * wanted:
-            out.append(f"you asked for {wanted:g} m apart, but the plan spaces them {float(np.median(gaps)):.1f} m")
+        # each one's nearest neighbour: the spacing of a line and of a grid's rows alike
+        apart = np.hypot(*(centred[:, None, :] - centred[None, :, :]).transpose(2, 0, 1))
+        np.fill_diagonal(apart, np.inf)
+        gap = float(np.median(apart.min(axis=1)))
+        if abs(gap - wanted) > SPACING_TOLERANCE * wanted:
+            out.append(f"you asked for {wanted:g} m apart, but the plan spaces them {gap:.1f} m")
     return out
 
 

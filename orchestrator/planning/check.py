@@ -263,7 +263,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                        + ", ".join(sorted(plan_categories)))
     totals = set(_totals(request, effect).values())  # "there should be exactly four cones": how many are left
     factors = [1.0, *(f for unit, f in UNIT_FACTORS.items() if re.search(unit, request.low))]
-    used = _numbers_used(effect, scene, request.place) if request.numbers else []
+    used = _numbers_used(effect, scene, request.place, ego=" ego " in request.masked) if request.numbers else []
     missing = [n for n in request.numbers if not _accounts_for(n, used, factors) and n not in totals]
     if missing and effect.calls:
         out.append("the plan leaves out " + ", ".join(f"{n:g}" for n in missing))
@@ -522,8 +522,9 @@ def _numbers_in_args(value: Any) -> list[float]:
     return []
 
 
-def _numbers_used(effect: Effect, scene: Scene, place: str | None) -> list[float]:
-    """Every number the plan can be said to account for: its arguments and what they come to."""
+def _numbers_used(effect: Effect, scene: Scene, place: str | None, ego: bool = False) -> list[float]:
+    """Every number the plan can be said to account for: its arguments and what they come to
+    (with `ego`, how far what it adds stands from the ego: "a line of cones 20 m ahead of the ego")."""
     # how many things the plan adds, takes and changes, and how many calls it makes ("two things for my notes: ...")
     counts = [float(len(effect.added)), float(len(effect.removed)), float(len(effect.changed)), float(len(effect.calls))]
     # "the two sedans and the SUV": how many of each kind the plan takes, adds or changes
@@ -540,6 +541,10 @@ def _numbers_used(effect: Effect, scene: Scene, place: str | None) -> list[float
                if isinstance(c.args.get("count"), int) and isinstance(c.args.get("columns"), int) and c.args["columns"] > 0]
     used = [n for c in effect.calls for n in _numbers_in_args(c.args)] + counts
     used += _reach(effect, scene)  # "starting 20 m ahead of our car": where a layout begins and ends
+    if ego and effect.added and scene.asset("ego") is not None:
+        me = scene.ego.pose
+        xs, ys = [a.pose.x for a in effect.added], [a.pose.y for a in effect.added]
+        used.append(float(round(math.dist((me.x, me.y), (sum(xs) / len(xs), sum(ys) / len(ys))))))
     used += [math.hypot(float(c.args.get("east", 0)), float(c.args.get("north", 0)))  # a move at a slant
              for c in effect.calls if c.tool == "move_asset" and "east" in c.args and "north" in c.args]
     return used

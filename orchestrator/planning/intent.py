@@ -67,7 +67,7 @@ KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(
                        r" (?:plenty|enough|all (?:we|i) need)\b))(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
-_QUESTION_START = re.compile(r"(?:^|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question),?\s+)?(which|what|in which|in what|where|how|is there|are there|is the|are the|does|do any|who|whats|wheres|hows|whos"
+_QUESTION_START = re.compile(r"(?:^\s*|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question)\s*,?\s+)*(which|what|in which|in what|where|how|is there|are there|is the|are the|does|do any|who|whats|wheres|hows|whos"
                              r"|is anything|is any|is anyone|is anybody|is someone|is somebody|is nobody|are any|is something|has anything|has anyone|have any|do the)\b"
                              # "the gates, where are they": the thing first, the question after it
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
@@ -79,7 +79,10 @@ _INFO = re.compile(r"(?<!s )\b(tell me|show me|let me know|inform (?:me|us)|advi
                    r"distance (?:between|from)|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
-                   r"(to|i|we|me) know (what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"
+                   r"(to|i|we|me) know (?:[a-z]+ )?(what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"
+                   # "kindly advise the location of ...", "need suv_1's pose in the map frame": where something is
+                   r"advise (?:me |us )?(?:of |on |as to )?the (?:the )?(?:location|position|whereabouts|distance|number)|"
+                   r"'s (?:pose|position|coordinates|location|whereabouts|heading)(?!\s+(?:should|must|needs?|has|is to|ought|will|would|can|could|to)\b)|"
                    r"(?:write|note|jot|put) (?:it )?down (?:what|which|where|how|whether|if)|"  # "asked me to write down which lane ..."
                    # "I'd like to confirm there are no cars in it", "just want to be sure there isn't one": verifying
                    r"(?:confirm|verify|double[- ]check|be (?:sure|certain)) (?:that |whether |if )?(?:there (?:is|are|was|were|'s)|"

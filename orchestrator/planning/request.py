@@ -159,6 +159,8 @@ def _without_checked_amounts(text: str) -> str:
 def _is_reference(text: str, start: int) -> bool:
     # "car 2", "lot 3", "the 2nd": a number that names something rather than an amount.
     before = text[:start].split()[-1:]
+    if re.search(r"\b(?:instead of|rather than|in place of|(?:faster|slower|quicker|bigger|smaller) than)\s*$", text[:start]):
+        return True  # "8 m/s instead of 5", "faster than 5": what it is now, not what is wanted
     if re.match(r"[\d.,e+-]*\s*(m|metres?|meters?|km|kph|mph|degrees?|deg|seconds?|s)\b", text[start:]):
         return False  # "the truck 8 m ahead": an amount with its unit
     return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in _LABELS)

@@ -26,6 +26,7 @@ import re
 from collections.abc import Callable
 from functools import cache, lru_cache
 
+from drivetwin.orchestrator.planning.intent import asks, commands
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules.spelling import (
     Repaired,
@@ -144,6 +145,14 @@ def _suspects(text: str, scene: Scene, vocab: frozenset[str]) -> list[str]:
     return out
 
 
+# What may stand before the first word of a request.
+_OPENING = re.compile(r"(?:^|[,.;:!?])\s*(?:(?:please|pls|ok|okay|so|now|and|then|just)\s+)?$", re.IGNORECASE)
+
+
+def _place_words(scene: Scene) -> frozenset[str]:
+    return frozenset(w.lower() for lm in scene.landmarks for name in lm.names() for w in _WORD.findall(name))
+
+
 def _cased(candidate: str, typed: str) -> str:
     return candidate.capitalize() if typed[:1].isupper() else candidate
 
@@ -165,6 +174,12 @@ def respell(text: str, scene: Scene, score: Scorer) -> Repaired:
             tried.add((typed, current))
             at = re.compile(rf"(?<![A-Za-z']){re.escape(typed)}(?![A-Za-z'])")
             options = candidates(typed, vocab)
+            found = at.search(current)
+            if found is not None and _OPENING.search(current[: found.start()]):
+                # "Quita el fire hydrant": the word where a request's verb goes is a verb or a
+                # question word ("tern the suv": turn), never a place's name or a stray ("Gate", "Good")
+                options = tuple(c for c in options if c not in _place_words(scene) and (commands(f"{c} it") or asks(f"{c} it"))
+                                and edits(typed.lower(), c) <= _slips_allowed(typed.lower()))  # "Hace" is no "Hows"
             if not options or not at.search(out):
                 continue  # nothing near, or the rules' own repair made it (theirs to report)
             spelt = [at.sub(_cased(c, typed), current, count=1) for c in options]

@@ -166,8 +166,8 @@ def count(number: Number, what: str) -> int:
 
 
 # A spacing between things laid out ("4 m apart"): not a distance to a place.
-SPACING = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+apart\b"
-                     r"|\b(?:every|spaced(?: out)?(?: by)?|at)\s+(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b(?:\s+intervals?)?")
+SPACING = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+(?:apart|spacing|gaps?)\b"
+                     r"|\b(?:every|spaced(?: out)?(?: by)?|at|spacing(?: of)?|gaps? of)\s+(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b(?:\s+intervals?)?")
 
 
 def spacing_said(text: str) -> float | None:

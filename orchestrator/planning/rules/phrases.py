@@ -160,7 +160,7 @@ def find_landmark(scene: Scene, text: str) -> tuple[str, int] | None:
 
 def find_asset_ids(scene: Scene, text: str) -> list[str]:
     """Asset ids written out literally in `text` (e.g. passenger_car_2)."""
-    words = set(tokens(text))
+    words = {t.removesuffix("'s") for t in tokens(text)}  # "suv_1's pose": suv_1
     return [a.id for a in scene.all_assets() if a.id in words and a.id != EGO_ID]
 
 

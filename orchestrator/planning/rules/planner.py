@@ -351,7 +351,8 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
         noun = ph.normalise(parts[0])[said[0].start : said[0].end].strip()  # the text find_categories indexes
         parts[1:] = [_MORE_OF.sub(lambda m: f"{m.group(0)} {noun}", p, count=1) if not ph.find_categories(p) else p
                      for p in parts[1:]]
-    if len(parts) < 2 or not all(ph.find_categories(p) or ph.has_any(p.lower(), ph.EGO_WORDS) for p in parts):
+    if len(parts) < 2 or not all(ph.find_categories(p) or ph.has_any(p.lower(), ph.EGO_WORDS)
+                                 or re.search(r"\b[a-z]+(?:_[a-z]+)*_\d+\b", p.lower()) for p in parts):
         return [clause]  # each part names a thing ("park the SUV in lot A and the ego in lot B")
     particle = re.match(r"\s+(?:out|away|off|down|up|rid of)\b", clause[verb.end():], re.IGNORECASE)
     lead = clause[: verb.end() + (particle.end() if particle else 0)]  # "take out the hydrant and the sign": both taken out
@@ -867,7 +868,26 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         row = _arrange(replace(r, mentions=[m for m in r.mentions if m.category not in once]), scene, memory, notes) if once else row
         beside = [ToolCall(tool="add_asset", args={"category": c, "count": 1, "location": row.args["location"]}) for c in once]
         return [*_both_sides(row, r, scene), *beside]
+    if _unknown_verb(r, scene) is not None and not strict_add and not r.has(lx.ADD_WORDS) and scene.count(mention.category):
+        return None  # "quita el fire hydrant", "strip all the vegetation out": a verb not known is never "add"
     return _add(r, scene, memory, notes)
+
+
+# Words that may open a command before its verb ("ok so now just ...").
+_OPENERS = frozenset({"ok", "okay", "so", "now", "then", "and", "please", "pls", "plz", "just", "right", "well", "oh", "hey", "hi",
+                      "hmm", "um", "uh", "erm", "oops", "yeah", "yep"})
+
+
+def _unknown_verb(r: Reading, scene: Scene) -> str | None:
+    """A word before the first thing named that the rule lexicon does not know, when that thing
+    is said as one already there ("quita el fire hydrant", "strip all the vegetation"): where
+    its verb would be; None otherwise."""
+    vocab = vocabulary(scene)
+    end = r.mentions[0].start if r.mentions else len(r.low)
+    words = [w for w in re.findall(r"[a-z\u00c0-\u024f'-]+|\d+", r.low[:end]) if w not in _OPENERS]
+    if not words or not re.search(r"\b(?:the|el|la|los|las|all|every|those|these|that|this)\s+(?:[\w-]+\s+){0,2}$", r.low[:end]):
+        return None  # "gimme a cone", "chuck two benches there": a new thing may be what is asked for
+    return next((w for w in words if not w.isdigit() and not is_known(w.strip("'-"), vocab)), None)
 
 
 def _said_once(r: Reading, scene: Scene) -> list[str]:

@@ -465,7 +465,11 @@ def read(text: str, scene: Scene) -> Reading:
         spans.append(ego)
     for start, end in spans:
         masked = _blank(masked, start, end)
-    mentions = [m for m in ph.find_categories(text) if not any(m.start < e and s < m.end for s, e in spans)]
+    named = [said.span() for lm in scene.landmarks for name in lm.names()  # "from the bus stop to ...": no stop sign
+             for said in re.finditer(rf"(?<![a-z]){re.escape(ph.normalise(name).strip())}(?![a-z])", low)]
+    # ... where the thing's word sits inside the name: "a pedestrian crossing the road" is still a pedestrian
+    mentions = [m for m in ph.find_categories(text) if not any(m.start < e and s < m.end for s, e in spans)
+                and not any(s < m.start < e for s, e in named)]
     # A catalog word that is also a verb ("stop the ego", "plant an avenue of trees", "post a
     # sign") is the verb before a noun phrase or at the start, the thing otherwise.
     mentions = [m for m in mentions if not used_as_verb(low, m.start, m.end)]
@@ -481,7 +485,8 @@ def read(text: str, scene: Scene) -> Reading:
         mentions = [m for m in mentions if m.start >= going.end()]
     # "a night test of pedestrian detection": what a sensor task is about is its topic, not a thing asked for
     mentions = [m for m in mentions if not _PERCEPTION_TASK.match(low[m.end :])]
-    ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in ph.tokens(low)]
+    words = {t.removesuffix("'s") for t in ph.tokens(low)}  # "suv_1's pose"
+    ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in words]
     # "those cone I added": a plural said by its determiner when the noun is written singular
     mentions = [replace(m, plural=True) if re.search(r"\b(?:those|these|all)\s+$", low[: m.start]) else m for m in mentions]
     numbered, mentions = _numbered(scene, low, mentions)

@@ -134,7 +134,10 @@ def is_english(low: str) -> bool:
     """An English word, also as written without its apostrophe ("dont", "isnt", "thats")."""
     words = english_words()
     low = low.replace("'", "")  # "don't" is "dont": a contraction, not a misspelt "donut"
-    return low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in words) or (low.endswith("s") and low[:-1] in words)
+    gerund = low.endswith("ing") and len(low) > 5 and not low[:-3].endswith("e") and (
+        low[:-3] in words or low[:-3] + "e" in words)  # "spacing": WordPiece holds only "space"
+    return low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in words) or (
+        low.endswith("s") and low[:-1] in words) or gerund
 
 
 def _word_only_inflected(low: str) -> bool:
@@ -497,6 +500,7 @@ def _verb_of(m: re.Match[str]) -> str:
 
 
 # Where a clause's command verb stands, and the thing that follows one.
+_ASSET_ID = re.compile(r"\b[A-Za-z]+(?:_[A-Za-z]+)*_\d+\b")
 _COMMAND_SLOT = re.compile(r"(?:^|[,.;:!?]|\b(?:and|then|now|so|pls|please|just))\s*$", re.IGNORECASE)
 _THING_NEXT = re.compile(r"\s+(?:the|a|an|all|every|some|that|those|this|these|\d+)\b", re.IGNORECASE)
 # A command verb and its article or count: the slip after it names the thing ("add a coner": cone).
@@ -524,6 +528,17 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
     repairs: list[str] = []
+    ids = {a.id for a in scene.all_assets()}
+
+    def fix_id(m: re.Match[str]) -> str:  # "passanger_car_1": the id one or two slips away, its number kept
+        said = m.group(0)
+        near = [i for i in ids if i.rsplit("_", 1)[-1] == said.rsplit("_", 1)[-1] and edits(said.lower(), i) <= 2]
+        if said.lower() in ids or len(near) != 1:
+            return said
+        repairs.append(f"{said} -> {near[0]}")
+        return near[0]
+
+    text = _ASSET_ID.sub(fix_id, text)
 
     def fix(m: re.Match[str]) -> str:
         word = m.group(0)
