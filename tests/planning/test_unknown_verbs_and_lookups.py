@@ -114,3 +114,59 @@ def test_the_word_where_a_verb_goes_is_respelt_only_into_a_near_verb():
 def test_tokens_keep_the_possessive_of_an_id_out_of_the_id():
     campus = build_campus()
     assert ph.find_asset_ids(campus, "what is suv_1's position") == ["suv_1"]
+
+
+def test_a_word_the_planners_own_patterns_read_is_known_and_two_words_stay_two():
+    campus = build_campus()
+    from drivetwin.orchestrator.planning.rules.spelling import is_known, vocabulary
+
+    vocab = vocabulary(campus)
+    assert all(is_known(w, vocab) for w in ("slow", "nearest", "double", "faster"))
+    assert "every one" in repair("every one of the trees should turn red", campus).text
+
+
+def test_facing_the_opposite_way_is_a_half_turn(session):
+    result = session.submit("could the bench face the opposite way?")
+    assert result.ok and result.plan is not None
+    assert [c.args.get("turn_deg") for c in result.plan.calls] == [180.0]
+
+
+def test_a_walkway_is_a_sidewalk(session):
+    result = session.submit("the trash bin belongs at the library, on the walkway")
+    assert result.ok and result.plan is not None
+    assert result.plan.calls[0].args["location"]["relation"] == "on_sidewalk"
+
+
+@pytest.mark.parametrize(("words", "speed"), [("double the ego's speed", 10.0), ("make the ego go twice as fast", 10.0)])
+def test_a_speed_said_as_a_multiple_of_the_one_now(session, words, speed):
+    result = session.submit(words)
+    assert result.ok and result.plan is not None
+    assert result.plan.calls[-1].args["behaviour"]["speed"] == speed
+
+
+def test_a_new_vehicle_slower_than_us_is_slower_than_the_ego(session):
+    result = session.submit("put a car 27 m ahead of us in our lane, going slower than we are")
+    assert result.ok and result.plan is not None
+    assert 0 < result.plan.calls[0].args["behaviour"]["speed"] < 5.0
+
+
+def test_a_label_given_as_vehicle_2_names_no_second_vehicle(session):
+    result = session.submit("remove both passenger cars from lot B, and mark the SUV in red as vehicle 2")
+    assert result.ok, result.error
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.appearance.rgba is not None
+    assert not any(a.category == "passenger_car" and a.pose.y < -30 for a in session.scene.assets)
+
+
+def test_a_removal_comes_before_what_is_put_where_the_removed_thing_stood():
+    from drivetwin.orchestrator.planning.rules.planner import _not_removed_twice
+
+    campus = build_campus()
+    bench = campus.asset("bench_1")
+    assert bench is not None
+    put = ToolCall(tool="place_asset", args={"asset": "trash_bin_1", "location": {
+        "relation": "absolute", "x": bench.pose.x, "y": bench.pose.y}})
+    gone = ToolCall(tool="remove_assets", args={"assets": ["bench_1"]})
+    assert _not_removed_twice([put, gone], campus) == [gone, put]
+    once = ToolCall(tool="remove_assets", args={"category": "bench", "count": 1})
+    assert _not_removed_twice([once, gone], campus) == [once]  # the only bench goes once

@@ -463,10 +463,15 @@ def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
     return None
 
 
-def behaviour_spec(kind: str, r: Reading) -> dict[str, Any]:
-    """The BehaviourSpec arguments for `kind` with what the clause says (speed, radius, lane)."""
+def behaviour_spec(kind: str, r: Reading, scene: Scene | None = None) -> dict[str, Any]:
+    """The BehaviourSpec arguments for `kind` with what the clause says (speed, radius, lane; with
+    `scene`, a speed said against the ego's: "going slower than we are")."""
     spec: dict[str, Any] = {"kind": kind}
     speed = ph.find_speed(r.text)
+    than = _THAN_EGO.search(r.low) if speed is None and scene is not None and scene.asset("ego") is not None else None
+    if than is not None and scene is not None:
+        now = getattr(scene.ego.behaviour, "speed", None) or DEFAULT_PACE_MS
+        speed = round(now / PACE_FACTOR if than.group(1) == "slower" else now * PACE_FACTOR, 2)
     if speed:
         spec["speed"] = speed
     if kind == "circle":
@@ -489,6 +494,11 @@ _PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|drivi
 _SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
 _FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed)\b")
 PACE_FACTOR = 1.5
+# A pace said against the ego's: "going slower than we are", "a bit faster than our car".
+_THAN_EGO = re.compile(r"\b(slower|faster|quicker)\s+than\s+(?:we|us|me|i|the ego|ego|our car|my car|our vehicle)\b")
+# A speed said as a multiple of the one now: "double its speed", "halve the truck's speed".
+_TIMES = {"double": 2.0, "twice": 2.0, "triple": 3.0, "halve": 0.5, "half": 0.5}
+_TIMES_SAID = re.compile(r"\b(double|twice|triple|halve|half)\b(?=[^.;!?]*\b(?:speed|pace|fast|quick)\w*\b)")
 # A moving thing's speed when its behaviour does not say one (the Workers' own default).
 DEFAULT_PACE_MS = 5.0
 _ADDING = ("add", "spawn", "put", "place", "create", "insert", "another", "new")
@@ -499,7 +509,9 @@ def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[Too
     None when the clause says no speed, adds things, names several, or asks for another behaviour.
     "It" with nothing named in the request is the one thing the last turn made or changed."""
     speed = ph.find_speed(r.text)
-    slower, faster = _SLOWER.search(r.low) is not None, _FASTER.search(r.low) is not None
+    times = _TIMES_SAID.search(r.low) if speed is None else None
+    slower = _SLOWER.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] < 1)
+    faster = _FASTER.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] > 1)
     if (speed is None and slower == faster) or (speed is not None and not _PACE_SAID.search(r.low)) or r.has(_ADDING):
         return None
     if r.ids or (r.ego and not r.mentions):
@@ -522,9 +534,11 @@ def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[Too
         asked = None  # "can it go a bit faster?": going is the pace, not a drive along a lane
     if kind is None or asked not in allowed:
         return None  # "make the suv circle at 5 m/s": another behaviour, planned as one
-    if speed is None:
+    current = getattr(now, "speed", None) or DEFAULT_PACE_MS  # a parked thing has none
+    if speed is None and times is not None:  # "double its current speed": twice what it does now
+        speed = round(current * _TIMES[times.group(1)], 2)
+    elif speed is None:
         notes.guess("how much slower" if slower else "how much faster")
-        current = getattr(now, "speed", None) or DEFAULT_PACE_MS  # a parked thing has none
         speed = round(current / PACE_FACTOR if slower else current * PACE_FACTOR, 2)
     spec = {**now.model_dump(exclude_none=True), "kind": kind, "speed": speed}
     if isinstance(spec.get("centre"), (tuple, list)):  # a circle's centre as the Worker takes it: "x,y"
@@ -638,7 +652,7 @@ def _turn_for(r: Reading, scene: Scene, thing: AssetInstance, deg: re.Match[str]
     if facing is not None:  # "turned to face north": the turn from where it points now to that compass heading
         east, north = md.COMPASS_VECTORS[facing]
         return round((math.degrees(math.atan2(north, east) - thing.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
-    if r.has(("around", "round", "wrong way", "other way", "flip", "about")):  # "spin the bench round"
+    if r.has(("around", "round", "wrong way", "other way", "opposite way", "opposite direction", "flip", "about")):  # "spin the bench round"
         return 180.0
     notes.guess("how far to turn")
     if r.has(_SMALL):  # "turn the suv a little to the left": a small turn, that way

@@ -571,7 +571,7 @@ def location(
 
         raise PlanningError("I can put things on a sidewalk, in a lane or by a place, but not just 'off the sidewalk'; "
                             "say where it should go instead, e.g. 'next to the bench by the library'")
-    if r.has(("sidewalk", "pavement", "footpath", "kerb", "curb")) and not _OFF_SIDEWALK.search(r.low):
+    if r.has(("sidewalk", "side walk", "pavement", "footpath", "walkway", "kerb", "curb")) and not _OFF_SIDEWALK.search(r.low):
         return {"relation": "on_sidewalk", **({"target": target} if target else {})}
     if r.has(("in the lane", "on the road", "in lane", "on the street")):
         if target is not None and scene.asset(target) is not None and relation_of(r.low) in ("in_front_of", "behind"):

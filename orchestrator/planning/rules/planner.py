@@ -627,7 +627,30 @@ def _not_removed_twice(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
         kind = [a.id for a in scene.assets if a.category == call.args.get("category")]
         if kind and set(kind) <= gone:
             continue  # every one of that kind is already going
+        if call.args.get("near") is None and int(call.args.get("count") or len(kind)) >= len(kind):
+            gone |= set(kind)  # "remove the bench ... remove that bench": the only one goes once
         out.append(call)
+    return _cleared_first(out, scene)
+
+
+# Where a thing stood, to the centimetre: a call putting something there waits for its removal.
+STOOD_THERE_M = 0.05
+
+
+def _cleared_first(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
+    """`calls` with each removal moved before an earlier call that puts something where the
+    removed thing stands ("could the bench go, and the bin be moved to where the bench was")."""
+    out = list(calls)
+    for i, call in enumerate(calls):
+        where = call.args.get("location")
+        if not isinstance(where, dict) or where.get("relation") != "absolute":
+            continue
+        spot = (float(where.get("x") or 0.0), float(where.get("y") or 0.0))
+        for later in calls[i + 1 :]:
+            gone = [scene.asset(str(a)) for a in later.args.get("assets") or []] if later.tool == "remove_assets" else []
+            if any(a is not None and math.dist((a.pose.x, a.pose.y), spot) < STOOD_THERE_M for a in gone):
+                out.remove(later)
+                out.insert(out.index(call), later)
     return out
 
 
@@ -1367,7 +1390,7 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     elif drive is not None:  # "a truck heading for the main gate": in the lane that leads there, some way before it
         kind, args["behaviour"] = "drive_lane", drive[0]
     elif kind is not None:
-        args["behaviour"] = behaviour_spec(kind, r)
+        args["behaviour"] = behaviour_spec(kind, r, scene)
     where = location(r, scene, memory, notes) if walk is None or walk.start is None else {"relation": "at", "target": walk.start}
     where = drive[1] if drive is not None else where
     if walk is not None and where is not None and where.get("target") == walk.behaviour["to"]:

@@ -340,7 +340,8 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
         after = [w for w in low[mention.end :].split()[:2] if w not in ("number", "no.", "#", "nr")][:1]  # "car number 2"
         before = low[: mention.start].split()[-2:]
         number: int | None = None
-        if after and (after[0].isdigit() or after[0] in ph.NUMBER_WORDS) and after[0] not in ("a", "an"):
+        if after and (after[0].isdigit() or after[0] in ph.NUMBER_WORDS) and after[0] not in ("a", "an") \
+                and before[-1:] != ["as"]:  # "mark the SUV as vehicle 2": a label it is given, no other vehicle
             number = int(after[0]) if after[0].isdigit() else ph.NUMBER_WORDS[after[0]]
         present = sorted(
             (a for a in scene.assets if a.category == mention.category),

@@ -163,7 +163,25 @@ def _words_of(phrases: object) -> set[str]:
 
 @cache
 def _static_vocabulary() -> frozenset[str]:
-    return _domain_words() | lx.GRAMMAR
+    return _domain_words() | lx.GRAMMAR | _pattern_words()
+
+
+# The modules whose patterns read requests for the rule planner ("slow ... down", "nearest", "double").
+_READERS = tuple(f"drivetwin.orchestrator.planning.{m}" for m in (
+    "intent", "rules.clock", "rules.conditions", "rules.edits", "rules.environment", "rules.modifiers", "rules.numbers",
+    "rules.places", "rules.planner", "rules.questions", "rules.reading", "rules.repeat", "rules.replacing"))
+
+
+@cache
+def _pattern_words() -> frozenset[str]:
+    """The English words written in the rule planner's own patterns: a word a pattern reads is a
+    word the planner knows, whether or not a lexicon table lists it."""
+    from importlib import import_module  # at first use, once every reader is loaded
+
+    english = english_words()
+    patterns = [v.pattern for name in _READERS for v in vars(import_module(name)).values() if isinstance(v, re.Pattern)]
+    said = [re.sub(r"\\[A-Za-z]", " ", str(p)) for p in patterns]  # "\bslow": no "bslow"
+    return frozenset(w for p in said for w in re.findall(r"[a-z]{3,}", p) if w in english)
 
 
 @cache
@@ -483,7 +501,8 @@ def _joined_apart(text: str, vocab: frozenset[str]) -> str:
         if a.start() < at or text[a.end() : b.start()] != " ":
             continue
         joined = (a.group(0) + b.group(0)).lower()
-        if joined in vocab and f"{a.group(0)} {b.group(0)}".lower() not in _phrases():
+        if joined in vocab and f"{a.group(0)} {b.group(0)}".lower() not in _phrases() and (
+                joined not in _pattern_words() or joined in _domain_words() | lx.GRAMMAR):  # "every one" stays two words
             out.append(text[at : a.start()] + joined)
             at = b.end()
     return "".join(out) + text[at:]
