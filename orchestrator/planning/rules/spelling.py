@@ -163,7 +163,7 @@ def _words_of(phrases: object) -> set[str]:
 
 @cache
 def _static_vocabulary() -> frozenset[str]:
-    return _domain_words() | lx.GRAMMAR | _pattern_words()
+    return _domain_words() | lx.GRAMMAR
 
 
 # The modules whose patterns read requests for the rule planner ("slow ... down", "nearest", "double").
@@ -242,9 +242,10 @@ def repair_targets(vocab: frozenset[str]) -> tuple[str, ...]:
 
 
 def is_known(word: str, vocab: frozenset[str]) -> bool:
-    """Whether `word` is known as written or as an inflection of a known word."""
+    """Whether `word` is known as written or as an inflection of a known word: a word of `vocab`
+    or one the rule planner's own patterns read ("slow", "nearest")."""
     w = word.lower()
-    if w in vocab:
+    if w in vocab or w in _pattern_words():
         return True
     for suffix in _SUFFIXES:
         if w.endswith(suffix) and len(w) - len(suffix) >= 3:
@@ -254,7 +255,7 @@ def is_known(word: str, vocab: frozenset[str]) -> bool:
             doubled = stem[-1:] == stem[-2:-1] and stem[-1:] not in "wxy"  # "running", never "snowwing"
             if suffix == "ing" and stem.endswith("e") and not stem.endswith("ee"):
                 continue  # "driveing": English drops the e ("driving"), so a slip to repair
-            if stem in vocab or stem + "e" in vocab or (doubled and stem[:-1] in vocab):
+            if any(form in vocab or form in _pattern_words() for form in (stem, stem + "e", *([stem[:-1]] if doubled else []))):
                 return True
             if suffix == "ies" and stem + "y" in vocab:
                 return True
@@ -501,8 +502,7 @@ def _joined_apart(text: str, vocab: frozenset[str]) -> str:
         if a.start() < at or text[a.end() : b.start()] != " ":
             continue
         joined = (a.group(0) + b.group(0)).lower()
-        if joined in vocab and f"{a.group(0)} {b.group(0)}".lower() not in _phrases() and (
-                joined not in _pattern_words() or joined in _domain_words() | lx.GRAMMAR):  # "every one" stays two words
+        if joined in vocab and f"{a.group(0)} {b.group(0)}".lower() not in _phrases():
             out.append(text[at : a.start()] + joined)
             at = b.end()
     return "".join(out) + text[at:]
