@@ -170,3 +170,34 @@ def test_a_removal_comes_before_what_is_put_where_the_removed_thing_stood():
     assert _not_removed_twice([put, gone], campus) == [gone, put]
     once = ToolCall(tool="remove_assets", args={"category": "bench", "count": 1})
     assert _not_removed_twice([once, gone], campus) == [once]  # the only bench goes once
+
+
+def test_a_command_before_a_comma_is_no_topic_and_both_things_move(session):
+    result = session.submit("put the bench at the Student Union entrance, and the bin right beside it")
+    assert result.ok and result.plan is not None
+    assert [c.args["asset"] for c in result.plan.calls] == ["bench_1", "trash_bin_1"]
+
+
+@pytest.mark.parametrize(("words", "tool", "count"), [
+    ("Could you turn the ego around? Turn it all the way around, the ego. Facing the opposite way.", "move_asset", 1),
+    ("put a line of cones across the road in front of the ego. A line of cones across the road.", "arrange_assets", 1),
+    ("turn the bench 90 degrees, then turn it 90 degrees again", "move_asset", 2),
+])
+def test_an_edit_said_again_in_other_words_is_made_once_unless_asked_again(session, words, tool, count):
+    result = session.submit(words)
+    assert result.ok and result.plan is not None
+    assert [c.tool for c in result.plan.calls] == [tool] * count
+
+
+def test_car_park_a_is_parking_lot_a():
+    campus = build_campus()
+    assert "parking lot A entrance" in repair("put the bin next to the lamp post at the car park A entrance", campus).text
+    assert "car park a bit" in repair("the car park a bit further on", campus).text
+
+
+def test_some_cones_round_it_ring_what_the_last_turn_added(session):
+    assert session.submit("someone's dumped rubble in lot b, put some there").ok
+    result = session.submit("stick some cones round it")
+    assert result.ok and result.plan is not None
+    ((call,),) = [result.plan.calls]
+    assert call.args["shape"] == "ring" and call.args["location"]["target"].startswith("cement_rubble")

@@ -13,6 +13,7 @@ import math
 import re
 from dataclasses import dataclass
 
+from drivetwin.orchestrator.planning.intent import commands
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.reading import find_place
 from drivetwin.worlds.scene import Scene
@@ -63,8 +64,8 @@ def topic_first(text: str, scene: Scene) -> str | None:
     """The request with the thing it said first, where it said it is, put for the word pointing
     back at it ("move tree_2 3 m north"); None when it does not open so."""
     said = _TOPIC_FIRST.match(text)
-    if said is None:
-        return None
+    if said is None or commands(said.group("thing").lower()):
+        return None  # "put the bench at the union, and the bin beside it": a command, no topic
     named = ph.find_categories(f" {ph.normalise(said.group('thing'))} ")
     place = find_place(scene, f" {ph.normalise(said.group('place'))} ")
     landmark = scene.landmark(place[0]) if place is not None else None

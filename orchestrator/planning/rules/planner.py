@@ -505,6 +505,7 @@ class RulePlanner:
             notes.guess(STATEMENT_READ)
         calls = _alike(calls, text.lower(), scene, context.memory)  # "another exactly like it"
         calls = _not_removed_twice(calls, scene)  # "clear the cars out of lot B: both sedans and the SUV"
+        calls = _not_restated(calls, text.lower())  # "turn it around ... turn it all the way around, the ego car"
         if calls and asks(text.lower()) and not any(commands(clause.lower()) for clause, _, _ in clauses):
             # "a driver mentioned a stop sign by the crossing; I want to confirm it's there": what the
             # story names is what the question is about, never something to add
@@ -631,6 +632,29 @@ def _not_removed_twice(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
             gone |= set(kind)  # "remove the bench ... remove that bench": the only one goes once
         out.append(call)
     return _cleared_first(out, scene)
+
+
+# Words that ask for an edit a second time: "turn it 90 degrees, then another 90".
+_AGAIN = re.compile(r"\b(?:again|another|twice|once more|more|repeat|second)\b")
+
+
+def _not_restated(calls: list[ToolCall], low: str) -> list[ToolCall]:
+    """`calls` without an edit the request says again in other words (a restatement: "turn the
+    ego around ... turn it all the way around"; "a line of cones across the road in front of the
+    ego ... a line of cones across the road"), unless it asks for it again."""
+    if _AGAIN.search(low):
+        return calls
+    out: list[ToolCall] = []
+    for call in calls:
+        if any(call.tool == c.tool and call.args == c.args for c in out):
+            continue
+        where = call.args.get("location")
+        vaguer = call.tool == "arrange_assets" and isinstance(where, dict) and where.get("relation") == "scene_centre"
+        if vaguer and any(c.tool == call.tool and c.args.get("categories") == call.args.get("categories")
+                          and c.args.get("shape") == call.args.get("shape") for c in out):
+            continue  # the same layout said again without its place: the one placed
+        out.append(call)
+    return out
 
 
 # Where a thing stood, to the centimetre: a call putting something there waits for its removal.
@@ -880,6 +904,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         return env or None
     laid_out = (r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
                 or _AROUND_BY.search(r.low) is not None  # "the fountain should be ringed by six benches"
+                or _ROUND_IT.search(r.low) is not None
                 or (mention.plural and (r.has(("along",)) or _LINING.search(r.low) is not None))  # "trees along one side of lot A"
                 or ((mention.plural or (find_count(r, mention) or 1) > 1 or r.has(("every",)))
                     and nb.spacing_said(r.low) is not None))  # "four cones 8 m apart", "a cone every 5 m": a line
@@ -1132,6 +1157,7 @@ GRID_MIN = 4
 _AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)|cordon|enclose|rope|fence|seal|box)\b")
 # The passive names the layout after "by" and what it surrounds before: "the fountain ringed by six benches".
 _AROUND_BY = re.compile(r"\b(?:ring|encircl|surround|circl)ed\s+(?:all\s+round\s+)?by\b")
+_ROUND_IT = re.compile(r"\b(?:all\s+)?round\s+(?:it|them|that|this|the)\b")  # "stick some cones round it": a ring
 _VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
 
 

@@ -438,6 +438,8 @@ _RIGHT_THERE = re.compile(r"(?<!turn )(?<!turns )(?<!turning )(?<!go )(?<!goes )
 
 # "turn of the street light": "of" right after a switching verb is a slip for "off".
 _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
+# A car park named by its letter, as the British say a parking lot: "car park A".
+_CAR_PARK_OF = re.compile(r"\bcar\s?park\s+(?=[a-z]\b(?!')(?!\s+(?:car|bus|van|truck|lorry|bench|cone|few|bit)\b))", re.IGNORECASE)
 # A marker's name said as the verb: "cone that off", "bollard off the hydrant" ring it with them.
 _MARKER_OFF = re.compile(r"\b(cone|bollard|barrier)s?\s+((?:[\w'-]+\s+){0,4}?)off\b(?!\s+with\b)", re.IGNORECASE)
 
@@ -540,6 +542,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _THERE_SLIP.sub("there", text)
     text = _THING_PRONOUN.sub("it", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
+    text = _CAR_PARK_OF.sub("parking lot ", text)  # "the car park A entrance": lot A's, not "the car park" (lot B)
     text = _marker_off(text)
     text = _RIGHT_THERE.sub("", text)
     text = _SLASH_COMMAND.sub("", text)
