@@ -137,9 +137,16 @@ class FindAssets(Tool[FindAssetsArgs]):
             if args.nearest_to:
                 pool = [a for a in pool if not (t.kind == "asset" and a.id == t.name)]
             pool.sort(key=lambda a: math.hypot(a.pose.x - t.x, a.pose.y - t.y))
+            beyond = pool[0] if pool else None
             if args.within is not None:
                 pool = [a for a in pool if math.hypot(a.pose.x - t.x, a.pose.y - t.y) <= args.within]
         what = args.category or "asset"
+        if t is not None and args.within is not None and not pool and beyond is not None:
+            # "lamp near lot A?" with none that close: none within it, and the nearest there is
+            gap = math.hypot(beyond.pose.x - t.x, beyond.pose.y - t.y)
+            return ToolResult(WorldEdit(), f"no {what} within {args.within:g} m of {t.name}; the nearest is {beyond.id} at "
+                              f"({beyond.pose.x:.1f}, {beyond.pose.y:.1f}), {gap:.1f} m away",
+                              data={"ids": [], "nearest": beyond.id, "distances": {beyond.id: round(gap, 2)}})
         distances = {a.id: math.hypot(a.pose.x - t.x, a.pose.y - t.y) for a in pool} if t else {}
 
         def line(a: AssetInstance) -> str:

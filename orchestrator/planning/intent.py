@@ -97,7 +97,7 @@ _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s
 # cars?", "could the bus go ..."): a command even when it ends with a question mark.
 _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^\s*please\b(?!\s*,?\s*(?:where|what|which|how|who|is there|are there)\b)"
                      # "could there be a couple of people at the stop?": a wish for what should be there
-                     r"|(?:^|[.!;]\s*)(?:can|could) there be\b"
+                     r"|(?:^|[.!;,\-\u2013\u2014]\s*)(?:can|could) (?:there|someone|somebody) be\b"
                      # "maybe drop a car by the library?": a suggestion, hedged
                      r"|^(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:add|put|drop|place|move|make|set|"
                      r"remove|take|get|give|turn|paint|park|bring|have|let'?s)\b"

@@ -201,3 +201,26 @@ def test_some_cones_round_it_ring_what_the_last_turn_added(session):
     assert result.ok and result.plan is not None
     ((call,),) = [result.plan.calls]
     assert call.args["shape"] == "ring" and call.args["location"]["target"].startswith("cement_rubble")
+
+
+def test_a_search_within_a_distance_that_finds_none_names_the_nearest(campus, registry):
+    from drivetwin.orchestrator.transaction import execute
+
+    done = execute(registry, campus, [ToolCall(tool="find_assets", args={
+        "category": "street_light", "near": "parking lot A", "within": 10.0})])
+    text = done.results[0].text
+    assert text.startswith("no street_light within 10 m of parking lot A") and "street_light_1" in text
+
+
+def test_a_footway_is_a_sidewalk_and_a_gas_station_is_no_bus_station(session):
+    result = session.submit("add a cyclist on the southern footway by the bus stop")
+    assert result.ok and result.plan is not None
+    assert result.plan.calls[0].args["location"]["relation"] == "on_sidewalk"
+    before = session.scene
+    asked = session.submit("where's the gas station?")
+    assert not asked.ok and "gas station" in (asked.error or "")
+    assert session.scene == before
+
+
+def test_could_someone_be_there_asks_for_someone():
+    assert not asks("i'd like a guard \u2014 could someone be standing at the zebra crossing?")

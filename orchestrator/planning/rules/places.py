@@ -415,7 +415,7 @@ def _past_along_lane(r: Reading, scene: Scene) -> dict[str, Any] | None:
 
 
 # A sidewalk named by its side: "the north sidewalk", "the pavement on the south side of Main Street".
-_SIDEWALK_WORD = r"(?:sidewalk|side walk|pavement|footpath|walkway)"
+_SIDEWALK_WORD = r"(?:sidewalk|side walk|pavement|footpath|footway|walkway)"
 _SIDEWALK_OF_SIDE = re.compile(rf"\b(north|south|east|west)(?:ern)?(?:[- ]side)?\s+{_SIDEWALK_WORD}\b"
                                rf"|\b{_SIDEWALK_WORD}\s+on\s+(?:the\s+)?(north|south|east|west)(?:ern)?\s+side\b")
 
@@ -571,7 +571,7 @@ def location(
 
         raise PlanningError("I can put things on a sidewalk, in a lane or by a place, but not just 'off the sidewalk'; "
                             "say where it should go instead, e.g. 'next to the bench by the library'")
-    if r.has(("sidewalk", "side walk", "pavement", "footpath", "walkway", "kerb", "curb")) and not _OFF_SIDEWALK.search(r.low):
+    if r.has(("sidewalk", "side walk", "pavement", "footpath", "footway", "walkway", "kerb", "curb")) and not _OFF_SIDEWALK.search(r.low):
         return {"relation": "on_sidewalk", **({"target": target} if target else {})}
     if r.has(("in the lane", "on the road", "in lane", "on the street")):
         if target is not None and scene.asset(target) is not None and relation_of(r.low) in ("in_front_of", "behind"):

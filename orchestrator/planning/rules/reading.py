@@ -135,9 +135,18 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
     world = set(ph.tokens(scene.name))  # "in town", "on campus": the whole world, not its Town Hall
     for word, name in _unique_place_words(scene).items():
         m = re.search(rf"(?<![a-z0-9]){re.escape(word)}(?![a-z0-9])", low)
-        if m and word not in world:
+        if m and word not in world and not _other_kind(scene, name, low[: m.start()]):
             return name, m.start(), m.end()
     return None
+
+
+def _other_kind(scene: Scene, name: str, before: str) -> bool:
+    """Whether the word before a place's word makes it another place ("the gas station" is no
+    bus station): a content word that none of the place's names holds."""
+    said = ph.tokens(before)[-1:]
+    mark = scene.landmark(name)
+    own = {w for n in (mark.names() if mark is not None else [name]) for w in ph.tokens(ph.normalise(n))}
+    return bool(said) and said[0] not in lx.GRAMMAR and said[0] not in own and said[0].isalpha()
 
 
 def _kind_words(scene: Scene) -> set[str]:
@@ -197,6 +206,9 @@ def _place_head_word(scene: Scene, low: str, mentions: list[ph.Mention]) -> str 
         word = said.group(0)
         if (word in heads or ph.singular(word) in heads) and not any(
                 m.start <= said.start() < m.end for m in mentions):
+            owners = [lm.name for lm in scene.landmarks if any(ph.singular(word) in ph.tokens(ph.normalise(n)) for n in lm.names())]
+            if owners and all(_other_kind(scene, name, low[: said.start()]) for name in owners):
+                return f"{ph.tokens(low[: said.start()])[-1]} {ph.singular(word)}"  # "the gas station": not the bus station
             return ph.singular(word)
     return None
 
