@@ -224,3 +224,19 @@ def test_a_footway_is_a_sidewalk_and_a_gas_station_is_no_bus_station(session):
 
 def test_could_someone_be_there_asks_for_someone():
     assert not asks("i'd like a guard \u2014 could someone be standing at the zebra crossing?")
+
+
+def test_a_thing_for_them_goes_where_they_were_just_put(session):
+    result = session.submit("add two pedestrians waiting at the bus stop, and a bench for them to sit on")
+    assert result.ok and result.plan is not None
+    assert [c.args.get("location", {}).get("target") for c in result.plan.calls] == ["bus stop", "bus stop"]
+
+
+def test_a_tree_asked_for_three_times_in_one_long_message_is_one_tree_where_it_was_said(session):
+    before = session.scene
+    result = session.submit("Hello again. I would like to add a tree. A single tree, next to the fountain please. "
+                            "So just the one tree, next to the fountain. Thank you so much.")
+    assert result.ok, result.error
+    new = [a for a in session.scene.assets if a.id not in {b.id for b in before.assets}]
+    assert [a.category for a in new] == ["tree"]
+    assert session.scene.asset("tree_1") == before.asset("tree_1")

@@ -635,7 +635,7 @@ def _not_removed_twice(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
 
 
 # Words that ask for an edit a second time: "turn it 90 degrees, then another 90".
-_AGAIN = re.compile(r"\b(?:again|another|twice|once more|more|repeat|second)\b")
+_AGAIN = re.compile(r"\b(?<!hello )(?<!hi )(?<!me )(?:again|another|twice|once more|more|repeat|second)\b")  # not "hello again"
 
 
 def _not_restated(calls: list[ToolCall], low: str) -> list[ToolCall]:
@@ -644,8 +644,16 @@ def _not_restated(calls: list[ToolCall], low: str) -> list[ToolCall]:
     ego ... a line of cones across the road"), unless it asks for it again."""
     if _AGAIN.search(low):
         return calls
+    adds = [c for c in calls if c.tool == "add_asset"]
+    located = {(c.args.get("category"), c.args.get("count", 1)) for c in adds if c.args.get("location")}
+    placed = {(c.args.get("category"), str(c.args.get("location"))) for c in adds if c.args.get("location")}
     out: list[ToolCall] = []
     for call in calls:
+        if call.tool == "add_asset" and not call.args.get("location") and (call.args.get("category"), call.args.get("count", 1)) in located:
+            continue  # "I'd like to add a tree. A single tree, next to the fountain": the one placed
+        if call.tool == "place_asset" and any(str(call.args.get("location")) == where and str(call.args.get("asset", "")).startswith(f"{kind}_")
+                                              for kind, where in placed):
+            continue  # "... so just the one tree, next to the fountain": the new one, said again
         if any(call.tool == c.tool and call.args == c.args for c in out):
             continue
         where = call.args.get("location")
@@ -1433,8 +1441,8 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
         where = {"relation": "on_sidewalk", "target": where["target"]}
     if where is None and kind is None and memory.last_focus() is not None and r.has(("also", "more", "another")):
         where = _beside_last(scene, memory) or _fallback_place(memory)
-    if where is None and notes.place is not None and r.has(("there", "instead")):
-        where = dict(notes.place)
+    if where is None and notes.place is not None and (r.has(("there", "instead")) or (notes.coming and r.has(("for them", "for it")))):
+        where = dict(notes.place)  # "two people waiting at the stop, and a bench for them": there too
     if where is None and notes.scene_set is not None and kind in (None, "parked"):
         where = dict(notes.scene_set)  # "lot A looks empty in the renders. fix with 3 parked cars": there
     kind_of_place = any(places_called(scene, m.group("kind")) for m in _THE_KIND.finditer(r.low))  # "at the entrance"
