@@ -35,6 +35,8 @@ _LANES_ASKED = re.compile(r"(^|\b(which|what|list|name|show me|tell me)\s+(the\s
 _PROPERTY = re.compile(r"\b(mass|weigh\w*|how heavy|heavy is|size of|what size|how big|how long is|how tall|"
                        r"how wide|dimensions?|colou?r)\b")
 # A second question joined to the first: "..., and which landmark is closest to it".
+# What describe_environment answers at once: the weather, the time of day, the lighting.
+ENVIRONMENT_PARTS = 3
 _SECOND_PART = re.compile(r",?\s+and\s+(which|what|where|how (many|much|heavy|big|far)|is there|are there)\b")
 
 
@@ -55,7 +57,8 @@ def unanswered(request: Request, calls: Sequence[ToolCall], scene: Scene) -> lis
     if any(c.tool == "find_assets" for c in calls):  # a list of the things found says how many and where
         seconds = [word for word in seconds if word not in ("where", "how many")]
     parts = 1 + len(seconds)
-    if len(calls) < parts:
+    answered = sum(ENVIRONMENT_PARTS if c.tool == "describe_environment" else 1 for c in calls)
+    if answered < parts:
         out.append(f"you asked {parts} things, but the plan answers {len(calls)}")
     return out
 

@@ -240,3 +240,17 @@ def test_a_tree_asked_for_three_times_in_one_long_message_is_one_tree_where_it_w
     new = [a for a in session.scene.assets if a.id not in {b.id for b in before.assets}]
     assert [a.category for a in new] == ["tree"]
     assert session.scene.asset("tree_1") == before.asset("tree_1")
+
+
+def test_a_thing_named_again_with_where_it_stands_is_not_moved(session):
+    result = session.submit("I'd like a ring of bollards around the tree by the Library, please. The tree near the Library. "
+                            "A ring of bollards going all the way around it.")
+    assert result.ok, result.error
+    assert session.scene.asset("tree_1") is not None
+    tree, was = session.scene.asset("tree_1"), build_campus().asset("tree_1")
+    assert tree is not None and was is not None and tree.pose == was.pose
+
+
+def test_weather_and_time_asked_together_are_one_description(session):
+    result = session.submit("whats the weather doing and what time is it in the sim rn")
+    assert result.ok and result.answer is not None and "12:00" in result.answer and "clear" in result.answer

@@ -418,6 +418,9 @@ class RulePlanner:
                 # "cars keep getting hidden behind that bin ... get rid of it": the one thing it names singly
                 notes.subject = _already_there(clause_calls, scene) or _named_singly(reading, scene) or notes.subject
                 continue
+            if _BARE_NAMING.match(reading.low) and _VERB_AT.search(reading.low) is None and clause_calls and all(
+                    c.tool == "place_asset" and c.args.get("asset") in _named_in(calls) for c in clause_calls):
+                continue  # "a ring of bollards round the tree by the Library. The tree near the Library.": which tree
             calls.extend(clause_calls)
             previous = clause_calls
             unknown += _unknown_words(clause, scene)
@@ -632,6 +635,21 @@ def _not_removed_twice(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
             gone |= set(kind)  # "remove the bench ... remove that bench": the only one goes once
         out.append(call)
     return _cleared_first(out, scene)
+
+
+# A clause that only names a thing and where it is: "the tree near the Library." (no modal, no verb).
+_BARE_NAMING = re.compile(r"\s*(?:the|that|this)\s+(?!.*\b(?:should|must|needs?|has to|have to|ought|will|would|can|could"
+                          r"|be|is|are|was|were|goes|go|belongs?|wants?)\b)")
+
+
+def _named_in(calls: list[ToolCall]) -> set[str]:
+    """The ids `calls` act on or place things by."""
+    out: set[str] = set()
+    for call in calls:
+        where = call.args.get("location")
+        out |= {str(i) for i in call.args.get("assets") or []} | {str(call.args.get("asset"))}
+        out |= {str(where.get("target"))} if isinstance(where, dict) else set()
+    return out
 
 
 # Words that ask for an edit a second time: "turn it 90 degrees, then another 90".
