@@ -143,10 +143,12 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
 def _other_kind(scene: Scene, name: str, before: str) -> bool:
     """Whether the word before a place's word makes it another place ("the gas station" is no
     bus station): a content word that none of the place's names holds."""
-    said = ph.tokens(before)[-1:]
+    said = ph.tokens(before)[-2:]
     mark = scene.landmark(name)
     own = {w for n in (mark.names() if mark is not None else [name]) for w in ph.tokens(ph.normalise(n))}
-    return bool(said) and said[0] not in lx.GRAMMAR and said[0] not in own and said[0].isalpha()
+    # "the gas station", "a petrol station": an article, then a word naming another kind ("my drivers park" is a verb)
+    return len(said) == 2 and said[0] in ("the", "a", "an", "any") and said[1] not in lx.GRAMMAR and said[1] not in own \
+        and said[1].isalpha()
 
 
 def _kind_words(scene: Scene) -> set[str]:
@@ -208,7 +210,7 @@ def _place_head_word(scene: Scene, low: str, mentions: list[ph.Mention]) -> str 
                 m.start <= said.start() < m.end for m in mentions):
             owners = [lm.name for lm in scene.landmarks if any(ph.singular(word) in ph.tokens(ph.normalise(n)) for n in lm.names())]
             if owners and all(_other_kind(scene, name, low[: said.start()]) for name in owners):
-                return f"{ph.tokens(low[: said.start()])[-1]} {ph.singular(word)}"  # "the gas station": not the bus station
+                return f"{ph.tokens(low[: said.start()])[-1]} {ph.singular(word)}"  # "the gas station": no bus station
             return ph.singular(word)
     return None
 
