@@ -254,3 +254,9 @@ def test_a_thing_named_again_with_where_it_stands_is_not_moved(session):
 def test_weather_and_time_asked_together_are_one_description(session):
     result = session.submit("whats the weather doing and what time is it in the sim rn")
     assert result.ok and result.answer is not None and "12:00" in result.answer and "clear" in result.answer
+
+
+def test_a_side_s_sidewalk_and_a_thing_on_it_put_the_new_thing_by_that_thing(session):
+    result = session.submit("add one bicycle, parked, on the north sidewalk of Main Street, in the vicinity of the fire hydrant")
+    assert result.ok and result.plan is not None
+    assert result.plan.calls[0].args["location"] == {"relation": "on_sidewalk", "target": "fire_hydrant_1"}

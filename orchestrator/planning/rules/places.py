@@ -459,7 +459,10 @@ def sidewalk_of_side(r: Reading, scene: Scene, exclude: list[str]) -> dict[str, 
         if near is not None and near.distance <= SIDEWALK_ROAD_M and (mx - near.x) * dx + (my - near.y) * dy > 0.5 * near.distance:
             sides.append(walk)  # the road's nearest lane lies the other way: this walk is on that side
     # by the place or thing named, else where the thing moved stands, else by the ego
-    anchor = r.landmark or next((i for i in r.ids if i not in exclude), None) or next(iter(exclude), "ego")
+    # ... or the one thing of its kind the clause names after what it puts ("... in the vicinity of the fire hydrant")
+    named = next((a.id for m in r.mentions[1:] if scene.count(m.category) == 1 for a in scene.assets
+                  if a.category == m.category and a.id not in exclude), None)
+    anchor = r.landmark or next((i for i in r.ids if i not in exclude), None) or named or next(iter(exclude), "ego")
     mark, thing = scene.landmark(anchor), scene.asset(anchor)
     if not sides or (mark is None and thing is None):
         return None
@@ -472,6 +475,8 @@ def sidewalk_of_side(r: Reading, scene: Scene, exclude: list[str]) -> dict[str, 
     if anchor == "ego" and past is None:
         return {"relation": "on_sidewalk", "target": walk.id}
     on = nearest_on_polyline(x, y, walk.polyline)
+    if thing is not None and anchor == named and on.distance <= walk.width:
+        return {"relation": "on_sidewalk", "target": thing.id}  # it stands on that sidewalk: by it, there
     return {"relation": "on_sidewalk", "target": f"{on.x:.1f}, {on.y:.1f}"}
 
 
