@@ -17,6 +17,11 @@ HOW_THINGS_GO = re.compile(
     r"(?:people|drivers|kids|children|students|pedestrians|visitors|folks|passengers|everyone|nobody|no one)\b[^,;.]*?"
     r"\b(?:must have|keep|keeps|can't|cannot|couldn't|don't|doesn't|never|always|have nowhere|has nowhere|have no|struggle)\b"
     r"|\b[a-z]+s\s+(?:keep|kept)\s+(?:getting|being|on)\b")
+# What others say, which the request follows ("residents complain the test car dawdles and holds the
+# buses up. Have it do 30 mph."); not what they say should be ("people say there should be a bench").
+REPORTED = re.compile(r"(?:residents|people|neighbou?rs|locals|parents|drivers|users|witnesses|they|he|she|someone|everyone"
+                      r"|my \w+)\s+(?:complain(?:s|ed)?|say|says|said|tell|tells|told|report(?:s|ed)?|claim(?:s|ed)?"
+                      r"|insist(?:s|ed)?|keep saying|mention(?:s|ed)?)\b(?![^.;!?]*\b(?:should|need|needs|must|ought|wants?)\b)")
 # What a test is for, said as a case to see: "I want to see what happens if a child runs out in front of us".
 WHAT_IF = re.compile(r"\b(?:see|know|find out|check|test)\s+what (?:happens|would happen|will happen|the ego does)\s+(?:if|when)\b")
 # A place said to be empty as it is ("feels empty", "looks a bit bare"): a lack, not "empty it".
@@ -404,6 +409,7 @@ __all__ = [
     "HOW_THINGS_GO",
     "KEEP_SOME",
     "REMOVE_WORDS",
+    "REPORTED",
     "WHAT_IF",
     "asks",
     "commands",

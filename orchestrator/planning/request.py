@@ -17,6 +17,7 @@ from drivetwin.orchestrator.planning.intent import (
     ADD_WORDS,
     HOW_THINGS_GO,
     REMOVE_WORDS,
+    REPORTED,
     WHAT_IF,
     asks,
     excepted,
@@ -108,6 +109,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
         kinds_text = re.sub(rf"(?<![a-z]){re.escape(word)}(?![a-z])", " ego ", kinds_text)
     # "cars keep getting hidden behind that bin", "people keep saying ...": who things go so for is no thing asked for
     kinds_text = HOW_THINGS_GO.sub(lambda m: " " * len(m.group(0)), kinds_text)
+    kinds_text = re.sub(rf"{REPORTED.pattern}[^.;!?]*", lambda m: " " * len(m.group(0)), kinds_text)  # what others say
     swapped = swap_said(low) is not None  # "replace the bench with a bin": the bin is asked for, not a description
     categories = frozenset(m.category for m in without_goals(kinds_text, without_beneficiaries(kinds_text, ph.find_categories(kinds_text)))
                            if (swapped or not _DESCRIBING.search(kinds_text[: m.start])) and not _described_head(kinds_text, m))

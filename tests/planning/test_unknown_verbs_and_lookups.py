@@ -260,3 +260,11 @@ def test_a_side_s_sidewalk_and_a_thing_on_it_put_the_new_thing_by_that_thing(ses
     result = session.submit("add one bicycle, parked, on the north sidewalk of Main Street, in the vicinity of the fire hydrant")
     assert result.ok and result.plan is not None
     assert result.plan.calls[0].args["location"] == {"relation": "on_sidewalk", "target": "fire_hydrant_1"}
+
+
+def test_what_others_say_is_context_and_the_request_after_it_is_done(session):
+    before = session.scene
+    result = session.submit("Residents complain the test car dawdles along and holds the buses up. Have it do 30 mph.")
+    assert result.ok, result.error
+    assert [a.id for a in session.scene.assets] == [a.id for a in before.assets]  # no buses lined up
+    assert round(getattr(session.scene.ego.behaviour, "speed", 0.0), 1) == 13.4

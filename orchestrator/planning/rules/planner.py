@@ -24,6 +24,7 @@ from drivetwin.orchestrator.planning.intent import (
     HABITUAL,
     HOW_THINGS_GO,
     REMOVE_WORDS,
+    REPORTED,
     WHAT_IF,
     asks,
     commands,
@@ -212,6 +213,7 @@ _STATEMENT = re.compile(
     r"|who\s+(?:\w+\s+)?(?:put|left|parked|placed|moved|dumped|stuck|added|thought|decided)\b"
     # "people there must have nowhere to ...", "cars keep getting hidden behind ...": how things go, not a request
     rf"|{HOW_THINGS_GO.pattern}"
+    rf"|{REPORTED.pattern}"
     # "bin is in a dumb spot", "traffic on Main Street is crawling": a thing named bare and how it is
     rf"|(?!(?:{'|'.join(_VERBS)}|please|pls|can|could|would|will|make sure)\b)[a-z]+(?:\s+[a-z]+){{0,4}}\s+(?:is|are)\s+"
     r"(?:in|on|at|too|not|still|way|over|under|blocking|parked|standing|sitting|facing|so|very|really|always|just|kind of|a bit"
