@@ -49,7 +49,7 @@ _PLACE_PREPOSITION = re.compile(
     r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|"
     r"along|alongside|across|through|past|beyond|"
     r"(?:far|away|distance|metres|meters|m)\b(?:[^,.;?]{0,40}?\s)?from|"  # "how far is the ego from the ..."
-    r"close to|opposite|where is|where's|where are)\s+the (?=([a-z][a-z' -]*))"  # (a look-ahead: "from the
+    r"close to|opposite|where is|where's|where are|between[^,.;?]{0,40}?\band)\s+the (?=([a-z][a-z' -]*))"  # (a look-ahead: "from the
 )  # library to the pool" is read for both places; a known place masked to blanks is no name: "to the   anymore")
 # Arguments by which a call says where: a repaired place name ends up in one of them.
 _PLACE_ARG = re.compile(r"'(?:location|near|nearest_to|lane|asset|assets|target|x|y)':")

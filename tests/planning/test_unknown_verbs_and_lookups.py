@@ -268,3 +268,11 @@ def test_what_others_say_is_context_and_the_request_after_it_is_done(session):
     assert result.ok, result.error
     assert [a.id for a in session.scene.assets] == [a.id for a in before.assets]  # no buses lined up
     assert round(getattr(session.scene.ego.behaviour, "speed", 0.0), 1) == 13.4
+
+
+def test_a_place_between_that_the_world_lacks_is_refused_and_a_statement_adds_nothing(session):
+    before = session.scene
+    result = session.submit("State the distance between the ego vehicle and the petrol station on Main Street.")
+    assert not result.ok and "petrol station" in (result.error or "")
+    result = session.submit("my lidar sim chokes on foliage, strip all the vegetation out of the map")
+    assert not result.ok and session.scene == before

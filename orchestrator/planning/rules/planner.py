@@ -961,7 +961,8 @@ def _unknown_verb(r: Reading, scene: Scene) -> str | None:
     vocab = vocabulary(scene)
     end = r.mentions[0].start if r.mentions else len(r.low)
     words = [w for w in re.findall(r"[a-z\u00c0-\u024f'-]+|\d+", r.low[:end]) if w not in _OPENERS]
-    if not words or not re.search(r"\b(?:the|el|la|los|las|all|every|those|these|that|this)\s+(?:[\w-]+\s+){0,2}$", r.low[:end]):
+    if not words or not re.search(r"\b(?:the|el|la|los|las|all|every|those|these|that|this|on|about|with|of)\s+(?:[\w-]+\s+){0,2}$",
+                                  r.low[:end]):
         return None  # "gimme a cone", "chuck two benches there": a new thing may be what is asked for
     return next((w for w in words if not w.isdigit() and not is_known(w.strip("'-"), vocab)), None)
 
