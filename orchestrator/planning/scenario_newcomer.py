@@ -27,7 +27,7 @@ from drivetwin.orchestrator.transaction import TransactionError, execute
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.catalog import category
-from drivetwin.worlds.scene import EGO_ID, DriveLane, Scene
+from drivetwin.worlds.scene import EGO_ID, AssetInstance, DriveLane, Scene
 from drivetwin.worlds.surface import nearest_on_polyline
 
 # A walker who is to step into the ego's road waits on the kerb this far ahead of the ego.
@@ -171,7 +171,7 @@ def _lane_beside(scene: Scene) -> str:
     raise PlanningError("there is no lane beside the ego's going its way for a vehicle to cut in from")
 
 
-def parked_only(actors: list[Any], manoeuvre: str) -> bool:
+def parked_only(actors: list[AssetInstance], manoeuvre: str) -> bool:
     """Whether every candidate is parked and the manoeuvre needs one moving ("a car brakes")."""
     return manoeuvre in MOVERS_ONLY and all(a.behaviour.kind == "parked" for a in actors)
 

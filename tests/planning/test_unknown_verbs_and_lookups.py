@@ -159,7 +159,7 @@ def test_a_label_given_as_vehicle_2_names_no_second_vehicle(session):
 
 
 def test_a_removal_comes_before_what_is_put_where_the_removed_thing_stood():
-    from drivetwin.orchestrator.planning.rules.planner import _not_removed_twice
+    from drivetwin.orchestrator.planning.rules.planner import _cleared_first, _not_removed_twice
 
     campus = build_campus()
     bench = campus.asset("bench_1")
@@ -167,7 +167,7 @@ def test_a_removal_comes_before_what_is_put_where_the_removed_thing_stood():
     put = ToolCall(tool="place_asset", args={"asset": "trash_bin_1", "location": {
         "relation": "absolute", "x": bench.pose.x, "y": bench.pose.y}})
     gone = ToolCall(tool="remove_assets", args={"assets": ["bench_1"]})
-    assert _not_removed_twice([put, gone], campus) == [gone, put]
+    assert _cleared_first(_not_removed_twice([put, gone], campus), campus) == [gone, put]
     once = ToolCall(tool="remove_assets", args={"category": "bench", "count": 1})
     assert _not_removed_twice([once, gone], campus) == [once]  # the only bench goes once
 

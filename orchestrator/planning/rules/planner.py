@@ -79,7 +79,7 @@ from drivetwin.orchestrator.planning.rules.repeat import (
     retargeted,
 )
 from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces, trades_places
-from drivetwin.orchestrator.planning.rules.spelling import is_known, repair, vocabulary
+from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID, is_known, repair, vocabulary
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog, is_layout_kit, nearest_categories
@@ -354,7 +354,7 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
         parts[1:] = [_MORE_OF.sub(lambda m: f"{m.group(0)} {noun}", p, count=1) if not ph.find_categories(p) else p
                      for p in parts[1:]]
     if len(parts) < 2 or not all(ph.find_categories(p) or ph.has_any(p.lower(), ph.EGO_WORDS)
-                                 or re.search(r"\b[a-z]+(?:_[a-z]+)*_\d+\b", p.lower()) for p in parts):
+                                 or ASSET_ID.search(p) for p in parts):
         return [clause]  # each part names a thing ("park the SUV in lot A and the ego in lot B")
     particle = re.match(r"\s+(?:out|away|off|down|up|rid of)\b", clause[verb.end():], re.IGNORECASE)
     lead = clause[: verb.end() + (particle.end() if particle else 0)]  # "take out the hydrant and the sign": both taken out
@@ -510,6 +510,7 @@ class RulePlanner:
             notes.guess(STATEMENT_READ)
         calls = _alike(calls, text.lower(), scene, context.memory)  # "another exactly like it"
         calls = _not_removed_twice(calls, scene)  # "clear the cars out of lot B: both sedans and the SUV"
+        calls = _cleared_first(calls, scene)  # "could the bench go, and the bin be moved to where the bench was"
         calls = _not_restated(calls, text.lower())  # "turn it around ... turn it all the way around, the ego car"
         if calls and asks(text.lower()) and not any(commands(clause.lower()) for clause, _, _ in clauses):
             # "a driver mentioned a stop sign by the crossing; I want to confirm it's there": what the
@@ -636,7 +637,7 @@ def _not_removed_twice(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
         if call.args.get("near") is None and int(call.args.get("count") or len(kind)) >= len(kind):
             gone |= set(kind)  # "remove the bench ... remove that bench": the only one goes once
         out.append(call)
-    return _cleared_first(out, scene)
+    return out
 
 
 # A clause that only names a thing and where it is: "the tree near the Library." (no modal, no verb).

@@ -521,7 +521,8 @@ def _verb_of(m: re.Match[str]) -> str:
 
 
 # Where a clause's command verb stands, and the thing that follows one.
-_ASSET_ID = re.compile(r"\b[A-Za-z]+(?:_[A-Za-z]+)*_\d+\b")
+# An asset id as written ("passenger_car_2", "suv_1").
+ASSET_ID = re.compile(r"\b[A-Za-z]+(?:_[A-Za-z]+)*_\d+\b")
 _COMMAND_SLOT = re.compile(r"(?:^|[,.;:!?]|\b(?:and|then|now|so|pls|please|just))\s*$", re.IGNORECASE)
 _THING_NEXT = re.compile(r"\s+(?:the|a|an|all|every|some|that|those|this|these|\d+)\b", re.IGNORECASE)
 # A command verb and its article or count: the slip after it names the thing ("add a coner": cone).
@@ -560,7 +561,7 @@ def repair(text: str, scene: Scene) -> Repaired:
         repairs.append(f"{said} -> {near[0]}")
         return near[0]
 
-    text = _ASSET_ID.sub(fix_id, text)
+    text = ASSET_ID.sub(fix_id, text)
 
     def fix(m: re.Match[str]) -> str:
         word = m.group(0)
@@ -586,4 +587,4 @@ def repair(text: str, scene: Scene) -> Repaired:
     return Repaired(_WORD.sub(fix, text), repairs)
 
 
-__all__ = ["REPAIR_CUTOFF", "Repaired", "edits", "english_words", "is_english", "is_known", "repair", "repair_targets", "vocabulary"]
+__all__ = ["ASSET_ID", "REPAIR_CUTOFF", "Repaired", "edits", "english_words", "is_english", "is_known", "repair", "repair_targets", "vocabulary"]
