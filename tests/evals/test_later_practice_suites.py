@@ -27,6 +27,7 @@ from drivetwin.evals import (
     practice15_source,
     practice16_source,
     practice17_source,
+    practice18_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -73,6 +74,9 @@ BRIEFS: dict[str, Brief] = {
     "practice15": Brief(250, 8, 8, practice15_source, multi_turn=30, planned=12, compound=15),
     "practice16": Brief(250, 8, 8, practice16_source, multi_turn=30, planned=12, compound=15),
     "practice17": Brief(250, 8, 8, practice17_source, multi_turn=30, planned=12, compound=15),
+    # Nine new voices; arrangement (every grade), search indirect and vague, removal vague and moving
+    # indirect and vague hold 12 or more, the rest 9 or more.
+    "practice18": Brief(270, 9, 9, practice18_source, multi_turn=30, planned=12, compound=15),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
