@@ -212,6 +212,8 @@ def resolve_behaviour(
         raise RuleViolation("behaviour", f"a {cat.name} cannot {spec.kind}; only vehicles, robots and riders drive")
     if spec.kind in ("cross_road", "jaywalk") and cat.motion != "walker":
         raise RuleViolation("behaviour", f"a {cat.name} cannot {spec.kind}; only pedestrians and riders walk")
+    if spec.kind == "follow_path" and cat.motion not in ("vehicle", "walker"):
+        raise RuleViolation("behaviour", f"a {cat.name} cannot follow a path; only vehicles, robots, riders and pedestrians move")
     if spec.kind == "parked":
         return Parked(), None
     if spec.kind == "drive_lane":

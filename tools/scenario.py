@@ -60,6 +60,8 @@ ManoeuvreKind = Literal[
 LIGHT_REACH_M = 12.0
 # Vehicles stop this far before a crossing that lies just before the light.
 CROSSING_CLEARANCE_M = 1.0
+# The time a vehicle's braking takes to build up in the physics: it covers this many seconds of its speed first.
+BRAKE_LAG_S = 0.5
 # A walker's walk across the road ends this far past the last drivable point.
 KERB_STEP_M = 0.5
 MAX_CROSSING_M = 40.0
@@ -268,6 +270,18 @@ def _describe(condition: Condition) -> str:
     return f"event {condition.event} ends"
 
 
+def _crossing_edge(scene: Scene, place: tuple[float, float], start: tuple[float, float]) -> float:
+    """How far the painted crossing at `place` reaches towards `start` (0 where no crossing is there)."""
+    gap = math.dist(place, start)
+    if gap == 0.0:
+        return 0.0
+    ux, uy = (start[0] - place[0]) / gap, (start[1] - place[1]) / gap
+    edge = 0.0
+    while edge < min(gap, MAX_CROSSING_M) and surface_at(scene, place[0] + ux * edge, place[1] + uy * edge) == "crossing":
+        edge += 0.25
+    return edge
+
+
 class AddEvent(Tool[EventArgs]):
     name = "add_event"
     description = (
@@ -282,7 +296,14 @@ class AddEvent(Tool[EventArgs]):
     def propose(self, args: EventArgs, scene: Scene) -> ToolResult:
         asset = find_asset(scene, args.actor)
         action = build_manoeuvre(scene, asset, args.manoeuvre)
-        return _add(scene, asset, action, build_condition(scene, asset.id, args.when), args.name)
+        condition = build_condition(scene, asset.id, args.when)
+        if isinstance(action, Stop) and isinstance(condition, ReachPositionCondition) and condition.actor == asset.id:
+            # "stop at the crosswalk": braking starts early enough to come to rest with the front short of it
+            speed = float(getattr(asset.behaviour, "speed", 0.0) or 0.0)
+            early = speed**2 / (2 * action.deceleration) + speed * BRAKE_LAG_S + category(asset.category).length / 2
+            early += _crossing_edge(scene, condition.position, (asset.pose.x, asset.pose.y)) + CROSSING_CLEARANCE_M
+            condition = condition.model_copy(update={"tolerance": max(condition.tolerance, early)})
+        return _add(scene, asset, action, condition, args.name)
 
 
 class AddManoeuvre(Tool[ManoeuvreArgs]):

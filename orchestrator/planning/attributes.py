@@ -126,8 +126,10 @@ def off_surface(low: str, scene: Scene, placed: Iterable[AssetInstance]) -> list
 
 def look_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     """A material, or a colour asked for as a change, that no call sets."""
+    set_to = {str(c.args["colour"]) for c in calls if c.args.get("colour")}
     if any(c.tool == "set_asset_appearance" or c.args.get("colour") for c in calls):
-        return []
+        missing = [w for w in md.colours_asked(low) if w not in set_to and not (w in ("grey", "gray") and set_to & {"grey", "gray"})]
+        return [f"you asked for {missing[0]}, but the plan does not paint anything {missing[0]}"] if missing and set_to else []
     for m in reversed(ph.find_categories(low)):  # "broken concrete" names rubble, not a material
         low = low[: m.start] + " " * (m.end - m.start) + low[m.end :]
     words = re.findall(r"[a-z]+", low)

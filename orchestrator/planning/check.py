@@ -125,6 +125,8 @@ MAX_READINGS = 3
 # The catalog's tags of what a layout may add unnamed: markers, blocks, signs, roadworks.
 _LAYOUT_KIT = LAYOUT_KIT_TAGS | {"sign"}
 # Words asking for one more of a thing there: what answers them adds.
+# Sending things off: "get the crowd away from the gate", "move those people away" (never more of them).
+_AWAY = re.compile(r"\b(?:get|move|send|shoo|clear|chase)\s+(?:the|those|these|that|them|it|all)\b(?:\s+[\w-]+){0,2}?\s+away\b")
 _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
 # A question about the scene's settings ("time + weather?", "what's the weather doing"): the
 # environment is what it must look up.
@@ -236,6 +238,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if going is not None and any(a.category in said_of for a in effect.added):
         # "kids can't see the cars": how it is for them, never more of them
         out.append("you said how things are for " + ", ".join(sorted(said_of)) + ", but the plan adds more of them")
+    if _AWAY.search(request.low) and effect.added and not request.question:  # "get the crowd away from the gate"
+        out.append("you asked for things to go away, but the plan adds " + _names(effect.added))
     if BARE_STATE.search(request.low) and effect.removed and not request.question:
         # "the bus stop feels empty": what is missing is wanted, never the rest taken away
         out.append("you said it is empty, but the plan takes away " + _names(effect.removed))

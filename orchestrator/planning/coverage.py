@@ -48,6 +48,7 @@ _NEW = re.compile(
 _PLACE_PREPOSITION = re.compile(
     r"\b(?:near|at|by|around|round|beside|next to|behind|in front of|inside|outside|into|onto|on|to|towards|"
     r"along|alongside|across|through|past|beyond|"
+    r"(?:cordon|block|fence|close|seal|rope|tape)(?:s|ed|ing)? off|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)|"  # "cordon off the ..."
     r"(?:far|away|distance|metres|meters|m)\b(?:[^,.;?]{0,40}?\s)?from|"  # "how far is the ego from the ..."
     r"close to|opposite|where is|where's|where are|between[^,.;?]{0,40}?\band)\s+the (?=([a-z][a-z' -]*))"  # (a look-ahead: "from the
 )  # library to the pool" is read for both places; a known place masked to blanks is no name: "to the   anymore")
@@ -151,7 +152,7 @@ THERE_RADIUS_M = 30.0
 # Words before a category that ask for one not there yet ("a tree", "some cones", "another").
 _INDEFINITE = frozenset(["a", "an", "some", "another", "new", "extra", "more", "additional"])
 # "Inside the library", "into the JTEKT building": a building named after a word of containment.
-_INSIDE = re.compile(r"\b(?:inside|into|within|on top of|on the roof of|onto the roof of|atop)(?: of)?\s+(?:the\s+)?([a-z][a-z ]*)"
+_INSIDE = re.compile(r"\b(?:inside|into|within|(?:up )?top of|roof of|rooftop of|atop)(?: of)?\s+(?:the\s+)?([a-z][a-z ]*)"
                      r"|\b(?:on|onto|up on)\s+(?:the\s+)?([a-z][a-z ]*?)\s+(?:roof|rooftop)\b")  # "up on the library roof"
 
 
@@ -309,7 +310,7 @@ def ambiguous_pick(masked: str, scope: Scope, scene: Scene, memory: Memory, plac
 # asks about a thing that is not there rather than for a new one.
 _CHANGES_EXISTING = frozenset(["make", "paint", "colour", "color", "recolour", "recolor", "turn", "move", "shift",
                                "push", "pull", "nudge", "rotate", "drive", "slide", "relocate", "spin", "reverse",
-                               "space", "spread", "straighten", "rearrange", "reposition", "tidy"])
+                               "space", "spread", "straighten", "rearrange", "reposition", "tidy", "place", "position"])
 # Words that say the things were there before: "put the cones back where they were".
 _AS_BEFORE = re.compile(r"\b(?:back (?:where|to where|in|into|at|on|to)|where (?:it|they) (?:was|were|used to be)|back in place)\b")
 
@@ -332,6 +333,8 @@ def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
 def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """Categories asked for as new ("a tree at lot A", "two benches by the fountain") that the
     plan takes from elsewhere in the scene, moving existing ones and adding none."""
+    if all(c.tool == "set_asset_appearance" for c in scope.calls):
+        return []  # "paint one car blue": one of those there; a new one is not painted
     new = {a.id for a in [*scope.added, *scope.removed]}
     # per kind: "a tree by the fountain and one bench there" may not add the tree and move a bench
     moved = {a.category for a in scope.touched if a.id != "ego" and a.id not in new} - {a.category for a in scope.added}
@@ -395,11 +398,15 @@ def off_the_side(low: str, scope: Scope, scene: Scene) -> list[str]:
 
 def inside_building(masked: str, scene: Scene) -> list[str]:
     """Putting something inside a building, which this world's buildings cannot hold."""
+    said_words = set(re.findall(r"[a-z]+", masked.lower()))
+    named = [b for b in scene.buildings if (words := re.findall(r"[a-z]+", b.name.lower())) and words[0] in said_words]
     for m in _INSIDE.finditer(masked):
         said = m.group(1) or m.group(2)
         for building in scene.buildings:
             name = ph.normalise(building.name).strip()
-            if name and (said.startswith(name) or name.startswith(said.strip())):
+            # "inside the big glass building, the JTEKT one": a building described, the only one named
+            described = named == [building] and re.match(r"(?:[a-z]+ ){0,3}building\b", said) is not None
+            if name and (said.startswith(name) or name.startswith(said.strip()) or described):
                 return [f"things cannot go inside or on top of the {building.name} in this world, only around it "
                         "(its entrance is the nearest place)"]
     return []

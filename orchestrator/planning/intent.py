@@ -25,9 +25,11 @@ REPORTED = re.compile(r"(?:residents|people|neighbou?rs|locals|parents|drivers|u
 # What a test is for, said as a case to see: "I want to see what happens if a child runs out in front of us".
 WHAT_IF = re.compile(r"\b(?:see|know|find out|check|test)\s+what (?:happens|would happen|will happen|the ego does)\s+(?:if|when)\b")
 # A place said to be empty as it is ("feels empty", "looks a bit bare"): a lack, not "empty it".
-BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b")
+BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b"
+                        # "empty roads and the lamps buzzing": places described, never "empty the roads"
+                        r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here)\b)|out of scope|clear (away|out|the)|no longer|don'?t want|do not want"
+    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here)\b)|out of scope|clear (away|out|the|it|them)\b|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
@@ -59,6 +61,10 @@ REMOVE_WORDS = re.compile(
 )
 # People doing what they do ("people will eat lunch on that bench", "students often cut across"):
 # who a statement is about, not a thing asked for.
+# A memory the request is told beside ("back when I drove the number 9 ...", "in my day the bin stood ...",
+# "reminds me of the night shift"): context, like a report, never what to do.
+REMINISCED = re.compile(r"\b(?:back (?:when|in (?:my|the|those) days?|home|then|in the day)|in my day|in the old days|reminds? me of"
+                        r"|(?:on|in|at|along) (?:the|my|our) old \w+|when i was (?:a|young|little|driving|working)|(?:i|we) used to|years ago)\b")
 HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|pedestrians)\s+(?:will|often|usually|always|sometimes|tend to)\b")
 # A thing something is forbidden to ("the robot mustn't drive through the fountain"): a constraint
 # on it, not a thing asked for.
@@ -73,7 +79,9 @@ KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
 _QUESTION_START = re.compile(r"(?:^\s*|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question)\s*,?\s+)*(which|what|in which|in what|where|how|is there|are there|is the|are the|does|do any|who|whats|wheres|hows|whos"
-                             r"|is anything|is any|is anyone|is anybody|is someone|is somebody|is nobody|are any|is something|has anything|has anyone|have any|do the)\b"
+                             r"|is anything|is any|is anyone|is anybody|is someone|is somebody|is nobody|are any|is something|has anything|has anyone|have any|do the"
+                             # "is it dark yet", "is it raining": a state asked about; "is it possible to ..." asks for a change
+                             r"|is it(?! (?:possible|ok|okay|alright|all right|fine|feasible|allowed|doable|worth|a good idea|too|time|ever)\b))\b"
                              # "the gates, where are they": the thing first, the question after it
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
@@ -100,7 +108,7 @@ _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s
                      r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show|measure|work out)\b")
 # A request put politely, at the start of the sentence or of a clause ("..., could you add two
 # cars?", "could the bus go ..."): a command even when it ends with a question mark.
-_POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will) (?:you|we|i)\b|^\s*please\b(?!\s*,?\s*(?:where|what|which|how|who|is there|are there)\b)"
+_POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will|might) (?:you|we|i)\b|^\s*please\b(?!\s*,?\s*(?:where|what|which|how|who|is there|are there)\b)"
                      # "could there be a couple of people at the stop?": a wish for what should be there
                      r"|(?:^|[.!;,\-\u2013\u2014]\s*)(?:can|could) (?:there|someone|somebody) be\b"
                      # "maybe drop a car by the library?": a suggestion, hedged
@@ -296,6 +304,16 @@ def without_reason_first(text: str) -> str:
     return text
 
 
+# A whole sentence that remembers ("Back home we'd tie the horse to a post.", "In my day the bin stood ...").
+_MEMORY = re.compile(rf"(?:^|(?<=[.!?;]))\s*(?:\w+,?\s+){{0,2}}?{REMINISCED.pattern}[^.!?;]*[.!?;]+", re.IGNORECASE)
+
+
+def without_memories(text: str) -> str:
+    """`text` without its sentences that tell a memory, when something else is left."""
+    kept = _MEMORY.sub(" ", text)
+    return kept.strip() if kept.strip() else text
+
+
 def without_reason(text: str) -> str:
     """`text` without the clauses that only say why ("so buses can pass", "to test the wipers,
     so give me rain") or what is not meant (", not the ego"), without labels pasted with it
@@ -305,7 +323,7 @@ def without_reason(text: str) -> str:
     if (nominal := _NOMINAL_EDIT.match(text)) is not None:
         text = _ASKED_FOR.sub("", _NOMINAL[nominal.group(1).lower()] + text[nominal.end() :])
     text = without_contrast(_LAYOUT_HEADING.sub(r"\1 of", _LABEL.sub(" ", text))).strip()
-    text = without_reason_first(text)
+    text = without_reason_first(without_memories(text))
     because = _BECAUSE_FIRST.match(text)
     if because is not None and not _POINTS_BACK.search(text[because.end() :]):
         text = text[because.end() :]
@@ -408,6 +426,7 @@ __all__ = [
     "FEWER_WORDS",
     "HOW_THINGS_GO",
     "KEEP_SOME",
+    "REMINISCED",
     "REMOVE_WORDS",
     "REPORTED",
     "WHAT_IF",
@@ -417,6 +436,7 @@ __all__ = [
     "history_request",
     "taken_back",
     "without_contrast",
+    "without_memories",
     "without_reason",
     "without_reason_first",
     "without_salutations",

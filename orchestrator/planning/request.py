@@ -16,6 +16,7 @@ from typing import Literal
 from drivetwin.orchestrator.planning.intent import (
     ADD_WORDS,
     HOW_THINGS_GO,
+    REMINISCED,
     REMOVE_WORDS,
     REPORTED,
     WHAT_IF,
@@ -110,6 +111,7 @@ def read_request(prompt: str, scene: Scene) -> Request:
     # "cars keep getting hidden behind that bin", "people keep saying ...": who things go so for is no thing asked for
     kinds_text = HOW_THINGS_GO.sub(lambda m: " " * len(m.group(0)), kinds_text)
     kinds_text = re.sub(rf"{REPORTED.pattern}[^.;!?]*", lambda m: " " * len(m.group(0)), kinds_text)  # what others say
+    kinds_text = re.sub(rf"{REMINISCED.pattern}[^.;!?]*", lambda m: " " * len(m.group(0)), kinds_text)  # what the speaker remembers
     swapped = swap_said(low) is not None  # "replace the bench with a bin": the bin is asked for, not a description
     categories = frozenset(m.category for m in without_goals(kinds_text, without_beneficiaries(kinds_text, ph.find_categories(kinds_text)))
                            if (swapped or not _DESCRIBING.search(kinds_text[: m.start])) and not _described_head(kinds_text, m))
@@ -165,6 +167,8 @@ def _is_reference(text: str, start: int) -> bool:
         return True  # "8 m/s instead of 5", "faster than 5": what it is now, not what is wanted
     if re.match(r"[\d.,e+-]*\s*(m|metres?|meters?|km|kph|mph|degrees?|deg|seconds?|s)\b", text[start:]):
         return False  # "the truck 8 m ahead": an amount with its unit
+    if before == ["take"] and re.match(r"[\w.,]*\s+(?:away|out|off)\b", text[start:]):
+        return False  # "take two away": an amount, not a film's take 2
     return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in _LABELS)
 
 

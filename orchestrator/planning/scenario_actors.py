@@ -155,7 +155,7 @@ def candidates(words: str, scene: Scene, moving_manoeuvre: bool) -> tuple[list[A
         asset = scene.asset(ident.group(1))
         return ([asset] if asset is not None else []), ident.group(1)
     bare = re.sub(r"^(the|a|an|that|this)\s+", "", low)
-    if any(bare.startswith(w) for w in ("ego", "our car", "test vehicle", "the ego")):
+    if any(bare.startswith(w) for w in ph.EGO_WORDS):
         ego = scene.asset(EGO_ID)
         return ([ego] if ego is not None else []), "the ego"
     head = head_category(own_words(low))

@@ -83,7 +83,8 @@ def normalised(prompt: str, scene: Scene) -> str:
 
 
 # Stopping at a place of the world: "have the ego stop at the west crosswalk" is a stop when it gets there.
-_STOP_AT = re.compile(r"\b(stops?|stopping|brakes?|braking|halts?|pulls? up)(?:\s+(?:completely|fully|dead|there))?\s+at\s+(?=the\s+)")
+_STOP_AT = re.compile(r"\b(stops?|stopping|brakes?|braking|halts?|halting|pulls? up)(?:\s+(?:completely|fully|dead|there))?"
+                      r"\s+(?:at|before|(?:just|right) before|short of|in front of|ahead of)\s+(?=the\s+)")
 
 
 def _stop_at_place(low: str, scene: Scene) -> str:
@@ -188,7 +189,7 @@ _ROLE = re.compile(r"\b(" + "|".join(sorted(ROLE_WORDS, key=len, reverse=True)) 
 POSSIBLE = ("a scenario can make a vehicle brake, change speed, change lanes, cut in, turn at the junction or "
             "reverse, a pedestrian cross the road or stop in it, and a traffic light change or cycle, each at a "
             "time, at a distance or time to collision between two actors, or when an actor reaches a place")
-_LEADING = re.compile(r"^(?:and |then |so |now )?(?:please )?(?:i want |i'd like |we need )?"
+_LEADING = re.compile(r"^(?:and |then |so |now )?(?:please )?(?:i want |i'd like |(?:i|we) (?:should|would) like |we'd like |we need )?"
                       r"(?:make|have|let|get|see that|ensure)?\s*")
 _TRAILING_MODAL = re.compile(r"(?:\s*\b(?:should|will|must|has to|needs to|is going to|is to|to|would|suddenly|then|just"
                              r"|also|quickly|slowly|gently|hard|abruptly))+\s*$")

@@ -92,3 +92,15 @@ def test_a_rider_can_ride_a_lane_and_a_pedestrian_cannot(call: Caller, campus: S
     assert _lane_id(scene, added) == "campus_northbound"
     with pytest.raises(RuleViolation, match="a pedestrian cannot drive_lane"):
         call(campus, "add_asset", category="pedestrian", behaviour=DRIVE)
+
+
+def test_only_movers_follow_a_path(call: Caller, campus: Scene) -> None:
+    """A tree or a cone given a route to walk is refused; a pedestrian or a car may take one."""
+    walk = {"kind": "follow_path", "to": "fountain"}
+    for fixed in ("tree_1", "fire_hydrant_1"):
+        with pytest.raises(RuleViolation, match="cannot follow a path"):
+            call(campus, "set_behaviour", asset=fixed, behaviour=walk)
+    scene, (walker,) = _add(call, campus, category="pedestrian", location={"relation": "at", "target": "bus stop"})
+    result = call(scene, "set_behaviour", asset=walker.id, behaviour=walk)
+    moved = result.edit.apply(scene).asset(walker.id)
+    assert moved is not None and moved.behaviour is not None and moved.behaviour.kind == "follow_path"

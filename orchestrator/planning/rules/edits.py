@@ -21,7 +21,14 @@ from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.inflection import inflected
 from drivetwin.orchestrator.planning.rules.places import Notes, location, relation_objects, road_said, side_of
-from drivetwin.orchestrator.planning.rules.reading import GOAL_REACH, GOES_TO, Reading, find_count, find_place
+from drivetwin.orchestrator.planning.rules.reading import (
+    GOAL_REACH,
+    GOES_TO,
+    Reading,
+    destination,
+    find_count,
+    find_place,
+)
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import lane_under
@@ -183,6 +190,10 @@ KEEP_RADIUS_M = 30.0
 _SOME_OF_THEM = re.compile(r"\b(\d+|[a-z]+) of (?:them|those|these)\b")
 
 
+# A side left unnamed: "along one side of Main Street", "on either side".
+_ONE_SIDE = re.compile(r"\b(?:one|a|either|some) side\b")
+
+
 def _amount(word: str) -> int:
     return int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word, 0)
 
@@ -337,6 +348,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             raise ph_error(f"there is no {name.replace('_', ' ')} at {r.landmark} to take away")
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
     road = road_said(r.low, scene)
+    if _ONE_SIDE.search(r.low) and side_of(r.low, scene) is None:  # "along one side of Main Street": which one is the person's to say
+        raise ph_error(f"which side{' of ' + road[0] if road else ''}? say the north, south, east or west side")
     if road is not None and not r.landmark:  # "no street lights on Campus Drive": those by it, or none
         ids = [a.id for a in scene.assets if a.category == name and road[1](a)]
         if not ids:
@@ -392,10 +405,15 @@ def _some(ids: list[str], count: int | None, fewer: bool, notes: Notes) -> list[
     return ids
 
 
-def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall | None:
+# "one blue and the other orange", "one red, one white": two colours shared out over things of a kind.
+_ONE_AND_OTHER = re.compile(r"\bone\b[^.;]*?(?:\band|,|\bbut)\s+(?:(the other|another|one|the second)|the rest|the others)\b")
+
+
+def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """set_asset_appearance for "paint the bus red", "the bins should blend in with the grass",
     "make the benches wooden"."""
-    colour = next((c for c in COLOURS if r.has((c,))), None)
+    asked = md.colours_asked(r.low)  # "paint the red car blue": blue
+    colour = asked[-1] if asked else next((c for c in COLOURS if r.has((c,))), None)
     if colour is None and r.has(("blend in", "match", "same colour as", "colour of", "coloured like")):
         colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
     if colour is None and r.has(_CONSPICUOUS):
@@ -411,13 +429,20 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
             raise ph_error(f"there is no {r.mentions[0].category} in the scene to recolour")
         return None
     look = {k: v for k, v in (("colour", colour), ("material", material)) if v is not None}
+    shared = _ONE_AND_OTHER.search(r.low)
+    if shared is not None and len(asked) == 2 and r.mentions:
+        kind = [a.id for a in scene.assets if a.category == r.mentions[0].category]
+        them = ids if len(ids) > 1 else kind
+        if len(them) > 1:  # "paint one car blue and the other orange": the first, then the other (or the rest)
+            return [ToolCall(tool="set_asset_appearance", args={"assets": them[:1], "colour": asked[0]}),
+                    ToolCall(tool="set_asset_appearance", args={"assets": them[1:2] if shared.group(1) else them[1:], "colour": asked[1]})]
     if r.mentions and _HALF.search(r.low[: r.mentions[0].start]) and len(ids) > 1:  # "paint half the lamps red": the first half
-        return ToolCall(tool="set_asset_appearance", args={"assets": ids[: len(ids) // 2], **look})
+        return [ToolCall(tool="set_asset_appearance", args={"assets": ids[: len(ids) // 2], **look})]
     every = {a.id for a in scene.assets if r.mentions and a.category == r.mentions[0].category}
     if r.mentions and r.mentions[0].plural and not r.ids and len(ids) > 1 and set(ids) == every:
         # "paint the cones orange": every one of a kind; "the cars in lot B" (an SUV too) are those named
-        return ToolCall(tool="set_asset_appearance", args={"category": r.mentions[0].category, **look})
-    return ToolCall(tool="set_asset_appearance", args={"assets": ids, **look})
+        return [ToolCall(tool="set_asset_appearance", args={"category": r.mentions[0].category, **look})]
+    return [ToolCall(tool="set_asset_appearance", args={"assets": ids, **look})]
 
 
 def ph_error(message: str) -> Exception:
@@ -431,6 +456,8 @@ _GOING_ACROSS = re.compile(r"\b(?:walk|run|hurr|dash|dart|jog|head|go|stroll|ste
                            r"\w*\s+(?:(?:out|off|straight|right|on)\s+)?(?:across|over)\s+(?:the\s+)?"
                            r"(?:road|street|crossing|crosswalk|zebra|junction|intersection|§)")
 
+# Going somewhere on foot or on wheels ("walk to the fountain", "stroll along the sidewalk", "drive down Main Street").
+_GOING_TO = re.compile(r"\b(?:walk|stroll|jog|march|wander|drive|drove|driving)\w*\s+(?:to|towards?|along|around|down|up|off)\b")
 
 # What "leave" leaves somewhere ("leave it at the union", "leave a car in lot A"): a place to stay.
 _LEFT_AT = re.compile(r"\s+(?:it|them|that|this|those|these|(?:the|that|this|a|an|one|another|some|two|three|their|his|her|my|our|your)"
@@ -672,6 +699,15 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     asset = ids[0]
     found = scene.asset(asset)
     motion = catalog()[found.category].motion if found is not None else None
+    picked = find_place(scene, r.low)
+    sent = destination(scene, r.low, picked)
+    if sent is not None and picked is not None:  # "move the tree by lot A over to the fountain": lot A picks it, the fountain is where it goes
+        mark = scene.landmark(picked[0])
+        pool = [a for a in scene.assets if r.mentions and a.category == r.mentions[0].category]
+        if mark is not None and pool and not r.ids and not r.mentions[0].plural:
+            found = min(pool, key=lambda a: math.dist((a.pose.x, a.pose.y), mark.position))
+            asset, ids, notes.subject = found.id, [found.id], [found.id]
+        r = replace(r, landmark=sent[0], landmark_at=sent[1])
     metres = ph.find_distance(r.text)
     if r.has(lx.REVERSE_WORDS):
         if metres is None:
@@ -701,6 +737,10 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         return [ToolCall(tool="move_asset", args={"asset": i, "turn_deg": angle if angle is not None else DEFAULT_SPIN_DEG})
                 for i, angle in wanted]
     kind = behaviour_kind(r, catalog()[found.category] if found is not None else None)
+    if kind is None and motion not in (None, "vehicle", "walker") and (_GOING_ACROSS.search(r.masked) or _GOING_TO.search(r.masked)):
+        # "can the tree by the bus stop walk across the road": a fixed thing goes nowhere by itself
+        raise ph_error(f"a {found.category.replace('_', ' ') if found else 'thing'} cannot walk or drive; only pedestrians, "
+                       "riders, vehicles and robots move by themselves. I can put it somewhere else instead")
     if kind is None and found is not None and catalog()[found.category].drives and md.SET_GOING.search(r.low):
         kind = "drive_lane"  # "get the suv moving": off it drives
     drive = drive_towards(r, scene, found) if found is not None and kind in (None, "drive_lane") and catalog()[found.category].drives else None

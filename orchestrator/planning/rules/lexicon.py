@@ -19,7 +19,7 @@ PROPERTY_WORDS = ("mass", "masses", "weight", "weights", "weigh", "weighs", "how
 REMOVE_WORDS = ("remove", "delete", "get rid of", "take away", "take out", "clear away", "erase",
                 "eliminate", "despawn", "clear out", "destroy", "lose", "ditch", "scrap", "decommission",
                 "throw away", "throw out", "take down", "dispose of", "clean up",
-                "tidy up", "clear the", "empty", "emptied", "cleared of", "no more", "none left", "none of", "without any", "gone")
+                "tidy up", "clear the", "clear it", "clear them", "empty", "emptied", "cleared of", "no more", "none left", "none of", "without any", "gone")
 # "X is over", "the pedestrians went home": the goal is that X is gone.
 GONE_WORDS = ("is over", "are over", "is finished", "are finished", "is done", "are done",
               "went home", "go home", "have left", "has left", "were collected", "was collected",

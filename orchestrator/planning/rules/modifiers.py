@@ -13,7 +13,7 @@ import typing
 from functools import cache
 
 from drivetwin.orchestrator.planning.rules.phrases import NUMBER_WORDS, find_categories, normalise
-from drivetwin.tools.appearance import AssetLookArgs
+from drivetwin.tools.appearance import COLOURS, AssetLookArgs
 from drivetwin.worlds.catalog import catalog
 
 # A compass direction said as a way to go ("2 m east", "eastward", "to the north"), not as part of
@@ -107,7 +107,7 @@ def groups_said(text: str) -> dict[str, frozenset[str]]:
 
 
 # A layout said by its shape; "stop line" and "lane line" are road markings, not layouts.
-_LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|side by side|next to each other|avenue)s?\b")
+_LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|lattice|matrix|side by side|next to each other|avenue)s?\b")
 
 
 # Setting a thing in motion: "get the suv moving", "start the truck rolling" (not a pick of moving ones).
@@ -124,7 +124,9 @@ def layout_said(text: str) -> str | None:
     said = _LAYOUT.search(text)
     if said is None:
         return None
-    return {"side by side": "row", "next to each other": "row", "avenue": "line"}.get(said.group(1), said.group(1))  # an avenue: trees in a line
+    # an avenue: trees in a line; a lattice: a grid
+    return {"side by side": "row", "next to each other": "row", "avenue": "line", "lattice": "grid", "matrix": "grid"}.get(
+        said.group(1), said.group(1))
 
 
 _MATERIALS = frozenset(m for m in typing.get_args(typing.get_args(AssetLookArgs.model_fields["material"].annotation)[0])
@@ -137,6 +139,24 @@ def material_said(text: str) -> str | None:
     """The material the words ask a thing to look like ("wooden benches"), as the appearance
     Worker names it."""
     return next((_MATERIAL_WORDS[w] for w in re.findall(r"[a-z]+", text.lower()) if w in _MATERIAL_WORDS), None)
+
+
+# A colour that picks a thing out or says what it is, not what to make it: "the red one", "the blue car", "not red", "is red".
+_COLOUR_SAID = re.compile(r"\b(?:(the|that|this|those|these|not|no|than|from|is|are|was|were|already|still|currently|of)\s+)?"
+                          rf"({'|'.join(COLOURS)})\b(?!-)(\s+ones?\b)?")
+
+
+def colours_asked(low: str) -> list[str]:
+    """The colours a request asks things to be made, in order: every colour named but those that
+    select or describe ("paint the red car blue" asks for blue only)."""
+    starts = {m.start for m in find_categories(low)}
+    asked = []
+    for m in _COLOUR_SAID.finditer(low):
+        rest = low[m.end(2) :]
+        if m.group(1) or m.group(3) or m.end(2) + len(rest) - len(rest.lstrip()) in starts:
+            continue
+        asked.append(m.group(2))
+    return asked
 
 
 # "one of the small research rovers", "two of those cones": the number counts the thing named.

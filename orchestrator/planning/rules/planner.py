@@ -23,12 +23,14 @@ from drivetwin.orchestrator.planning.intent import (
     FEWER_WORDS,
     HABITUAL,
     HOW_THINGS_GO,
+    REMINISCED,
     REMOVE_WORDS,
     REPORTED,
     WHAT_IF,
     asks,
     commands,
     taken_back,
+    without_memories,
     without_reason,
     without_salutations,
     wrapped_request,
@@ -214,6 +216,7 @@ _STATEMENT = re.compile(
     # "people there must have nowhere to ...", "cars keep getting hidden behind ...": how things go, not a request
     rf"|{HOW_THINGS_GO.pattern}"
     rf"|{REPORTED.pattern}"
+    rf"|{REMINISCED.pattern}"
     # "bin is in a dumb spot", "traffic on Main Street is crawling": a thing named bare and how it is
     rf"|(?!(?:{'|'.join(_VERBS)}|please|pls|can|could|would|will|make sure)\b)[a-z]+(?:\s+[a-z]+){{0,4}}\s+(?:is|are)\s+"
     r"(?:in|on|at|too|not|still|way|over|under|blocking|parked|standing|sitting|facing|so|very|really|always|just|kind of|a bit"
@@ -251,7 +254,7 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
     introduces what follows its colon ("our robot needs a warning: put ..."); without the clauses
     that say why unless `reasons`."""
     prompt = without_salutations(prompt) or prompt  # "Good afternoon. ...": manners, not a time of day
-    kept = prompt if reasons else without_reason(prompt).strip() or prompt
+    kept = without_memories(prompt) if reasons else without_reason(prompt).strip() or prompt  # a memory is never a request
     kept = _COMMAND_COLON.sub(lambda m: f"{m.group(1)}, " if commands(m.group(1).lower()) else m.group(0), kept)
     parts = _SPLIT.split(_TRAILING_OFF.sub(" ", kept))
     out: list[tuple[str, bool, bool]] = []
@@ -326,6 +329,12 @@ _LISTED = re.compile(r"\s*,\s+(?=(?:the|a|an|one|two|three|four|five|\d+)\s)")
 _MORE_OF = re.compile(r"^\s*(?:another(?:\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten))?"
                       r"|(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+more)\b", re.IGNORECASE)
 
+# Where the last of several things named goes ("... and a bin by the Student Union entrance"), said after it.
+_PLACE_TAIL = re.compile(r"\s((?:by|at|near|next to|beside|outside|in front of|behind|in|on|inside|around|to)\s+(?:the\s+)?\S.*)$",
+                         re.IGNORECASE)
+# "..., and the one by the library", "and the other one at the gate": another of the thing named first.
+_ONE_OF = re.compile(r"^\s*(the(?: other)?|that|this)\s+one\b", re.IGNORECASE)
+
 
 def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     """A clause whose verb governs two things ("remove the hydrant and the bin", "put the bench at
@@ -351,8 +360,8 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     said = ph.find_categories(parts[0])
     if said:  # "two cones at the main gate and another two at the east gate": more of the same thing
         noun = ph.normalise(parts[0])[said[0].start : said[0].end].strip()  # the text find_categories indexes
-        parts[1:] = [_MORE_OF.sub(lambda m: f"{m.group(0)} {noun}", p, count=1) if not ph.find_categories(p) else p
-                     for p in parts[1:]]
+        parts[1:] = [_ONE_OF.sub(lambda m: f"{m.group(1)} {noun}", _MORE_OF.sub(lambda m: f"{m.group(0)} {noun}", p, count=1), count=1)
+                     if not ph.find_categories(p) else p for p in parts[1:]]
     if len(parts) < 2 or not all(ph.find_categories(p) or ph.has_any(p.lower(), ph.EGO_WORDS)
                                  or ASSET_ID.search(p) for p in parts):
         return [clause]  # each part names a thing ("park the SUV in lot A and the ego in lot B")
@@ -364,6 +373,9 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     colour = re.search(rf"\s+((?:{'|'.join(COLOURS)}))\s*[.!]*\s*$", parts[-1].lower())
     if colour is not None and not any(re.search(rf"\b(?:{'|'.join(COLOURS)})\b", p.lower()) for p in parts[:-1]):
         parts[:-1] = [f"{p} {colour.group(1)}" for p in parts[:-1]]  # "paint the bench and the bin red": both red
+    where = _PLACE_TAIL.search(parts[-1])
+    if where is not None and not any(_PLACE_TAIL.search(p) or ASSET_ID.search(p) for p in parts[:-1]):
+        parts[:-1] = [f"{p} {where.group(1)}" for p in parts[:-1]]  # "put a bench and a bin by the union": both by it
     return [parts[0], *(f"{lead} {p}" for p in parts[1:])]
 
 
@@ -861,7 +873,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if not (r.mentions or r.ids or r.ego) and notes.subject and any(r.has((c,)) for c in COLOURS):
         colour = recolour(r, scene, memory, notes)  # "...; bright yellow would do": a look for the thing just named
         if colour is not None:
-            return [colour]
+            return colour
     if (not r.mentions and not r.ids and not r.ego) or r.has(("weather", "time of day")):
         env = environment(r, scene.environment)
         if env:
@@ -913,7 +925,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if not fresh and not r.has(("add", "create", "spawn", "place a", "put a")) and not moved_only:  # "move that wooden seat": which seat
         colour = recolour(r, scene, memory, notes)
         if colour is not None:
-            return [colour]
+            return colour
     if not fresh:
         existing = edit_existing(r, scene, memory, notes)
         if existing is not None:
@@ -931,7 +943,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             raise PlanningError(f"unknown asset {noun!r}; nearest: {', '.join(nearest_categories(noun))}")
         env = environment(r, scene.environment)
         return env or None
-    laid_out = (r.has(lx.ARRANGE_WORDS) or md.layout_said(r.masked) is not None  # "line up 4 bins"
+    arranged = r.has(tuple(w for w in lx.ARRANGE_WORDS if w != "around")) or (r.has(("around",)) and not _AROUND_LOOSE.search(r.low))
+    laid_out = (arranged or md.layout_said(r.masked) is not None  # "line up 4 bins"
                 or _AROUND_BY.search(r.low) is not None  # "the fountain should be ringed by six benches"
                 or _ROUND_IT.search(r.low) is not None
                 or (mention.plural and (r.has(("along",)) or _LINING.search(r.low) is not None))  # "trees along one side of lot A"
@@ -1187,13 +1200,15 @@ GRID_MIN = 4
 _AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)|cordon|enclose|rope|fence|seal|box)\b")
 # The passive names the layout after "by" and what it surrounds before: "the fountain ringed by six benches".
 _AROUND_BY = re.compile(r"\b(?:ring|encircl|surround|circl)ed\s+(?:all\s+round\s+)?by\b")
+# "Around" with nothing to go round ("a few more bins around", "cones around here"): here and there, not a ring.
+_AROUND_LOOSE = re.compile(r"\baround\s*(?:$|[.,!?;]|(?:here|somewhere|the (?:place|campus|scene|map)|campus)\b)")
 _ROUND_IT = re.compile(r"\b(?:all\s+)?round\s+(?:it|them|that|this|the)\b")  # "stick some cones round it": a ring
 _VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
 
 
 def _grid_size(low: str) -> tuple[int, int, int, int] | None:
     """A grid's rows and columns ("a 3 by 3 grid", "four-by-four grid", "grid 2x3") and where."""
-    if "grid" not in low:
+    if md.layout_said(low) != "grid":
         return None
     said = _GRID_SIZE.search(low)
     if said is None:
@@ -1265,10 +1280,10 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         args["shape"] = "parking_row"  # "a row of parked cars in lot B": side by side in bays
     elif _LINING.search(r.low) and not r.has(("across",)):
         args["shape"] = "lane_edge"  # "line the road near the gate with cones", "cones along the kerb"
-    elif (r.has(("rows", "across", "slalom")) and not r.has(("grid",))) or md.layout_said(r.low) in ("line", "row") or (
+    elif (r.has(("rows", "across", "slalom")) and md.layout_said(r.low) != "grid") or md.layout_said(r.low) in ("line", "row") or (
             md.layout_said(r.low) is None and nb.spacing_said(r.low) is not None):
         args["shape"] = "line"
-    elif r.has(("grid",)):
+    elif md.layout_said(r.low) == "grid":
         args["shape"] = "grid"
         if _VAGUE_AMOUNT.search(r.low[: first.start]) and int(args.get("count") or GRID_MIN) < GRID_MIN:
             args["count"] = GRID_MIN  # "some bollards in a grid": two by two at least, not three

@@ -459,6 +459,22 @@ def _concepts(low: str, taken: list[ph.Mention]) -> list[ph.Mention]:
 _FOR_WHOM = re.compile(r"\bfor\s+(?:the\s+|a\s+|an\s+|somewhere\s+|anywhere\s+|a place\s+(?:where\s+)?|where\s+)?$")
 
 
+# A thing picked out by where it stands, then sent somewhere: "move the tree by lot A over to the fountain".
+_PICKED_BY = re.compile(r"\b(?:move|shift|relocate|take|bring|carry|drag|push|put|send)\b.*\b(?:by|near|beside|next to|at|in|outside)\s+(?:the\s+)?$")
+_SENT_TO = re.compile(r"\b(?:over |up |across |back |down )?(?:to|into|onto)\s+")
+
+
+def destination(scene: Scene, low: str, place: tuple[str, int, int] | None) -> tuple[str, int, int] | None:
+    """Where a thing picked out by its place is sent, when the words name both; None otherwise."""
+    if place is None or not _PICKED_BY.search(low[: place[1]]):
+        return None
+    sent = _SENT_TO.search(low, place[2])
+    there = find_place(scene, low[sent.end() :]) if sent is not None else None
+    if sent is None or there is None or there[0] == place[0]:
+        return None
+    return there[0], there[1] + sent.end(), there[2] + sent.end()
+
+
 def read(text: str, scene: Scene) -> Reading:
     """Parse one clause against the scene."""
     low = ph.normalise(text)

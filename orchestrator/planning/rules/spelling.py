@@ -39,6 +39,10 @@ _WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
 _SHORT_SLIPS = {
     "rm": "remove",  # a terse user's shell words: "rm all bins", "mv ego 5m N"
     "mv": "move",
+    "ls": "list",
+    "del": "delete",
+    "cnt": "count",
+    "env": "environment",
     "ad": "add",
     "teh": "the",
     "adn": "and",
@@ -66,6 +70,9 @@ _SHORT_SLIPS = {
     "abit": "a bit",
     "alot": "a lot",
 }
+# Number words' common slips, mended before numbers are read: "fourty five degrees" is 45, not "fourth 5".
+_NUMBER_SLIPS = {"fourty": "forty", "ninty": "ninety", "twelth": "twelfth", "fith": "fifth"}
+_NUMBER_SLIP = re.compile(rf"\b({'|'.join(_NUMBER_SLIPS)})\b", re.IGNORECASE)
 _REPAIRABLE_GRAMMAR = (
     "straight",  # "a streight line" is straight, not a streetlight
     "corner",
@@ -317,6 +324,10 @@ _IS_CONTRACTED = re.compile(r"\b(?!(?:it|that|there|here|what|who|let|he|she)'s)
                             r"|under|by|near|blocking|parked|standing|sitting|facing|a bit|so|very|really|always|just)\b)", re.IGNORECASE)
 # A console-style command ("/spawn cone", "/find suv"): the word is the command.
 _SLASH_COMMAND = re.compile(r"(?:^|(?<=[\s;,]))/(?=[a-z])", re.IGNORECASE)
+# A terse user's arrows and pluses: "cones x3 -> lot A", "street + vehicle lights on".
+_TERSE_JOIN = re.compile(r"\s+(?:->|=>|\+)\s+")
+# A little word typed twice: "the the one".
+_DOUBLED = re.compile(r"\b(the|a|an|to|of|and|in|on|at|by|it)\s+\1\b", re.IGNORECASE)
 # A thing's word with its number run on ("car2", "cone3"): the thing and its number, when there is one.
 _NUMBER_GLUED = re.compile(r"(?<![\w-])([a-z]{2,})(\d+)\b", re.IGNORECASE)
 
@@ -437,7 +448,7 @@ _RIGHT_THERE = re.compile(r"(?<!turn )(?<!turns )(?<!turning )(?<!go )(?<!goes )
 
 
 # "turn of the street light": "of" right after a switching verb is a slip for "off".
-_OFF_SLIP = re.compile(r"\b(turn|switch|shut|power) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
+_OFF_SLIP = re.compile(r"\b(turn|switch|shut|power|take|clear|get) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
 # A car park named by its letter, as the British say a parking lot: "car park A".
 _CAR_PARK_OF = re.compile(r"\bcar\s?park\s+(?=[a-z]\b(?!')(?!\s+(?:car|bus|van|truck|lorry|bench|cone|few|bit)\b))", re.IGNORECASE)
 # A marker's name said as the verb: "cone that off", "bollard off the hydrant" ring it with them.
@@ -537,7 +548,7 @@ def _thing_words() -> tuple[str, ...]:
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
-    text = spelt_measures(_sound_alikes(text))  # "two metres" read as "2 metres" by every reader of measures
+    text = spelt_measures(_NUMBER_SLIP.sub(lambda m: _NUMBER_SLIPS[m.group(1).lower()], _sound_alikes(text)))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
     text = _THERE_SLIP.sub("there", text)
@@ -547,6 +558,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _marker_off(text)
     text = _RIGHT_THERE.sub("", text)
     text = _SLASH_COMMAND.sub("", text)
+    text = _TERSE_JOIN.sub(lambda m: " to " if m.group(0).strip() == "->" else " and ", text)  # "suv -> main st", "street + vehicle lights"
+    text = _DOUBLED.sub(r"\1", text)  # "and the the one by the library"
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
