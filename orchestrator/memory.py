@@ -94,6 +94,17 @@ class Memory(BaseModel):
                 return ids
         return []
 
+    def last_asked(self) -> list[ToolCall]:
+        """The look-ups of the latest turn when it was a question answered ("which one's the SUV?"),
+        for the "it" of the turn after; [] otherwise."""
+        last = self.turns[-1] if self.turns else None
+        if last is None or last.status != "answered":
+            return []
+        try:
+            return last.tool_calls()
+        except (ValueError, SyntaxError):
+            return []
+
     def last_touched(self) -> list[str]:
         """Ids the most recent turn still in the scene added, moved or changed."""
         for turn in reversed(self.live_turns()):

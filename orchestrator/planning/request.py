@@ -167,11 +167,18 @@ def _is_reference(text: str, start: int) -> bool:
         return True  # "8 m/s instead of 5", "faster than 5": what it is now, not what is wanted
     if re.match(r"[\d.,e+-]*\s*(m|metres?|meters?|km|kph|mph|degrees?|deg|seconds?|s)\b", text[start:]):
         return False  # "the truck 8 m ahead": an amount with its unit
+    if _YEAR.match(text, start) or (re.search(r"\b(?:in|since|of|back in)\s+'?$", text[:start]) and _PAST.search(text[:start])
+                                    and re.match(r"'?\d{2}\s*(?:[.!?,;]|$)", text[start:])):
+        return True  # "in 1987", "the way it came down in 87": a year, not an amount
     if before == ["take"] and re.match(r"[\w.,]*\s+(?:away|out|off)\b", text[start:]):
         return False  # "take two away": an amount, not a film's take 2
     return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in _LABELS)
 
 
+# A year: "in 1987", "the summer of 2003".
+_YEAR = re.compile(r"(?:19|20)\d{2}\b(?!\s*(?:m\b|metres?|meters?|km|cones?|s\b|seconds?))")
+# Words of a time gone by, which a bare two-digit year follows ("the way it came down in 87").
+_PAST = re.compile(r"\b(?:came|was|were|had|did|happened|used to|went|fell|back)\b")
 # Words a number after names rather than counts: "lot 3", "condition 11", "take 2", "step 4".
 _LABELS = frozenset(["lot", "no", "condition", "case", "step", "scenario", "test", "run", "take", "item", "row",
                      "shot", "scene", "variant", "trial", "phase", "version", "iteration"])

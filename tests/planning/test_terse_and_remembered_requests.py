@@ -161,3 +161,45 @@ def test_a_stop_at_a_crossing_comes_to_rest_before_it(session):
     crossing_edge = -13.25  # the crossing's paint starts here along the ego's lane
     assert ego.x + 2.25 < crossing_edge, "the front stopped short of the paint"
     assert ego.x > -30.0, "and not far short of it"
+
+
+def test_it_after_a_question_about_one_thing_is_that_thing(session):
+    assert session.submit("where is the hydrant?").ok
+    result = session.submit("paint it orange")
+    assert result.ok, result.error
+    assert result.plan is not None and result.plan.calls[0].args["assets"] == ["fire_hydrant_1"]
+
+
+@pytest.mark.parametrize(("words", "fixed"), [
+    ("truck.speed = 6", "set truck speed to 6"),
+    ("hydrant.position = (12, 6)", "move hydrant to (12, 6)"),
+    ("radius=4 // please", "radius 4 please"),
+    ("move it 2 the gate", "move it to the gate"),
+])
+def test_programmer_shorthand_reads_as_words(words, fixed):
+    assert repair(words, build_campus()).text == fixed
+
+
+def test_a_bare_speed_is_in_metres_per_second(session):
+    result = session.submit("ego.speed = 7")
+    assert result.ok, result.error
+    assert result.plan is not None and result.plan.calls[0].args["behaviour"]["speed"] == 7.0
+
+
+def test_a_year_said_in_passing_is_no_amount(session):
+    assert session.submit("snow like the winter of 2010, heavy").ok
+    assert session.submit("fog, thick, the way it came in 95").ok
+
+
+def test_the_same_look_for_things_added_with_as_well_and_a_reason(session):
+    result = session.submit("paint the bench red, and the bin as well so they go together")
+    assert result.ok, result.error
+    assert result.plan is not None and {c.args["colour"] for c in result.plan.calls} == {"red"} and len(result.plan.calls) == 2
+
+
+def test_trees_round_a_place_some_metres_out_are_a_ring_of_that_radius(session):
+    result = session.submit("five trees round its middle, 6 m out, in lot B")
+    assert result.ok, result.error
+    assert result.plan is not None
+    (call,) = result.plan.calls
+    assert call.args["shape"] == "ring" and call.args["radius"] == 6.0

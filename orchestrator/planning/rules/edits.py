@@ -133,8 +133,20 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
     if r.has(_POINTING) or _THAT_LAST.search(r.low):
         if notes.subject:
             return notes.subject
-        return [i for i in memory.last_added() if scene.asset(i) is not None]
+        return _asked_about(memory, scene) or [i for i in memory.last_added() if scene.asset(i) is not None]
     return []
+
+
+def _asked_about(memory: Memory, scene: Scene) -> list[str]:
+    """The one thing the question just answered was about ("which one's the SUV?" then "make it
+    yellow"): an asset it named, or the only one of the kind it looked up; [] when not one."""
+    named: set[str] = set()
+    for call in memory.last_asked():
+        if isinstance(call.args.get("asset"), str):
+            named.add(str(call.args["asset"]))
+        elif call.tool == "find_assets" and isinstance(call.args.get("category"), str):
+            named |= {a.id for a in scene.assets if a.category == call.args["category"]}
+    return sorted(named) if len(named) == 1 and scene.asset(next(iter(named))) is not None else []
 
 
 # One of the things just added, by its place in the order they were added: "the second one", "the last of them".

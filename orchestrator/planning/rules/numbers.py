@@ -187,14 +187,27 @@ SPEED_UNIT = (r"(m/s|m/sec|mps|m\s?per\s?s(?:ec(?:ond)?)?|met(?:re|er)s?\s(?:per
 
 
 # The radius of a ring or a circle driven ("a radius of 3 m", "at a 3 m radius", "radius 5", "r=3 m").
-RADIUS = re.compile(r"\b(?:radius|r\s*=)\s*(?:of )?(\d+(?:\.\d+)?)(?:\s*(?:m|metres?|meters?)\b)?|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?\s*radius\b")
+RADIUS = re.compile(r"\b(?:radius|r\s*=)\s*(?:of )?(\d+(?:\.\d+)?)(?:\s*(?:m|metres?|meters?)\b)?|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?\s*radius\b"
+                    # "six trees round the fountain, about 8 m out": how far out from the middle
+                    r"|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+(?:out|away from (?:the |its )?(?:centre|center|middle))\b")
 
 
 def radius_said(text: str) -> float | None:
     """The radius the words ask for, in metres."""
     said = RADIUS.search(text.lower())
-    return float(said.group(1) or said.group(2)) if said else None
+    return float(said.group(1) or said.group(2) or said.group(3)) if said else None
+
+
+# "at 5 ms": metres per second with the slash dropped.
+_SPEED_MS = re.compile(rf"\b(?:at|to|of|doing) ({NUMBER})\s*(ms)\b")
+# "ego.speed = 8", "set its speed to 8": a bare number said of a speed is in the simulator's unit, m/s
+_SPEED_BARE = re.compile(rf"\bspeed\s*(?:to|of|at|=|:|is)?\s*({NUMBER})()(?!\s*(?:%|x\b|times\b|{SPEED_UNIT}|m\b|metres?\b|meters?\b))")
+
+
+def speed_said(low: str) -> re.Match[str] | None:
+    """A speed said without its usual unit: the number (group 1) and the unit as written (group 2, "" for m/s)."""
+    return _SPEED_MS.search(low) or _SPEED_BARE.search(low)
 
 
 __all__ = ["FOOT_M", "MAX_COUNT", "NUMBER", "RADIUS", "SPACING", "SPEED_UNIT", "Number", "NumberError", "count", "finite", "numbers_in", "parse",
-           "radius_said", "spacing_said", "spelt_measures"]
+           "radius_said", "spacing_said", "speed_said", "spelt_measures"]

@@ -214,7 +214,7 @@ def find_distance(text: str) -> float | None:
 def find_speed(text: str) -> float | None:
     """A speed: 'at 3 m/s', 'at 20 km/h' (converted to m/s), however the unit is written (nb.SPEED_UNIT)."""
     low = text.lower()
-    m = re.search(rf"({nb.NUMBER})\s*{nb.SPEED_UNIT}", low) or re.search(rf"\b(?:at|to|of|doing) ({nb.NUMBER})\s*(ms)\b", low)
+    m = re.search(rf"({nb.NUMBER})\s*{nb.SPEED_UNIT}", low) or nb.speed_said(low)
     if m is None:
         return None
     value = nb.finite(nb.Number(nb.parse(m.group(1)), m.group(1), m.start(1), m.end(1)), "a speed")

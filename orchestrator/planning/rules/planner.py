@@ -234,7 +234,7 @@ _FIX = re.compile(r"(?:(?:please|pls|just|can you|could you|now)\s+)*(?:fix|sort
 _SO_DOES = re.compile(r"^\s*(?:[a-z]+\s+)??(?:and\s+)?(?:so (?:does|do|is|are|should|must|will|can|has|have)|(?:the )?same (?:goes )?for"
                       r"|likewise(?: for)?|ditto for)\b")
 # A clause that asks for the same again of other things ("..., and the bin too", "the bollards as well").
-_TOO = re.compile(r"\b(?:too|as well)\s*[.!?]*\s*$")
+_TOO = re.compile(r"\b(?:too|as well)(?:,?\s+(?:so|to|for|because|since|as)\b[^.!?;]*)?\s*[.!?]*\s*$")  # "..., so they match"
 # An ellipsis the sentence goes on after ("the bench by the stop... vanishes"): a pause, not a break.
 # What comes after it as a new clause ("... could you park three cars?", "... and then it pours") breaks.
 _TRAILING_OFF = re.compile(r"\s*(?:\.{3,}|\u2026)\s*(?=[a-z])(?!(?:could|can|would|will|please|pls|let'?s|and|but|so|then|now"
@@ -1202,7 +1202,7 @@ _AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)
 _AROUND_BY = re.compile(r"\b(?:ring|encircl|surround|circl)ed\s+(?:all\s+round\s+)?by\b")
 # "Around" with nothing to go round ("a few more bins around", "cones around here"): here and there, not a ring.
 _AROUND_LOOSE = re.compile(r"\baround\s*(?:$|[.,!?;]|(?:here|somewhere|the (?:place|campus|scene|map)|campus)\b)")
-_ROUND_IT = re.compile(r"\b(?:all\s+)?round\s+(?:it|them|that|this|the)\b")  # "stick some cones round it": a ring
+_ROUND_IT = re.compile(r"\b(?:all\s+)?round\s+(?:it|them|that|this|the|its)\b")  # "stick some cones round it": a ring
 _VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
 
 

@@ -324,6 +324,13 @@ _IS_CONTRACTED = re.compile(r"\b(?!(?:it|that|there|here|what|who|let|he|she)'s)
                             r"|under|by|near|blocking|parked|standing|sitting|facing|a bit|so|very|really|always|just)\b)", re.IGNORECASE)
 # A console-style command ("/spawn cone", "/find suv"): the word is the command.
 _SLASH_COMMAND = re.compile(r"(?:^|(?<=[\s;,]))/(?=[a-z])", re.IGNORECASE)
+# A programmer's attribute set ("ego.speed = 8", "bin.pos = (10, -20)") and key=value pairs ("spacing=3m").
+_ATTRIBUTE_SET = re.compile(r"\b([a-z][a-z0-9_]*)\.([a-z_]+)\s*=\s*", re.IGNORECASE)
+_PLACE_ATTRIBUTES = frozenset({"pos", "position", "location", "xy", "loc"})
+_KEY_VALUE = re.compile(r"\b([a-z_]{2,})\s*=\s*(?=[\w(.-])", re.IGNORECASE)
+_CODE_COMMENT = re.compile(r"\s//\s*|\s#\s+")
+# "2" said for "to" before a time or a place ("set time 2 midnight", "move it 2 the gate").
+_TWO_AS_TO = re.compile(r"(?<=[a-z] )2 (?=the\b|midni|noon|midday|dawn|dusk|night|morning|evening)", re.IGNORECASE)
 # A terse user's arrows and pluses: "cones x3 -> lot A", "street + vehicle lights on".
 _TERSE_JOIN = re.compile(r"\s+(?:->|=>|\+)\s+")
 # A little word typed twice: "the the one".
@@ -558,6 +565,10 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _marker_off(text)
     text = _RIGHT_THERE.sub("", text)
     text = _SLASH_COMMAND.sub("", text)
+    text = _ATTRIBUTE_SET.sub(lambda m: f"{'move' if m.group(2).lower() in _PLACE_ATTRIBUTES else 'set'} {m.group(1)} "
+                              f"{'' if m.group(2).lower() in _PLACE_ATTRIBUTES else m.group(2) + ' '}to ", text)  # "ego.speed = 8"
+    text = _KEY_VALUE.sub(r"\1 ", _CODE_COMMENT.sub(" ", text))  # "spacing=3m", "weather=snow // heavy"
+    text = _TWO_AS_TO.sub("to ", text)  # "set time 2 midnight": to
     text = _TERSE_JOIN.sub(lambda m: " to " if m.group(0).strip() == "->" else " and ", text)  # "suv -> main st", "street + vehicle lights"
     text = _DOUBLED.sub(r"\1", text)  # "and the the one by the library"
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
