@@ -40,7 +40,6 @@ _SHORT_SLIPS = {
     "rm": "remove",  # a terse user's shell words: "rm all bins", "mv ego 5m N"
     "mv": "move",
     "ls": "list",
-    "del": "delete",
     "cnt": "count",
     "env": "environment",
     "ad": "add",
@@ -331,6 +330,8 @@ _KEY_VALUE = re.compile(r"\b([a-z_]{2,})\s*=\s*(?=[\w(.-])", re.IGNORECASE)
 _CODE_COMMENT = re.compile(r"\s//\s*|\s#\s+")
 # "2" said for "to" before a time or a place ("set time 2 midnight", "move it 2 the gate").
 _TWO_AS_TO = re.compile(r"(?<=[a-z] )2 (?=the\b|midni|noon|midday|dawn|dusk|night|morning|evening)", re.IGNORECASE)
+# A shell's "del" opening a command.
+_DEL_FIRST = re.compile(r"(?:^|(?<=[.;!?]\s))\s*del\b(?=\s+[a-z])", re.IGNORECASE)
 # A terse user's arrows and pluses: "cones x3 -> lot A", "street + vehicle lights on".
 _TERSE_JOIN = re.compile(r"\s+(?:->|=>|\+)\s+")
 # A little word typed twice: "the the one".
@@ -569,6 +570,7 @@ def repair(text: str, scene: Scene) -> Repaired:
                               f"{'' if m.group(2).lower() in _PLACE_ATTRIBUTES else m.group(2) + ' '}to ", text)  # "ego.speed = 8"
     text = _KEY_VALUE.sub(r"\1 ", _CODE_COMMENT.sub(" ", text))  # "spacing=3m", "weather=snow // heavy"
     text = _TWO_AS_TO.sub("to ", text)  # "set time 2 midnight": to
+    text = _DEL_FIRST.sub("delete", text)  # "del bin"; never Spanish "el coche del ego"
     text = _TERSE_JOIN.sub(lambda m: " to " if m.group(0).strip() == "->" else " and ", text)  # "suv -> main st", "street + vehicle lights"
     text = _DOUBLED.sub(r"\1", text)  # "and the the one by the library"
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
