@@ -36,6 +36,8 @@ from drivetwin.orchestrator.planning.rules.reading import (
     FIRST_PERSON_EGO,
     find_lane,
     find_place,
+    labelled,
+    named_as,
     without_beneficiaries,
     without_goals,
     without_order,
@@ -89,6 +91,9 @@ def read_request(prompt: str, scene: Scene) -> Request:
     given = condition(repaired, scene)  # "if there's a bus, paint it yellow": the bus there, or a question
     repaired = given.request if given is not None and given.met else repaired
     low = ph.normalise(without_reason(without_salutations(repaired) or repaired)).strip()
+    low = ph.normalise(named_as(low)[0]).strip()  # "..., that's our crash vehicle": a name given, no vehicle asked for
+    for ident, start, end in reversed(labelled(scene, low)):  # "the steward": the thing the person named so
+        low = low[:start] + ident + low[end:]
     place = _named_place(scene, low)
     masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for

@@ -203,3 +203,45 @@ def test_trees_round_a_place_some_metres_out_are_a_ring_of_that_radius(session):
     assert result.plan is not None
     (call,) = result.plan.calls
     assert call.args["shape"] == "ring" and call.args["radius"] == 6.0
+
+
+def test_a_thing_given_a_name_is_found_by_it_later(session):
+    added = session.submit("put a cyclist by the fountain, that's our courier")
+    assert added.ok, added.error
+    (courier,) = [a for a in session.scene.assets if a.label == "courier"]
+    result = session.submit("now send the courier over to the library")
+    assert result.ok, result.error
+    assert result.plan is not None and result.plan.calls[0].args["asset"] == courier.id
+
+
+def test_a_name_that_holds_a_thing_word_asks_for_no_such_thing(session):
+    result = session.submit("add a truck in lot A, that's our rescue vehicle")
+    assert result.ok, result.error
+    assert result.plan is not None and len(result.plan.calls) == 1
+    assert [a.category for a in session.scene.assets if a.label == "rescue vehicle"] == ["truck"]
+
+
+def test_a_road_said_short_is_that_road():
+    assert repair("park it on campus dr. please", build_campus()).text == "park it on Campus Drive please"
+
+
+def test_both_kinds_of_lights_said_switch_both(session):
+    result = session.submit("flick the street + vehicle lights on")
+    assert result.ok, result.error
+    lights = session.scene.environment.lighting
+    assert lights.street_lights == "on" and lights.vehicle_lights == "on"
+
+
+def test_a_back_said_to_face_a_place_turns_the_thing_away_from_it(session):
+    toward = session.submit("turn the bench so it faces the road")
+    assert toward.ok and toward.plan is not None
+    session.undo()
+    away = session.submit("turn the bench so its back faces the road")
+    assert away.ok and away.plan is not None
+    turned = toward.plan.calls[0].args["turn_deg"] - away.plan.calls[0].args["turn_deg"]
+    assert abs(abs(turned) - 180.0) < 1.0
+
+
+def test_a_verb_and_its_particle_are_not_run_together_into_a_thing():
+    assert repair("have the kids cross over the road", build_campus()).text == "have the kids cross over the road"
+    assert repair("put a cone on the side walk", build_campus()).text == "put a cone on the sidewalk"

@@ -166,7 +166,7 @@ def test_a_thing_moved_to_the_north_sidewalk_goes_across_from_where_it_stood(ses
     ("/find suv nearlotb", "find suv near lot b"),
     ("put a cone atthe busstop", "put a cone at the bus stop"),
     ("conesnear the eastgate", "cones near the east gate"),
-    ("car2 drive westbond main st", "car 2 drive westbound main st"),  # a slip, not "west bond"
+    ("car2 drive westbond main st", "car 2 drive westbound Main Street"),  # a slip, not "west bond"
 ])
 def test_words_run_together_are_read_apart(campus, said: str, read: str):
     assert repair(said, campus).text == read

@@ -136,8 +136,10 @@ def lights(r: Reading) -> ToolCall | None:
     if not re.search(r"\b(on|off|up|lit|switch|switched|turn|turned|bright|brighter|dark|darker|see|visible)\b", r.low):
         return None  # "the lights handle it": lamps named as a circumstance, not switched
     state = "off" if r.has(("off", "switch off", "turn off", "no lights", "dark streets")) else "on"
-    key = "vehicle_lights" if r.has(("headlights", "vehicle lights", "car lights")) else "street_lights"
-    return ToolCall(tool="set_lighting", args={key: state})
+    vehicles = r.has(("headlights", "vehicle lights", "car lights", "vehicle", "vehicles"))
+    streets = not vehicles or r.has(("street lights", "street", "streetlights", "lamps", "street lamps", "lamp posts"))
+    # "street and vehicle lights on": both kinds said, both switched
+    return ToolCall(tool="set_lighting", args={k: state for k, said in (("street_lights", streets), ("vehicle_lights", vehicles)) if said})
 
 
 # "later in the day", "two hours earlier": the clock moved from where it stands; hours when unsaid.

@@ -70,7 +70,7 @@ from drivetwin.orchestrator.planning.rules.places import (
     said_a_place,
 )
 from drivetwin.orchestrator.planning.rules.questions import of_group, plan_question
-from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, read
+from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, named_as, read
 from drivetwin.orchestrator.planning.rules.repeat import (
     correct,
     corrects,
@@ -397,8 +397,12 @@ class RulePlanner:
         described: list[ToolCall] = []
         previous: list[ToolCall] = []  # the calls of the last clause that asked for something
         for clause, asked, intro in clauses:
+            clause, name = named_as(clause)  # "add a pedestrian at the gate, that's our steward"
             reading = read(clause, scene)
             coming = len(notes.coming)
+            if name and not reading.mentions and calls and calls[-1].tool == "add_asset":  # "... at the gate. That's our steward."
+                calls[-1] = _labelled_as(calls[-1], name)
+                continue
             look = next((c for c in reversed(calls) if c.tool == "set_asset_appearance"), None)
             if look is not None and _TOO.search(reading.low) and reading.mentions and not any(
                     reading.has((c,)) for c in COLOURS):
@@ -435,6 +439,8 @@ class RulePlanner:
             if _BARE_NAMING.match(reading.low) and _VERB_AT.search(reading.low) is None and clause_calls and all(
                     c.tool == "place_asset" and c.args.get("asset") in _named_in(calls) for c in clause_calls):
                 continue  # "a ring of bollards round the tree by the Library. The tree near the Library.": which tree
+            if name:
+                clause_calls = [_labelled_as(c, name) if c.tool == "add_asset" else c for c in clause_calls]
             calls.extend(clause_calls)
             previous = clause_calls
             unknown += _unknown_words(clause, scene)
@@ -979,6 +985,13 @@ def _unknown_verb(r: Reading, scene: Scene) -> str | None:
                                   r.low[:end]):
         return None  # "gimme a cone", "chuck two benches there": a new thing may be what is asked for
     return next((w for w in words if not w.isdigit() and not is_known(w.strip("'-"), vocab)), None)
+
+
+def _labelled_as(call: ToolCall, name: str) -> ToolCall:
+    """An addition of one thing given the person's name for it (more than one are not named)."""
+    if int(call.args.get("count") or 1) != 1:
+        return call
+    return ToolCall(tool=call.tool, args={**call.args, "label": name})
 
 
 def _said_once(r: Reading, scene: Scene) -> list[str]:

@@ -475,6 +475,33 @@ def destination(scene: Scene, low: str, place: tuple[str, int, int] | None) -> t
     return there[0], there[1] + sent.end(), there[2] + sent.end()
 
 
+# The person's own name for a thing, said beside it: "..., that's our steward", "call it the pace car".
+_NAMED_AS = re.compile(r"[,;.\s\u2014-]+(?:(?:that|this|it|he|she)(?:'s| is)|call (?:it|him|her)|name (?:it|him|her)|as)\s+"
+                       r"(?:our|the|my|your)\s+([a-z][a-z -]{1,28}?)\s*[.!]*\s*$", re.IGNORECASE)
+
+
+def named_as(clause: str) -> tuple[str, str]:
+    """`clause` without the person's name for what it adds, and that name ("" when none)."""
+    said = _NAMED_AS.search(clause)
+    if said is None or (ph.find_categories(said.group(1)) and not re.search(r"\b(?:our|my)\b", said.group(0))):
+        return clause, ""  # "as the bench": a thing's own word, not a name for it
+    return clause[: said.start()], said.group(1).strip().lower()
+
+
+def labelled(scene: Scene, low: str) -> list[tuple[str, int, int]]:
+    """Things the words name by the name the person gave them ("the steward"): id and span."""
+    names: dict[str, list[str]] = {}
+    for asset in scene.all_assets():
+        if asset.label and asset.label != "maintenance":
+            names.setdefault(asset.label.lower(), []).append(asset.id)
+    out = []
+    for name, ids in names.items():
+        said = re.search(rf"\b(?:the|our|my|that|this)\s+({re.escape(name)})\b", low)
+        if said is not None and len(ids) == 1:
+            out.append((ids[0], said.start(1), said.end(1)))
+    return out
+
+
 def read(text: str, scene: Scene) -> Reading:
     """Parse one clause against the scene."""
     low = ph.normalise(text)
@@ -483,6 +510,8 @@ def read(text: str, scene: Scene) -> Reading:
     place = find_place(scene, low)
     if place is not None:
         spans.append(place[1:])
+    given = labelled(scene, low)  # "the steward": the thing the person named so
+    spans += [(start, end) for _, start, end in given]
     # Lanes are read with the place blanked: "the east gate" says nothing about eastbound.
     lane = find_lane(scene, _blank(low, *place[1:]) if place is not None else low)
     if lane is not None and lane[2] > lane[1]:
@@ -517,7 +546,7 @@ def read(text: str, scene: Scene) -> Reading:
     # "a night test of pedestrian detection": what a sensor task is about is its topic, not a thing asked for
     mentions = [m for m in mentions if not _PERCEPTION_TASK.match(low[m.end :])]
     words = {t.removesuffix("'s") for t in ph.tokens(low)}  # "suv_1's pose"
-    ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in words]
+    ids = [i for i in ph.find_asset_ids(scene, low.replace(" ", "  ")) if i in words] + [i for i, _, _ in given]
     # "those cone I added": a plural said by its determiner when the noun is written singular
     mentions = [replace(m, plural=True) if re.search(r"\b(?:those|these|all)\s+$", low[: m.start]) else m for m in mentions]
     numbered, mentions = _numbered(scene, low, mentions)
@@ -592,5 +621,5 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
     return not present  # a bare noun: the one there is, if there is one
 
 
-__all__ = ["FIRST_PERSON_EGO", "Reading", "counted_kinds", "find_count", "find_lane", "find_place", "is_new", "place_kind_said", "read",
+__all__ = ["FIRST_PERSON_EGO", "Reading", "counted_kinds", "find_count", "find_lane", "find_place", "is_new", "labelled", "named_as", "place_kind_said", "read",
            "without_order"]

@@ -330,6 +330,20 @@ _KEY_VALUE = re.compile(r"\b([a-z_]{2,})\s*=\s*(?=[\w(.-])", re.IGNORECASE)
 _CODE_COMMENT = re.compile(r"\s//\s*|\s#\s+")
 # "2" said for "to" before a time or a place ("set time 2 midnight", "move it 2 the gate").
 _TWO_AS_TO = re.compile(r"(?<=[a-z] )2 (?=the\b|midni|noon|midday|dawn|dusk|night|morning|evening)", re.IGNORECASE)
+# Short forms of the kinds of road: "Main St", "Campus Dr.".
+_ROAD_SHORT = {"street": ("st",), "road": ("rd",), "drive": ("dr", "drv"), "avenue": ("ave", "av"), "boulevard": ("blvd",),
+               "lane": ("ln",), "highway": ("hwy",)}
+
+
+def _road_abbreviations(text: str, scene: Scene) -> str:
+    """`text` with a road's name said short ("main st") written out as the world names it."""
+    for road in {lane.road for lane in scene.roads.lanes if lane.road}:
+        *head, kind = road.split()
+        for short in _ROAD_SHORT.get(kind.lower(), ()):
+            text = re.sub(rf"\b{re.escape(' '.join(head))}\s+{short}\b\.?", road, text, flags=re.IGNORECASE)
+    return text
+
+
 # A shell's "del" opening a command.
 _DEL_FIRST = re.compile(r"(?:^|(?<=[.;!?]\s))\s*del\b(?=\s+[a-z])", re.IGNORECASE)
 # A terse user's arrows and pluses: "cones x3 -> lot A", "street + vehicle lights on".
@@ -516,6 +530,11 @@ def _sound_alikes(text: str) -> str:
 _ALPHA = re.compile(r"[A-Za-z]{2,}")
 
 
+# Words a noun phrase opens with: "the side walk" is the sidewalk.
+_NOUN_OPENERS = frozenset({"a", "an", "the", "this", "that", "these", "those", "my", "our", "your", "its", "their", "some",
+                           "any", "each", "every", "no", "one", "two", "three", "four", "five", "six", "another"})
+
+
 def _joined_apart(text: str, vocab: frozenset[str]) -> str:
     words = list(_ALPHA.finditer(text))
     out, at = [], 0
@@ -523,7 +542,11 @@ def _joined_apart(text: str, vocab: frozenset[str]) -> str:
         if a.start() < at or text[a.end() : b.start()] != " ":
             continue
         joined = (a.group(0) + b.group(0)).lower()
-        if joined in vocab and f"{a.group(0)} {b.group(0)}".lower() not in _phrases():
+        before = text[: a.start()].split()[-1:]
+        # "them folk cross over the road": two words of their own, a verb's, unless a noun's article comes first
+        verb_like = is_english(a.group(0).lower()) and is_english(b.group(0).lower()) and not (
+            before and before[0].lower() in _NOUN_OPENERS)
+        if joined in vocab and not verb_like and f"{a.group(0)} {b.group(0)}".lower() not in _phrases():
             out.append(text[at : a.start()] + joined)
             at = b.end()
     return "".join(out) + text[at:]
@@ -570,6 +593,7 @@ def repair(text: str, scene: Scene) -> Repaired:
                               f"{'' if m.group(2).lower() in _PLACE_ATTRIBUTES else m.group(2) + ' '}to ", text)  # "ego.speed = 8"
     text = _KEY_VALUE.sub(r"\1 ", _CODE_COMMENT.sub(" ", text))  # "spacing=3m", "weather=snow // heavy"
     text = _TWO_AS_TO.sub("to ", text)  # "set time 2 midnight": to
+    text = _road_abbreviations(text, scene)  # "main st": Main Street
     text = _DEL_FIRST.sub("delete", text)  # "del bin"; never Spanish "el coche del ego"
     text = _TERSE_JOIN.sub(lambda m: " to " if m.group(0).strip() == "->" else " and ", text)  # "suv -> main st", "street + vehicle lights"
     text = _DOUBLED.sub(r"\1", text)  # "and the the one by the library"
