@@ -189,7 +189,7 @@ SPEED_UNIT = (r"(m/s|m/sec|mps|m\s?per\s?s(?:ec(?:ond)?)?|met(?:re|er)s?\s(?:per
 # The radius of a ring or a circle driven ("a radius of 3 m", "at a 3 m radius", "radius 5", "r=3 m").
 RADIUS = re.compile(r"\b(?:radius|r\s*=)\s*(?:of )?(\d+(?:\.\d+)?)(?:\s*(?:m|metres?|meters?)\b)?|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)?\s*radius\b"
                     # "six trees round the fountain, about 8 m out": how far out from the middle
-                    r"|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+(?:out|away from (?:the |its )?(?:centre|center|middle))\b")
+                    r"|(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+(?:out(?!\s+of\b)|away from (?:the |its )?(?:centre|center|middle))\b")
 
 
 def radius_said(text: str) -> float | None:
