@@ -407,7 +407,8 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     out += off_surface(request.low, scene, placed)
     if not request.question or effect.edits:  # "could the library be painted red?" asks for an edit
         out += look_left_out(request.low, effect.calls)
-    if request.place is not None and effect.removed and names_group(request.low) and not KEEP_SOME.search(request.low):
+    if request.place is not None and effect.removed and names_group(request.low) and not KEEP_SOME.search(request.low) \
+            and not (request.numbers and len(effect.removed) in request.numbers):  # "two cars in lot B": two of them
         near = _nearness(scene, request.place)
         spared = excepted_ids(request.excepted, _kinds_named(request), scene, without_contrast(request.low))  # "..., but keep the SUV"
         out += group_left_behind(request.low, effect.removed,
@@ -936,17 +937,31 @@ def _screened(prompt: str, question: Question, context: PlanContext) -> Verdict:
         return Verdict("ask", ["the planner could not tell which reading was meant"], question)
     request = read_request(prompt, context.scene)
     kept: list[Reading] = []
+    runs: list[Effect] = []
     first_problems: list[str] = []
     for reading in question.readings:
         effect = dry_run(reading.calls, context)
         found = ["a dry run refuses it"] if effect is None else problems_of(request, effect, context)
-        if not found:
+        if not found and effect is not None:
             kept.append(reading)
+            runs.append(effect)
         first_problems = first_problems or found
     if not kept:
         return Verdict("refuse", first_problems, None, refusal(first_problems, context))
+    if len(kept) == 1 and len(question.readings) > 1 and not request.question and _edits_named(kept[0], request):
+        # two planners read it two ways and the request rules one out: the other is what it says
+        return Verdict("apply", [f"the other readings misread it: {'; '.join(first_problems)}"],
+                       outcome=runs[0].outcome, calls=list(kept[0].calls))
     return Verdict("ask", ["the planner could not tell which reading was meant"],
                    question.model_copy(update={"readings": kept}))
+
+
+def _edits_named(reading: Reading, request: Request) -> bool:
+    """Whether a reading acts only on things the request names by kind or id (not on others it guessed)."""
+    named = set(request.categories) | set(re.findall(r"\b[a-z]+(?:_[a-z]+)*_\d+\b", request.low))
+    touched = {str(c.args.get("category") or c.args.get("asset") or "") for c in reading.calls}
+    touched |= {a.rsplit("_", 1)[0] for a in touched if re.search(r"_\d+$", a)}
+    return bool(named) and all(t in named or t.rsplit("_", 1)[0] in named for t in touched if t)
 
 
 def refusal(problems: list[str], context: PlanContext) -> str:

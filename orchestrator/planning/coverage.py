@@ -173,6 +173,7 @@ class Named:
     category: str
     plural: bool
     before: str
+    after: str = ""
 
     def last_words(self, n: int) -> list[str]:
         return self.before.split()[-n:]
@@ -181,7 +182,7 @@ class Named:
 def named_in(masked: str) -> list[Named]:
     """Each category the words name, in order, with what comes before it ("the", "ten", "all")."""
     indexed = ph.normalise(masked)  # the text find_categories indexes
-    return [Named(m.category, m.plural, indexed[: m.start]) for m in ph.find_categories(masked)]
+    return [Named(m.category, m.plural, indexed[: m.start], indexed[m.end :]) for m in ph.find_categories(masked)]
 
 
 def _ids_of(scene: Scene, category: str) -> set[str]:
@@ -346,6 +347,8 @@ def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
                                       or before[-1] in ("put", "place", "plant", "stick"))
         if before[-2:-1] and before[-2] in ("all", "both", "the", "those", "these"):
             asked_new = False  # "all three vehicles", "the two cars": things already there, counted
+        if re.match(r"\s*(?:number |no\.? |#)?\d+\b", m.after):
+            asked_new = False  # "put passenger car 2 in lot A": that one, by its number
         if asked_new and m.category in moved and m.category not in out:
             out.append(m.category)
     return out

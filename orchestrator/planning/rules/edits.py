@@ -353,6 +353,10 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         return [ToolCall(tool="remove_assets", args={"assets": chosen})] if chosen else None
     args: dict[str, Any] = {"category": name}
     grouped = any(name in members for members in md.groups_said(r.low).values())
+    if grouped and count and r.landmark and not fewer and _kept(r) is None:
+        at = _at_place(scene, r.landmark, referenced(r, scene, memory, notes))
+        if len(at) == count:  # "all three cars in lot B": the three there, whichever kind of car each is
+            return [ToolCall(tool="remove_assets", args={"assets": at})]
     if (grouped or _scoped_by_place(r, mention, anywhere=True)) and (count is None or _kept(r) is not None) and not fewer:
         # "the vehicles in lot B": every one there, of every category the words cover ("..., just leave one": all but one)
         ids = _but_kept(r, referenced(r, scene, memory, notes))
