@@ -8,9 +8,13 @@ short of the crossing" comes to rest before it (MuJoCo)."""
 from __future__ import annotations
 
 import pytest
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
+from drivetwin.orchestrator.planning.check import review
 from drivetwin.orchestrator.planning.intent import asks, without_memories
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules.spelling import repair
+from drivetwin.tools.base import ToolCall
+from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.campus import build_campus
 from drivetwin.worlds.simulation import Simulation
 from drivetwin.worlds.storyboard import ReachPositionCondition
@@ -245,3 +249,36 @@ def test_a_back_said_to_face_a_place_turns_the_thing_away_from_it(session):
 def test_a_verb_and_its_particle_are_not_run_together_into_a_thing():
     assert repair("have the kids cross over the road", build_campus()).text == "have the kids cross over the road"
     assert repair("put a cone on the side walk", build_campus()).text == "put a cone on the sidewalk"
+
+
+def _two_readings(prompt: str, *readings: list[ToolCall]) -> Plan:
+    question = Question(text="Did you mean:", readings=[Reading(text=str(i), calls=calls) for i, calls in enumerate(readings)])
+    return Plan(calls=[], planner="hybrid", confidence=0.0, question=question)
+
+
+def test_of_two_readings_the_one_the_request_does_not_rule_out_is_applied():
+    context = PlanContext(scene=build_campus(), registry=ToolRegistry.default(plugins=False))
+    move = [ToolCall(tool="place_asset", args={"asset": "bench_1", "location": {"relation": "next_to", "target": "fountain"}})]
+    add = [ToolCall(tool="add_asset", args={"category": "bench", "location": {"relation": "next_to", "target": "fountain"}})]
+    verdict = review("kindly set the bench down beside the fountain", _two_readings("", add, move), context)
+    assert verdict.action == "apply" and verdict.calls == move
+
+
+def test_of_two_readings_one_that_acts_on_a_thing_not_named_is_still_asked_about():
+    context = PlanContext(scene=build_campus(), registry=ToolRegistry.default(plugins=False))
+    bin_moved = [ToolCall(tool="place_asset", args={"asset": "trash_bin_1", "location": {"relation": "at", "target": "fountain"}})]
+    bench_moved = [ToolCall(tool="place_asset", args={"asset": "bench_1", "location": {"relation": "at", "target": "fountain"}})]
+    verdict = review("that thing over there, to the fountain with it", _two_readings("", bin_moved, bench_moved), context)
+    assert verdict.action != "apply"
+
+
+def test_a_thing_said_with_its_number_is_that_one_not_a_new_one(session):
+    result = session.submit("put passenger car 1 in lot A")
+    assert result.ok, result.error
+    assert not [a for a in session.scene.assets if a.category == "passenger_car" and a.id not in ("passenger_car_1", "passenger_car_2")]
+
+
+def test_every_kind_of_car_at_a_place_counted_out(session):
+    result = session.submit("get rid of the three cars parked in lot B")
+    assert result.ok, result.error
+    assert session.scene.asset("suv_1") is None and session.scene.asset("passenger_car_1") is None
