@@ -40,6 +40,8 @@ class Reading(BaseModel):
 
     text: str = Field(min_length=1)
     calls: list[ToolCall] = Field(default_factory=list)
+    # How sure the planner that offered it was (0 when it did not say).
+    confidence: float = Field(0.0, ge=0.0, le=1.0)
 
 
 class Question(BaseModel):

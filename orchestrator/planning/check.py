@@ -74,6 +74,7 @@ from drivetwin.orchestrator.planning.intent import (
     FEWER_WORDS,
     HOW_THINGS_GO,
     KEEP_SOME,
+    LIVELIER,
     REMOVE_WORDS,
     asks,
     without_contrast,
@@ -240,6 +241,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you said how things are for " + ", ".join(sorted(said_of)) + ", but the plan adds more of them")
     if _AWAY.search(request.low) and effect.added and not request.question:  # "get the crowd away from the gate"
         out.append("you asked for things to go away, but the plan adds " + _names(effect.added))
+    if LIVELIER.search(request.low) and effect.removed and not request.question:  # "liven them up"
+        out.append("you asked for more life, but the plan takes away " + _names(effect.removed))
     if BARE_STATE.search(request.low) and effect.removed and not request.question:
         # "the bus stop feels empty": what is missing is wanted, never the rest taken away
         out.append("you said it is empty, but the plan takes away " + _names(effect.removed))
@@ -948,12 +951,17 @@ def _screened(prompt: str, question: Question, context: PlanContext) -> Verdict:
         first_problems = first_problems or found
     if not kept:
         return Verdict("refuse", first_problems, None, refusal(first_problems, context))
-    if len(kept) == 1 and len(question.readings) > 1 and not request.question and _edits_named(kept[0], request):
+    if len(kept) == 1 and len(question.readings) > 1 and kept[0].confidence >= SURE_READING and not request.question \
+            and _edits_named(kept[0], request):
         # two planners read it two ways and the request rules one out: the other is what it says
         return Verdict("apply", [f"the other readings misread it: {'; '.join(first_problems)}"],
                        outcome=runs[0].outcome, calls=list(kept[0].calls))
     return Verdict("ask", ["the planner could not tell which reading was meant"],
                    question.model_copy(update={"readings": kept}))
+
+
+# A reading the request leaves standing alone is applied only when its planner was this sure of it.
+SURE_READING = 0.8
 
 
 def _edits_named(reading: Reading, request: Request) -> bool:

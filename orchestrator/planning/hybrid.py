@@ -281,7 +281,7 @@ class HybridPlanner:
         """One short question offering `readings` (the first MAX_READINGS) in plain words."""
         question = Question(
             text="I am not sure what you mean. Did you mean:",
-            readings=[Reading(text=describe(c.calls), calls=c.calls) for c in readings[:MAX_READINGS]],
+            readings=[Reading(text=describe(c.calls), calls=c.calls, confidence=c.confidence) for c in readings[:MAX_READINGS]],
         )
         step = TraceStep(
             level="hybrid", input="path: ask", output=f"{why}; asking", seconds=time.perf_counter() - started

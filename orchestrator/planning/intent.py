@@ -64,7 +64,10 @@ REMOVE_WORDS = re.compile(
 # A memory the request is told beside ("back when I drove the number 9 ...", "in my day the bin stood ...",
 # "reminds me of the night shift"): context, like a report, never what to do.
 REMINISCED = re.compile(r"\b(?:back (?:when|in (?:my|the|those) days?|home|then|in the day)|in my day|in the old days|reminds? me of"
-                        r"|(?:on|in|at|along) (?:the|my|our) old \w+|when i was (?:a|young|little|driving|working)|(?:i|we) used to|years ago)\b")
+                        r"|(?:on|in|at|along) (?:the|my|our) old \w+|when i was (?:a|young|little|driving|working)|(?:i|we) used to|years ago"
+                        r"|like (?:my|our) (?:old )?\w+)\b")  # "paint it red, like my old route bus": the speaker's own, no bus asked for
+# A place or things wished livelier: "make the street busier", "liven them up".
+LIVELIER = re.compile(r"\b(?:busier|more busy|livelier|more lively|liven (?:it |\w+ )?up|more going on|more life)\b")
 HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|pedestrians)\s+(?:will|often|usually|always|sometimes|tend to)\b")
 # A thing something is forbidden to ("the robot mustn't drive through the fountain"): a constraint
 # on it, not a thing asked for.
@@ -426,6 +429,7 @@ __all__ = [
     "FEWER_WORDS",
     "HOW_THINGS_GO",
     "KEEP_SOME",
+    "LIVELIER",
     "REMINISCED",
     "REMOVE_WORDS",
     "REPORTED",

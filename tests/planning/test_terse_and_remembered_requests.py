@@ -251,8 +251,9 @@ def test_a_verb_and_its_particle_are_not_run_together_into_a_thing():
     assert repair("put a cone on the side walk", build_campus()).text == "put a cone on the sidewalk"
 
 
-def _two_readings(prompt: str, *readings: list[ToolCall]) -> Plan:
-    question = Question(text="Did you mean:", readings=[Reading(text=str(i), calls=calls) for i, calls in enumerate(readings)])
+def _two_readings(sure: float, *readings: list[ToolCall]) -> Plan:
+    question = Question(text="Did you mean:", readings=[Reading(text=str(i), calls=calls, confidence=sure)
+                                                        for i, calls in enumerate(readings)])
     return Plan(calls=[], planner="hybrid", confidence=0.0, question=question)
 
 
@@ -260,15 +261,17 @@ def test_of_two_readings_the_one_the_request_does_not_rule_out_is_applied():
     context = PlanContext(scene=build_campus(), registry=ToolRegistry.default(plugins=False))
     move = [ToolCall(tool="place_asset", args={"asset": "bench_1", "location": {"relation": "next_to", "target": "fountain"}})]
     add = [ToolCall(tool="add_asset", args={"category": "bench", "location": {"relation": "next_to", "target": "fountain"}})]
-    verdict = review("kindly set the bench down beside the fountain", _two_readings("", add, move), context)
+    verdict = review("kindly set the bench down beside the fountain", _two_readings(0.95, add, move), context)
     assert verdict.action == "apply" and verdict.calls == move
+    unsure = review("kindly set the bench down beside the fountain", _two_readings(0.5, add, move), context)
+    assert unsure.action == "ask", "a reading its planner was unsure of is still offered, not applied"
 
 
 def test_of_two_readings_one_that_acts_on_a_thing_not_named_is_still_asked_about():
     context = PlanContext(scene=build_campus(), registry=ToolRegistry.default(plugins=False))
     bin_moved = [ToolCall(tool="place_asset", args={"asset": "trash_bin_1", "location": {"relation": "at", "target": "fountain"}})]
     bench_moved = [ToolCall(tool="place_asset", args={"asset": "bench_1", "location": {"relation": "at", "target": "fountain"}})]
-    verdict = review("that thing over there, to the fountain with it", _two_readings("", bin_moved, bench_moved), context)
+    verdict = review("that thing over there, to the fountain with it", _two_readings(0.95, bin_moved, bench_moved), context)
     assert verdict.action != "apply"
 
 
@@ -282,3 +285,10 @@ def test_every_kind_of_car_at_a_place_counted_out(session):
     result = session.submit("get rid of the three cars parked in lot B")
     assert result.ok, result.error
     assert session.scene.asset("suv_1") is None and session.scene.asset("passenger_car_1") is None
+
+
+def test_things_wished_livelier_are_never_taken_away():
+    context = PlanContext(scene=build_campus(), registry=ToolRegistry.default(plugins=False))
+    plan = Plan(calls=[ToolCall(tool="remove_assets", args={"category": "passenger_car"})], planner="x", confidence=0.9)
+    verdict = review("the cars parked in lot B look so drab, liven them up", plan, context)
+    assert verdict.action != "apply" and any("more life" in p for p in verdict.problems)

@@ -132,7 +132,9 @@ def layout_said(text: str) -> str | None:
 _MATERIALS = frozenset(m for m in typing.get_args(typing.get_args(AssetLookArgs.model_fields["material"].annotation)[0])
                        if m != "default")
 # Adjective forms of the materials ("wooden bench", "metallic car").
-_MATERIAL_WORDS = {**{m: m for m in _MATERIALS}, "wooden": "wood", "metallic": "metal", "shiny": "glossy"}
+_MATERIAL_WORDS = {**{m: m for m in _MATERIALS}, "wooden": "wood", "metallic": "metal", "shiny": "glossy",
+                   "planks": "wood", "timber": "wood", "steel": "metal", "aluminium": "metal", "iron": "metal", "chrome": "metal",
+                   "cement": "concrete", "stone": "concrete", "glossy": "glossy", "gloss": "glossy", "matt": "matte"}
 
 
 def material_said(text: str) -> str | None:

@@ -23,6 +23,7 @@ from drivetwin.orchestrator.planning.intent import (
     FEWER_WORDS,
     HABITUAL,
     HOW_THINGS_GO,
+    LIVELIER,
     REMINISCED,
     REMOVE_WORDS,
     REPORTED,
@@ -939,7 +940,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if r.has(("paint", "repaint", "recolour", "recolor")) and not fresh:
         # a thing to paint is one that is there; a colour not understood is asked, never an add
         raise PlanningError(f"which colour? I know {', '.join(COLOURS)}")
-    if mention is None and _LIVELIER.search(r.low):
+    if mention is None and LIVELIER.search(r.low):
         return _livelier(r, scene, memory, notes)
     if mention is None:
         if r.has(lx.GENERIC_THINGS):
@@ -1006,8 +1007,6 @@ def _said_once(r: Reading, scene: Scene) -> list[str]:
 
 # Filling a place with things: an addition, whatever the place is called ("the empty half").
 _FILL_WITH = re.compile(r"\bfill(?:s|ing)?\s+(?:up\s+)?(?!.*\b(?:remove|delete|clear|take)\b).*\bwith\b")
-# A place wished busier ("make the street busier", "liven up the quad"): more people or traffic.
-_LIVELIER = re.compile(r"\b(?:busier|more busy|livelier|more lively|liven (?:it |\w+ )?up|more going on|more life)\b")
 
 
 def _to_count(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:

@@ -512,6 +512,10 @@ _SOUND_ALIKES = (
     # "next too the bench", "close too it": "too" before what it is next to is "to"
     (re.compile(r"\b(next|close|closer|up|back|over) too(?= (?:the|a|an|it|them|that|this|those|these|my|our)\b)",
                 re.IGNORECASE), r"\1 to"),
+    # "rite next to the bench", "rite there": right, as no rite stands anywhere
+    (re.compile(r"\brite(?= (?:next|there|here|now|by|behind|beside|in front|outside|at|on|up|away)\b)", re.IGNORECASE), "right"),
+    # "paint the trash been blue": a bin
+    (re.compile(r"\btrash been\b", re.IGNORECASE), "trash bin"),
 )
 
 
