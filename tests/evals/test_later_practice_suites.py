@@ -28,6 +28,7 @@ from drivetwin.evals import (
     practice16_source,
     practice17_source,
     practice18_source,
+    practice19_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -77,6 +78,8 @@ BRIEFS: dict[str, Brief] = {
     # Nine new voices; arrangement (every grade), search indirect and vague, removal vague and moving
     # indirect and vague hold 12 or more, the rest 9 or more.
     "practice18": Brief(270, 9, 9, practice18_source, multi_turn=30, planned=12, compound=15),
+    # Nine more new voices; search, moving and arrangement hold 11 in every grade, the rest 9.
+    "practice19": Brief(270, 9, 9, practice19_source, multi_turn=30, planned=12, compound=18),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
