@@ -133,21 +133,27 @@ class FindAssets(Tool[FindAssetsArgs]):
             pool = [a for a in pool if a.id in lanes_of]
         reference = args.nearest_to or args.near
         t = resolve_target(scene, reference) if reference else None
+        area = scene.landmark(t.name) if t is not None and t.kind == "area" else None
+
+        def gap(a: AssetInstance) -> float:  # to a place's area, its edge (0 inside), as measure_distance has it
+            assert t is not None
+            return landmark_distance(area, a.pose.x, a.pose.y) if area is not None else math.hypot(a.pose.x - t.x, a.pose.y - t.y)
+
         if t is not None:
             if args.nearest_to:
                 pool = [a for a in pool if not (t.kind == "asset" and a.id == t.name)]
-            pool.sort(key=lambda a: math.hypot(a.pose.x - t.x, a.pose.y - t.y))
+            pool.sort(key=lambda a: (gap(a), math.hypot(a.pose.x - t.x, a.pose.y - t.y)))
             beyond = pool[0] if pool else None
             if args.within is not None:
-                pool = [a for a in pool if math.hypot(a.pose.x - t.x, a.pose.y - t.y) <= args.within]
+                pool = [a for a in pool if gap(a) <= args.within]
         what = args.category or "asset"
         if t is not None and args.within is not None and not pool and beyond is not None:
             # "lamp near lot A?" with none that close: none within it, and the nearest there is
-            gap = math.hypot(beyond.pose.x - t.x, beyond.pose.y - t.y)
+            away = gap(beyond)
             return ToolResult(WorldEdit(), f"no {what} within {args.within:g} m of {t.name}; the nearest is {beyond.id} at "
-                              f"({beyond.pose.x:.1f}, {beyond.pose.y:.1f}), {gap:.1f} m away",
-                              data={"ids": [], "nearest": beyond.id, "distances": {beyond.id: round(gap, 2)}})
-        distances = {a.id: math.hypot(a.pose.x - t.x, a.pose.y - t.y) for a in pool} if t else {}
+                              f"({beyond.pose.x:.1f}, {beyond.pose.y:.1f}), {away:.1f} m away",
+                              data={"ids": [], "nearest": beyond.id, "distances": {beyond.id: round(away, 2)}})
+        distances = {a.id: gap(a) for a in pool} if t else {}
 
         def line(a: AssetInstance) -> str:
             where = f" {'beside' if a.id in beside else 'in'} {lanes_of[a.id]}" if a.id in lanes_of else ""

@@ -207,9 +207,9 @@ def test_a_search_within_a_distance_that_finds_none_names_the_nearest(campus, re
     from drivetwin.orchestrator.transaction import execute
 
     done = execute(registry, campus, [ToolCall(tool="find_assets", args={
-        "category": "street_light", "near": "parking lot A", "within": 10.0})])
+        "category": "street_light", "near": "parking lot A", "within": 3.0})])
     text = done.results[0].text
-    assert text.startswith("no street_light within 10 m of parking lot A") and "street_light_1" in text
+    assert text.startswith("no street_light within 3 m of parking lot A") and "street_light_1" in text
 
 
 def test_a_footway_is_a_sidewalk_and_a_gas_station_is_no_bus_station(session):

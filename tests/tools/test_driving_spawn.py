@@ -104,3 +104,10 @@ def test_only_movers_follow_a_path(call: Caller, campus: Scene) -> None:
     result = call(scene, "set_behaviour", asset=walker.id, behaviour=walk)
     moved = result.edit.apply(scene).asset(walker.id)
     assert moved is not None and moved.behaviour is not None and moved.behaviour.kind == "follow_path"
+
+
+def test_things_near_an_area_are_measured_to_its_edge(call: Caller, campus: Scene) -> None:
+    """Inside a lot is 0 m from it, as measure_distance has it, not the metres to the lot's middle."""
+    found = call(campus, "find_assets", category="passenger_car", near="parking lot B", within=1.0)
+    assert set(found.data["ids"]) == {"passenger_car_1", "passenger_car_2"}
+    assert all(d == 0.0 for d in found.data["distances"].values())
