@@ -12,7 +12,7 @@ import difflib
 import math
 from typing import Literal
 
-from drivetwin.tools.along import track_kind_for, tracks
+from drivetwin.tools.along import driving_start, track_kind_for, tracks
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, RuleViolation, ToolArgumentError
 from drivetwin.tools.locate import Anchor, Location, find_free_pose, resolve_anchor, resolve_target
@@ -222,7 +222,9 @@ def resolve_behaviour(
             names = ", ".join(ln.id for ln in scene.roads.lanes)
             raise NotFoundError(f"no lane {spec.lane!r}; lanes: {names}")
         near = nearest_on_polyline(asset.pose.x, asset.pose.y, lane.centreline)
-        pose = None if near.distance < lane.width / 2 else Pose(x=near.x, y=near.y, yaw=near.heading)
+        # off the lane: into it beside where it stands, spaced from what drives it ("make the cars in lot B drive")
+        others = [a for a in scene.all_assets() if a.id != asset.id]
+        pose = None if near.distance < lane.width / 2 else driving_start(scene, asset, lane, near.arc_length, others)
         if pose is None and abs(math.remainder(asset.pose.yaw - near.heading, 2 * math.pi)) > 0.3:
             pose = Pose(x=asset.pose.x, y=asset.pose.y, yaw=near.heading)
         return DriveLane(lane=lane.id, speed=spec.speed or min(5.0, lane.speed_limit)), pose

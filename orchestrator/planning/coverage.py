@@ -871,7 +871,9 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
             if word in said:
                 break  # a word the plan uses is accounted for
             if word not in english_words():  # a misspelling is the planner's to repair, but
-                if not _PLACE_ARG.search(said):  # a plan placing nothing has dropped the place
+                # a plan placing nothing, or nowhere like the word, has dropped the place ("the helipad")
+                repaired = any(edits(word, w) <= 2 for w in re.findall(r"[a-z]{3,}", said))
+                if not _PLACE_ARG.search(said) or not repaired:
                     out.append(f"I do not know the place {place!r}")
                 break
             out.append(f"there is no {place!r} in this world")

@@ -90,6 +90,8 @@ _QUESTION_START = re.compile(r"(?:^\s*|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|h
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
 _INFO = re.compile(r"(?<!s )\b(tell me|show me|let me know|inform (?:me|us)|advise (?:me|us)|"
+                   # "kindly state the weather", "please identify the tree closest to ...": asked to say, not to set
+                   r"(?:^|(?:please|kindly|pls|now|could you|can you|would you)\s+)(?:state|identify|report|indicate|specify|name)\s+(?:the|which|what|where|how)|"
                    r"tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|at what distance|how long is|"
                    r"(?:inventory|rundown|overview|summary|tally) of|how many|how far|how much|number of|count of|list of|"
                    r"distance (?:between|from)|"
@@ -338,7 +340,7 @@ def without_reason(text: str) -> str:
 
 # The person saying the scene must stay as it is ("no edits", "don't touch anything", "just
 # checking"): whatever the sentence's mood, it asks for information.
-_READ_ONLY = re.compile(r"\b(?:no (?:edits?|changes)|(?:don'?t|do not|dont) (?:touch|change|edit|modify|alter) "
+_READ_ONLY = re.compile(r"\b(?:no (?:edits?|changes|alterations?|modifications?)|make no (?:changes|alterations?|edits?)|(?:don'?t|do not|dont) (?:touch|change|edit|modify|alter) "
                         r"(?:anything|a thing|the scene)(?! else)|without (?:touching|changing) anything(?! else)"
                         r"|just (?:checking|looking|asking|curious)|read[- ]only)\b")
 

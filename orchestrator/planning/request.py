@@ -52,7 +52,8 @@ _AMOUNTS = {w: n for w, n in ph.NUMBER_WORDS.items() if w not in ("a", "an", "on
 _PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
 # A category word after these describes the thing asked for ("a vehicle that carries passengers",
 # "a bench for pedestrians") rather than naming it.
-_DESCRIBING = re.compile(r"[a-z]\s+(that|which|who|with|for|carrying|carries|full of)\b[^,.;:]*$")
+# ("the same with barriers": what to do it with, not a description)
+_DESCRIBING = re.compile(r"[a-z](?<!same)(?<!again)\s+(that|which|who|with|for|carrying|carries|full of)\b[^,.;:]*$")
 _LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west)bound)\b")
 _PARKED = re.compile(r"\bparked\b")
 _SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")

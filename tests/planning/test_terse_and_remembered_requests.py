@@ -292,3 +292,54 @@ def test_things_wished_livelier_are_never_taken_away():
     plan = Plan(calls=[ToolCall(tool="remove_assets", args={"category": "passenger_car"})], planner="x", confidence=0.9)
     verdict = review("the cars parked in lot B look so drab, liven them up", plan, context)
     assert verdict.action != "apply" and any("more life" in p for p in verdict.problems)
+
+
+@pytest.mark.parametrize("words", [
+    "kindly state the weather at present, make no alterations",
+    "please identify the bench nearest the fountain",
+    "is it foggy out there",
+])
+def test_asked_to_state_or_identify_is_a_question(words):
+    assert asks(words)
+
+
+@pytest.mark.parametrize(("words", "fixed"), [
+    ("get rid o' the bins", "get rid of the bins"),
+    ("line cones up in front of are car", "line cones up in front of our car"),
+    ("park it ahead the bus", "park it ahead of the bus"),
+])
+def test_everyday_slips_of_small_words(words, fixed):
+    assert repair(words, build_campus()).text == fixed
+
+
+def test_things_of_a_kind_told_to_move_all_drive_spaced_along_the_lane(session):
+    result = session.submit("make the cars go")
+    assert result.ok, result.error
+    drivers = [a for a in session.scene.assets if a.behaviour.kind == "drive_lane" and a.id != "ego"]
+    assert {a.id for a in drivers} == {"passenger_car_1", "passenger_car_2", "suv_1"}
+    ys = sorted(a.pose.y for a in drivers)
+    assert min(b - a for a, b in zip(ys, ys[1:], strict=False)) > 6.0, "spaced along the lane, not stacked"
+
+
+def test_the_same_again_made_of_other_things(session):
+    assert session.submit("put four cones in a row in lot A").ok
+    result = session.submit("now the same with bollards by the east gate")
+    assert result.ok, result.error
+    assert result.plan is not None and result.plan.calls[0].args["categories"] == ["bollard"]
+
+
+def test_a_light_strength_said_as_such_is_light(session):
+    assert session.submit("fog please, low intensity").ok
+    assert session.scene.environment.weather.intensity <= 0.5
+
+
+def test_the_av_is_the_ego(session):
+    result = session.submit("put a bollard 12 m ahead of the AV")
+    assert result.ok, result.error
+    assert result.plan is not None and result.plan.calls[0].args["location"]["target"] == "ego"
+
+
+def test_a_place_name_no_plan_repairs_into_is_refused(session):
+    before = session.scene
+    assert not session.submit("how far is the bench from the planetarium?").ok
+    assert session.scene == before

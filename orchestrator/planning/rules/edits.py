@@ -771,8 +771,11 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if kind == "drive_lane" and r.has(("go", "goes")) and _STEP_SAID.search(r.low):
         kind = None  # "could it go forward a tiny bit?": a step, not a drive
     if kind is not None and kind != "parked":
-        notes.subject = [asset]
-        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": behaviour_spec(kind, r)})]
+        # "make the cars move": each of them, those that can
+        movers = [i for i in ids if (a := scene.asset(i)) is not None and (kind != "drive_lane" or catalog()[a.category].drives)]
+        going = movers if r.mentions and r.mentions[0].plural and len(movers) > 1 else [asset]
+        notes.subject = going
+        return [ToolCall(tool="set_behaviour", args={"asset": i, "behaviour": behaviour_spec(kind, r)}) for i in going]
     # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
     scoped = (bool(r.mentions) and _scoped_by_place(r, r.mentions[0])) or (not r.mentions and bool(_ANY_NEAREST.search(r.low)))
     anchored = (r.landmark and not scoped) or (r.ego and "ego" not in ids) or any(i not in ids for i in r.ids)

@@ -80,6 +80,8 @@ def weather(r: Reading) -> ToolCall | None:
                 said_of_weather = re.search(rf"\blight\s+(?:{'|'.join(map(re.escape, lx.WEATHER_WORDS[kind]))})\b", r.low)
                 # "rainy but not too strong": a strength denied is a light one
                 denied = re.search(rf"\bnot (?:too |so |very )?(?:much )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)
+                # "fog, light intensity", "low intensity rain": the strength said as such
+                denied = denied or re.search(r"\b(?:light|low|weak|gentle|mild)\s+(?:intens|strength|level)", r.low)
                 heavy = (r.has(lx.HEAVY) or re.search(r"[a-z]storm\b", r.low) is not None) and denied is None  # "a snowstorm"
                 light = denied is not None or (r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT)))
                 args["intensity"] = HEAVY_INTENSITY if heavy else LIGHT_INTENSITY if light else DEFAULT_INTENSITY

@@ -111,7 +111,9 @@ _LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|lattice|
 
 
 # Setting a thing in motion: "get the suv moving", "start the truck rolling" (not a pick of moving ones).
-SET_GOING = re.compile(r"\b(?:get|gets|start|starts|set|sets)\s+(?:[a-z_0-9']+\s+){1,3}(?:moving|going|driving|rolling)\b")
+SET_GOING = re.compile(r"\b(?:get|gets|start|starts|set|sets)\s+(?:[a-z_0-9']+\s+){1,3}(?:moving|going|driving|rolling)\b"
+                       # "make the cars move": off they go, when no place or step is said after
+                       r"|\b(?:make|makes|have|has|let|lets)\s+(?:[a-z_0-9']+\s+){1,3}(?:move|go|drive|roll)\s*(?:[.!?,;]|$|please\b|now\b)")
 # That many on each side ("six bollards on each side of it"): two sides' worth.
 EACH_SIDE = re.compile(r"\b(?:each|either|every)\s+side\b")
 # Both edges said: "on both sides", "either kerb", "each edge of the lane": two rows, one a side.

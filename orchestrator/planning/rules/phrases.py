@@ -21,7 +21,7 @@ NUMBER_WORDS = nb.spelt_counts() | {"a": 1, "an": 1, "single": 1, "pair": 2, "co
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
 # Tokens with their spans, numbers written with separators kept whole ("10,000").
 _TOKEN_SPANS = re.compile(r"\d{1,3}(?:,\d{3})+(?![\d,])|[a-z0-9_#.\-'+]+")
-EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle", "test car", "our vehicle", "my car")
+EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle", "test car", "our vehicle", "my car", "the av")
 
 
 def tokens(text: str) -> list[str]:

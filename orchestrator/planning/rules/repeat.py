@@ -64,7 +64,10 @@ def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     # "ditto for the bus", "the same to the trees": other things, first; "repeat that outside the Library": a place
     on_things = re.match(r"(?:for|to|with|on)\b(?! (?:the )?(?:left|right|side|other side)\b)", rest) is not None
     names_things = bool(r.ids or r.mentions or r.ego)
-    things = referenced(r, scene, memory, notes) if on_things and names_things else []
+    # "now do the same with barriers": what the last edit made, made again of the things named
+    creating = bool(calls) and all(c.tool in ("add_asset", "arrange_assets") for c in calls)
+    kinds = [m.category for m in r.mentions] if on_things and r.mentions and creating and not r.ids else []
+    things = referenced(r, scene, memory, notes) if on_things and names_things and not kinds else []
     place = location(r, scene, memory, notes) if rest and not things else None
     if not on_things and place is None and names_things:
         things = referenced(r, scene, memory, notes)
@@ -77,6 +80,9 @@ def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         if place is not None and place.get("relation") == "in_lane" and "lane" in (args.get("behaviour") or {}):
             lane = place.get("lane") or place.get("target")  # "ditto for the westbound lane": traffic in that lane
             args["behaviour"], used = {**args["behaviour"], "lane": lane}, True
+        if kinds and call.tool in ("add_asset", "arrange_assets"):
+            args.update({"categories": kinds} if call.tool == "arrange_assets" else {"category": kinds[0]})
+            used = True
         if place is not None and "location" in args:
             args["location"], used = _alike(dict(place), args["location"], scene), True
         elif place is not None and call.tool == "remove_assets" and "near" in args and "target" in place:

@@ -39,6 +39,7 @@ _WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
 _SHORT_SLIPS = {
     "rm": "remove",  # a terse user's shell words: "rm all bins", "mv ego 5m N"
     "mv": "move",
+    "lin": "line",
     "ls": "list",
     "cnt": "count",
     "env": "environment",
@@ -512,6 +513,12 @@ _SOUND_ALIKES = (
     # "next too the bench", "close too it": "too" before what it is next to is "to"
     (re.compile(r"\b(next|close|closer|up|back|over) too(?= (?:the|a|an|it|them|that|this|those|these|my|our)\b)",
                 re.IGNORECASE), r"\1 to"),
+    # "ahead the AV", "in front the bench": of dropped
+    (re.compile(r"\b(ahead|in front|instead|out) (?=the|our|my|it|them|that|this)\b", re.IGNORECASE), r"\1 of "),
+    # "get rid o' the bench": of
+    (re.compile(r"\bo'(?=\s)", re.IGNORECASE), "of"),
+    # "in front of are car", "behind are ego": our, as no verb stands after a preposition
+    (re.compile(r"\b(of|to|behind|beside|near|by|from|for|ahead|past) are(?= (?:car|vehicle|ego|test car|own)\b)", re.IGNORECASE), r"\1 our"),
     # "rite next to the bench", "rite there": right, as no rite stands anywhere
     (re.compile(r"\brite(?= (?:next|there|here|now|by|behind|beside|in front|outside|at|on|up|away)\b)", re.IGNORECASE), "right"),
     # "paint the trash been blue": a bin
