@@ -7,6 +7,8 @@ short of the crossing" comes to rest before it (MuJoCo)."""
 
 from __future__ import annotations
 
+import itertools
+
 import pytest
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
 from drivetwin.orchestrator.planning.check import review
@@ -318,7 +320,7 @@ def test_things_of_a_kind_told_to_move_all_drive_spaced_along_the_lane(session):
     drivers = [a for a in session.scene.assets if a.behaviour.kind == "drive_lane" and a.id != "ego"]
     assert {a.id for a in drivers} == {"passenger_car_1", "passenger_car_2", "suv_1"}
     ys = sorted(a.pose.y for a in drivers)
-    assert min(b - a for a, b in zip(ys, ys[1:], strict=False)) > 6.0, "spaced along the lane, not stacked"
+    assert min(b - a for a, b in itertools.pairwise(ys)) > 6.0, "spaced along the lane, not stacked"
 
 
 def test_the_same_again_made_of_other_things(session):
