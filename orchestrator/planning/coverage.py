@@ -470,8 +470,8 @@ def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> l
         return []
     out = []
     for m in named_in(masked):
-        before = m.last_words(1)
-        single = bool(before) and before[0] in ("a", "an", "one", "the", "that", "this")
+        before = m.last_words(3)  # "the car", "the red car": one
+        single = any(w in ("a", "an", "one", "the", "that", "this") for w in before[-2:]) if before else False
         if single and not m.plural:
             continue
         gone = sum(1 for a in scope.removed if a.category == m.category)
@@ -863,6 +863,8 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
             place = " ".join([word, *rest])  # "the lakeside promenade for ...": the name, not one word of it
             if word in world:
                 continue
+            if _CENTRE_SAID.fullmatch(word):
+                break  # "at the origin", "the centre": the map's middle
             if word in lx.GRAMMAR or word in _RELATION_WORDS or word in ids or word == "ego" or word.endswith("est") \
                     or re.fullmatch(r"(?:north|south|east|west)(?:ern|erly|ward)?", word):  # "the western car park"
                 break  # ("the closest hydrant": a superlative modifies what follows, it names no place)

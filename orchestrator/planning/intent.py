@@ -206,6 +206,8 @@ _CONTRAST = re.compile(
     rf"|\s+(?:except(?:\s+for)?|other\s+than|apart\s+from|excluding|save\s+for)\s+(?={_DETERMINER})"
     # "remove the cars from lot B, but keep the SUV": what is kept is excepted
     rf"|,?\s+but\s+(?:keep|leave|spare)\s+(?={_DETERMINER})"
+    # "rm: the lights - keep stop sign", "...; keep the SUV": a terse keep after a dash or a semicolon
+    r"|\s*(?:[;\u2013\u2014]|\s-)\s*(?:but\s+)?(?:keep|leave|spare)\s+(?=[a-z])"
     # "paint the bench green and leave the bin as it is": what is left alone is excepted
     rf"|,?\s+and\s+(?:keep|leave)\s+(?={_DETERMINER}\b[^,.;]*\b(?:as (?:it|they) (?:is|are)|alone|untouched|where (?:it|they) (?:is|are)|in place|be)\b)"
     r"|\s+rather\s+than\s+(?=[a-z])"

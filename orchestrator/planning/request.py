@@ -169,6 +169,8 @@ def _without_checked_amounts(text: str) -> str:
 def _is_reference(text: str, start: int) -> bool:
     # "car 2", "lot 3", "the 2nd": a number that names something rather than an amount.
     before = text[:start].split()[-1:]
+    if text[:start].rstrip().endswith("#") or re.search(r"\b(?:takeover|ticket|issue|case|run|bug|jira|incident)\s*#?\s*$", text[:start]):
+        return True  # "takeover #7", "ticket 12": which one, not how many
     if re.search(r"\b(?:instead of|rather than|in place of|(?:faster|slower|quicker|bigger|smaller) than)\s*$", text[:start]):
         return True  # "8 m/s instead of 5", "faster than 5": what it is now, not what is wanted
     if re.match(r"[\d.,e+-]*\s*(m|metres?|meters?|km|kph|mph|degrees?|deg|seconds?|s)\b", text[start:]):

@@ -345,3 +345,19 @@ def test_a_place_name_no_plan_repairs_into_is_refused(session):
     before = session.scene
     assert not session.submit("how far is the bench from the planetarium?").ok
     assert session.scene == before
+
+
+def test_a_ticket_number_is_no_amount_and_a_terse_keep_spares(session):
+    assert session.submit("ticket #12: the hydrant has to go").ok
+    result = session.submit("rm: trash_bin_1, bench_1 - keep stop sign")
+    assert result.ok, result.error
+    assert session.scene.asset("stop_sign_1") is not None and session.scene.asset("bench_1") is None
+
+
+def test_coordinates_with_their_unit_and_the_origin(session):
+    result = session.submit("add a bollard at x = 30 m, y = 9 m")
+    assert result.ok, result.error
+    assert result.plan is not None and result.plan.calls[0].args["location"] == {"relation": "absolute", "x": 30.0, "y": 9.0}
+    origin = session.submit("put a cone at the origin")
+    assert origin.ok, origin.error
+    assert origin.plan is not None and origin.plan.calls[0].args["location"] == {"relation": "scene_centre"}

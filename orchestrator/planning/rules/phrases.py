@@ -21,7 +21,7 @@ NUMBER_WORDS = nb.spelt_counts() | {"a": 1, "an": 1, "single": 1, "pair": 2, "co
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
 # Tokens with their spans, numbers written with separators kept whole ("10,000").
 _TOKEN_SPANS = re.compile(r"\d{1,3}(?:,\d{3})+(?![\d,])|[a-z0-9_#.\-'+]+")
-EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle", "test car", "our vehicle", "my car", "the av")
+EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle", "test car", "our vehicle", "my car", "av")
 
 
 def tokens(text: str) -> list[str]:
@@ -193,7 +193,7 @@ def find_coordinates(text: str) -> tuple[float, float] | None:
     low = text.lower()
     m = re.search(r"(?:\bat\b|\bto\b|\()\s*" + _COORDS.pattern, low)
     if m is None:
-        m = re.search(rf"\bx\s*[=:]?\s*{_COORD}\s*(?:,|and)?\s*\by\s*[=:]?\s*{_COORD}", low)  # "x 40 y -20" too
+        m = re.search(rf"\bx\s*[=:]?\s*{_COORD}\s*(?:m\b)?\s*(?:,|and)?\s*\by\s*[=:]?\s*{_COORD}", low)  # "x 40 y -20", "x = 40 m, y = 2"
     if m is None:
         return None
     x, y = (nb.Number(nb.parse(m.group(i)), m.group(i), m.start(i), m.end(i)) for i in (1, 2))

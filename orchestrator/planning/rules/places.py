@@ -65,6 +65,7 @@ _CENTRE = (
     "centre of the campus",
     "centre of scene",
     "middle of scene",
+    "the origin",  # the map frame's (0, 0)
 )
 
 

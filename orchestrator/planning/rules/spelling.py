@@ -40,6 +40,8 @@ _SHORT_SLIPS = {
     "rm": "remove",  # a terse user's shell words: "rm all bins", "mv ego 5m N"
     "mv": "move",
     "lin": "line",
+    "fwd": "forward",
+    "bwd": "backward",
     "ls": "list",
     "cnt": "count",
     "env": "environment",
