@@ -251,6 +251,7 @@ def test_a_back_said_to_face_a_place_turns_the_thing_away_from_it(session):
 def test_a_verb_and_its_particle_are_not_run_together_into_a_thing():
     assert repair("have the kids cross over the road", build_campus()).text == "have the kids cross over the road"
     assert repair("put a cone on the side walk", build_campus()).text == "put a cone on the sidewalk"
+    assert repair("make him jay walk", build_campus()).text == "make him jaywalk", "a behaviour's word is still joined"
 
 
 def _two_readings(sure: float, *readings: list[ToolCall]) -> Plan:

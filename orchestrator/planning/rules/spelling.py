@@ -557,8 +557,8 @@ def _joined_apart(text: str, vocab: frozenset[str]) -> str:
         joined = (a.group(0) + b.group(0)).lower()
         before = text[: a.start()].split()[-1:]
         # "them folk cross over the road": two words of their own, a verb's, unless a noun's article comes first
-        verb_like = is_english(a.group(0).lower()) and is_english(b.group(0).lower()) and not (
-            before and before[0].lower() in _NOUN_OPENERS)
+        verb_like = bool(ph.find_categories(joined)) and is_english(a.group(0).lower()) and is_english(b.group(0).lower()) \
+            and not (before and before[0].lower() in _NOUN_OPENERS)
         if joined in vocab and not verb_like and f"{a.group(0)} {b.group(0)}".lower() not in _phrases():
             out.append(text[at : a.start()] + joined)
             at = b.end()
