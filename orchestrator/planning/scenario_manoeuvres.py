@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from drivetwin.orchestrator.planning.base import PlanningError
-from drivetwin.orchestrator.planning.rules.numbers import Number, finite, numbers_in
+from drivetwin.orchestrator.planning.rules.numbers import Number, finite, numbers_in, speed_said
 
 # Braking rates, m/s²: "hard"/"suddenly" is an emergency stop (about 0.6 g), plain braking a
 # firm stop, "gently" a comfortable one.
@@ -209,7 +209,8 @@ def _speed(text: str) -> float | None:
             value = finite(number, "a speed")
             factor = {"km/h": 1 / 3.6, "kph": 1 / 3.6, "kmh": 1 / 3.6, "mph": 0.44704}.get(unit.group(1), 1.0)
             return round(value * factor, 3)
-    return None
+    bare = speed_said(text)  # "faster, like 10": the simulator's unit
+    return round(float(bare.group(1)), 3) if bare is not None and not bare.group(2) else None
 
 
 def _rate(text: str) -> float | None:

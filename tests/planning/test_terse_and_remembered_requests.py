@@ -362,3 +362,17 @@ def test_coordinates_with_their_unit_and_the_origin(session):
     origin = session.submit("put a cone at the origin")
     assert origin.ok, origin.error
     assert origin.plan is not None and origin.plan.calls[0].args["location"] == {"relation": "scene_centre"}
+
+
+def test_a_bare_number_said_with_faster_or_slower_is_the_speed():
+    from drivetwin.orchestrator.planning.rules.phrases import find_speed
+
+    assert find_speed("go faster, like 9") == 9.0
+    assert find_speed("slow it down to about 2") == 2.0
+    assert find_speed("three times faster") is None
+
+
+def test_on_the_roof_of_a_building_is_refused(session):
+    before = session.scene
+    assert not session.submit("put the bin on the roof of the Student Union").ok
+    assert session.scene == before

@@ -200,8 +200,8 @@ def radius_said(text: str) -> float | None:
 
 # "at 5 ms": metres per second with the slash dropped.
 _SPEED_MS = re.compile(rf"\b(?:at|to|of|doing) ({NUMBER})\s*(ms)\b")
-# "ego.speed = 8", "set its speed to 8": a bare number said of a speed is in the simulator's unit, m/s
-_SPEED_BARE = re.compile(rf"\bspeed\s*(?:to|of|at|=|:|is)?\s*({NUMBER})()(?!\s*(?:%|x\b|times\b|{SPEED_UNIT}|m\b|metres?\b|meters?\b))")
+# "ego.speed = 8", "set its speed to 8", "faster, like 10": a bare number said of a speed is in the simulator's unit, m/s
+_SPEED_BARE = re.compile(rf"\b(?:speed|faster|slower|quicker|slow(?: it)? down)\s*(?:up\s+|down\s+)?(?:,\s*)?(?:to|of|at|=|:|is|like)?\s*(?:about\s+|around\s+|roughly\s+)?({NUMBER})()(?!\s*(?:%|x\b|times\b|{SPEED_UNIT}|m\b|metres?\b|meters?\b))")
 
 
 def speed_said(low: str) -> re.Match[str] | None:

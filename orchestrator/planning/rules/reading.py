@@ -399,7 +399,7 @@ _ONE_THING = ("someone", "somebody", "guy", "somewhere to sit", "to sit", "sit d
 
 # A wish said of someone with the thing wished for after it ("the students could use somewhere to
 # sit", "drivers need a warning").
-_WISHED = re.compile(r"\b(?:could use|could do with|would like|would love|needs?|wants?|deserves?)\s+"
+_WISHED = re.compile(r"\b(?:could use|could do with|would like|would love|needs?|wants?|deserves?|(?:will |would |shall )?require|requires)\s+"
                      r"(?=(?:a|an|some|somewhere|something|more|another|extra|new|\d+|two|three|a few|several)\b)")
 
 
