@@ -773,7 +773,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if kind is not None and kind != "parked":
         # "make the cars move": each of them, those that can
         movers = [i for i in ids if (a := scene.asset(i)) is not None and (kind != "drive_lane" or catalog()[a.category].drives)]
-        going = movers if r.mentions and r.mentions[0].plural and len(movers) > 1 else [asset]
+        going = movers if kind == "drive_lane" and r.mentions and r.mentions[0].plural and len(movers) > 1 else [asset]
         notes.subject = going
         return [ToolCall(tool="set_behaviour", args={"asset": i, "behaviour": behaviour_spec(kind, r)}) for i in going]
     # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
