@@ -177,12 +177,15 @@ def test_it_after_a_question_about_one_thing_is_that_thing(session):
 
 
 @pytest.mark.parametrize(("words", "fixed"), [
-    ("truck.speed = 6", "set truck speed to 6"),
+    ("truck.speed = 6", "set truck speed to 6"),  # a programmer's shorthand
     ("hydrant.position = (12, 6)", "move hydrant to (12, 6)"),
     ("radius=4 // please", "radius 4 please"),
     ("move it 2 the gate", "move it to the gate"),
+    ("get rid o' the bins", "get rid of the bins"),  # everyday slips of small words
+    ("line cones up in front of are car", "line cones up in front of our car"),
+    ("park it ahead the bus", "park it ahead of the bus"),
 ])
-def test_programmer_shorthand_reads_as_words(words, fixed):
+def test_shorthand_and_slips_of_small_words_read_as_meant(words, fixed):
     assert repair(words, build_campus()).text == fixed
 
 
@@ -304,15 +307,6 @@ def test_things_wished_livelier_are_never_taken_away():
 ])
 def test_asked_to_state_or_identify_is_a_question(words):
     assert asks(words)
-
-
-@pytest.mark.parametrize(("words", "fixed"), [
-    ("get rid o' the bins", "get rid of the bins"),
-    ("line cones up in front of are car", "line cones up in front of our car"),
-    ("park it ahead the bus", "park it ahead of the bus"),
-])
-def test_everyday_slips_of_small_words(words, fixed):
-    assert repair(words, build_campus()).text == fixed
 
 
 def test_things_of_a_kind_told_to_move_all_drive_spaced_along_the_lane(session):
