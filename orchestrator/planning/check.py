@@ -95,6 +95,7 @@ from drivetwin.orchestrator.planning.rules.places import (
     side_of,
 )
 from drivetwin.orchestrator.planning.rules.reading import counted_kinds
+from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
 from drivetwin.tools.base import ToolCall
@@ -125,9 +126,9 @@ SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 MAX_READINGS = 3
 # The catalog's tags of what a layout may add unnamed: markers, blocks, signs, roadworks.
 _LAYOUT_KIT = LAYOUT_KIT_TAGS | {"sign"}
-# Words asking for one more of a thing there: what answers them adds.
 # Sending things off: "get the crowd away from the gate", "move those people away" (never more of them).
 _AWAY = re.compile(r"\b(?:get|move|send|shoo|clear|chase)\s+(?:the|those|these|that|them|it|all)\b(?:\s+[\w-]+){0,2}?\s+away\b")
+# Words asking for one more of a thing there: what answers them adds.
 _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
 # A question about the scene's settings ("time + weather?", "what's the weather doing"): the
 # environment is what it must look up.
@@ -966,7 +967,7 @@ SURE_READING = 0.8
 
 def _edits_named(reading: Reading, request: Request) -> bool:
     """Whether a reading acts only on things the request names by kind or id (not on others it guessed)."""
-    named = set(request.categories) | set(re.findall(r"\b[a-z]+(?:_[a-z]+)*_\d+\b", request.low))
+    named = set(request.categories) | {m.group(0) for m in ASSET_ID.finditer(request.low)}
     touched = {str(c.args.get("category") or c.args.get("asset") or "") for c in reading.calls}
     touched |= {a.rsplit("_", 1)[0] for a in touched if re.search(r"_\d+$", a)}
     return bool(named) and all(t in named or t.rsplit("_", 1)[0] in named for t in touched if t)
