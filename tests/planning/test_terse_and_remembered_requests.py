@@ -366,7 +366,18 @@ def test_a_bare_number_said_with_faster_or_slower_is_the_speed():
     assert find_speed("three times faster") is None
 
 
-def test_on_the_roof_of_a_building_is_refused(session):
+@pytest.mark.parametrize("words", [
+    "put the bin on the roof of the Student Union",
+    "stand a bollard on top of the libary roof",
+    "the bench up on the engineering hall roof please",
+])
+def test_on_the_roof_of_a_building_is_refused(session, words):
     before = session.scene
-    assert not session.submit("put the bin on the roof of the Student Union").ok
+    assert not session.submit(words).ok
     assert session.scene == before
+
+
+def test_what_is_in_an_area_is_what_stands_on_it(session):
+    result = session.submit("which things are in parking lot B?")
+    assert result.ok and result.answer is not None
+    assert all(i in result.answer for i in ("passenger_car_1", "passenger_car_2", "suv_1")) and "ego" not in result.answer

@@ -12,7 +12,6 @@ or found. A question never changes the scene: every call here is a search Worker
 
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass, replace
 from typing import Any, Literal
@@ -34,6 +33,8 @@ from drivetwin.worlds.scene import EGO_ID, Scene
 # Radius of a search "around" a place when the question gives none, metres: the campus's things
 # that belong to a place (a bench at a stop, trees at a fountain) stand within it.
 SEARCH_NEAR_M = 20.0
+# What stands "at" or "in" an area (a lot, a quad): inside it or this close to its edge.
+AREA_NEAR_M = 3.0
 
 # A new question inside a clause: "..., and which landmark is closest to it".
 _NEXT_PART = re.compile(r",?\s+(?:and|also|plus)\s+(?=(?:which|what|where|how|is|are|does|do|who|any)\b)")
@@ -446,12 +447,10 @@ def _around(r: Reading, scene: Scene, anchor: Anchor) -> Part:
 
 
 def _radius(scene: Scene, anchor: Anchor) -> float:
-    """How far "around" a place reaches: an area's own extent when it is wider than the default."""
+    """How far "around" a place reaches: SEARCH_NEAR_M from a place's point; an area's own ground
+    and AREA_NEAR_M past its edge (the search measures to an area's edge, 0 inside)."""
     landmark = scene.landmark(anchor.name) if anchor.kind == "landmark" else None
-    if landmark is None or not landmark.polygon:
-        return SEARCH_NEAR_M
-    extent = max(math.dist(landmark.position, corner) for corner in landmark.polygon)
-    return max(SEARCH_NEAR_M, math.ceil(extent * 10) / 10)  # to 0.1 m, never short of a corner
+    return AREA_NEAR_M if landmark is not None and landmark.polygon else SEARCH_NEAR_M
 
 
 def _asks_for_lanes(r: Reading) -> bool:
