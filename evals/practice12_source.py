@@ -451,7 +451,7 @@ case("search", "indirect", "suv_doing", "team lead",
 case("search", "indirect", "lot_a_empty", "QA tester",
      "People say lot A looks empty in the renders. I'd like to confirm there are no vehicles parked in it.",
      [says(any_of=NOTHING), keep()],
-     [find(category="vehicles", near="parking lot A", within=25)])
+     [find(category="vehicles", near="parking lot A", within=3)])
 impossible("search", "indirect", "petrol_station", "researcher",
            "I need the position of the petrol station for my route file.",
            [landmarks(query="petrol station")], "the campus has no petrol station")

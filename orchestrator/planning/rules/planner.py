@@ -626,8 +626,8 @@ def _as_searches(calls: list[ToolCall]) -> list[ToolCall]:
             out.append(call)
     kinds = [c.args for c in out if c.tool == "find_assets" and c.args.get("category")]
     # "anything near the crossing" beside "a stop sign near the crossing": the search for the kind
-    return [c for c in out if not (c.tool == "find_assets" and not c.args.get("category")
-                                   and any(c.args.items() <= k.items() for k in kinds))]
+    return [c for c in out if not (c.tool == "find_assets" and not c.args.get("category") and set(c.args) <= {"near", "within"}
+                                   and any(c.args.get("near") == k.get("near") for k in kinds))]
 
 
 # How far from the place a statement names the thing it describes may stand ("a hydrant by the crossroads").

@@ -12,6 +12,7 @@ or found. A question never changes the scene: every call here is a search Worker
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, replace
 from typing import Any, Literal
@@ -447,10 +448,14 @@ def _around(r: Reading, scene: Scene, anchor: Anchor) -> Part:
 
 
 def _radius(scene: Scene, anchor: Anchor) -> float:
-    """How far "around" a place reaches: SEARCH_NEAR_M from a place's point; an area's own ground
-    and AREA_NEAR_M past its edge (the search measures to an area's edge, 0 inside)."""
+    """How far "around" a place reaches, as the search measures it (to an area's edge, 0 inside):
+    SEARCH_NEAR_M from a place's point; round an area, about as far from its middle, but never
+    less than its own ground and AREA_NEAR_M past its edge (a lot, not the road beside it)."""
     landmark = scene.landmark(anchor.name) if anchor.kind == "landmark" else None
-    return AREA_NEAR_M if landmark is not None and landmark.polygon else SEARCH_NEAR_M
+    if landmark is None or not landmark.polygon:
+        return SEARCH_NEAR_M
+    extent = max(math.dist(landmark.position, corner) for corner in landmark.polygon)
+    return max(AREA_NEAR_M, math.floor((SEARCH_NEAR_M - extent) * 10) / 10)
 
 
 def _asks_for_lanes(r: Reading) -> bool:
