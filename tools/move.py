@@ -223,8 +223,8 @@ def resolve_behaviour(
             raise NotFoundError(f"no lane {spec.lane!r}; lanes: {names}")
         near = nearest_on_polyline(asset.pose.x, asset.pose.y, lane.centreline)
         # off the lane: into it beside where it stands, spaced from what drives it ("make the cars in lot B drive")
-        others = [a for a in scene.all_assets() if a.id != asset.id]
-        pose = None if near.distance < lane.width / 2 else driving_start(scene, asset, lane, near.arc_length, others)
+        pose = None if near.distance < lane.width / 2 else driving_start(
+            scene, asset, lane, near.arc_length, [a for a in scene.all_assets() if a.id != asset.id])
         if pose is None and abs(math.remainder(asset.pose.yaw - near.heading, 2 * math.pi)) > 0.3:
             pose = Pose(x=asset.pose.x, y=asset.pose.y, yaw=near.heading)
         return DriveLane(lane=lane.id, speed=spec.speed or min(5.0, lane.speed_limit)), pose
