@@ -29,6 +29,7 @@ from drivetwin.evals import (
     practice17_source,
     practice18_source,
     practice19_source,
+    practice20_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -80,6 +81,10 @@ BRIEFS: dict[str, Brief] = {
     "practice18": Brief(270, 9, 9, practice18_source, multi_turn=30, planned=12, compound=15),
     # Nine more new voices; search, moving and arrangement hold 11 in every grade, the rest 9.
     "practice19": Brief(270, 9, 9, practice19_source, multi_turn=30, planned=12, compound=18),
+    # Nine more new voices (an investigator, a sailor, an Australian, a food-truck owner, an ex-soldier, a
+    # study's grad student, a poet, a self-corrector, a double-negator); search, moving and arrangement hold
+    # 11 in every grade, the rest 9.
+    "practice20": Brief(270, 9, 9, practice20_source, multi_turn=30, planned=15, compound=18),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
