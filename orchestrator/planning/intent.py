@@ -100,6 +100,8 @@ _INFO = re.compile(r"(?<!s )\b(tell me|show me|let me know|inform (?:me|us)|advi
                    r"(to|i|we|me) know (?:[a-z]+ )?(what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"
                    # "kindly advise the location of ...", "need suv_1's pose in the map frame": where something is
                    r"advise (?:me |us )?(?:of |on |as to )?the (?:the )?(?:location|position|whereabouts|distance|number)|"
+                   # "coordinates of the nearest tree?", "req grid ref of the bin": where something is, asked bare
+                   r"(?:^|(?:req|request|requesting|need|want)\s+)(?:the\s+)?(?:coordinates|position|location|whereabouts|grid ref(?:erence)?|pose) of\b(?![^.?!]*:)|"
                    r"'s (?:pose|position|coordinates|location|whereabouts|heading)(?!\s+(?:should|must|needs?|has|is to|ought|will|would|can|could|to)\b)|"
                    r"(?:write|note|jot|put) (?:it )?down (?:what|which|where|how|whether|if)|"  # "asked me to write down which lane ..."
                    # "I'd like to confirm there are no cars in it", "just want to be sure there isn't one": verifying
@@ -265,38 +267,82 @@ def without_contrast(text: str) -> str:
 
 
 # A slip taken back as it is said: "2 m east - sorry, west", "add three, no wait, two cones", "paint
-# the bench - sorry, the bin - red", "blue, I mean green".
-_TAKEN_BACK = re.compile(r"\s*(?:[,;-]|--|\u2013|\u2014|\.\.\.)?\s*\b(?:sorry|no wait|wait no|i mean|i meant|oops|or rather|"
-                         r"make that|scratch that|correction)\b[,:]?\s+", re.IGNORECASE)
+# the bench - sorry, the bin - red", "blue, I mean green", "off - no, on", "car 1, or actually car 2".
+_TAKEN_BACK = re.compile(r"\s*(?:[,;-]|--|\u2013|\u2014|\.\.\.)?\s*\b(?:sorr?y|soz|no wait|wait no|i mean|i meant|oops|or rather|"
+                         r"or actually|scratch that|correction)\b[,:]?\s+(?:[-\u2013\u2014]\s*)?"
+                         # "three cones, make that four" (never "... our car. Make that child cross")
+                         r"|\s*(?:[,;]|(?<=\s)-|--|\u2013|\u2014)\s*make that\b[,:]?\s+"
+                         r"|\s*(?:[,;.]|(?<=\s)-|--|\u2013|\u2014)\s*no(?:\s*(?:[,;.!:]|--|\u2013|\u2014)|\s+(?:sorr?y|soz)\b[,:]?)\s*", re.IGNORECASE)
 # The kinds of word a correction swaps, each a pattern for one word; anything else is a thing named with an article.
 _SWAPPED_KINDS = (
     r"\d+(?:\.\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|twenty",
     r"north|south|east|west|left|right|forward|forwards|back|backwards|ahead|behind|up|down",
+    r"on|off",
     "|".join(COLOURS),
 )
+# Words a correction shares with what it corrects that say nothing about where it goes.
+_UNPLACED = frozenset({"the", "a", "an", "one", "ones", "just", "only", "it", "them", "that", "this", "those", "to", "of"})
+# Openers of a correction that is a request of its own besides commands() ("half - no, leave just two").
+_RESTART = re.compile(r"^(?:just\s+)?(?:leave|keep|have|let|give|stop|start)\b")
+# Corrections taken back in turn ("circles, no, figure eight - no, just circles") are read this many deep.
+_SLIPS = 3
 
 
 def without_slip(text: str) -> str:
-    """`text` with a word taken back replaced by its correction ("move the bench 2 m east - sorry,
-    west" is "move the bench 2 m west"); as it was where the correction swaps nothing said before."""
-    said = _TAKEN_BACK.search(text)
-    if said is None or not text[: said.start()].strip():
+    """`text` with each word taken back replaced by its correction ("move the bench 2 m east - sorry,
+    west" is "move the bench 2 m west"), the last correction first ("circles, no, figure eight - no,
+    just circles" is "just circles"); as it was where a correction swaps nothing said before."""
+    for _ in range(_SLIPS):
+        mended = _last_slip(text)
+        if mended == text:
+            break
+        text = mended
+    return text
+
+
+def _last_slip(text: str) -> str:
+    said = next((m for m in reversed(list(_TAKEN_BACK.finditer(text))) if text[: m.start()].strip()), None)
+    if said is None:
         return text
     before, after = text[: said.start()], text[said.end() :]
-    stop = re.search(r"\s+(?:-|--|\u2013|\u2014)\s+|,\s*", after)
+    stop = re.search(r"\s+(?:-|--|\u2013|\u2014)\s+|,\s*|\.\s+|\u2014|\u2013", after)
     fix, rest = (after[: stop.start()], after[stop.end() :]) if stop else (after, "")
-    head = re.sub(r"^(?:the|a|an)\s+", "", fix.strip(), flags=re.IGNORECASE).split(" ", 1)[0].lower()
-    for kind in _SWAPPED_KINDS:
-        if re.fullmatch(kind, head):
-            slipped = list(re.finditer(rf"\b(?:{kind})\b", before, re.IGNORECASE))
-            cut = slipped[-1].start() if slipped else -1
-            break
-    else:  # a thing: the last one named with an article ("the bench")
-        slipped = list(re.finditer(r"\b(?:the|a|an)\s+[\w-]+(?:\s+[\w-]+)?\s*$", before, re.IGNORECASE))
-        cut = slipped[-1].start() if slipped else -1
+    fix = fix.strip().rstrip(".!")
+    if re.fullmatch(r"(?:[\s.!]*" + re.escape(fix) + r")*[\s.!]*", rest, re.IGNORECASE):
+        rest = ""  # "on. On.": the correction said again
+    cut, skip = _slipped(before, fix, broken=said.group(0).strip()[:1] in ",;-.\u2013\u2014")
     if cut < 0:
         return text
-    return " ".join(p for p in (before[:cut].rstrip(), fix.strip(), rest.strip()) if p)
+    return " ".join(p for p in (before[:cut].rstrip(), fix[skip:], rest.strip()) if p)
+
+
+def _slipped(before: str, fix: str, broken: bool) -> tuple[int, int]:
+    """Where in `before` the words `fix` replaces begin, and where in `fix` the replacement does;
+    (-1, 0) when it replaces nothing said. A thing said bare is replaced only where the speaker
+    `broken` off with a mark ("add cones, no, barriers", never "I'm sorry to ask")."""
+    head = re.sub(r"^(?:the|a|an)\s+", "", fix, flags=re.IGNORECASE).split(" ", 1)[0].lower()
+    for kind in _SWAPPED_KINDS:  # a word of the same kind: the last one said
+        slipped = list(re.finditer(rf"\b(?:{kind})\b", before, re.IGNORECASE))
+        if re.fullmatch(kind, head) and slipped:
+            cut = slipped[-1].start()
+            more = re.search(r"\banother\s+$", before[:cut], re.IGNORECASE)  # "another one - no, two more"
+            return (more.start() if more and re.search(r"\bmore\b", fix, re.IGNORECASE) else cut), 0
+    low = before.lower()
+    word = next((w for w in re.finditer(r"[a-z]+", fix.lower()) if w.group(0) not in _UNPLACED), None)
+    found = [m.start() for m in re.finditer(rf"\b{word.group(0)}\b", low)] if word else []
+    if word and found:  # the correction's first word said before: from where it was said
+        return found[-1], word.start()
+    last = re.search(r"\b([a-z]+)\W*$", low)
+    if last and any(re.fullmatch(kind, last.group(1)) for kind in _SWAPPED_KINDS):
+        return last.start(1), 0  # "in blue - sorry, tartan": the word just said
+    if commands(fix.lower()) or _RESTART.match(fix.lower()):  # a request of its own: it replaces the last clause
+        bounds = [m.end() for m in re.finditer(r"[.;!?,\u2014\u2013]\s*", before)]
+        return (bounds[-1] if bounds else 0), 0
+    thing = list(re.finditer(r"\b(?:(?:the|a|an)\s+[\w-]+(?:\s+[\w-]+)?|[a-z]+\s+\d+)(?:\s+(?:from|to|and|with|by))?\s*$",
+                             before, re.IGNORECASE))  # "the bench", "bench 1 from"
+    if thing:
+        return thing[-1].start(), 0
+    return (last.start(1), 0) if last and broken else (-1, 0)
 
 
 def without_reason_first(text: str) -> str:

@@ -54,6 +54,16 @@ def test_some_of_what_was_just_made_are_counted(session, campus):
     ("add four, sorry, six bollards by the library", "add six bollards by the library"),
     ("paint the hydrant - oops, the bench - blue", "paint the bench blue"),
     ("I'm sorry to ask again, add a cone", "I'm sorry to ask again, add a cone"),  # nothing taken back
+    ("set the street lights on - no, off. Off!", "set the street lights off"),
+    ("how far is the bus from, no sory, the truck from the gate", "how far is the truck from the gate"),
+    ("how far is bench 1 from, no, bench 2 from the gate", "how far is bench 2 from the gate"),
+    ("find the tree nearest the gate, or actually the one nearest the quad", "find the tree nearest the quad"),
+    ("add another one - no, three more", "add three more"),
+    ("fewer bins. a third - no, keep only one", "fewer bins. keep only one"),
+    ("put bins, no, bollards by the gate", "put bollards by the gate"),
+    ("rings, no, a line - no, rings", "rings"),
+    ("There are no cars. Add one.", "There are no cars. Add one."),  # "no" is not broken off
+    ("Is there a bench? No? Then add one.", "Is there a bench? No? Then add one."),
 ])
 def test_a_word_taken_back_is_replaced_by_its_correction(said, meant):
     assert without_slip(said) == meant
@@ -64,6 +74,18 @@ def test_a_corrected_direction_is_the_one_applied(session, campus):
     assert report.ok, report.error
     before, after = campus.asset("trash_bin_1"), session.scene.asset("trash_bin_1")
     assert after.pose.y == pytest.approx(before.pose.y - 3.0, abs=0.3)
+
+
+def test_a_switch_corrected_mid_request_is_set_the_way_said_last(session):
+    report = session.submit("switch the street lamps on - no, off. Off!")
+    assert report.ok, report.error
+    assert session.scene.environment.lighting.street_lights == "off"
+
+
+def test_a_thing_corrected_mid_question_is_the_one_measured(session):
+    report = session.submit("how far is bench 1 from, no sorry, the hydrant from the fountain")
+    assert report.ok, report.error
+    assert "fire_hydrant_1" in report.answer and "bench_1" not in report.answer
 
 
 def test_a_distance_said_not_to_be_meant_is_not_a_move(session, campus):

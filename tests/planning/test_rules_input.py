@@ -34,6 +34,11 @@ def test_a_clock_time_with_a_colon_is_one_clause_and_sets_that_time(session):
     ("the time should be eleven", "11:00"),
     ("make it 9 at night", "21:00"),
     ("set the clock for 5 in the afternoon", "17:00"),
+    ("let's have it at four o'clock", "16:00"),  # the small hours are said as such
+    ("2 o'clock, please", "14:00"),
+    ("four o'clock in the morning", "04:00"),
+    ("1 o'clock at night", "01:00"),
+    ("eight o'clock", "08:00"),
 ])
 def test_an_hour_said_in_words_or_bare_after_the_clock_is_a_time(words, time):
     assert str(clock_time(words)) == time

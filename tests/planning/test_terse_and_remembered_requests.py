@@ -370,3 +370,24 @@ def test_what_is_in_an_area_is_what_stands_on_it(session):
     result = session.submit("which things are in parking lot B?")
     assert result.ok and result.answer is not None
     assert all(i in result.answer for i in ("passenger_car_1", "passenger_car_2", "suv_1")) and "ego" not in result.answer
+
+
+@pytest.mark.parametrize("prompt", ["coordinates of the hydrant nearest the fountain", "req location of the bench, over",
+                                    "need the whereabouts of the suv"])
+def test_where_a_thing_is_asked_bare_is_a_question_that_changes_nothing(session, campus, prompt):
+    assert asks(prompt.lower())
+    report = session.submit(prompt)
+    assert session.scene == campus
+    assert report.ok and report.answer, report.error
+
+
+def test_a_rider_sent_to_a_place_goes_there_by_path_not_along_any_lane(session):
+    assert session.submit("put a bicycle at the west crosswalk").ok
+    report = session.submit("get the cyclist to ride over to the Library entrance")
+    assert report.ok, report.error
+    behaviour = session.scene.asset("bicycle_1").behaviour
+    assert behaviour.kind == "follow_path" and behaviour.speed > 1.4  # a ride, faster than a walk
+    library = session.scene.landmark("Library entrance")
+    assert library is not None
+    end_x, end_y = behaviour.waypoints[-1]
+    assert abs(end_x - library.position[0]) + abs(end_y - library.position[1]) < 12.0

@@ -29,6 +29,7 @@ CLOCK_PATTERN = "^([01][0-9]|2[0-3]):[0-5][0-9]$"
 NUMBER_FIELDS = frozenset({
     "count", "columns", "cones", "distance", "along_m", "radius", "spacing", "within", "speed",
     "forward", "left", "east", "north", "turn_deg", "yaw_deg", "heading_deg", "x", "y", "at_x", "at_y",
+    "offset_m", "gap", "metres", "rate", "seconds", "at_time", "start_time",
 })
 # Of those, the ones that turn a thing: offered only when the request speaks of turning.
 TURN_FIELDS = frozenset({"yaw_deg", "turn_deg", "heading_deg"})

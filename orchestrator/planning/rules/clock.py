@@ -33,6 +33,7 @@ _DIGITAL = re.compile(r"(?<![\w.:])(\d{1,2})\s*(?:([:.])\s*(\d\d))?\s*(am|pm|a\.
 _SPOKEN = re.compile(rf"\b(half|(?:a )?quarter|{_HOUR}(?: minutes)?) (past|after|to|before) {_HOUR}\b")
 # "half seven": half past seven, as said in Britain (never "half a metre": only an hour follows).
 _HALF_HOUR = re.compile(rf"\bhalf {_HOUR}\b(?! (?:past|after|to|before)\b)")
+_O_CLOCK = re.compile(r"^\s*o'?\s?clock\b")
 _NAMED = {"midnight": (0, 0), "noon": (12, 0), "midday": (12, 0)}
 # "18.30" without a suffix is a clock time only when the sentence is about time.
 _TIME_TOPIC = re.compile(r"\b(time|clock)\b")
@@ -71,14 +72,18 @@ def _number(word: str) -> int:
     return int(word) if word.isdigit() else _WORD_NUMBERS[word]
 
 
-def _in_half_of_day(hour: int, after: str, said: str = "") -> int:
+def _in_half_of_day(hour: int, after: str, said: str = "", o_clock: bool = False) -> int:
     """The 24-hour hour for a 12-hour `hour` given the words after it ("pm", "at night"), else
-    the part of the day the rest of the request names ("a November evening ... about half five")."""
+    the part of the day the rest of the request names ("a November evening ... about half five");
+    one to five o'clock with nothing saying morning or night is in the afternoon (the small hours
+    are said as such: "three in the morning")."""
     if _AFTERNOON.match(after):
         night_small_hours = hour <= 4 and re.match(r"^\s*(at|in the|of|of the) night", after) is not None
         return hour if hour >= 12 or night_small_hours else hour + 12
     if _MORNING.match(after):
         return 0 if hour == 12 else hour
+    if 1 <= hour <= 5 and (o_clock or _O_CLOCK.match(after)) and not re.search(r"\b(?:morning|night|dawn|am|a\.m\.)\b", said + after):
+        return hour + 12
     if 5 <= hour <= 11 and _LATER_IN_DAY.search(said) and not re.search(r"\b(?:morning|am|a\.m\.)\b", said):
         return hour + 12
     return hour
@@ -118,7 +123,8 @@ def clock_time(text: str) -> ClockTime | None:
             after = suffix
         said_hour = int(m.group(1))
         rest = text if suffix is None and not m.group(1).startswith("0") else ""  # "05:30" is the 24-hour clock
-        hour = _in_half_of_day(said_hour, after, rest) if said_hour <= 12 else said_hour
+        o_clock = suffix is not None and suffix.startswith("o")
+        hour = _in_half_of_day(said_hour, after, rest, o_clock) if said_hour <= 12 else said_hour
         return ClockTime(hour, int(said_minutes or 0), m.group(0).strip(), *m.span())
     for hour_said in (_WORD_CLOCK.search(text), _SET_HOUR.search(text)):
         if hour_said is not None:

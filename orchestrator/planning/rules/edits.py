@@ -766,6 +766,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if drive is not None and found is not None and catalog()[found.category].motion == "vehicle":
         notes.subject = [asset]  # "the suv drives to the main gate": into the lane that leads there, where it stands
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": drive[0]})]
+    rider = found is not None and kind == "drive_lane" and catalog()[found.category].motion == "walker"
+    if rider and (ride := walk_said(r, scene, exclude=ids)) is not None:  # "have the cyclist ride to the library": by path
+        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": ride.behaviour})]
     if kind == "drive_lane" and r.landmark and not r.lane and r.has(("go", "goes")):
         kind = None  # "could the car go in lot A?": a place to be, not a lane to drive
     if kind == "drive_lane" and r.has(("go", "goes")) and _STEP_SAID.search(r.low):
