@@ -16,7 +16,7 @@ import pytest
 from drivetwin.orchestrator.backends import Backend, BackendError, BackendInfo, BackendStatus, ChatResult, Message
 from drivetwin.orchestrator.backends.base import Completion, CompletionRequest
 from drivetwin.orchestrator.planning.grounding import Grounder
-from drivetwin.orchestrator.planning.llm.planner import KIND_ROUNDS, LlmPlanner
+from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 from drivetwin.orchestrator.session import Session
 from drivetwin.worlds.scene import Scene
 
@@ -88,10 +88,7 @@ def spelling_grounder() -> Grounder:
     return Grounder(use_embeddings=False)
 
 
-def scripted_session(
-    campus: Scene, answers: Sequence[Any], grounder: Grounder, kind_rounds: int = KIND_ROUNDS
-) -> tuple[Session, ScriptedBackend]:
-    """A session on the campus whose planner is the LLM hierarchy over a scripted backend
-    (`kind_rounds=1`: the Sr. manager is not asked again for other kinds of edit)."""
+def scripted_session(campus: Scene, answers: Sequence[Any], grounder: Grounder) -> tuple[Session, ScriptedBackend]:
+    """A session on the campus whose planner is the LLM hierarchy over a scripted backend."""
     backend = ScriptedBackend(answers)
-    return Session(campus, LlmPlanner(backend, grounder=grounder, kind_rounds=kind_rounds)), backend
+    return Session(campus, LlmPlanner(backend, grounder=grounder)), backend

@@ -37,10 +37,6 @@ MAX_REQUIREMENTS = 4
 T = TypeVar("T")
 
 
-class ModelFault(PlanningError):
-    """The backend failed (down, too slow, broken): asking it again in other words cannot help."""
-
-
 class Requirement(BaseModel):
     """One thing the user asked for, typed by the tool family that can do it."""
 
@@ -131,9 +127,9 @@ def ask(
                 timeout_s=timeout_s,
             )
         except BackendUnavailable as exc:
-            raise ModelFault(f"{step}: the language model is not available: {exc}") from exc
+            raise PlanningError(f"{step}: the language model is not available: {exc}") from exc
         except BackendTimeout as exc:
-            raise ModelFault(
+            raise PlanningError(
                 f"{step}: the language model did not answer within {exc.timeout_s:g} s; "
                 "try again, or use a smaller model or the rule planner"
             ) from exc
@@ -142,7 +138,7 @@ def ask(
             conversation += [_assistant(exc.raw), _fix(refusals[-1])]
             continue
         except BackendError as exc:
-            raise ModelFault(f"{step}: the language model failed: {exc}") from exc
+            raise PlanningError(f"{step}: the language model failed: {exc}") from exc
         tokens += result.prompt_tokens + result.completion_tokens
         try:
             parsed = result.data if result.data is not None else json.loads(result.text)
@@ -190,7 +186,6 @@ __all__ = [
     "MAX_REQUIREMENTS",
     "RETRY_BUDGET",
     "Answer",
-    "ModelFault",
     "Requirement",
     "Requirements",
     "ask",

@@ -20,18 +20,14 @@ from drivetwin.orchestrator.backends import Backend, BackendError, load_backend
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
 from drivetwin.orchestrator.planning.grounding import Grounder
 from drivetwin.orchestrator.planning.llm.jr_manager import JrManager
-from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S, ModelFault, Requirement
-from drivetwin.orchestrator.planning.llm.request_names import RequestNames, read_names
-from drivetwin.orchestrator.planning.llm.review_hint import review_problems
+from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S
+from drivetwin.orchestrator.planning.llm.request_names import read_names
 from drivetwin.orchestrator.planning.llm.sr_manager import SrManager
 from drivetwin.prompts.templates import prompt_version
 from drivetwin.tools.base import Family, ToolCall
 
 DEFAULT_BACKEND = "embedded"
 DEFAULT_MODEL = "smollm2-135m"
-# Sr. manager answers per prompt: when the plan for the kinds of edit chosen does not do what
-# the request says (the session's own review), the model chooses again among the other kinds.
-KIND_ROUNDS = 3
 # Confidence of an LLM plan that needed no retries; each retry lowers it.
 BASE_CONFIDENCE = 0.9
 RETRY_PENALTY = 0.15
@@ -67,11 +63,9 @@ class LlmPlanner:
         model: str | None = DEFAULT_MODEL,
         grounder: Grounder | None = None,
         call_timeout_s: float = CALL_TIMEOUT_S,
-        kind_rounds: int = KIND_ROUNDS,
         **backend_options: Any,
     ) -> None:
         self.call_timeout_s = call_timeout_s
-        self.kind_rounds = kind_rounds
         self._backend = backend if isinstance(backend, Backend) else None
         self._backend_name = backend if isinstance(backend, str) else backend.name
         self._model = model
@@ -94,26 +88,6 @@ class LlmPlanner:
         model = self._backend.model if self._backend is not None else self._model
         return f"{self._backend_name}/{model}"
 
-    def _calls(
-        self,
-        requirements: list[Requirement],
-        prompt: str,
-        context: PlanContext,
-        said: RequestNames,
-        trace: list[TraceStep],
-    ) -> list[ToolCall]:
-        """One checked call per requirement, each from its family's Jr. manager."""
-        calls: list[ToolCall] = []
-        juniors: dict[Family, JrManager] = {}
-        for number, requirement in enumerate(requirements, start=1):
-            junior = juniors.setdefault(
-                requirement.kind, JrManager(requirement.kind, self.backend, self.grounder, self.call_timeout_s)
-            )
-            call, steps = junior.call(requirement, prompt, context, calls, said, last=number == len(requirements))
-            calls.append(call)
-            trace += steps
-        return calls
-
     def plan(self, prompt: str, context: PlanContext) -> Plan:
         """Requirements from the Sr. manager, one checked call per requirement from Jr. managers."""
         reason = injection_reason(prompt)
@@ -127,35 +101,17 @@ class LlmPlanner:
         started = time.perf_counter()
         said = read_names(prompt, context.scene)
         senior = SrManager(backend, self.grounder, self.call_timeout_s)
-        kinds = said.kinds()
-        first: list[ToolCall] | None = None
-        failure: PlanningError | None = None
-        calls: list[ToolCall] | None = None
-        for _ in range(self.kind_rounds):
-            requirements: list[Requirement] = []
-            try:
-                requirements, sr_step = senior.requirements(prompt, context, kinds)
-                trace.append(sr_step)
-                calls = self._calls(requirements, prompt, context, said, trace)
-            except ModelFault:
-                raise
-            except PlanningError as exc:
-                failure, calls = failure or exc, None
-            if calls is not None:
-                first = first if first is not None else calls
-                problems = review_problems(prompt, calls, context)
-                if not problems:
-                    break
-                trace.append(TraceStep(level="llm_planner", input="review", output="; ".join(problems)))
-                calls = None
-            # The kinds of edit tried do not do what the request says: ask again among the others.
-            kinds = [k for k in kinds if k not in {r.kind for r in requirements}]
-            if not requirements or not kinds:
-                break
-        calls = calls if calls is not None else first
-        if calls is None:
-            assert failure is not None
-            raise failure
+        requirements, sr_step = senior.requirements(prompt, context, said.kinds())
+        trace.append(sr_step)
+        calls: list[ToolCall] = []
+        juniors: dict[Family, JrManager] = {}
+        for number, requirement in enumerate(requirements, start=1):
+            junior = juniors.setdefault(
+                requirement.kind, JrManager(requirement.kind, backend, self.grounder, self.call_timeout_s)
+            )
+            call, steps = junior.call(requirement, prompt, context, calls, said, last=number == len(requirements))
+            calls.append(call)
+            trace += steps
         retries = sum(step.retries for step in trace)
         tokens = sum(step.tokens for step in trace)
         trace.append(
