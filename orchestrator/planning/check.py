@@ -47,6 +47,7 @@ from drivetwin.orchestrator.planning.coverage import (
     definite_but_added,
     described_not_destination,
     environment_left_out,
+    environment_unasked,
     excepted_ids,
     excepted_touched,
     indefinite_but_moved,
@@ -63,6 +64,7 @@ from drivetwin.orchestrator.planning.coverage import (
     place_moved,
     unknown_places,
     unknown_things,
+    unnamed_added,
     unnamed_compass_places,
     unpointed,
     wrong_direction,
@@ -232,6 +234,11 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked to take something away, but the plan adds " + _names(added))
     elif request.polarity == "remove" and not effect.removed and not added and _moved(effect):
         out.append("you asked to take something away, but the plan only moves " + _names(_moved(effect)))
+    elif request.polarity == "remove" and not effect.removed and not added and _REMOVE_VERB.search(request.low) and effect.changed:
+        out.append("you asked to remove something, but the plan removes nothing and changes " + _names(effect.changed))
+    nudged = [a for a in _moved(effect) if _far_moved(a, effect) > SMALL_MOVE_M]
+    if nudged and _SMALL_MOVE.search(request.low) and request.place is None and not request.numbers:
+        out.append(f"you asked for a small move, but the plan moves {_names(nudged)} {_far_moved(nudged[0], effect):.0f} m")
     if request.polarity == "remove" and not effect.removed and any(
             c.tool == "set_lighting" and c.args.get("street_lights") == "on" for c in effect.calls):
         out.append("you asked for less, but the plan switches the street lights on")  # "fewer lights over there"
@@ -347,6 +354,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
             for c in definite_but_added(request.masked, scope, scene)]
     if not request.question:
         out += environment_left_out(request.low, effect.calls)
+    out += environment_unasked(request.low, effect.calls)
     # a number, a place, a lane, a state, "fewer" or a side limits how many go
     limited = bool(request.numbers or request.place or request.lane or request.state or FEWER_WORDS.search(request.low)
                    or md.outer_direction(request.low) or request.excepted  # "the westernmost lamp", "not the ego"
@@ -362,6 +370,8 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += back_reference(request.masked, request.categories, scope, memory, scene, bool(request.numbers))
     if request.place is None and request.lane is None and (strays := unpointed(request.masked, scope, scene)):
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
+    if unasked := unnamed_added(request.masked, scope):
+        out.append(f"the plan adds {_names(unasked)}, which your words do not name")
     out += unknown_places(request.masked, effect.calls, scene)
     out += place_moved(request.low, scope, scene)
     out += unnamed_compass_places(request.low, scene)
@@ -502,6 +512,19 @@ def _already_there(effect: Effect, scene: Scene) -> list[str]:
         if place is not None and place.polygon and _near(scene, thing, place.name):
             out.append(f"{thing.id} already stands in {place.name}")
     return out
+
+
+# Said of a move, words for a small one ("nudge the bench a little"); a move longer than this is no small one.
+_SMALL_MOVE = re.compile(r"\b(?:nudge|budge|scoot|a (?:little|bit|touch|tad|smidge|fraction)|slightly|an inch|a few (?:inches|centimetres|cm)"
+                         r"|little bit|wee bit|tiny bit)\b")
+SMALL_MOVE_M = 5.0
+# Verbs that only ever take a thing out of the scene ("remove the extra actors", never a change of what they do).
+_REMOVE_VERB = re.compile(r"\b(?:remove|delete|get rid of|eliminate|erase|discard|despawn)\b")
+
+
+def _far_moved(asset: AssetInstance, effect: Effect) -> float:
+    before = effect.outcome.before.asset(asset.id) if effect.outcome else None
+    return math.dist((asset.pose.x, asset.pose.y), (before.pose.x, before.pose.y)) if before is not None else 0.0
 
 
 def _moved(effect: Effect) -> list[AssetInstance]:

@@ -361,14 +361,16 @@ _BESIDE = re.compile(r"\b(?:near|by|beside|next to|close to|alongside)\s+(?:the|
 
 
 def away_from_thing(masked: str, scope: Scope, scene: Scene) -> list[str]:
-    """New things the words put beside a thing there ("stick a bin near the bench") that the
-    plan puts far from every thing of that kind."""
+    """Things the words put beside a thing there ("stick a bin near the bench", "it should be by
+    the hydrant") that the plan puts or leaves far from every thing of that kind."""
     out = []
+    removed = {a.id for a in scope.removed}
+    placed = list({a.id: a for a in [*scope.added, *scope.touched] if a.id not in removed}.values())
     for m in named_in(masked):
         anchors = [a for a in [*scene.all_assets(), *scope.added] if a.category == m.category]
         if not _BESIDE.search(m.before) or not anchors:
             continue
-        far = [a for a in scope.added if a.category != m.category
+        far = [a for a in placed if a.category != m.category
                and min(math.hypot(a.pose.x - b.pose.x, a.pose.y - b.pose.y) for b in anchors) > NEAR_THING_M]
         if far:
             out.append(f"you said near the {m.category.replace('_', ' ')}, but the plan puts "
@@ -414,6 +416,25 @@ def inside_building(masked: str, scene: Scene) -> list[str]:
                 return [f"things cannot go inside or on top of the {building.name} in this world, only around it "
                         "(its entrance is the nearest place)"]
     return []
+
+
+# Any word about the weather, the time, the light or the feel of the day: a plan may change them.
+_ENVIRONMENT_SAID = re.compile(r"\b(?:weather|sky|skies|sun\w*|cloud\w*|rain\w*|snow\w*|fog\w*|mist\w*|hail\w*|storm\w*|wet|dry"
+                               r"|wind\w*|drizzl\w*|pour\w*|ic[ey]|frost\w*|wint\w*|summer\w*|autumn\w*|spring|season\w*|dreich"
+                               r"|time of day|the time|clock|hours?|o'?clock|am|pm|daytime|daylight|daybreak|night\w*|morning|afternoon|evening|noon|midday|midnight|dusk"
+                               r"|dawn|sunset|sunrise|dark\w*|\w*light\w*|lit|\w*lamps?|bright\w*|dim\w*|dull|gloom\w*|grey|gray|exposure"
+                               r"|mood\w*|atmospher\w*|spooky|eerie|scene|look|feel\w*|vibe|arvo|late|early|golden|blue hour|visib\w*)\b"
+                               r"|\d{1,2}[:.]\d\d")
+
+
+def environment_unasked(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
+    """Weather, time or lights a plan changes when the words say nothing of any of them
+    ("slow the test car down a bit" done by making it cloudy)."""
+    changed = [c.tool for c in calls if c.tool in ("set_weather", "set_time_of_day", "set_lighting")]
+    if not changed or _ENVIRONMENT_SAID.search(low):
+        return []
+    what = {"set_weather": "the weather", "set_time_of_day": "the time", "set_lighting": "the lights"}
+    return [f"the plan changes {what[changed[0]]}, which your words do not mention"]
 
 
 def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
@@ -544,6 +565,21 @@ def unpointed(masked: str, scope: Scope, scene: Scene) -> list[AssetInstance]:
         return []
     # a mass word for their kind points at them ("drop the greenery": the trees)
     return [a for a in acted if not any(re.search(rf"\b{re.escape(w)}\b", low) for w in lx.CONCEPTS.get(a.category, ()))]
+
+
+# Words that ask for more of what is there, or for more going on, without naming a kind ("two
+# more", "same again", "populate the quad", "liven it up"): a plan may add what they ask for.
+_MORE_OF = re.compile(r"\b(?:more|another|again|same|extra|copy|copies|duplicate|populate\w*|fill\w*|crowd\w*|busy|busier"
+                      r"|livelier|liven|lively|life|activity|traffic|furnish\w*|dress\w*|decorat\w*|something|anything)\b")
+
+
+def unnamed_added(masked: str, scope: Scope) -> list[AssetInstance]:
+    """New things a plan adds while the words name no kind, point at nothing and give no word for
+    theirs ("darker, please" done by adding a pedestrian, "slow the test car down" by adding a bus)."""
+    if not scope.added or named_in(masked) or _POINTS.search(masked) or _MORE_OF.search(ph.normalise(masked)):
+        return []
+    low = ph.normalise(masked)
+    return [a for a in scope.added if not any(re.search(rf"\b{re.escape(w)}\b", low) for w in lx.CONCEPTS.get(a.category, ()))]
 
 
 def _category_of(asset_id: str, scene: Scene) -> str | None:
@@ -945,6 +981,7 @@ __all__ = [
     "back_reference",
     "definite_but_added",
     "environment_left_out",
+    "environment_unasked",
     "excepted_ids",
     "excepted_touched",
     "indefinite_but_moved",
@@ -958,6 +995,7 @@ __all__ = [
     "place_dropped",
     "unknown_places",
     "unknown_things",
+    "unnamed_added",
     "unnamed_compass_places",
     "unpointed",
     "wrong_direction",

@@ -58,6 +58,7 @@ REMOVE_WORDS = re.compile(
     r"|\b(?:don'?t|dont|do not|doesn'?t|does not) (?:really )?(?:think (?:we|i|you|they) )?(?:really )?need\b[^,.;!?]*\b(?:any ?more|any longer)\b"
     # "make sure there are no cars in lot B", "ensure nobody is standing at the bus stop": a scene without them
     r"|\b(?:make sure|ensure|see to it|check) (?:that )?(?:there (?:is|are|'s) )?(?:no|nothing|nobody|no one|no-one)\b"
+    r"|\b(?:empty|free|devoid) of\b"  # "lot B must be completely empty of vehicles"
 )
 # People doing what they do ("people will eat lunch on that bench", "students often cut across"):
 # who a statement is about, not a thing asked for.
@@ -101,7 +102,8 @@ _INFO = re.compile(r"(?<!s )\b(tell me|show me|let me know|inform (?:me|us)|advi
                    # "kindly advise the location of ...", "need suv_1's pose in the map frame": where something is
                    r"advise (?:me |us )?(?:of |on |as to )?the (?:the )?(?:location|position|whereabouts|distance|number)|"
                    # "coordinates of the nearest tree?", "req grid ref of the bin": where something is, asked bare
-                   r"(?:^|(?:req|request|requesting|need|want)\s+)(?:the\s+)?(?:coordinates|position|location|whereabouts|grid ref(?:erence)?|pose) of\b(?![^.?!]*:)|"
+                   r"(?:^|(?:req|request|requesting|need|want)\s+)(?:the\s+)?(?:coordinates|position|location|whereabouts|grid ref(?:erence)?|pose"
+                   r"|ids?|identifiers?|asset ids?) of\b(?![^.?!]*:)|"
                    r"'s (?:pose|position|coordinates|location|whereabouts|heading)(?!\s+(?:should|must|needs?|has|is to|ought|will|would|can|could|to)\b)|"
                    r"(?:write|note|jot|put) (?:it )?down (?:what|which|where|how|whether|if)|"  # "asked me to write down which lane ..."
                    # "I'd like to confirm there are no cars in it", "just want to be sure there isn't one": verifying

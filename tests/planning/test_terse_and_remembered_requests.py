@@ -373,7 +373,7 @@ def test_what_is_in_an_area_is_what_stands_on_it(session):
 
 
 @pytest.mark.parametrize("prompt", ["coordinates of the hydrant nearest the fountain", "req location of the bench, over",
-                                    "need the whereabouts of the suv"])
+                                    "need the whereabouts of the suv", "I need the ID of the nearest bin"])
 def test_where_a_thing_is_asked_bare_is_a_question_that_changes_nothing(session, campus, prompt):
     assert asks(prompt.lower())
     report = session.submit(prompt)
@@ -391,3 +391,50 @@ def test_a_rider_sent_to_a_place_goes_there_by_path_not_along_any_lane(session):
     assert library is not None
     end_x, end_y = behaviour.waypoints[-1]
     assert abs(end_x - library.position[0]) + abs(end_y - library.position[1]) < 12.0
+
+
+@pytest.mark.parametrize(("prompt", "call"), [
+    ("a bit dimmer, please", ToolCall(tool="add_asset", args={"category": "pedestrian", "location": {"relation": "at", "target": "fountain"}})),
+    ("ease the test car's pace off", ToolCall(tool="add_asset", args={"category": "bus"})),
+    ("Kindly tidy up over there.", ToolCall(tool="add_asset", args={"category": "street_light"})),
+])
+def test_a_plan_that_adds_a_kind_the_words_never_name_is_not_applied(context, prompt, call):
+    verdict = review(prompt, Plan(calls=[call], planner="llm"), context)
+    assert verdict.action != "apply"
+    assert any("which your words do not name" in p for p in verdict.problems)
+
+
+@pytest.mark.parametrize("prompt", ["a couple more of those, please", "make the quad feel lived-in and busier",
+                                    "add some cones", "bring in a bit of foot traffic"])
+def test_words_asking_for_more_or_naming_the_kind_let_a_plan_add(context, prompt):
+    call = ToolCall(tool="add_asset", args={"category": "traffic_cone" if "cone" in prompt else "pedestrian", "count": 2})
+    problems = review(prompt, Plan(calls=[call], planner="rules"), context).problems
+    assert not any("which your words do not name" in p for p in problems)
+
+
+@pytest.mark.parametrize(("prompt", "call", "problem"), [
+    ("get rid of the spare vehicles", ToolCall(tool="set_behaviour", args={"asset": "suv_1", "behaviour": {"kind": "drive_lane"}}),
+     "removes nothing"),
+    ("budge the hydrant over slightly", ToolCall(tool="place_asset", args={"asset": "fire_hydrant_1",
+                                                                          "location": {"relation": "at", "target": "north crosswalk"}}),
+     "small move"),
+    ("have the ego ease off the throttle", ToolCall(tool="set_weather", args={"kind": "fog"}), "do not mention"),
+    ("the quad ought to be free of litter bins", ToolCall(tool="add_asset", args={"category": "trash_bin"}), "take something away"),
+    ("that bench belongs beside the hydrant", ToolCall(tool="place_asset", args={"asset": "bench_1",
+                                                                                "location": {"relation": "at", "target": "east gate"}}),
+     "near the fire hydrant"),
+])
+def test_a_plan_doing_something_else_than_the_words_is_not_applied(context, prompt, call, problem):
+    verdict = review(prompt, Plan(calls=[call], planner="llm"), context)
+    assert verdict.action != "apply"
+    assert any(problem in p for p in verdict.problems), verdict.problems
+
+
+@pytest.mark.parametrize(("prompt", "call"), [
+    ("shift the hydrant a little to the east", ToolCall(tool="move_asset", args={"asset": "fire_hydrant_1", "east": 1.0})),
+    ("a murky, foggy look please", ToolCall(tool="set_weather", args={"kind": "fog"})),
+    ("switch the headlamps on", ToolCall(tool="set_lighting", args={"vehicle_lights": "on"})),
+])
+def test_a_plan_doing_what_the_words_say_passes_those_checks(context, prompt, call):
+    problems = review(prompt, Plan(calls=[call], planner="rules"), context).problems
+    assert not any(p in " ".join(problems) for p in ("removes nothing", "small move", "do not mention")), problems
