@@ -354,7 +354,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
             for c in definite_but_added(request.masked, scope, scene)]
     if not request.question:
         out += environment_left_out(request.low, effect.calls)
-    out += environment_unasked(request.low, effect.calls)
+    out += environment_unasked(request.low, request.masked, effect.calls)
     # a number, a place, a lane, a state, "fewer" or a side limits how many go
     limited = bool(request.numbers or request.place or request.lane or request.state or FEWER_WORDS.search(request.low)
                    or md.outer_direction(request.low) or request.excepted  # "the westernmost lamp", "not the ego"

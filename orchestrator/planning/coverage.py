@@ -365,7 +365,10 @@ def away_from_thing(masked: str, scope: Scope, scene: Scene) -> list[str]:
     the hydrant") that the plan puts or leaves far from every thing of that kind."""
     out = []
     removed = {a.id for a in scope.removed}
-    placed = list({a.id: a for a in [*scope.added, *scope.touched] if a.id not in removed}.values())
+    beside = [m for m in named_in(masked) if _BESIDE.search(m.before)]
+    # with one thing to be by, whatever the plan puts or moves; with more, each clause's own (new) things
+    placed = list({a.id: a for a in [*scope.added, *scope.touched] if a.id not in removed}.values()) \
+        if len(beside) == 1 else list(scope.added)
     for m in named_in(masked):
         anchors = [a for a in [*scene.all_assets(), *scope.added] if a.category == m.category]
         if not _BESIDE.search(m.before) or not anchors:
@@ -423,15 +426,18 @@ _ENVIRONMENT_SAID = re.compile(r"\b(?:weather|sky|skies|sun\w*|cloud\w*|rain\w*|
                                r"|wind\w*|drizzl\w*|pour\w*|ic[ey]|frost\w*|wint\w*|summer\w*|autumn\w*|spring|season\w*|dreich"
                                r"|time of day|the time|clock|hours?|o'?clock|am|pm|daytime|daylight|daybreak|night\w*|morning|afternoon|evening|noon|midday|midnight|dusk"
                                r"|dawn|sunset|sunrise|dark\w*|\w*light\w*|lit|\w*lamps?|bright\w*|dim\w*|dull|gloom\w*|grey|gray|exposure"
-                               r"|mood\w*|atmospher\w*|spooky|eerie|scene|look|feel\w*|vibe|arvo|late|early|golden|blue hour|visib\w*)\b"
+                               r"|mood\w*|atmospher\w*|spooky|eerie|scene|look|feel\w*|vibe|arvo|late|early|golden|blue hour|visib\w*"
+                               r"|wiper\w*|umbrella\w*|puddle\w*|slippery|glare|shadow\w*|lunch\w*|breakfast|dinner|commute|rush hour)\b"
                                r"|\d{1,2}[:.]\d\d")
 
 
-def environment_unasked(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
-    """Weather, time or lights a plan changes when the words say nothing of any of them
-    ("slow the test car down a bit" done by making it cloudy)."""
+def environment_unasked(low: str, masked: str, calls: tuple[ToolCall, ...]) -> list[str]:
+    """Weather, time or lights a plan changes when the words are about a thing and say nothing
+    of any of them ("slow the test car down a bit" done by making it cloudy); words about no thing
+    may mean the day ("I want to test the wipers", "at lunchtime")."""
     changed = [c.tool for c in calls if c.tool in ("set_weather", "set_time_of_day", "set_lighting")]
-    if not changed or _ENVIRONMENT_SAID.search(low):
+    about_a_thing = bool(named_in(masked)) or re.search(r"\bego\b|\b[a-z]+_\d+\b", masked) is not None
+    if not changed or not about_a_thing or _ENVIRONMENT_SAID.search(low):
         return []
     what = {"set_weather": "the weather", "set_time_of_day": "the time", "set_lighting": "the lights"}
     return [f"the plan changes {what[changed[0]]}, which your words do not mention"]
@@ -570,7 +576,9 @@ def unpointed(masked: str, scope: Scope, scene: Scene) -> list[AssetInstance]:
 # Words that ask for more of what is there, or for more going on, without naming a kind ("two
 # more", "same again", "populate the quad", "liven it up"): a plan may add what they ask for.
 _MORE_OF = re.compile(r"\b(?:more|another|again|same|extra|copy|copies|duplicate|populate\w*|fill\w*|crowd\w*|busy|busier"
-                      r"|livelier|liven|lively|life|activity|traffic|furnish\w*|dress\w*|decorat\w*|something|anything)\b")
+                      r"|livelier|liven|lively|life|activity|traffic|furnish\w*|dress\w*|decorat\w*|something|anything"
+                      # closing or marking off a way puts things on it: "close Main Street at the gate"
+                      r"|ditto|likewise|repeat\w*|as before|clos\w*|shut\w*|block\w*|barricad\w*|cordon\w*|fence\w*|seal\w*|mark\w*|divert\w*|narrow\w*)\b")
 
 
 def unnamed_added(masked: str, scope: Scope) -> list[AssetInstance]:

@@ -30,7 +30,7 @@ BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}
                         r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here)\b)|out of scope|clear (away|out|the|it|them)\b|no longer|don'?t want|do not want"
-    r"|not (want|have|need|keep)|no more|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
+    r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
@@ -286,6 +286,8 @@ _SWAPPED_KINDS = (
 _UNPLACED = frozenset({"the", "a", "an", "one", "ones", "just", "only", "it", "them", "that", "this", "those", "to", "of"})
 # Openers of a correction that is a request of its own besides commands() ("half - no, leave just two").
 _RESTART = re.compile(r"^(?:just\s+)?(?:leave|keep|have|let|give|stop|start)\b")
+# Words after a correction mark that correct nothing ("..., I mean, sorry.").
+_FILLERS = frozenset({"sorry", "sory", "soz", "oops", "i mean", "thanks", "please", "pls"})
 # Corrections taken back in turn ("circles, no, figure eight - no, just circles") are read this many deep.
 _SLIPS = 3
 
@@ -303,24 +305,34 @@ def without_slip(text: str) -> str:
 
 
 def _last_slip(text: str) -> str:
-    said = next((m for m in reversed(list(_TAKEN_BACK.finditer(text))) if text[: m.start()].strip()), None)
-    if said is None:
-        return text
-    before, after = text[: said.start()], text[said.end() :]
-    stop = re.search(r"\s+(?:-|--|\u2013|\u2014)\s+|,\s*|\.\s+|\u2014|\u2013", after)
-    fix, rest = (after[: stop.start()], after[stop.end() :]) if stop else (after, "")
-    fix = fix.strip().rstrip(".!")
-    if re.fullmatch(r"(?:[\s.!]*" + re.escape(fix) + r")*[\s.!]*", rest, re.IGNORECASE):
-        rest = ""  # "on. On.": the correction said again
-    cut, skip = _slipped(before, fix, broken=said.group(0).strip()[:1] in ",;-.\u2013\u2014")
-    if cut < 0:
-        return text
-    return " ".join(p for p in (before[:cut].rstrip(), fix[skip:], rest.strip()) if p)
+    for said in reversed(list(_TAKEN_BACK.finditer(text))):
+        before, after = text[: said.start()], text[said.end() :]
+        stop = re.search(r"\s+(?:-|--|\u2013|\u2014)\s+|,\s*|\.\s+|\u2014|\u2013", after)
+        fix, rest = (after[: stop.start()], after[stop.end() :]) if stop else (after, "")
+        fix = fix.strip().rstrip(".!")
+        if not before.strip() or not fix or fix.lower() in _FILLERS:
+            continue  # "in front of the ego car, I mean, sorry.": the correction came first
+        if rest.strip(" .!").lower().startswith(fix.lower()):
+            rest = ""  # "on. On.", "four. Four cones.": the correction said again
+        cut, skip, aligned = _slipped(before, fix, broken=said.group(0).strip()[:1] in ",;-.\u2013\u2014")
+        if cut < 0:
+            return text
+        word = re.match(r"[\w.]+", before[cut:])
+        kept = ""
+        if " " not in fix and word and any(re.fullmatch(kind, fix.lower()) for kind in _SWAPPED_KINDS):
+            kept = before[cut + word.end() :]  # "three cones by the sign - sorry, four": that word swapped, the rest kept
+        elif aligned:  # "a stop sigh near the crossing? Sorry, stop sign": as many words replaced as the correction has
+            replaced = re.match(r"\s*(?:\S+\s*){%d}" % len(fix[skip:].split()), before[cut:])
+            kept = before[cut + replaced.end() :] if replaced else ""
+            kept = "" if _TAKEN_BACK.search(before[cut:]) else kept  # what follows was itself taken back
+            fix = fix[skip:]
+        return " ".join(p for p in (before[:cut].rstrip(), fix, kept.strip(), rest.strip()) if p)
+    return text
 
 
-def _slipped(before: str, fix: str, broken: bool) -> tuple[int, int]:
-    """Where in `before` the words `fix` replaces begin, and where in `fix` the replacement does;
-    (-1, 0) when it replaces nothing said. A thing said bare is replaced only where the speaker
+def _slipped(before: str, fix: str, broken: bool) -> tuple[int, int, bool]:
+    """Where in `before` the words `fix` replaces begin, where in `fix` the replacement does, and
+    whether the two were aligned on a word both say; (-1, 0, False) when it replaces nothing said. A thing said bare is replaced only where the speaker
     `broken` off with a mark ("add cones, no, barriers", never "I'm sorry to ask")."""
     head = re.sub(r"^(?:the|a|an)\s+", "", fix, flags=re.IGNORECASE).split(" ", 1)[0].lower()
     for kind in _SWAPPED_KINDS:  # a word of the same kind: the last one said
@@ -328,23 +340,24 @@ def _slipped(before: str, fix: str, broken: bool) -> tuple[int, int]:
         if re.fullmatch(kind, head) and slipped:
             cut = slipped[-1].start()
             more = re.search(r"\banother\s+$", before[:cut], re.IGNORECASE)  # "another one - no, two more"
-            return (more.start() if more and re.search(r"\bmore\b", fix, re.IGNORECASE) else cut), 0
+            return (more.start() if more and re.search(r"\bmore\b", fix, re.IGNORECASE) else cut), 0, False
     low = before.lower()
     word = next((w for w in re.finditer(r"[a-z]+", fix.lower()) if w.group(0) not in _UNPLACED), None)
     found = [m.start() for m in re.finditer(rf"\b{word.group(0)}\b", low)] if word else []
     if word and found:  # the correction's first word said before: from where it was said
-        return found[-1], word.start()
+        return found[-1], word.start(), True
     last = re.search(r"\b([a-z]+)\W*$", low)
     if last and any(re.fullmatch(kind, last.group(1)) for kind in _SWAPPED_KINDS):
-        return last.start(1), 0  # "in blue - sorry, tartan": the word just said
+        return last.start(1), 0, False  # "in blue - sorry, tartan": the word just said
     if commands(fix.lower()) or _RESTART.match(fix.lower()):  # a request of its own: it replaces the last clause
         bounds = [m.end() for m in re.finditer(r"[.;!?,\u2014\u2013]\s*", before)]
-        return (bounds[-1] if bounds else 0), 0
+        return (bounds[-1] if bounds else 0), 0, False
     thing = list(re.finditer(r"\b(?:(?:the|a|an)\s+[\w-]+(?:\s+[\w-]+)?|[a-z]+\s+\d+)(?:\s+(?:from|to|and|with|by))?\s*$",
                              before, re.IGNORECASE))  # "the bench", "bench 1 from"
     if thing:
-        return thing[-1].start(), 0
-    return (last.start(1), 0) if last and broken else (-1, 0)
+        return thing[-1].start(), 0, False
+    several = len(re.findall(r"[a-z]+", low)) > 1  # "add cones, no, barriers"; never "actually, make that five"
+    return (last.start(1), 0, False) if last and broken and several else (-1, 0, False)
 
 
 def without_reason_first(text: str) -> str:

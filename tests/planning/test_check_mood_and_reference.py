@@ -20,7 +20,7 @@ from misreading import Fixed, add, call  # this folder is on sys.path (no __init
 def refused_unchanged(campus, registry, planner, prompt, setup=None):
     session = Session(campus, setup or planner, registry)
     if setup is not None:
-        assert session.submit("set the stage").ok
+        assert session.submit("set the stage with a few things").ok  # "things": points at what is added without naming it
         session.planner = planner
     before = session.scene
     report = session.submit(prompt)

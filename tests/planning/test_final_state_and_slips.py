@@ -62,6 +62,10 @@ def test_some_of_what_was_just_made_are_counted(session, campus):
     ("fewer bins. a third - no, keep only one", "fewer bins. keep only one"),
     ("put bins, no, bollards by the gate", "put bollards by the gate"),
     ("rings, no, a line - no, rings", "rings"),
+    ("put two bins by the bench - sorry, three. Three bins.", "put three bins by the bench"),
+    ("paint the blue car red, no, green", "paint the blue car green"),
+    ("any parked suv by the quad? sorry, parked bus, typo", "any parked bus by the quad? typo"),
+    ("park it by the fountain. By the bench I mean, sorry.", "park it by the fountain. By the bench I mean, sorry."),
     ("There are no cars. Add one.", "There are no cars. Add one."),  # "no" is not broken off
     ("Is there a bench? No? Then add one.", "Is there a bench? No? Then add one."),
 ])

@@ -438,3 +438,12 @@ def test_a_plan_doing_something_else_than_the_words_is_not_applied(context, prom
 def test_a_plan_doing_what_the_words_say_passes_those_checks(context, prompt, call):
     problems = review(prompt, Plan(calls=[call], planner="rules"), context).problems
     assert not any(p in " ".join(problems) for p in ("removes nothing", "small move", "do not mention")), problems
+
+
+def test_an_amount_bounded_with_no_more_than_is_never_a_removal(session, campus):
+    report = session.submit("nudge the bin no more and no less than two metres east")
+    assert report.ok, report.error
+    before, after = campus.asset("trash_bin_1"), session.scene.asset("trash_bin_1")
+    assert after is not None and after.pose.x == pytest.approx(before.pose.x + 2.0, abs=0.3)
+    assert session.submit("put no more than three bollards by the library").ok
+    assert 1 <= session.scene.count("bollard") - campus.count("bollard") <= 3
