@@ -287,7 +287,7 @@ _UNPLACED = frozenset({"the", "a", "an", "one", "ones", "just", "only", "it", "t
 # Openers of a correction that is a request of its own besides commands() ("half - no, leave just two").
 _RESTART = re.compile(r"^(?:just\s+)?(?:leave|keep|have|let|give|stop|start)\b")
 # Words after a correction mark that correct nothing ("..., I mean, sorry.").
-_FILLERS = frozenset({"sorry", "sory", "soz", "oops", "i mean", "thanks", "please", "pls"})
+_NOT_CORRECTIONS = frozenset({"sorry", "sory", "soz", "oops", "i mean", "thanks", "please", "pls"})
 # Corrections taken back in turn ("circles, no, figure eight - no, just circles") are read this many deep.
 _SLIPS = 3
 
@@ -310,7 +310,7 @@ def _last_slip(text: str) -> str:
         stop = re.search(r"\s+(?:-|--|\u2013|\u2014)\s+|,\s*|\.\s+|\u2014|\u2013", after)
         fix, rest = (after[: stop.start()], after[stop.end() :]) if stop else (after, "")
         fix = fix.strip().rstrip(".!")
-        if not before.strip() or not fix or fix.lower() in _FILLERS:
+        if not before.strip() or not fix or fix.lower() in _NOT_CORRECTIONS:
             continue  # "in front of the ego car, I mean, sorry.": the correction came first
         if rest.strip(" .!").lower().startswith(fix.lower()):
             rest = ""  # "on. On.", "four. Four cones.": the correction said again
@@ -322,7 +322,7 @@ def _last_slip(text: str) -> str:
         if " " not in fix and word and any(re.fullmatch(kind, fix.lower()) for kind in _SWAPPED_KINDS):
             kept = before[cut + word.end() :]  # "three cones by the sign - sorry, four": that word swapped, the rest kept
         elif aligned:  # "a stop sigh near the crossing? Sorry, stop sign": as many words replaced as the correction has
-            replaced = re.match(r"\s*(?:\S+\s*){%d}" % len(fix[skip:].split()), before[cut:])
+            replaced = re.match(rf"\s*(?:\S+\s*){{{len(fix[skip:].split())}}}", before[cut:])
             kept = before[cut + replaced.end() :] if replaced else ""
             kept = "" if _TAKEN_BACK.search(before[cut:]) else kept  # what follows was itself taken back
             fix = fix[skip:]
