@@ -523,6 +523,7 @@ _REMOVE_VERB = re.compile(r"\b(?:remove|delete|get rid of|eliminate|erase|discar
 
 
 def _far_moved(asset: AssetInstance, effect: Effect) -> float:
+    """How far the plan moves `asset` from where it stood, in metres."""
     before = effect.outcome.before.asset(asset.id) if effect.outcome else None
     return math.dist((asset.pose.x, asset.pose.y), (before.pose.x, before.pose.y)) if before is not None else 0.0
 

@@ -305,6 +305,7 @@ def without_slip(text: str) -> str:
 
 
 def _last_slip(text: str) -> str:
+    """`text` with its last correction that corrects something applied; as it was when none does."""
     for said in reversed(list(_TAKEN_BACK.finditer(text))):
         before, after = text[: said.start()], text[said.end() :]
         stop = re.search(r"\s+(?:-|--|\u2013|\u2014)\s+|,\s*|\.\s+|\u2014|\u2013", after)
@@ -332,8 +333,9 @@ def _last_slip(text: str) -> str:
 
 def _slipped(before: str, fix: str, broken: bool) -> tuple[int, int, bool]:
     """Where in `before` the words `fix` replaces begin, where in `fix` the replacement does, and
-    whether the two were aligned on a word both say; (-1, 0, False) when it replaces nothing said. A thing said bare is replaced only where the speaker
-    `broken` off with a mark ("add cones, no, barriers", never "I'm sorry to ask")."""
+    whether the two were aligned on a word both say; (-1, 0, False) when it replaces nothing said.
+    A thing said bare is replaced only where the speaker `broken` off with a mark ("add cones, no,
+    barriers", never "I'm sorry to ask")."""
     head = re.sub(r"^(?:the|a|an)\s+", "", fix, flags=re.IGNORECASE).split(" ", 1)[0].lower()
     for kind in _SWAPPED_KINDS:  # a word of the same kind: the last one said
         slipped = list(re.finditer(rf"\b(?:{kind})\b", before, re.IGNORECASE))
