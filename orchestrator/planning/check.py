@@ -236,9 +236,10 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked to take something away, but the plan only moves " + _names(_moved(effect)))
     elif request.polarity == "remove" and not effect.removed and not added and _REMOVE_VERB.search(request.low) and effect.changed:
         out.append("you asked to remove something, but the plan removes nothing and changes " + _names(effect.changed))
-    nudged = [a for a in _moved(effect) if _far_moved(a, effect) > SMALL_MOVE_M]
-    if nudged and _SMALL_MOVE.search(request.low) and request.place is None and not request.numbers:
-        out.append(f"you asked for a small move, but the plan moves {_names(nudged)} {_far_moved(nudged[0], effect):.0f} m")
+    if _SMALL_MOVE.search(request.low) and request.place is None and not request.numbers:
+        shifted = {a.id: metres for a in _moved(effect) if (metres := _far_moved(a, effect)) > SMALL_MOVE_M}
+        if shifted:
+            out.append(f"you asked for a small move, but the plan moves {', '.join(shifted)} {max(shifted.values()):.0f} m")
     if request.polarity == "remove" and not effect.removed and any(
             c.tool == "set_lighting" and c.args.get("street_lights") == "on" for c in effect.calls):
         out.append("you asked for less, but the plan switches the street lights on")  # "fewer lights over there"
@@ -515,8 +516,7 @@ def _already_there(effect: Effect, scene: Scene) -> list[str]:
 
 
 # Said of a move, words for a small one ("nudge the bench a little"); a move longer than this is no small one.
-_SMALL_MOVE = re.compile(r"\b(?:nudge|budge|scoot|a (?:little|bit|touch|tad|smidge|fraction)|slightly|an inch|a few (?:inches|centimetres|cm)"
-                         r"|little bit|wee bit|tiny bit)\b")
+_SMALL_MOVE = re.compile(r"\b(?:" + "|".join(re.escape(w) for w in md.SMALL_MOVE) + r")\b")
 SMALL_MOVE_M = 5.0
 # Verbs that only ever take a thing out of the scene ("remove the extra actors", never a change of what they do).
 _REMOVE_VERB = re.compile(r"\b(?:remove|delete|get rid of|eliminate|erase|discard|despawn)\b")

@@ -26,7 +26,7 @@ from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
 from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, road_said, side_of
 from drivetwin.orchestrator.planning.rules.reading import used_as_verb
-from drivetwin.orchestrator.planning.rules.spelling import edits, english_words, is_known, vocabulary
+from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID, edits, english_words, is_known, vocabulary
 from drivetwin.tools.appearance import TIME_PRESETS
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import compass_of
@@ -436,7 +436,7 @@ def environment_unasked(low: str, masked: str, calls: tuple[ToolCall, ...]) -> l
     of any of them ("slow the test car down a bit" done by making it cloudy); words about no thing
     may mean the day ("I want to test the wipers", "at lunchtime")."""
     changed = [c.tool for c in calls if c.tool in ("set_weather", "set_time_of_day", "set_lighting")]
-    about_a_thing = bool(named_in(masked)) or re.search(r"\bego\b|\b[a-z]+_\d+\b", masked) is not None
+    about_a_thing = bool(named_in(masked)) or re.search(r"\bego\b", masked) is not None or ASSET_ID.search(masked) is not None
     if not changed or not about_a_thing or _ENVIRONMENT_SAID.search(low):
         return []
     what = {"set_weather": "the weather", "set_time_of_day": "the time", "set_lighting": "the lights"}
@@ -584,9 +584,9 @@ _MORE_OF = re.compile(r"\b(?:more|another|again|same|extra|copy|copies|duplicate
 def unnamed_added(masked: str, scope: Scope) -> list[AssetInstance]:
     """New things a plan adds while the words name no kind, point at nothing and give no word for
     theirs ("darker, please" done by adding a pedestrian, "slow the test car down" by adding a bus)."""
-    if not scope.added or named_in(masked) or _POINTS.search(masked) or _MORE_OF.search(ph.normalise(masked)):
-        return []
     low = ph.normalise(masked)
+    if not scope.added or named_in(masked) or _POINTS.search(masked) or _MORE_OF.search(low):
+        return []
     return [a for a in scope.added if not any(re.search(rf"\b{re.escape(w)}\b", low) for w in lx.CONCEPTS.get(a.category, ()))]
 
 

@@ -701,13 +701,9 @@ def _turn_for(r: Reading, scene: Scene, thing: AssetInstance, deg: re.Match[str]
     if r.has(("around", "round", "wrong way", "other way", "opposite way", "opposite direction", "flip", "about")):  # "spin the bench round"
         return 180.0
     notes.guess("how far to turn")
-    if r.has(_SMALL):  # "turn the suv a little to the left": a small turn, that way
+    if r.has(md.SMALL):  # "turn the suv a little to the left": a small turn, that way
         return -SMALL_TURN_DEG if r.has(("right", "clockwise")) and not r.has(("anticlockwise", "counterclockwise")) else SMALL_TURN_DEG
     return DEFAULT_SPIN_DEG
-
-
-# Words for a small step ("a bit", "a tiny bit", "slightly").
-_SMALL = ("a bit", "slightly", "a little", "tiny bit", "little bit", "wee bit")
 
 
 def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
@@ -731,7 +727,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if r.has(lx.REVERSE_WORDS):
         if metres is None:
             notes.guess("how far to reverse")
-        step = metres or (SMALL_STEP_M if r.has(_SMALL) else DEFAULT_STEP_M)
+        step = metres or (SMALL_STEP_M if r.has(md.SMALL) else DEFAULT_STEP_M)
         return [ToolCall(tool="move_asset", args={"asset": asset, "forward": -abs(step)})]
     if r.has(lx.STOP_WORDS) and motion in ("vehicle", "walker") and not r.has(("stop sign",)):
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
@@ -782,7 +778,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
     scoped = (bool(r.mentions) and _scoped_by_place(r, r.mentions[0])) or (not r.mentions and bool(_ANY_NEAREST.search(r.low)))
     anchored = (r.landmark and not scoped) or (r.ego and "ego" not in ids) or any(i not in ids for i in r.ids)
-    small = r.has((*_SMALL, "a touch", "nudge", "inch", "budge", "scoot"))
+    small = r.has(md.SMALL_MOVE)
     shift = metres if metres is not None else (SMALL_STEP_M if small else None)
     if shift is None and _SIDE_MOVE.search(r.low):
         notes.guess("how far to move")  # "the SUV should pull forward a few metres"
@@ -822,7 +818,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         if (said := _DESTINATION.search(r.low)) is not None:  # a place it goes to, said but not found: never a guess
             raise ph_error(f"I could not tell where {said.group(0)!r} is; name a place of this world or say how far which way")
         notes.guess("where to move it")
-        step = metres or (SMALL_STEP_M if r.has(_SMALL) else DEFAULT_STEP_M)
+        step = metres or (SMALL_STEP_M if r.has(md.SMALL) else DEFAULT_STEP_M)
         every = [scene.asset(i) for i in ids]
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]

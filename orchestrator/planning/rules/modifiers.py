@@ -176,5 +176,12 @@ def partitive_count(before: str) -> int | None:
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word)
 
 
-__all__ = ["COMPASS_VECTORS", "catalog_tags", "compass_direction", "facing_direction", "groups_said", "kind_of", "layout_said",
-           "material_said", "outer_direction", "partitive_count"]
+# Words for a small step or turn ("a bit", "a tiny bit", "slightly"), and for a small move of a thing
+# ("nudge it", "budge the bin", "a tad"): the rules take a small step for them, the check holds a plan to one.
+SMALL = ("a bit", "slightly", "a little", "tiny bit", "little bit", "wee bit")
+SMALL_MOVE = (*SMALL, "a touch", "a tad", "a smidge", "a fraction", "a few inches", "a few centimetres", "nudge", "inch",
+              "budge", "scoot")
+
+
+__all__ = ["COMPASS_VECTORS", "SMALL", "SMALL_MOVE", "catalog_tags", "compass_direction", "facing_direction", "groups_said",
+           "kind_of", "layout_said", "material_said", "outer_direction", "partitive_count"]
