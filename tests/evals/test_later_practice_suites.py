@@ -30,6 +30,7 @@ from drivetwin.evals import (
     practice18_source,
     practice19_source,
     practice20_source,
+    practice21_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -85,6 +86,8 @@ BRIEFS: dict[str, Brief] = {
     # study's grad student, a poet, a self-corrector, a double-negator); search, moving and arrangement hold
     # 11 in every grade, the rest 9.
     "practice20": Brief(270, 9, 9, practice20_source, multi_turn=30, planned=15, compound=18),
+    # Nine voices: fire officer, meteorologist, gaffer, foreman, Indian English, all-caps, civil servant, gamer, Scot.
+    "practice21": Brief(270, 9, 9, practice21_source, multi_turn=30, planned=15, compound=18),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
