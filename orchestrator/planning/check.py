@@ -62,6 +62,7 @@ from drivetwin.orchestrator.planning.coverage import (
     picked_by_thing,
     place_dropped,
     place_moved,
+    possessed_added,
     unknown_places,
     unknown_things,
     unnamed_added,
@@ -96,7 +97,7 @@ from drivetwin.orchestrator.planning.rules.places import (
     says_other_place,
     side_of,
 )
-from drivetwin.orchestrator.planning.rules.reading import counted_kinds
+from drivetwin.orchestrator.planning.rules.reading import counted_kinds, find_place
 from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
@@ -373,6 +374,8 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
     if unasked := unnamed_added(request.masked, scope):
         out.append(f"the plan adds {_names(unasked)}, which your words do not name")
+    out += [f"you spoke of your {c.replace('_', ' ')}, but the plan adds one; say 'add' if you want one"
+            for c in possessed_added(request.masked, scope)]
     out += unknown_places(request.masked, effect.calls, scene)
     out += place_moved(request.low, scope, scene)
     out += unnamed_compass_places(request.low, scene)
@@ -667,7 +670,9 @@ def _not_the_extreme(request: Request, effect: Effect, scene: Scene) -> list[str
         return []
     kind = next(iter(request.categories))
     ego = scene.asset("ego")
-    centre = _centre(scene, request.place) if request.place is not None else (
+    after = find_place(scene, request.low[said.end() :])  # "... there. Put the lamp closest to the fountain there": the fountain
+    place = after[0] if after is not None else request.place
+    centre = _centre(scene, place) if place is not None else (
         (ego.pose.x, ego.pose.y) if ego is not None and re.search(r"\bego\b", request.low[said.end():]) else None)
     pool = [a for a in scene.assets if a.category == kind]
     if centre is None or acted[0].category != kind or len(pool) < 2:

@@ -18,7 +18,15 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, FORBIDDEN, HABITUAL, HOW_THINGS_GO, KEEP_SOME, asks
+from drivetwin.orchestrator.planning.intent import (
+    ADD_WORDS,
+    ASKED_ABOUT,
+    FORBIDDEN,
+    HABITUAL,
+    HOW_THINGS_GO,
+    KEEP_SOME,
+    asks,
+)
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -590,6 +598,29 @@ def unnamed_added(masked: str, scope: Scope) -> list[AssetInstance]:
     return [a for a in scope.added if not any(re.search(rf"\b{re.escape(w)}\b", low) for w in lx.CONCEPTS.get(a.category, ()))]
 
 
+# A thing of the speaker's ("my truck", "our van") spoken of, not asked for: the subject of what it
+# does or needs ("my truck can't park here", "my truck needs the room"), or after a preposition
+# ("ice on my truck roof"). "Park my truck in lot A" and "my truck, east gate" ask for one.
+_POSSESSED = re.compile(r"(?:^|[,.;:!?]|\b(?:so|because|since|as|and|but|cos|cause|while|when|if))\s*(?:my|our|his|her|their|your)\s+$")
+_POSSESSED_BY = re.compile(r"\b(?:on|in|into|onto|for|like|of|with|to|from|by|near|behind|beside|past|under|than)\s+(?:my|our|his|her|their|your)\s+$")
+_DOES = re.compile(r"\s*(?:'s\s+\w+ing|(?:\w+\s+)?(?:can|can't|cannot|could|couldn't|needs?|is|isn't|are|aren't|was|wasn't|has|had|have"
+                   r"|will|won't|would|wouldn't|should|must|does|doesn't|did|didn't|keeps|gets|got|wants?|takes?))\b")
+
+
+def possessed_added(masked: str, scope: Scope) -> list[str]:
+    """Kinds a plan adds that the words only speak of as someone's ("my truck can't park with a
+    hydrant there, so that hydrant has to go" done by adding a truck), with no word of adding."""
+    if not scope.added or ADD_WORDS.search(masked):
+        return []
+    out = []
+    for category in dict.fromkeys(a.category for a in scope.added):
+        said = [n for n in named_in(masked) if n.category == category]
+        if said and all(_POSSESSED_BY.search(n.before) or (_POSSESSED.search(n.before) and _DOES.match(n.after))
+                        for n in said):
+            out.append(category)
+    return out
+
+
 def _category_of(asset_id: str, scene: Scene) -> str | None:
     asset = scene.asset(asset_id)
     return asset.category if asset is not None else None
@@ -621,8 +652,8 @@ _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswa
 
 
 # Where a request names the thing it wants added: the object of a verb of adding ("add a giraffe",
-# "needs a double rainbow"), up to four words before a word that ends a noun phrase.
-# (A question about such a thing changes nothing, so it is left to the planners' own refusals.)
+# "needs a double rainbow"), up to four words before a word that ends a noun phrase. A question
+# asks after one with ASKED_ABOUT ("how far's the nearest servo", "any roos about?").
 # A setting given a value by name: "set the weather to hail", "change the sky to purple".
 _SET_TO = re.compile(r"\b(?:set|change|switch)\b[^.,;:!?]*?\bto\s+(?:a\s+|an\s+|some\s+)?([a-z]+)\s*(?=$|[.,;:!?])")
 _THING_WANTED = re.compile(
@@ -646,6 +677,9 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     out = []
     for m in _SET_TO.finditer(masked):  # "set the precipitation type to hail": a setting this world has no word for
         if len(m.group(1)) >= 3 and not is_known(m.group(1), vocab) and m.group(1) not in said and m.group(1) not in lx.GRAMMAR:
+            out.append(f"there is no {m.group(1)!r} in this world")
+    for m in ASKED_ABOUT.finditer(masked):  # answering about another thing is not an answer
+        if not is_known(m.group(1), vocab) and m.group(1) not in said and m.group(1) not in lx.GRAMMAR:
             out.append(f"there is no {m.group(1)!r} in this world")
     for m in _THING_WANTED.finditer(masked):
         phrase = m.group(1).split()
@@ -863,6 +897,7 @@ def place_moved(low: str, scope: Scope, scene: Scene) -> list[str]:
 # predicate or a destination right after that ("..., by the library, is diseased", "... to the
 # fountain"): where it stands.
 _WHERE_IT_STANDS = r"\s+(?:right |just )?(?:behind|next to|beside|by|near|in front of|at|opposite|across from|outside)\s+(?:the\s+)?"
+_PICKED_NEAREST = r"\s+(?:(?:one|that|which is|that is)\s+)?(?:nearest|closest)(?:\s+to)?\s+(?:the\s+)?"
 _PREDICATE = re.compile(r"\s*(?:,[^,.;]*,\s*)?(?:(?:is|are|was|were|has|have|had|needs?|must|should|keeps?|looks?|seems?|throws?"
                         r"|blocks?|casts?|gets?|hides?|spoils?|ruins?|drips?)\b"
                         r"|(?:over\s+)?(?:to|into|onto|towards?)\s+(?:the\s+)?[a-z])")  # or where it should go, said after it
@@ -870,7 +905,8 @@ _PREDICATE = re.compile(r"\s*(?:,[^,.;]*,\s*)?(?:(?:is|are|was|were|has|have|had
 
 def described_not_destination(low: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
     """Things put at the place the words only pick them out by ("the tree behind the bus stop is
-    diseased and has to come down"): the plan moves them to where they are said to stand."""
+    diseased and has to come down", "the lamp nearest the bus stop"): the plan moves them to where
+    they are said to stand."""
     out = []
     indexed = ph.normalise(low)
     mentions = ph.find_categories(low)
@@ -886,8 +922,12 @@ def described_not_destination(low: str, calls: tuple[ToolCall, ...], scene: Scen
         names = ([n for name in mark.names() for n in (ph.normalise(name).strip(), ph.normalise(name).split()[0])] if mark
                  else [other.category.replace("_", " ")] if other else [])
         for m in (m for m in mentions if m.category == thing.category):
-            said = re.match(_WHERE_IT_STANDS + "(?:" + "|".join(re.escape(n) for n in names if n) + r")\b", indexed[m.end :])
-            if names and said and _PREDICATE.match(indexed[m.end + said.end() :]) and thing.id not in gone:
+            named = "(?:" + "|".join(re.escape(n) for n in names if n and n not in ("the", "a", "an")) + r")\b"
+            said = re.match(_WHERE_IT_STANDS + named, indexed[m.end :])
+            picked = re.match(_PICKED_NEAREST + named, indexed[m.end :])  # "the lamp nearest the bus stop": which one, whatever follows
+            if names and (picked or (said and _PREDICATE.match(indexed[m.end + said.end() :]))) and thing.id not in gone:
+                said = picked or said
+                assert said is not None
                 out.append(f"you said where the {thing.category.replace('_', ' ')} stands"
                            f" ({indexed[m.start : m.end + said.end()].strip()!r}), not where it should go")
     return out

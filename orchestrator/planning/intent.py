@@ -29,7 +29,7 @@ BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}
                         # "empty roads and the lamps buzzing": places described, never "empty the roads"
                         r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here)\b)|out of scope|clear (away|out|the|it|them)\b|no longer|don'?t want|do not want"
+    r"\b(remove|delete|get rid of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here)\b)|out of scope|clear (away|out|the|it|them)\b|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
@@ -41,7 +41,7 @@ REMOVE_WORDS = re.compile(
     r"|clear (?:\w+ ){1,4}(?:out of|off|from)"
     r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much"
     # "the seat and the bin should both go": gone, with no place or way to go to after it
-    r"|(?:should|can|could|must|may|has to|have to|needs? to) (?:all |both |just )?go(?: away)?"
+    r"|(?:should|can|could|must|may|has to|have to|needs? to|(?:has |have |'s |'ve )?got to|gotta) (?:all |both |just )?go(?: away)?"
     r"(?=\s*(?:[,.;!?]|$|(?:i guess|i think|please|now|too|as well)\b)))\b"
     r"|^(?:(?:actually|ok|okay|so|hmm+|oh|wait|um+|and|then|right|sorry)\W+)*no (?=[a-z])"  # "no hydrant", "actually, no people": it goes
     r"|\b(?:they|it|those|these|that|this|the \w+)(?: \w+)? (?:were|was)(?:n't| not) (?:there|here)\b"  # "I'd rather they weren't there"
@@ -51,6 +51,7 @@ REMOVE_WORDS = re.compile(
     r"|cleared (?:away|out)|got rid of)\b"
     # "the bench vanishes", "make them disappear", "poof": gone, as a story tells it
     r"|\b(?:vanish|disappear)(?:es|s|ed|ing)?\b|\bpoof\b"
+    r"|^\s*(?:(?:please|just|now|then|ok|so)\W+)*fell (?=(?:the|that|this|those|these|all|every|both|a|one|two|three)\b)"  # "fell the tree": cut down
     r"|\b(?:want|need|like|prefer|there (?:should|must|can|may|is to|are to) be|there'?s to be|(?:should|must) (?:be )?have) (?:no|zero)\b"
     r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to|uses?|needs?|wants?)"  # "nobody should be parked there"
     # "there's no need for the bench", "I don't think we need the sign anymore": not needed, so gone
@@ -477,6 +478,12 @@ def taken_back(text: str) -> tuple[str, str]:
     return text[last.end() :], text[: last.start()]
 
 
+# The thing a question asks after: "how many X", "where is the X", "is there a X", "the nearest X",
+# "any X about?". A word this world does not know there is a thing it cannot answer about.
+ASKED_ABOUT = re.compile(r"(?:\b(?:how many|where (?:is|are|do|does|did|can|could|will|would|should)(?: the| a| an| my| our| any)?"
+                          r"|(?:is|are) there(?: any| an?| some)?|nearest|closest)|^\s*any) ([a-z]{3,})\b")
+
+
 def commands(low: str) -> bool:
     """Whether the (lower-case) clause opens with a command ("umm remove the bus", "do the same")."""
     return _IMPERATIVE.match(low.strip()) is not None
@@ -492,6 +499,7 @@ def asks(low: str) -> bool:
 
 __all__ = [
     "ADD_WORDS",
+    "ASKED_ABOUT",
     "BARE_STATE",
     "FEWER_WORDS",
     "HOW_THINGS_GO",

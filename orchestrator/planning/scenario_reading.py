@@ -189,7 +189,7 @@ _ROLE = re.compile(r"\b(" + "|".join(sorted(ROLE_WORDS, key=len, reverse=True)) 
 POSSIBLE = ("a scenario can make a vehicle brake, change speed, change lanes, cut in, turn at the junction or "
             "reverse, a pedestrian cross the road or stop in it, and a traffic light change or cycle, each at a "
             "time, at a distance or time to collision between two actors, or when an actor reaches a place")
-_LEADING = re.compile(r"^(?:and |then |so |now )?(?:please )?(?:i want |i'd like |(?:i|we) (?:should|would) like |we'd like |we need )?"
+_LEADING = re.compile(r"^(?:and |then |so |now )?(?:please )?(?:(?:i |we )?(?:want|need) |i'd like |(?:i|we) (?:should|would) like |we'd like )?"
                       r"(?:make|have|let|get|see that|ensure)?\s*")
 _TRAILING_MODAL = re.compile(r"(?:\s*\b(?:should|will|must|has to|needs to|is going to|is to|to|would|suddenly|then|just"
                              r"|also|quickly|slowly|gently|hard|abruptly))+\s*$")

@@ -161,6 +161,8 @@ _ANY_NEAREST = re.compile(r"\b(?:(?:whatever|anything|something|the (?:thing|obj
 # The one furthest from something: "the tree furthest from the library", "the lamp farthest away from the ego".
 FURTHEST = re.compile(r"\b(?:furthest|farthest|most distant)(?: away)? from\b")  # "furthest east" is a side, not this
 _FURTHEST_FROM = re.compile(r"\s*(?:that is |which is |that's )?" + FURTHEST.pattern)  # right after the thing named
+# A thing picked out by the place it is nearest, said just before the place: "the lamp nearest the bus stop".
+_PICKED_NEAREST = re.compile(r"\b(?:nearest|closest)(?: to)?\s+(?:the\s+)?$")
 # A thing picked out by what it is nearest ("the car nearest the union", "the bin closest to the ego").
 _NEAREST_TO = re.compile(r"\s*(?:that is |which is |that's )?(?:nearest|closest)(?: to)?\b")
 
@@ -183,12 +185,19 @@ def _outermost(r: Reading, scene: Scene, mention: ph.Mention, present: list[str]
     """The one of `present` furthest the way the words after its mention point ("the signal on
     the north-east corner of the crossroads", "the western one"), among those at the place named
     if any are; None when they point no way or there is no choice."""
+    ones = _outermost_ones(r, scene, present, 1)
+    return ones[0] if ones else None
+
+
+def _outermost_ones(r: Reading, scene: Scene, present: list[str], count: int) -> list[str]:
+    """The `count` of `present` furthest the way the words point ("a couple of those lamp posts
+    down the eastern end"), furthest first; none when they point no way or there is no choice."""
     way = md.outer_direction(r.masked)
-    if way is None or len(present) < 2:
-        return None
+    if way is None or len(present) <= count:
+        return []
     pool = (_at_place(scene, r.landmark, present) if r.landmark else []) or present
-    things = [a for i in pool if (a := scene.asset(i)) is not None]
-    return max(things, key=lambda a: a.pose.x * way[0] + a.pose.y * way[1]).id if things else None
+    things = sorted((a for i in pool if (a := scene.asset(i)) is not None), key=lambda a: -(a.pose.x * way[0] + a.pose.y * way[1]))
+    return [a.id for a in things[:count]]
 
 
 # Between a thing and a place, words that make the place where the thing is ("the cars in lot B"),
@@ -376,10 +385,20 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         ids = [a.id for a in scene.assets if a.category == name and side[1](a)]
         if not ids:
             raise ph_error(f"there is no {name.replace('_', ' ')} on the {side[0]} to take away")
+        point = _point_of(r, scene, memory)
+        if not mention.plural and count is None and not r.has(("all", "every", "each", "both")) and len(ids) > 1:
+            outermost = _outermost(r, scene, mention, ids)  # "the westernmost street light on the north side"
+            if outermost is not None:
+                return [ToolCall(tool="remove_assets", args={"assets": [outermost]})]
+            if point is None:  # "the street light on the north side of Main Street": one of six
+                raise ph_error(f"which {name.replace('_', ' ')}? on the {side[0]} there are {', '.join(ids)}")
+            from_here: tuple[float, float] = point
+            ids, count = sorted(ids, key=lambda i: _distance_to(scene, i, from_here)), 1  # "the tree north of lot A": the one nearest it
         return [ToolCall(tool="remove_assets", args={"assets": _some(ids, count, fewer, notes)})]
-    outermost = None if mention.plural else _outermost(r, scene, mention, [a.id for a in scene.assets if a.category == name])
-    if outermost is not None:
-        return [ToolCall(tool="remove_assets", args={"assets": [outermost]})]
+    ends = _outermost_ones(r, scene, [a.id for a in scene.assets if a.category == name], count or 1) \
+        if not mention.plural or count else []
+    if ends:  # "the western one", "a couple of those lamp posts down the eastern end"
+        return [ToolCall(tool="remove_assets", args={"assets": ends})]
     left = _kept(r)
     if left is not None:  # "keep just two": all but that many of those in scope
         in_scope = len(kept_at(scene, name, r.landmark))
@@ -723,6 +742,8 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
             found = min(pool, key=lambda a: math.dist((a.pose.x, a.pose.y), mark.position))
             asset, ids, notes.subject = found.id, [found.id], [found.id]
         r = replace(r, landmark=sent[0], landmark_at=sent[1])
+    elif picked is not None and r.landmark == picked[0] and _PICKED_NEAREST.search(r.low[: picked[1]]):
+        r = replace(r, landmark=None)  # "move the tree closest to the library 5 m east": which tree, not where to
     metres = ph.find_distance(r.text)
     if r.has(lx.REVERSE_WORDS):
         if metres is None:

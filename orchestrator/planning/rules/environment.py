@@ -119,7 +119,14 @@ def time_of_day(r: Reading) -> ToolCall | None:
     for words, preset in lx.TIME_PRESETS:
         if r.has(words):
             return ToolCall(tool="set_time_of_day", args={"time": preset})
+    if _LATE.search(r.low):  # "something wintry, and late": late in the day
+        return ToolCall(tool="set_time_of_day", args={"time": "evening"})
     return None
+
+
+# "late" said of the time alone: "make it late", "..., and late", "late, please" (not "too late", "later").
+_LATE = re.compile(r"(?:\b(?:make it|make the time|and|it's|its|it is|set it|set the time|time)\s+|^\s*)(?:really |very |quite |a bit )?late\b"
+                   r"(?=\s*(?:$|[,.;!?]|\b(?:please|pls|now|too|then)\b))")
 
 
 # Street lamps said to be broken ("street lighting failed", "the streetlights are dead"): off.

@@ -180,8 +180,8 @@ _DEFINITE = re.compile(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z-]+\s+)
 _THE_NEW = re.compile(r"\b(?:the|that|this|those|these|our|my)\s+new(?:er|est)?\b")
 
 # Closing a road by its name or kind ("close Main Street at the east gate", "shut the lane").
-_CLOSE_ROAD = re.compile(r"^\s*(?:please )?(?:close|block|shut|seal)(?: off)? (?:the )?(?:[\w-]+ ){0,3}?"
-                         r"(?:road|street|lane|avenue|drive|driveway|entrance|access road|car park|parking lot|lot [a-z0-9])\b")
+_CLOSE_ROAD = re.compile(r"^\s*(?:please )?(?:close|block|shut|seal|barricade)(?: off)? (?:the )?(?:[\w-]+ ){0,3}?"
+                         r"(?:road|street|lane|avenue|drive|driveway|entrance|access road|car park|parking lot|lot [a-z0-9]|crosswalk|crossing)\b")
 # A layout named as the means of a request ("... with a row of bollards", "using a line of cones").
 _WITH_LAYOUT = re.compile(r"\b(?:with|using|by putting|by placing) (?:a |an )?(?:[\w-]+ )?(?:row|line|ring|circle|wall|grid) of\b")
 
@@ -819,6 +819,10 @@ def _without_mentions(r: Reading) -> str:
     return out
 
 
+# What may follow the switch word of "lamps off": the end, or words that say nothing of where.
+_SWITCH_ENDS = r"(?=\s*(?:$|[,.!;?]|\b(?:please|pls|plz|now|thanks|all|again|too|and|for|so|at|when|during|while|then|tonight)\b))"
+
+
 def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     if (bare := BARE_STATE.search(r.masked)) is not None:  # "lot A looks empty": how it is, not "empty it"
         r = replace(r, masked=r.masked[: bare.start()] + " " * (bare.end() - bare.start()) + r.masked[bare.end() :])
@@ -868,9 +872,11 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         removed = remove(r, scene, memory, notes)
         if removed is not None:
             return removed
-    # "turn the lamps on", and a state wished for: "the street lights must be on", "lamps should be lit"
-    switch = re.search(r"\b(turn|switch|put|flick|make)\b.*\b(on|off)\b|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit|working)\b"
-                       r"|\b((?:street\s?)?lights?|(?:street\s?)?lamps?)\s+(on|off)\s*[.!]*\s*$", r.low)  # "street lights on."
+    # "turn the lamps on", and a state wished for: "the street lights must be on", "lamps should be lit";
+    # "put the lamps on the sidewalk" says where, and "lamps off, please" still switches
+    switch = re.search(rf"\b(turn|switch|flick)\s+(on|off)\b|\b(turn|switch|put|flick|make)\b.*\b(on|off)\b{_SWITCH_ENDS}"
+                       r"|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit|working)\b"
+                       rf"|\b((?:street\s?|vehicle\s|car\s|head)?lights?|(?:street\s?)?lamps?)\s+(on|off)\b{_SWITCH_ENDS}", r.low)
     switch = switch or LIGHTS_DOWN.search(r.low)  # "the street lamps are out": off
     if switch and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
         if lights(r) is not None:

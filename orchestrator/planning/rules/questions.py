@@ -18,6 +18,7 @@ from dataclasses import dataclass, replace
 from typing import Any, Literal
 
 from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning.intent import ASKED_ABOUT
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -109,12 +110,6 @@ class Part:
     found: tuple[str, ...] = ()
 
 
-# The thing a question asks about, right after its question words ("how many helicopters", "where
-# is the zeppelin", "are there any trams").
-_ASKED_ABOUT = re.compile(r"\b(?:how many|where (?:is|are|do|does|did|can|could|will|would|should)(?: the| a| an| my| our| any)?"
-                          r"|(?:is|are) there(?: any| an?| some)?) ([a-z]{3,})\b")
-
-
 # A question about how the world is now, not a wish ("is it raining?"; "bit of drizzle?" asks for it).
 _ASKS_HOW_IT_IS = re.compile(r"\s*(?:(?:so|ok|and|hey)\W+)*(?:what|what's|whats|how|hows|is|are|was|does|do|which|when|tell me|can you tell)\b")
 # The settings a question can ask about by their general words.
@@ -188,9 +183,11 @@ _WHERE_TO_CROSS = re.compile(r"\bwhere\s+(?:can|could|should|do|does|would|may|m
 
 def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None) -> Part | None:
     low = r.low
-    asked_about = _ASKED_ABOUT.search(r.masked)
-    if asked_about and not (r.mentions or r.ids or r.ego) and not is_known(asked_about.group(1), vocabulary(scene)):
-        # "how many helicopters are parked?": about a thing this world has no word for, so no count
+    asked_about = ASKED_ABOUT.search(r.masked)
+    if asked_about and not is_known(asked_about.group(1), vocabulary(scene)) \
+            and not any(m.start <= asked_about.start(1) < m.end for m in r.mentions):
+        # "how many helicopters are parked?", "how far's the nearest servo?", "any roos about?": about
+        # a thing this world has no word for, so no count and no nearest thing of another kind
         from drivetwin.orchestrator.planning.base import PlanningError  # rules/__init__ imports the planner
 
         raise PlanningError(f"there is no {asked_about.group(1)!r} in this world; things here are such as "

@@ -460,7 +460,7 @@ _FOR_WHOM = re.compile(r"\bfor\s+(?:the\s+|a\s+|an\s+|somewhere\s+|anywhere\s+|a
 
 
 # A thing picked out by where it stands, then sent somewhere: "move the tree by lot A over to the fountain".
-_PICKED_BY = re.compile(r"\b(?:move|shift|relocate|take|bring|carry|drag|push|put|send)\b.*\b(?:by|near|beside|next to|at|in|outside)\s+(?:the\s+)?$")
+_PICKED_BY = re.compile(r"\b(?:move|shift|relocate|take|bring|carry|drag|push|put|send)\b.*\b(?:by|near|beside|next to|at|in|outside|(?:nearest|closest)(?: to)?)\s+(?:the\s+)?$")
 _SENT_TO = re.compile(r"\b(?:over |up |across |back |down )?(?:to|into|onto)\s+")
 
 

@@ -354,6 +354,10 @@ _TERSE_JOIN = re.compile(r"\s+(?:->|=>|\+)\s+")
 # A little word typed twice: "the the one".
 # An amount bounded, never a removal: "no more than two cones" is at most two, "no more and no less than one metre" is exactly one.
 _AT_MOST = re.compile(r"\bno more (and no less )?than\b", re.IGNORECASE)
+# "the centre of the grid", "anywhere on the grid": the world's map, not a grid of things.
+_THE_GRID = re.compile(r"\b(centre|center|middle|edge|corner|side|end|top|bottom|anywhere|somewhere|everywhere) (of|on|across) the grid\b", re.IGNORECASE)
+# "not so close to the kerb" asks for it further from the kerb.
+_NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
 _DOUBLED = re.compile(r"\b(the|a|an|to|of|and|in|on|at|by|it)\s+\1\b", re.IGNORECASE)
 # A thing's word with its number run on ("car2", "cone3"): the thing and its number, when there is one.
 _NUMBER_GLUED = re.compile(r"(?<![\w-])([a-z]{2,})(\d+)\b", re.IGNORECASE)
@@ -613,6 +617,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _TERSE_JOIN.sub(lambda m: " to " if m.group(0).strip() == "->" else " and ", text)  # "suv -> main st", "street + vehicle lights"
     text = _DOUBLED.sub(r"\1", text)  # "and the the one by the library"
     text = _AT_MOST.sub(lambda m: "exactly" if m.group(1) else "at most", text)
+    text = _THE_GRID.sub(r"\1 \2 the map", text)
+    text = _NOT_SO_CLOSE.sub("further from", text)
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)

@@ -1,0 +1,164 @@
+"""Things spoken of as someone's, things picked out by what they stand nearest, unknown things
+asked after, switches said with a "please", singular things on a side, and a few everyday idioms,
+tried in this file's own words on the packaged campus world: "my van can't get past the bin" adds
+no van; "the lamp closest to the fountain" is which lamp, not where it goes; "where's the nearest
+tram stop?" is refused, never answered about something else; "headlamps on please" switches."""
+
+from __future__ import annotations
+
+import pytest
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError
+from drivetwin.orchestrator.planning.check import review
+from drivetwin.orchestrator.planning.intent import REMOVE_WORDS
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.planning.rules.spelling import repair
+from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
+from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.campus import build_campus
+
+
+def _ids(session, category):
+    return sorted(a.id for a in session.scene.assets if a.category == category)
+
+
+def _moved(session, campus, asset_id):
+    before, after = campus.asset(asset_id), session.scene.asset(asset_id)
+    assert before is not None and after is not None
+    return after.pose.x - before.pose.x, after.pose.y - before.pose.y
+
+
+@pytest.mark.parametrize("prompt", [
+    "my van can't get past with the bin sitting there, so the bin has to go",
+    "Budge the bench along a touch? Our van needs the space.",
+    "give me rain, there's mud on my van bonnet",
+])
+def test_a_plan_that_adds_what_the_words_only_speak_of_as_someones_is_not_applied(context, prompt):
+    plan = Plan(calls=[ToolCall(tool="add_asset", args={"category": "truck", "count": 1})], planner="llm")
+    verdict = review(prompt, plan, context)
+    assert verdict.action != "apply"
+    assert any("you spoke of your truck" in p for p in verdict.problems), verdict.problems  # a van is a truck here
+
+
+@pytest.mark.parametrize("prompt", ["Stick my van by the fountain.", "Our van, east gate, parked.",
+                                    "Add my van by the bus stop; my van is white."])
+def test_a_thing_of_someones_asked_for_may_be_added(context, prompt):
+    plan = Plan(calls=[ToolCall(tool="add_asset", args={"category": "truck", "count": 1})], planner="rules")
+    assert not any("you spoke of your" in p for p in review(prompt, plan, context).problems)
+
+
+@pytest.mark.parametrize("prompt", ["where's the nearest tram stop from the ego?", "any wombats around?",
+                                    "how far is the closest petrol station"])
+def test_a_question_after_a_thing_this_world_lacks_is_refused_not_answered_about_another(context, prompt):
+    with pytest.raises(PlanningError, match="there is no"):
+        RulePlanner().plan(prompt, context)
+    other = Plan(calls=[ToolCall(tool="find_assets", args={"nearest_to": "ego"})], planner="llm")
+    verdict = review(prompt, other, context)
+    assert verdict.action != "apply"
+    assert any("there is no" in p for p in verdict.problems)
+
+
+def test_a_question_after_a_thing_there_is_still_answered(context):
+    plan = RulePlanner().plan("where's the closest bin to the ego?", context)
+    assert [c.tool for c in plan.calls] == ["find_assets"] and plan.calls[0].args["category"] == "trash_bin"
+
+
+@pytest.mark.parametrize(("prompt", "state"), [("headlights on please", {"vehicle_lights": "on"}),
+                                               ("street lamps off, thanks", {"street_lights": "off"}),
+                                               ("car lights on, all of them", {"vehicle_lights": "on"})])
+def test_a_switch_said_with_a_courtesy_after_it_switches_and_adds_nothing(session, campus, prompt, state):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert len(session.scene.assets) == len(campus.assets)
+    lights = session.scene.environment.lighting.model_dump()
+    assert all(lights[k] == v for k, v in state.items()), lights
+
+
+def test_lamps_put_on_a_sidewalk_are_placed_not_switched(session, campus):
+    report = session.submit("put the street lamps on the sidewalk")
+    assert report.ok, report.error
+    assert session.scene.environment.lighting.street_lights == campus.environment.lighting.street_lights
+    assert report.plan is not None and all(c.tool == "place_asset" for c in report.plan.calls)
+
+
+def test_a_thing_picked_by_what_it_stands_nearest_goes_where_it_is_sent(session):
+    report = session.submit("take the lamp closest to the bus stop over to the fountain")
+    assert report.ok, report.error
+    (call,) = report.plan.calls
+    assert call.args["location"]["target"] == "fountain"
+
+
+def test_a_thing_picked_by_what_it_stands_nearest_is_moved_the_way_said(session, campus):
+    report = session.submit("shift the tree nearest the library 4 m west")
+    assert report.ok, report.error
+    (call,) = report.plan.calls
+    dx, dy = _moved(session, campus, str(call.args["asset"]))
+    assert dx == pytest.approx(-4.0, abs=0.3) and abs(dy) < 0.3
+
+
+def test_there_after_a_picking_place_is_the_place_said_before(session):
+    report = session.submit("The JTEKT building entrance is far too gloomy. Put the lamp closest to the fountain there.")
+    assert report.ok, report.error
+    assert report.plan.calls[0].args["location"]["target"] == "JTEKT building entrance"
+
+
+def test_a_plan_that_puts_a_thing_at_the_place_it_was_picked_by_is_not_applied(context):
+    plan = Plan(calls=[ToolCall(tool="place_asset", args={"asset": "street_light_4",
+                                                         "location": {"relation": "at", "target": "bus stop"}})], planner="llm")
+    verdict = review("it's the lamp closest to the bus stop I'm after", plan, context)
+    assert verdict.action != "apply"
+    assert any("not where it should go" in p for p in verdict.problems)
+
+
+def test_the_one_thing_on_a_side_of_a_place_is_the_one_nearest_it(session, campus):
+    assert session.submit("chop down the tree north of lot A").ok
+    assert len(_ids(session, "tree")) == campus.count("tree") - 1
+
+
+def test_the_one_thing_on_a_side_of_a_road_is_asked_about_never_all_of_them(session, campus):
+    report = session.submit("take away the lamp on the south side of Main Street")
+    assert not report.ok and "which street light" in (report.error or "")
+    assert session.scene.count("street_light") == campus.count("street_light")
+    assert session.submit("take away the easternmost lamp on the south side of Main Street").ok
+    assert session.scene.count("street_light") == campus.count("street_light") - 1
+
+
+def test_some_of_a_kind_at_one_end_are_the_ones_furthest_that_way(session, campus):
+    assert session.submit("lose two of the street lamps at the west end").ok
+    gone = {a.id for a in campus.assets} - {a.id for a in session.scene.assets}
+    westmost = sorted((a for a in campus.assets if a.category == "street_light"), key=lambda a: a.pose.x)[:2]
+    assert gone == {a.id for a in westmost}
+
+
+@pytest.mark.parametrize("prompt", ["fell the tree nearest the fountain", "the bench has got to go", "that bin's gotta go"])
+def test_idioms_of_taking_away_take_away(session, campus, prompt):
+    assert session.submit(prompt).ok
+    assert len(session.scene.assets) == len(campus.assets) - 1
+
+
+def test_a_tree_that_fell_is_no_request_to_fell_it():
+    assert REMOVE_WORDS.search("fell the tree by the gate") and not REMOVE_WORDS.search("the tree fell by the gate")
+
+
+@pytest.mark.parametrize(("words", "read"), [("bus to the middle of the grid", "bus to the middle of the map"),
+                                             ("the bin, not so close to the road", "the bin, further from the road")])
+def test_the_grid_as_the_map_and_not_so_close_as_further(words, read):
+    assert repair(words, build_campus()).text == read
+
+
+def test_a_crossing_barricaded_gets_a_row_of_barriers(session, campus):
+    assert session.submit("barricade the west crosswalk").ok
+    assert session.scene.count("road_barrier") - campus.count("road_barrier") >= 2
+
+
+def test_late_said_alone_is_the_evening_and_under_way_is_driving(session):
+    assert session.submit("snowy, and late").ok
+    environment = session.scene.environment
+    assert environment.weather.kind == "snow" and environment.time_of_day >= "17:00"
+    assert session.submit("get the SUV under way on Main Street").ok
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.kind == "drive_lane"
+
+
+def test_want_with_no_i_and_a_hooked_turn_are_a_junction_turn(campus, registry):
+    plan = ScenarioReader().plan("Want the ego to hook a left at the crossroads.", PlanContext(scene=campus, registry=registry))
+    assert [c.args["manoeuvre"] for c in plan.calls] == [{"kind": "junction_turn", "turn": "left"}]
