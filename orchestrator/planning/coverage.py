@@ -114,10 +114,11 @@ _RELATION_WORDS = frozenset(
     ]
 )
 # Weather kinds a request names directly (a goal such as "test the wipers" is read by the planner).
-_WEATHER_NAMES = ("rain", "snow", "fog", "cloud", "clear sky", "clear skies", "sunny", "sunshine")
+_WEATHER_NAMES = ("rain", "snow", "fog", "cloud", "overcast", "drizzle", "downpour", "clear sky", "clear skies", "sunny", "sunshine")
 # The kind of weather each of those names asks for, and words before a name that deny it or
 # complain of it or say how it is now ("no rain", "it's too sunny", "it's raining, make it sunny").
-_KIND_OF_WEATHER = {"rain": "rain", "snow": "snow", "fog": "fog", "cloud": "cloudy", "overcast": "cloudy",
+_KIND_OF_WEATHER = {"rain": "rain", "drizzle": "rain", "downpour": "rain", "snow": "snow", "fog": "fog",
+                    "cloud": "cloudy", "overcast": "cloudy",
                     "sunny": "clear", "sunshine": "clear", "clear sk": "clear"}
 _WEATHER_DENIED = re.compile(r"\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently)\b[^,.;]*$")
 _WEATHER_ENDED = re.compile(r"\w*(?:\s+\S+){0,2}?\s+(?:stops?|ends?|clears?|go(?:es)? away|lets? up)\b")
@@ -897,6 +898,10 @@ def place_moved(low: str, scope: Scope, scene: Scene) -> list[str]:
 # predicate or a destination right after that ("..., by the library, is diseased", "... to the
 # fountain"): where it stands.
 _WHERE_IT_STANDS = r"\s+(?:right |just )?(?:behind|next to|beside|by|near|in front of|at|opposite|across from|outside)\s+(?:the\s+)?"
+# Verbs that send a thing somewhere, said before it: "put the bin at the bus stop" says where it goes.
+_SENDING_VERB = re.compile(r"\b(?:move|put|place|shift|relocate|take|bring|set|stand|position|drag|push|pull|carry|send|stick|pop"
+                      r"|plonk|plant|park|drop|slide|nudge|budge|get|have|want|need|like|go|goes|belongs?|should|must|keep|leave"
+                      r"|station|locate|reposition|transfer|return)\b")
 _PICKED_NEAREST = r"\s+(?:(?:one|that|which is|that is)\s+)?(?:nearest|closest)(?:\s+to)?\s+(?:the\s+)?"
 _PREDICATE = re.compile(r"\s*(?:,[^,.;]*,\s*)?(?:(?:is|are|was|were|has|have|had|needs?|must|should|keeps?|looks?|seems?|throws?"
                         r"|blocks?|casts?|gets?|hides?|spoils?|ruins?|drips?)\b"
@@ -925,7 +930,11 @@ def described_not_destination(low: str, calls: tuple[ToolCall, ...], scene: Scen
             named = "(?:" + "|".join(re.escape(n) for n in names if n and n not in ("the", "a", "an")) + r")\b"
             said = re.match(_WHERE_IT_STANDS + named, indexed[m.end :])
             picked = re.match(_PICKED_NEAREST + named, indexed[m.end :])  # "the lamp nearest the bus stop": which one, whatever follows
-            if names and (picked or (said and _PREDICATE.match(indexed[m.end + said.end() :]))) and thing.id not in gone:
+            rest = indexed[m.end + said.end() :] if said else ""
+            verb = re.sub(r"\b(?:the|a|an|that|this|those|these|my|our|your|please|now|ok|so|and)\b", " ", indexed[: m.start]).strip()
+            # "strike the lamp at the bus stop.": a verb that sends nowhere ("the bench at the library" is terse for putting it)
+            ends = said is not None and not rest.strip(" .!") and bool(verb) and not _SENDING_VERB.search(indexed[: m.start])
+            if names and (picked or (said and _PREDICATE.match(rest)) or ends) and thing.id not in gone:
                 said = picked or said
                 assert said is not None
                 out.append(f"you said where the {thing.category.replace('_', ' ')} stands"

@@ -91,7 +91,7 @@ _QUESTION_START = re.compile(r"(?:^\s*|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|h
                              r"|,\s*(?:where|what|which) (?:is|are) (?:it|they|those|these|them)\b")
 # Asking for information inside a sentence of any mood ("could you tell me which ...", "I need
 # the number of ...", "to know what a truck weighs"): a question, whatever the sentence opens with.
-_INFO = re.compile(r"(?<!s )\b(tell me|show me|let me know|inform (?:me|us)|advise (?:me|us)|"
+_INFO = re.compile(r"(?<!(?<!pl)s )\b(tell me|show me|let me know|inform (?:me|us)|advise (?:me|us)|"
                    # "kindly state the weather", "please identify the tree closest to ...": asked to say, not to set
                    r"(?:^|(?:please|kindly|pls|now|could you|can you|would you)\s+)(?:state|identify|report|indicate|specify|name)\s+(?:the|which|what|where|how)|"
                    r"tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|at what distance|how long is|"

@@ -162,3 +162,50 @@ def test_late_said_alone_is_the_evening_and_under_way_is_driving(session):
 def test_want_with_no_i_and_a_hooked_turn_are_a_junction_turn(campus, registry):
     plan = ScenarioReader().plan("Want the ego to hook a left at the crossroads.", PlanContext(scene=campus, registry=registry))
     assert [c.args["manoeuvre"] for c in plan.calls] == [{"kind": "junction_turn", "turn": "left"}]
+
+
+def test_give_me_after_and_is_a_request_of_its_own(session, campus):
+    assert session.submit("put a bench by the library and give me some drizzle").ok
+    assert session.scene.count("bench") == campus.count("bench") + 1
+    assert session.scene.environment.weather.kind == "rain"
+
+
+def test_a_plan_that_leaves_out_the_drizzle_asked_for_is_not_applied(context):
+    plan = Plan(calls=[ToolCall(tool="add_asset", args={"category": "bench", "count": 1})], planner="llm")
+    verdict = review("a bench somewhere and a spot of drizzle", plan, context)
+    assert any("you mentioned drizzle" in p for p in verdict.problems), verdict.problems
+
+
+@pytest.mark.parametrize(("prompt", "metres"), [("slide the bin a metre and a half east", 1.5),
+                                                ("slide the bin two metres and a half east", 2.5),
+                                                ("slide the bin 4 m and a half east", 4.5)])
+def test_a_half_said_after_the_unit_is_a_half_more(session, campus, prompt, metres):
+    assert session.submit(prompt).ok
+    dx, _ = _moved(session, campus, "trash_bin_1")
+    assert dx == pytest.approx(metres, abs=0.05)
+
+
+def test_a_part_of_the_day_said_as_not_wanted_is_never_set(session):
+    report = session.submit("EVENING!! EVENING!! NOT MORNING!!")
+    assert report.ok, report.error
+    assert [c.args["time"] for c in report.plan.calls] == ["evening"]
+
+
+def test_a_named_time_said_as_a_phrase_beats_a_part_of_the_day(session):
+    report = session.submit("we film at golden hour tonight")
+    assert report.ok and [c.args["time"] for c in report.plan.calls] == ["sunset"]
+
+
+def test_tel_me_asks(session, campus):
+    report = session.submit("pls tel me how long one bus is")
+    assert report.ok and report.answer is not None and "12" in report.answer
+    assert len(session.scene.assets) == len(campus.assets)
+
+
+def test_a_verb_that_sends_nowhere_never_moves_a_thing_to_where_it_stands(context):
+    plan = Plan(calls=[ToolCall(tool="place_asset", args={"asset": "bench_1",
+                                                         "location": {"relation": "at", "target": "Library entrance"}})], planner="rules")
+    verdict = review("scrap the bench at the library.", plan, context)
+    assert verdict.action != "apply" and any("not where it should go" in p for p in verdict.problems)
+    terse = review("the bench at the library", plan, context)
+    assert not any("not where it should go" in p for p in terse.problems)

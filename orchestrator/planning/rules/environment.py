@@ -8,6 +8,7 @@ weather, "drivers can barely see; light up the streets" is street lights on).
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from typing import Any
 
 from drivetwin.orchestrator.planning.rules import lexicon as lx
@@ -104,8 +105,16 @@ _SUN_RISING = re.compile(r"\bsun\s+(?:is\s+)?(?:just\s+|only\s+)?(?:coming up|co
 _BEFORE_DARK = re.compile(r"\b(?:just |right )?before (?:the )?(?:sun (?:goes|has gone|is going) down|sun sets|sunset|sundown|dark|nightfall)\b")
 
 
+# A part of the day said as not wanted: "night, not day", "no daytime", "rather than morning".
+_TIME_DENIED = re.compile(r"\b(?:not|no|never|instead of|rather than)\s+(?:the\s+|a\s+|in the\s+)?"
+                          r"(?:day(?:time|light)?|night(?:time)?|evening|morning|afternoon|dusk|dawn|noon|midday|midnight)\b")
+
+
 def time_of_day(r: Reading) -> ToolCall | None:
     """The time a clause asks for ("at 7 pm", "18:30", "dusk", "lunchtime"), or None."""
+    blank = _TIME_DENIED.sub(lambda m: " " * len(m.group(0)), r.low)
+    if blank != r.low:  # "NIGHT!!! NOT DAY!!!": the day is what is not wanted
+        r = replace(r, low=blank, masked=_TIME_DENIED.sub(lambda m: " " * len(m.group(0)), r.masked))
     said = clock_time(r.masked)
     if said is not None and r.has(("time", "make it", "set", "at", "clock", "change", "to", "past")):
         return ToolCall(tool="set_time_of_day", args={"time": str(said)})  # the tool refuses "25:70"
@@ -116,9 +125,11 @@ def time_of_day(r: Reading) -> ToolCall | None:
         return ToolCall(tool="set_time_of_day", args={"time": "sunset"})
     if _SUN_RISING.search(r.low):
         return ToolCall(tool="set_time_of_day", args={"time": "sunrise"})
-    for words, preset in lx.TIME_PRESETS:
-        if r.has(words):
-            return ToolCall(tool="set_time_of_day", args={"time": preset})
+    # a phrase said beats a single word ("golden hour this evening" is the golden hour)
+    phrased = [preset for words, preset in lx.TIME_PRESETS if r.has(tuple(w for w in words if " " in w or "-" in w))]
+    worded = [preset for words, preset in lx.TIME_PRESETS if r.has(words)]
+    if phrased or worded:
+        return ToolCall(tool="set_time_of_day", args={"time": (phrased or worded)[0]})
     if _LATE.search(r.low):  # "something wintry, and late": late in the day
         return ToolCall(tool="set_time_of_day", args={"time": "evening"})
     return None

@@ -66,6 +66,16 @@ _SPELT_MEASURE = re.compile(
 )
 
 
+# The half said after the unit: "a metre and a half", "two hours and a half", "3 m and a half".
+_UNIT_AND_A_HALF = re.compile(rf"\b({_SPELT}|\d+)\s+(m|metres?|meters?|ft|feet|foot|km|kilometres?|kilometers?|yards?|"
+                              r"seconds?|secs?|hours?|minutes?|mins?)\s+and a half\b", re.IGNORECASE)
+
+
+def _half_before_unit(m: re.Match[str]) -> str:
+    number, unit = m.group(1), m.group(2)
+    return f"{float(number) + 0.5:g} {unit}" if number.isdigit() else f"{number} and a half {unit}"
+
+
 def _spelt_value(words: str) -> float:
     low = words.lower().replace("-", " ")
     half = 0.5 if low.endswith(" and a half") else 0.0
@@ -132,6 +142,7 @@ def spelt_measures(text: str) -> str:
         return f"{float(m.group(1)) * unit:.3g} m"
 
     text = _DOZENS.sub(lambda m: str(_DOZEN_OF[m.group(1).lower()]), text)
+    text = _UNIT_AND_A_HALF.sub(_half_before_unit, text)
     text = _ONE_CAR_LENGTH.sub(f"{CAR_LENGTH_M:g} m", _SPELT_MEASURE.sub(figures, text))
     text = _MULTIPLES.sub(lambda m: f"{_spelt_value(m.group(1)) * _MULTIPLE_OF[m.group(2).lower()]:g}", text)
     return _OTHER_LENGTHS.sub(metres, text)

@@ -283,7 +283,7 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         # "Could you put the hydrant by the sign, and the bin beside the bench?": a request, every part of it
         asked = i + 1 < len(parts) and "?" in parts[i + 1] and asks(f"{text.lower()}?")
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
-        pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)})\b)", text) for q in _comma_and(p)]
+        pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)}|give (?:me|us))\b)", text) for q in _comma_and(p)]
         out.extend((c, asked, intro) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,"), places))
     return out
 

@@ -61,6 +61,7 @@ _SHORT_SLIPS = {
     "nxt": "next",
     "wich": "which",
     "wat": "what",
+    "tel": "tell",
     "whr": "where",
     "u": "you",
     # text-speak
