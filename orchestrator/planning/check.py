@@ -98,6 +98,7 @@ from drivetwin.orchestrator.planning.rules.places import (
     side_of,
 )
 from drivetwin.orchestrator.planning.rules.reading import counted_kinds, find_place
+from drivetwin.orchestrator.planning.rules.repeat import SAID_AGAIN_AT
 from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
@@ -402,6 +403,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     each = each_place_named(scene, request.low)  # "two cones at each gate": two at every one of them
     # "six bollards on each side of it": that many on either side, two sides
     per = max(1, len(each)) * (2 if md.EACH_SIDE.search(request.low) else 1)
+    per *= 1 + len(re.findall(SAID_AGAIN_AT, request.low))  # "two cones by the library and the same by the stop"
     out = [] if _totals(request, effect) else wrong_counts(
         request.masked, [a for a in effect.added if a.category not in _companions(effect)], per)
     centres = {place: centre for place in each if (centre := _centre(scene, place)) is not None}

@@ -163,7 +163,7 @@ _INDEFINITE = frozenset(["a", "an", "some", "another", "new", "extra", "more", "
 # "Inside the library", "into the JTEKT building": a building named after a word of containment.
 _INSIDE = re.compile(r"\b(?:inside|into|within|(?:on |up |up on )?top of|(?:on |onto |up on )?(?:the )?(?:roof|rooftop) of|atop)(?: of)?"
                      r"\s+(?:the\s+)?([a-z][a-z ]*)"
-                     r"|\b(?:on|onto|up on)\s+(?:the\s+)?(?!the\b|roof\b)([a-z][a-z ]*?)\s+(?:roof|rooftop)\b")  # "up on the library roof"
+                     r"|\b(?:on|onto|up on)\s+(?:the\s+)?(?!the\b|roof\b)([a-z][a-z ]*?)(?:'s)?\s+(?:roof|rooftop)\b")  # "up on the library('s) roof"
 
 
 @dataclass(frozen=True)

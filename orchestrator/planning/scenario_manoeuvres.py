@@ -70,7 +70,8 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
     ("keep_lane", r"\b(?:keep\w* (?:its|their|the) lane|driv\w* on|cruis\w*)\b"),
 )
 _COMPILED = tuple((kind, re.compile(words)) for kind, words in _MANOEUVRES)
-_LIGHT_WORDS = re.compile(r"\b(traffic (lights?|signals?)|lights|light|signals?|traffic_light_\d+)\b")
+# A light alone is a traffic light when pointed at ("the light turns red"); "light rain", "light stuff" are not.
+_LIGHT_WORDS = re.compile(r"\b(traffic (lights?|signals?)|lights|(?:(?<=the )|(?<=that )|(?<=this )|(?<=each ))light|signals?|traffic_light_\d+)\b")
 
 
 def _unit_number(text: str, units: str) -> Number | None:

@@ -209,3 +209,49 @@ def test_a_verb_that_sends_nowhere_never_moves_a_thing_to_where_it_stands(contex
     assert verdict.action != "apply" and any("not where it should go" in p for p in verdict.problems)
     terse = review("the bench at the library", plan, context)
     assert not any("not where it should go" in p for p in terse.problems)
+
+
+def test_the_same_again_at_another_place_in_one_breath_repeats_the_edit_there(session, campus):
+    report = session.submit("two cones by the library, and the same by the bus stop")
+    assert report.ok, report.error
+    assert session.scene.count("traffic_cone") - campus.count("traffic_cone") == 4
+    assert [c.args["location"]["target"] for c in report.plan.calls] == ["Library entrance", "bus stop"]
+
+
+def test_a_second_motion_with_no_one_named_is_done_by_the_one_before(session):
+    report = session.submit("have the SUV pull away and head west along Main Street")
+    assert report.ok, report.error
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.kind == "drive_lane" and suv.behaviour.lane == "main_westbound"
+    assert len([c for c in report.plan.calls if c.tool == "set_behaviour"]) == 1
+
+
+def test_light_said_of_rain_is_no_traffic_light(campus):
+    from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
+
+    assert not describes_behaviour_over_time("rain please, just light, the crew keep working", campus)
+    assert describes_behaviour_over_time("the light should cycle green 20 s then red 20 s", campus)
+
+
+def test_a_livelier_look_with_no_colour_asks_which_and_adds_nothing(session, campus):
+    report = session.submit("the bin a wee bit more colourful")
+    assert not report.ok and len(session.scene.assets) == len(campus.assets)
+
+
+def test_proceeding_is_driving(session):
+    assert session.submit("a motorbike in the eastbound lane proceeding at a steady pace").ok
+    bike = next(a for a in session.scene.assets if a.category == "motorcycle")
+    assert bike.behaviour.kind == "drive_lane"
+
+
+def test_a_buildings_roof_is_no_place_for_a_thing(context):
+    plan = Plan(calls=[ToolCall(tool="place_asset", args={"asset": "bench_1",
+                                                         "location": {"relation": "next_to", "target": "Library entrance"}})], planner="llm")
+    verdict = review("hoist the bench up onto the Library's roof", plan, context)
+    assert verdict.action != "apply" and any("on top of" in p for p in verdict.problems)
+
+
+@pytest.mark.parametrize(("words", "read"), [("how far's the fountain fae the gate", "how far's the fountain from the gate"),
+                                             ("hoo mony bins", "how many bins"), ("cones an' a sign", "cones and a sign")])
+def test_scots_and_clipped_words_read_as_meant(words, read):
+    assert repair(words, build_campus()).text == read

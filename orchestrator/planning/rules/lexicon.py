@@ -88,7 +88,7 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
                    "use the zebra", "uses the zebra", "across the road", "across the street", "over the road"),
     # matched with their inflections ("drive" is "drives", "driving"; "set off" is "setting off"; see edits.py)
     "drive_lane": ("drive", "drove", "move along", "cruise", "leave", "head", "pull away", "pull out", "go",
-                   "start moving", "get going", "set off", "travel", "ride", "pedal", "cycle along", "roll along", "under way", "underway"),
+                   "start moving", "get going", "set off", "travel", "ride", "pedal", "cycle along", "roll along", "under way", "underway", "proceed"),
     "parked": ("parked", "park", "parking", "stationary", "stopped"),
 }
 # Mass or collective nouns for catalog things: the words a person uses, not the catalog's.

@@ -73,6 +73,7 @@ from drivetwin.orchestrator.planning.rules.places import (
 from drivetwin.orchestrator.planning.rules.questions import of_group, plan_question
 from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, named_as, read
 from drivetwin.orchestrator.planning.rules.repeat import (
+    SAID_AGAIN_AT,
     correct,
     corrects,
     last_location,
@@ -80,6 +81,7 @@ from drivetwin.orchestrator.planning.rules.repeat import (
     repeat,
     repeats,
     retargeted,
+    said_again,
 )
 from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces, trades_places
 from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID, is_known, repair, vocabulary
@@ -284,10 +286,19 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         asked = i + 1 < len(parts) and "?" in parts[i + 1] and asks(f"{text.lower()}?")
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)}|give (?:me|us))\b)", text) for q in _comma_and(p)]
+        pieces = [q for p in pieces for q in _SAME_AT.split(p)]  # "..., and the same at lot B": a clause of its own
+        # "get the SUV to pull out and drive off east": the one named before does the second thing too
+        pieces = [f"have it {q}" if n and _GOES_ON.match(q) and ph.find_categories(pieces[n - 1]) and not ph.find_categories(q) else q
+                  for n, q in enumerate(pieces)]
         out.extend((c, asked, intro) for p in pieces if p.strip(" ,") for c in _conjuncts(p.strip(" ,"), places))
     return out
 
 
+# The same again said after an edit in one breath: "cones across the lot A entrance, and the same at lot B".
+_SAME_AT = re.compile(rf"(?:,\s*|\s+)(?:and\s+|then\s+)*(?={SAID_AGAIN_AT})")
+# A second motion said with no one to do it: "... and drive off east", "... and head for the gate".
+_GOES_ON = re.compile(r"\s*(?:drive|drives|head|heads|go|goes|continue|continues|cruise|cruises|turn|turns|stop|stops|park|parks"
+                      r"|brake|brakes|slow|slows|speed|speeds|accelerate|accelerates|reverse|reverses)\b(?!\s+(?:it|them|the|a|an)\b)")
 # A sentence whose subject went unsaid, the thing the one before named: "needs to be by the door".
 _SUBJECTLESS = re.compile(r"\s*(?:needs?|has|have|should|must|ought|wants?)\s+(?:to\s+)?(?:be|go|stand|sit|move|face)\b")
 # A new look asked for ("paint ...", "repaint ...", "recolour ..."), and a building's parts.
@@ -421,6 +432,11 @@ class RulePlanner:
                 if again:  # "the bench has to go, and so does the bin": the clause before, done to the bin
                     calls.extend(again)
                     continue
+            if previous and said_again(reading):  # "cones across the lot A entrance, and the same at lot B"
+                again = repeat(reading, scene, context.memory, notes, earlier=previous)
+                calls.extend(again)
+                previous = again
+                continue
             clause_calls = _plan_clause(reading, asked, scene, context.memory, notes)
             if reading.landmark:
                 notes.place = {"relation": "at", "target": reading.landmark}
@@ -678,6 +694,13 @@ def _named_in(calls: list[ToolCall]) -> set[str]:
 _AGAIN = re.compile(r"\b(?<!hello )(?<!hi )(?<!me )(?:again|another|twice|once more|more|repeat|second)\b")  # not "hello again"
 
 
+def _fuller(later: ToolCall, call: ToolCall) -> bool:
+    """Whether `later` sets the same thing the same behaviour as `call`, saying more of it."""
+    said, more = call.args.get("behaviour"), later.args.get("behaviour")
+    return (later.tool == "set_behaviour" and later.args.get("asset") == call.args.get("asset")
+            and isinstance(said, dict) and isinstance(more, dict) and said.items() < more.items())
+
+
 def _not_restated(calls: list[ToolCall], low: str) -> list[ToolCall]:
     """`calls` without an edit the request says again in other words (a restatement: "turn the
     ego around ... turn it all the way around"; "a line of cones across the road in front of the
@@ -688,7 +711,9 @@ def _not_restated(calls: list[ToolCall], low: str) -> list[ToolCall]:
     located = {(c.args.get("category"), c.args.get("count", 1)) for c in adds if c.args.get("location")}
     placed = {(c.args.get("category"), str(c.args.get("location"))) for c in adds if c.args.get("location")}
     out: list[ToolCall] = []
-    for call in calls:
+    for n, call in enumerate(calls):
+        if call.tool == "set_behaviour" and any(_fuller(later, call) for later in calls[n + 1 :]):
+            continue  # "pull out and drive off east along Main Street": the one that says the lane
         if call.tool == "add_asset" and not call.args.get("location") and (call.args.get("category"), call.args.get("count", 1)) in located:
             continue  # "I'd like to add a tree. A single tree, next to the fountain": the one placed
         if call.tool == "place_asset" and any(str(call.args.get("location")) == where and str(call.args.get("asset", "")).startswith(f"{kind}_")
@@ -819,6 +844,11 @@ def _without_mentions(r: Reading) -> str:
     return out
 
 
+# A livelier look asked for with no colour said: "a bit more colourful", "make it pop".
+_BRIGHTER_LOOK = re.compile(r"\b(?:more |less drab|less dull)?(?:colou?rful|vibrant|vivid|eye-catching|cheerful|jazzier|snazzier)\b"
+                            r"|\bmake (?:it|them|the [a-z ]+?) pop\b")
+
+
 # What may follow the switch word of "lamps off": the end, or words that say nothing of where.
 _SWITCH_ENDS = r"(?=\s*(?:$|[,.!;?]|\b(?:please|pls|plz|now|thanks|all|again|too|and|for|so|at|when|during|while|then|tonight)\b))"
 
@@ -943,7 +973,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         existing = edit_existing(r, scene, memory, notes)
         if existing is not None:
             return existing
-    if r.has(("paint", "repaint", "recolour", "recolor")) and not fresh:
+    if mention is not None and _BRIGHTER_LOOK.search(r.low) and present and not strict_add and not r.has(lx.ADD_WORDS):
+        fresh = False  # "bench little more colourful": the bench there, a look not said
+    if (r.has(("paint", "repaint", "recolour", "recolor")) or _BRIGHTER_LOOK.search(r.low)) and not fresh:
         # a thing to paint is one that is there; a colour not understood is asked, never an add
         raise PlanningError(f"which colour? I know {', '.join(COLOURS)}")
     if mention is None and LIVELIER.search(r.low):

@@ -29,6 +29,9 @@ _REPEAT = re.compile(
     r"(?![\w-])(?!\s+but\b(?!\s+(?:by|at|near|next to|beside|behind|in front of|outside|in|on|over by)\b))"
 )
 
+# The same again at another place, said after an edit: "..., and the same at lot B", "ditto by the library".
+SAID_AGAIN_AT = r"\b(?:the\s+)?same\s+(?:again\s+|thing\s+)?(?:for|with|at|outside|by|near|on|in|over)\b|\bditto\b"
+
 # Words that add nothing to what is repeated.
 _FILLER = re.compile(r"\b(?:again|please|pls|too|as well|once more|one more time|thanks|thank you)\b|^\s*but\b")
 
@@ -41,10 +44,15 @@ _ALSO_THE = re.compile(r"^\s*(?:(?:oh|and|also|plus|then|ok(?:ay)?)[,\s]+)+(?:th
 _ON_EXISTING = ("remove_assets", "set_asset_appearance", "move_asset", "place_asset", "set_behaviour")
 
 
+def said_again(r: Reading) -> bool:
+    """Whether the clause opens asking for an edit again ("the same at lot B", "ditto")."""
+    return _REPEAT.match(r.low) is not None
+
+
 def repeats(r: Reading, memory: Memory | None = None) -> bool:
     """Whether the clause asks for the last edit again (to other things: "and the bin too", when
     the last edit changed things already there)."""
-    if _REPEAT.match(r.low) is not None:
+    if said_again(r):
         return True
     if memory is None or not (r.mentions or r.ids) or _ALSO_THE.match(r.low) is None:
         return False
@@ -55,10 +63,15 @@ def repeats(r: Reading, memory: Memory | None = None) -> bool:
     return bool(calls) and all(c.tool in _ON_EXISTING for c in calls)
 
 
-def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
-    """The last edit still in the scene, again: moved to the place named, or applied to the
+def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: list[ToolCall] | None = None) -> list[ToolCall]:
+    """The last edit still in the scene (or the `earlier` calls of this request: "cones across the
+    lot A entrance, and the same at lot B"), again: moved to the place named, or applied to the
     things named; as it was when the clause names neither."""
-    last, calls = _last_edit(memory)
+    if earlier:
+        last_prompt, calls = "the request before it", earlier
+    else:
+        last, calls = _last_edit(memory)
+        last_prompt = last.prompt
     said = _REPEAT.match(r.low)
     rest = _FILLER.sub("", r.low[said.end() :] if said is not None else r.low).strip(" ,.!")
     # "ditto for the bus", "the same to the trees": other things, first; "repeat that outside the Library": a place
@@ -93,7 +106,7 @@ def repeat(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         out.append(ToolCall(tool=call.tool, args=args))
     if not used:
         what = "place" if place is not None else "things"
-        raise PlanningError(f"{last.prompt!r} has no {what} to change for {rest!r}; say the whole request")
+        raise PlanningError(f"{last_prompt!r} has no {what} to change for {rest!r}; say the whole request")
     if place is not None:
         notes.place = place
     return out
@@ -213,4 +226,4 @@ def _retarget(tool: str, args: dict[str, Any], things: list[str], out: list[Tool
     return False
 
 
-__all__ = ["correct", "corrects", "last_location", "meant_instead", "repeat", "repeats", "retargeted"]
+__all__ = ["SAID_AGAIN_AT", "correct", "corrects", "last_location", "meant_instead", "repeat", "repeats", "retargeted", "said_again"]

@@ -37,6 +37,9 @@ TWO_EDITS_LEN, ONE_EDIT_LEN = 7, 5
 _WORD = re.compile(r"[A-Za-z][A-Za-z'\-]*")
 # Short slips too common to leave: a doubled letter dropped or a letter swapped.
 _SHORT_SLIPS = {
+    # Scots and clipped speech: "how far's the stop fae the gate", "an' the same at lot B", "hoo mony"
+    "fae": "from", "frae": "from", "tae": "to", "wi": "with", "oot": "out", "aff": "off", "noo": "now", "hoo": "how",
+    "mony": "many", "an'": "and", "o'": "of",
     "rm": "remove",  # a terse user's shell words: "rm all bins", "mv ego 5m N"
     "mv": "move",
     "lin": "line",
