@@ -30,6 +30,8 @@ class Turn(BaseModel):
     added: list[str] = Field(default_factory=list)
     removed: list[str] = Field(default_factory=list)
     touched: list[str] = Field(default_factory=list)
+    # Where the things the turn moved stood before it, for "put the bench back where it was".
+    moved_from: dict[str, tuple[float, float]] = Field(default_factory=dict)
 
     def tool_calls(self) -> list[ToolCall]:
         """The turn's calls read back from their text (`tool(key=value, ...)`, literal parsing
@@ -104,6 +106,13 @@ class Memory(BaseModel):
             return last.tool_calls()
         except (ValueError, SyntaxError):
             return []
+
+    def stood_before(self, asset_id: str) -> tuple[float, float] | None:
+        """Where the thing stood before the most recent turn still in the scene that moved it."""
+        for turn in reversed(self.live_turns()):
+            if asset_id in turn.moved_from:
+                return turn.moved_from[asset_id]
+        return None
 
     def last_touched(self) -> list[str]:
         """Ids the most recent turn still in the scene added, moved or changed."""

@@ -262,6 +262,8 @@ class Session:
             added=added,
             removed=removed,
             touched=sorted(edit.touched_ids()),
+            moved_from={op.before.id: (op.before.pose.x, op.before.pose.y) for op in edit.ops if op.op == "update"
+                        and (op.before.pose.x, op.before.pose.y) != (op.after.pose.x, op.after.pose.y)},
         )
         self.memory.record(turn)
         self._note(turn)

@@ -675,6 +675,7 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
                                                if k in ("category", "categories", "asset", "assets", "kind")).lower()))
     said |= {w for c in calls for w in c.tool.split("_")}  # "I want the distance between ...": what measure_distance tells
     said |= {w for c in calls for k in c.args for w in k.split("_")}  # "drop the exposure to 0.5": what set_lighting sets
+    weathers = {str(c.args.get("kind")) for c in calls if c.tool == "set_weather"}  # "bring a fog bank in": the fog set
     out = []
     for m in _SET_TO.finditer(masked):  # "set the precipitation type to hail": a setting this world has no word for
         if len(m.group(1)) >= 3 and not is_known(m.group(1), vocab) and m.group(1) not in said and m.group(1) not in lx.GRAMMAR:
@@ -695,7 +696,7 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         if phrase[0] == "to" or (len(phrase) == 1 and word.endswith("ing")):
             continue  # "want to be sure", "needs protecting": a verb wanted, not a thing
         if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or word in ph.NUMBER_WORDS \
-                or _heads(phrase) or is_known(word, vocab) or word in said:
+                or _heads(phrase) or is_known(word, vocab) or word in said or any(w in weathers for w in phrase):  # "a fog bank"
             continue
         out.append(f"there is no {word!r} in this world")
     return list(dict.fromkeys(out))

@@ -255,3 +255,43 @@ def test_a_buildings_roof_is_no_place_for_a_thing(context):
                                              ("hoo mony bins", "how many bins"), ("cones an' a sign", "cones and a sign")])
 def test_scots_and_clipped_words_read_as_meant(words, read):
     assert repair(words, build_campus()).text == read
+
+
+def test_how_far_after_a_nearest_question_is_from_the_place_it_was_nearest(context):
+    plan = RulePlanner().plan("the closest bench to the fountain, and how far away is it?", context)
+    measured = [c.args for c in plan.calls if c.tool == "measure_distance"]
+    assert measured == [{"a": "bench_1", "b": "fountain"}]
+    alone = RulePlanner().plan("how far away is the bench?", context)
+    assert [c.args for c in alone.calls] == [{"a": "bench_1", "b": "ego"}]
+
+
+def test_put_back_where_it_was_is_where_it_stood_before_it_was_moved(session, campus):
+    assert session.submit("move the bin over to the fountain").ok
+    report = session.submit("no, put the bin back where it was")
+    assert report.ok, report.error
+    before, after = campus.asset("trash_bin_1"), session.scene.asset("trash_bin_1")
+    assert after is not None and abs(after.pose.x - before.pose.x) < 0.5 and abs(after.pose.y - before.pose.y) < 0.5
+
+
+def test_a_sidewalk_named_by_its_side_is_no_direction_to_move(context):
+    from drivetwin.orchestrator.planning.rules import modifiers as md
+
+    assert md.compass_direction("put it on the north sidewalk by the junction") is None
+    assert md.compass_direction("shift it 2 m north") == "north"
+
+
+@pytest.mark.parametrize(("words", "read"), [("with its head lamps on", "with its headlights on"),
+                                             ("the bench to the vicinity of the gate", "the bench near the gate")])
+def test_head_lamps_and_the_vicinity_read_as_meant(words, read):
+    assert repair(words, build_campus()).text == read
+
+
+def test_a_weather_said_as_a_bank_or_front_is_that_weather(context):
+    plan = Plan(calls=[ToolCall(tool="set_weather", args={"kind": "fog", "intensity": 0.9})], planner="rules")
+    assert not any("there is no" in p for p in review("roll a thick fog bank in", plan, context).problems)
+
+
+def test_dropping_a_vehicle_to_a_speed_is_no_removal(session):
+    assert session.submit("drop the SUV to 2 m/s").ok
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.speed == pytest.approx(2.0)

@@ -20,7 +20,7 @@ from drivetwin.worlds.catalog import catalog
 # a lane's or a place's name ("the northbound lane", "the east gate": find_place masks places),
 # a side of something else ("east of the fountain") or a heading ("facing north").
 _COMPASS = re.compile(r"(?<!facing )(?<!face )\b(north|south|east|west)(?:wards?)?\b"
-                      r"(?!-| ?bound| gate| side of\b| entrance| crosswalk| crossing| of\b)")
+                      r"(?!-| ?bound| gate| side of\b| entrance| crosswalk| crossing| of\b| sidewalk| pavement| footway| footpath| verge)")
 COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
 # The compass heading a thing should face ("turned to face north", "pointing west").
 _FACING = re.compile(r"\b(?:face|faces|facing|point|points|pointing)\s+(?:to(?:wards?)?\s+)?(?:the\s+)?(north|south|east|west)\b")

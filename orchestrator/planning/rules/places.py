@@ -504,6 +504,9 @@ def location(
     if by_thing is not None:  # "put the bus where the suv is now": beside it
         return by_thing
     was = _WHERE_IT_WAS.search(r.low)
+    before = next((spot for i in exclude if (spot := memory.stood_before(i)) is not None), None) if was else None
+    if before is not None:  # "put the bench back where it was": where it stood before it was last moved
+        return {"relation": "absolute", "x": round(before[0], 2), "y": round(before[1], 2)}
     gone = next((scene.asset(i) for i in notes.subject if scene.asset(i) is not None), None) if was else None
     if gone is not None:  # "remove the hydrant, then add a bench where it was": the spot it stood on
         return {"relation": "absolute", "x": round(gone.pose.x, 2), "y": round(gone.pose.y, 2)}
@@ -608,7 +611,8 @@ _ONE_LANE = re.compile(r"\b(?<!both )(?<!all )(?<!two )lane\b")
 
 
 # Where a thing just named stood: "where it was", "where they used to be", "in its old spot".
-_WHERE_IT_WAS = re.compile(r"\bwhere (?:it|they|that one|those) (?:was|were|stood|used to (?:be|stand))\b|\bin (?:its|their) old (?:spot|place)\b")
+_WHERE_IT_WAS = re.compile(r"\bwhere (?:it|they|that one|those) (?:was|were|stood|used to (?:be|stand))\b"
+                           r"|\b(?:in|to|back to|back in) (?:its|their) (?:old|original|first|former) (?:spot|place|position)\b")
 # Where another thing is: "put the bus where the suv is now" (beside it), "where the bench was" (its spot).
 _WHERE_THING = re.compile(r"\bwhere\s+(?:the|that|this|our)\s+(?P<thing>[a-z_0-9 ]+?)\s+"
                           r"(?P<verb>is|are|stands|sits|is parked|was|were|stood|used to (?:be|stand))\b")

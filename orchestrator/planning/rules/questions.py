@@ -140,12 +140,16 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         return [_property(replace(r, mentions=[m for m in r.mentions if m.category == k][:1]), scene, None).call
                 for k in kinds]
     earlier: Anchor | None = None
+    origin: Anchor | None = None  # what the last "nearest" question measured from
     calls: list[ToolCall] = []
     for text in texts:
         reading = r if texts == [r.text] else read(text, scene)  # a part kept alone is read alone
-        part = _plan_part(reading, scene, memory, notes, earlier)
+        part = _plan_part(reading, scene, memory, notes, earlier, origin)
         if part is None:
             continue
+        near = part.call.args.get("nearest_to") if part.call.tool == "find_assets" else None
+        if isinstance(near, str):  # "the nearest hydrant to the Library, and how far is it": from the Library
+            origin = Anchor("landmark" if scene.landmark(near) is not None else "asset", near)
         calls.append(_on_side(of_group(part.call, reading), reading, scene))
         earlier = part.referent or earlier
         if part.found:
@@ -181,7 +185,8 @@ def of_group(call: ToolCall, r: Reading) -> ToolCall:
 _WHERE_TO_CROSS = re.compile(r"\bwhere\s+(?:can|could|should|do|does|would|may|might|are|is)\s+(?:[a-z']+\s+){1,3}?cross\b")
 
 
-def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None) -> Part | None:
+def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None,
+               origin: Anchor | None = None) -> Part | None:
     low = r.low
     asked_about = ASKED_ABOUT.search(r.masked)
     if asked_about and not is_known(asked_about.group(1), vocabulary(scene)) \
@@ -213,7 +218,7 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
     if r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low):
         return _property(r, scene, named or back)
     if _DISTANCE.search(low) and not _SUPERLATIVE.search(low) and not _WITHIN.search(low):
-        measured = _distance(r, scene, back)
+        measured = _distance(r, scene, back, origin)
         if measured is not None:
             return measured
     nearest = _NEAREST.search(low)
@@ -394,9 +399,10 @@ def _nearest(r: Reading, scene: Scene, anchor: Anchor) -> Part:
     return _found(ToolCall(tool="find_assets", args=args), scene)
 
 
-def _distance(r: Reading, scene: Scene, back: Anchor | None) -> Part | None:
+def _distance(r: Reading, scene: Scene, back: Anchor | None, origin: Anchor | None = None) -> Part | None:
     """measure_distance between the two things a clause names, each read on its own side of
-    "from", "to", "and" or "between"; one thing named is measured from the asker (the ego)."""
+    "from", "to", "and" or "between"; one thing named is measured from the asker (the ego), or
+    from the `origin` an earlier "nearest" question measured from when it is the thing found."""
     ends: list[Anchor] = []
     for piece in _ENDS.split(r.text.lower()):
         if _ASKER_ALONE.match(piece):
@@ -415,7 +421,7 @@ def _distance(r: Reading, scene: Scene, back: Anchor | None) -> Part | None:
     if asker:
         if ends[0].name == EGO_ID:
             return None
-        ends.append(Anchor("asset", EGO_ID))
+        ends.append(origin if origin is not None and ends[0] == back and origin != back else Anchor("asset", EGO_ID))
     low = r.text.lower()
     if _WAY_ASKED.search(low) and (asker or (re.search(r"\bfrom\b", low) and not re.search(r"\bfrom\b.*\bto\b", low))):
         ends.reverse()  # "which way is the fountain from the bus stop": from the stop (or the asker) to the fountain

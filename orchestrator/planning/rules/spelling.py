@@ -360,6 +360,10 @@ _TERSE_JOIN = re.compile(r"\s+(?:->|=>|\+)\s+")
 _AT_MOST = re.compile(r"\bno more (and no less )?than\b", re.IGNORECASE)
 # "the centre of the grid", "anywhere on the grid": the world's map, not a grid of things.
 _THE_GRID = re.compile(r"\b(centre|center|middle|edge|corner|side|end|top|bottom|anywhere|somewhere|everywhere) (of|on|across) the grid\b", re.IGNORECASE)
+# A vehicle's lamps said in other words: "head lamps", "headlamps" are its headlights.
+_HEAD_LAMPS = re.compile(r"\bhead[ -]?(?:lamps?|lights?)\b", re.IGNORECASE)
+# "to the vicinity of the east gate": near it.
+_VICINITY = re.compile(r"\b(?:(?:in|to|into) )?the (?:general |immediate )?vicinity of\b", re.IGNORECASE)
 # "not so close to the kerb" asks for it further from the kerb.
 _NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
 _DOUBLED = re.compile(r"\b(the|a|an|to|of|and|in|on|at|by|it)\s+\1\b", re.IGNORECASE)
@@ -623,6 +627,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _AT_MOST.sub(lambda m: "exactly" if m.group(1) else "at most", text)
     text = _THE_GRID.sub(r"\1 \2 the map", text)
     text = _NOT_SO_CLOSE.sub("further from", text)
+    text = _HEAD_LAMPS.sub("headlights", text)
+    text = _VICINITY.sub("near", text)
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
