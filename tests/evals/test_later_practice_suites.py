@@ -31,6 +31,7 @@ from drivetwin.evals import (
     practice19_source,
     practice20_source,
     practice21_source,
+    practice22_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -88,6 +89,8 @@ BRIEFS: dict[str, Brief] = {
     "practice20": Brief(270, 9, 9, practice20_source, multi_turn=30, planned=15, compound=18),
     # Nine voices: fire officer, meteorologist, gaffer, foreman, Indian English, all-caps, civil servant, gamer, Scot.
     "practice21": Brief(270, 9, 9, practice21_source, multi_turn=30, planned=15, compound=18),
+    # Nine voices: paramedic, lollipop patrol, cabbie, cyclist, Irish, Southerner, data scientist, commentator, emoji.
+    "practice22": Brief(270, 9, 9, practice22_source, multi_turn=30, planned=15, compound=18),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
