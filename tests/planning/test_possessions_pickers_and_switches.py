@@ -295,3 +295,16 @@ def test_dropping_a_vehicle_to_a_speed_is_no_removal(session):
     assert session.submit("drop the SUV to 2 m/s").ok
     suv = session.scene.asset("suv_1")
     assert suv is not None and suv.behaviour.speed == pytest.approx(2.0)
+
+
+def test_lights_said_as_a_detail_of_a_thing_added_are_switched_too(session, campus):
+    report = session.submit("I'd like a van rolling up to the bus stop, with its headlights on.")
+    assert report.ok, report.error
+    assert session.scene.count("truck") == campus.count("truck") + 1  # a van is a truck here
+    assert session.scene.environment.lighting.vehicle_lights == "on"
+    assert session.scene.environment.lighting.street_lights == campus.environment.lighting.street_lights
+
+
+def test_get_shot_of_takes_away(session, campus):
+    assert session.submit("that bin's an eyesore, get shot of it").ok
+    assert session.scene.count("trash_bin") == campus.count("trash_bin") - 1

@@ -287,6 +287,7 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)}|give (?:me|us))\b)", text) for q in _comma_and(p)]
         pieces = [q for p in pieces for q in _SAME_AT.split(p)]  # "..., and the same at lot B": a clause of its own
+        pieces = [q for p in pieces for q in _WITH_LIGHTS.sub(r" |\1 \2", p).split(" |")]  # "a car, with its headlights on"
         # "get the SUV to pull out and drive off east": the one named before does the second thing too
         pieces = [f"have it {q}" if n and _GOES_ON.match(q) and ph.find_categories(pieces[n - 1]) and not ph.find_categories(q) else q
                   for n, q in enumerate(pieces)]
@@ -296,6 +297,8 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
 
 # The same again said after an edit in one breath: "cones across the lot A entrance, and the same at lot B".
 _SAME_AT = re.compile(rf"(?:,\s*|\s+)(?:and\s+|then\s+)*(?={SAID_AGAIN_AT})")
+# Lights said as a detail of a thing added: "a car pulling in, with its headlights on" switches them too.
+_WITH_LIGHTS = re.compile(r",?\s+with (?:its|their|the|her|his) (headlights|vehicle lights) (on|off)\b(?=\s*(?:[,.;!?]|$))")
 # A second motion said with no one to do it: "... and drive off east", "... and head for the gate".
 _GOES_ON = re.compile(r"\s*(?:drive|drives|head|heads|go|goes|continue|continues|cruise|cruises|turn|turns|stop|stops|park|parks"
                       r"|brake|brakes|slow|slows|speed|speeds|accelerate|accelerates|reverse|reverses)\b(?!\s+(?:it|them|the|a|an)\b)")
@@ -908,7 +911,10 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
                        r"|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit|working)\b"
                        rf"|\b((?:street\s?|vehicle\s|car\s|head)?lights?|(?:street\s?)?lamps?)\s+(on|off)\b{_SWITCH_ENDS}", r.low)
     switch = switch or LIGHTS_DOWN.search(r.low)  # "the street lamps are out": off
-    if switch and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
+    # "a car pulling in, with its headlights on": the car is what is asked for, its lights a detail
+    adds_a_thing = any(m.category != "street_light" and not m.plural and re.search(r"\b(?:a|an|one)\s+(?:\w+\s+)?$", r.low[: m.start])
+                       for m in r.mentions)
+    if switch and not adds_a_thing and not re.search(r"\d\s*(deg|°)", r.low):  # "turn the lamps on" does not rotate a lamp
         if lights(r) is not None:
             return environment(r, scene.environment)
         if any(m.category == "street_light" for m in r.mentions):
