@@ -120,7 +120,7 @@ _WEATHER_NAMES = ("rain", "snow", "fog", "cloud", "overcast", "drizzle", "downpo
 _KIND_OF_WEATHER = {"rain": "rain", "drizzle": "rain", "downpour": "rain", "snow": "snow", "fog": "fog",
                     "cloud": "cloudy", "overcast": "cloudy",
                     "sunny": "clear", "sunshine": "clear", "clear sk": "clear"}
-_WEATHER_DENIED = re.compile(r"\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently)\b[^,.;]*$")
+_WEATHER_DENIED = re.compile(r"(?:\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently)\b|n't\b)[^,.;]*$")
 _WEATHER_ENDED = re.compile(r"\w*(?:\s+\S+){0,2}?\s+(?:stops?|ends?|clears?|go(?:es)? away|lets? up)\b")
 # Clock times said by name: the time tool has presets for them, checked as parts of the day.
 _NAMED_TIMES = ("midnight", "noon", "midday")
@@ -163,7 +163,7 @@ _INDEFINITE = frozenset(["a", "an", "some", "another", "new", "extra", "more", "
 # "Inside the library", "into the JTEKT building": a building named after a word of containment.
 _INSIDE = re.compile(r"\b(?:inside|into|within|(?:on |up |up on )?top of|(?:on |onto |up on )?(?:the )?(?:roof|rooftop) of|atop)(?: of)?"
                      r"\s+(?:the\s+)?([a-z][a-z ]*)"
-                     r"|\b(?:on|onto|up on)\s+(?:the\s+)?(?!the\b|roof\b)([a-z][a-z ]*?)(?:'s)?\s+(?:roof|rooftop)\b")  # "up on the library('s) roof"
+                     r"|\b(?:on|onto|up on|up top|on top|atop)\s+(?:the\s+)?(?!the\b|roof\b)([a-z][a-z ]*?)(?:'s)?\s+(?:roof|rooftop)\b")  # "up on the library('s) roof"
 
 
 @dataclass(frozen=True)

@@ -58,7 +58,10 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
                     rf"|\b{_SIDEWAYS}(?: over| back)? (?:in)?to (?:the |its |their |our )?(?:left|right)\b"
                     rf"|\b{_SIDEWAYS}(?: over| back)? (?:in)?to (?:the |its |their |our )?(?:[a-z_0-9]+'s |lane of )?(?:lane|path)\b"),
     # "turn off the street lights" switches lights, it turns off no road
-    ("junction_turn", r"\b(?:turn\w*|take\w*|hang\w*|hook\w*|chuck\w*|pull\w* a|make\w* a)(?: a| off)?\s+(?:left|right|off(?! (?:all )?(?:the |those |these )?(?:[a-z]+ )?[a-z]*(?:lights?|lamps?)\b)(?! (?:all |every )?(?:the |those |these |them\b|it\b)(?!\s*(?:main|campus|road|street|drive|highway|motorway)\b)))\b|\bturn\w* at\b"
+    ("junction_turn", r"\bturn\w*\s+(?:the\s+|our\s+|that\s+|this\s+)?(?:test\s+)?(?:ego|thing|car|suv|bus|truck|van|lorry|vehicle|cab|taxi"
+                      r"|motorbike|motorcycle|robot)(?:_\d+)?\s+(?:left|right)\s+(?:at|into|onto|on)\s+(?:the\s+)?(?:crossroads|junction"
+                      r"|intersection|lights|place)\b"
+                      r"|\b(?:turn\w*|take\w*|hang\w*|hook\w*|chuck\w*|pull\w* a|make\w* a)(?: a| off)?\s+(?:left|right|off(?! (?:all )?(?:the |those |these )?(?:[a-z]+ )?[a-z]*(?:lights?|lamps?)\b)(?! (?:all |every )?(?:the |those |these |them\b|it\b)(?!\s*(?:main|campus|road|street|drive|highway|motorway)\b)))\b|\bturn\w* at\b"
                       r"|\bgo(?:es)? straight\b|\bstraight (?:on|through|across|over|ahead)\b"),
     ("reverse", r"\brevers\w*|\bback(?:s|ing)? (?:up|out)\b"),
     ("change_speed", r"\bspeed\w* up\b|\bspeed up\b|\baccelerat\w*|\bgo(?:es)? faster\b|\bslow\w* (?:down|to)\b"

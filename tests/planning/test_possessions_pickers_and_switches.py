@@ -308,3 +308,38 @@ def test_lights_said_as_a_detail_of_a_thing_added_are_switched_too(session, camp
 def test_get_shot_of_takes_away(session, campus):
     assert session.submit("that bin's an eyesore, get shot of it").ok
     assert session.scene.count("trash_bin") == campus.count("trash_bin") - 1
+
+
+def test_a_strength_denied_is_lighter_weather_not_none(session):
+    report = session.submit("some rain for wet roads. Not a downpour though.")
+    assert report.ok, report.error
+    weather = session.scene.environment.weather
+    assert weather.kind == "rain" and weather.intensity < 0.5
+
+
+def test_a_query_label_is_a_look_up(session, campus):
+    report = session.submit("query: asset=bench_1 fields=[x, y, colour]")
+    assert report.ok and report.answer is not None and "bench_1" in report.answer
+    assert session.scene.asset("bench_1") == campus.asset("bench_1")
+
+
+def test_the_pace_of_the_ego_on_a_road_is_its_speed_not_the_roads_lanes(context):
+    plan = RulePlanner().plan("the ego's heading along Main Street, what pace is it doing?", context)
+    assert [c.tool for c in plan.calls] == ["asset_properties"]
+
+
+def test_backing_a_thing_up_moves_it_back(session, campus):
+    report = session.submit("back the SUV up 2 metres")
+    assert report.ok, report.error
+    assert [c.args.get("forward") for c in report.plan.calls] == [-2.0]
+
+
+def test_an_for_and_and_git_rid_of(session, campus):
+    assert repair("the suv by the library an the bin next to it", build_campus()).text == "the suv by the library and the bin next to it"
+    assert session.submit("git rid of the bin").ok
+    assert session.scene.count("trash_bin") == campus.count("trash_bin") - 1
+
+
+def test_turning_a_vehicle_at_the_crossroads_is_a_junction_turn(campus, registry):
+    plan = ScenarioReader().plan("turn the ego left at the crossroads", PlanContext(scene=campus, registry=registry))
+    assert [c.args["manoeuvre"] for c in plan.calls] == [{"kind": "junction_turn", "turn": "left"}]

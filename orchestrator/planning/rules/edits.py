@@ -161,6 +161,8 @@ _ANY_NEAREST = re.compile(r"\b(?:(?:whatever|anything|something|the (?:thing|obj
 # The one furthest from something: "the tree furthest from the library", "the lamp farthest away from the ego".
 FURTHEST = re.compile(r"\b(?:furthest|farthest|most distant)(?: away)? from\b")  # "furthest east" is a side, not this
 _FURTHEST_FROM = re.compile(r"\s*(?:that is |which is |that's )?" + FURTHEST.pattern)  # right after the thing named
+# Backing a thing up with the thing said between: "back that SUV up 3 metres", "back it up a bit".
+_BACK_IT_UP = re.compile(r"\bback (?:(?:it|them|that|this|the|our|my|[a-z]+_\d+)\s+)(?:[a-z]+\s+){0,2}?up\b")
 # A thing picked out by the place it is nearest, said just before the place: "the lamp nearest the bus stop".
 _PICKED_NEAREST = re.compile(r"\b(?:nearest|closest)(?: to)?\s+(?:the\s+)?$")
 # A thing picked out by what it is nearest ("the car nearest the union", "the bin closest to the ego").
@@ -745,7 +747,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     elif picked is not None and r.landmark == picked[0] and _PICKED_NEAREST.search(r.low[: picked[1]]):
         r = replace(r, landmark=None)  # "move the tree closest to the library 5 m east": which tree, not where to
     metres = ph.find_distance(r.text)
-    if r.has(lx.REVERSE_WORDS):
+    if r.has(lx.REVERSE_WORDS) or _BACK_IT_UP.search(r.low):  # "back that SUV up 3 metres"
         if metres is None:
             notes.guess("how far to reverse")
         step = metres or (SMALL_STEP_M if r.has(md.SMALL) else DEFAULT_STEP_M)

@@ -58,6 +58,10 @@ def _asked_for(r: Reading) -> tuple[str, ...]:
     return tuple(asked) if len(said) > 1 and len(asked) == 1 else _WEATHER_ORDER
 
 
+# Heavy falls named as such: "not a downpour though" says how strong, not that it is dry.
+_HEAVY_FALLS = ("downpour", "deluge", "cloudburst", "torrent", "blizzard")
+
+
 def weather(r: Reading) -> ToolCall | None:
     """The weather a clause asks for, with its intensity, or None."""
     named = _WEATHER_TO.search(r.low)
@@ -73,14 +77,16 @@ def weather(r: Reading) -> ToolCall | None:
                 continue  # "clear the roadworks away" is a removal
             words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
             stopped = re.search(rf"\b(?:{words})\b(?:\s+\S+){{0,2}}?\s+(?:stop|stops|end|ends|clear|clears|go away|let up)\b", r.low)
-            if kind != "clear" and (re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low) or stopped):  # "make the rain stop"
+            # "wet roads, not a downpour though": how strong it is denied, not the rain
+            strength = re.search(rf"\bnot (?:a |too |that |so )?(?:{'|'.join(map(re.escape, (*lx.HEAVY, *_HEAVY_FALLS)))})\b", r.low)
+            if kind != "clear" and strength is None and (re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low) or stopped):
                 return ToolCall(tool="set_weather", args={"kind": "clear"})  # "I don't want any rain any more"
             args: dict[str, Any] = {"kind": kind}
             if kind != "clear":
                 # "light snow with the headlights on": light said of the weather is its strength
                 said_of_weather = re.search(rf"\blight\s+(?:{'|'.join(map(re.escape, lx.WEATHER_WORDS[kind]))})\b", r.low)
                 # "rainy but not too strong": a strength denied is a light one
-                denied = re.search(rf"\bnot (?:too |so |very )?(?:much )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)
+                denied = strength or re.search(rf"\bnot (?:too |so |very )?(?:much )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)
                 # "fog, light intensity", "low intensity rain": the strength said as such
                 denied = denied or re.search(r"\b(?:light|low|weak|gentle|mild)\s+(?:intens|strength|level)", r.low)
                 heavy = (r.has(lx.HEAVY) or re.search(r"[a-z]storm\b", r.low) is not None) and denied is None  # "a snowstorm"

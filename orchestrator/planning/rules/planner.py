@@ -259,6 +259,7 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
     prompt = without_salutations(prompt) or prompt  # "Good afternoon. ...": manners, not a time of day
     kept = without_memories(prompt) if reasons else without_reason(prompt).strip() or prompt  # a memory is never a request
     kept = _COMMAND_COLON.sub(lambda m: f"{m.group(1)}, " if commands(m.group(1).lower()) else m.group(0), kept)
+    kept = _ASKING_LABEL.sub("tell me ", kept)  # "query: asset=suv_1 fields=[x, y]": a look-up
     parts = _SPLIT.split(_TRAILING_OFF.sub(" ", kept))
     out: list[tuple[str, bool, bool]] = []
     lead = ""  # the last clause's words up to its verb, for a clause that only names another thing
@@ -299,6 +300,8 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
 _SAME_AT = re.compile(rf"(?:,\s*|\s+)(?:and\s+|then\s+)*(?={SAID_AGAIN_AT})")
 # Lights said as a detail of a thing added: "a car pulling in, with its headlights on" switches them too.
 _WITH_LIGHTS = re.compile(r",?\s+with (?:its|their|the|her|his) (headlights|vehicle lights) (on|off)\b(?=\s*(?:[,.;!?]|$))")
+# A label that says what follows it is a look-up: "query: ...", "status: ...".
+_ASKING_LABEL = re.compile(r"^\s*(?:query|lookup|look ?up|info|status|report)\s*:\s*", re.IGNORECASE)
 # A second motion said with no one to do it: "... and drive off east", "... and head for the gate".
 _GOES_ON = re.compile(r"\s*(?:drive|drives|head|heads|go|goes|continue|continues|cruise|cruises|turn|turns|stop|stops|park|parks"
                       r"|brake|brakes|slow|slows|speed|speeds|accelerate|accelerates|reverse|reverses)\b(?!\s+(?:it|them|the|a|an)\b)")
@@ -848,7 +851,7 @@ def _without_mentions(r: Reading) -> str:
 
 
 # A livelier look asked for with no colour said: "a bit more colourful", "make it pop".
-_BRIGHTER_LOOK = re.compile(r"\b(?:more |less drab|less dull)?(?:colou?rful|vibrant|vivid|eye-catching|cheerful|jazzier|snazzier)\b"
+_BRIGHTER_LOOK = re.compile(r"\b(?:more |less drab|less dull)?(?:colou?rful|vibrant|vivid|eye-catching|cheerful|jazzier|snazzier|flashier|flashy)\b"
                             r"|\bmake (?:it|them|the [a-z ]+?) pop\b")
 
 

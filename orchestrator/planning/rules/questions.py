@@ -78,7 +78,7 @@ _PLACE_KIND = re.compile(r"\b(?:landmarks?|places?|buildings?|entrances?|locatio
 _ANY_KIND = re.compile(rf"\b(?:{'|'.join(lx.GENERIC_THINGS)}|what|what's|whats|who)\b")
 _WHERE = re.compile(r"\b(?:where|located|location|position|coordinates)\b")
 # Properties beyond the size and mass words of the lexicon: look, pose and motion.
-_PROPERTY = re.compile(r"\b(?:colou?r|which way|heading|facing|how fast|speed|behaviou?r|doing|pose|yaw)\b")
+_PROPERTY = re.compile(r"\b(?:colou?r|which way|heading|facing|how fast|speed|pace|behaviou?r|doing|pose|yaw)\b")
 # Words that point back: to an earlier part or clause ("it", "there") or to the asker ("us").
 _BACK = re.compile(r"\b(?:it|its|them|they|those ones|that one|that spot|that place|here)\b"
                    r"|(?<!is )(?<!are )(?<!was )(?<!were )\bthere\b(?!\s*(?:is|are|was|were|'s|be)\b)")
@@ -212,7 +212,7 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         return None  # "bins? benches? how many of each": the earlier clauses already ask it
     if _WAY_ASKED.search(low) and re.search(r"\b(?:from|to)\b", low) and (way := _distance(r, scene, back)) is not None:
         return way  # "which way is the fountain from the bus stop": not which way a thing faces
-    if (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low)) and not r.mentions and not r.ids and (
+    if (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low)) and not r.mentions and not r.ids and not r.ego and (
             r.lane or _asks_for_lanes(r)):  # "how wide is the lane on Main Street": the lanes' facts
         return Part(_lanes(r, scene, back), None)
     if r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low):

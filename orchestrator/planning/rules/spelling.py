@@ -360,6 +360,8 @@ _TERSE_JOIN = re.compile(r"\s+(?:->|=>|\+)\s+")
 _AT_MOST = re.compile(r"\bno more (and no less )?than\b", re.IGNORECASE)
 # "the centre of the grid", "anywhere on the grid": the world's map, not a grid of things.
 _THE_GRID = re.compile(r"\b(centre|center|middle|edge|corner|side|end|top|bottom|anywhere|somewhere|everywhere) (of|on|across) the grid\b", re.IGNORECASE)
+# "an" before a word no article comes before is "and": "the suv in front of the library an the bin next to it".
+_AN_FOR_AND = re.compile(r"\ban (?=(?:the|a|my|our|its|their|those|these|that|this|some|then)\b)", re.IGNORECASE)
 # A vehicle's lamps said in other words: "head lamps", "headlamps" are its headlights.
 _HEAD_LAMPS = re.compile(r"\bhead[ -]?(?:lamps?|lights?)\b", re.IGNORECASE)
 # "to the vicinity of the east gate": near it.
@@ -628,6 +630,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _THE_GRID.sub(r"\1 \2 the map", text)
     text = _NOT_SO_CLOSE.sub("further from", text)
     text = _HEAD_LAMPS.sub("headlights", text)
+    text = _AN_FOR_AND.sub("and ", text)
     text = _VICINITY.sub("near", text)
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
