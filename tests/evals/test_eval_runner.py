@@ -127,7 +127,7 @@ def test_a_run_stopped_with_ctrl_c_resumes_where_it_stopped_and_measures_the_sam
     proc = subprocess.Popen(
         [sys.executable, "-c", script], env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
     )
-    deadline = time.monotonic() + 60
+    deadline = time.monotonic() + 300  # a loaded machine imports slowly; it waits only until then
     while time.monotonic() < deadline:  # wait until some, not all, trials are written
         if out.exists() and out.read_text(encoding="utf-8").count("\n") >= 6:
             break
@@ -137,7 +137,7 @@ def test_a_run_stopped_with_ctrl_c_resumes_where_it_stopped_and_measures_the_sam
     assert proc.returncode == 0, stderr
     report = json.loads(stdout.strip().splitlines()[-1])
     done_before = len(read_run(out).records)
-    assert report["interrupted"] and 0 < done_before < 24
+    assert report["interrupted"] and 0 < done_before < 24, (report, done_before)
 
     same = {"planner_options": {"delay": DELAY_S}, "trials": 3, "workers": 2, "progress": False}
     resumed = run_suite(tiny_suite, TINY, out_path=out, **same)
