@@ -288,7 +288,7 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)}|give (?:me|us))\b)", text) for q in _comma_and(p)]
         pieces = [q for p in pieces for q in _SAME_AT.split(p)]  # "..., and the same at lot B": a clause of its own
-        pieces = [q for p in pieces for q in _WITH_LIGHTS.sub(r" |\1 \2", p).split(" |")]  # "a car, with its headlights on"
+        pieces = [q for p in pieces for q in _lights_apart(p)]  # "a car pulling in, with its headlights on"
         # "get the SUV to pull out and drive off east": the one named before does the second thing too
         pieces = [f"have it {q}" if n and _GOES_ON.match(q) and ph.find_categories(pieces[n - 1]) and not ph.find_categories(q) else q
                   for n, q in enumerate(pieces)]
@@ -300,6 +300,14 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
 _SAME_AT = re.compile(rf"(?:,\s*|\s+)(?:and\s+|then\s+)*(?={SAID_AGAIN_AT})")
 # Lights said as a detail of a thing added: "a car pulling in, with its headlights on" switches them too.
 _WITH_LIGHTS = re.compile(r",?\s+with (?:its|their|the|her|his) (headlights|vehicle lights) (on|off)\b(?=\s*(?:[,.;!?]|$))")
+
+
+def _lights_apart(piece: str) -> list[str]:
+    """The piece, and the lights it says a thing has as a request of their own ("headlights on")."""
+    said = _WITH_LIGHTS.search(piece)
+    return [piece] if said is None else [piece[: said.start()] + piece[said.end() :], f"{said.group(1)} {said.group(2)}"]
+
+
 # A label that says what follows it is a look-up: "query: ...", "status: ...".
 _ASKING_LABEL = re.compile(r"^\s*(?:query|lookup|look ?up|info|status|report)\s*:\s*", re.IGNORECASE)
 # A second motion said with no one to do it: "... and drive off east", "... and head for the gate".
