@@ -901,8 +901,8 @@ def place_moved(low: str, scope: Scope, scene: Scene) -> list[str]:
 _WHERE_IT_STANDS = r"\s+(?:right |just )?(?:behind|next to|beside|by|near|in front of|at|opposite|across from|outside)\s+(?:the\s+)?"
 # Verbs that send a thing somewhere, said before it: "put the bin at the bus stop" says where it goes.
 _SENDING_VERB = re.compile(r"\b(?:move|put|place|shift|relocate|take|bring|set|stand|position|drag|push|pull|carry|send|stick|pop"
-                      r"|plonk|plant|park|drop|slide|nudge|budge|get|have|want|need|like|go|goes|belongs?|should|must|keep|leave"
-                      r"|station|locate|reposition|transfer|return)\b")
+                           r"|plonk|plant|park|drop|slide|nudge|budge|get|have|want|need|like|go|goes|belongs?|should|must|keep|leave"
+                           r"|station|locate|reposition|transfer|return)\b")
 _PICKED_NEAREST = r"\s+(?:(?:one|that|which is|that is)\s+)?(?:nearest|closest)(?:\s+to)?\s+(?:the\s+)?"
 _PREDICATE = re.compile(r"\s*(?:,[^,.;]*,\s*)?(?:(?:is|are|was|were|has|have|had|needs?|must|should|keeps?|looks?|seems?|throws?"
                         r"|blocks?|casts?|gets?|hides?|spoils?|ruins?|drips?)\b"
