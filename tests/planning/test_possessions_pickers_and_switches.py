@@ -343,3 +343,17 @@ def test_an_for_and_and_git_rid_of(session, campus):
 def test_turning_a_vehicle_at_the_crossroads_is_a_junction_turn(campus, registry):
     plan = ScenarioReader().plan("turn the ego left at the crossroads", PlanContext(scene=campus, registry=registry))
     assert [c.args["manoeuvre"] for c in plan.calls] == [{"kind": "junction_turn", "turn": "left"}]
+
+
+def test_an_at_sign_is_at(session, campus):
+    report = session.submit("cone x2 @ lot A pls")
+    assert report.ok, report.error
+    assert report.plan.calls[0].args["location"]["target"] == "parking lot A"
+
+
+def test_behind_the_ego_in_its_own_lane_is_right_behind_it(session):
+    report = session.submit("park the SUV right behind the ego in the eastbound lane")
+    assert report.ok, report.error
+    suv, ego = session.scene.asset("suv_1"), session.scene.asset("ego")
+    assert suv is not None and ego is not None
+    assert -15.0 < suv.pose.x - ego.pose.x < 0.0 and abs(suv.pose.y - ego.pose.y) < 0.5

@@ -23,7 +23,7 @@ from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import Location, resolve_anchor
 from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, polyline_length
+from drivetwin.worlds.surface import lane_at, nearest_on_polyline, point_along, point_in_polygon, polyline_length
 from pydantic import ValidationError
 
 RELATIONS = (
@@ -530,6 +530,10 @@ def location(
             # "in the eastbound lane 30 m ahead of the ego": that lane, counted along it from the anchor
             along = metres if relation == "in_front_of" else -metres
             return {"relation": "in_lane", "target": anchor, "along_m": along, **({} if r.lane_guessed else {"lane": r.lane})}
+        thing = scene.asset(anchor) if anchor and anchor != r.landmark else None
+        runs = lane_at(scene, thing.pose.x, thing.pose.y) if thing is not None else None
+        if runs is not None and runs.id == r.lane and relation in ("in_front_of", "behind"):
+            return {"relation": relation, "target": thing.id}  # "right behind the ego in the eastbound lane": its lane, by it
         if r.landmark:  # "the eastbound lane by the east gate": that lane, where it passes the place
             return {"relation": "in_lane", "target": r.landmark, **({} if r.lane_guessed else {"lane": r.lane})}
         end = _LANE_END.search(r.low)

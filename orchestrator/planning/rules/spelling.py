@@ -353,9 +353,9 @@ def _road_abbreviations(text: str, scene: Scene) -> str:
 
 # A shell's "del" opening a command.
 _DEL_FIRST = re.compile(r"(?:^|(?<=[.;!?]\s))\s*del\b(?=\s+[a-z])", re.IGNORECASE)
-# A terse user's arrows and pluses: "cones x3 -> lot A", "street + vehicle lights on".
-_TERSE_JOIN = re.compile(r"\s+(?:->|=>|\+)\s+")
-# A little word typed twice: "the the one".
+# A terse user's arrows, pluses and at signs: "cones x3 -> lot A", "street + vehicle lights on", "robot x2 @ lot A".
+_TERSE_JOIN = re.compile(r"\s+(?:->|=>|\+|@)\s+")
+_TERSE_WORDS = {"->": " to ", "=>": " to ", "@": " at "}
 # An amount bounded, never a removal: "no more than two cones" is at most two, "no more and no less than one metre" is exactly one.
 _AT_MOST = re.compile(r"\bno more (and no less )?than\b", re.IGNORECASE)
 # "the centre of the grid", "anywhere on the grid": the world's map, not a grid of things.
@@ -368,6 +368,7 @@ _HEAD_LAMPS = re.compile(r"\bhead[ -]?(?:lamps?|lights?)\b", re.IGNORECASE)
 _VICINITY = re.compile(r"\b(?:(?:in|to|into) )?the (?:general |immediate )?vicinity of\b", re.IGNORECASE)
 # "not so close to the kerb" asks for it further from the kerb.
 _NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
+# A little word typed twice: "the the one".
 _DOUBLED = re.compile(r"\b(the|a|an|to|of|and|in|on|at|by|it)\s+\1\b", re.IGNORECASE)
 # A thing's word with its number run on ("car2", "cone3"): the thing and its number, when there is one.
 _NUMBER_GLUED = re.compile(r"(?<![\w-])([a-z]{2,})(\d+)\b", re.IGNORECASE)
@@ -624,7 +625,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _TWO_AS_TO.sub("to ", text)  # "set time 2 midnight": to
     text = _road_abbreviations(text, scene)  # "main st": Main Street
     text = _DEL_FIRST.sub("delete", text)  # "del bin"; never Spanish "el coche del ego"
-    text = _TERSE_JOIN.sub(lambda m: " to " if m.group(0).strip() == "->" else " and ", text)  # "suv -> main st", "street + vehicle lights"
+    text = _TERSE_JOIN.sub(lambda m: _TERSE_WORDS.get(m.group(0).strip(), " and "), text)  # "suv -> main st", "street + vehicle lights"
     text = _DOUBLED.sub(r"\1", text)  # "and the the one by the library"
     text = _AT_MOST.sub(lambda m: "exactly" if m.group(1) else "at most", text)
     text = _THE_GRID.sub(r"\1 \2 the map", text)
