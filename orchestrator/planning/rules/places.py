@@ -532,7 +532,7 @@ def location(
             return {"relation": "in_lane", "target": anchor, "along_m": along, **({} if r.lane_guessed else {"lane": r.lane})}
         thing = scene.asset(anchor) if anchor and anchor != r.landmark else None
         runs = lane_at(scene, thing.pose.x, thing.pose.y) if thing is not None else None
-        if runs is not None and runs.id == r.lane and relation in ("in_front_of", "behind"):
+        if thing is not None and runs is not None and runs.id == r.lane and relation in ("in_front_of", "behind"):
             return {"relation": relation, "target": thing.id}  # "right behind the ego in the eastbound lane": its lane, by it
         if r.landmark:  # "the eastbound lane by the east gate": that lane, where it passes the place
             return {"relation": "in_lane", "target": r.landmark, **({} if r.lane_guessed else {"lane": r.lane})}
