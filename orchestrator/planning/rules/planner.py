@@ -299,13 +299,15 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
 # The same again said after an edit in one breath: "cones across the lot A entrance, and the same at lot B".
 _SAME_AT = re.compile(rf"(?:,\s*|\s+)(?:and\s+|then\s+)*(?={SAID_AGAIN_AT})")
 # Lights said as a detail of a thing added: "a car pulling in, with its headlights on" switches them too.
-_WITH_LIGHTS = re.compile(r",?\s+with (?:its|their|the|her|his) (headlights|vehicle lights) (on|off)\b(?=\s*(?:[,.;!?]|$))")
+_WITH_LIGHTS = re.compile(r",?\s+with (?:its|their|the|her|his) (headlights|vehicle lights) (?:switched |turned )?(on|off|lit|illuminated|blazing)\b"
+                          r"(?=\s*(?:[,.;!?]|$))")
 
 
 def _lights_apart(piece: str) -> list[str]:
     """The piece, and the lights it says a thing has as a request of their own ("headlights on")."""
     said = _WITH_LIGHTS.search(piece)
-    return [piece] if said is None else [piece[: said.start()] + piece[said.end() :], f"{said.group(1)} {said.group(2)}"]
+    state = "off" if said is not None and said.group(2) == "off" else "on"
+    return [piece] if said is None else [piece[: said.start()] + piece[said.end() :], f"{said.group(1)} {state}"]
 
 
 # A label that says what follows it is a look-up: "query: ...", "status: ...".
