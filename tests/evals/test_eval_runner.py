@@ -117,7 +117,9 @@ def test_a_run_stopped_with_ctrl_c_resumes_where_it_stopped_and_measures_the_sam
 ) -> None:
     out, clean = tmp_path / "interrupted.jsonl", tmp_path / "clean.jsonl"
     script = (
-        "import json, sys\n"
+        "import json, signal, sys\n"
+        # A shell starting the tests in the background (`cmd &`) leaves SIGINT ignored, and a child inherits that.
+        "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
         "from drivetwin.evals import run_suite\n"
         f"s = run_suite({str(tiny_suite)!r}, {TINY!r}, planner_options={{'delay': {DELAY_S}}}, "
         f"trials=3, out_path={str(out)!r}, workers=2, progress=False)\n"
@@ -127,7 +129,7 @@ def test_a_run_stopped_with_ctrl_c_resumes_where_it_stopped_and_measures_the_sam
     proc = subprocess.Popen(
         [sys.executable, "-c", script], env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
     )
-    deadline = time.monotonic() + 300  # a loaded machine imports slowly; it waits only until then
+    deadline = time.monotonic() + 300  # a loaded machine imports slowly; it only waits until the first trials
     while time.monotonic() < deadline:  # wait until some, not all, trials are written
         if out.exists() and out.read_text(encoding="utf-8").count("\n") >= 6:
             break
