@@ -58,10 +58,6 @@ def _asked_for(r: Reading) -> tuple[str, ...]:
     return tuple(asked) if len(said) > 1 and len(asked) == 1 else _WEATHER_ORDER
 
 
-# Heavy falls named as such: "not a downpour though" says how strong, not that it is dry.
-_HEAVY_FALLS = ("downpour", "deluge", "cloudburst", "torrent", "blizzard")
-
-
 def weather(r: Reading) -> ToolCall | None:
     """The weather a clause asks for, with its intensity, or None."""
     named = _WEATHER_TO.search(r.low)
@@ -78,7 +74,7 @@ def weather(r: Reading) -> ToolCall | None:
             words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
             stopped = re.search(rf"\b(?:{words})\b(?:\s+\S+){{0,2}}?\s+(?:stop|stops|end|ends|clear|clears|go away|let up)\b", r.low)
             # "wet roads, not a downpour though": how strong it is denied, not the rain
-            strength = re.search(rf"\bnot (?:a |too |that |so )?(?:{'|'.join(map(re.escape, (*lx.HEAVY, *_HEAVY_FALLS)))})\b", r.low)
+            strength = re.search(rf"\bnot (?:a |too |that |so )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)
             if kind != "clear" and strength is None and (re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low) or stopped):
                 return ToolCall(tool="set_weather", args={"kind": "clear"})  # "I don't want any rain any more"
             args: dict[str, Any] = {"kind": kind}

@@ -54,7 +54,7 @@ WEATHER_WORDS: dict[str, tuple[str, ...]] = {
               "better weather", "good weather", "dry", "blue sky", "stops raining"),
 }
 HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "intense", "lot of",
-         "blizzard", "downpour", "pouring", "storm", "very", "really", "poor", "bad", "terrible",
+         "blizzard", "downpour", "deluge", "cloudburst", "pouring", "storm", "very", "really", "poor", "bad", "terrible",
          "barely", "low visibility")
 LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "some", "gentle")
 # (words, preset) in order: the first that matches wins, so "midnight" beats "night".
