@@ -32,6 +32,7 @@ from drivetwin.evals import (
     practice20_source,
     practice21_source,
     practice22_source,
+    practice23_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -91,6 +92,9 @@ BRIEFS: dict[str, Brief] = {
     "practice21": Brief(270, 9, 9, practice21_source, multi_turn=30, planned=15, compound=18),
     # Nine voices: paramedic, lollipop patrol, cabbie, cyclist, Irish, Southerner, data scientist, commentator, emoji.
     "practice22": Brief(270, 9, 9, practice22_source, multi_turn=30, planned=15, compound=18),
+    # Eight everyday voices: test engineer, safety driver, researcher, product manager, student, two non-native
+    # speakers, someone in a hurry; every cell holds 11.
+    "practice23": Brief(280, 10, 10, practice23_source, multi_turn=30, planned=15, compound=18),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
