@@ -80,6 +80,7 @@ from drivetwin.orchestrator.planning.intent import (
     LIVELIER,
     REMOVE_WORDS,
     asks,
+    commands,
     without_contrast,
 )
 from drivetwin.orchestrator.planning.readings import describe
@@ -215,6 +216,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked about places, but the plan looks up something else")
     if not request.question and effect.calls and not effect.edits:
         out.append("you asked for a change, but the plan changes nothing")
+    if not request.question and not effect.calls and (request.categories or request.place or request.polarity or commands(request.low)):
+        out.append("you asked for a change, but the plan does nothing")  # "block off lot B's entrance" read as no call at all
     if request.question and not effect.edits:
         said = " ".join(str(c.args) for c in effect.calls).lower().replace("_", " ")
         out += [f"you asked about {name}, but the plan looks up something else"

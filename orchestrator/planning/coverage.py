@@ -658,11 +658,14 @@ _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswa
 # A setting given a value by name: "set the weather to hail", "change the sky to purple".
 _SET_TO = re.compile(r"\b(?:set|change|switch)\b[^.,;:!?]*?\bto\s+(?:a\s+|an\s+|some\s+)?([a-z]+)\s*(?=$|[.,;:!?])")
 _THING_WANTED = re.compile(
-    r"\b(?:add|put|place|spawn|bring|drop|insert|create|want|need|needs)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
+    r"\b(?:add|put|place|spawn|bring|drop|insert|create|want|need|needs|(?:we|i|you) have)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
     r"of|\d+)\s+){0,3}((?:[a-z][a-z-]*\s+){0,3}?[a-z]+)(?=\s*(?:$|[,.;:!?]|\s(?:next|near|by|at|on|in|beside|behind|"
     r"between|along|across|over|under|above|below|beneath|opposite|past|beyond|against|within|after|before|outside|inside|"
     r"around|to|for|from|with|into|onto|and|or|so|that|which|who|"
     r"please|here|there|too|as|if|when|where|somewhere|close|right|left|just|then)\b))")
+
+# A second thing in the same breath: "... and a crew member standing beside it".
+_AND_A_THING = re.compile(r"\band\s+(?:a|an|some|two|three|four|five|\d+)\s+((?:[a-z][a-z-]*\s+){0,3}?[a-z]+)" + _THING_WANTED.pattern[_THING_WANTED.pattern.index("(?=\\s*(?:$"):])
 
 
 def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
@@ -683,7 +686,10 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     for m in ASKED_ABOUT.finditer(masked):  # answering about another thing is not an answer
         if not is_known(m.group(1), vocab) and m.group(1) not in said and m.group(1) not in lx.GRAMMAR:
             out.append(f"there is no {m.group(1)!r} in this world")
-    for m in _THING_WANTED.finditer(masked):
+    wanted = list(_THING_WANTED.finditer(masked))
+    if wanted:  # "add a van at the gate and a crew member beside it": the second thing is asked for too
+        wanted += [m for m in _AND_A_THING.finditer(masked, wanted[0].end())]
+    for m in wanted:
         phrase = m.group(1).split()
         cut = next((i for i, w in enumerate(phrase) if i and (w in lx.GRAMMAR or w == "of")), len(phrase))
         if phrase[cut:cut + 1] == ["of"]:
@@ -1012,6 +1018,8 @@ def place_dropped(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     return []
 
 
+# Words for one kind of place: a crossing is a crosswalk.
+_SAME_KIND = {"crossing": "crosswalk", "crossings": "crosswalk", "crosswalks": "crosswalk"}
 # A compass word before a word that may be a kind of place ("the south crosswalk", "north gate").
 _COMPASSED = re.compile(r"\b(north|south|east|west)[\s-]+([a-z]+)\b")
 
@@ -1020,10 +1028,12 @@ def unnamed_compass_places(low: str, scene: Scene) -> list[str]:
     """A place said by a compass word where the places of its kind are named by compass words and
     none by that one ("the south crosswalk" where the crosswalks are the west and the north one):
     no place of the world, though its last word alone would name one."""
-    names = {ph.normalise(n).strip() for lm in scene.landmarks for n in lm.names()}
+    names = {_SAME_KIND.get(n.split()[-1], n.split()[-1]).join(n.rsplit(n.split()[-1], 1)) if n.split() else n
+             for lm in scene.landmarks for n in (ph.normalise(x).strip() for x in lm.names())}
     out = []
     for m in _COMPASSED.finditer(low):
         way, kind = m.groups()
+        kind = _SAME_KIND.get(kind, kind)  # "the west crossing" is the west crosswalk
         named = sorted(n for n in names if n.split()[-1] == kind and n.split()[0] in md.COMPASS_VECTORS)
         if named and not any(n.split()[0] == way for n in named):  # "the west lot" is the west parking lot
             out.append(f"there is no '{way} {kind}' in this world (there are {', '.join(named)})")

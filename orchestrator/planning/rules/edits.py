@@ -785,6 +785,12 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if drive is not None and found is not None and catalog()[found.category].motion == "vehicle":
         notes.subject = [asset]  # "the suv drives to the main gate": into the lane that leads there, where it stands
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": drive[0]})]
+    vehicle = found is not None and kind in (None, "drive_lane") and catalog()[found.category].motion == "vehicle"
+    if vehicle and (route := walk_said(r, scene, exclude=ids)) is not None and route.start is None:
+        # "the suv makes its way to the library entrance", where no lane leads: there by path, never a jump there
+        speed = ph.find_speed(r.text)
+        behaviour = {"kind": "follow_path", "to": route.behaviour["to"], **({"speed": speed} if speed else {})}
+        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": behaviour})]
     rider = found is not None and kind == "drive_lane" and catalog()[found.category].motion == "walker"
     if rider and (ride := walk_said(r, scene, exclude=ids)) is not None:  # "have the cyclist ride to the library": by path
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": ride.behaviour})]
@@ -795,7 +801,8 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if kind is not None and kind != "parked":
         # "make the cars move": each of them, those that can
         movers = [i for i in ids if (a := scene.asset(i)) is not None and (kind != "drive_lane" or catalog()[a.category].drives)]
-        going = movers if kind == "drive_lane" and r.mentions and r.mentions[0].plural and len(movers) > 1 else [asset]
+        plural = bool(r.mentions and r.mentions[0].plural) or _EACH_OF_THEM.search(r.low) is not None
+        going = movers if plural and len(movers) > 1 else [asset]  # "both of them cross": the two
         notes.subject = going
         return [ToolCall(tool="set_behaviour", args={"asset": i, "behaviour": behaviour_spec(kind, r)}) for i in going]
     # "8 m ahead of the ego" places it relative to the ego; "8 m ahead" shifts it from where it is.
@@ -827,8 +834,11 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     kind_of = found.category if found is not None else asset.rpartition("_")[0] if asset in notes.coming else None  # one an earlier clause adds
     walker = kind_of in catalog() and catalog()[kind_of].motion == "walker"
     walk = walk_said(r, scene, exclude=ids) if walker and not scoped else None
-    if walk is not None:  # "make him walk to the library": on foot from where he stands
-        return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": walk.behaviour})]
+    if walk is not None:  # "make him walk to the library": on foot from where he stands; "the pedestrians": each
+        walkers = [i for i in ids if (a := scene.asset(i)) is not None and catalog()[a.category].motion == "walker"]
+        plural = bool(r.mentions and r.mentions[0].plural) or _EACH_OF_THEM.search(r.low) is not None
+        return [ToolCall(tool="set_behaviour", args={"asset": i, "behaviour": walk.behaviour})
+                for i in (walkers if plural and len(walkers) > 1 else [asset])]
     where = None if scoped else location(r, scene, memory, notes, exclude=ids)  # the place said which, not where to
     if where is not None:
         # "move them to the gate": each of them, side by side; a layout ("in one line") is not one place
@@ -846,6 +856,10 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]
     return None
+
+
+# Words that say a behaviour is for every one referred to: "both of them", "them all".
+_EACH_OF_THEM = re.compile(r"\b(?:both|all of them|them all|each of them|every one of them|the (?:two|three|four|five) of them)\b")
 
 
 # Where the walk starts, when said: "walks from the bus stop to the library".

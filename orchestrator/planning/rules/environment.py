@@ -109,7 +109,9 @@ _BEFORE_DARK = re.compile(r"\b(?:just |right )?before (?:the )?(?:sun (?:goes|ha
 
 # A part of the day said as not wanted: "night, not day", "no daytime", "rather than morning".
 _TIME_DENIED = re.compile(r"\b(?:not|no|never|instead of|rather than)\s+(?:the\s+|a\s+|in the\s+)?"
-                          r"(?:day(?:time|light)?|night(?:time)?|evening|morning|afternoon|dusk|dawn|noon|midday|midnight)\b")
+                          r"(?:day(?:time|light)?|night(?:time)?|evening|morning|afternoon|dusk|dawn|noon|midday|midnight)\b"
+                          # an occasion named by its day ("for the open day", "sports day"), or a day counted: no time of day
+                          r"|\b(?:open|sports?|demo|test|game|race|match|school|work|working|visit|launch|media|press|every|one|some|other|next|whole|all)[\s-]+day\b")
 
 
 def time_of_day(r: Reading) -> ToolCall | None:
@@ -167,6 +169,11 @@ def lights(r: Reading) -> ToolCall | None:
 # "later in the day", "two hours earlier": the clock moved from where it stands; hours when unsaid.
 SHIFT_HOURS = 3
 _SHIFT = re.compile(r"\b(?:(an?|one|two|three|four|five|six|\d{1,2}) (?:more )?hours? )?(later|earlier)\b")
+# ...said of the clock, when no hours are: "make it later", "a bit later", "later in the day", "the time later";
+# not "we can do the weather later", "for the crew later".
+_OF_THE_CLOCK = re.compile(r"\b(?:make|set|push|move|bump|take|turn|put)\s+(?:it|things)\s+(?:(?:a|much|way|even)\s+)?(?:bit\s+|little\s+|touch\s+|lot\s+)?(?:later|earlier)\b"
+                           r"|\b(?:bit|little|much|touch|slightly|somewhat|lot|even|way)\s+(?:later|earlier)\b|\b(?:it|things)\s+(?:be|is)\s+(?:later|earlier)\b"
+                           r"|\b(?:later|earlier)\s+(?:on\s+)?in\s+the\s+(?:day|evening|afternoon|morning)\b|\b(?:time|clock|hour|hours|day|sun)\b")
 _HOURS = {"a": 1, "an": 1, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
 # Exposure for "brighter" (divided by it for "dimmer"), and its ceiling and floor.
 BRIGHTER_FACTOR, MAX_EXPOSURE, MIN_EXPOSURE = 1.5, 4.0, 0.25
@@ -183,7 +190,7 @@ _DIMMER = re.compile(rf"\b({_DOWN}|washed out|dimmer|less bright|(?:too|so|very|
 def shifted_time(r: Reading, now: Environment) -> ToolCall | None:
     """The clock moved later or earlier from the scene's time ("a bit later", "2 hours earlier")."""
     said = _SHIFT.search(r.masked)
-    if said is None or clock_time(r.masked) is not None:
+    if said is None or clock_time(r.masked) is not None or (said.group(1) is None and not _OF_THE_CLOCK.search(r.masked)):
         return None
     hours = SHIFT_HOURS if said.group(1) is None else _HOURS.get(said.group(1)) or int(said.group(1))
     hour, minute = (int(x) for x in now.time_of_day.split(":"))

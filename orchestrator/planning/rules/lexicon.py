@@ -78,10 +78,10 @@ BLOCK_WORDS = ("block the road", "block the street", "close the road", "close th
                "block off", "close off", "road needs to be closed", "be closed")
 BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
     "jaywalk": ("jaywalk", "jaywalking", "jaywalker", "cut across", "cuts across", "cutting across",
-                "run across", "runs across", "darts across", "dart across", "ego's path",
+                "run across", "runs across", "darts across", "dart across", "dash across", "dashes across", "ego's path",
                 "ego vehicle's path", "in front of the ego", "step out", "steps out", "steps onto the road", "step onto the road", "runs out", "run out", "darts out", "dart out"),
     "circle": ("skidpad", "skid pad", "circle", "circles", "circling", "donut", "donuts",
-               "doughnut", "loop around", "round and round", "loops", "in a loop"),
+               "doughnut", "loop around", "round and round", "loops", "in a loop", "laps", "doing laps", "lapping"),
     "cross_road": ("cross the road", "crossing the road", "cross the street", "crossing the street",
                    "crosses the road", "crosses the street", "at the crosswalk", "on the crosswalk",
                    "get across", "go across", "walk across", "cross", "crosses", "crossing over",

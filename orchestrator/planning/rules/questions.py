@@ -66,6 +66,10 @@ _ENDS = re.compile(r"\b(?:from|to|and|between|apart)\b")
 _ASKER_ALONE = re.compile(r"^\W*(?:me|us|i|we|here)\W*$")
 # A road named as where things are, by its name ("the stop signs on Campus Drive").
 _ALONG = re.compile(r"\b(?:on|along|alongside|beside|lining|lines?|down)\s+(?:the\s+)?[a-z]+\s+(?:street|drive|road|avenue|lane|way|st|rd|ave)\b")
+# Lights said alone with a place after them: the street lights there (not "traffic lights", "headlights").
+_LIGHTS_BY = re.compile(r"(?<!street )(?<!traffic )(?<!vehicle )(?<!car )(?<!head)\b(?:lights|lamps)(?=\s+(?:near|by|around|at|next to|close to|beside)\b)")
+# A thing named after "anything ... that would" is what the anything acts on, not what is looked for.
+_AFFECTED = re.compile(r"\b(?:anything|something|stuff|whatever)\b.*\b(?:that|which)\s+(?:would|could|might|will|can|may|is|are|blocks?|forces?|stops?|gets?)\b")
 _ANYTHING = re.compile(r"\b(?:any|anything|something|anyone|anybody|someone|somebody|what|whatever|stuff)\b")
 # How full a place is ("how busy is the car park", "is the bus stop crowded"): what stands there.
 _BUSY = re.compile(r"\b(?:busy|busier|full|crowded|packed|empty|quiet|occupied|deserted|free spaces?|room left)\b")
@@ -127,6 +131,8 @@ _SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|
 
 def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
     """The search calls that answer a question clause: one per part of a compound question."""
+    if not r.mentions and (bare := _LIGHTS_BY.search(r.text.lower())) is not None:  # "lights near the bus stop?": the lamps there
+        r = read(r.text[: bare.start()] + "street lights" + r.text[bare.end() :], scene)
     texts = [t for t in _NEXT_PART.split(r.text) if t.strip(" ,")]
     if len(texts) > 1:  # "which way and how": a part that names nothing belongs to the question before
         readings = [read(t, scene) for t in texts]
@@ -240,8 +246,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         road = _road_named(r, scene) or (back.name if back is not None and back.kind == "lane" else None)
         if road is not None:
             args["lane"] = road
-        if r.mentions:
-            args["category"] = r.mentions[0].category
+        if r.mentions and not _AFFECTED.search(low[: r.mentions[0].start]):
+            args["category"] = r.mentions[0].category  # not "anything in the road that would block a cyclist": who it blocks
         if r.landmark:  # "is the road blocked near the east gate": only that stretch
             args.update(near=r.landmark, within=_radius(scene, Anchor("landmark", r.landmark)))
         return _found(ToolCall(tool="find_assets", args=args), scene)

@@ -410,7 +410,7 @@ def without_beneficiaries(low: str, mentions: list[ph.Mention]) -> list[ph.Menti
 # Going somewhere on foot or by bike: "walk to the library", "head over to the fountain", "ride towards
 # the gate", "a man heading for the east gate", "someone on her way to the union".
 GOES_TO = re.compile(r"\b(?:walk|stroll|head|go|run|jog|wander|rid|cycl|ambl|hurr(?:y|i)|march|strid|trudg|rush|sprint"
-                     r"|driv|make (?:his|her|their) way|on (?:his|her|their) way|strode|rode|drove|ran|went)"
+                     r"|driv|mak(?:e|es|ing) (?:his|her|their|its)(?: own)? way|on (?:his|her|their|its) way|strode|rode|drove|ran|went)"
                      r"(?:e|s|es|e?d|(?:n|g)?ing|(?:g)?ed)?\b(?:\s+(?:over|across|back|off|on|up|down|straight|along))?"
                      r"(?:\s+from(?:\s+[a-z0-9_'§]+){1,5}?)?\s+(?:to|towards?|for|into)\s+")
 # The words before a walk whose walker was named before them ("a man at the stop who then walks to the

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from functools import cache
 from pathlib import Path
 
+from drivetwin.orchestrator.planning.descriptions import described
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import CLOCK_WORDS
@@ -366,6 +367,11 @@ _AN_FOR_AND = re.compile(r"\ban (?=(?:the|a|my|our|its|their|those|these|that|th
 _HEAD_LAMPS = re.compile(r"\bhead[ -]?(?:lamps?|lights?)\b", re.IGNORECASE)
 # "to the vicinity of the east gate": near it.
 _VICINITY = re.compile(r"\b(?:(?:in|to|into) )?the (?:general |immediate )?vicinity of\b", re.IGNORECASE)
+# "in lot A by the entrance": by that lot's entrance, not somewhere in the lot.
+_LOT_BY_ITS_ENTRANCE = re.compile(r"\b(?:in|at|into|inside) ((?:the )?(?:parking |car )?lot [ab])\b,? (by|near|at|next to|beside|close to) "
+                                  r"(?:the|its) (?:entrance|entry|way in)\b", re.IGNORECASE)
+# "the west crossing": the crosswalk on that side (the world names its crossings crosswalks).
+_COMPASS_CROSSING = re.compile(r"\b(north|south|east|west)(?:ern)? crossing\b", re.IGNORECASE)
 # "not so close to the kerb" asks for it further from the kerb.
 _NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
 # A little word typed twice: "the the one".
@@ -633,6 +639,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _HEAD_LAMPS.sub("headlights", text)
     text = _AN_FOR_AND.sub("and ", text)
     text = _VICINITY.sub("near", text)
+    text = _LOT_BY_ITS_ENTRANCE.sub(r"\2 \1 entrance", text)
+    text = _COMPASS_CROSSING.sub(r"\1 crosswalk", text)
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
@@ -670,7 +678,9 @@ def repair(text: str, scene: Scene) -> Repaired:
         repairs.append(f"{word} -> {new}")
         return new
 
-    return Repaired(_WORD.sub(fix, text), repairs)
+    text = _WORD.sub(fix, text)
+    text, read = described(text, scene)  # "the thing you throw rubbish in": the trash bin
+    return Repaired(text, repairs + [f"{d.said!r} -> {d.name} (meaning {d.score:.2f})" for d in read])
 
 
 __all__ = ["ASSET_ID", "REPAIR_CUTOFF", "Repaired", "edits", "english_words", "is_english", "is_known", "repair", "repair_targets", "vocabulary"]
