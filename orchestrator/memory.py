@@ -118,7 +118,7 @@ class Memory(BaseModel):
         """Ids the most recent turn still in the scene added, moved or changed."""
         for turn in reversed(self.live_turns()):
             if turn.added or turn.touched:
-                return [*turn.added, *turn.touched]
+                return list(dict.fromkeys([*turn.added, *turn.touched]))  # a thing added is touched too: once
         return []
 
     def render(self) -> str:

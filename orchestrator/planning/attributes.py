@@ -24,6 +24,7 @@ from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import lane_at, nearest_on_polyline, surface_at
 
@@ -118,8 +119,13 @@ def _in_lane(scene: Scene, asset: AssetInstance, lane_id: str) -> bool:
 
 def off_surface(low: str, scene: Scene, placed: Iterable[AssetInstance]) -> list[str]:
     """Assets not on the sidewalk that the request puts on one."""
-    if _ON_SURFACE.search(low) is None:
+    said = _ON_SURFACE.search(low)
+    if said is None:
         return []
+    placed = list(placed)
+    before = ph.find_categories(low[: said.start()])  # "a bus at the stop and a pedestrian on the sidewalk": the pedestrian
+    if before and any(a.category == before[-1].category for a in placed):
+        placed = [a for a in placed if a.category == before[-1].category]
     wrong = [a.id for a in placed if a.id != "ego" and surface_at(scene, a.pose.x, a.pose.y) != "sidewalk"]
     return [f"you said on the sidewalk, but the plan puts {', '.join(wrong)} elsewhere"] if wrong else []
 
@@ -134,12 +140,18 @@ def look_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
         low = low[: m.start] + " " * (m.end - m.start) + low[m.end :]
     words = re.findall(r"[a-z]+", low)
     material = md.material_said(low)
-    if material is not None:
+    if material is not None and md.material_said(_descriptions_of(calls)) != material:  # "short steel posts": bollards, steel as made
         return [f"you asked for {material}, but the plan does not change how anything looks"]
     colours = [w for w in words if w in COLOURS]
     if colours and _RECOLOUR.search(low):
         return [f"you asked for {colours[0]}, but the plan does not change how anything looks"]
     return []
+
+
+def _descriptions_of(calls: tuple[ToolCall, ...]) -> str:
+    """The catalog's descriptions of what the calls add ("a short steel bollard": made of steel as it comes)."""
+    kinds = [k for c in calls for k in [c.args.get("category"), *c.args.get("categories", [])] if isinstance(k, str)]
+    return " ".join(catalog()[k].description for k in kinds if k in catalog())
 
 
 def names_group(low: str) -> bool:

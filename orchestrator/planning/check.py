@@ -205,6 +205,10 @@ def dry_run(plan_calls: list[ToolCall], context: PlanContext) -> Effect | None:
     )
 
 
+# Less of a weather already there: "less foggy", "ease the rain off a bit".
+_LESS_OF_IT = re.compile(r"\b(?:less|lighter|weaker|thinner|reduce|lower|ease|not as|not so|tone down|turn down)\b")
+
+
 def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[str]:
     """Each way the plan's effect fails to account for the request, in plain words."""
     out: list[str] = []
@@ -437,8 +441,12 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
         out += group_left_behind(request.low, effect.removed,
                                  [a for a in scene.all_assets() if near(a) and a.id not in spared])
     if request.polarity == "remove":  # "I don't want any rain any more" never makes it rain
+        now = scene.environment.weather
         unwanted = [str(c.args.get("kind")) for c in effect.calls if c.tool == "set_weather"
-                    and c.args.get("kind") not in (None, "clear") and re.search(rf"\b{c.args.get('kind')}", request.low)]
+                    and c.args.get("kind") not in (None, "clear") and re.search(rf"\b{c.args.get('kind')}", request.low)
+                    # "less foggy, please": the same weather, lighter, is what was asked
+                    and not (c.args.get("kind") == now.kind and float(c.args.get("intensity", 1.0)) < now.intensity
+                             and _LESS_OF_IT.search(request.low))]
         out += [f"you said no {kind}, but the plan sets {kind}" for kind in unwanted]
     return out + weather_strength(request.low, effect.calls)
 

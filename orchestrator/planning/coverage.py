@@ -25,6 +25,7 @@ from drivetwin.orchestrator.planning.intent import (
     HABITUAL,
     HOW_THINGS_GO,
     KEEP_SOME,
+    PLACE_KIND,
     asks,
 )
 from drivetwin.orchestrator.planning.rules import lexicon as lx
@@ -307,6 +308,8 @@ def ambiguous_pick(masked: str, scope: Scope, scene: Scene, memory: Memory, plac
         if _SINGLES_OUT.match(indexed[m.end :]):
             continue
         candidates = [a for a in scene.assets if a.category == m.category]
+        if any(re.search(rf"\b{re.escape(a.id)}\b", masked) for a in candidates):
+            continue  # "the sedan passenger_car_1": singled out by its id
         if near is not None and place is not None and any(near(a) for a in candidates):
             candidates = [a for a in candidates if near(a)]
         acted = {a.id for a in scope.touched if a.category == m.category} - {a.id for a in scope.added}
@@ -378,8 +381,10 @@ def away_from_thing(masked: str, scope: Scope, scene: Scene) -> list[str]:
     # with one thing to be by, whatever the plan puts or moves; with more, each clause's own (new) things
     placed = list({a.id: a for a in [*scope.added, *scope.touched] if a.id not in removed}.values()) \
         if len(beside) == 1 else list(scope.added)
+    # where each thing stands after the plan: "the bench to the fountain and the bin next to the bench" is the bench moved
+    after = {a.id: a for a in [*scene.all_assets(), *scope.added, *scope.touched] if a.id not in removed}
     for m in named_in(masked):
-        anchors = [a for a in [*scene.all_assets(), *scope.added] if a.category == m.category]
+        anchors = [a for a in after.values() if a.category == m.category]
         if not _BESIDE.search(m.before) or not anchors:
             continue
         far = [a for a in placed if a.category != m.category
@@ -503,7 +508,7 @@ def _half_of(hour: int) -> str | None:
 def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> list[str]:
     """A plural or bare category ("remove cones", "get rid of pedestrian") of which the plan
     removes only some, with no number, place or state in the request to say which."""
-    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some of|one of|a few|half)\b", masked):
+    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some of|one of|a few|half|a couple|a pair|several|a handful)\b", masked):
         return []
     out = []
     for m in named_in(masked):
@@ -684,7 +689,8 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         if len(m.group(1)) >= 3 and not is_known(m.group(1), vocab) and m.group(1) not in said and m.group(1) not in lx.GRAMMAR:
             out.append(f"there is no {m.group(1)!r} in this world")
     for m in ASKED_ABOUT.finditer(masked):  # answering about another thing is not an answer
-        if not is_known(m.group(1), vocab) and m.group(1) not in said and m.group(1) not in lx.GRAMMAR:
+        if not is_known(m.group(1), vocab) and m.group(1) not in said and m.group(1) not in lx.GRAMMAR \
+                and not PLACE_KIND.fullmatch(m.group(1)):  # "the nearest landmark": a place, not a thing
             out.append(f"there is no {m.group(1)!r} in this world")
     wanted = list(_THING_WANTED.finditer(masked))
     if wanted:  # "add a van at the gate and a crew member beside it": the second thing is asked for too
@@ -820,6 +826,8 @@ def excepted_ids(excepted: Iterable[str], categories: Iterable[str], scene: Scen
     return out
 
 
+# What the excepted thing is doing: "not the moving one", "except the parked ones".
+_STATE_SAID = re.compile(r"\b(parked|stationary|stopped|moving|move|driving|drive)\b")
 # A side said with no place it is the side of ("on the south side", "at the western end").
 _SIDE_ONLY = re.compile(r"\s*(?:on|at|to|along) the (?:north|south|east|west)(?:ern)?(?: side| end| half| edge)?\s*")
 
@@ -844,6 +852,10 @@ def _picked_out(said: str, categories: set[str], scene: Scene, main: str = "") -
     alone = amount is not None and not mentions
     kinds = {m.category for m in mentions} or (categories if re.search(r"\bones?\b", head) or alone else set())
     members = [a for a in scene.all_assets() if a.category in kinds and a.id != "ego"]
+    state = _STATE_SAID.search(head)
+    if state is not None:  # "not the moving one": of its kind, the one moving
+        still = state.group(1) in ("parked", "stationary", "stopped")
+        members = [a for a in members if (a.behaviour.kind == "parked") == still]
     if _SIDE_ONLY.fullmatch(where):  # "the ones on the south side" are the south ones
         head, where = f"{head} {where}", ""
     side = md.compass_direction(re.sub(r"\b(north|south|east|west)ern\b", r"\1", head))

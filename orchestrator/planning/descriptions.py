@@ -50,12 +50,29 @@ _POINTING = frozenset(["same", "other", "first", "second", "third", "last", "nex
 
 @dataclass(frozen=True)
 class Described:
-    """A description read as a name: the words, the name and how sure."""
+    """A description read as a name: the words, the name, how sure, and the next best name."""
 
     said: str
     name: str
     score: float
     lead: float
+    runner_up: str = ""
+    start: int = 0
+    end: int = 0
+    determiner: str = "the"
+    plural: bool = False
+
+    @property
+    def sure(self) -> bool:
+        floor, needed = (THING_FLOOR, THING_LEAD) if self.name in catalog() else (PLACE_FLOOR, PLACE_LEAD)
+        return self.score >= floor and self.lead >= needed
+
+    def said_as(self, name: str) -> str:
+        """How the request says `name` in the description's place ("the bus", "those benches")."""
+        words = name.replace("_", " ")
+        if self.plural and name in catalog():
+            words += "es" if words.endswith(("s", "sh", "ch", "x")) else "s"
+        return f"{self.determiner} {words}"
 
 
 @cache
@@ -76,21 +93,21 @@ def _place_text(scene: Scene) -> tuple[tuple[str, ...], tuple[str, ...]]:
     return names, texts
 
 
-def _best(phrases: list[str], names: tuple[str, ...], vectors: Any, allowed: list[int]) -> tuple[str, float, float]:
-    """The name nearest any of `phrases`, its score and its lead over the next."""
+def _best(phrases: list[str], names: tuple[str, ...], vectors: Any, allowed: list[int]) -> tuple[str, float, float, str]:
+    """The name nearest any of `phrases`, its score, its lead over the next, and that next."""
     said = embed(phrases)
     scores = said @ vectors[allowed].T
-    best = (names[allowed[0]], -1.0, 0.0)
+    best = (names[allowed[0]], -1.0, 0.0, "")
     for line in scores:
         order = sorted(range(len(allowed)), key=lambda j: -float(line[j]))
         top = float(line[order[0]])
         lead = top - float(line[order[1]]) if len(order) > 1 else top
         if top > best[1]:
-            best = (names[allowed[order[0]]], top, lead)
+            best = (names[allowed[order[0]]], top, lead, names[allowed[order[1]]] if len(order) > 1 else "")
     return best
 
 
-def _read(m: re.Match[str], scene: Scene) -> tuple[Described, int] | None:
+def _read(m: re.Match[str], scene: Scene) -> Described | None:
     modifiers, head, clause = m.group(2).strip(), m.group(3).lower(), m.group(4).strip()
     if set(modifiers.lower().split()) & _POINTING or (not clause and not modifiers):
         return None  # "the same spot", "the vehicle": which one, said before
@@ -107,43 +124,54 @@ def _read(m: re.Match[str], scene: Scene) -> tuple[Described, int] | None:
         names, texts = _place_text(scene)
         if not names:
             return None
-        name, score, lead = _best(phrases, names, _place_vectors(texts), list(range(len(names))))
-        floor, needed = PLACE_FLOOR, PLACE_LEAD
+        name, score, lead, runner_up = _best(phrases, names, _place_vectors(texts), list(range(len(names))))
     else:
         kinds, vectors = _category_vectors()
         allowed = [i for i, k in enumerate(kinds) if head not in _VEHICLE_HEADS or catalog()[k].motion == "vehicle"]
-        name, score, lead = _best(phrases, kinds, vectors, allowed)
-        floor, needed = THING_FLOOR, THING_LEAD
-        if head in _VEHICLE_HEADS and name == "passenger_car":
+        name, score, lead, runner_up = _best(phrases, kinds, vectors, allowed)
+        if head in _VEHICLE_HEADS and name == "passenger_car" and lead >= THING_LEAD:
             return None  # a vehicle that is a car: the words already say so
-    if score < floor or lead < needed:
-        return None
     end = m.start(4) + (len(m.group(4)) - len(m.group(4).lstrip())) + len(" ".join(words))
-    return Described(m.group(0)[: end - m.start()].strip(), name, score, lead), end
+    plural = head.endswith("s") and not head.endswith("ss")
+    return Described(m.group(0)[: end - m.start()].strip(), name, score, lead, runner_up, m.start(), end, m.group(1), plural)
+
+
+def _all_read(text: str, scene: Scene) -> list[Described]:
+    """Every description in `text` with its best and next best names, in order."""
+    found: list[Described] = []
+    for m in _SPAN.finditer(text):
+        if found and m.start() < found[-1].end:
+            continue
+        try:
+            read = _read(m, scene)
+        except GroundingUnavailable:
+            return []
+        if read is not None:
+            found.append(read)
+    return found
+
+
+def unsure(text: str, scene: Scene) -> list[Described]:
+    """The descriptions in `text` that come near a name but not clearly nearer one than the next
+    ("the big vehicle that carries lots of passengers": a bus or a truck), for a question."""
+    return [d for d in _all_read(text, scene) if not d.sure and d.score >= (THING_FLOOR if d.name in catalog() else PLACE_FLOOR)
+            and d.runner_up and _CLAUSE_OPENS.match(text, d.start + len(d.determiner))]
+
+
+# A description with a clause of its own ("... vehicle that carries lots of passengers"), not only adjectives.
+_CLAUSE_OPENS = re.compile(rf"\s+(?:[a-z0-9'-]+\s+){{0,3}}?(?:{'|'.join((*_THING_HEADS, *_VEHICLE_HEADS, *_PLACE_HEADS))})\s+{_CLAUSE_START}\b",
+                           re.IGNORECASE)
 
 
 def described(text: str, scene: Scene) -> tuple[str, list[Described]]:
     """`text` with each confidently read description replaced by the name it describes (the
     determiner kept: "the bus", "the Library entrance"), and what was read."""
-    found: list[Described] = []
+    sure = [d for d in _all_read(text, scene) if d.sure]
     out, at = [], 0
-    for m in _SPAN.finditer(text):
-        if m.start() < at:
-            continue
-        try:
-            read = _read(m, scene)
-        except GroundingUnavailable:
-            return text, []
-        if read is None:
-            continue
-        said, end = read
-        plural = m.group(3).lower().endswith("s") and not m.group(3).lower().endswith("ss")
-        name = said.name.replace("_", " ")
-        name += ("es" if name.endswith(("s", "sh", "ch", "x")) else "s") if plural and said.name in catalog() else ""
-        out += [text[at : m.start()], f"{m.group(1)} {name}"]
-        at = end
-        found.append(said)
-    return "".join([*out, text[at:]]), found
+    for d in sure:
+        out += [text[at : d.start], d.said_as(d.name)]
+        at = d.end
+    return "".join([*out, text[at:]]), sure
 
 
-__all__ = ["Described", "described"]
+__all__ = ["Described", "described", "unsure"]

@@ -29,7 +29,7 @@ BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}
                         # "empty roads and the lamps buzzing": places described, never "empty the roads"
                         r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|g[ei]t rid of|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them)\b|no longer|don'?t want|do not want"
+    r"\b(remove|delete|g[ei]t rid of|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
@@ -149,7 +149,10 @@ _REASON = re.compile(
     r",?\s+(?:so that|so as to|in order to|in order that|so)\s+(?:(?:the |a |our |we |they |it |cars |traffic |people )?(?:[a-z'-]+\s+){0,2}\w*\s*)?"
     r"(?:can|could|will|would|may|might|won'?t|can'?t|cannot|doesn'?t|don'?t|has to|have to|gets?|is|are)\b[^.;!?]*"
     # "... so that it blocks oncoming traffic": whatever follows "so that" says why
-    r"|,?\s+(?:so that|in order that)\s+[^.;!?]*",
+    r"|,?\s+(?:so that|in order that)\s+[^.;!?]*"
+    # "... so nobody drives into it", ", to keep cars off the forecourt": who is kept from what, why
+    r"|,?\s+so\s+(?:nobody|no one|nothing|no cars?|no traffic|everyone|everybody|drivers|cars|traffic)\s+[a-z']+\b[^.;!?]*"
+    r"|,?\s+(?:to|so as to|in order to)\s+(?:keep|stop|prevent|protect|warn|calm|avoid|ensure)\s+[^.;!?]*",
     re.IGNORECASE,
 )
 
@@ -480,6 +483,8 @@ def taken_back(text: str) -> tuple[str, str]:
 
 # The thing a question asks after: "how many X", "where is the X", "is there a X", "the nearest X",
 # "any X about?". A word this world does not know there is a thing it cannot answer about.
+# Words for a kind of place, not a thing: "the nearest landmark", "which buildings".
+PLACE_KIND = re.compile(r"\b(?:landmarks?|places?|buildings?|entrances?|locations?|spots?)\b")
 ASKED_ABOUT = re.compile(r"(?:\b(?:how many|where (?:is|are|do|does|did|can|could|will|would|should)(?: the| a| an| my| our| any)?"
                           r"|(?:is|are) there(?: any| an?| some)?|nearest|closest)|^\s*any) ([a-z]{3,})\b")
 
@@ -489,9 +494,33 @@ def commands(low: str) -> bool:
     return _IMPERATIVE.match(low.strip()) is not None
 
 
+# Asking to be given a thing, the subject left out or not: "can have one bus somewhere?", "could we get two cones?".
+_HAVE_ONE = re.compile(r"\s*(?:can|could|may)\s+(?:i\s+|we\s+)?(?:have|get)\s+(?:a|an|one|some|two|three|four|five|\d+|more|another)\b"
+                       r"(?!\s+(?:look|go|think|word|minute|sec|second|moment|chat|idea|sense|feel|view|list|count)\b)")
+
+
+def _setting_offered(low: str) -> bool:
+    """A few words with a question mark that name a weather or a time of day and ask nothing
+    ("sunset vibes?", "heavy rain?", "night time?"): offered as a change, not asked about."""
+    from drivetwin.orchestrator.planning.rules import (
+        lexicon as lx,  # the planners' words; intent stays importable alone
+    )
+
+    words = re.findall(r"[a-z']+", low)
+    if not low.rstrip().endswith("?") or not 0 < len(words) <= 4 or _QUESTION_START.search(low) or _INFO.search(low) \
+            or re.search(r"\b(?:or not|or no|or nah|yet|still|out|outside)\b", low):
+        return False  # "rain or not?", "dark yet?", "foggy out?": asked about
+    settings = {w for kind in lx.WEATHER_WORDS.values() for w in kind} | {w for names, _ in lx.TIME_PRESETS for w in names}
+    text = " ".join(words)
+    # a state said ("foggy?", "raining?") asks; a thing offered ("fog?", "heavy rain?", "sunset vibes?") does not
+    return any(re.search(rf"\b{re.escape(w)}\b", text) for w in settings
+               if w not in ("dark", "day", "sun", "clear weather") and not w.endswith(("y", "ing")))
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
-    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip()))
+    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip())
+                  or _setting_offered(low) or _HAVE_ONE.match(low) is not None)
     return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
         not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))
@@ -505,6 +534,7 @@ __all__ = [
     "HOW_THINGS_GO",
     "KEEP_SOME",
     "LIVELIER",
+    "PLACE_KIND",
     "REMINISCED",
     "REMOVE_WORDS",
     "REPORTED",

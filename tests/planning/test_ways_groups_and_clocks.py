@@ -122,3 +122,153 @@ def test_a_second_thing_the_world_has_is_not_flagged(context):
                        ToolCall(tool="add_asset", args={"category": "bench", "count": 1,
                                                         "location": {"relation": "next_to", "target": "bus_1"}})], planner="rules")
     assert not any("there is no" in p for p in review("add a bus at the bus stop and a bench next to it", plan, context).problems)
+
+
+@pytest.mark.parametrize(("setup", "turn", "asset", "check"), [
+    ("Move the bench next to the fountain.", "actually, put it back by the bus stop", "bench_1", "bus stop"),
+    ("Make the SUV drive east on Main Street.", "actually, just park it again", "suv_1", "parked"),
+])
+def test_it_after_a_move_or_a_behaviour_is_the_thing_that_turn_changed(session, setup, turn, asset, check):
+    assert session.submit(setup).ok
+    report = session.submit(turn)
+    assert report.ok, report.error
+    thing = session.scene.asset(asset)
+    assert thing is not None
+    if check == "parked":
+        assert thing.behaviour.kind == "parked"
+    else:
+        stop = session.scene.landmark(check)
+        assert stop is not None and abs(thing.pose.x - stop.position[0]) < 8 and abs(thing.pose.y - stop.position[1]) < 8
+
+
+def test_on_the_sidewalk_next_to_it_is_the_sidewalk_by_the_thing_just_added(session):
+    report = session.submit("Add a bus at the bus stop and a pedestrian waiting on the sidewalk next to it.")
+    assert report.ok, report.error
+    assert report.plan is not None and report.plan.calls[1].args["location"] == {"relation": "on_sidewalk", "target": "bus_1"}
+
+
+def test_a_thing_put_by_another_moved_in_the_same_request_is_judged_by_where_that_one_goes(session):
+    report = session.submit("Put the bench next to the fountain and the trash bin next to the bench.")
+    assert report.ok, report.error
+    bench, bin_ = session.scene.asset("bench_1"), session.scene.asset("trash_bin_1")
+    assert bench is not None and bin_ is not None and abs(bench.pose.x - bin_.pose.x) + abs(bench.pose.y - bin_.pose.y) < 6
+
+
+def test_less_of_a_weather_already_there_is_lighter_and_not_refused_as_unwanted(session):
+    assert session.submit("Thick fog, please.").ok
+    report = session.submit("less foggy, please")
+    assert report.ok, report.error
+    assert session.scene.environment.weather.kind == "fog" and session.scene.environment.weather.intensity < 0.9
+
+
+@pytest.mark.parametrize("prompt", ["Fence off the cones with barriers in a circle so nobody drives into them.",
+                                    "put a row of five short steel posts in front of the JTEKT doors, to keep cars off the forecourt"])
+def test_why_a_thing_is_put_somewhere_asks_for_nothing_more(session, prompt):
+    if "cones" in prompt:
+        assert session.submit("add a traffic cone at the crossroads").ok
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert not any(a.category in ("passenger_car",) and a.id not in ("passenger_car_1", "passenger_car_2")
+                   for a in session.scene.assets)
+
+
+@pytest.mark.parametrize(("prompt", "tool"), [("sunset vibes?", "set_time_of_day"), ("heavy rain?", "set_weather")])
+def test_a_setting_offered_with_a_question_mark_is_set(session, prompt, tool):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert report.plan is not None and report.plan.calls[0].tool == tool
+
+
+@pytest.mark.parametrize("prompt", ["rain or not?", "is it foggy out?", "weather?"])
+def test_a_setting_asked_about_is_not_set(session, prompt):
+    report = session.submit(prompt)
+    assert session.scene.environment.weather.kind == "clear", report
+
+
+def test_the_nearest_landmark_to_a_thing_is_answered_not_refused(session):
+    report = session.submit("What is the nearest landmark to suv_1?")
+    assert report.ok, report.error
+    assert "parking lot B" in (report.answer or "")
+
+
+def test_clearing_a_lot_removes_what_stands_in_it(session):
+    assert session.submit("clear lot B").ok
+    assert not any(a.id in ("passenger_car_1", "passenger_car_2", "suv_1") for a in session.scene.assets)
+
+
+def test_the_parked_ones_are_those_standing_not_the_one_driving(session):
+    assert session.submit("Add a car driving east on Main Street.").ok
+    report = session.submit("the parked cars should all be grey, not the moving one")
+    assert report.ok, report.error
+    assert session.scene.asset("passenger_car_3").appearance.rgba is None
+    assert session.scene.asset("passenger_car_1").appearance.rgba is not None
+
+
+def test_one_of_several_moves_one(session, campus):
+    report = session.submit("move one of the cars to the west car park instead of lot B")
+    assert report.ok, report.error
+    moved = [i for i in ("passenger_car_1", "passenger_car_2", "suv_1")
+             if session.scene.asset(i).pose.x != campus.asset(i).pose.x]
+    assert len(moved) == 1
+    lot_a = session.scene.landmark("parking lot A")
+    assert lot_a is not None and abs(session.scene.asset(moved[0]).pose.x - lot_a.position[0]) < 20
+
+
+def test_walking_pace_is_a_speed(context):
+    plan = RulePlanner().plan("Our car should crawl along at walking pace.", context)
+    assert plan.calls[0].args["behaviour"]["speed"] == pytest.approx(1.4)
+
+
+@pytest.mark.parametrize(("said", "meant"), [("delte all the tress", "trees"), ("line up 3 bueses in lot b", "buses")])
+def test_a_slip_in_a_things_place_is_that_thing_even_when_the_slip_is_a_word(said, meant, campus):
+    from drivetwin.orchestrator.planning.rules.spelling import repair
+
+    assert meant in repair(said, campus).text.split()
+    assert "three" in repair("the three cars", campus).text.split()  # a number is never a thing
+
+
+def test_a_description_near_two_kinds_is_asked_about_with_both_readings(session):
+    report = session.submit("We need the big vehicle that carries lots of passengers waiting at the shuttle stop.")
+    assert not report.ok and report.question is not None
+    kinds = {c.args.get("category") for reading in report.question.readings for c in reading.calls}
+    assert {"bus", "truck"} <= kinds and "passenger_car" not in kinds
+    assert session.scene.count("bus") == 0  # nothing applied while asking
+
+
+def test_a_clear_description_is_read_as_its_thing(session):
+    report = session.submit("I no longer want the red thing firefighters use on the pavement")
+    assert report.ok, report.error
+    assert session.scene.count("fire_hydrant") == 0
+
+
+def test_it_after_an_addition_is_that_one_thing_once(session):
+    assert session.submit("Add a bus at the bus stop.").ok
+    report = session.submit("now paint it yellow")
+    assert report.ok, report.error
+    assert report.plan is not None and report.plan.calls[0].args["assets"] == ["bus_1"]
+
+
+def test_a_thing_named_by_its_id_needs_no_which_one(session):
+    report = session.submit("put teh sedan passenger_car_1 at the jtekt entrnce")
+    assert report.ok, report.error
+
+
+@pytest.mark.parametrize(("prompt", "gone"), [("could you lose a couple of the lamps?", 2),
+                                              ("Please to remove both of the signal poles at the crossroads.", 2)])
+def test_a_couple_or_both_of_the_things_is_two(session, campus, prompt, gone):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    kind = "street_light" if "lamps" in prompt else "traffic_light"
+    assert campus.count(kind) - session.scene.count(kind) == gone
+
+
+def test_a_material_typed_with_a_slip_is_that_material(session):
+    report = session.submit("make the bech wodden pls")
+    assert report.ok, report.error
+    assert session.scene.asset("bench_1").appearance.material == "wood"
+
+
+def test_can_have_one_without_a_subject_asks_for_one(session):
+    report = session.submit("can have one bus somewhere?")
+    assert report.ok, report.error
+    assert session.scene.count("bus") == 1

@@ -106,6 +106,10 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         present = [a.id for a in scene.assets if a.category in kinds]
         if _scoped_by_place(r, mention, anywhere=bool(REMOVE_WORDS.search(r.low))):
             present = _at_place(scene, str(r.landmark), present)
+        state = _STATE_BEFORE.search(r.low[: mention.start]) or _STATE_AFTER.match(r.low[mention.end :])
+        if state is not None:  # "the parked cars", "the cars that are moving": those doing so now
+            still = state.group(1) in ("parked", "stationary", "stopped")
+            present = [i for i in present if (a := scene.asset(i)) is not None and (a.behaviour.kind == "parked") == still]
         side = side_of(r.low, scene)
         if side is not None:  # "the street lights on the south side": those on that side
             present = [i for i in present if (a := scene.asset(i)) is not None and side[1](a)]
@@ -117,6 +121,8 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             point = _point_of(r, scene, memory)
             if point is not None:
                 return [(max if furthest else min)(present, key=lambda i: _distance_to(scene, i, point))]
+        if _ONE_OF.search(r.low[: mention.start]):  # "move one of the cars to lot A": one, never all of them
+            return recent[-1:] if recent else present[:1]
         if mention.plural or r.has(("all", "every", "each", "both")):
             return present
         outermost = _outermost(r, scene, mention, present)
@@ -133,8 +139,16 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
     if r.has(_POINTING) or _THAT_LAST.search(r.low):
         if notes.subject:
             return notes.subject
-        return _asked_about(memory, scene) or [i for i in memory.last_added() if scene.asset(i) is not None]
+        # "move the bench to the fountain" then "actually, put it back by the bus stop": what the last edit touched
+        return _asked_about(memory, scene) or [i for i in memory.last_touched() if scene.asset(i) is not None]
     return []
+
+
+# One picked from a group: "one of the cars", "just one of those family cars".
+_ONE_OF = re.compile(r"\b(?:one|any one|just one|only one|either) of (?:the |those |these |our |my )?(?:[a-z]+\s+){0,2}$")
+# A state said of the things named: "the parked cars", "the cars that are moving".
+_STATE_BEFORE = re.compile(r"\b(parked|stationary|stopped|moving|driving)\s+$")
+_STATE_AFTER = re.compile(r"\s+(?:that are |which are |that's |currently |still )(parked|stationary|moving|driving)\b")  # not "get the suv moving"
 
 
 def _asked_about(memory: Memory, scene: Scene) -> list[str]:
@@ -786,7 +800,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         notes.subject = [asset]  # "the suv drives to the main gate": into the lane that leads there, where it stands
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": drive[0]})]
     vehicle = found is not None and kind in (None, "drive_lane") and catalog()[found.category].motion == "vehicle"
-    if vehicle and (route := walk_said(r, scene, exclude=ids)) is not None and route.start is None:
+    went = GOES_TO.search(r.low)  # "could the suv go to the other car park": where it is to be, not a drive
+    if vehicle and went is not None and not re.match(r"(?:go|goes|going|gone|went)\b", went.group(0)) \
+            and (route := walk_said(r, scene, exclude=ids)) is not None and route.start is None:
         # "the suv makes its way to the library entrance", where no lane leads: there by path, never a jump there
         speed = ph.find_speed(r.text)
         behaviour = {"kind": "follow_path", "to": route.behaviour["to"], **({"speed": speed} if speed else {})}

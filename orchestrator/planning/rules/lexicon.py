@@ -19,7 +19,7 @@ PROPERTY_WORDS = ("mass", "masses", "weight", "weights", "weigh", "weighs", "how
 REMOVE_WORDS = ("remove", "delete", "get rid of", "take away", "take out", "clear away", "erase",
                 "eliminate", "despawn", "clear out", "destroy", "lose", "ditch", "scrap", "decommission",
                 "throw away", "throw out", "take down", "dispose of", "clean up",
-                "tidy up", "clear the", "clear it", "clear them", "empty", "emptied", "cleared of", "no more", "none left", "none of", "without any", "gone")
+                "tidy up", "clear the", "clear it", "clear them", "clear lot", "clear parking lot", "empty", "emptied", "cleared of", "no more", "none left", "none of", "without any", "gone")
 # "X is over", "the pedestrians went home": the goal is that X is gone.
 GONE_WORDS = ("is over", "are over", "is finished", "are finished", "is done", "are done",
               "went home", "go home", "have left", "has left", "were collected", "was collected",
@@ -88,7 +88,7 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
                    "use the zebra", "uses the zebra", "across the road", "across the street", "over the road"),
     # matched with their inflections ("drive" is "drives", "driving"; "set off" is "setting off"; see edits.py)
     "drive_lane": ("drive", "drove", "move along", "cruise", "leave", "head", "pull away", "pull out", "go",
-                   "start moving", "get going", "set off", "travel", "ride", "pedal", "cycle along", "roll along", "under way", "underway", "proceed"),
+                   "start moving", "get going", "set off", "travel", "ride", "pedal", "cycle along", "roll along", "under way", "underway", "proceed", "crawl"),
     "parked": ("parked", "park", "parking", "stationary", "stopped"),
 }
 # Mass or collective nouns for catalog things: the words a person uses, not the catalog's.
@@ -101,7 +101,7 @@ CONCEPTS: dict[str, tuple[str, ...]] = {
     "trash_bin": ("rubbish", "litter", "garbage"), "passenger_car": ("traffic",),  # after "foot traffic"
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.
-COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6,
+COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "both": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6,
                      "row": 0, "line": 0, "ring": 0, "circle": 0, "group": 0, "set": 0, "cluster": 0, "crowd": 8}
 ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "last": -1, "other": 2}
 # Things whose colour people name instead of the colour.

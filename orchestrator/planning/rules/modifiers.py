@@ -134,7 +134,7 @@ def layout_said(text: str) -> str | None:
 _MATERIALS = frozenset(m for m in typing.get_args(typing.get_args(AssetLookArgs.model_fields["material"].annotation)[0])
                        if m != "default")
 # Adjective forms of the materials ("wooden bench", "metallic car").
-_MATERIAL_WORDS = {**{m: m for m in _MATERIALS}, "wooden": "wood", "metallic": "metal", "shiny": "glossy",
+MATERIAL_WORDS = {**{m: m for m in _MATERIALS}, "wooden": "wood", "metallic": "metal", "shiny": "glossy",
                    "planks": "wood", "timber": "wood", "steel": "metal", "aluminium": "metal", "iron": "metal", "chrome": "metal",
                    "cement": "concrete", "stone": "concrete", "glossy": "glossy", "gloss": "glossy", "matt": "matte"}
 
@@ -142,7 +142,7 @@ _MATERIAL_WORDS = {**{m: m for m in _MATERIALS}, "wooden": "wood", "metallic": "
 def material_said(text: str) -> str | None:
     """The material the words ask a thing to look like ("wooden benches"), as the appearance
     Worker names it."""
-    return next((_MATERIAL_WORDS[w] for w in re.findall(r"[a-z]+", text.lower()) if w in _MATERIAL_WORDS), None)
+    return next((MATERIAL_WORDS[w] for w in re.findall(r"[a-z]+", text.lower()) if w in MATERIAL_WORDS), None)
 
 
 # A colour that picks a thing out or says what it is, not what to make it: "the red one", "the blue car", "not red", "is red".
@@ -183,5 +183,5 @@ SMALL_MOVE = (*SMALL, "a touch", "a tad", "a smidge", "a fraction", "a few inche
               "budge", "scoot")
 
 
-__all__ = ["COMPASS_VECTORS", "SMALL", "SMALL_MOVE", "catalog_tags", "compass_direction", "facing_direction", "groups_said",
+__all__ = ["COMPASS_VECTORS", "MATERIAL_WORDS", "SMALL", "SMALL_MOVE", "catalog_tags", "compass_direction", "facing_direction", "groups_said",
            "kind_of", "layout_said", "material_said", "outer_direction", "partitive_count"]

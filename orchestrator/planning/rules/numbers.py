@@ -145,7 +145,13 @@ def spelt_measures(text: str) -> str:
     text = _UNIT_AND_A_HALF.sub(_half_before_unit, text)
     text = _ONE_CAR_LENGTH.sub(f"{CAR_LENGTH_M:g} m", _SPELT_MEASURE.sub(figures, text))
     text = _MULTIPLES.sub(lambda m: f"{_spelt_value(m.group(1)) * _MULTIPLE_OF[m.group(2).lower()]:g}", text)
+    text = _PACE.sub(lambda m: f"{_PACE_MS[m.group(1).lower()]:g} m/s", text)
     return _OTHER_LENGTHS.sub(metres, text)
+
+
+# A speed said as a person's pace: "at walking pace" is 1.4 m/s (5 km/h), a jog 2.5, a run 3.5.
+_PACE_MS = {"walking": 1.4, "walk": 1.4, "jogging": 2.5, "jog": 2.5, "running": 3.5, "run": 3.5}
+_PACE = re.compile(r"\b(?:a\s+)?(walking|walk|jogging|jog|running|run)(?:ning)?\s+(?:pace|speed)\b", re.IGNORECASE)
 
 
 def parse(text: str) -> float:

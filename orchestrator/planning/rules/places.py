@@ -567,7 +567,8 @@ def location(
         named = [i for i in [*notes.subject, *notes.earlier, *memory.last_touched()]
                  if i not in exclude and scene.asset(i) is not None]
         if notes.coming or named:
-            return {"relation": relation_of(r.low), "target": (notes.coming or named)[-1 if notes.coming else 0]}
+            on_walk = r.has(("sidewalk", "pavement", "footpath")) and not _OFF_SIDEWALK.search(r.low)  # "on the sidewalk next to it"
+            return {"relation": "on_sidewalk" if on_walk else relation_of(r.low), "target": (notes.coming or named)[-1 if notes.coming else 0]}
     if target is None and r.has(("there", "same place", "same spot", "nearby", "around it", "near it", "that spot")):
         if notes.place is not None:
             return dict(notes.place)

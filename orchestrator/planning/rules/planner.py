@@ -18,6 +18,7 @@ from typing import Any
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, TraceStep
 from drivetwin.orchestrator.planning.base import Reading as Choice
+from drivetwin.orchestrator.planning.descriptions import unsure
 from drivetwin.orchestrator.planning.intent import (
     BARE_STATE,
     FEWER_WORDS,
@@ -505,6 +506,24 @@ class RulePlanner:
                             question=Question(text=f"Which {kind} do you mean?", readings=readings))
         return None
 
+    def _which_thing(self, prompt: str, context: PlanContext) -> Plan | None:
+        """A question offering the request with each of the two names a description comes near
+        when it comes no nearer one than the other; None when every description is clear."""
+        for said in unsure(prompt, context.scene)[:1]:
+            plans = []
+            for name in (said.name, said.runner_up):
+                try:
+                    plans.append(self._plan(prompt[: said.start] + said.said_as(name) + prompt[said.end :], context, which_place=False))
+                except PlanningError:
+                    continue
+            readings = [Choice(text=describe(p.calls), calls=p.calls) for p in plans if p.calls and p.question is None]
+            if len(readings) >= 2:
+                step = TraceStep(level="rules", input=prompt, output=f"{said.said!r} is near {said.name} and {said.runner_up}; asking")
+                names = " or ".join(said.said_as(n) for n in (said.name, said.runner_up))
+                return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
+                            question=Question(text=f"By {said.said!r}, do you mean {names}?", readings=readings))
+        return None
+
     def _each_place(self, prompt: str, context: PlanContext) -> Plan | None:
         """The request done at each place of a kind it says every one of ("a stop sign at every
         crosswalk", "cones at both gates"); None when it says no such thing."""
@@ -529,6 +548,8 @@ class RulePlanner:
         each = self._each_place(prompt, context)
         if each is not None:
             return each
+        if which_place and (doubt := self._which_thing(prompt, context)) is not None:
+            return doubt  # "the big vehicle that carries lots of passengers": a bus or a truck?
         started = time.perf_counter()
         scene = context.scene
         repaired = repair(prompt, scene)

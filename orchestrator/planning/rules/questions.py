@@ -18,7 +18,7 @@ from dataclasses import dataclass, replace
 from typing import Any, Literal
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.intent import ASKED_ABOUT
+from drivetwin.orchestrator.planning.intent import ASKED_ABOUT, PLACE_KIND
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -78,7 +78,7 @@ _LANE_KIND = re.compile(r"\blanes?\b")
 # A lane named as where something is: the object of "on", "in", "along" ("in the northbound lane").
 _LANE_AS_PLACE = re.compile(r"\b(?:on|in|along|across|into|onto|block\w*|occupy\w*|obstruct\w*)\s+(?:(?:the|a|any|our|its|either)\s+)?(?:\S+\s+)?$")
 _ROAD_KIND = re.compile(r"\b(?:roads?|streets?)\b")
-_PLACE_KIND = re.compile(r"\b(?:landmarks?|places?|buildings?|entrances?|locations?|spots?)\b")
+_PLACE_KIND = PLACE_KIND
 _ANY_KIND = re.compile(rf"\b(?:{'|'.join(lx.GENERIC_THINGS)}|what|what's|whats|who)\b")
 _WHERE = re.compile(r"\b(?:where|located|location|position|coordinates)\b")
 # Properties beyond the size and mass words of the lexicon: look, pose and motion.
@@ -195,8 +195,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
                origin: Anchor | None = None) -> Part | None:
     low = r.low
     asked_about = ASKED_ABOUT.search(r.masked)
-    if asked_about and not is_known(asked_about.group(1), vocabulary(scene)) \
-            and not any(m.start <= asked_about.start(1) < m.end for m in r.mentions):
+    if asked_about and not is_known(asked_about.group(1), vocabulary(scene)) and not _PLACE_KIND.fullmatch(asked_about.group(1)) \
+            and not any(m.start <= asked_about.start(1) < m.end for m in r.mentions):  # "the nearest landmark" is a place
         # "how many helicopters are parked?", "how far's the nearest servo?", "any roos about?": about
         # a thing this world has no word for, so no count and no nearest thing of another kind
         from drivetwin.orchestrator.planning.base import PlanningError  # rules/__init__ imports the planner

@@ -20,6 +20,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import CLOCK_WORDS
 from drivetwin.orchestrator.planning.rules.inflection import forms
+from drivetwin.orchestrator.planning.rules.modifiers import MATERIAL_WORDS
 from drivetwin.orchestrator.planning.rules.numbers import spelt_measures
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
@@ -91,6 +92,9 @@ _REPAIRABLE_GRAMMAR = (
     "many",
     "forward",
     "backward",
+    "ahead",  # "15m ahaed of ego"
+    "across",
+    "along",
     "degrees",
     "metres",
     "meters",
@@ -200,7 +204,7 @@ def _pattern_words() -> frozenset[str]:
 
 @cache
 def _domain_words() -> frozenset[str]:
-    words = _words_of(COLOURS) | _words_of(lx.COLOUR_OF)
+    words = _words_of(COLOURS) | _words_of(lx.COLOUR_OF) | set(MATERIAL_WORDS)  # "wodden": wooden
     for table in (
         lx.SEARCH_STARTS,
         lx.PROPERTY_WORDS,
@@ -372,6 +376,8 @@ _LOT_BY_ITS_ENTRANCE = re.compile(r"\b(?:in|at|into|inside) ((?:the )?(?:parking
                                   r"(?:the|its) (?:entrance|entry|way in)\b", re.IGNORECASE)
 # "the west crossing": the crosswalk on that side (the world names its crossings crosswalks).
 _COMPASS_CROSSING = re.compile(r"\b(north|south|east|west)(?:ern)? crossing\b", re.IGNORECASE)
+# "the west car park": the parking lot on that side ("car park" alone names one lot).
+_COMPASS_CAR_PARK = re.compile(r"\b(north|south|east|west)(?:ern)? car ?park\b", re.IGNORECASE)
 # "not so close to the kerb" asks for it further from the kerb.
 _NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
 # A little word typed twice: "the the one".
@@ -602,9 +608,46 @@ def _verb_of(m: re.Match[str]) -> str:
 # An asset id as written ("passenger_car_2", "suv_1").
 ASSET_ID = re.compile(r"\b[A-Za-z]+(?:_[A-Za-z]+)*_\d+\b")
 _COMMAND_SLOT = re.compile(r"(?:^|[,.;:!?]|\b(?:and|then|now|so|pls|please|just))\s*$", re.IGNORECASE)
-_THING_NEXT = re.compile(r"\s+(?:the|a|an|all|every|some|that|those|this|these|\d+)\b", re.IGNORECASE)
+_THING_NEXT = re.compile(r"\s+(?:the|a|an|all|every|some|that|those|this|these|\d+|[a-z_]+_\d+)\b", re.IGNORECASE)
 # A command verb and its article or count: the slip after it names the thing ("add a coner": cone).
 _THING_SLOT = re.compile(rf"\b(?:{'|'.join(_COMMAND_VERBS)})\s+(?:a|an|the|some|another|\d+)\s+$", re.IGNORECASE)
+
+
+# Where a thing's name stands: after an article, a determiner or a count ("all the tress", "3 bueses").
+_AFTER_DETERMINER = re.compile(r"\b(?:a|an|the|some|all|both|those|these|my|our|\d+)\s+$", re.IGNORECASE)
+_AFTER_COUNT = re.compile(r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|twelve|several|many)\s+$", re.IGNORECASE)
+
+
+def _thing_slip(word: str, before: str, vocab: frozenset[str]) -> str | None:
+    """The catalog word one slip from `word` in a thing's place, its plural kept ("tress" ->
+    "trees", "bueses" -> "buses", "buss" -> "bus"), even when the slip is an English word; None
+    when the word is known, a number, or one slip from no thing or from more than one."""
+    low = word.lower()
+    if len(low) < MIN_REPAIR_LEN or not _AFTER_DETERMINER.search(before) or low in ph.NUMBER_WORDS or is_known(low, vocab):
+        return None
+    word_slip = is_english(low)  # "tress", "buss": a word typed for a thing, never a thing longer ("a tuck" is no truck)
+    if not word_slip and not _AFTER_COUNT.search(before):
+        return None  # "the coner of the lot": the usual repair, which reads the words around it
+    plural = low.endswith("s") and len(low) > MIN_REPAIR_LEN
+    stems = [(low, False)] + ([(low[:-1], True), (low[:-2], True)] if plural else [])
+    hits = {(t, many) for stem, many in stems for t in _thing_words()
+            if len(t) >= 3 and edits(stem, t) <= 1 and (not word_slip or len(stem) >= len(t))}
+    if len({t for t, _ in hits}) != 1:
+        return None
+    thing, many = min(hits, key=lambda h: h[1])  # as written before a plural reading
+    return thing + ("es" if thing.endswith(("s", "sh", "ch", "x")) else "s") if many else thing
+
+
+def _without_place_left(text: str, scene: Scene) -> str:
+    """`text` without the place a thing is to leave, said after "instead of" or "rather than" when
+    another place is said ("... in the west car park instead of lot B"): where it goes is the other."""
+    names = sorted({n for lm in scene.landmarks for n in lm.names()}, key=len, reverse=True)
+    said = "|".join(re.escape(n) for n in names)
+    left = re.search(rf",?\s+(?:instead of|rather than) (?:the )?(?:{said})\b", text, re.IGNORECASE)
+    if left is None:
+        return text
+    rest = text[: left.start()] + text[left.end() :]
+    return rest if re.search(rf"\b(?:{said})\b", rest, re.IGNORECASE) else text
 
 
 @cache
@@ -641,6 +684,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _VICINITY.sub("near", text)
     text = _LOT_BY_ITS_ENTRANCE.sub(r"\2 \1 entrance", text)
     text = _COMPASS_CROSSING.sub(r"\1 crosswalk", text)
+    text = _COMPASS_CAR_PARK.sub(r"\1 parking lot", text)
+    text = _without_place_left(text, scene)
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
@@ -661,6 +706,10 @@ def repair(text: str, scene: Scene) -> Repaired:
         word = m.group(0)
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
+        slip = _thing_slip(word, text[: m.start()], vocab)
+        if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away
+            repairs.append(f"{word} -> {slip}")
+            return slip
         new = _place_glued(word, scene) or _repair_word(word, vocab) or _split_glued(word, scene, vocab)
         if new is not None and " " not in new and _word_only_inflected(word.lower()) and edits(word.lower(), new) >= 2:
             new = None  # "scatter" is a word the vocabulary holds only as "scattered", not a slip for "scooter"
