@@ -33,6 +33,7 @@ from drivetwin.evals import (
     practice21_source,
     practice22_source,
     practice23_source,
+    practice24_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -95,6 +96,9 @@ BRIEFS: dict[str, Brief] = {
     # Eight everyday voices: test engineer, safety driver, researcher, product manager, student, two non-native
     # speakers, someone in a hurry; every cell holds 11.
     "practice23": Brief(280, 10, 10, practice23_source, multi_turn=30, planned=15, compound=18),
+    # Eight everyday voices: QA tester, driving instructor, traffic planner, simulation engineer, teacher, retired
+    # volunteer, delivery driver, a Spanish or German speaker; search and moving hold 11 in every grade, the rest 10.
+    "practice24": Brief(280, 10, 10, practice24_source, multi_turn=30, planned=15, compound=18),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
