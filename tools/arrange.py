@@ -204,7 +204,8 @@ def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list
             start += location.distance or 0.0
     spacing = args.spacing or 3.0
     count = args.count or 8
-    start = row_start(scene, lane.centreline, start, spacing, count)
+    # a start said along the lane ("starting 15 m ahead of the ego") is kept or moved on, never moved back behind it
+    start = row_start(scene, lane.centreline, start, spacing, count, onward_only=location.along_m is not None)
     # Right of the direction of travel unless told otherwise, just inside the lane.
     offset = location.offset_m if location.offset_m is not None else lane.width / 2 - max(sizes) / 2 - 0.2
     if location.side == "left":
@@ -220,11 +221,13 @@ def _lane_edge(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list
 ROW_SLIDE_MAX_M = 25.0
 
 
-def row_start(scene: Scene, line: list[tuple[float, float]], start: float, spacing: float, count: int) -> float:
+def row_start(scene: Scene, line: list[tuple[float, float]], start: float, spacing: float, count: int,
+              onward_only: bool = False) -> float:
     """Where a row along a lane starts: `start`, else the nearest start (ahead or back, by up to
     ROW_SLIDE_MAX_M or the row's length) whose row stays on the lane, short of its ends, and out of
     the areas it crosses (a junction): "line the eastbound lane" is not lined through the crossroads,
-    nor "the lane by the main gate" past the world's edge."""
+    nor "the lane by the main gate" past the world's edge. `onward_only`: a start that was said is
+    only ever moved on along the lane, and kept when no later one is clear."""
     length = polyline_length(line)
     row = (count - 1) * spacing
     areas = [lm.polygon for lm in scene.landmarks if lm.kind == "area" and lm.polygon]
@@ -238,7 +241,7 @@ def row_start(scene: Scene, line: list[tuple[float, float]], start: float, spaci
     reach = max(ROW_SLIDE_MAX_M, row)
     steps = int(reach / spacing) if spacing > 0 else 0
     for k in range(steps + 1):
-        for at in ((start,) if k == 0 else (start + k * spacing, start - k * spacing)):
+        for at in ((start,) if k == 0 else (start + k * spacing,) if onward_only else (start + k * spacing, start - k * spacing)):
             if clear(at):
                 return at
     return start

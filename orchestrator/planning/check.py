@@ -78,6 +78,7 @@ from drivetwin.orchestrator.planning.intent import (
     HOW_THINGS_GO,
     KEEP_SOME,
     LIVELIER,
+    QUIETER,
     REMOVE_WORDS,
     asks,
     commands,
@@ -261,6 +262,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked for things to go away, but the plan adds " + _names(effect.added))
     if LIVELIER.search(request.low) and effect.removed and not request.question:  # "liven them up"
         out.append("you asked for more life, but the plan takes away " + _names(effect.removed))
+    if QUIETER.search(request.low) and (effect.added or (effect.changed and not effect.removed)) and not request.question:
+        out.append("you asked for less going on, but the plan " + ("adds " + _names(effect.added) if effect.added else "only moves things"))
     if BARE_STATE.search(request.low) and effect.removed and not request.question:
         # "the bus stop feels empty": what is missing is wanted, never the rest taken away
         out.append("you said it is empty, but the plan takes away " + _names(effect.removed))

@@ -17,6 +17,7 @@ from functools import cache
 from typing import Any
 
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
+from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import Scene
 
@@ -24,28 +25,54 @@ from drivetwin.worlds.scene import Scene
 # paraphrase of a catalog description scores 0.5-0.65, unrelated short phrases 0.1-0.35).
 THING_FLOOR, THING_LEAD = 0.45, 0.10
 PLACE_FLOOR, PLACE_LEAD = 0.40, 0.08
+# With one candidate left (the one place that way), no lead can be measured: it must be this close on its own.
+ALONE_FLOOR = 0.65
 # The longest clause read after the head, in words.
 MAX_CLAUSE_WORDS = 10
 
 _THING_HEADS = ("thing", "things", "object", "objects", "item", "items", "device", "devices", "contraption", "gadget")
 _VEHICLE_HEADS = ("vehicle", "vehicles")
-_PLACE_HEADS = ("place", "building", "spot", "location", "site")
+_PLACE_HEADS = ("place", "building", "spot", "location", "site", "entrance", "exit", "way in", "way out")
 # What opens a describing clause after the head: "that carries ...", "where the books are kept",
 # "you throw rubbish in", "firefighters hook their hoses to" (a plural noun doing something).
-_CLAUSE_START = r"(?:that|which|who|where|whose|with|for|you|we|people|they|everyone|[a-z]+ers|[a-z]+ists|students)"
-_SPAN = re.compile(
-    r"\b(the|a|an|that|those|these|this|some)\s+((?:[a-z0-9'-]+\s+){0,3}?)("
-    + "|".join((*_THING_HEADS, *_VEHICLE_HEADS, *_PLACE_HEADS))
-    + rf")\b((?:\s+{_CLAUSE_START}\b[^,.;:!?\n]*)?)",
-    re.IGNORECASE,
-)
+_CLAUSE_START = r"(?:that|which|who|where|whose|with|for|you|we|people|they|everyone|[a-z]+ers|[a-z]+ists|students|of the campus|of campus)"
+# Catalog tags that are not nouns a person calls a thing by.
+_NOT_HEADS = frozenset(["ego", "actor", "npc", "permanent", "temporary", "vulnerable", "vru", "maintenance", "street furniture"])
+# Modifiers that pick one out rather than say what it is: a colour or what it is doing ("the red car", "the parked cars").
+_PICKING = frozenset([*COLOURS, "parked", "moving", "driving", "stopped", "stationary", "nearest", "closest", "furthest"])
+
+
+@cache
+def _groups() -> dict[str, frozenset[str]]:
+    """Head words for a group of categories, singular and plural: "sign" and "signs" are the signs."""
+    out: dict[str, set[str]] = {}
+    for c in catalog().values():
+        for tag in c.tags:
+            if tag not in _NOT_HEADS and " " not in tag and c.name != "ego_vehicle":
+                for word in (tag, f"{tag}s"):
+                    out.setdefault(word, set()).add(c.name)
+    return {w: frozenset(kinds) for w, kinds in out.items()}
+
+
+@cache
+def _span() -> re.Pattern[str]:
+    heads = sorted({*_THING_HEADS, *_VEHICLE_HEADS, *_PLACE_HEADS, *_groups()}, key=len, reverse=True)
+    return re.compile(
+        r"(?:\b(the|a|an|that|those|these|this|some)\s+|^\s*|(?<=[,.;:!?]\s))((?:[a-z0-9'-]+\s+){0,3}?)(" + "|".join(heads)
+        + rf")\b((?:\s+{_CLAUSE_START}\b[^,.;:!?\n]*)?)",
+        re.IGNORECASE,
+    )
 # Where the describing clause ends and the request goes on: a place said after it ("... in by the
 # bus stop"), what the thing is to be doing ("... waiting at the stop"), or the request's own verb.
-_CLAUSE_END = re.compile(r"\s(?=(?:at|by|near|next to|beside|behind|outside|inside|in front of|on|onto|into|in|over|across|along|from|to)"
+_CLAUSE_END = re.compile(r"\s(?=(?:at|by|near|next to|beside|behind|outside|inside|in front of|on|onto|into|in|over|across|along|from|to"
+                         r"|before|after|past|beyond|around|round|opposite|between|under|above)"
                          r"\s+(?:the|a|an|lot|parking|main|campus|our|my|this|that)\b|[a-z]+ing\b|(?:should|must|will|would|can|could|"
-                         r"needs?|has|have|had|is|was|gets?|goes|please|and|then|but|so)\b)")
+                         r"needs?|has|have|had|is|was|gets?|goes|please|and|then|but|so|instead|now|too|again)\b)")
+_NOT_MODIFIERS = frozenset(["a", "an", "the", "then", "and", "or", "put", "add", "place", "some", "this", "that", "those",
+                            "these", "to", "of", "in", "at", "on", "by", "with", "is", "are", "be"])
+_COMPASS = re.compile(r"\b(north|south|east|west)", re.IGNORECASE)
 # Modifiers that say which one, not what kind: "the same spot", "that other thing", "the first vehicle".
-_POINTING = frozenset(["same", "other", "first", "second", "third", "last", "next", "previous", "one", "new", "old", "whole", "only", "each", "every"])
+_POINTING = frozenset(["our", "my", "your", "their", "his", "her", "its", "same", "other", "first", "second", "third", "last", "next", "previous", "one", "new", "old", "whole", "only", "each", "every"])
 
 
 @dataclass(frozen=True)
@@ -111,6 +138,11 @@ def _read(m: re.Match[str], scene: Scene) -> Described | None:
     modifiers, head, clause = m.group(2).strip(), m.group(3).lower(), m.group(4).strip()
     if set(modifiers.lower().split()) & _POINTING or (not clause and not modifiers):
         return None  # "the same spot", "the vehicle": which one, said before
+    single = len(_groups().get(head, ())) == 1  # "orange markers": the one kind of marker there is
+    if not clause and set(modifiers.lower().split()) <= _PICKING and not single:
+        return None  # "the red car", "the parked vehicles": which ones, not what kind
+    if set(modifiers.lower().split()) & _NOT_MODIFIERS:
+        return None  # "put a construction sign", "then a parking sign": a verb or an article, no description
     place = head in _PLACE_HEADS
     if place and not clause:
         return None  # "that nice spot": a place pointed at, not described
@@ -124,30 +156,55 @@ def _read(m: re.Match[str], scene: Scene) -> Described | None:
         names, texts = _place_text(scene)
         if not names:
             return None
-        name, score, lead, runner_up = _best(phrases, names, _place_vectors(texts), list(range(len(names))))
+        allowed = list(range(len(names)))
+        text_said = phrases[-1].lower()
+        inside = [lm.name for lm in scene.landmarks if any(re.search(rf"\b{re.escape(n.lower())}\b", text_said) for n in lm.names())]
+        if inside:  # "the lot B exit where it meets Main Street": of the places named there
+            allowed = [i for i in allowed if any(n.lower() in names[i].lower() for n in inside)]
+        way = _COMPASS.search(" ".join(phrases[-1:]))
+        if way is not None:  # "the east entrance of the campus": a place that way, never the west one
+            allowed = [i for i in allowed if re.search(rf"\b{way.group(1)}", texts[i], re.IGNORECASE)]
+            if not allowed:
+                return None
+        name, score, lead, runner_up = _best(phrases, names, _place_vectors(texts), allowed)
+        if len(allowed) == 1 and score < ALONE_FLOOR:
+            return None  # "the north entrance of the campus": the north crosswalk is the only place that way, and no entrance
     else:
         kinds, vectors = _category_vectors()
-        allowed = [i for i, k in enumerate(kinds) if head not in _VEHICLE_HEADS or catalog()[k].motion == "vehicle"]
+        group = _groups().get(head) if head not in _THING_HEADS else None
+        allowed = [i for i, k in enumerate(kinds) if group is None or k in group]
+        if not allowed:
+            return None
         name, score, lead, runner_up = _best(phrases, kinds, vectors, allowed)
-        if head in _VEHICLE_HEADS and name == "passenger_car" and lead >= THING_LEAD:
-            return None  # a vehicle that is a car: the words already say so
+        # imported here: rules/__init__ imports the planner, which imports this module
+        from drivetwin.orchestrator.planning.rules.lexicon import CONCEPTS
+        from drivetwin.orchestrator.planning.rules.phrases import find_categories, has_any, normalise
+
+        said = f"{modifiers} {head}"
+        plain, indexed = find_categories(said), normalise(said)
+        concept = has_any(said, tuple(w for words in CONCEPTS.values() for w in words if " " in w))
+        if concept or any(indexed[p.start : p.end].strip() != head for p in plain):
+            return None  # "a parking sign", "a warning sign": words that name a thing already
+        if any(p.category == name for p in plain) and lead >= THING_LEAD:
+            return None  # "the red-roofed car" that is a car: the words already say so
     end = m.start(4) + (len(m.group(4)) - len(m.group(4).lstrip())) + len(" ".join(words))
     plural = head.endswith("s") and not head.endswith("ss")
-    return Described(m.group(0)[: end - m.start()].strip(), name, score, lead, runner_up, m.start(), end, m.group(1), plural)
+    start = m.start(1) if m.group(1) else m.start(2)
+    return Described(m.string[start:end].strip(), name, score, lead, runner_up, start, end, m.group(1) or "the", plural)
 
 
 def _all_read(text: str, scene: Scene) -> list[Described]:
     """Every description in `text` with its best and next best names, in order."""
     found: list[Described] = []
-    for m in _SPAN.finditer(text):
-        if found and m.start() < found[-1].end:
-            continue
+    at = 0
+    while (m := _span().search(text, at)) is not None:
         try:
             read = _read(m, scene)
         except GroundingUnavailable:
             return []
         if read is not None:
             found.append(read)
+        at = read.end if read is not None else m.start() + 1  # "remove the thing you ...": tried again from "the"
     return found
 
 
@@ -159,8 +216,7 @@ def unsure(text: str, scene: Scene) -> list[Described]:
 
 
 # A description with a clause of its own ("... vehicle that carries lots of passengers"), not only adjectives.
-_CLAUSE_OPENS = re.compile(rf"\s+(?:[a-z0-9'-]+\s+){{0,3}}?(?:{'|'.join((*_THING_HEADS, *_VEHICLE_HEADS, *_PLACE_HEADS))})\s+{_CLAUSE_START}\b",
-                           re.IGNORECASE)
+_CLAUSE_OPENS = re.compile(rf"\s+(?:[a-z0-9'-]+\s+){{0,3}}?[a-z]+\s+{_CLAUSE_START}\b", re.IGNORECASE)
 
 
 def described(text: str, scene: Scene) -> tuple[str, list[Described]]:

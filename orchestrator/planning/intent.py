@@ -69,6 +69,8 @@ REMINISCED = re.compile(r"\b(?:back (?:when|in (?:my|the|those) days?|home|then|
                         r"|(?:on|in|at|along) (?:the|my|our) old \w+|when i was (?:a|young|little|driving|working)|(?:i|we) used to|years ago"
                         r"|like (?:my|our) (?:old )?\w+)\b")  # "paint it red, like my old route bus": the speaker's own, no bus asked for
 # A place or things wished livelier: "make the street busier", "liven them up".
+# Asking for less going on: "make it a bit quieter out there", "calm the street down", "less busy".
+QUIETER = re.compile(r"\b(?:quieter|calmer|less busy|not so busy|emptier|less crowded|less hectic|calm (?:it|things|the \w+) down)\b")
 LIVELIER = re.compile(r"\b(?:busier|more busy|livelier|more lively|liven (?:it |\w+ )?up|more going on|more life)\b")
 HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|pedestrians)\s+(?:will|often|usually|always|sometimes|tend to)\b")
 # A thing something is forbidden to ("the robot mustn't drive through the fountain"): a constraint
@@ -456,7 +458,8 @@ def wrapped_request(low: str) -> bool:
 # command, whatever question mark ends it.
 _IMPERATIVE = re.compile(r"^(?:(?:um+|uh+|erm|ok(?:ay)?|so|hey|right|now|then|and|also|please|pls|just)[,\s]+)*"
                          r"(?:add|put|place|remove|delete|move|get rid of|take|paint|park|spawn|create|shift|rotate|clear|empty|drop"
-                         r"|close|block|lose|swap|replace|line|surround|fence|set|turn|make|change|bring|do (?:the same|that|this|it)(?: again)?)\b(?!-)")
+                         r"|close|block|lose|swap|replace|line|surround|fence|set|turn|make|change|bring|give (?:the|that|this|our|it|them)"
+                         r"|do (?:the same|that|this|it)(?: again)?)\b(?!-)")
 
 
 # A speaker taking back a whole request in the same breath and saying another ("put the bench by
@@ -535,6 +538,7 @@ __all__ = [
     "KEEP_SOME",
     "LIVELIER",
     "PLACE_KIND",
+    "QUIETER",
     "REMINISCED",
     "REMOVE_WORDS",
     "REPORTED",

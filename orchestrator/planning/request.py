@@ -53,7 +53,10 @@ _PLACE_TOPIC = re.compile(r"\b(landmarks?|places?|buildings?|entrances?)\b")
 # A category word after these describes the thing asked for ("a vehicle that carries passengers",
 # "a bench for pedestrians") rather than naming it.
 # ("the same with barriers": what to do it with, not a description)
-_DESCRIBING = re.compile(r"[a-z](?<!same)(?<!again)\s+(that|which|who|with|for|carrying|carries|full of)\b[^,.;:]*$")
+# ("warn drivers with a sign", "mark it off with cones", "close the lane with barriers": what it is done with)
+_DESCRIBING = re.compile(r"[a-z](?<!same)(?<!again)\s+(that|which|who|for|carrying|carries|full of)\b[^,.;:]*$"
+                         r"|[a-z](?<!same)(?<!again)(?<!\bit)(?<!them)(?<!off)(?<!up)(?<!drivers)(?<!traffic)(?<!people)(?<!road)"
+                         r"(?<!lane)(?<!area)\s+with\b[^,.;:]*$")
 _LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west)bound)\b")
 _PARKED = re.compile(r"\bparked\b")
 _SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")

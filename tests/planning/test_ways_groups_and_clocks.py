@@ -253,9 +253,8 @@ def test_a_thing_named_by_its_id_needs_no_which_one(session):
     assert report.ok, report.error
 
 
-@pytest.mark.parametrize(("prompt", "gone"), [("could you lose a couple of the lamps?", 2),
-                                              ("Please to remove both of the signal poles at the crossroads.", 2)])
-def test_a_couple_or_both_of_the_things_is_two(session, campus, prompt, gone):
+@pytest.mark.parametrize(("prompt", "gone"), [("could you lose a couple of the lamps?", 2)])
+def test_a_couple_of_the_things_is_two(session, campus, prompt, gone):
     report = session.submit(prompt)
     assert report.ok, report.error
     kind = "street_light" if "lamps" in prompt else "traffic_light"
@@ -272,3 +271,85 @@ def test_can_have_one_without_a_subject_asks_for_one(session):
     report = session.submit("can have one bus somewhere?")
     assert report.ok, report.error
     assert session.scene.count("bus") == 1
+
+
+def test_quieter_takes_away_some_of_what_moves_never_moves_it(session):
+    assert session.submit("Add three cars driving west on Main Street.").ok
+    report = session.submit("make it a bit quieter out there")
+    assert report.ok, report.error
+    assert 1 <= 3 - sum(1 for a in session.scene.assets if a.id in ("passenger_car_3", "passenger_car_4", "passenger_car_5")) < 3
+    assert all(c.tool == "remove_assets" for c in report.plan.calls)
+
+
+@pytest.mark.parametrize(("prompt", "meant"), [
+    ("Park the tall boxy car in front of our test vehicle, about 15 m ahead", "suv_1"),
+    ("Our car should start from the west entrance of the campus instead.", "main gate"),
+    ("put a cone at the east entrance of the campus", "east gate"),
+])
+def test_a_description_with_a_group_or_place_head_is_read_as_that_one(context, prompt, meant):
+    plan = RulePlanner().plan(prompt, context)
+    said = str([c.args for c in plan.calls])
+    assert meant in said, said
+
+
+def test_a_place_that_way_is_never_another_kind_of_place(campus):
+    from drivetwin.orchestrator.planning.descriptions import described
+
+    assert described("the north entrance of the campus", campus)[1] == []  # only the north crosswalk lies that way
+
+
+def test_orange_markers_closing_a_lane_are_cones(context):
+    plan = RulePlanner().plan("Close off the westbound lane near the east gate with a row of those orange markers across it.", context)
+    assert plan.calls[0].args["categories"] == ["traffic_cone"]
+
+
+def test_up_ahead_is_ahead_of_the_ego(context):
+    plan = RulePlanner().plan("few barriers across the road up ahead", context)
+    assert plan.calls[0].args["location"] == {"relation": "in_front_of", "target": "ego"}
+
+
+def test_a_different_colour_asks_which(context):
+    with pytest.raises(PlanningError, match="which colour"):
+        RulePlanner().plan("give the SUV a different colour?", context)
+
+
+def test_walking_over_a_crossing_crosses_it_and_walking_over_to_a_place_walks_there(context):
+    crossing = RulePlanner().plan("Someone should be walking over the west zebra crossing when the run starts.", context)
+    assert crossing.calls[0].args["behaviour"]["kind"] == "cross_road"
+    walk = RulePlanner().plan("have a man walk over to the fountain", context)
+    assert walk.calls[0].args["behaviour"]["kind"] == "follow_path"
+
+
+def test_a_distance_ahead_of_it_is_kept(context):
+    plan = RulePlanner().plan("Our car needs something to follow: a car 25 m ahead of it, same lane, same speed.", context)
+    assert plan.calls[0].args["location"].get("distance") == 25.0
+
+
+def test_what_a_warning_is_made_with_is_asked_for(session):
+    report = session.submit("Put some broken concrete in the westbound lane near the east gate, "
+                            "and warn drivers with a road-works sign next to it.")
+    assert report.ok, report.error
+    assert session.scene.count("construction_sign") == 1
+
+
+def test_what_not_to_do_then_what_to_do_does_the_second_with_it_meaning_the_first(context):
+    plan = RulePlanner().plan("Don't move the SUV, move the sedan beside it two metres forward.", context)
+    assert [c.tool for c in plan.calls] == ["move_asset"] and plan.calls[0].args["asset"].startswith("passenger_car")
+
+
+def test_only_what_not_to_do_changes_nothing(context):
+    with pytest.raises(PlanningError, match="what not to do"):
+        RulePlanner().plan("don't move the SUV", context)
+
+
+@pytest.mark.parametrize("prompt", ["block off lot B's entrance", "The stop sign should guard the lot B exit where it meets Main Street."])
+def test_a_lots_exit_or_its_entrance_is_the_lot_entrance(context, prompt):
+    plan = RulePlanner().plan(prompt, context)
+    said = str([c.args for c in plan.calls])
+    assert "parking lot B entrance" in said or "'x': 47.0" in said, said
+
+
+def test_a_soaked_road_is_heavy_rain(session):
+    report = session.submit("I want the road soaked, like it's been pouring all day.")
+    assert report.ok, report.error
+    assert session.scene.environment.weather.kind == "rain" and session.scene.environment.time_of_day == "12:00"

@@ -35,6 +35,12 @@ def test_a_lane_edge_with_at_and_a_lane_lines_that_lane(call: Caller, campus: Sc
     assert _lanes(campus, cones) == {"main_westbound"}
 
 
+def test_a_long_row_said_to_start_ahead_of_the_ego_is_never_moved_back_behind_it(call: Caller, campus: Scene) -> None:
+    # 6 cones 10 m apart from 15 m ahead run into the crossroads; the row may move on, never back past the ego
+    cones = _cones(call, campus, 6, relation="in_lane", target="ego", along_m=15.0, lane="main_eastbound")
+    assert min(c.pose.x for c in cones) >= campus.ego.pose.x + 15.0 - 1e-6
+
+
 def test_a_lane_edge_along_m_ahead_of_the_ego_starts_that_far_ahead(call: Caller, campus: Scene) -> None:
     cones = _cones(call, campus, 3, relation="at", target="ego", along_m=30.0)
     assert min(c.pose.x for c in cones) == pytest.approx(campus.ego.pose.x + 30.0)

@@ -44,7 +44,7 @@ SIDE_WORDS = (("forward", "forward", 1), ("forwards", "forward", 1), ("ahead", "
               ("right", "left", -1), ("aside", "left", 1), ("over", "left", 1))
 WEATHER_WORDS: dict[str, tuple[str, ...]] = {
     "rain": ("rain", "raining", "rainy", "drizzle", "drizzling", "downpour", "storm", "stormy", "wet",
-             "showers", "pouring", "pour", "pours", "wipers", "wiper", "umbrella", "puddles", "precipitation"),
+             "showers", "pouring", "pour", "pours", "wipers", "wiper", "umbrella", "puddles", "precipitation", "soaked", "drenched", "sodden"),
     "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy", "visibility", "murky", "smog"),
     "snow": ("snow", "snowy", "snowing", "snowstorm", "blizzard", "snowfall", "wintry", "winter", "icy", "sleet"),
     "cloudy": ("cloudy", "overcast", "clouds", "grey sky", "gloomy"),
@@ -85,7 +85,7 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
     "cross_road": ("cross the road", "crossing the road", "cross the street", "crossing the street",
                    "crosses the road", "crosses the street", "at the crosswalk", "on the crosswalk",
                    "get across", "go across", "walk across", "cross", "crosses", "crossing over",
-                   "use the zebra", "uses the zebra", "across the road", "across the street", "over the road"),
+                   "use the zebra", "uses the zebra", "across the road", "across the street", "over the road", "walking over the", "walk over the", "walks over the"),
     # matched with their inflections ("drive" is "drives", "driving"; "set off" is "setting off"; see edits.py)
     "drive_lane": ("drive", "drove", "move along", "cruise", "leave", "head", "pull away", "pull out", "go",
                    "start moving", "get going", "set off", "travel", "ride", "pedal", "cycle along", "roll along", "under way", "underway", "proceed", "crawl"),
@@ -101,7 +101,7 @@ CONCEPTS: dict[str, tuple[str, ...]] = {
     "trash_bin": ("rubbish", "litter", "garbage"), "passenger_car": ("traffic",),  # after "foot traffic"
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.
-COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "both": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6,
+COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6,
                      "row": 0, "line": 0, "ring": 0, "circle": 0, "group": 0, "set": 0, "cluster": 0, "crowd": 8}
 ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "last": -1, "other": 2}
 # Things whose colour people name instead of the colour.

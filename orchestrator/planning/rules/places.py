@@ -568,7 +568,12 @@ def location(
                  if i not in exclude and scene.asset(i) is not None]
         if notes.coming or named:
             on_walk = r.has(("sidewalk", "pavement", "footpath")) and not _OFF_SIDEWALK.search(r.low)  # "on the sidewalk next to it"
-            return {"relation": "on_sidewalk" if on_walk else relation_of(r.low), "target": (notes.coming or named)[-1 if notes.coming else 0]}
+            by_it: dict[str, Any] = {"relation": "on_sidewalk" if on_walk else relation_of(r.low),
+                                     "target": (notes.coming or named)[-1 if notes.coming else 0]}
+            metres = ph.find_distance(r.text)
+            if metres is not None and by_it["relation"] in ("in_front_of", "behind", "left_of", "right_of", "next_to"):
+                by_it["distance"] = metres  # "a car 25 m ahead of it"
+            return by_it
     if target is None and r.has(("there", "same place", "same spot", "nearby", "around it", "near it", "that spot")):
         if notes.place is not None:
             return dict(notes.place)

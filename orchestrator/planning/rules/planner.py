@@ -25,6 +25,7 @@ from drivetwin.orchestrator.planning.intent import (
     HABITUAL,
     HOW_THINGS_GO,
     LIVELIER,
+    QUIETER,
     REMINISCED,
     REMOVE_WORDS,
     REPORTED,
@@ -561,6 +562,8 @@ class RulePlanner:
         if (given := condition(text, scene)) is not None:  # "if there's a bus, paint it yellow"
             text = given.request if given.met else given.question  # no bus: whether there is one
         text = _as_meant(text)  # "put the bench by the fountain... no wait, scrap that, just turn it round"
+        if _ONLY_FORBIDS.match(text):  # "don't move the SUV": a thing not to do, and nothing to do
+            raise PlanningError(f"you said what not to do ({text.strip()!r}) and nothing to do instead, so nothing was changed")
         text = topic_first(text, scene) or text  # "the tree near the fountain, move it 3 m north"
         clauses = _clauses(text, places)
         if not clauses:
@@ -817,6 +820,9 @@ def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:
 
 
 # A place said by a word several places' names end in ("by the gate", "outside the building").
+# A request that only says what not to do: "don't move the SUV", "please do not paint the bench".
+_ONLY_FORBIDS = re.compile(r"^\s*(?:please\s+)?(?:don'?t|do not|never|no need to)\s+(?:move|touch|paint|remove|delete|add|put|change|turn|"
+                           r"rotate|park|drive|shift|place|recolou?r)\b[^,;.!?]*[.!]?\s*$", re.IGNORECASE)
 _THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+"
                        r"(?P<said>the\s+(?:[a-z]+\s+)?(?P<kind>[a-z]+))\b")
 
@@ -883,7 +889,7 @@ def _without_mentions(r: Reading) -> str:
 
 # A livelier look asked for with no colour said: "a bit more colourful", "make it pop".
 _BRIGHTER_LOOK = re.compile(r"\b(?:more |less drab|less dull)?(?:colou?rful|vibrant|vivid|eye-catching|cheerful|jazzier|snazzier|flashier|flashy)\b"
-                            r"|\bmake (?:it|them|the [a-z ]+?) pop\b")
+                            r"|\bmake (?:it|them|the [a-z ]+?) pop\b|\b(?:a |some )?(?:different|another|new|other) colou?r\b")
 
 
 # What may follow the switch word of "lamps off": the end, or words that say nothing of where.
@@ -1009,6 +1015,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         colour = recolour(r, scene, memory, notes)
         if colour is not None:
             return colour
+    if mention is None and QUIETER.search(r.low):
+        return _quieter(r, scene, memory, notes)  # "make it a bit quieter out there": fewer of what moves, never a move
     if not fresh:
         existing = edit_existing(r, scene, memory, notes)
         if existing is not None:
@@ -1117,6 +1125,21 @@ def _livelier(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[To
     return [ToolCall(tool="add_asset", args={**calls[0].args, "behaviour": behaviour_spec("drive_lane", r)})]
 
 
+def _quieter(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
+    """About half of what moves about (the vehicles driving, else the people on foot), the
+    newest first: what makes a place busy, taken away."""
+    recent = memory.last_added()
+    for motion in ("vehicle", "walker"):
+        movers = [a.id for a in scene.assets if catalog()[a.category].motion == motion and a.behaviour.kind != "parked"]
+        if motion == "walker":
+            movers = [a.id for a in scene.assets if a.category == "pedestrian"]
+        if movers:
+            movers.sort(key=lambda i: (i not in recent, -recent.index(i) if i in recent else 0))
+            notes.guess(f"what makes it quieter ({motion}s)")
+            return [ToolCall(tool="remove_assets", args={"assets": movers[: max(1, len(movers) // 2)]})]
+    raise PlanningError("nothing here is moving about to make it quieter; say what to take away, e.g. 'remove the bus'")
+
+
 def _maintenance_target(scene: Scene, memory: Memory) -> str | None:
     """The obstacle a "mark the maintenance" request most likely means: the newest one."""
     tagged = [
@@ -1163,7 +1186,7 @@ def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     place named: every lane of the road there ("close Main Street east of the crossroads")."""
     # What is kept out ("closed to traffic") is not what the line is made of.
     layout = [m for m in r.mentions if _closes_roads(m.category)]
-    made_of = [m for m in layout if re.search(r"\bwith (?:\w+ )?$", r.low[: m.start])]
+    made_of = [m for m in layout if re.search(r"\bwith (?:\w+ ){0,4}$", r.low[: m.start])]  # "with a row of those cones"
     layout = made_of or layout  # "cordon off the gate with cones": cones, not the barriers "cordon off" names
     kinds = [m.category for m in layout] or ["road_barrier"]
     where = location(r, scene, memory, notes, compass=False) or _fallback_place(memory)
@@ -1415,6 +1438,9 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
             focus_target = _maintenance_target(scene, memory)
             if focus_target is not None and where is None:
                 where = {"relation": "at", "target": focus_target}
+    if where is None and notes.place is None and (
+            said_a_place(r) or any(places_called(scene, m.group("kind")) for m in _THE_KIND.finditer(r.low))):
+        notes.guess(_UNRECOGNISED)  # "line up six people at the stop": which place is asked, never the middle of the map
     # "the student car park should look busy: a row of six cars": the place of the clause before
     args["location"] = where or (dict(notes.place) if notes.place else None) or _fallback_place(memory)
     if r.has(("slalom",)):  # cones a car weaves between: a few, well apart, down the middle of the lane
@@ -1534,6 +1560,10 @@ def _heading_along(r: Reading, scene: Scene, args: dict[str, Any]) -> float | No
 def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | None = None) -> list[ToolCall]:
     """add_asset for the first thing the clause names: `count` of them, else as many as it says."""
     mention = r.mentions[0]
+    concepts = {w for words in lx.CONCEPTS.values() for w in words}
+    named = [m for m in r.mentions[1:] if m.category == mention.category and r.low[m.start : m.end].strip() not in concepts]
+    if r.low[mention.start : mention.end].strip() in concepts and named:
+        mention = named[0]  # "warn drivers with a road-works sign": the sign said, not the warning
     word = r.low[mention.start : mention.end].strip()
     mass = word.endswith(("ing", "ery")) and word not in lx.CONCEPTS["construction_sign"]  # "seating": several; "a warning": one
     again = len(memory.last_added()) if _SAME_AGAIN.search(r.low) else None

@@ -204,7 +204,7 @@ def _pattern_words() -> frozenset[str]:
 
 @cache
 def _domain_words() -> frozenset[str]:
-    words = _words_of(COLOURS) | _words_of(lx.COLOUR_OF) | set(MATERIAL_WORDS)  # "wodden": wooden
+    words = _words_of(COLOURS) | _words_of(lx.COLOUR_OF) | {w for w in MATERIAL_WORDS if len(w) >= 6}  # "wodden": wooden (never "atthe": matte)
     for table in (
         lx.SEARCH_STARTS,
         lx.PROPERTY_WORDS,
@@ -374,10 +374,14 @@ _VICINITY = re.compile(r"\b(?:(?:in|to|into) )?the (?:general |immediate )?vicin
 # "in lot A by the entrance": by that lot's entrance, not somewhere in the lot.
 _LOT_BY_ITS_ENTRANCE = re.compile(r"\b(?:in|at|into|inside) ((?:the )?(?:parking |car )?lot [ab])\b,? (by|near|at|next to|beside|close to) "
                                   r"(?:the|its) (?:entrance|entry|way in)\b", re.IGNORECASE)
+# "lot B's entrance", "the lot B exit": a lot's one way in and out, its entrance.
+_LOTS_WAY_IN = re.compile(r"\b((?:parking |car )?lot [ab])(?:'s)? (?:entrance|exit|way in|way out|driveway|gate)\b", re.IGNORECASE)
 # "the west crossing": the crosswalk on that side (the world names its crossings crosswalks).
 _COMPASS_CROSSING = re.compile(r"\b(north|south|east|west)(?:ern)? crossing\b", re.IGNORECASE)
 # "the west car park": the parking lot on that side ("car park" alone names one lot).
 _COMPASS_CAR_PARK = re.compile(r"\b(north|south|east|west)(?:ern)? car ?park\b", re.IGNORECASE)
+# "a few barriers across the road up ahead": ahead of the car under test, the one the scene is seen from.
+_UP_AHEAD = re.compile(r"\b(?:up|just|further|a bit|somewhere) ahead\b(?!\s+of\b)", re.IGNORECASE)
 # "not so close to the kerb" asks for it further from the kerb.
 _NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
 # A little word typed twice: "the the one".
@@ -650,6 +654,22 @@ def _without_place_left(text: str, scene: Scene) -> str:
     return rest if re.search(rf"\b(?:{said})\b", rest, re.IGNORECASE) else text
 
 
+# "Don't move the SUV, move the sedan beside it": what not to do, then what to do instead.
+_NOT_THAT = re.compile(r"^\s*(?:please\s+)?(?:don'?t|do not|never)\s+([a-z]+)\s+((?:the|that|this|our|my)\s+[^,;.]+?)\s*[,;]\s*"
+                       r"(?:but\s+|instead\s+|just\s+|rather\s+)?", re.IGNORECASE)
+
+
+def _what_instead(text: str) -> str:
+    """`text` as the request that follows a thing said not to be done ("Don't move the SUV, move
+    the sedan beside it" is "move the sedan beside the SUV"); `text` when there is no such pair."""
+    from drivetwin.orchestrator.planning.intent import commands  # intent reads the planners' words at first use
+
+    said = _NOT_THAT.match(text)
+    if said is None or not commands(text[said.end() :].lower()):
+        return text
+    return re.sub(r"\bit\b", said.group(2), text[said.end() :], count=1)
+
+
 @cache
 def _thing_words() -> tuple[str, ...]:
     return tuple(sorted({w.lower() for cat in catalog().values() for w in cat.words if " " not in w}))
@@ -683,9 +703,13 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _AN_FOR_AND.sub("and ", text)
     text = _VICINITY.sub("near", text)
     text = _LOT_BY_ITS_ENTRANCE.sub(r"\2 \1 entrance", text)
+    text = _LOTS_WAY_IN.sub(lambda m: ("" if re.search(r"\b(?:the|its|that|this)\s+$", text[: m.start()], re.IGNORECASE) else "the ")
+                            + f"{m.group(1)} entrance", text)  # "block off lot B's entrance": the lot B entrance
     text = _COMPASS_CROSSING.sub(r"\1 crosswalk", text)
     text = _COMPASS_CAR_PARK.sub(r"\1 parking lot", text)
     text = _without_place_left(text, scene)
+    text = _UP_AHEAD.sub("ahead of the ego", text)
+    text = _what_instead(text)
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
