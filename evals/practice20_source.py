@@ -45,8 +45,6 @@ planners, their lexicons, their prompt examples or any other suite's cases.
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
 from typing import Any
 
 from drivetwin.evals.practice_cases import (
@@ -2897,17 +2895,12 @@ ALL_CASES: list[Json] = [
     *ARRANGEMENT_CASES,
     *APPEARANCE_CASES,
 ]
-SUITE = TAG
-SUITE_PATH = Path(__file__).resolve().with_name("suites") / f"{SUITE}.jsonl"
+SUITE_PATH = _SUITE.path
 
 
 def main() -> None:
     """Write the suite's JSONL, one case a line."""
-    SUITE_PATH.parent.mkdir(parents=True, exist_ok=True)
-    lines = [json.dumps(c, ensure_ascii=False) for c in ALL_CASES]
-    SUITE_PATH.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    print(f"wrote {len(lines)} cases to {SUITE_PATH}")
-
+    _SUITE.write(ALL_CASES)
 
 if __name__ == "__main__":
     main()

@@ -51,9 +51,6 @@ only, by someone who had not read the planners, their lexicons, their prompt exa
 
 from __future__ import annotations
 
-import json
-from pathlib import Path
-
 from drivetwin.evals.practice_cases import (
     EGO,
     Json,
@@ -3252,17 +3249,12 @@ ALL_CASES: list[Json] = [
     *ARRANGEMENT_CASES,
     *APPEARANCE_CASES,
 ]
-SUITE = TAG
-SUITE_PATH = Path(__file__).resolve().with_name("suites") / f"{SUITE}.jsonl"
+SUITE_PATH = S.path
 
 
 def main() -> None:
     """Write the suite's JSONL, one case a line."""
-    SUITE_PATH.parent.mkdir(parents=True, exist_ok=True)
-    lines = [json.dumps(c, ensure_ascii=False) for c in ALL_CASES]
-    SUITE_PATH.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    print(f"wrote {len(lines)} cases to {SUITE_PATH}")
-
+    S.write(ALL_CASES)
 
 if __name__ == "__main__":
     main()

@@ -4,7 +4,9 @@ case by its suite's tag. Each suite's source keeps its own world constants, voic
 
 from __future__ import annotations
 
+import json
 from collections.abc import Iterable, Sequence
+from pathlib import Path
 from typing import Any
 
 Json = dict[str, Any]
@@ -394,6 +396,18 @@ class Suite:
 
     def __init__(self, tag: str) -> None:
         self.tag = tag
+
+    @property
+    def path(self) -> Path:
+        """Where the suite's JSONL lives: `suites/<tag>.jsonl` beside the sources."""
+        return Path(__file__).resolve().with_name("suites") / f"{self.tag}.jsonl"
+
+    def write(self, cases: list[Json]) -> None:
+        """Write the suite's JSONL, one case a line."""
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        lines = [json.dumps(c, ensure_ascii=False) for c in cases]
+        self.path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+        print(f"wrote {len(lines)} cases to {self.path}")
 
     def case(
         self,
