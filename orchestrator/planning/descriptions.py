@@ -4,9 +4,11 @@ lots of passengers", "the thing you throw rubbish in", "the building where the b
 The words from a general head noun ("thing", "vehicle", "place", "building") through the clause
 that describes it are compared in meaning (MiniLM, `grounding.embed`) with the catalog's category
 descriptions, or with the world's places (names, aliases, descriptions). The head says which of
-them it can be: a vehicle is one of the categories that drive, a building or place is a landmark.
-A description is read as a name only when one candidate stands clearly ahead of the next;
-otherwise the words are left as said, for the planners and the check to ask about.
+them it can be: a catalog group word ("vehicle", "sign", "car", "marker") one of that group, a
+building, place or entrance a landmark (one that way, when a compass word is said). A description
+is read as a name only when one candidate stands clearly ahead of the next (`described`, used by
+the spelling repair every planner and the check share); one near two is asked about (`unsure`, the
+rule planner's question); otherwise the words are left as said.
 """
 
 from __future__ import annotations
@@ -31,7 +33,6 @@ ALONE_FLOOR = 0.65
 MAX_CLAUSE_WORDS = 10
 
 _THING_HEADS = ("thing", "things", "object", "objects", "item", "items", "device", "devices", "contraption", "gadget")
-_VEHICLE_HEADS = ("vehicle", "vehicles")
 _PLACE_HEADS = ("place", "building", "spot", "location", "site", "entrance", "exit", "way in", "way out")
 # What opens a describing clause after the head: "that carries ...", "where the books are kept",
 # "you throw rubbish in", "firefighters hook their hoses to" (a plural noun doing something).
@@ -56,18 +57,21 @@ def _groups() -> dict[str, frozenset[str]]:
 
 @cache
 def _span() -> re.Pattern[str]:
-    heads = sorted({*_THING_HEADS, *_VEHICLE_HEADS, *_PLACE_HEADS, *_groups()}, key=len, reverse=True)
+    heads = sorted({*_THING_HEADS, *_PLACE_HEADS, *_groups()}, key=len, reverse=True)
     return re.compile(
         r"(?:\b(the|a|an|that|those|these|this|some)\s+|^\s*|(?<=[,.;:!?]\s))((?:[a-z0-9'-]+\s+){0,3}?)(" + "|".join(heads)
         + rf")\b((?:\s+{_CLAUSE_START}\b[^,.;:!?\n]*)?)",
         re.IGNORECASE,
     )
+
+
 # Where the describing clause ends and the request goes on: a place said after it ("... in by the
 # bus stop"), what the thing is to be doing ("... waiting at the stop"), or the request's own verb.
 _CLAUSE_END = re.compile(r"\s(?=(?:at|by|near|next to|beside|behind|outside|inside|in front of|on|onto|into|in|over|across|along|from|to"
                          r"|before|after|past|beyond|around|round|opposite|between|under|above)"
                          r"\s+(?:the|a|an|lot|parking|main|campus|our|my|this|that)\b|[a-z]+ing\b|(?:should|must|will|would|can|could|"
                          r"needs?|has|have|had|is|was|gets?|goes|please|and|then|but|so|instead|now|too|again)\b)")
+# Words before a head that are no description: an article, a verb, a preposition ("put a construction sign").
 _NOT_MODIFIERS = frozenset(["a", "an", "the", "then", "and", "or", "put", "add", "place", "some", "this", "that", "those",
                             "these", "to", "of", "in", "at", "on", "by", "with", "is", "are", "be"])
 _COMPASS = re.compile(r"\b(north|south|east|west)", re.IGNORECASE)

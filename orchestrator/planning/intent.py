@@ -502,14 +502,22 @@ _HAVE_ONE = re.compile(r"\s*(?:can|could|may)\s+(?:i\s+|we\s+)?(?:have|get)\s+(?
                        r"(?!\s+(?:look|go|think|word|minute|sec|second|moment|chat|idea|sense|feel|view|list|count)\b)")
 
 
+# A layout offered with a question mark: "people in a circle round the fountain?", "cones in a row by the gate?".
+_LAYOUT_OFFERED = re.compile(r"\bin an? (?:circle|ring|row|line|grid|queue|semicircle|square)\b")
+
+
 def _setting_offered(low: str) -> bool:
-    """A few words with a question mark that name a weather or a time of day and ask nothing
-    ("sunset vibes?", "heavy rain?", "night time?"): offered as a change, not asked about."""
+    """A few words with a question mark that name a weather or a time of day, or a layout, and ask
+    nothing ("sunset vibes?", "heavy rain?", "people in a circle round the fountain?"): offered as a
+    change, not asked about."""
     from drivetwin.orchestrator.planning.rules import (
         lexicon as lx,  # the planners' words; intent stays importable alone
     )
 
     words = re.findall(r"[a-z']+", low)
+    if low.rstrip().endswith("?") and len(words) <= 10 and _LAYOUT_OFFERED.search(low) and not _QUESTION_START.search(low) \
+            and not _INFO.search(low):
+        return True  # "people in a circle round the fountain?": a layout offered, not asked about
     if not low.rstrip().endswith("?") or not 0 < len(words) <= 4 or _QUESTION_START.search(low) or _INFO.search(low) \
             or re.search(r"\b(?:or not|or no|or nah|yet|still|out|outside)\b", low):
         return False  # "rain or not?", "dark yet?", "foggy out?": asked about

@@ -353,3 +353,27 @@ def test_a_soaked_road_is_heavy_rain(session):
     report = session.submit("I want the road soaked, like it's been pouring all day.")
     assert report.ok, report.error
     assert session.scene.environment.weather.kind == "rain" and session.scene.environment.time_of_day == "12:00"
+
+
+def test_a_ring_goes_round_the_place_said_after_around_not_a_thing_said_later(context):
+    plan = RulePlanner().plan("a circle of 6 benches around the fountain, and a bin next to the fountain too", context)
+    assert plan.calls[0].args["location"]["target"] == "fountain"
+
+
+def test_some_of_a_thing_not_counted_is_one_heap(context):
+    plan = RulePlanner().plan("add some broken concrete in the westbound lane", context)
+    assert plan.calls[0].args["count"] == 1
+    assert RulePlanner().plan("add some cones in the westbound lane", context).calls[0].args["count"] > 1
+
+
+def test_a_car_to_follow_at_the_same_speed_drives_at_the_egos_speed(context):
+    plan = RulePlanner().plan("Our car needs something to follow: a car 25 m ahead of it, same lane, same speed.", context)
+    behaviour = plan.calls[0].args["behaviour"]
+    assert behaviour["kind"] == "drive_lane" and behaviour["speed"] == context.scene.ego.behaviour.speed
+
+
+def test_a_layout_offered_with_a_question_mark_is_laid_out(session):
+    report = session.submit("people in a circle round the fountain?")
+    assert report.ok, report.error
+    assert session.scene.count("pedestrian") >= 4
+    assert session.submit("are the cones in a row?").plan.calls[0].tool == "find_assets"

@@ -820,6 +820,8 @@ def _already_there(described: list[ToolCall], scene: Scene) -> list[str]:
 
 
 # A place said by a word several places' names end in ("by the gate", "outside the building").
+# A new vehicle said to keep the ego's pace: "same speed", "at our speed", "keeping pace with us".
+_SAME_PACE = re.compile(r"\b(?:(?:the )?same speed|same pace|at (?:our|its|the ego'?s) (?:speed|pace)|keeping pace|keeps pace)\b")
 # A request that only says what not to do: "don't move the SUV", "please do not paint the bench".
 _ONLY_FORBIDS = re.compile(r"^\s*(?:please\s+)?(?:don'?t|do not|never|no need to)\s+(?:move|touch|paint|remove|delete|add|put|change|turn|"
                            r"rotate|park|drive|shift|place|recolou?r)\b[^,;.!?]*[.!]?\s*$", re.IGNORECASE)
@@ -1419,6 +1421,9 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         where = {"relation": "at", "target": r.landmark}
     if args["shape"] == "ring":
         targets = [m for m in mentions if m.category not in layout]
+        if around is not None and r.landmark and 0 <= around_pos < r.landmark_at:
+            # "6 benches around the fountain, and a bin next to it": the place said after "around", not a thing said later
+            targets = [m for m in targets if m.start < r.landmark_at]
         # The first thing named that stands here ("cordon off" names barriers, none of them standing)
         named = next(([a for a in scene.assets if a.category == t.category] for t in targets if scene.count(t.category)), [])
         if named and r.landmark and (mark := scene.landmark(r.landmark)) is not None:  # "the tree by the fountain"
@@ -1574,6 +1579,9 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     kind = behaviour_kind(r, category)
     if kind is None and word == "traffic":
         kind = "drive_lane"  # "more traffic on Main Street": vehicles that drive, not parked ones
+    pace = _SAME_PACE.search(r.low) if category.drives else None
+    if kind is None and pace is not None:
+        kind = "drive_lane"  # "a car 25 m ahead of it, same lane, same speed": one the ego follows, driving
     walk = walk_said(r, scene, exclude=[]) if category.motion == "walker" and kind in (None, "drive_lane") else None
     drive = drive_towards(r, scene) if category.drives and category.motion == "vehicle" and kind in (None, "drive_lane") else None
     if walk is not None:  # "a man walking towards the fountain": on his way there, from where said or some way off
@@ -1582,6 +1590,9 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
         kind, args["behaviour"] = "drive_lane", drive[0]
     elif kind is not None:
         args["behaviour"] = behaviour_spec(kind, r, scene)
+        ego_speed = getattr(scene.ego.behaviour, "speed", None) if scene.ego is not None else None
+        if pace is not None and kind == "drive_lane" and ego_speed and "speed" not in args["behaviour"]:
+            args["behaviour"]["speed"] = ego_speed
     where = location(r, scene, memory, notes) if walk is None or walk.start is None else {"relation": "at", "target": walk.start}
     where = drive[1] if drive is not None else where
     if walk is not None and where is not None and where.get("target") == walk.behaviour["to"]:
