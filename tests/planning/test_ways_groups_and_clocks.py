@@ -377,3 +377,25 @@ def test_a_layout_offered_with_a_question_mark_is_laid_out(session):
     assert report.ok, report.error
     assert session.scene.count("pedestrian") >= 4
     assert session.submit("are the cones in a row?").plan.calls[0].tool == "find_assets"
+
+
+def test_the_other_side_of_the_road_mirrors_a_thing_over_it(session, campus):
+    report = session.submit("stick the hydrant on the other side of the road")
+    assert report.ok, report.error
+    before, after = campus.asset("fire_hydrant_1"), session.scene.asset("fire_hydrant_1")
+    assert after.pose.x == pytest.approx(before.pose.x) and after.pose.y == pytest.approx(-before.pose.y)
+
+
+def test_the_start_of_the_road_is_the_start_of_the_lane_it_is_on(context):
+    plan = RulePlanner().plan("put our car back at the start of the road", context)
+    where = plan.calls[0].args["location"]
+    assert where["lane"] == "main_eastbound" and where["target"].startswith("-100")
+
+
+def test_us_after_have_or_get_is_the_ego_and_get_rid_at_the_end_removes(context):
+    plan = RulePlanner().plan("clutter by the bus stop, get rid", context)
+    assert plan.calls[0].tool == "remove_assets"
+    from drivetwin.orchestrator.planning.rules.spelling import repair
+
+    assert "have the ego turn" in repair("have us turn at the crossroads", context.scene).text
+    assert "let us know" in repair("let us know how far it is", context.scene).text

@@ -855,6 +855,9 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         plural = bool(r.mentions and r.mentions[0].plural) or _EACH_OF_THEM.search(r.low) is not None
         return [ToolCall(tool="set_behaviour", args={"asset": i, "behaviour": walk.behaviour})
                 for i in (walkers if plural and len(walkers) > 1 else [asset])]
+    across = _across_the_road(scene, found) if found is not None and _OTHER_SIDE.search(r.low) else None
+    if across is not None:  # "stick the hydrant on the other side of the road": where it stands, mirrored over the road
+        return [ToolCall(tool="place_asset", args={"asset": asset, "location": {"relation": "absolute", "x": across[0], "y": across[1]}})]
     where = None if scoped else location(r, scene, memory, notes, exclude=ids)  # the place said which, not where to
     if where is not None:
         # "move them to the gate": each of them, side by side; a layout ("in one line") is not one place
@@ -872,6 +875,23 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]
     return None
+
+
+# The far side of the road a thing stands by: "on the other side of the road", "across the street".
+_OTHER_SIDE = re.compile(r"\b(?:on|to|onto|over to) the other side of the (?:road|street)\b|\bacross the (?:road|street) from where it is\b")
+
+
+def _across_the_road(scene: Scene, thing: AssetInstance) -> tuple[float, float] | None:
+    """Where `thing` stands mirrored over the middle of the road it is beside: the point as far
+    past the road's centre as it stands before it; None with no road near."""
+    x, y = thing.pose.x, thing.pose.y
+    lanes = scene.roads.lanes
+    if not lanes:
+        return None
+    nearest = min(lanes, key=lambda ln: nearest_on_polyline(x, y, ln.centreline).distance)
+    feet = [nearest_on_polyline(x, y, ln.centreline) for ln in lanes if ln.road == nearest.road]
+    cx, cy = sum(f.x for f in feet) / len(feet), sum(f.y for f in feet) / len(feet)
+    return round(2 * cx - x, 2), round(2 * cy - y, 2)
 
 
 # Words that say a behaviour is for every one referred to: "both of them", "them all".

@@ -11,7 +11,7 @@ import itertools
 import math
 import re
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
@@ -265,6 +265,8 @@ def places_called(scene: Scene, word: str) -> list[str]:
 
 # Either end of a lane or road: "the start of Main Street westbound", "the far end of the lane".
 _LANE_END = re.compile(r"\b(start|beginning|entry|end) of\b")
+# The end of the road a thing is on, said without naming it: "back at the start of the road".
+_OWN_ROAD = re.compile(r"\b(?:start|beginning|end) of (?:the|its|this|our|my) (?:road|street|lane)\b")
 # How far into a lane "its start" (or short of its end) is.
 LANE_END_M = 10.0
 
@@ -517,6 +519,9 @@ def location(
     if offset is not None:  # "north of the crossroads", "20 m west of the fountain", "in the northbound lane, north of ..."
         return offset
     # A road named only as context ("across Main Street at the east gate") yields to the place.
+    if not r.lane and exclude and _OWN_ROAD.search(r.low) and (mover := scene.asset(exclude[0])) is not None \
+            and (runs := lane_at(scene, mover.pose.x, mover.pose.y)) is not None:
+        r = replace(r, lane=runs.id)  # "put our car back at the start of the road": the lane it is in
     if (
         r.lane
         and not (r.lane_guessed and r.landmark)

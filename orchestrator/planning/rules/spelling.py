@@ -654,6 +654,8 @@ def _without_place_left(text: str, scene: Scene) -> str:
     return rest if re.search(rf"\b(?:{said})\b", rest, re.IGNORECASE) else text
 
 
+# "have us turn", "get us moving", "let us pass": the speaker's car, the ego.
+_US_AS_OBJECT = re.compile(r"\b(have|get|make|let)\s+us\b(?!\s+(?:know|see|have|get|add|put|try|check))", re.IGNORECASE)
 # "Don't move the SUV, move the sedan beside it": what not to do, then what to do instead.
 _NOT_THAT = re.compile(r"^\s*(?:please\s+)?(?:don'?t|do not|never)\s+([a-z]+)\s+((?:the|that|this|our|my)\s+[^,;.]+?)\s*[,;]\s*"
                        r"(?:but\s+|instead\s+|just\s+|rather\s+)?", re.IGNORECASE)
@@ -710,6 +712,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _without_place_left(text, scene)
     text = _UP_AHEAD.sub("ahead of the ego", text)
     text = _what_instead(text)
+    text = _US_AS_OBJECT.sub(r"\1 the ego", text)  # "have us turn at the crossroads": the car under test
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
