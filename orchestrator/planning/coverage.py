@@ -162,7 +162,7 @@ THERE_RADIUS_M = 30.0
 # Words before a category that ask for one not there yet ("a tree", "some cones", "another").
 _INDEFINITE = frozenset(["a", "an", "some", "another", "new", "extra", "more", "additional"])
 # "Inside the library", "into the JTEKT building": a building named after a word of containment.
-_INSIDE = re.compile(r"\b(?:inside|into|within|(?:on |up |up on )?top of|(?:on |onto |up on )?(?:the )?(?:roof|rooftop) of|atop)(?: of)?"
+_INSIDE = re.compile(r"\b(?:inside|into|within|(?:on |up |up on )?top of|(?:on |onto |up on )?(?:the )?(?:roof|rooftop) (?:of|from)|atop)(?: of)?"
                      r"\s+(?:the\s+)?([a-z][a-z ]*)"
                      r"|\b(?:on|onto|up on|up top|on top|atop)\s+(?:the\s+)?(?!the\b|roof\b)([a-z][a-z ]*?)(?:'s)?\s+(?:roof|rooftop)\b")  # "up on the library('s) roof"
 

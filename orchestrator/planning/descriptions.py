@@ -32,7 +32,7 @@ ALONE_FLOOR = 0.65
 # The longest clause read after the head, in words.
 MAX_CLAUSE_WORDS = 10
 
-_THING_HEADS = ("thing", "things", "object", "objects", "item", "items", "device", "devices", "contraption", "gadget")
+_THING_HEADS = ("thing", "things", "object", "objects", "item", "items", "device", "devices", "contraption", "gadget", "pole", "poles")
 _PLACE_HEADS = ("place", "building", "spot", "location", "site", "entrance", "exit", "way in", "way out")
 # What opens a describing clause after the head: "that carries ...", "where the books are kept",
 # "you throw rubbish in", "firefighters hook their hoses to" (a plural noun doing something).

@@ -29,8 +29,8 @@ BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}
                         # "empty roads and the lamps buzzing": places described, never "empty the roads"
                         r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|g[ei]t rid(?: of)?|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
-    r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)|fewer|less|lose|eliminate|erase|discard|scrap"
+    r"\b(remove|delete|quit|g[ei]t rid(?: of)?|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
+    r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)(?!\s+an?\s+(?!single\b))|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
@@ -43,7 +43,8 @@ REMOVE_WORDS = re.compile(
     # "the seat and the bin should both go": gone, with no place or way to go to after it
     r"|(?:should|can|could|must|may|has to|have to|needs? to|(?:has |have |'s |'ve )?got to|gotta) (?:all |both |just )?go(?: away)?"
     r"(?=\s*(?:[,.;!?]|$|(?:i guess|i think|please|now|too|as well)\b)))\b"
-    r"|^(?:(?:actually|ok|okay|so|hmm+|oh|wait|um+|and|then|right|sorry)\W+)*no (?=[a-z])"  # "no hydrant", "actually, no people": it goes
+    # "no hydrant", "actually, no people": it goes; "no wait, put it ...", "no worries" take nothing away
+    r"|^(?:(?:actually|ok|okay|so|hmm+|oh|wait|um+|and|then|right|sorry)\W+)*no (?!(?:wait|hold|sorry|worries|problem|rush|idea|need to ask)\b)(?=[a-z])"
     r"|\b(?:they|it|those|these|that|this|the \w+)(?: \w+)? (?:were|was)(?:n't| not) (?:there|here)\b"  # "I'd rather they weren't there"
     # "I want no bins on campus", "there should be no signals at the crossroads": a scene without them
     # "the lamp shall be removed", "they should get taken away": the edit said in the passive
@@ -77,7 +78,7 @@ HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|p
 # on it, not a thing asked for.
 FORBIDDEN = re.compile(r"\s+(?:mustn'?t|must not|shouldn'?t|should not|can'?t|cannot|won'?t|may not)\b")
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
-FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
+FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less|(?:do|does|did)(?:n't| not) (?:\w+ ){0,3}need (?:quite |nearly )?(?:so|as|that) (?:much|many)|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin out|cut down on|reduce)\b")
 # How many of them to keep: "keep just two", "leave one of them" (the amount is group 1).
 # "one is plenty", "two of them would be enough": as many kept as that.
 KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)"
@@ -149,7 +150,8 @@ _WRAPPED = re.compile(
 # order to test the wipers"): the reason for a request, not a second request.
 _REASON = re.compile(
     r",?\s+(?:so that|so as to|in order to|in order that|so)\s+(?:(?:the |a |our |we |they |it |cars |traffic |people )?(?:[a-z'-]+\s+){0,2}\w*\s*)?"
-    r"(?:can|could|will|would|may|might|won'?t|can'?t|cannot|doesn'?t|don'?t|has to|have to|gets?|is|are)\b[^.;!?]*"
+    # "... so people can rest, and a litter bin beside it": the reason ends where a second thing is asked for
+    r"(?:can|could|will|would|may|might|won'?t|can'?t|cannot|doesn'?t|don'?t|has to|have to|gets?|is|are)\b(?:(?!,?\s+and\s+(?:a|an|some|two|three|\d+)\s)[^.;!?])*"
     # "... so that it blocks oncoming traffic": whatever follows "so that" says why
     r"|,?\s+(?:so that|in order that)\s+[^.;!?]*"
     # "... so nobody drives into it", ", to keep cars off the forecourt": who is kept from what, why

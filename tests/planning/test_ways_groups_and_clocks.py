@@ -399,3 +399,39 @@ def test_us_after_have_or_get_is_the_ego_and_get_rid_at_the_end_removes(context)
 
     assert "have the ego turn" in repair("have us turn at the crossroads", context.scene).text
     assert "let us know" in repair("let us know how far it is", context.scene).text
+
+
+def test_a_reason_ends_where_a_second_thing_is_asked_for(context):
+    plan = RulePlanner().plan("could you add a bench near the fountain so people can rest, and a litter bin beside it as well", context)
+    assert [c.args["category"] for c in plan.calls] == ["bench", "trash_bin"]
+
+
+@pytest.mark.parametrize("prompt", ["I don't think we need quite so much greenery, if it's no bother.", "Quit the bech of the bus stp, pleace"])
+def test_less_of_a_thing_or_quitting_it_takes_away_never_adds(context, prompt):
+    plan = RulePlanner().plan(prompt, context)
+    assert [c.tool for c in plan.calls] == ["remove_assets"] and plan.calls[0].args.get("count") == 1
+
+
+def test_no_wait_then_a_request_takes_nothing_away(session):
+    assert session.submit("Add a trash bin by the fountain.").ok
+    report = session.submit("no wait, put the bin I just added by the library entrance instead")
+    assert report.ok, report.error
+    assert session.scene.count("trash_bin") == 2  # moved, never removed
+
+
+def test_without_a_crossing_is_how_not_what_goes(session):
+    assert session.submit("Add a pedestrian waiting at the bus stop.").ok
+    report = session.submit("The pedestrian should go over the street without a zebra, right in front of the ego.")
+    assert session.scene.count("pedestrian") == 1, report
+
+
+@pytest.mark.parametrize(("prompt", "meant"), [("Put 6 barriers in line in the entrance of the parking A.", "parking lot A entrance"),
+                                               ("Which of the pedestrian crossings is closest to our test car?", "crosswalk")])
+def test_a_lots_entrance_said_the_other_way_round_and_crossings_in_the_plural(context, prompt, meant):
+    plan = RulePlanner().plan(prompt, context)
+    assert meant in str(plan.calls[0].args)
+
+
+def test_the_roof_from_a_building_is_its_roof(session):
+    report = session.submit("Add a car on the roof from the Libary, for the foto")
+    assert not report.ok and "on top of the Library" in (report.error or "")

@@ -25,7 +25,7 @@ GONE_WORDS = ("is over", "are over", "is finished", "are finished", "is done", "
               "went home", "go home", "have left", "has left", "were collected", "was collected",
               "were removed", "are gone", "is gone", "should be empty", "should be clear", "was a mistake", "were a mistake",
               "no longer needed", "not needed", "out of scope", "be empty", "to be empty", "cleared", "been collected")
-FEWER_WORDS = ("too many", "fewer", "less", "thin out", "one less")
+FEWER_WORDS = ("too many", "fewer", "less", "thin out", "one less", "so much", "as much", "that much")
 ADD_WORDS = ("add", "create", "spawn", "place", "put", "insert", "set up", "install", "plant",
              "build", "bring in", "drop in", "give me", "i want", "i need", "we need", "we want",
              "there should be", "need a", "need some", "want a", "want some", "make a", "make some",

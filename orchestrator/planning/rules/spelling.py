@@ -376,6 +376,11 @@ _LOT_BY_ITS_ENTRANCE = re.compile(r"\b(?:in|at|into|inside) ((?:the )?(?:parking
                                   r"(?:the|its) (?:entrance|entry|way in)\b", re.IGNORECASE)
 # "lot B's entrance", "the lot B exit": a lot's one way in and out, its entrance.
 _LOTS_WAY_IN = re.compile(r"\b((?:parking |car )?lot [ab])(?:'s)? (?:entrance|exit|way in|way out|driveway|gate)\b", re.IGNORECASE)
+# "the entrance of the parking A", "the way into lot B": that lot's entrance.
+_WAY_INTO_LOT = re.compile(r"\b(?:the )?(?:entrance|exit|way in|way out|way into|entry) (?:of|to|into|from) (?:the )?(?:parking lot|parking|car park|lot) ([ab])\b",
+                           re.IGNORECASE)
+# "the pedestrian crossings", "zebra crossings": the crosswalks, not people.
+_CROSSINGS = re.compile(r"\b(?:pedestrian|zebra) crossings\b", re.IGNORECASE)
 # "the west crossing": the crosswalk on that side (the world names its crossings crosswalks).
 _COMPASS_CROSSING = re.compile(r"\b(north|south|east|west)(?:ern)? crossing\b", re.IGNORECASE)
 # "the west car park": the parking lot on that side ("car park" alone names one lot).
@@ -705,6 +710,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _AN_FOR_AND.sub("and ", text)
     text = _VICINITY.sub("near", text)
     text = _LOT_BY_ITS_ENTRANCE.sub(r"\2 \1 entrance", text)
+    text = _WAY_INTO_LOT.sub(lambda m: f"the parking lot {m.group(1).upper()} entrance", text)
+    text = _CROSSINGS.sub("crosswalks", text)
     text = _LOTS_WAY_IN.sub(lambda m: ("" if re.search(r"\b(?:the|its|that|this)\s+$", text[: m.start()], re.IGNORECASE) else "the ")
                             + f"{m.group(1)} entrance", text)  # "block off lot B's entrance": the lot B entrance
     text = _COMPASS_CROSSING.sub(r"\1 crosswalk", text)
