@@ -435,3 +435,16 @@ def test_a_lots_entrance_said_the_other_way_round_and_crossings_in_the_plural(co
 def test_the_roof_from_a_building_is_its_roof(session):
     report = session.submit("Add a car on the roof from the Libary, for the foto")
     assert not report.ok and "on top of the Library" in (report.error or "")
+
+
+@pytest.mark.parametrize(("said", "kept"), [("Take away the lone tree behind the bus stop.", "lone"),
+                                            ("let midnite fall over evrything, a deep blu dark", "deep")])
+def test_a_word_said_of_what_follows_is_no_slip_for_a_thing(campus, said, kept):
+    from drivetwin.orchestrator.planning.rules.spelling import repair
+
+    assert kept in repair(said, campus).text.split()
+
+
+def test_a_figure_said_beside_a_walking_pace_is_the_speed(context):
+    plan = RulePlanner().plan("Let the ego drift slowly, a walking pace, no more than two metres a second.", context)
+    assert plan.calls[0].args["behaviour"]["speed"] == 2.0

@@ -145,7 +145,8 @@ def spelt_measures(text: str) -> str:
     text = _UNIT_AND_A_HALF.sub(_half_before_unit, text)
     text = _ONE_CAR_LENGTH.sub(f"{CAR_LENGTH_M:g} m", _SPELT_MEASURE.sub(figures, text))
     text = _MULTIPLES.sub(lambda m: f"{_spelt_value(m.group(1)) * _MULTIPLE_OF[m.group(2).lower()]:g}", text)
-    text = _PACE.sub(lambda m: f"{_PACE_MS[m.group(1).lower()]:g} m/s", text)
+    if not re.search(rf"({NUMBER})\s*{SPEED_UNIT}", text, re.IGNORECASE):  # "walking pace, no more than 2 m/s": the figure said
+        text = _PACE.sub(lambda m: f"{_PACE_MS[m.group(1).lower()]:g} m/s", text)
     return _OTHER_LENGTHS.sub(metres, text)
 
 

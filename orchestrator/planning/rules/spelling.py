@@ -627,7 +627,7 @@ _AFTER_DETERMINER = re.compile(r"\b(?:a|an|the|some|all|both|those|these|my|our|
 _AFTER_COUNT = re.compile(r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|twelve|several|many)\s+$", re.IGNORECASE)
 
 
-def _thing_slip(word: str, before: str, vocab: frozenset[str]) -> str | None:
+def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "") -> str | None:
     """The catalog word one slip from `word` in a thing's place, its plural kept ("tress" ->
     "trees", "bueses" -> "buses", "buss" -> "bus"), even when the slip is an English word; None
     when the word is known, a number, or one slip from no thing or from more than one."""
@@ -635,6 +635,9 @@ def _thing_slip(word: str, before: str, vocab: frozenset[str]) -> str | None:
     if len(low) < MIN_REPAIR_LEN or not _AFTER_DETERMINER.search(before) or low in ph.NUMBER_WORDS or is_known(low, vocab):
         return None
     word_slip = is_english(low)  # "tress", "buss": a word typed for a thing, never a thing longer ("a tuck" is no truck)
+    following = re.match(r"\s*([a-z]+)", after.lower())
+    if word_slip and following is not None and following.group(1) not in lx.GRAMMAR:
+        return None  # "the lone tree", "a deep blue": a word said of what follows, not a slip for a thing
     if not word_slip and not _AFTER_COUNT.search(before):
         return None  # "the coner of the lot": the usual repair, which reads the words around it
     plural = low.endswith("s") and len(low) > MIN_REPAIR_LEN
@@ -740,7 +743,7 @@ def repair(text: str, scene: Scene) -> Repaired:
         word = m.group(0)
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
-        slip = _thing_slip(word, text[: m.start()], vocab)
+        slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :])
         if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away
             repairs.append(f"{word} -> {slip}")
             return slip
