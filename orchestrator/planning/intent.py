@@ -8,6 +8,7 @@ so that the two never disagree on what kind of request they hold.
 from __future__ import annotations
 
 import re
+from functools import cache
 
 from drivetwin.tools.appearance import COLOURS
 
@@ -512,10 +513,6 @@ def _setting_offered(low: str) -> bool:
     """A few words with a question mark that name a weather or a time of day, or a layout, and ask
     nothing ("sunset vibes?", "heavy rain?", "people in a circle round the fountain?"): offered as a
     change, not asked about."""
-    from drivetwin.orchestrator.planning.rules import (
-        lexicon as lx,  # the planners' words; intent stays importable alone
-    )
-
     words = re.findall(r"[a-z']+", low)
     if low.rstrip().endswith("?") and len(words) <= 10 and _LAYOUT_OFFERED.search(low) and not _QUESTION_START.search(low) \
             and not _INFO.search(low):
@@ -523,11 +520,18 @@ def _setting_offered(low: str) -> bool:
     if not low.rstrip().endswith("?") or not 0 < len(words) <= 4 or _QUESTION_START.search(low) or _INFO.search(low) \
             or re.search(r"\b(?:or not|or no|or nah|yet|still|out|outside)\b", low):
         return False  # "rain or not?", "dark yet?", "foggy out?": asked about
-    settings = {w for kind in lx.WEATHER_WORDS.values() for w in kind} | {w for names, _ in lx.TIME_PRESETS for w in names}
-    text = " ".join(words)
-    # a state said ("foggy?", "raining?") asks; a thing offered ("fog?", "heavy rain?", "sunset vibes?") does not
-    return any(re.search(rf"\b{re.escape(w)}\b", text) for w in settings
-               if w not in ("dark", "day", "sun", "clear weather") and not w.endswith(("y", "ing")))
+    return _settings_offered().search(" ".join(words)) is not None
+
+
+@cache
+def _settings_offered() -> re.Pattern[str]:
+    """Weather and time words that name a thing offered ("fog", "heavy rain", "sunset"); a state
+    said ("foggy?", "raining?") asks instead. The planners' words, imported here so intent stays importable alone."""
+    from drivetwin.orchestrator.planning.rules import lexicon as lx
+
+    words = {w for kind in lx.WEATHER_WORDS.values() for w in kind} | {w for names, _ in lx.TIME_PRESETS for w in names}
+    offered = sorted(w for w in words if w not in ("dark", "day", "sun", "clear weather") and not w.endswith(("y", "ing")))
+    return re.compile(rf"\b(?:{'|'.join(re.escape(w) for w in offered)})\b")
 
 
 def asks(low: str) -> bool:

@@ -653,13 +653,22 @@ def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "") 
 def _without_place_left(text: str, scene: Scene) -> str:
     """`text` without the place a thing is to leave, said after "instead of" or "rather than" when
     another place is said ("... in the west car park instead of lot B"): where it goes is the other."""
-    names = sorted({n for lm in scene.landmarks for n in lm.names()}, key=len, reverse=True)
-    said = "|".join(re.escape(n) for n in names)
-    left = re.search(rf",?\s+(?:instead of|rather than) (?:the )?(?:{said})\b", text, re.IGNORECASE)
+    if not re.search(r"\b(?:instead of|rather than)\b", text, re.IGNORECASE):
+        return text  # the common case: no pattern built, no search
+    left_at, named = _place_patterns(tuple(n for lm in scene.landmarks for n in lm.names()))
+    left = left_at.search(text)
     if left is None:
         return text
     rest = text[: left.start()] + text[left.end() :]
-    return rest if re.search(rf"\b(?:{said})\b", rest, re.IGNORECASE) else text
+    return rest if named.search(rest) else text
+
+
+@cache
+def _place_patterns(names: tuple[str, ...]) -> tuple[re.Pattern[str], re.Pattern[str]]:
+    """A place left ("instead of lot B") and any place named, for one world's place names."""
+    said = "|".join(re.escape(n) for n in sorted(set(names), key=len, reverse=True))
+    return (re.compile(rf",?\s+(?:instead of|rather than) (?:the )?(?:{said})\b", re.IGNORECASE),
+            re.compile(rf"\b(?:{said})\b", re.IGNORECASE))
 
 
 # "have us turn", "get us moving", "let us pass": the speaker's car, the ego.
