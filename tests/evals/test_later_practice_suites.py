@@ -34,6 +34,7 @@ from drivetwin.evals import (
     practice22_source,
     practice23_source,
     practice24_source,
+    practice25_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -99,6 +100,9 @@ BRIEFS: dict[str, Brief] = {
     # Eight everyday voices: QA tester, driving instructor, traffic planner, simulation engineer, teacher, retired
     # volunteer, delivery driver, a Spanish or German speaker; search and moving hold 11 in every grade, the rest 10.
     "practice24": Brief(280, 10, 10, practice24_source, multi_turn=30, planned=15, compound=18),
+    # Eight everyday voices: parent helping with a school project, city councillor, insurance assessor, game modder,
+    # nurse on a break, bus dispatcher, journalist, newcomer to the software; every cell holds 10 to 12.
+    "practice25": Brief(290, 10, 10, practice25_source, multi_turn=30, planned=15, compound=18),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
