@@ -221,12 +221,20 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked about places, but the plan looks up something else")
     if not request.question and effect.calls and not effect.edits:
         out.append("you asked for a change, but the plan changes nothing")
+    beside_itself = [c.args["asset"] for c in effect.calls if c.tool == "place_asset" and isinstance(c.args.get("location"), dict)
+                     and c.args["location"].get("target") == c.args.get("asset") and c.args["location"].get("relation") in ("at", "next_to")
+                     and "distance" not in c.args["location"]]  # "the nearest sidewalk", "2 m in front of where it is" say a place
+    if beside_itself:  # "could it potter about a bit?" read as a place beside where it stands: a move that says nothing
+        out.append(f"the plan puts {', '.join(beside_itself)} next to itself, which is no place you named")
     if not request.question and not effect.calls and (request.categories or request.place or request.polarity or commands(request.low)):
         out.append("you asked for a change, but the plan does nothing")  # "block off lot B's entrance" read as no call at all
     if request.question and not effect.edits:
         said = " ".join(str(c.args) for c in effect.calls).lower().replace("_", " ")
         out += [f"you asked about {name}, but the plan looks up something else"
                 for name in _topics(request, scene) if not _looked_up(name, said, effect.calls, scene)]
+        unlooked = _kind_not_looked_up(request, effect.calls, scene)
+        if unlooked is not None:  # "the sign with eight sides: in which street is it?" answered about the lanes' traffic
+            out.append(f"you asked about the {unlooked}, but the plan looks up something else")
     if request.question and _SETTING_ASKED.search(request.low) and not any(
             c.tool in ("describe_environment", "set_weather", "set_time_of_day") for c in effect.calls):
         out.append("you asked about the weather or the time, but the plan looks up something else")
@@ -498,6 +506,19 @@ def _topics(request: Request, scene: Scene) -> list[str]:
     roads = sorted({lane.road for lane in scene.roads.lanes if lane.road})
     named = [road for road in roads if re.search(rf"\b{re.escape(ph.normalise(road).strip())}\b", request.low)]
     return [*([request.place] if request.place else []), *named]
+
+
+def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Scene) -> str | None:
+    """The kinds of thing a question names, when none of the plan's lookups names one of them, by
+    its category, a thing of it, or a group holding it ("cars"); None when one does, or when the
+    plan looks at the weather and the time instead ("dark enough for the street lights?")."""
+    if not request.categories or not calls or any(c.tool == "describe_environment" for c in calls):
+        return None
+    said = " ".join(str(c.args) for c in calls).lower()
+    looked = {c for c in catalog() if re.search(rf"(?<![a-z]){c}(?![a-z])", said)}
+    looked |= {a.category for a in scene.all_assets() if re.search(rf"(?<![a-z0-9_]){a.id}(?![0-9])", said)}
+    looked |= {c for members in md.groups_said(said.replace("_", " ")).values() for c in members}
+    return None if request.categories & looked else " or ".join(sorted(request.categories)).replace("_", " ")
 
 
 def _looked_up(topic: str, said: str, calls: tuple[ToolCall, ...], scene: Scene) -> bool:

@@ -534,10 +534,29 @@ def _settings_offered() -> re.Pattern[str]:
     return re.compile(rf"\b(?:{'|'.join(re.escape(w) for w in offered)})\b")
 
 
+# A thing in the scene asked, politely, to do something ("can the SUV do a few laps?", "could one of
+# the cars wait outside the library?", "could it potter about a bit?"): a request, whatever its verb,
+# unless the words after it ask what it is able to do or perceive ("could the bus fit in lot B?").
+_THING_ASKED = re.compile(r"(?:^|[.!;?,:]\s*)(?:can|could|would) (?:(?:one|some|any|two|both|each) of )?"
+                          r"(?:(?:the|that|this|these|those|our|my|its) [a-z_0-9]+|it|they|(?:[a-z]+_\d+))\b(?P<rest>(?: [a-z']+){1,4})")
+_ABILITY = re.compile(r"\b(?:see|fit|reach|hear|tell|know|weigh|hold|carry|cope|handle|exist|still|really|actually|ever|even"
+                      r"|possibly|already|physically|legally|be seen|mean|happen|cause|hit|crash|collide|block|get hit)\b")
+# A wish stated as what would be good ("something green by the hall would be nice").
+_WOULD_BE_NICE = re.compile(r"\b(?:would|'d) (?:be|look) (?:(?:really|very|so|rather|quite) )?(?:nice|lovely|good|great|better|nicer|fun|cool|helpful|useful|ideal)\b")
+
+
+def _thing_asked(low: str) -> bool:
+    """Whether a thing in the scene is asked to do something (see _THING_ASKED), or a wish is stated."""
+    for said in _THING_ASKED.finditer(low):
+        if _ABILITY.search(said.group("rest")) is None:
+            return True
+    return _WOULD_BE_NICE.search(low) is not None and _QUESTION_START.search(low) is None  # "what would be nice here?" asks
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
     polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip())
-                  or _setting_offered(low) or _HAVE_ONE.match(low) is not None)
+                  or _setting_offered(low) or _HAVE_ONE.match(low) is not None or _thing_asked(low))
     return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
         not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))

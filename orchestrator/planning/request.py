@@ -181,11 +181,18 @@ def _is_reference(text: str, start: int) -> bool:
     if _YEAR.match(text, start) or (re.search(r"\b(?:in|since|of|back in)\s+'?$", text[:start]) and _PAST.search(text[:start])
                                     and re.match(r"'?\d{2}\s*(?:[.!?,;]|$)", text[start:])):
         return True  # "in 1987", "the way it came down in 87": a year, not an amount
+    part = _PARTS_COUNTED.match(text, start)
+    if re.search(r"\b(?:with|having|has|have)\s+$", text[:start]) and part is not None and not ph.find_categories(part.group(1)):
+        return True  # "the sign with eight sides", "a van with two doors": what it is like, not how many to make
     if before == ["take"] and re.match(r"[\w.,]*\s+(?:away|out|off)\b", text[start:]):
         return False  # "take two away": an amount, not a film's take 2
     return bool(before) and before[0].isalpha() and bool(ph.find_categories(before[0]) or before[0] in _LABELS)
 
 
+# A number and the plural noun it counts, when that noun is no unit or layout of a plan ("eight sides";
+# not "3 rows", "4 m", "5 seconds").
+_PARTS_COUNTED = re.compile(r"[\w.,]*\s+(?!(?:rows|columns|lines|metres|meters|seconds|minutes|hours|degrees|laps|times|gaps|spaces|steps)\b)"
+                            r"([a-z]{3,}s)\b")
 # A year: "in 1987", "the summer of 2003".
 _YEAR = re.compile(r"(?:19|20)\d{2}\b(?!\s*(?:m\b|metres?|meters?|km|cones?|s\b|seconds?))")
 # Words of a time gone by, which a bare two-digit year follows ("the way it came down in 87").

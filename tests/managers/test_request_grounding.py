@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
+import pytest
 from drivetwin.orchestrator.planning.base import PlanContext
 from drivetwin.orchestrator.planning.grounding import Grounder
 from drivetwin.orchestrator.planning.llm.demos import fits
@@ -183,3 +184,16 @@ def test_a_weather_word_is_the_only_weather_offered(campus: Scene, spelling_grou
     need = Requirement(kind="appearance", what="skies")
     props = _props(_args("clear skies", need, campus, "set_weather", spelling_grounder))
     assert props["kind"]["enum"] == ["clear"]
+
+
+@pytest.mark.parametrize(("prompt", "clock"), [("could we have it at 7am please", "07:00"), ("the clock should read 18:30", "18:30")])
+def test_a_clock_time_said_is_the_only_time_offered(campus: Scene, spelling_grounder: Grounder, prompt: str, clock: str) -> None:
+    need = Requirement(kind="appearance", what="time", how=prompt)
+    props = _props(_args(prompt, need, campus, "set_time_of_day", spelling_grounder))
+    assert props["time"]["enum"] == [clock]
+
+
+def test_no_clock_time_said_leaves_every_time_offered(campus: Scene, spelling_grounder: Grounder) -> None:
+    need = Requirement(kind="appearance", what="night")
+    props = _props(_args("make it night", need, campus, "set_time_of_day", spelling_grounder))
+    assert "anyOf" in props["time"]

@@ -183,6 +183,7 @@ def _narrow_to_request(
     names.speeds = list(said.speeds)
     names.weathers = list(said.weathers)
     names.colours = list(said.colours)
+    names.times = list(said.times)
     names.shapes = list(said.shapes)
     names.signs = dict(said.directions)
 

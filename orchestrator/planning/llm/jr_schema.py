@@ -53,6 +53,7 @@ class WorldNames:
     speeds: list[float] = field(default_factory=list)
     weathers: list[str] = field(default_factory=list)
     colours: list[str] = field(default_factory=list)
+    times: list[str] = field(default_factory=list)
     shapes: list[str] = field(default_factory=list)
     # The sign a direction word gives a move field ("south" makes north negative).
     signs: dict[str, int] = field(default_factory=dict)
@@ -93,6 +94,8 @@ def _named(prop: str, names: WorldNames) -> dict[str, Any] | None:
         return _enum(names.shapes)
     if prop == "relation" and names.relations:
         return _enum(names.relations)
+    if prop == "time" and names.times:
+        return _enum(names.times)  # the clock time the request says, never a neighbouring one
     if prop == "time":
         return {"anyOf": [_enum(list(TIME_PRESETS)), {"type": "string", "pattern": CLOCK_PATTERN}]}
     return None

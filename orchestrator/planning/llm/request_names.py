@@ -17,6 +17,7 @@ from typing import Literal
 from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS
 from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.retrieval.slots import read_slots
+from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.tools.base import FAMILIES, Family
 from drivetwin.worlds.scene import Scene
 
@@ -90,6 +91,8 @@ class RequestNames:
     speeds: tuple[float, ...] = ()
     weathers: tuple[str, ...] = ()
     colours: tuple[str, ...] = ()
+    # A clock time said ("7am", "quarter to five", "18:30"), as HH:MM: the only time a Jr. manager may set.
+    times: tuple[str, ...] = ()
     # Move fields the request's direction words set, with their sign.
     directions: tuple[tuple[str, int], ...] = ()
     shapes: tuple[str, ...] = ()
@@ -168,6 +171,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     removal = REMOVE_WORDS.search(request.low) is not None and ADD_WORDS.search(request.low) is None
     shapes = next((shape for pattern, shape in SHAPES if re.search(pattern, low)), ())
     directions = tuple(dict.fromkeys((name, sign) for pattern, name, sign in DIRECTIONS if re.search(pattern, low)))
+    clock = clock_time(request.low)
     return RequestNames(
         categories=tuple(dict.fromkeys(categories)),
         assets=tuple(dict.fromkeys(assets)),
@@ -175,6 +179,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         relations=tuple(_relation(low, relations)),
         numbers=tuple(dict.fromkeys(numbers)),
         colours=tuple(dict.fromkeys(colours)),
+        times=(str(clock),) if clock is not None and clock.valid else (),
         directions=directions,
         shapes=shapes,
         behaviour=_BEHAVIOUR.search(low) is not None,

@@ -597,9 +597,11 @@ def location(
                             "say where it should go instead, e.g. 'next to the bench by the library'")
     if r.has(("sidewalk", "side walk", "pavement", "footpath", "footway", "walkway", "kerb", "curb")) and not _OFF_SIDEWALK.search(r.low):
         return {"relation": "on_sidewalk", **({"target": target} if target else {})}
-    if r.has(("in the lane", "on the road", "in lane", "on the street")):
+    if r.has(("in the lane", "on the road", "in lane", "on the street", "onto the road", "onto the street", "into the lane")):
         if target is not None and scene.asset(target) is not None and relation_of(r.low) in ("in_front_of", "behind"):
             return {"relation": relation_of(r.low), "target": target}  # "on the road ahead of the ego": in its lane, ahead
+        if target is None and exclude and scene.asset(exclude[0]) is not None:
+            target = exclude[0]  # "get the SUV out onto the road": the lane nearest where it stands
         return {"relation": "in_lane", **({"target": target} if target else {})}
     if target is None:
         return None

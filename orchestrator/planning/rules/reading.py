@@ -412,7 +412,10 @@ def without_beneficiaries(low: str, mentions: list[ph.Mention]) -> list[ph.Menti
 GOES_TO = re.compile(r"\b(?:walk|stroll|head|go|run|jog|wander|rid|cycl|ambl|hurr(?:y|i)|march|strid|trudg|rush|sprint"
                      r"|driv|mak(?:e|es|ing) (?:his|her|their|its)(?: own)? way|on (?:his|her|their|its) way|strode|rode|drove|ran|went)"
                      r"(?:e|s|es|e?d|(?:n|g)?ing|(?:g)?ed)?\b(?:\s+(?:over|across|back|off|on|up|down|straight|along))?"
-                     r"(?:\s+from(?:\s+[a-z0-9_'§]+){1,5}?)?\s+(?:to|towards?|for|into)\s+")
+                     r"(?:\s+from(?:\s+[a-z0-9_'§]+){1,5}?)?\s+(?:to|towards?|for|into)\s+"
+                     # a vehicle driven there by someone: "drive the suv towards the east gate"
+                     r"|\b(?:driv(?:e|es|ing)|drove)\s+(?:the|our|my|that|this|his|her|their)\s+[a-z0-9_]+"
+                     r"(?:\s+(?:over|back|straight))?\s+(?:to|towards?|into)\s+")
 # The words before a walk whose walker was named before them ("a man at the stop who then walks to the
 # bench", "now have her jog over to the hydrant").
 _SUBJECT_GONE = re.compile(r"(?:.*\b(?:who|he|she|they|him|her|them)\s+)?\s*(?:(?:and|then|now|later|after that|afterwards|slowly|quickly)\s+)*")

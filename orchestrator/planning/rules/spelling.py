@@ -510,6 +510,16 @@ _RIGHT_THERE = re.compile(r"(?<!turn )(?<!turns )(?<!turning )(?<!go )(?<!goes )
                           r"where|there|here|on top of|in the middle of|across from|opposite)\b)", re.IGNORECASE)
 
 
+# "the hydrant has gone rather drab", "it's gone all rusty": "gone" before how a thing looks is what it
+# became, never that it went ("gone missing", "gone from the lot", "gone now" still say it went).
+_GONE_STATE = re.compile(r"\b(has|have|had|'s|'ve) gone (?=(?:(?:rather|a bit|a little|quite|very|really|all|kind of|pretty|so|too) )?"
+                         r"(?!missing|away|from|now|for|off|out|home|already|too|again|back|forever|completely|entirely|totally|altogether|everywhere"
+                         r"|and|but|or|so|then|the|a|an|to|in|at|by|into|through|past|over|with|without|ahead|first|last|west|east|north|south|left|right)[a-z]{3,}\b)",
+                         re.IGNORECASE)
+# "add a second bench", "a third one just like it": with "a", an ordinal asks for one more, never
+# picks one out as "the second bench" does ("wait a second", "a second later" are time).
+_ONE_MORE = re.compile(r"\ba (?:second|third|fourth|fifth)\b(?=\s+(?!(?:time|times|later|or|ago|earlier|long|longer|after|before|to|and|of|in|at)\b)[a-z])",
+                       re.IGNORECASE)
 # "turn of the street light": "of" right after a switching verb is a slip for "off".
 _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power|take|clear|get) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
 # A car park named by its letter, as the British say a parking lot: "car park A".
@@ -651,11 +661,13 @@ def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "") 
 
 
 def _without_place_left(text: str, scene: Scene) -> str:
-    """`text` without the place a thing is to leave, said after "instead of" or "rather than" when
-    another place is said ("... in the west car park instead of lot B"): where it goes is the other."""
-    if not re.search(r"\b(?:instead of|rather than)\b", text, re.IGNORECASE):
+    """`text` without the place a thing is to leave: said after "instead of" or "rather than" when
+    another place is said ("... in the west car park instead of lot B"), or the place it comes out
+    of on its way somewhere ("send the SUV out of lot B towards the east gate"): where it goes is the other."""
+    if not re.search(r"\b(?:instead of|rather than|out of)\b", text, re.IGNORECASE):
         return text  # the common case: no pattern built, no search
-    left_at, named = _place_patterns(tuple(n for lm in scene.landmarks for n in lm.names()))
+    left_at, named, out_of = _place_patterns(tuple(n for lm in scene.landmarks for n in lm.names()))
+    text = out_of.sub("", text)
     left = left_at.search(text)
     if left is None:
         return text
@@ -664,11 +676,14 @@ def _without_place_left(text: str, scene: Scene) -> str:
 
 
 @cache
-def _place_patterns(names: tuple[str, ...]) -> tuple[re.Pattern[str], re.Pattern[str]]:
-    """A place left ("instead of lot B") and any place named, for one world's place names."""
+def _place_patterns(names: tuple[str, ...]) -> tuple[re.Pattern[str], re.Pattern[str], re.Pattern[str]]:
+    """A place left ("instead of lot B"), any place named, and a place a thing comes out of on its
+    way to another ("out of lot B towards the east gate"), for one world's place names."""
     said = "|".join(re.escape(n) for n in sorted(set(names), key=len, reverse=True))
     return (re.compile(rf",?\s+(?:instead of|rather than) (?:the )?(?:{said})\b", re.IGNORECASE),
-            re.compile(rf"\b(?:{said})\b", re.IGNORECASE))
+            re.compile(rf"\b(?:{said})\b", re.IGNORECASE),
+            re.compile(rf"\s+out of (?:the )?(?:{said})\b,?(?:\s+and)?(?=\s+(?:(?:over |across |back |out )?to|towards?|onto|on to|into)\b)",
+                       re.IGNORECASE))
 
 
 # "have us turn", "get us moving", "let us pass": the speaker's car, the ego.
@@ -697,12 +712,14 @@ def _thing_words() -> tuple[str, ...]:
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
+    text = _ONE_MORE.sub("another", text)  # before "a second" is read as a measure of time
     text = spelt_measures(_NUMBER_SLIP.sub(lambda m: _NUMBER_SLIPS[m.group(1).lower()], _sound_alikes(text)))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
     text = _THERE_SLIP.sub("there", text)
     text = _THING_PRONOUN.sub("it", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
+    text = _GONE_STATE.sub(r"\1 become ", text)
     text = _CAR_PARK_OF.sub("parking lot ", text)  # "the car park A entrance": lot A's, not "the car park" (lot B)
     text = _marker_off(text)
     text = _RIGHT_THERE.sub("", text)

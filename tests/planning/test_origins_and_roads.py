@@ -1,0 +1,128 @@
+"""Where a thing comes from is not where it goes, a vehicle driven somewhere by the person drives
+there, a thing got "onto the road" takes the lane nearest it, a thing asked politely to act is asked
+for a change, and "gone" before how a thing looks is what it became, tried in this file's own words on
+the packaged campus world: "take the SUV out of parking lot B over to the library entrance" is a move
+to the library (lot B is where it leaves); "could you drive the SUV towards the east gate" drives the
+lane that leads there; "get the SUV out onto the road" puts it in the lane beside its lot; "could the
+SUV do a couple of laps in lot B?" sets it circling, "could the bus fit in lot B?" is still a question;
+"the bench has gone a bit shabby" never takes the bench away; "a second bench" is one more; "the sign
+with eight sides" counts no signs; a question about a kind of thing is answered about that kind."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from drivetwin.orchestrator.planning.base import Plan
+from drivetwin.orchestrator.planning.check import review
+from drivetwin.orchestrator.planning.intent import asks
+from drivetwin.tools.base import ToolCall
+from drivetwin.worlds.surface import lane_at
+
+
+@pytest.mark.parametrize("prompt", ["take the SUV out of parking lot B over to the library entrance",
+                                    "bring the suv out of the car park, and to the Library entrance"])
+def test_the_place_a_thing_comes_out_of_is_not_where_it_goes(session, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    suv, door = session.scene.asset("suv_1"), session.scene.landmark("Library entrance")
+    assert suv is not None and door is not None
+    assert math.dist((suv.pose.x, suv.pose.y), door.position) < 8
+
+
+def test_out_of_a_place_with_nowhere_said_still_takes_it_away(session):
+    report = session.submit("take the SUV out of lot B")
+    assert report.ok, report.error
+    assert session.scene.asset("suv_1") is None
+
+
+@pytest.mark.parametrize("prompt", ["could you drive the SUV towards the east gate", "drive our suv over to the east gate"])
+def test_a_vehicle_driven_towards_a_place_drives_the_lane_that_leads_there(session, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    suv, gate = session.scene.asset("suv_1"), session.scene.landmark("east gate")
+    assert suv is not None and gate is not None
+    assert suv.behaviour.kind == "drive_lane"
+    lane = session.scene.roads.lane(suv.behaviour.lane or "")
+    assert lane is not None
+    end = lane.centreline[-1]
+    assert math.dist(end, gate.position) < math.dist(lane.centreline[0], gate.position)  # it runs towards the gate
+
+
+@pytest.mark.parametrize("prompt", ["get the SUV out onto the road", "move the suv onto the road please"])
+def test_a_thing_got_onto_the_road_takes_the_lane_nearest_it(session, campus, prompt):
+    before = campus.asset("suv_1")
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    after = session.scene.asset("suv_1")
+    assert before is not None and after is not None
+    assert lane_at(session.scene, after.pose.x, after.pose.y) is not None
+    nearest = min(math.dist((before.pose.x, before.pose.y), p) for lane in campus.roads.lanes for p in lane.centreline)
+    assert math.dist((before.pose.x, before.pose.y), (after.pose.x, after.pose.y)) < nearest + 25
+    assert session.scene.count("suv") == 1  # the one there, never another
+
+
+@pytest.mark.parametrize(("prompt", "asked"), [
+    ("could the SUV do a couple of laps in lot B?", False),
+    ("Could one of the sedans hang about outside the library?", False),
+    ("the robot is bored; could it wander round a little?", False),
+    ("a couple of trees by the fountain would be lovely", False),
+    ("could the bus fit in lot B?", True),
+    ("can the ego see the hydrant from where it is?", True),
+    ("what would look nice by the fountain?", True),
+])
+def test_a_thing_asked_politely_to_act_is_asked_for_a_change(prompt, asked):
+    assert asks(prompt.lower()) is asked
+
+
+def test_a_vehicle_asked_politely_to_do_laps_does_them(session):
+    report = session.submit("could the SUV do a couple of laps in lot B?")
+    assert report.ok, report.error
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.kind == "circle"
+
+
+@pytest.mark.parametrize("prompt", ["the bench has gone a bit shabby, hasn't it", "the bench's gone rather grey over the years"])
+def test_gone_before_how_a_thing_looks_never_takes_it_away(session, prompt):
+    session.submit(prompt)
+    assert session.scene.asset("bench_1") is not None
+
+
+@pytest.mark.parametrize("prompt", ["the bench has gone", "the bench has gone missing, leave it that way"])
+def test_gone_alone_still_says_it_went(session, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert session.scene.asset("bench_1") is None
+
+
+def test_a_plan_that_puts_a_thing_beside_itself_is_not_applied(context):
+    plan = Plan(calls=[ToolCall(tool="place_asset", args={"asset": "bench_1", "location": {"relation": "next_to", "target": "bench_1"}})],
+                planner="rules")
+    verdict = review("could the bench shuffle about a bit?", plan, context)
+    assert verdict.action != "apply"
+    assert any("next to itself" in p for p in verdict.problems), verdict.problems
+
+
+def test_a_second_one_with_a_is_one_more_not_the_second_one(session):
+    assert session.submit("put a bench near the fountain").ok
+    report = session.submit("and a second bench outside the Engineering Hall entrance")
+    assert report.ok, report.error
+    assert session.scene.count("bench") == 3
+    first = session.scene.asset("bench_2")
+    door = session.scene.landmark("fountain")
+    assert first is not None and door is not None and math.dist((first.pose.x, first.pose.y), door.position) < 8  # still there
+
+
+def test_a_number_said_of_what_a_thing_is_like_is_no_amount(context):
+    plan = Plan(calls=[ToolCall(tool="remove_assets", args={"category": "stop_sign", "count": 1})], planner="rules")
+    verdict = review("get rid of the red sign with eight sides", plan, context)
+    assert not any("leaves out" in p for p in verdict.problems), verdict.problems
+
+
+def test_a_question_about_a_kind_of_thing_answered_about_something_else_is_not_given(context):
+    plan = Plan(calls=[ToolCall(tool="find_lanes", args={})], planner="rules")
+    verdict = review("the hydrant, which road is it on?", plan, context)
+    assert verdict.action != "apply"
+    assert any("fire hydrant" in p for p in verdict.problems), verdict.problems
+    about_it = Plan(calls=[ToolCall(tool="find_assets", args={"category": "fire_hydrant"})], planner="rules")
+    assert not any("looks up something else" in p for p in review("the hydrant, which road is it on?", about_it, context).problems)
