@@ -509,16 +509,19 @@ def _topics(request: Request, scene: Scene) -> list[str]:
 
 
 def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Scene) -> str | None:
-    """The kinds of thing a question names, when none of the plan's lookups names one of them, by
+    """The kinds of thing a question points at ("the hydrant"), when none of the plan's lookups names one of them, by
     its category, a thing of it, or a group holding it ("cars"); None when one does, or when the
     plan looks at the weather and the time instead ("dark enough for the street lights?")."""
-    if not request.categories or not calls or any(c.tool == "describe_environment" for c in calls):
-        return None
+    low = ph.normalise(request.masked)  # the text the mentions' offsets count in
+    pointed = {m.category for m in ph.find_categories(request.masked)
+               if re.search(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z]+\s+){0,2}$", low[: m.start])}
+    if not pointed or not calls or any(c.tool == "describe_environment" for c in calls):
+        return None  # "which lane would a car use": a car in general, not one to look up
     said = " ".join(str(c.args) for c in calls).lower()
     looked = {c for c in catalog() if re.search(rf"(?<![a-z]){c}(?![a-z])", said)}
     looked |= {a.category for a in scene.all_assets() if re.search(rf"(?<![a-z0-9_]){a.id}(?![0-9])", said)}
     looked |= {c for members in md.groups_said(said.replace("_", " ")).values() for c in members}
-    return None if request.categories & looked else " or ".join(sorted(request.categories)).replace("_", " ")
+    return None if pointed & looked else " or ".join(sorted(pointed)).replace("_", " ")
 
 
 def _looked_up(topic: str, said: str, calls: tuple[ToolCall, ...], scene: Scene) -> bool:

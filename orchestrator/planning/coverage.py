@@ -329,15 +329,23 @@ _CHANGES_EXISTING = frozenset(["make", "paint", "colour", "color", "recolour", "
 _AS_BEFORE = re.compile(r"\b(?:back (?:where|to where|in|into|at|on|to)|where (?:it|they) (?:was|were|used to be)|back in place)\b")
 
 
+def lx_adds(masked: str) -> bool:
+    """Whether the words hold one of the rule lexicon's ways of asking for a thing ("i want", "we need")."""
+    return any(re.search(rf"(?<![a-z]){re.escape(w)}(?![a-z])", masked) for w in lx.ADD_WORDS)
+
+
 def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
-    """Categories a verb of change points at as there ("paint the truck red") that the scene
-    does not have, which the plan adds instead."""
+    """Categories a verb of change points at as there ("paint the truck red"), or any request that
+    asks for no new thing names as there ("get the pedestrians off the road"), that the scene does
+    not have, which the plan adds instead."""
     if _NEW.search(masked):
         return []
     out = []
+    asks_for_new = ADD_WORDS.search(masked) is not None or lx_adds(masked)
     for m in named_in(masked):
         before = m.last_words(2)
-        points_at = len(before) == 2 and before[1] in _DEFINITE and (before[0] in _CHANGES_EXISTING or bool(_AS_BEFORE.search(masked)))
+        points_at = bool(before) and before[-1] in _DEFINITE and (
+            not asks_for_new or (len(before) == 2 and before[0] in _CHANGES_EXISTING) or bool(_AS_BEFORE.search(masked)))
         if points_at and not scene.count(m.category) \
                 and any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)

@@ -197,3 +197,19 @@ def test_no_clock_time_said_leaves_every_time_offered(campus: Scene, spelling_gr
     need = Requirement(kind="appearance", what="night")
     props = _props(_args("make it night", need, campus, "set_time_of_day", spelling_grounder))
     assert "anyOf" in props["time"]
+
+
+def test_where_a_path_leads_is_a_name_of_the_world_never_free_words(campus: Scene, spelling_grounder: Grounder) -> None:
+    need = Requirement(kind="move", what="suv", where="library", how="drive at 250 km/h")
+    props = _props(_args("Make the SUV drive to the library at 250 km/h.", need, campus, "set_behaviour", spelling_grounder))
+    to = _props(props["behaviour"])["to"]
+    assert "enum" in to and "Library entrance" in to["enum"]
+    assert "maxLength" not in to
+
+
+@pytest.mark.parametrize(("prompt", "moves"), [("Spawn a parked truck in lot A.", False), ("create one more bench by the fountain", False),
+                                               ("add a bench, then shift the bin to the library", True), ("put the SUV in lot A", True)])
+def test_a_request_only_for_new_things_offers_no_move(campus: Scene, prompt: str, moves: bool) -> None:
+    kinds = read_names(prompt, campus).kinds()
+    assert "add" in kinds
+    assert ("position" in kinds) is moves

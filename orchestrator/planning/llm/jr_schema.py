@@ -80,7 +80,7 @@ def _named(prop: str, names: WorldNames) -> dict[str, Any] | None:
         return _enum(names.categories)
     if prop in ("categories",):
         return {"type": "array", "items": _enum(names.categories), "minItems": 1, "maxItems": 4}
-    if prop in ("target", "near", "centre"):
+    if prop in ("target", "near", "centre", "to"):  # "to": where a path leads, never a free phrase ("250km/h")
         return _enum(names.places)
     if prop == "asset":
         return _enum(names.assets)

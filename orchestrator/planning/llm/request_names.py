@@ -38,6 +38,11 @@ _PLAIN_RELATIONS: tuple[tuple[str, str], ...] = (
 _TAKING_AWAY: tuple[Family, ...] = ("remove", "appearance", "move", "position")
 # Families a request that adds or puts something can need (never a removal).
 _PUTTING: tuple[Family, ...] = ("add", "arrange", "position", "move", "appearance")
+# Families a one-clause request for new things can need ("add a parked SUV in lot A" never moves the SUV there).
+_NEW_ONLY: tuple[Family, ...] = ("add", "arrange", "appearance")
+# Words that only ever ask for new things, and words that join a second request to the first.
+_STRICT_NEW = re.compile(r"\b(add|create|spawn|insert|another|extra)\b")
+_JOINED = re.compile(r"\b(and|also|then|plus|as well)\b|[,;+&]")
 # Families for a thing that is already there (the ego, "car 1"): it is not added again.
 _EXISTING: tuple[Family, ...] = ("position", "move", "appearance")
 # Questions the request reader misses: misspelt openers ("wheres", "were is").
@@ -100,6 +105,8 @@ class RequestNames:
     turning: bool = False
     question: bool = False
     polarity: Literal["add", "remove"] | None = None
+    # One clause whose verb only ever asks for new things ("add ...", "spawn ...").
+    new_only: bool = False
 
     def kinds(self) -> list[Family]:
         """The requirement kinds the request's mood allows, in the Sr. manager's order: a
@@ -113,7 +120,7 @@ class RequestNames:
         if self.assets and not self.categories:
             return list(_EXISTING)
         if self.polarity == "add":
-            return list(_PUTTING)
+            return list(_NEW_ONLY if self.new_only else _PUTTING)
         # No removal word: nothing is taken away. A search stays: a question the readers miss
         # must not be forced into an edit ("tel me the lanes" became a tree).
         return [f for f in FAMILIES if f != "remove"]
@@ -189,6 +196,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         speeds=tuple(dict.fromkeys(speeds)),
         weathers=tuple(dict.fromkeys(weathers)),
         polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
+        new_only=_STRICT_NEW.search(request.low) is not None and _JOINED.search(request.low) is None,
     )
 
 

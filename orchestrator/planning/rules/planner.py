@@ -858,7 +858,8 @@ def _changes_them(r: Reading) -> bool:
 
 
 # What "give me ..." asks for when it asks for information.
-_INFO_NOUNS = "list|number|count|tally|inventory|names?|positions?|locations?|coordinates|overview|summary|rundown|info|information|details|ids?"
+_INFO_NOUNS = ("list|number|count|tally|inventory|names?|positions?|locations?|coordinates|overview|summary|rundown|info|information|details|ids?"
+               "|distances?|gaps?|speeds?|headings?|sizes?|dimensions|weights?|mass|whereabouts")
 
 
 def _is_question(r: Reading, asked: bool) -> bool:
