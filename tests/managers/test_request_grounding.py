@@ -213,3 +213,14 @@ def test_a_request_only_for_new_things_offers_no_move(campus: Scene, prompt: str
     kinds = read_names(prompt, campus).kinds()
     assert "add" in kinds
     assert ("position" in kinds) is moves
+
+
+def test_the_managers_read_the_request_with_its_slips_repaired(campus: Scene, spelling_grounder: Grounder) -> None:
+    session, backend = scripted_session(campus, [requirement("remove", "bench", "bus stop"), call("remove_assets", assets=["bench_1"])],
+                                        spelling_grounder)
+    report = session.submit("remvoe the bech by the bus stpo")
+    assert report.ok, report.error
+    assert session.scene.asset("bench_1") is None
+    asked = backend.seen[0][-1]["content"]
+    assert "remove the bench" in asked and "bech" not in asked
+    assert report.plan is not None and report.plan.read_as == "remove the bench by the bus stop"

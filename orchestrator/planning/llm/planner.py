@@ -23,6 +23,7 @@ from drivetwin.orchestrator.planning.llm.jr_manager import JrManager
 from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S
 from drivetwin.orchestrator.planning.llm.request_names import read_names
 from drivetwin.orchestrator.planning.llm.sr_manager import SrManager
+from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.prompts.templates import prompt_version
 from drivetwin.tools.base import Family, ToolCall
 
@@ -99,6 +100,14 @@ class LlmPlanner:
         backend = self.backend
         trace: list[TraceStep] = []
         started = time.perf_counter()
+        # The repair every reader of requests shares: slips and run-together words, and things
+        # described instead of named ("the red thing firefighters use"), read as the names they mean.
+        repaired = repair(prompt, context.scene)
+        read_as = repaired.text if repaired.text != prompt else None
+        if read_as is not None:
+            trace.append(TraceStep(level="repair", input=prompt, output="; ".join(repaired.repairs) or read_as,
+                                   seconds=time.perf_counter() - started))
+            prompt = read_as
         said = read_names(prompt, context.scene)
         senior = SrManager(backend, self.grounder, self.call_timeout_s)
         requirements, sr_step = senior.requirements(prompt, context, said.kinds())
@@ -133,6 +142,7 @@ class LlmPlanner:
             trace=trace,
             retries=retries,
             tokens=tokens,
+            read_as=read_as,
         )
 
 
