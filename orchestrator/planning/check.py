@@ -512,8 +512,10 @@ def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Sc
     """The kinds of thing a question points at ("the hydrant"), when none of the plan's lookups names one of them, by
     its category, a thing of it, or a group holding it ("cars"); None when one does, or when the
     plan looks at the weather and the time instead ("dark enough for the street lights?")."""
-    low = ph.normalise(request.masked)  # the text the mentions' offsets count in
-    pointed = {m.category for m in ph.find_categories(request.masked)
+    places = "|".join(re.escape(ph.normalise(n).strip()) for lm in scene.landmarks for n in lm.names())
+    text = re.sub(rf"(?<![a-z])(?:{places})(?![a-z])", lambda m: " " * len(m.group(0)), request.masked)  # "the bus stop" is no stop sign
+    low = ph.normalise(text)  # the text the mentions' offsets count in
+    pointed = {m.category for m in ph.find_categories(text)
                if re.search(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z]+\s+){0,2}$", low[: m.start])}
     if not pointed or not calls or any(c.tool == "describe_environment" for c in calls):
         return None  # "which lane would a car use": a car in general, not one to look up

@@ -325,6 +325,9 @@ def ambiguous_pick(masked: str, scope: Scope, scene: Scene, memory: Memory, plac
 _CHANGES_EXISTING = frozenset(["make", "paint", "colour", "color", "recolour", "recolor", "turn", "move", "shift",
                                "push", "pull", "nudge", "rotate", "drive", "slide", "relocate", "spin", "reverse",
                                "space", "spread", "straighten", "rearrange", "reposition", "tidy", "place", "position"])
+# Verbs that handle a thing there when no word asks for a new one: "get the pedestrians off the road",
+# "have the cyclist ride round", "let the bus go" (with "add"/"we need", "have the bus at the stop" may ask for one).
+_HANDLES_EXISTING = frozenset(["get", "have", "let", "take", "send", "keep", "bring", "tell", "stop", "park", "leave"])
 # Words that say the things were there before: "put the cones back where they were".
 _AS_BEFORE = re.compile(r"\b(?:back (?:where|to where|in|into|at|on|to)|where (?:it|they) (?:was|were|used to be)|back in place)\b")
 
@@ -335,17 +338,17 @@ def lx_adds(masked: str) -> bool:
 
 
 def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
-    """Categories a verb of change points at as there ("paint the truck red"), or any request that
-    asks for no new thing names as there ("get the pedestrians off the road"), that the scene does
-    not have, which the plan adds instead."""
+    """Categories a verb of change points at as there ("paint the truck red", and with no word asking
+    for a new one, "get the pedestrians off the road") that the scene does not have, which the plan
+    adds instead."""
     if _NEW.search(masked):
         return []
     out = []
     asks_for_new = ADD_WORDS.search(masked) is not None or lx_adds(masked)
     for m in named_in(masked):
         before = m.last_words(2)
-        points_at = bool(before) and before[-1] in _DEFINITE and (
-            not asks_for_new or (len(before) == 2 and before[0] in _CHANGES_EXISTING) or bool(_AS_BEFORE.search(masked)))
+        points_at = len(before) == 2 and before[1] in _DEFINITE and (
+            before[0] in _CHANGES_EXISTING or bool(_AS_BEFORE.search(masked)) or (before[0] in _HANDLES_EXISTING and not asks_for_new))
         if points_at and not scene.count(m.category) \
                 and any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)

@@ -536,11 +536,13 @@ def _settings_offered() -> re.Pattern[str]:
 
 # A thing in the scene asked, politely, to do something ("can the SUV do a few laps?", "could one of
 # the cars wait outside the library?", "could it potter about a bit?"): a request, whatever its verb,
-# unless the words after it ask what it is able to do or perceive ("could the bus fit in lot B?").
-_THING_ASKED = re.compile(r"(?:^|[.!;?,:]\s*)(?:can|could|would) (?:(?:one|some|any|two|both|each) of )?"
-                          r"(?:(?:the|that|this|these|those|our|my|its) [a-z_0-9]+|it|they|(?:[a-z]+_\d+))\b(?P<rest>(?: [a-z']+){1,4})")
+# unless the words after it ask what it is able to do or perceive, or how things are now ("could the
+# bus fit in lot B?", "could the lamps be on at the moment, or is it day?").
+_THING_ASKED = re.compile(r"(?:^|[.!;?,:]\s*)(?:can|could) (?:(?:one|some|any|two|both|each) of )?"
+                          r"(?:(?:the|that|this|these|those|our|my|its) [a-z_0-9]+|it|they|(?:[a-z]+_\d+))\b(?P<rest>(?: [a-z']+){1,4}[^.;!?]*)")
 _ABILITY = re.compile(r"\b(?:see|fit|reach|hear|tell|know|weigh|hold|carry|cope|handle|exist|still|really|actually|ever|even"
-                      r"|possibly|already|physically|legally|be seen|mean|happen|cause|hit|crash|collide|block|get hit)\b")
+                      r"|possibly|already|physically|legally|be seen|mean|happen|cause|hit|crash|collide|block|get hit"
+                      r"|at the moment|currently|right now|yet|or (?:is|are|not|no))\b")  # "..., or is it still daytime?"
 # A wish stated as what would be good ("something green by the hall would be nice").
 _WOULD_BE_NICE = re.compile(r"\b(?:would|'d) (?:be|look) (?:(?:really|very|so|rather|quite) )?(?:nice|lovely|good|great|better|nicer|fun|cool|helpful|useful|ideal)\b")
 
