@@ -260,6 +260,10 @@ def missing_categories(categories: Iterable[str], scope: Scope, scene: Scene) ->
     return out
 
 
+# A pronoun pointing back at things just named, as the object of what is to be done ("... park them").
+_POINTED_BACK = re.compile(r"\b(?:them|those|these)\b(?!\s+(?:ones\b|[a-z]+s\b))")
+
+
 def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """Categories referred to as existing ("the SUV", "those benches") that the plan adds anew
     while the scene has them and no word asks for a new one."""
@@ -277,8 +281,11 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
                 and _BARE_TOPIC.search(m.before) is not None)
         # "the red bench", but not "give the bus stop a bench": the nearest article is the noun's
         indefinite = m.last_words(1)[-1:] in (["a"], ["an"], ["some"], ["any"])
-        if (not (bare or (any(w in _DEFINITE for w in m.last_words(2)) and not indefinite)) or not scene.count(m.category)
-                or (m.category in arranged and not every)):
+        # "cars in lot B: park them nose to tail": things said bare, then pointed back at, are those there
+        said_back = m.plural and not indefinite and _POINTED_BACK.search(m.after) is not None
+        pointed_back = said_back and not asks_to_add
+        if (not (bare or pointed_back or (any(w in _DEFINITE for w in m.last_words(2)) and not indefinite)) or not scene.count(m.category)
+                or (m.category in arranged and not (every or said_back))):  # "the cars in lot B, line them up": those there
             continue
         if any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)

@@ -148,3 +148,31 @@ def test_a_kind_named_in_general_is_no_thing_a_question_must_look_up(context):
     plan = Plan(calls=[ToolCall(tool="find_lanes", args={"near": "Library entrance"})], planner="rules")
     verdict = review("which lane would a bus take to get to the Library entrance?", plan, context)
     assert not any("looks up something else" in p for p in verdict.problems), verdict.problems
+
+
+@pytest.mark.parametrize("prompt", ["cars in lot B: bunch them up tighter", "the cars in lot B, put them in a neat row"])
+def test_things_said_bare_then_pointed_back_at_are_those_there_never_more(session, prompt):
+    report = session.submit(prompt)
+    assert session.scene.count("passenger_car") == 2 and session.scene.count("suv") == 1, report.plan
+
+
+def test_things_added_then_pointed_back_at_are_still_added(session):
+    report = session.submit("add benches by the library entrance and paint them green")
+    assert report.ok, report.error
+    assert session.scene.count("bench") >= 2
+
+
+def test_a_new_thing_just_like_a_moving_one_does_what_it_does(session):
+    assert session.submit("add a truck driving west in the westbound lane at 6 m/s").ok
+    report = session.submit("now one more exactly like it 20 m behind it")
+    assert report.ok, report.error
+    copy = session.scene.asset("truck_2")
+    assert copy is not None and copy.behaviour.kind == "drive_lane"
+    assert copy.behaviour.lane == "main_westbound" and copy.behaviour.speed == 6.0
+
+
+def test_a_vehicle_sent_off_towards_a_place_sets_off_and_is_not_put_there(session, campus):
+    report = session.submit("send the suv off towards the library")
+    assert report.ok, report.error
+    after, before = session.scene.asset("suv_1"), campus.asset("suv_1")
+    assert after is not None and before is not None and after.behaviour.kind != "parked"

@@ -644,9 +644,14 @@ _LIKE_IT = re.compile(r"\b(?:(?:exactly|just) like|identical to|(?:the )?same as
                       r"(?:it|that|this|that one|this one|the (?:other|last|first) one)\b")
 
 
+# What a thing does that a copy of it does too (a path or a circle's centre is its own).
+_COPIED_DOINGS = ("drive_lane", "cross_road", "jaywalk")
+
+
 def _alike(calls: list[ToolCall], low: str, scene: Scene, memory: Memory) -> list[ToolCall]:
-    """Additions said to be like a thing there, given its colour: the thing their place names
-    when it is of their kind, else the last one of their kind added."""
+    """Additions said to be like a thing there, given its colour and what it is doing (a car
+    "just like it" behind one driving east drives east too): the thing their place names when it
+    is of their kind, else the last one of their kind added."""
     if not _LIKE_IT.search(low):
         return calls
     out = []
@@ -660,6 +665,10 @@ def _alike(calls: list[ToolCall], low: str, scene: Scene, memory: Memory) -> lis
         if call.tool == "add_asset" and rgba is not None and "colour" not in call.args:
             hexed = "#" + "".join(f"{round(float(c) * 255):02x}" for c in rgba[:3])
             call = call.model_copy(update={"args": {**call.args, "colour": hexed}})
+        doing = target.behaviour.model_dump() if target is not None else {}
+        if call.tool == "add_asset" and doing.get("kind") in _COPIED_DOINGS and "behaviour" not in call.args:
+            copied = {k: v for k, v in doing.items() if k in ("kind", "lane", "speed") and v is not None}
+            call = call.model_copy(update={"args": {**call.args, "behaviour": copied}})
         out.append(call)
     return out
 
@@ -844,7 +853,7 @@ def _more_of_a_thing(r: Reading) -> bool:
             continue  # "make it stand out more", "spread them more": more of how, not of what
         after = r.low[said.end() :]
         if not after.strip() or re.match(r"\s+(?:of|there|here|please|too|like|next|by|near|beside|around"
-                                         r"|along|across)\b", after):
+                                         r"|along|across|exactly like|just like|behind|ahead|in front|outside|\d)\b", after):
             return True
         if any(0 <= m.start - said.end() <= 2 for m in r.mentions):
             return True

@@ -415,7 +415,9 @@ GOES_TO = re.compile(r"\b(?:walk|stroll|head|go|run|jog|wander|rid|cycl|ambl|hur
                      r"(?:\s+from(?:\s+[a-z0-9_'§]+){1,5}?)?\s+(?:to|towards?|for|into)\s+"
                      # a vehicle driven there by someone: "drive the suv towards the east gate"
                      r"|\b(?:driv(?:e|es|ing)|drove)\s+(?:the|our|my|that|this|his|her|their)\s+[a-z0-9_]+"
-                     r"(?:\s+(?:over|back|straight))?\s+(?:to|towards?|into)\s+")
+                     r"(?:\s+(?:over|back|straight))?\s+(?:to|towards?|into)\s+"
+                     # sent on its way, not put there: "send the suv towards the east gate" ("send it to the gate" may place it)
+                     r"|\b(?:sen(?:d|ds|ding|t))\s+(?:the|our|my|that|this|his|her|their)\s+[a-z0-9_]+(?:\s+(?:off|on))?\s+towards?\s+")
 # The words before a walk whose walker was named before them ("a man at the stop who then walks to the
 # bench", "now have her jog over to the hydrant").
 _SUBJECT_GONE = re.compile(r"(?:.*\b(?:who|he|she|they|him|her|them)\s+)?\s*(?:(?:and|then|now|later|after that|afterwards|slowly|quickly)\s+)*")
