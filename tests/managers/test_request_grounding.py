@@ -224,3 +224,16 @@ def test_the_managers_read_the_request_with_its_slips_repaired(campus: Scene, sp
     asked = backend.seen[0][-1]["content"]
     assert "remove the bench" in asked and "bech" not in asked
     assert report.plan is not None and report.plan.read_as == "remove the bench by the bus stop"
+
+
+@pytest.mark.parametrize(("prompt", "search", "arrange"), [
+    ("make it a lot darker outside", False, False),
+    ("move the bus to the bus stop", False, False),
+    ("put barriers all around the rubble", False, True),
+    ("bus go forward little bit", True, False),
+])
+def test_a_command_is_never_a_search_and_only_a_layout_said_is_an_arrangement(campus: Scene, prompt: str, search: bool,
+                                                                                arrange: bool) -> None:
+    kinds = read_names(prompt, campus).kinds()
+    assert ("search" in kinds) is search
+    assert ("arrange" in kinds) is arrange

@@ -14,7 +14,7 @@ import re
 from dataclasses import dataclass
 from typing import Literal
 
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, commands
 from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.retrieval.slots import read_slots
 from drivetwin.orchestrator.planning.rules.clock import clock_time
@@ -43,6 +43,8 @@ _NEW_ONLY: tuple[Family, ...] = ("add", "arrange", "appearance")
 # Words that only ever ask for new things, and words that join a second request to the first.
 _STRICT_NEW = re.compile(r"\b(add|create|spawn|insert|another|extra)\b")
 _JOINED = re.compile(r"\b(and|also|then|plus|as well)\b|[,;+&]")
+# Words for closing a way off, which an arrangement does ("block the road", "cordon off the rubble").
+_BARRIER = re.compile(r"\b(block\w*|clos(e|es|ing)|cordon\w*|fenc(e|es|ing)|barricad\w*|seal\w*|mark(s|ing)? (off|out)|line\w*|rows?)\b")
 # Families for a thing that is already there (the ego, "car 1"): it is not added again.
 _EXISTING: tuple[Family, ...] = ("position", "move", "appearance")
 # Questions the request reader misses: misspelt openers ("wheres", "were is").
@@ -107,6 +109,10 @@ class RequestNames:
     polarity: Literal["add", "remove"] | None = None
     # One clause whose verb only ever asks for new things ("add ...", "spawn ...").
     new_only: bool = False
+    # Opens with a command ("make it darker", "remove the bus"): never answered with a search.
+    imperative: bool = False
+    # Says a layout or a barrier ("in a row", "around", "block the road"): only then an arrangement.
+    laid_out: bool = False
 
     def kinds(self) -> list[Family]:
         """The requirement kinds the request's mood allows, in the Sr. manager's order: a
@@ -120,10 +126,14 @@ class RequestNames:
         if self.assets and not self.categories:
             return list(_EXISTING)
         if self.polarity == "add":
-            return list(_NEW_ONLY if self.new_only else _PUTTING)
-        # No removal word: nothing is taken away. A search stays: a question the readers miss
-        # must not be forced into an edit ("tel me the lanes" became a tree).
-        return [f for f in FAMILIES if f != "remove"]
+            kinds = list(_NEW_ONLY if self.new_only else _PUTTING)
+        else:
+            # No removal word: nothing is taken away. A search stays unless the request opens with a
+            # command: a question the readers miss must not be forced into an edit ("tel me the lanes"
+            # became a tree), and "make it darker outside" is no question.
+            kinds = [f for f in FAMILIES if f != "remove" and not (f == "search" and self.imperative)]
+        # "put the bus at the stop", "three cones 20 m ahead": no layout said, no arrangement of many
+        return [f for f in kinds if f != "arrange" or self.laid_out] or kinds
 
 
 def _relation(low: str, said: list[str]) -> list[str]:
@@ -197,6 +207,8 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         weathers=tuple(dict.fromkeys(weathers)),
         polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
         new_only=_STRICT_NEW.search(request.low) is not None and _JOINED.search(request.low) is None,
+        imperative=commands(request.low),
+        laid_out=bool(shapes) or _BARRIER.search(low) is not None,
     )
 
 
