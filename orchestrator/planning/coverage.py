@@ -59,7 +59,8 @@ _PLACE_PREPOSITION = re.compile(
     r"along|alongside|across|through|past|beyond|"
     r"(?:cordon|block|fence|close|seal|rope|tape)(?:s|ed|ing)? off|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)|"  # "cordon off the ..."
     r"(?:far|away|distance|metres|meters|m)\b(?:[^,.;?]{0,40}?\s)?from|"  # "how far is the ego from the ..."
-    r"close to|opposite|where is|where's|where are|between[^,.;?]{0,40}?\band)\s+the (?=([a-z][a-z' -]*))"  # (a look-ahead: "from the
+    r"close to|opposite|where is|where's|where are|between[^,.;?]{0,40}?\band|"
+    r"(?:middle|centre|center|edge|corner|far end|far side) of)\s+the (?=([a-z][a-z' -]*))"  # "in the middle of the lake"  # (a look-ahead: "from the
 )  # library to the pool" is read for both places; a known place masked to blanks is no name: "to the   anymore")
 # Arguments by which a call says where: a repaired place name ends up in one of them.
 _PLACE_ARG = re.compile(r"'(?:location|near|nearest_to|lane|asset|assets|target|x|y)':")
@@ -334,7 +335,7 @@ _CHANGES_EXISTING = frozenset(["make", "paint", "colour", "color", "recolour", "
                                "space", "spread", "straighten", "rearrange", "reposition", "tidy", "place", "position"])
 # Verbs that handle a thing there when no word asks for a new one: "get the pedestrians off the road",
 # "have the cyclist ride round", "let the bus go" (with "add"/"we need", "have the bus at the stop" may ask for one).
-_HANDLES_EXISTING = frozenset(["get", "have", "let", "take", "send", "keep", "bring", "tell", "stop", "park", "leave"])
+_HANDLES_EXISTING = frozenset(["get", "have", "let", "take", "send", "tell", "stop"])  # "park the truck in lot A" may ask for one
 # Words that say the things were there before: "put the cones back where they were".
 _AS_BEFORE = re.compile(r"\b(?:back (?:where|to where|in|into|at|on|to)|where (?:it|they) (?:was|were|used to be)|back in place)\b")
 

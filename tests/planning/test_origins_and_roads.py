@@ -176,3 +176,25 @@ def test_a_vehicle_sent_off_towards_a_place_sets_off_and_is_not_put_there(sessio
     assert report.ok, report.error
     after, before = session.scene.asset("suv_1"), campus.asset("suv_1")
     assert after is not None and before is not None and after.behaviour.kind != "parked"
+
+
+@pytest.mark.parametrize(("typed", "meant"), [("put a bin naer the fountain", "near"), ("a cone befroe the junction", "before"),
+                                              ("how far is the bench ffrom the ego", "from"), ("turn the sign to face wset", "west")])
+def test_a_slip_in_a_word_of_relation_or_direction_is_repaired(campus, typed, meant):
+    from drivetwin.orchestrator.planning.rules.spelling import repair
+
+    assert meant in repair(typed, campus).text.split()
+
+
+@pytest.mark.parametrize("typed", ["the wet crosswalk", "a form by the gate", "the lift is out"])
+def test_an_english_word_near_a_relation_word_is_left_as_said(campus, typed):
+    from drivetwin.orchestrator.planning.rules.spelling import repair
+
+    assert repair(typed, campus).text == typed
+
+
+def test_the_middle_of_a_place_the_world_lacks_is_never_the_map_middle(session):
+    report = session.submit("put a bench in the middle of the lake")
+    assert not report.ok
+    assert "lake" in (report.error or "")
+    assert session.scene.count("bench") == 1

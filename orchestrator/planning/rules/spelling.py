@@ -425,6 +425,22 @@ def _split_glued(word: str, scene: Scene, vocab: frozenset[str]) -> str | None:
     return None
 
 
+# The little words that carry a request's relations and directions: protected from repair as common
+# words are, but a slip one letter from exactly one of them that is no English word is that word
+# ("naer the bus stop", "befroe the junction", "ffrom the ego", "face esat").
+_RELATION_WORDS = ("near", "from", "before", "behind", "beside", "between", "with", "into", "onto", "towards", "toward",
+                   "around", "across", "along", "after", "next", "front", "nearest", "closest", "furthest", "farthest",
+                   "left", "right", "north", "south", "east", "west", "ahead", "opposite", "outside", "inside")
+
+
+def _relation_slip(low: str) -> str | None:
+    """The relation or direction word `low` is one slip from, when exactly one and `low` is no English word."""
+    if len(low) < MIN_REPAIR_LEN or is_english(low):
+        return None
+    near = [w for w in _RELATION_WORDS if edits(low, w) == 1]
+    return near[0] if len(near) == 1 else None
+
+
 def _closest(low: str, close: list[str], targets: tuple[str, ...]) -> str | None:
     # difflib's pick, unless a target fewer slips away exists ("bycicle" is "bicycle", not "circle").
     by_edits = _nearest_by_edits(low, targets)
@@ -773,7 +789,8 @@ def repair(text: str, scene: Scene) -> Repaired:
         if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away
             repairs.append(f"{word} -> {slip}")
             return slip
-        new = _place_glued(word, scene) or _repair_word(word, vocab) or _split_glued(word, scene, vocab)
+        new = _place_glued(word, scene) or _repair_word(word, vocab) or _split_glued(word, scene, vocab) \
+            or (None if is_known(word.lower(), vocab) else _relation_slip(word.lower()))
         if new is not None and " " not in new and _word_only_inflected(word.lower()) and edits(word.lower(), new) >= 2:
             new = None  # "scatter" is a word the vocabulary holds only as "scattered", not a slip for "scooter"
         if new is not None and new not in _COMMAND_VERBS and _COMMAND_SLOT.search(text[: m.start()]) \
