@@ -21,6 +21,7 @@ from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.intent import (
     ADD_WORDS,
     ASKED_ABOUT,
+    BARE_STATE,
     FORBIDDEN,
     HABITUAL,
     HOW_THINGS_GO,
@@ -618,8 +619,8 @@ def unnamed_added(masked: str, scope: Scope) -> list[AssetInstance]:
     """New things a plan adds while the words name no kind, point at nothing and give no word for
     theirs ("darker, please" done by adding a pedestrian, "slow the test car down" by adding a bus)."""
     low = ph.normalise(masked)
-    if not scope.added or named_in(masked) or _POINTS.search(masked) or _MORE_OF.search(low):
-        return []
+    if not scope.added or named_in(masked) or _POINTS.search(masked) or _MORE_OF.search(low) or BARE_STATE.search(low):
+        return []  # "the junction looks bare": what is missing is wanted, whatever fills it
     return [a for a in scope.added if not any(re.search(rf"\b{re.escape(w)}\b", low) for w in lx.CONCEPTS.get(a.category, ()))]
 
 

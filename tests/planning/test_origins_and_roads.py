@@ -198,3 +198,12 @@ def test_the_middle_of_a_place_the_world_lacks_is_never_the_map_middle(session):
     assert not report.ok
     assert "lake" in (report.error or "")
     assert session.scene.count("bench") == 1
+
+
+@pytest.mark.parametrize("prompt", ["the crossroads look rather bare", "the area by the fountain feels a bit empty"])
+def test_a_place_said_to_be_bare_is_asked_about_with_things_to_fill_it(session, prompt):
+    report = session.submit(prompt)
+    assert not report.ok and report.question is not None, report.error
+    kinds = {c.args.get("category") for r in report.question.readings for c in r.calls}
+    assert len(kinds) >= 2  # a choice, not a guess
+    assert session.scene.count("pedestrian") == 0

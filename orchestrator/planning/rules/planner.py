@@ -73,7 +73,7 @@ from drivetwin.orchestrator.planning.rules.places import (
     said_a_place,
 )
 from drivetwin.orchestrator.planning.rules.questions import of_group, plan_question
-from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, is_new, named_as, read
+from drivetwin.orchestrator.planning.rules.reading import Reading, find_count, find_place, is_new, named_as, read
 from drivetwin.orchestrator.planning.rules.repeat import (
     SAID_AGAIN_AT,
     correct,
@@ -525,6 +525,29 @@ class RulePlanner:
                             question=Question(text=f"By {said.said!r}, do you mean {names}?", readings=readings))
         return None
 
+    def _what_fills(self, prompt: str, context: PlanContext) -> Plan | None:
+        """A question offering a few things to add where a request only says a place is bare or
+        empty and names nothing to put there ("the junction looks a bit bare", "it feels too
+        empty near the fountain"); None for any other request."""
+        low = ph.normalise(prompt)
+        if not BARE_STATE.search(low) or ph.find_categories(low) or asks(low.strip()):
+            return None
+        place = find_place(context.scene, low)
+        where = f" near the {place[0]}" if place is not None else ""
+        readings = []
+        for offer in _FILLERS_OFFERED:
+            try:
+                reading = self._plan(f"add {offer}{where}", context, which_place=False)
+            except PlanningError:
+                continue
+            if reading.calls and reading.question is None:
+                readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
+        if len(readings) < 2:
+            return None
+        step = TraceStep(level="rules", input=prompt, output="a place said to be bare, nothing named for it; asking")
+        return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
+                    question=Question(text=f"What should I add{where or ' there'}?", readings=readings))
+
     def _each_place(self, prompt: str, context: PlanContext) -> Plan | None:
         """The request done at each place of a kind it says every one of ("a stop sign at every
         crosswalk", "cones at both gates"); None when it says no such thing."""
@@ -551,6 +574,8 @@ class RulePlanner:
             return each
         if which_place and (doubt := self._which_thing(prompt, context)) is not None:
             return doubt  # "the big vehicle that carries lots of passengers": a bus or a truck?
+        if which_place and (offer := self._what_fills(prompt, context)) is not None:
+            return offer  # "the junction looks a bit bare": people, trees or benches there?
         started = time.perf_counter()
         scene = context.scene
         repaired = repair(prompt, scene)
@@ -1066,6 +1091,10 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if _unknown_verb(r, scene) is not None and not strict_add and not r.has(lx.ADD_WORDS) and scene.count(mention.category):
         return None  # "quita el fire hydrant", "strip all the vegetation out": a verb not known is never "add"
     return _add(r, scene, memory, notes)
+
+
+# What is offered for a place said to be bare: people, greenery, somewhere to sit.
+_FILLERS_OFFERED = ("a few pedestrians", "two trees", "a bench")
 
 
 # Words that may open a command before its verb ("ok so now just ...").
