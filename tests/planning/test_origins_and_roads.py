@@ -207,3 +207,10 @@ def test_a_place_said_to_be_bare_is_asked_about_with_things_to_fill_it(session, 
     kinds = {c.args.get("category") for r in report.question.readings for c in r.calls}
     assert len(kinds) >= 2  # a choice, not a guess
     assert session.scene.count("pedestrian") == 0
+
+
+@pytest.mark.parametrize("prompt", ["add loads of pedestrians at the bus stop", "we need plenty of cars in lot A"])
+def test_loads_and_plenty_are_more_than_a_few(session, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert session.scene.count("pedestrian") + session.scene.count("passenger_car") - 2 >= 5
