@@ -237,3 +237,15 @@ def test_a_command_is_never_a_search_and_only_a_layout_said_is_an_arrangement(ca
     kinds = read_names(prompt, campus).kinds()
     assert ("search" in kinds) is search
     assert ("arrange" in kinds) is arrange
+
+
+def test_the_two_ends_of_a_distance_are_the_places_the_request_names(campus: Scene, spelling_grounder: Grounder) -> None:
+    prompt = "How far is the fountain from the east gate?"
+    need = Requirement(kind="search", what="distance", where="fountain, east gate")
+    props = _props(_args(prompt, need, campus, "measure_distance", spelling_grounder))
+    assert set(props["a"]["enum"]) == set(props["b"]["enum"]) == {"fountain", "east gate", "ego"}
+
+
+@pytest.mark.parametrize(("prompt", "count"), [("put a few cones by the east gate", 3), ("a handful of bins near the library", 4)])
+def test_an_amount_said_in_words_is_a_count_to_copy(campus: Scene, prompt: str, count: int) -> None:
+    assert float(count) in read_names(prompt, campus).numbers

@@ -80,7 +80,9 @@ def _named(prop: str, names: WorldNames) -> dict[str, Any] | None:
         return _enum(names.categories)
     if prop in ("categories",):
         return {"type": "array", "items": _enum(names.categories), "minItems": 1, "maxItems": 4}
-    if prop in ("target", "near", "centre", "to"):  # "to": where a path leads, never a free phrase ("250km/h")
+    if prop in ("a", "b"):  # a distance's ends: those named, or the ego ("how far is the library?")
+        return _enum([*names.places, "ego"])
+    if prop in ("target", "near", "centre", "to", "nearest_to"):  # a place, thing or lane named, never a free phrase ("250km/h")
         return _enum(names.places)
     if prop == "asset":
         return _enum(names.assets)

@@ -17,6 +17,8 @@ from typing import Literal
 from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, commands
 from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.retrieval.slots import read_slots
+from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.tools.base import FAMILIES, Family
 from drivetwin.worlds.scene import Scene
@@ -43,6 +45,8 @@ _NEW_ONLY: tuple[Family, ...] = ("add", "arrange", "appearance")
 # Words that only ever ask for new things, and words that join a second request to the first.
 _STRICT_NEW = re.compile(r"\b(add|create|spawn|insert|another|extra)\b")
 _JOINED = re.compile(r"\b(and|also|then|plus|as well)\b|[,;+&]")
+# Amounts said in words rather than figures ("a few", "a couple of", "loads of").
+_VAGUE_AMOUNT = re.compile(r"\b(pair|couple|few|handful|bunch|several|dozen|lots|loads|plenty|heaps)\b(?= of\b| [a-z]+s\b)")
 # Words for closing a way off, which an arrangement does ("block the road", "cordon off the rubble").
 _BARRIER = re.compile(r"\b(block\w*|clos(e|es|ing)|cordon\w*|fenc(e|es|ing)|barricad\w*|seal\w*|mark(s|ing)? (off|out)|line\w*|rows?)\b")
 # Families for a thing that is already there (the ego, "car 1"): it is not added again.
@@ -177,6 +181,8 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
             numbers.append(float(value))
         elif kind == "colour" and re.search(rf"\b{value}\b", prompt.lower()):  # said, not implied by a thing
             colours.append(value)
+    # "a few cones", "a couple of the lamps": the amount the rule planner reads for the words, a count to copy
+    numbers += [float(lx.COLLECTIVE_COUNTS.get(w) or ph.NUMBER_WORDS[w]) for w in _VAGUE_AMOUNT.findall(request.low)]
     said_speeds = [float(m.group(1)) for m in _SPEED.finditer(prompt.lower())]
     numbers = [n for n in numbers if n not in angles and n not in said_speeds and n not in speeds]
     # The request reader also reads "car" in "car 1" as a category: that car is an asset named.
