@@ -508,15 +508,21 @@ def _topics(request: Request, scene: Scene) -> list[str]:
     return [*([request.place] if request.place else []), *named]
 
 
+# A thing's word run straight into another noun, which it then only describes ("student car park").
+_MODIFIES_NEXT = re.compile(r"\s*(?:car park|parking|lot|park|area|zone|stop|lane|road|street|entrance|building|hall|side)\b")
+
+
 def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Scene) -> str | None:
     """The kinds of thing a question points at ("the hydrant"), when none of the plan's lookups names one of them, by
     its category, a thing of it, or a group holding it ("cars"); None when one does, or when the
     plan looks at the weather and the time instead ("dark enough for the street lights?")."""
-    places = "|".join(re.escape(ph.normalise(n).strip()) for lm in scene.landmarks for n in lm.names())
-    text = re.sub(rf"(?<![a-z])(?:{places})(?![a-z])", lambda m: " " * len(m.group(0)), request.masked)  # "the bus stop" is no stop sign
-    low = ph.normalise(text)  # the text the mentions' offsets count in
+    # places and the ego blanked, the length kept: "the bus stop" is no stop sign, "the ego car" no car
+    named = [re.escape(ph.normalise(n).strip()) for lm in scene.landmarks for n in lm.names()] + [re.escape(w) for w in ph.EGO_WORDS]
+    text = re.sub(rf"(?<![a-z])(?:{'|'.join(named)})(?![a-z])", lambda m: " " * len(m.group(0)), request.low)
+    low, said = ph.normalise(text), ph.normalise(request.low)  # the texts the mentions' offsets count in
     pointed = {m.category for m in ph.find_categories(text)
-               if re.search(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z]+\s+){0,2}$", low[: m.start])}
+               if re.search(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z]+\s+){0,2}$", low[: m.start])
+               and not _MODIFIES_NEXT.match(said[m.end :])}  # "the student car park": a word said of a place
     if not pointed or not calls or any(c.tool == "describe_environment" for c in calls):
         return None  # "which lane would a car use": a car in general, not one to look up
     said = " ".join(str(c.args) for c in calls).lower()
@@ -626,6 +632,14 @@ def _numbers_used(effect: Effect, scene: Scene, place: str | None, ego: bool = F
     used += [math.hypot(float(c.args.get("east", 0)), float(c.args.get("north", 0)))  # a move at a slant
              for c in effect.calls if c.tool == "move_asset" and "east" in c.args and "north" in c.args]
     return used
+
+
+def _figures_left_out(request: Request, calls: list[ToolCall]) -> list[float]:
+    """The request's numbers that none of the calls' arguments hold, in any unit the request says
+    ("drive at 36 km/h and stop before the crossing" read as the stop alone leaves out 36)."""
+    used = [n for c in calls for n in _numbers_in_args(c.args)]
+    factors = [1.0, *(f for unit, f in UNIT_FACTORS.items() if re.search(unit, request.low))]
+    return [n for n in request.numbers if not _accounts_for(n, used, factors)]
 
 
 def _accounts_for(number: float, used: list[float], factors: list[float]) -> bool:
@@ -916,7 +930,11 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
     answers = bool(plan.calls) and all(c.tool in QUERY_TOOLS for c in plan.calls) and asks(ph.normalise(prompt).strip())
     if not answers and (missed := missed_scenario(prompt, plan, context)) is not None:  # never a static edit for a scenario
         return Verdict("ask" if missed.question else "refuse", [missed.problem], missed.question, missed.message)
-    if read_as_scenario(prompt, plan, context):  # the storyboard's readings are the scenario reader's to judge
+    if read_as_scenario(prompt, plan, context):  # the storyboard's readings are the scenario reader's to judge,
+        left_out = _figures_left_out(read_request(prompt, context.scene), plan.calls)  # but every figure said is in them
+        if left_out:
+            problems = ["the plan leaves out " + ", ".join(f"{n:g}" for n in left_out)]
+            return Verdict("refuse", problems, None, refusal(problems, context))
         return Verdict("apply")
     effect = dry_run(plan.calls, context)
     if effect is None:

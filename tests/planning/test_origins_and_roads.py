@@ -214,3 +214,20 @@ def test_loads_and_plenty_are_more_than_a_few(session, prompt):
     report = session.submit(prompt)
     assert report.ok, report.error
     assert session.scene.count("pedestrian") + session.scene.count("passenger_car") - 2 >= 5
+
+
+def test_a_storyboard_that_leaves_out_a_figure_said_is_not_applied(context):
+    plan = Plan(calls=[ToolCall(tool="add_event", args={"actor": "ego", "manoeuvre": {"kind": "stop"},
+                                                        "when": {"kind": "reach", "actor": "ego", "place": "west crosswalk"}})],
+                planner="rules")
+    verdict = review("have the ego drive at 45 km/h and stop before the west crosswalk", plan, context)
+    assert verdict.action != "apply"  # the scenario reader reads the 45 in: its reading is offered
+    slipped = review("make ego drvie at 36 kmh and stop befor the west crosswlak", plan, context)
+    assert slipped.action != "apply"  # the reader misses the 36 as the plan does: the figure is what stops it
+    assert any("leaves out 36" in p for p in slipped.problems), slipped.problems
+
+
+def test_a_word_said_of_a_place_is_no_thing_a_question_asks_about(context):
+    plan = Plan(calls=[ToolCall(tool="find_assets", args={"category": "vehicles", "near": "parking lot B"})], planner="rules")
+    verdict = review("how many vehicles are in the visitor car park right now?", plan, context)
+    assert not any("looks up something else" in p for p in verdict.problems), verdict.problems
