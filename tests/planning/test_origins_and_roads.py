@@ -222,7 +222,10 @@ def test_a_storyboard_that_leaves_out_a_figure_said_is_not_applied(context):
                 planner="rules")
     verdict = review("have the ego drive at 45 km/h and stop before the west crosswalk", plan, context)
     assert verdict.action != "apply"  # the scenario reader reads the 45 in: its reading is offered
-    slipped = review("make ego drvie at 36 kmh and stop befor the west crosswlak", plan, context)
+    stop = Plan(calls=[ToolCall(tool="add_event", args={"actor": "ego", "manoeuvre": {"kind": "stop", "rate": 4.0},
+                                                        "when": {"kind": "reach", "actor": "ego", "place": "west crosswalk"}})],
+                planner="rules")
+    slipped = review("make ego drive at 36 kmh and stop before the west crosswalk", stop, context)
     assert slipped.action != "apply"  # the reader misses the 36 as the plan does: the figure is what stops it
     assert any("leaves out 36" in p for p in slipped.problems), slipped.problems
 
