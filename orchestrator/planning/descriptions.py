@@ -43,6 +43,12 @@ _NOT_HEADS = frozenset(["ego", "actor", "npc", "permanent", "temporary", "vulner
 _PICKING = frozenset([*COLOURS, "parked", "moving", "driving", "stopped", "stationary", "nearest", "closest", "furthest"])
 
 
+# A clause that only says where a thing is ("which are standing in lot B", "parked by the gate").
+_ONLY_WHERE = re.compile(r"(?:(?:which|that|who)\s+(?:is|are|was|were|'s)\s+|(?:which|that|who)\s+)?"
+                         r"(?:(?:standing|sitting|parked|waiting|stopped|left|placed|located|situated|lined up)\s+)?"
+                         r"(?:in|at|on|by|near|next to|beside|behind|outside|inside|along|across|around|in front of)\b", re.IGNORECASE)
+
+
 @cache
 def _groups() -> dict[str, frozenset[str]]:
     """Head words for a group of categories, singular and plural: "sign" and "signs" are the signs."""
@@ -150,6 +156,8 @@ def _read(m: re.Match[str], scene: Scene) -> Described | None:
     place = head in _PLACE_HEADS
     if place and not clause:
         return None  # "that nice spot": a place pointed at, not described
+    if not place and _ONLY_WHERE.match(clause):
+        return None  # "the vehicles which are standing in lot B": where they are, which says no kind
     cut = _CLAUSE_END.search(clause, 1 + (clause.find(" ") if " " in clause else len(clause)))  # never before its first word
     clause = clause[: cut.start()] if cut is not None else clause
     words = clause.split()[:MAX_CLAUSE_WORDS]

@@ -234,3 +234,9 @@ def test_a_word_said_of_a_place_is_no_thing_a_question_asks_about(context):
     plan = Plan(calls=[ToolCall(tool="find_assets", args={"category": "vehicles", "near": "parking lot B"})], planner="rules")
     verdict = review("how many vehicles are in the visitor car park right now?", plan, context)
     assert not any("looks up something else" in p for p in verdict.problems), verdict.problems
+
+
+def test_a_clause_that_only_says_where_things_stand_is_no_description_of_their_kind(session):
+    report = session.submit("list the vehicles which are standing in parking lot B")
+    assert report.ok and report.question is None, report.error
+    assert "suv_1" in (report.answer or "") and "passenger_car_1" in (report.answer or "")
