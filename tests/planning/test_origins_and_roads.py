@@ -240,3 +240,22 @@ def test_a_clause_that_only_says_where_things_stand_is_no_description_of_their_k
     report = session.submit("list the vehicles which are standing in parking lot B")
     assert report.ok and report.question is None, report.error
     assert "suv_1" in (report.answer or "") and "passenger_car_1" in (report.answer or "")
+
+
+def test_a_part_to_be_done_over_time_left_unread_is_asked_about_never_dropped(session):
+    report = session.submit("have the suv pull out and tailgate the ego")
+    assert not report.ok and report.question is not None, report.error
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.kind == "parked"
+
+
+def test_stopping_a_vehicle_at_a_place_is_a_stop_when_it_gets_there(campus, registry):
+    from drivetwin.orchestrator.planning.registry import make_planner
+    from drivetwin.orchestrator.session import Session
+
+    session = Session(campus, make_planner("hybrid"), registry)
+    report = session.submit("now stop the ego at the junction")
+    assert report.ok, report.error
+    ego = session.scene.asset("ego")
+    assert ego is not None and ego.behaviour.kind == "drive_lane"  # still driving now
+    assert report.plan is not None and report.plan.calls[0].tool == "add_event"

@@ -624,6 +624,12 @@ class RulePlanner:
                 "restyle things, find them, and set the weather and time, e.g. 'add 3 traffic cones "
                 "in front of the JTEKT building entrance', 'make it rain', 'remove the bus'"
             )
+        dropped = next((clause for clause in skipped if _DROPPED_ACTION.search(clause.lower())), None)
+        if calls and dropped is not None:  # "have the suv pull out and follow the ego": never the pulling out alone, silently
+            step = TraceStep(level="rules", input=prompt, output=f"{describe(calls)}, but {dropped!r} not read; asking")
+            return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
+                        question=Question(text=f"I could not read {dropped!r}. Do only this: {describe(calls)}?",
+                                          readings=[Choice(text=describe(calls), calls=calls)]))
         for clause in skipped:
             notes.guess(f"ignored {clause!r}")
         if _UNRECOGNISED in notes.guesses:
@@ -1093,6 +1099,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     return _add(r, scene, memory, notes)
 
 
+# Words of something to be done over time that, left unread in a request, leave part of it undone.
+_DROPPED_ACTION = re.compile(r"\b(?:follow\w*|overtak\w*|brak(?:e|es|ed|ing)|revers\w*|cut(?:s|ting)? in|chang\w* lanes?|"
+                             r"slow\w* down|speed\w* up|accelerat\w*|yield\w*|tailgat\w*|swerv\w*)\b")
 # What is offered for a place said to be bare: people, greenery, somewhere to sit.
 _FILLERS_OFFERED = ("a few pedestrians", "two trees", "a bench")
 

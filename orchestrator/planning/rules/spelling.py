@@ -702,6 +702,10 @@ def _place_patterns(names: tuple[str, ...]) -> tuple[re.Pattern[str], re.Pattern
                        re.IGNORECASE))
 
 
+# "stop the ego at the junction", "halt the bus before the crossing": a stop when it gets there, said as
+# "make the ego stop at the junction" is (never a stop where it stands now).
+_STOP_THERE = re.compile(r"(^|[,.;]\s*|\b(?:and|then|please|now|just|so|ok|okay)\s+)(?:stop|halt)\s+((?:the|our|my)\s+[a-z_0-9]+)\s+"
+                         r"(?=(?:at|before|just before|in front of|by|when it (?:reaches|gets to))\s+the\b)", re.IGNORECASE)
 # "have us turn", "get us moving", "let us pass": the speaker's car, the ego.
 _US_AS_OBJECT = re.compile(r"\b(have|get|make|let)\s+us\b(?!\s+(?:know|see|have|get|add|put|try|check))", re.IGNORECASE)
 # "Don't move the SUV, move the sedan beside it": what not to do, then what to do instead.
@@ -765,6 +769,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _UP_AHEAD.sub("ahead of the ego", text)
     text = _what_instead(text)
     text = _US_AS_OBJECT.sub(r"\1 the ego", text)  # "have us turn at the crossroads": the car under test
+    text = _STOP_THERE.sub(r"\1make \2 stop ", text)
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
