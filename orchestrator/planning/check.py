@@ -635,11 +635,16 @@ def _numbers_used(effect: Effect, scene: Scene, place: str | None, ego: bool = F
 
 
 def _figures_left_out(request: Request, calls: list[ToolCall]) -> list[float]:
-    """The request's numbers that none of the calls' arguments hold, in any unit the request says
-    ("drive at 36 km/h and stop before the crossing" read as the stop alone leaves out 36)."""
+    """The speeds the request says that none of the calls' arguments hold, in the unit said ("drive
+    at 36 km/h and stop before the crossing" read as the stop alone leaves out 36). Only speeds: a
+    storyboard's times and gaps are sums of what is said ("brakes 4 s later" is at 5 s)."""
     used = [n for c in calls for n in _numbers_in_args(c.args)]
-    factors = [1.0, *(f for unit, f in UNIT_FACTORS.items() if re.search(unit, request.low))]
-    return [n for n in request.numbers if not _accounts_for(n, used, factors)]
+    speeds = [(float(m.group(1)), m.group(2)) for m in _SPEED_SAID.finditer(request.low)]
+    return [n for n, unit in speeds
+            if not _accounts_for(n, used, [1.0, *(f for said, f in UNIT_FACTORS.items() if re.search(said, unit))])]
+
+
+_SPEED_SAID = re.compile(r"(\d+(?:\.\d+)?)\s*(km/?h|kmh|kph|mph|m/s|metres? (?:a|per) second|kilomet\w+ (?:an|per) hour|miles (?:an|per) hour)\b")
 
 
 def _accounts_for(number: float, used: list[float], factors: list[float]) -> bool:

@@ -530,8 +530,9 @@ class RulePlanner:
         empty and names nothing to put there ("the junction looks a bit bare", "it feels too
         empty near the fountain"); None for any other request."""
         low = ph.normalise(prompt)
-        if not BARE_STATE.search(low) or ph.find_categories(low) or asks(low.strip()):
-            return None
+        if not BARE_STATE.search(low) or ph.find_categories(low) or asks(low.strip()) or LIVELIER.search(low) \
+                or any(commands(part) for part in re.split(r"[,.;!]+|\band\b|\bso\b", low)):
+            return None  # "main street feels deserted, make it livelier": the request says what to do
         place = find_place(context.scene, low)
         where = f" near the {place[0]}" if place is not None else ""
         readings = []
