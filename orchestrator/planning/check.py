@@ -512,13 +512,20 @@ def _topics(request: Request, scene: Scene) -> list[str]:
 _MODIFIES_NEXT = re.compile(r"\s*(?:car park|parking|lot|park|area|zone|stop|lane|road|street|entrance|building|hall|side)\b")
 
 
+@cache
+def _places_and_ego(names: tuple[str, ...]) -> re.Pattern[str]:
+    """One world's place names and the words for the ego, as one pattern."""
+    said = [re.escape(ph.normalise(n).strip()) for n in names] + [re.escape(w) for w in ph.EGO_WORDS]
+    return re.compile(rf"(?<![a-z])(?:{'|'.join(said)})(?![a-z])")
+
+
 def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Scene) -> str | None:
     """The kinds of thing a question points at ("the hydrant"), when none of the plan's lookups names one of them, by
     its category, a thing of it, or a group holding it ("cars"); None when one does, or when the
     plan looks at the weather and the time instead ("dark enough for the street lights?")."""
     # places and the ego blanked, the length kept: "the bus stop" is no stop sign, "the ego car" no car
-    named = [re.escape(ph.normalise(n).strip()) for lm in scene.landmarks for n in lm.names()] + [re.escape(w) for w in ph.EGO_WORDS]
-    text = re.sub(rf"(?<![a-z])(?:{'|'.join(named)})(?![a-z])", lambda m: " " * len(m.group(0)), request.low)
+    blanked = _places_and_ego(tuple(n for lm in scene.landmarks for n in lm.names()))
+    text = blanked.sub(lambda m: " " * len(m.group(0)), request.low)
     low, said = ph.normalise(text), ph.normalise(request.low)  # the texts the mentions' offsets count in
     pointed = {m.category for m in ph.find_categories(text)
                if re.search(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z]+\s+){0,2}$", low[: m.start])

@@ -61,7 +61,7 @@ _PLACE_PREPOSITION = re.compile(
     r"(?:cordon|block|fence|close|seal|rope|tape)(?:s|ed|ing)? off|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)|"  # "cordon off the ..."
     r"(?:far|away|distance|metres|meters|m)\b(?:[^,.;?]{0,40}?\s)?from|"  # "how far is the ego from the ..."
     r"close to|opposite|where is|where's|where are|between[^,.;?]{0,40}?\band|"
-    r"(?:middle|centre|center|edge|corner|far end|far side) of)\s+the (?=([a-z][a-z' -]*))"  # "in the middle of the lake"  # (a look-ahead: "from the
+    r"(?:middle|centre|center|edge|corner|far end|far side) of)\s+the (?=([a-z][a-z' -]*))"  # "the middle of the lake"; (a look-ahead: "from the
 )  # library to the pool" is read for both places; a known place masked to blanks is no name: "to the   anymore")
 # Arguments by which a call says where: a repaired place name ends up in one of them.
 _PLACE_ARG = re.compile(r"'(?:location|near|nearest_to|lane|asset|assets|target|x|y)':")
@@ -341,7 +341,7 @@ _HANDLES_EXISTING = frozenset(["get", "have", "let", "take", "send", "tell", "st
 _AS_BEFORE = re.compile(r"\b(?:back (?:where|to where|in|into|at|on|to)|where (?:it|they) (?:was|were|used to be)|back in place)\b")
 
 
-def lx_adds(masked: str) -> bool:
+def _lexicon_adds(masked: str) -> bool:
     """Whether the words hold one of the rule lexicon's ways of asking for a thing ("i want", "we need")."""
     return any(re.search(rf"(?<![a-z]){re.escape(w)}(?![a-z])", masked) for w in lx.ADD_WORDS)
 
@@ -353,7 +353,7 @@ def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     if _NEW.search(masked):
         return []
     out = []
-    asks_for_new = ADD_WORDS.search(masked) is not None or lx_adds(masked)
+    asks_for_new = ADD_WORDS.search(masked) is not None or _lexicon_adds(masked)
     for m in named_in(masked):
         before = m.last_words(2)
         points_at = len(before) == 2 and before[1] in _DEFINITE and (

@@ -42,9 +42,10 @@ _TAKING_AWAY: tuple[Family, ...] = ("remove", "appearance", "move", "position")
 _PUTTING: tuple[Family, ...] = ("add", "arrange", "position", "move", "appearance")
 # Families a one-clause request for new things can need ("add a parked SUV in lot A" never moves the SUV there).
 _NEW_ONLY: tuple[Family, ...] = ("add", "arrange", "appearance")
-# Words that only ever ask for new things, and words that join a second request to the first.
+# Words that only ever ask for new things.
 _STRICT_NEW = re.compile(r"\b(add|create|spawn|insert|another|extra)\b")
-_JOINED = re.compile(r"\b(and|also|then|plus|as well)\b|[,;+&]")
+# Words and marks that join clauses: a request with one may hold several requirements.
+CLAUSE_JOINS = re.compile(r"\b(and|also|then|plus|as well)\b|[,;+&]")
 # Amounts said in words rather than figures ("a few", "a couple of", "loads of").
 _VAGUE_AMOUNT = re.compile(r"\b(pair|couple|few|handful|bunch|several|dozen|lots|loads|plenty|heaps)\b(?= of\b| [a-z]+s\b)")
 # Words for closing a way off, which an arrangement does ("block the road", "cordon off the rubble").
@@ -212,10 +213,10 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         speeds=tuple(dict.fromkeys(speeds)),
         weathers=tuple(dict.fromkeys(weathers)),
         polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
-        new_only=_STRICT_NEW.search(request.low) is not None and _JOINED.search(request.low) is None,
+        new_only=_STRICT_NEW.search(request.low) is not None and CLAUSE_JOINS.search(request.low) is None,
         imperative=commands(request.low),
         laid_out=bool(shapes) or _BARRIER.search(low) is not None,
     )
 
 
-__all__ = ["DIRECTIONS", "SHAPES", "RequestNames", "read_names"]
+__all__ = ["CLAUSE_JOINS", "DIRECTIONS", "SHAPES", "RequestNames", "read_names"]

@@ -7,8 +7,6 @@ the world's example bank (llm/demos.py; the static prompts/sr_examples.json with
 
 from __future__ import annotations
 
-import re
-
 from drivetwin.orchestrator.backends import Backend, Message
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.base import PlanContext, TraceStep
@@ -23,14 +21,13 @@ from drivetwin.orchestrator.planning.llm.managers import (
     ask,
     requirements_schema,
 )
+from drivetwin.orchestrator.planning.llm.request_names import CLAUSE_JOINS
 from drivetwin.prompts.templates import as_json, render, sr_examples
 from drivetwin.tools.base import Family
 
 # Few-shot examples per prompt: enough to show the pattern, few enough for a 4k context.
 SR_EXAMPLES = 4
 SR_MAX_TOKENS = 160
-# Words and marks that join clauses: a request with one may hold several requirements.
-_CLAUSE_JOINS = re.compile(r"\b(and|also|then|plus|as well)\b|[,;+&]")
 # Characters of conversation memory shown to the Sr. manager (the rest is summarised).
 MEMORY_CHARS = 600
 
@@ -80,7 +77,7 @@ class SrManager:
         A one-clause request whose mood allows one kind only ("where is the hydrant?") is one
         requirement of that kind: the model is not asked (it could only copy the words).
         """
-        if kinds is not None and len(kinds) == 1 and _CLAUSE_JOINS.search(prompt.lower()) is None:
+        if kinds is not None and len(kinds) == 1 and CLAUSE_JOINS.search(prompt.lower()) is None:
             only = Requirement(kind=kinds[0], what=prompt.strip()[:FIELD_CHARS])
             return [only], TraceStep(level="sr_manager", input=prompt, output=f"{only}\n(one clause, one kind: not asked)")
         answer: Answer[Requirements] = ask(

@@ -428,7 +428,7 @@ def _split_glued(word: str, scene: Scene, vocab: frozenset[str]) -> str | None:
 # The little words that carry a request's relations and directions: protected from repair as common
 # words are, but a slip one letter from exactly one of them that is no English word is that word
 # ("naer the bus stop", "befroe the junction", "ffrom the ego", "face esat").
-_RELATION_WORDS = ("near", "from", "before", "behind", "beside", "between", "with", "into", "onto", "towards", "toward",
+_WORDS_OF_RELATION = ("near", "from", "before", "behind", "beside", "between", "with", "into", "onto", "towards", "toward",
                    "around", "across", "along", "after", "next", "front", "nearest", "closest", "furthest", "farthest",
                    "left", "right", "north", "south", "east", "west", "ahead", "opposite", "outside", "inside")
 
@@ -437,7 +437,7 @@ def _relation_slip(low: str) -> str | None:
     """The relation or direction word `low` is one slip from, when exactly one and `low` is no English word."""
     if len(low) < MIN_REPAIR_LEN or is_english(low):
         return None
-    near = [w for w in _RELATION_WORDS if edits(low, w) == 1]
+    near = [w for w in _WORDS_OF_RELATION if edits(low, w) == 1]
     return near[0] if len(near) == 1 else None
 
 
