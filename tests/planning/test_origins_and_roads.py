@@ -259,3 +259,14 @@ def test_stopping_a_vehicle_at_a_place_is_a_stop_when_it_gets_there(campus, regi
     ego = session.scene.asset("ego")
     assert ego is not None and ego.behaviour.kind == "drive_lane"  # still driving now
     assert report.plan is not None and report.plan.calls[0].tool == "add_event"
+
+
+@pytest.mark.parametrize("prompt", ["which one is nearer the fountain, the hydrant or the bench?",
+                                    "which is farther from the ego, the bin or the stop sign?"])
+def test_which_of_two_things_is_nearer_measures_both(session, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    answer = report.answer or ""
+    assert answer.count(" m away") >= 2
+    looked = {c.args.get("category") for c in report.plan.calls} if report.plan else set()
+    assert len(looked) == 2

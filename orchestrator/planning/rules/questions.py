@@ -129,6 +129,11 @@ _SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|
                       r"|lights? (?:on|off)|lit|environment|conditions|(?:it|things) like out(?: there| here|side)?)\b")
 
 
+# "which is closer to the ego, the bench or the bin?": two things named, each measured from the one place.
+_COMPARED = re.compile(r"\bwhich(?: one)?\b.*\b(?:closer|nearer|further|farther)\b.*\bor\b")
+MAX_COMPARED = 4
+
+
 def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall]:
     """The search calls that answer a question clause: one per part of a compound question."""
     if not r.mentions and (bare := _LIGHTS_BY.search(r.text.lower())) is not None:  # "lights near the bus stop?": the lamps there
@@ -141,6 +146,11 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
                 or _SETTING_ALONE.match(reading.low) or _SETTING.search(reading.low)]
         texts = kept if kept else texts[:1]
     kinds = list(dict.fromkeys(m.category for m in r.mentions))
+    compared = _COMPARED.search(r.low)
+    if compared is not None and len(kinds) >= 2:
+        # "which is further from the ego, the bench or the bin?": how far each is, the nearest of its kind
+        reference = r.landmark or next(iter(r.ids), None) or "ego"
+        return [ToolCall(tool="find_assets", args={"category": k, "nearest_to": reference}) for k in kinds[:MAX_COMPARED]]
     if len(texts) == 1 and len(kinds) > 1 and not r.ids and (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(r.low)):
         # "the weights of both a truck and a bus": the property of each thing named
         return [_property(replace(r, mentions=[m for m in r.mentions if m.category == k][:1]), scene, None).call
