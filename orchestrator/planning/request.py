@@ -59,7 +59,8 @@ _DESCRIBING = re.compile(r"[a-z](?<!same)(?<!again)\s+(that|which|who|for|carryi
                          r"(?<!lane)(?<!area)\s+with\b[^,.;:]*$")
 _LANE_WORDS = re.compile(r"\b(lanes?|[a-z]+bound|[a-z]+_(?:north|south|east|west)bound)\b")
 _PARKED = re.compile(r"\bparked\b")
-_SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b")
+_SHIFT = re.compile(r"\b\S+ (?:more )?hours? (?:later|earlier)\b"
+                    r"|\b(?:clock|time)s?\s+(?:forwards?|on|ahead|back|backwards?)\s+(?:by\s+)?\S+\s+hours?\b")  # "the clock back 2 hours"
 # "moving" said of the thing, not denied ("not moving", "stopped driving")
 # Moving as what a thing should be doing, not which ones: "the SUV needs to be driving down Main Street".
 _TO_BE_MOVING = re.compile(r"\b(?:to be|should be|must be|start|keep|be)\s+(?:\w+\s+)?(?:driving|moving|travelling|traveling|riding)\b")

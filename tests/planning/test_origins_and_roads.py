@@ -270,3 +270,11 @@ def test_which_of_two_things_is_nearer_measures_both(session, prompt):
     assert answer.count(" m away") >= 2
     looked = {c.args.get("category") for c in report.plan.calls} if report.plan else set()
     assert len(looked) == 2
+
+
+@pytest.mark.parametrize(("prompt", "clock"), [("set the clock back two hours", "10:00"), ("move the time forward by an hour", "13:00")])
+def test_the_clock_turned_by_some_hours_moves_from_the_scenes_time(session, prompt, clock):
+    assert session.scene.environment.time_of_day == "12:00"
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert session.scene.environment.time_of_day == clock

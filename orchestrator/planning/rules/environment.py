@@ -175,6 +175,8 @@ _OF_THE_CLOCK = re.compile(r"\b(?:make|set|push|move|bump|take|turn|put)\s+(?:it
                            r"|\b(?:bit|little|much|touch|slightly|somewhat|lot|even|way)\s+(?:later|earlier)\b|\b(?:it|things)\s+(?:be|is)\s+(?:later|earlier)\b"
                            r"|\b(?:later|earlier)\s+(?:on\s+)?in\s+the\s+(?:day|evening|afternoon|morning)\b|\b(?:time|clock|hour|hours|day|sun)\b")
 _HOURS = {"a": 1, "an": 1, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6}
+# The clock turned by some hours: "set the clock back 2 hours", "move the time forward by an hour".
+_CLOCK_TURNED = re.compile(r"\b(?:clock|time)s?\s+(forwards?|on|ahead|back|backwards?)\s+(?:by\s+)?(an?|one|two|three|four|five|six|\d{1,2})\s+hours?\b")
 # Exposure for "brighter" (divided by it for "dimmer"), and its ceiling and floor.
 BRIGHTER_FACTOR, MAX_EXPOSURE, MIN_EXPOSURE = 1.5, 4.0, 0.25
 # The exposure or brightness said to go up or down ("can the exposure come down?", "lower the brightness").
@@ -190,11 +192,15 @@ _DIMMER = re.compile(rf"\b({_DOWN}|washed out|dimmer|less bright|(?:too|so|very|
 def shifted_time(r: Reading, now: Environment) -> ToolCall | None:
     """The clock moved later or earlier from the scene's time ("a bit later", "2 hours earlier")."""
     said = _SHIFT.search(r.masked)
-    if said is None or clock_time(r.masked) is not None or (said.group(1) is None and not _OF_THE_CLOCK.search(r.masked)):
+    turned = _CLOCK_TURNED.search(r.masked)  # "set the clock back two hours", "move the time on an hour"
+    if turned is not None and clock_time(r.masked) is None:
+        hours, later = _HOURS.get(turned.group(2)) or int(turned.group(2)), turned.group(1) in ("forward", "forwards", "on", "ahead")
+    elif said is None or clock_time(r.masked) is not None or (said.group(1) is None and not _OF_THE_CLOCK.search(r.masked)):
         return None
-    hours = SHIFT_HOURS if said.group(1) is None else _HOURS.get(said.group(1)) or int(said.group(1))
+    else:
+        hours, later = SHIFT_HOURS if said.group(1) is None else _HOURS.get(said.group(1)) or int(said.group(1)), said.group(2) == "later"
     hour, minute = (int(x) for x in now.time_of_day.split(":"))
-    minutes = hour * 60 + minute + (hours if said.group(2) == "later" else -hours) * 60
+    minutes = hour * 60 + minute + (hours if later else -hours) * 60
     minutes = min(max(minutes, 0), 23 * 60 + 59)  # the same day: "later" at 22:00 is the end of it
     return ToolCall(tool="set_time_of_day", args={"time": f"{minutes // 60:02d}:{minutes % 60:02d}"})
 
