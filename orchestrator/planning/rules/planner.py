@@ -1101,7 +1101,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
 
 
 # Words of something to be done over time that, left unread in a request, leave part of it undone.
-_DROPPED_ACTION = re.compile(r"\b(?:follow\w*|overtak\w*|brak(?:e|es|ed|ing)|revers\w*|cut(?:s|ting)? in|chang\w* lanes?|"
+_DROPPED_ACTION = re.compile(r"(?<!\bto )\b(?:follow\w*|overtak\w*|brak(?:e|es|ed|ing)|revers\w*|cut(?:s|ting)? in|chang\w* lanes?|"
                              r"slow\w* down|speed\w* up|accelerat\w*|yield\w*|tailgat\w*|swerv\w*)\b")
 # What is offered for a place said to be bare: people, greenery, somewhere to sit.
 _FILLERS_OFFERED = ("a few pedestrians", "two trees", "a bench")

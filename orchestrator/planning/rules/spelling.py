@@ -702,10 +702,11 @@ def _place_patterns(names: tuple[str, ...]) -> tuple[re.Pattern[str], re.Pattern
                        re.IGNORECASE))
 
 
-# "stop the ego at the junction", "halt the bus before the crossing": a stop when it gets there, said as
+# "stop the ego at the junction", "stop the bus before the crossing": a stop when it gets there, said as
 # "make the ego stop at the junction" is (never a stop where it stands now).
-_STOP_THERE = re.compile(r"(^|[,.;]\s*|\b(?:and|then|please|now|just|so|ok|okay)\s+)(?:stop|halt)\s+((?:the|our|my)\s+[a-z_0-9]+)\s+"
-                         r"(?=(?:at|before|just before|in front of|by|when it (?:reaches|gets to))\s+the\b)", re.IGNORECASE)
+_STOP_THERE = re.compile(r"(^|[,.;]\s*|\b(?:and|then|please|now|just|so|ok|okay)\s+)stop\s+((?:the|our|my)\s+[a-z_0-9]+)\s+"
+                         r"(?=(?:at|before|just before|in front of|by|when it (?:reaches|gets to))\s+the\s+(?!(?:traffic\s+)?(?:signal|light)s?\b))",
+                         re.IGNORECASE)  # "halt our car at the signal" is the signal's to do (red)
 # "have us turn", "get us moving", "let us pass": the speaker's car, the ego.
 _US_AS_OBJECT = re.compile(r"\b(have|get|make|let)\s+us\b(?!\s+(?:know|see|have|get|add|put|try|check))", re.IGNORECASE)
 # "Don't move the SUV, move the sedan beside it": what not to do, then what to do instead.
