@@ -16,6 +16,7 @@ import pytest
 from drivetwin.orchestrator.planning.base import Plan
 from drivetwin.orchestrator.planning.check import review
 from drivetwin.orchestrator.planning.intent import asks
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.surface import lane_at
 
@@ -278,3 +279,36 @@ def test_the_clock_turned_by_some_hours_moves_from_the_scenes_time(session, prom
     report = session.submit(prompt)
     assert report.ok, report.error
     assert session.scene.environment.time_of_day == clock
+
+
+@pytest.mark.parametrize(("said", "clock"), [("ten to midnight", "23:50"), ("twenty past noon", "12:20")])
+def test_minutes_either_side_of_midnight_or_noon_are_that_time(said, clock):
+    from drivetwin.orchestrator.planning.rules.clock import clock_time
+
+    assert str(clock_time(f"set the clock to {said}")) == clock
+
+
+@pytest.mark.parametrize(("prompt", "preset"), [("the moment the sun goes down", "sunset"), ("first thing in the morning, please", "sunrise")])
+def test_the_sun_going_down_is_sunset_and_first_thing_is_early(context, prompt, preset):
+    plan = RulePlanner().plan(f"make it {prompt}", context)
+    assert [c.args for c in plan.calls] == [{"time": preset}]
+
+
+def test_weather_said_to_be_not_too_thick_is_light(session):
+    report = session.submit("fog please, but not to thick")
+    assert report.ok, report.error
+    assert session.scene.environment.weather.kind == "fog" and session.scene.environment.weather.intensity <= 0.5
+
+
+def test_another_one_like_it_is_the_same_colour(session):
+    assert session.submit("add a blue car in lot A").ok
+    report = session.submit("and another one like it beside it")
+    assert report.ok, report.error
+    first, copy = session.scene.asset("passenger_car_3"), session.scene.asset("passenger_car_4")
+    assert first is not None and copy is not None and copy.appearance.rgba == pytest.approx(first.appearance.rgba, abs=0.01)
+
+
+def test_a_fixed_thing_asked_to_follow_is_refused_and_stays(session, campus):
+    report = session.submit("make the tree by the library follow the ego")
+    assert not report.ok and "cannot" in (report.error or "")
+    assert session.scene.asset("tree_1") == campus.asset("tree_1")

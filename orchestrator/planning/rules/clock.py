@@ -35,6 +35,8 @@ _SPOKEN = re.compile(rf"\b(half|(?:a )?quarter|{_HOUR}(?: minutes)?) (past|after
 _HALF_HOUR = re.compile(rf"\bhalf {_HOUR}\b(?! (?:past|after|to|before)\b)")
 _O_CLOCK = re.compile(r"^\s*o'?\s?clock\b")
 _NAMED = {"midnight": (0, 0), "noon": (12, 0), "midday": (12, 0)}
+# Minutes before or after a named time, said just before it ("quarter to midnight").
+_NEAR_NAMED = re.compile(rf"\b(?P<said>half|(?:a )?quarter|{_HOUR}(?: minutes)?) (?P<way>past|after|to|before) $")
 # "18.30" without a suffix is a clock time only when the sentence is about time.
 _TIME_TOPIC = re.compile(r"\b(time|clock)\b")
 _WORD_HOURS = "|".join(sorted((w for w, n in _WORD_NUMBERS.items() if n <= 12), key=len, reverse=True))
@@ -93,6 +95,12 @@ def clock_time(text: str) -> ClockTime | None:
     """The clock time `text` names, or None. Lower-case input is expected."""
     for name, (hour, minute) in _NAMED.items():
         if (named := re.search(rf"\b{name}\b", text)) is not None:
+            near = _NEAR_NAMED.search(text[: named.start()])  # "quarter to midnight", "ten past noon"
+            if near is not None:
+                said = near.group("said")
+                minutes = 30 if said == "half" else 15 if said.endswith("quarter") else _number(said.split()[0])
+                total = (hour * 60 + minute + (-minutes if near.group("way") in ("to", "before") else minutes)) % (24 * 60)
+                return ClockTime(total // 60, total % 60, near.group(0) + name, near.start(), named.end())
             return ClockTime(hour, minute, name, named.start(), named.end())
     spoken = _SPOKEN.search(text)
     if spoken is not None:

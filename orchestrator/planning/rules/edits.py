@@ -789,7 +789,8 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         return [ToolCall(tool="move_asset", args={"asset": i, "turn_deg": angle if angle is not None else DEFAULT_SPIN_DEG})
                 for i, angle in wanted]
     kind = behaviour_kind(r, catalog()[found.category] if found is not None else None)
-    if kind is None and motion not in (None, "vehicle", "walker") and (_GOING_ACROSS.search(r.masked) or _GOING_TO.search(r.masked)):
+    if kind is None and motion not in (None, "vehicle", "walker") and (_GOING_ACROSS.search(r.masked) or _GOING_TO.search(r.masked)
+                                                                       or re.search(r"\bfollow(?:s|ing)?\b", r.masked)):
         # "can the tree by the bus stop walk across the road": a fixed thing goes nowhere by itself
         raise ph_error(f"a {found.category.replace('_', ' ') if found else 'thing'} cannot walk or drive; only pedestrians, "
                        "riders, vehicles and robots move by themselves. I can put it somewhere else instead")

@@ -74,7 +74,7 @@ def weather(r: Reading) -> ToolCall | None:
             words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
             stopped = re.search(rf"\b(?:{words})\b(?:\s+\S+){{0,2}}?\s+(?:stop|stops|end|ends|clear|clears|go away|let up)\b", r.low)
             # "wet roads, not a downpour though": how strong it is denied, not the rain
-            strength = re.search(rf"\bnot (?:a |too |that |so )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)
+            strength = re.search(rf"\bnot (?:a |too |to |that |so )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)  # "not to thick"
             if kind != "clear" and strength is None and (re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low) or stopped):
                 return ToolCall(tool="set_weather", args={"kind": "clear"})  # "I don't want any rain any more"
             args: dict[str, Any] = {"kind": kind}

@@ -53,16 +53,16 @@ WEATHER_WORDS: dict[str, tuple[str, ...]] = {
               "weather clear", "weather nice", "clear up", "clears up", "nice weather", "nicer weather",
               "better weather", "good weather", "dry", "blue sky", "stops raining"),
 }
-HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "intense", "lot of",
+HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "intense", "lot of", "a lot",
          "blizzard", "downpour", "deluge", "cloudburst", "pouring", "storm", "very", "really", "poor", "bad", "terrible",
          "barely", "low visibility")
 LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "some", "gentle")
 # (words, preset) in order: the first that matches wins, so "midnight" beats "night".
 TIME_PRESETS = ((("midnight",), "midnight"), (("night", "nighttime", "night time", "nite", "dark", "darker",
-                 "late at night", "sun has gone down", "sun goes down", "after dark"), "night"),
+                 "late at night", "sun has gone down", "after the sun goes down", "after dark"), "night"),
                 (("evening", "after work"), "evening"), (("dusk", "twilight", "getting dark"), "dusk"),
-                (("sunset", "golden hour", "golden-hour", "sun going down", "sun is going down", "sun setting", "sun is setting"), "sunset"), (("dawn", "first light"), "dawn"),
-                (("sunrise", "sun coming up", "sun comes up", "early morning"), "sunrise"),
+                (("sunset", "golden hour", "golden-hour", "sun going down", "sun is going down", "sun goes down", "sun setting", "sun is setting"), "sunset"), (("dawn", "first light"), "dawn"),
+                (("sunrise", "sun coming up", "sun comes up", "early morning", "first thing"), "sunrise"),
                 (("morning", "breakfast"), "morning"), (("afternoon",), "afternoon"),
                 (("noon", "midday", "lunchtime", "lunch time", "lunch"), "noon"),
                 (("daytime", "day time", "day", "daylight", "bright", "brighter"), "daytime"))

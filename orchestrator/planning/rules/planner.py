@@ -672,7 +672,8 @@ def _as_meant(text: str) -> str:
 
 
 # A new thing said to be like one there: "another one exactly like it", "a copy of that one".
-_LIKE_IT = re.compile(r"\b(?:(?:exactly|just) like|identical to|(?:the )?same as|a copy of|matching) "
+_LIKE_IT = re.compile(r"\b(?:(?:exactly|just) like|identical to|(?:the )?same as|a copy of|matching"
+                      r"|(?:another|one more|a second)(?: one)? like) "  # "and another one like it next to it"
                       r"(?:it|that|this|that one|this one|the (?:other|last|first) one)\b")
 
 
