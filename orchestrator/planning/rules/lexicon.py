@@ -59,7 +59,7 @@ HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "
 LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "some", "gentle")
 # (words, preset) in order: the first that matches wins, so "midnight" beats "night".
 TIME_PRESETS = ((("midnight",), "midnight"), (("night", "nighttime", "night time", "nite", "dark", "darker",
-                 "late at night", "sun has gone down", "after the sun goes down", "after dark"), "night"),
+                 "late at night", "sun has gone down", "after the sun goes down", "once the sun goes down", "after dark"), "night"),
                 (("evening", "after work"), "evening"), (("dusk", "twilight", "getting dark"), "dusk"),
                 (("sunset", "golden hour", "golden-hour", "sun going down", "sun is going down", "sun goes down", "sun setting", "sun is setting"), "sunset"), (("dawn", "first light"), "dawn"),
                 (("sunrise", "sun coming up", "sun comes up", "early morning", "first thing"), "sunrise"),
