@@ -515,8 +515,9 @@ _MODIFIES_NEXT = re.compile(r"\s*(?:car park|parking|lot|park|area|zone|stop|lan
 @cache
 def _places_and_ego(names: tuple[str, ...]) -> re.Pattern[str]:
     """One world's place names and the words for the ego, as one pattern."""
-    said = [re.escape(ph.normalise(n).strip()) for n in names] + [re.escape(w) for w in ph.EGO_WORDS]
-    return re.compile(rf"(?<![a-z])(?:{'|'.join(said)})(?![a-z])")
+    # the longest first, and no "the ego": "the ego car" is blanked as "the" and "ego car", never leaving "car"
+    said = [ph.normalise(n).strip() for n in names] + [w for w in ph.EGO_WORDS if not w.startswith("the ")]
+    return re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(w) for w in sorted(said, key=len, reverse=True))})(?![a-z])")
 
 
 def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Scene) -> str | None:

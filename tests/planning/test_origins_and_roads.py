@@ -312,3 +312,9 @@ def test_a_fixed_thing_asked_to_follow_is_refused_and_stays(session, campus):
     report = session.submit("make the tree by the library follow the ego")
     assert not report.ok and "cannot" in (report.error or "")
     assert session.scene.asset("tree_1") == campus.asset("tree_1")
+
+
+def test_the_ego_car_is_no_car_a_question_asks_about(context):
+    plan = Plan(calls=[ToolCall(tool="measure_distance", args={"a": "ego", "b": "Library entrance"})], planner="rules")
+    verdict = review("what's the distance between the ego car and the library entrance?", plan, context)
+    assert not any("looks up something else" in p for p in verdict.problems), verdict.problems
