@@ -30,7 +30,7 @@ BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}
                         # "empty roads and the lamps buzzing": places described, never "empty the roads"
                         r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|quit|g[ei]t rid(?: of)?|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
+    r"\b(remove|delete|quit|g[ei]t rid(?: of)?|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|take (?:\w+ ){1,3}?out\b(?! of\b)|(?:has|have|needs?|must|should|ought) to come down\b|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)(?!\s+an?\s+(?!single\b))|fewer|less|lose|eliminate|erase|discard|scrap"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"

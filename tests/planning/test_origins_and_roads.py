@@ -318,3 +318,10 @@ def test_the_ego_car_is_no_car_a_question_asks_about(context):
     plan = Plan(calls=[ToolCall(tool="measure_distance", args={"a": "ego", "b": "Library entrance"})], planner="rules")
     verdict = review("what's the distance between the ego car and the library entrance?", plan, context)
     assert not any("looks up something else" in p for p in verdict.problems), verdict.problems
+
+
+def test_taking_a_thing_out_never_adds_one(context):
+    plan = Plan(calls=[ToolCall(tool="add_asset", args={"category": "bus", "count": 3})], planner="rules")
+    verdict = review("take Campus Drive out altogether, we're rerouting the buses", plan, context)
+    assert verdict.action != "apply"
+    assert any("take something away" in p for p in verdict.problems), verdict.problems
