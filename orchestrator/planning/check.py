@@ -90,7 +90,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, kept_at
-from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, YARD_M, numbers_in, spelt_measures
+from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, SPEED_UNIT, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import (
     BETWEEN,
     FROM_TO,
@@ -652,7 +652,7 @@ def _figures_left_out(request: Request, calls: list[ToolCall]) -> list[float]:
             if not _accounts_for(n, used, [1.0, *(f for said, f in UNIT_FACTORS.items() if re.search(said, unit))])]
 
 
-_SPEED_SAID = re.compile(r"(\d+(?:\.\d+)?)\s*(km/?h|kmh|kph|mph|m/s|metres? (?:a|per) second|kilomet\w+ (?:an|per) hour|miles (?:an|per) hour)\b")
+_SPEED_SAID = re.compile(rf"(\d+(?:\.\d+)?)\s*{SPEED_UNIT}", re.IGNORECASE)  # the readers' own units of speed
 
 
 def _accounts_for(number: float, used: list[float], factors: list[float]) -> bool:

@@ -341,9 +341,8 @@ _HANDLES_EXISTING = frozenset(["get", "have", "let", "take", "send", "tell", "st
 _AS_BEFORE = re.compile(r"\b(?:back (?:where|to where|in|into|at|on|to)|where (?:it|they) (?:was|were|used to be)|back in place)\b")
 
 
-def _lexicon_adds(masked: str) -> bool:
-    """Whether the words hold one of the rule lexicon's ways of asking for a thing ("i want", "we need")."""
-    return any(re.search(rf"(?<![a-z]){re.escape(w)}(?![a-z])", masked) for w in lx.ADD_WORDS)
+# The rule lexicon's ways of asking for a thing ("i want", "we need"), as one pattern.
+_LEXICON_ADDS = re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(w) for w in sorted(lx.ADD_WORDS, key=len, reverse=True))})(?![a-z])")
 
 
 def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
@@ -353,7 +352,7 @@ def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     if _NEW.search(masked):
         return []
     out = []
-    asks_for_new = ADD_WORDS.search(masked) is not None or _lexicon_adds(masked)
+    asks_for_new = ADD_WORDS.search(masked) is not None or _LEXICON_ADDS.search(masked) is not None
     for m in named_in(masked):
         before = m.last_words(2)
         points_at = len(before) == 2 and before[1] in _DEFINITE and (
