@@ -222,6 +222,8 @@ class FindLandmarks(Tool[FindLandmarksArgs]):
             q = args.query.lower()
             # a word every one of a kind is called by ("crosswalk", "gate") is all of them, though one has it as its alias
             kind = [lm for lm in marks if any(re.search(rf"\b{re.escape(q)}\b", n.lower()) for n in lm.names())]
+            if q.strip() in ("building", "buildings") and scene.buildings:  # every building's own place, whatever it is called
+                return [lm for lm in marks if any(b.name.lower() in n.lower() for b in scene.buildings for n in lm.names())]
             if exact is not None and (len(kind) < 2 or " " in q.strip()):
                 marks = [exact]
             else:

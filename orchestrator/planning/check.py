@@ -760,19 +760,32 @@ _FURTHER = re.compile(r"\b(?:further|farther|more)(?: away)? from\b|\baway from\
 def _wrong_way_to(request: Request, scene: Scene, moved: list[AssetInstance]) -> list[str]:
     """Things a plan moves the other way from the one place the request says they should be
     nearer to or further from ("push the bin further from the bus stop" never brings it nearer)."""
-    nearer, further = bool(_NEARER.search(request.low)), bool(_FURTHER.search(request.low))
-    centre = _centre(scene, request.place) if request.place is not None and nearer != further else None
-    if centre is None:
+    nearer, further = _NEARER.search(request.low), _FURTHER.search(request.low)
+    if bool(nearer) == bool(further):
         return []
+    said = nearer or further
+    assert said is not None
+    # "3 m towards the bench": by the place, or else the nearest of the kind of thing named after the word
+    after_word = {m.category for m in ph.find_categories(request.masked[said.end() :])}
     out = []
     for after in moved:
         before = scene.asset(after.id)
+        others = [a for a in scene.assets if a.category in after_word and a.id != after.id]
         if before is None or after.id == request.place:
+            continue
+        if request.place is not None:
+            centre, name = _centre(scene, request.place), request.place
+        elif others:
+            closest = min(others, key=lambda a: math.dist((a.pose.x, a.pose.y), (before.pose.x, before.pose.y)))
+            centre, name = (closest.pose.x, closest.pose.y), closest.id
+        else:
+            continue
+        if centre is None:
             continue
         change = math.dist((after.pose.x, after.pose.y), centre) - math.dist((before.pose.x, before.pose.y), centre)
         if (change < -MIN_MOVE_M) if further else (change > MIN_MOVE_M):
             way = "nearer to" if further else "further from"
-            out.append(f"you said {'further from' if further else 'closer to'} {request.place}, but the plan moves {after.id} {way} it")
+            out.append(f"you said {'further from' if further else 'closer to'} {name}, but the plan moves {after.id} {way} it")
     return out
 
 

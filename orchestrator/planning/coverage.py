@@ -139,7 +139,8 @@ _OUGHT = re.compile(r"[^,.;]*\b(?:should|must|needs? to|has to|have to|ought to)
 # A thing named after a preposition of place ("from behind the parked bus", "next to a bench")
 # is where something is, not something the plan must act on.
 _LOCATIVE = re.compile(
-    r"\b(behind|beside|next to|in front of|near|around|by|past|alongside|opposite|across from|beyond)\s+"
+    r"\b(behind|beside|next to|in front of|near|around|by|past|alongside|opposite|across from|beyond"
+    r"|towards?|(?:closer|nearer) to|nearer|(?:further|farther)(?: away)? from|away from)\s+"  # "5 m closer to the bench": where, not what
     r"(?:(?:the|a|an|that|this|those|these|its|their|our)\s+)?(?:[a-z]+\s+)?$"
 )
 # Category names that are also the planner's verbs ("stop the ego"): not a thing named.

@@ -555,8 +555,24 @@ def _thing_asked(low: str) -> bool:
     return _WOULD_BE_NICE.search(low) is not None and _QUESTION_START.search(low) is None  # "what would be nice here?" asks
 
 
+# Asking to see the scene some other way: "show me how the street looks at eleven at night", "what
+# would it look like in the fog?". With a weather or a time named after it, a change to look at.
+_SHOWN = re.compile(r"\b(?:show me|let me see|let'?s see|i (?:want|would like|'d like) to see|(?:can|could) (?:i|we) see"
+                    r"|what (?:would|will|does) (?:it|\w+(?: \w+)?) look like|how (?:would|will|does) (?:it|\w+(?: \w+)?) look)\b(?P<rest>[^.;!?]*)")
+
+
+def setting_shown(low: str) -> bool:
+    """Whether the words ask to see the scene in a weather or at a time they name (see _SHOWN)."""
+    from drivetwin.orchestrator.planning.rules.clock import clock_time  # the planners' reader, as in _settings_offered
+
+    return any(_settings_offered().search(said.group("rest")) or clock_time(said.group("rest")) is not None
+               for said in _SHOWN.finditer(low))
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
+    if setting_shown(low):
+        return False  # "show me the campus at dawn": the scene set so, to be seen
     polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip())
                   or _setting_offered(low) or _HAVE_ONE.match(low) is not None or _thing_asked(low))
     return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
@@ -582,6 +598,7 @@ __all__ = [
     "commands",
     "excepted",
     "history_request",
+    "setting_shown",
     "taken_back",
     "without_contrast",
     "without_memories",

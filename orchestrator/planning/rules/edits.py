@@ -652,8 +652,14 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> di
     y = sum(a.pose.y for a in things) / len(things)
     landmark = scene.landmark(r.landmark) if r.landmark and r.landmark_at > said.start() else None
     lane = scene.roads.lane(r.lane) if r.lane else None
+    # "5 m closer to the bench": the nearest one there is of the thing named after the word
+    named = [a for m in r.mentions if m.start > said.start() for a in scene.assets if a.category == m.category and a.id not in ids]
+    named += [a for i in r.ids if i not in ids and r.low.find(i.replace("_", " ")) > said.start() and (a := scene.asset(i)) is not None]
     if landmark is not None:
         goal = landmark.position
+    elif named:
+        nearest = min(named, key=lambda a: math.dist((a.pose.x, a.pose.y), (x, y)))
+        goal = (nearest.pose.x, nearest.pose.y)
     elif lane is not None:  # the nearest point of the road, any of its lanes
         lanes = [ln for ln in scene.roads.lanes if ln.road == lane.road] if lane.road else [lane]
         near = min((nearest_on_polyline(x, y, ln.centreline) for ln in lanes), key=lambda p: p.distance)

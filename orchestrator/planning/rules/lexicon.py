@@ -101,8 +101,8 @@ CONCEPTS: dict[str, tuple[str, ...]] = {
     "trash_bin": ("rubbish", "litter", "garbage"), "passenger_car": ("traffic",),  # after "foot traffic"
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.
-COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6, "loads": 6, "plenty": 6, "heaps": 6, "tons": 6, "masses": 6,
-                     "row": 0, "line": 0, "ring": 0, "circle": 0, "group": 0, "set": 0, "cluster": 0, "crowd": 8}
+COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6, "load": 6, "loads": 6, "plenty": 6, "heaps": 6,
+                     "tons": 6, "masses": 6, "dozens": 24, "row": 0, "line": 0, "ring": 0, "circle": 0, "group": 0, "set": 0, "cluster": 0, "crowd": 8}
 ORDINALS = {"first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "last": -1, "other": 2}
 # Things whose colour people name instead of the colour.
 COLOUR_OF = {"grass": "green", "leaves": "green", "sky": "blue", "sea": "blue", "snow": "white",

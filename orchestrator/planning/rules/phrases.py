@@ -21,7 +21,7 @@ NUMBER_WORDS = nb.spelt_counts() | {"a": 1, "an": 1, "single": 1, "pair": 2, "co
 _TOKEN = re.compile(r"[a-z0-9_#.\-']+")
 # Tokens with their spans, numbers written with separators kept whole ("10,000").
 _TOKEN_SPANS = re.compile(r"\d{1,3}(?:,\d{3})+(?![\d,])|[a-z0-9_#.\-'+]+")
-EGO_WORDS = ("ego vehicle", "ego car", "the ego", "ego's", "ego", "our car", "test vehicle", "test car", "our vehicle", "my car", "av")
+EGO_WORDS = tuple(sorted({"the ego", "ego's", "test car", "av", *(w.lower().removeprefix("the ") for c in catalog().values() if "ego" in c.tags for w in c.words)}, key=lambda w: (-len(w), w)))
 
 
 def tokens(text: str) -> list[str]:

@@ -224,7 +224,7 @@ def between(scene: Scene, low: str) -> dict[str, Any] | None:
 
 # Across the road from a place or thing: "across from the JTEKT entrance", "opposite the bus stop",
 # "on the other side of the road from the bench".
-ACROSS_FROM = re.compile(r"\b(?:(?:right |directly |just )?(?:across|over) (?:the (?:road|street) )?from|opposite(?: to)?"
+ACROSS_FROM = re.compile(r"\b(?:(?:right |directly |just )?(?:across|over) (?:the (?:road|street) )?from|opposite(?: to)?(?!\s+(?:traffic\s+)?lanes?\b)"
                          r"|on the (?:other|opposite|far) side of the (?:road|street) from)\s+(?P<what>.+?)(?=\s*(?:[,.;!?]|$|\b(?:please|pls|so|for|then|now|and)\b))")
 # How far past the road's middle the far side is: its half width and a sidewalk's half.
 FAR_SIDE_BEYOND_M = 2.0

@@ -32,6 +32,7 @@ from drivetwin.orchestrator.planning.intent import (
     WHAT_IF,
     asks,
     commands,
+    setting_shown,
     taken_back,
     without_memories,
     without_reason,
@@ -278,6 +279,10 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         if said is not None:  # "it's too dark, make it day": how it is, then what to do
             out.append((said[0], False, True))
             text = said[1]
+        if out and _AMOUNT_ONLY.match(text.lower()) and ph.find_categories(out[-1][0]) and not ph.find_categories(text) \
+                and not commands(out[-1][0].lower()):  # "Put a bench there. Then add 2.": two more, a request of its own
+            out[-1] = (f"{out[-1][0]}, {text}", out[-1][1], False)  # "Too many lamp posts. Lose a few.": a few of them
+            continue
         if _SUBJECTLESS.match(text.lower()):
             text = f"it {text}"  # "bin's in a dumb spot. needs to be by the library door": it needs to
         verb = _VERB_AT.search(text.lower())
@@ -317,6 +322,10 @@ _ASKING_LABEL = re.compile(r"^\s*(?:query|lookup|look ?up|info|status|report)\s*
 # A second motion said with no one to do it: "... and drive off east", "... and head for the gate".
 _GOES_ON = re.compile(r"\s*(?:drive|drives|head|heads|go|goes|continue|continues|cruise|cruises|turn|turns|stop|stops|park|parks"
                       r"|brake|brakes|slow|slows|speed|speeds|accelerate|accelerates|reverse|reverses)\b(?!\s+(?:it|them|the|a|an)\b)")
+# A sentence that only says how many, its thing named in the one before: "Lose a few.", "Take three away."
+_AMOUNT_ONLY = re.compile(r"\s*(?:(?:please|just|so|now|then|ok|okay)\s+)*[a-z]+(?:\s+rid\s+of)?\s+(?:another\s+)?"
+                          rf"(?:\d+|a few|a couple|{'|'.join(w for w in ph.NUMBER_WORDS if w not in ('a', 'an'))})"
+                          r"(?:\s+more)?(?:\s+(?:away|off|out|in|down))?(?:\s+(?:please|too))?\s*[.!?]*\s*$")
 # A sentence whose subject went unsaid, the thing the one before named: "needs to be by the door".
 _SUBJECTLESS = re.compile(r"\s*(?:needs?|has|have|should|must|ought|wants?)\s+(?:to\s+)?(?:be|go|stand|sit|move|face)\b")
 # A new look asked for ("paint ...", "repaint ...", "recolour ..."), and a building's parts.
@@ -909,7 +918,8 @@ def _is_question(r: Reading, asked: bool) -> bool:
     starts = any(re.match(rf"{re.escape(w)}\b", words) for w in lx.SEARCH_STARTS)
     # "Could you put a shuttle at the stop?" is a command put politely, question mark or not.
     command = re.sub(r"^(?:(?:please|pls|kindly|can|could|would|will|maybe|perhaps)\s+(?:you\s+)?(?:please\s+)?)+", "", words)
-    if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command) or wrapped_request(words):
+    if re.match(r"(add|put|place|create|remove|delete|move|make|set|turn|paint|spawn)\b", command) or wrapped_request(words) \
+            or setting_shown(words):  # "show me the street at eleven at night": set so, to be seen
         return False
     if re.match(rf"give (?:me|us)\b(?!\s+(?:a |an |the )?(?:[a-z]+ )?(?:{_INFO_NOUNS})\b)", command):  # "a rough count"
         return False  # "give me some rain" asks for rain; "give me a list of ..." for information
@@ -1022,10 +1032,15 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     instrument = _WITH_LAYOUT.search(r.low) or _LAYOUT_VERB_WITH.search(r.low)
     if instrument is not None and any(m.start > instrument.start() for m in r.mentions):
         # "stop cars driving in through the gate with a row of bollards": the row is what to build
-        laid = [m for m in r.mentions if m.start > instrument.start()]
-        around = _AROUND.search(r.low[: instrument.start()])
-        # "cordon the tree by the library off with bollards": what is ringed stays named
-        ringed = [m for m in r.mentions if around is not None and around.start() < m.start < instrument.start()]
+        if instrument.re is _LAYOUT_VERB_WITH:  # "ring the hydrant with cones", "cordon off the bench with cones":
+            laid = [m for m in r.mentions if m.start > instrument.end()]  # cones, not the barriers "cordon off" names
+            verb = re.match(r"\s*(?:please )?[\w-]+", r.low)
+            ringed = [m for m in r.mentions if verb is not None and verb.end() <= m.start < instrument.end()]  # the hydrant, the bench
+        else:
+            laid = [m for m in r.mentions if m.start > instrument.start()]
+            around = _AROUND.search(r.low[: instrument.start()])
+            # "cordon the tree by the library off using a row of bollards": what is ringed stays named
+            ringed = [m for m in r.mentions if around is not None and around.start() < m.start < instrument.start()]
         return _both_sides(_arrange(replace(r, mentions=[*laid, *ringed]), scene, memory, notes), r, scene)
     # "the new fire hydrant" is the one just added, not one more; "I want the bench painted" wants it changed
     first = r.mentions[0] if r.mentions else None
@@ -1260,6 +1275,8 @@ def _block(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     return ToolCall(tool="arrange_assets", args=args)
 
 
+# A road said by its kind, not its name ("the road", "the lane ahead"): a way through.
+_ROAD_SAID = re.compile(r"\b(?:road|street|lane|carriageway)\b")
 # Closing a way through off: "fence off the lot A entrance", "seal off the east gate with cones".
 _SEALED_OFF = re.compile(r"\b(?:fenc|cordon|seal|rop|barricad)(?:e|es|ed|ing)?\s+(?:[\w-]+\s+){0,4}?off\b")
 
@@ -1269,8 +1286,8 @@ def _way_through(r: Reading, scene: Scene) -> bool:
     lot's entrance), not a thing or a place that a fence rings (a tree, the fountain, a lot)."""
     if r.ids or any(not _closes_roads(m.category) for m in r.mentions):
         return False
-    if r.landmark is None:
-        return r.lane is not None
+    if r.landmark is None:  # "cone off the road ahead": the road, wherever it was said to be
+        return r.lane is not None or _ROAD_SAID.search(r.masked) is not None
     place = scene.landmark(r.landmark)
     lots = [lm.name for lm in scene.landmarks if lm.kind == "area"]
     return place is not None and (place.name.endswith(" gate") or any(place.name == f"{lot} entrance" for lot in lots))
@@ -1362,13 +1379,15 @@ _WITH = re.compile(r"\bwith\s+(?:[\w-]+\s+){0,3}$")
 GRID_MIN = 4
 # What a ring is laid around comes after these: "around the rubble", "round the tree", "surround the bin",
 # "cordon the debris off (with cones)".
-_AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)|cordon|enclose|rope|fence|seal|box)\b")
+_AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)|cordon|enclose|rope|fence|seal|box)\b"
+                     r"|^\s*(?:please\s+)?ring\b")  # "ring the hydrant with cones" (never "a ring of cones round it")
 # The passive names the layout after "by" and what it surrounds before: "the fountain ringed by six benches".
 _AROUND_BY = re.compile(r"\b(?:ring|encircl|surround|circl)ed\s+(?:all\s+round\s+)?by\b")
 # "Around" with nothing to go round ("a few more bins around", "cones around here"): here and there, not a ring.
 _AROUND_LOOSE = re.compile(r"\baround\s*(?:$|[.,!?;]|(?:here|somewhere|the (?:place|campus|scene|map)|campus)\b)")
 _ROUND_IT = re.compile(r"\b(?:all\s+)?round\s+(?:it|them|that|this|the|its)\b")  # "stick some cones round it": a ring
-_VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:[\w-]+\s+)?$")
+# ("some of those short metal posts": a vague part of a kind, its words describing the kind)
+_VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:of\s+(?:the|those|these|them|our)\s+)?(?:[\w-]+\s+){0,2}$")
 
 
 def _grid_size(low: str) -> tuple[int, int, int, int] | None:

@@ -197,6 +197,9 @@ def of_group(call: ToolCall, r: Reading) -> ToolCall:
     return call.model_copy(update={"args": {**call.args, "category": groups[0] + "s"}})
 
 
+# A choice between two states of the light or the weather: "day or night?", "in the dark, or still daytime?".
+_STATES = r"(?:dark|darkness|daytime|day|daylight|night|night-?time|light|bright|raining|rainy|dry|sunny|foggy|snowing|snowy|wet|clear|cloudy)"
+_SETTING_EITHER = re.compile(rf"\b{_STATES}\b[^.?!]*\bor\b[^.?!]*\b{_STATES}\b")
 # Where to cross a road on foot: "where can people cross the road?", "where should I cross?".
 _WHERE_TO_CROSS = re.compile(r"\bwhere\s+(?:can|could|should|do|does|would|may|might|are|is)\s+(?:[a-z']+\s+){1,3}?cross\b")
 
@@ -216,6 +219,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
     if _names_nothing(r) and ((_ASKS_HOW_IT_IS.match(low) and (_SETTING.search(low) or environment(r, scene.environment)))
                               or _SETTING_ALONE.match(low)):
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "is it raining?", "what's the weather like"
+    if _SETTING_EITHER.search(low) and not r.mentions:  # "am I doing this run in the dark, or is it still daytime?"
+        return Part(ToolCall(tool="describe_environment", args={}), None)
     if _WHERE_TO_CROSS.search(low) and {m.category for m in r.mentions} <= {"pedestrian"}:
         # "where can people cross the road?": the marked crossings, nearest the place said first
         near = {"nearest_to": r.landmark} if r.landmark else {}

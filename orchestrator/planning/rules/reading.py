@@ -17,6 +17,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import AssetInstance, Lane, Scene
+from drivetwin.worlds.surface import nearest_lane
 
 # An article before a word; "lot A" at the end of a name keeps its letter.
 _ARTICLES = re.compile(r"\b(the|a|an)\s+(?=[a-z0-9])")
@@ -227,9 +228,43 @@ def _head(words: list[str]) -> str:
     return words[-2] if len(words) > 1 and _is_label(words[-1]) else words[-1]
 
 
+# Collective words that count only before "of" ("a lot of cones", "a load of bikes"; never "the parking lot", "load the van").
+COUNT_BEFORE_OF = ("lot", "lots", "load")
+# The lane beside the car under test that traffic drives the other way in: "the oncoming lane".
+ONCOMING_WORDS = ("oncoming", "opposing", "opposite", "contraflow", "counterflow")
+_ONCOMING = re.compile(rf"\b(?:{'|'.join(ONCOMING_WORDS)})(?:\s+traffic)?\s+lane\b|\blane\s+(?:of|for|with)\s+oncoming\s+traffic\b")
+
+
+def _heading_near(lane: Lane, x: float, y: float) -> tuple[float, float]:
+    """The unit direction a lane runs in along its segment nearest (x, y)."""
+    def gap(k: int) -> float:
+        (x1, y1), (x2, y2) = lane.centreline[k], lane.centreline[k + 1]
+        return math.dist(((x1 + x2) / 2, (y1 + y2) / 2), (x, y))
+    k = min(range(len(lane.centreline) - 1), key=gap)
+    (x1, y1), (x2, y2) = lane.centreline[k], lane.centreline[k + 1]
+    length = math.dist((x1, y1), (x2, y2)) or 1.0
+    return (x2 - x1) / length, (y2 - y1) / length
+
+
+def oncoming_lane(scene: Scene) -> Lane | None:
+    """The lane of the ego's road nearest it whose traffic drives the other way; None without an
+    ego on a road of two directions."""
+    ego = scene.ego
+    own = nearest_lane(scene, ego.pose.x, ego.pose.y) if ego is not None else None
+    if ego is None or own is None:
+        return None
+    ux, uy = _heading_near(own, ego.pose.x, ego.pose.y)
+    others = [lane for lane in scene.roads.lanes if lane.road == own.road and lane.id != own.id and lane.kind == "driving"
+              and sum(a * b for a, b in zip(_heading_near(lane, ego.pose.x, ego.pose.y), (ux, uy), strict=True)) < 0]
+    return min(others, key=lambda lane: min(math.dist(p, (ego.pose.x, ego.pose.y)) for p in lane.centreline), default=None)
+
+
 def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
     """A lane by id, by direction (with its road if several share it), or by road alone (guessed)."""
     spaced = low.replace("_", " ")
+    oncoming = _ONCOMING.search(spaced)
+    if oncoming is not None and (lane := oncoming_lane(scene)) is not None:  # "in the oncoming lane": the ego's other way
+        return lane.id, oncoming.start(), oncoming.end(), False
     for lane in scene.roads.lanes:
         key = lane.id.replace("_", " ")
         pos = spaced.find(key)
@@ -576,6 +611,11 @@ def read(text: str, scene: Scene) -> Reading:
 # "cones x4", "a ring of people, 6 of them", "lining the lane with cones, like 10" (a rough count said last)
 _COUNT_AFTER = re.compile(r"^\s*[x×]\s?(\d+)\b|\b(\d+|[a-z]+) (?:of them|pieces|pcs|units|items)\b"
                           r"|,\s*(?:like|about|around|roughly|maybe|say|approximately|approx\.?)\s+(\d+)\s*(?:or so)?\s*[.!?]*\s*$")
+# An amount whose noun is left out, said after the thing: "too many lamp posts, lose a few",
+# "there are cones everywhere. Take three away." (the amount is the object of a verb of adding or
+# taking away, and nothing follows it but a particle).
+_ELIDED_COUNT = re.compile(r"\b(?:lose|remove|delete|drop|ditch|scrap|cut|take|get rid of|knock off|add|put|place|throw in|bring in)"
+                           r"\s+(?:another\s+|an?\s+)?(\d+|[a-z]+)\s+(?:more\s+)?(?:away|off|out|in|down)?\s*(?:[.!?;,]|$)")
 
 
 def find_count(reading: Reading, mention: ph.Mention) -> int | None:
@@ -594,11 +634,14 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
     if after is not None:
         word = next(g for g in after.groups() if g)
         return int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
+    elided = _ELIDED_COUNT.search(reading.low[mention.end :])
+    if elided is not None and (elided.group(1).isdigit() or elided.group(1) in ph.NUMBER_WORDS):
+        return int(elided.group(1)) if elided.group(1).isdigit() else ph.NUMBER_WORDS[elided.group(1)]
     words = ph.tokens(before)
     for k in range(len(words) - 1, max(-1, len(words) - 5), -1):
         word = words[k]
         # "a lot of cones", but not the lot of "parking lot, so the cars"
-        if word in lx.COLLECTIVE_COUNTS and (word not in ("lot", "lots") or words[k + 1 : k + 2] == ["of"]):
+        if word in lx.COLLECTIVE_COUNTS and (word not in COUNT_BEFORE_OF or words[k + 1 : k + 2] == ["of"]):
             return lx.COLLECTIVE_COUNTS[word] or None
         if word.isdigit() or word in ph.NUMBER_WORDS or any(c.isdigit() for c in word) or word in ("nan", "inf"):
             break
@@ -618,7 +661,7 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
         if word.isdigit() or (word in ph.NUMBER_WORDS and word not in ("one", "a", "an")):
             # "all three vehicles", "the two cars": a number of things already there
             return words[k - 1 : k] == [] or words[k - 1] not in (*_OLD_DETERMINERS, "all", "both")
-        collective = word in lx.COLLECTIVE_COUNTS and (word not in ("lot", "lots") or words[k + 1 : k + 2] == ["of"])
+        collective = word in lx.COLLECTIVE_COUNTS and (word not in COUNT_BEFORE_OF or words[k + 1 : k + 2] == ["of"])
         if word in ("new", "newer", "newest") and k > 0 and words[k - 1] in _OLD_DETERMINERS:
             return False  # "the new fire hydrant": the one just added, there now
         if word in _NEW_DETERMINERS or collective:

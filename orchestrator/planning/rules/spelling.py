@@ -22,6 +22,7 @@ from drivetwin.orchestrator.planning.rules.clock import CLOCK_WORDS
 from drivetwin.orchestrator.planning.rules.inflection import forms
 from drivetwin.orchestrator.planning.rules.modifiers import MATERIAL_WORDS
 from drivetwin.orchestrator.planning.rules.numbers import spelt_measures
+from drivetwin.orchestrator.planning.rules.reading import ONCOMING_WORDS
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import Scene
@@ -226,6 +227,7 @@ def _domain_words() -> frozenset[str]:
         lx.FILLER_STARTS,
         tuple(lx.ORDINALS),
         tuple(lx.COLLECTIVE_COUNTS),
+        ONCOMING_WORDS,  # "the oncoming lane", never "the on coming lane"
     ):
         words |= _words_of(table)
     for group in (lx.WEATHER_WORDS, lx.BEHAVIOUR_WORDS, lx.CONCEPTS):
@@ -270,6 +272,8 @@ def is_known(word: str, vocab: frozenset[str]) -> bool:
             if suffix in ("er", "ers") and english_words() and not is_english(w):
                 continue  # "closer" is a word, "coner" a slip for cone: no thing takes "-er"
             stem = w[: -len(suffix)]
+            if suffix == "s" and stem.endswith("s"):
+                continue  # "buss" is no plural of "bus" ("buses" is)
             doubled = stem[-1:] == stem[-2:-1] and stem[-1:] not in "wxy"  # "running", never "snowwing"
             if suffix == "ing" and stem.endswith("e") and not stem.endswith("ee"):
                 continue  # "driveing": English drops the e ("driving"), so a slip to repair
@@ -385,8 +389,10 @@ _CROSSINGS = re.compile(r"\b(?:pedestrian|zebra) crossings\b", re.IGNORECASE)
 _COMPASS_CROSSING = re.compile(r"\b(north|south|east|west)(?:ern)? crossing\b", re.IGNORECASE)
 # "the west car park": the parking lot on that side ("car park" alone names one lot).
 _COMPASS_CAR_PARK = re.compile(r"\b(north|south|east|west)(?:ern)? car ?park\b", re.IGNORECASE)
-# "a few barriers across the road up ahead": ahead of the car under test, the one the scene is seen from.
-_UP_AHEAD = re.compile(r"\b(?:up|just|further|a bit|somewhere) ahead\b(?!\s+of\b)", re.IGNORECASE)
+# "a few barriers across the road up ahead", "cone off the road ahead": ahead of the car under test, the
+# one the scene is seen from (a way ahead, said with no thing it is ahead of).
+_UP_AHEAD = re.compile(r"\b(?:up|just|further|a bit|somewhere|(road|lane|street|way|junction|crossing|crossroads|intersection)) ahead\b"
+                       r"(?!\s+of\b)", re.IGNORECASE)
 # "not so close to the kerb" asks for it further from the kerb.
 _NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
 # A little word typed twice: "the the one".
@@ -653,17 +659,15 @@ _AFTER_DETERMINER = re.compile(r"\b(?:a|an|the|some|all|both|those|these|my|our|
 _AFTER_COUNT = re.compile(r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|twelve|several|many)\s+$", re.IGNORECASE)
 
 
-def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "") -> str | None:
+def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "", phrases: frozenset[str] = frozenset()) -> str | None:
     """The catalog word one slip from `word` in a thing's place, its plural kept ("tress" ->
     "trees", "bueses" -> "buses", "buss" -> "bus"), even when the slip is an English word; None
-    when the word is known, a number, or one slip from no thing or from more than one."""
+    when the word is known, a number, or one slip from no thing or from more than one. `phrases`
+    are the names a thing's word opens ("the buss stop": the bus stop)."""
     low = word.lower()
     if len(low) < MIN_REPAIR_LEN or not _AFTER_DETERMINER.search(before) or low in ph.NUMBER_WORDS or is_known(low, vocab):
         return None
     word_slip = is_english(low)  # "tress", "buss": a word typed for a thing, never a thing longer ("a tuck" is no truck)
-    following = re.match(r"\s*([a-z]+)", after.lower())
-    if word_slip and following is not None and following.group(1) not in lx.GRAMMAR:
-        return None  # "the lone tree", "a deep blue": a word said of what follows, not a slip for a thing
     if not word_slip and not _AFTER_COUNT.search(before):
         return None  # "the coner of the lot": the usual repair, which reads the words around it
     plural = low.endswith("s") and len(low) > MIN_REPAIR_LEN
@@ -673,7 +677,15 @@ def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "") 
     if len({t for t, _ in hits}) != 1:
         return None
     thing, many = min(hits, key=lambda h: h[1])  # as written before a plural reading
+    following = re.match(r"\s*([a-z]+)", after.lower())
+    if word_slip and following is not None and following.group(1) not in lx.GRAMMAR and f"{thing} {following.group(1)}" not in phrases:
+        return None  # "the lone tree", "a deep blue": a word said of what follows, not a slip for a thing
     return thing + ("es" if thing.endswith(("s", "sh", "ch", "x")) else "s") if many else thing
+
+
+def _place_phrases(scene: Scene) -> frozenset[str]:
+    """The scene's place names in lower case ("bus stop", "lot a entrance")."""
+    return frozenset(ph.normalise(name).strip() for landmark in scene.landmarks for name in landmark.names())
 
 
 def _without_place_left(text: str, scene: Scene) -> str:
@@ -767,7 +779,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _COMPASS_CROSSING.sub(r"\1 crosswalk", text)
     text = _COMPASS_CAR_PARK.sub(r"\1 parking lot", text)
     text = _without_place_left(text, scene)
-    text = _UP_AHEAD.sub("ahead of the ego", text)
+    text = _UP_AHEAD.sub(lambda m: f"{m.group(1) or ''} ahead of the ego".lstrip(), text)
     text = _what_instead(text)
     text = _US_AS_OBJECT.sub(r"\1 the ego", text)  # "have us turn at the crossroads": the car under test
     text = _STOP_THERE.sub(r"\1make \2 stop ", text)
@@ -791,7 +803,7 @@ def repair(text: str, scene: Scene) -> Repaired:
         word = m.group(0)
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
-        slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :])
+        slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :], _place_phrases(scene))
         if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away
             repairs.append(f"{word} -> {slip}")
             return slip
