@@ -35,6 +35,7 @@ from drivetwin.evals import (
     practice23_source,
     practice24_source,
     practice25_source,
+    practice26_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -103,6 +104,9 @@ BRIEFS: dict[str, Brief] = {
     # Eight everyday voices: parent helping with a school project, city councillor, insurance assessor, game modder,
     # nurse on a break, bus dispatcher, journalist, newcomer to the software; every cell holds 10 to 12.
     "practice25": Brief(290, 10, 10, practice25_source, multi_turn=30, planned=15, compound=18),
+    # Eight everyday voices: film location scout, delivery-robot operator, landscape gardener, retired engineer, road
+    # safety auditor, event planner, night security guard, a French visiting researcher; every cell holds 11 or 12.
+    "practice26": Brief(300, 11, 11, practice26_source, multi_turn=35, planned=20, compound=20),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)

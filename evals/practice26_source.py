@@ -1,0 +1,1196 @@
+"""The twenty-sixth practice suite: 310 cases in plain, everyday English from eight kinds of ordinary user, from the campus world alone.
+
+`python -m drivetwin.evals.practice26_source` writes `suites/practice26.jsonl` (tag `practice26`, ids
+`practice26.<task>.<grade>.<name>`), one JSON object per line, from the plain case lists below.
+
+Voices (each case names its own in `notes`), none used by practice25: a film location scout ("the hero car", "in my
+frame", "for the establishing shot", "golden hour", "make them pop"), a delivery-robot fleet operator ("our rover",
+"the bot keeps clipping it", "stage the fleet nose to tail", "worst case for the sensors"; it uses the catalog's
+Ackermann research robot), a landscape gardener ("a bit of shade wouldn't go amiss", "to keep the mowers off it",
+"their autumn colour"), a retired civil engineer ("the motor car we are testing", "as the crow flies", "a few yards",
+"five yards across", "if you please"), a road safety auditor ("decommission", "channelise the eastbound lane", "the
+lead vehicle shall perform an emergency stop", "sight lines"), a graduation-day event planner (guests, ushers, stewards,
+VIP parking, "the ceremony starts at quarter past ten"), a night-shift campus security guard ("on my rounds", "0200
+hours", "the graveyard shift", "my patrol car") and a visiting researcher from France writing non-native English
+("Please, which lanes are belonging to Main Street?", "the seat of the bus stop", "our car is too slow, more quick
+please", "the car numero two").
+
+Prompts describe things instead of naming them ("the red water outlet off the north kerb", "the signal head on the
+south-west corner of the junction", "the sign that orders motorists to come to a full stop", "the tree squeezed in
+between the bus stop and the Library", "the old tree by the west car park", "the car nearest the union building and
+the one in the middle of the row", "the little four-wheeled delivery robots"), turn on negation and polarity ("leave
+the four-by-four", "all the trees except the one by the fountain", "I don't want the lamps of the south side",
+"fewer lamp posts", "less of traffic lights, one is enough", "ease off a bit", "improve visibility"), and name places
+and scopes (lanes, "the westbound side, 40 metres up the road from the ego", "15 m behind the test car, in the same
+lane", "the south footway 20 metres ahead", "between the main gate and the crossroads", "east of the crossroads",
+"within 10 metres of the crossroads", "the JTEKT drop-off"). They carry clock times ("02:00 hours", "2200 hours",
+"about three in the morning", "quarter past ten in the morning", "half past six in the evening", "18:45", "0400",
+"eight o'clock in the evening", "half past five of the afternoon", "23:30", "06:15"), weather with strengths (light
+rain, a thin fog, a heavy fall of snow, a pea-souper "as thick as it goes", "a light shower now", "nothing too heavy",
+"realy thick", "a lite snowfal"), numbers in words and digits with units (metres, m/s, km/h, kph, yards, degrees:
+"walking pace, about 5 km/h", "36 kph", "180 km/h", "a dozen cones", "five yards across"), counts, questions (which
+must change nothing: their checks hold the scene unchanged and their reference answers with a search), and behaviours:
+speeds, a timed stop, an emergency stop when the ego closes on a lead car, a red light held, lane changes to pass an
+obstruction or at some point, left and right turns at the crossroads, a walker crossing at the zebra or strolling to a
+door, a car driving to the lot B entrance, laps of the student car park and a rover rolling east. The erroneous grade
+carries realistic typos, dropped words and run-together words ("how mnay lampposts in total", "wich lane is nerest
+the JTEKT entrence", "plnt a tree by the bus stpo", "remove al the trees exept the one by the fountian", "put 4 benchs
+in a row infront of the union", "mvoe the ego 6 metrs forwrd", "make it nite and rainy").
+
+Counts: 7 tasks x 4 grades, 11 cases in every cell but addition direct and indirect, which hold 12 (310 in all; 78
+direct, 78 indirect, 77 vague, 77 erroneous). 42 cases are multi-turn (21 with a planned earlier turn that has calls),
+with references back: "it", "them", "that car", "that new seat", "the stranded vehicle", "tha van from the dropoff",
+"and one more behind it", "another rover right beside it", "How many ushers have we got out there now?", corrections
+"actually, scrap that car", "Actually, that new tree belongs next to the bench at the bus stop". 20 are compound (two
+requests in one prompt; the reference makes two calls or more), and 25 (8.1 %) impossible, tagged `impossible`, where
+the right outcome is a refusal that changes nothing: the chapel, a charging dock, a security camera (asked for and
+added), a marquee tent, a steam locomotive, 25 more rovers (the catalog allows 20); removing the Engineering Hall, the
+west zebra crossing, the fountain, Campus Drive; the SUV at y = 120 (off the map), a bench inside the Engineering Hall,
+a truck that is not there, "parking lot D"; 180 km/h, driving to the security office, a hydrant driving around; 150
+cones, a statue, an 80 m ring, 25 robots in a row; 25:15, a hurricane, painting the Library.
+
+Every case judges the outcome, never the calls: a main check and an `unchanged_except` guard, with `alternatives`
+where a request has two fair readings (a speed set on the lane behaviour or by a change-of-speed manoeuvre, a crossing
+as a behaviour or a manoeuvre, backing up by a shift or a reverse manoeuvre, braking by a stop or a slow-down, either
+lane of Campus Drive, any tree moved nearer the Library, a driveway closed by a line or a ring, moodier by weather,
+clock, exposure or dusk, worse for the sensors by weather or night, better visibility or easing off by less of the
+weather or none, more light by the clock, exposure or street lights), and a `reference` plan that passes; a plan that
+does nothing fails every case that is not impossible, whether or not its planned earlier turns were done.
+The suite was written from the campus world, the asset catalog, the Worker tools and the eval checks only, by someone
+who had not read the planners, their lexicons, their prompt examples or any other suite's cases (practice25's source
+was read for its format only).
+"""
+
+from __future__ import annotations
+
+from drivetwin.evals.practice_cases import (
+    EGO,
+    Json,
+    Suite,
+    add,
+    ahead_of,
+    arrange,
+    behave,
+    clock,
+    count,
+    delta,
+    does,
+    drive,
+    env,
+    environment,
+    event,
+    event_played,
+    find,
+    gone,
+    hold,
+    in_lane,
+    kept,
+    landmarks,
+    lanes,
+    layout,
+    lighting,
+    loc,
+    looks,
+    manoeuvre,
+    measure,
+    move,
+    moved,
+    near,
+    on,
+    only,
+    paint,
+    place,
+    properties,
+    reaches,
+    relative,
+    remove,
+    turn,
+    weather,
+    xy,
+)
+
+TAG = "practice26"
+S = Suite(TAG)
+case = S.case
+impossible = S.impossible
+ask = S.ask
+
+# --- The campus as it ships: the ids and places the cases name -----------------------------------
+SUV = "suv_1"  # the middle of the three cars parked in lot B, all facing north
+CAR1 = "passenger_car_1"  # the west sedan of that row
+CAR2 = "passenger_car_2"  # the east sedan, nearest the Student Union
+PARKED = [CAR1, SUV, CAR2]
+BENCH = "bench_1"  # on the south pavement by the bus stop, facing west
+BIN = "trash_bin_1"  # on the south pavement, just west of the bus stop
+HYDRANT = "fire_hydrant_1"  # north pavement of Main Street, just east of the crossroads
+STOP = "stop_sign_1"  # south pavement, just before the west crosswalk
+LIGHT_WEST = "traffic_light_1"  # south-west corner of the crossroads; governs the eastbound lane
+LIGHT_EAST = "traffic_light_2"  # north-east corner
+TREE_STOP = "tree_1"  # between the bus stop and the Library
+TREE_FOUNTAIN = "tree_2"  # just north-west of the fountain
+TREE_QUAD = "tree_3"  # on the quad, south-east of the fountain
+TREE_LOT_A = "tree_4"  # just north of lot A
+TREES = [TREE_STOP, TREE_FOUNTAIN, TREE_QUAD, TREE_LOT_A]
+NORTH_LAMPS = [f"street_light_{n}" for n in (1, 3, 5, 7, 9, 11)]
+SOUTH_LAMPS = [f"street_light_{n}" for n in (2, 4, 6, 8, 10, 12)]
+WEST_HALF_LAMPS = [f"street_light_{n}" for n in range(1, 7)]  # x < 0: between the main gate and the crossroads
+EAST_HALF_LAMPS = [f"street_light_{n}" for n in range(7, 13)]
+SOUTH_EAST_LAMPS = ["street_light_8", "street_light_10", "street_light_12"]
+EAST = "main_eastbound"
+WEST = "main_westbound"
+NORTH = "campus_northbound"
+SOUTH = "campus_southbound"
+ROBOT = "ackermann_robot"
+TRAFFIC = ["passenger_car", "suv", "bus", "truck", "motorcycle", ROBOT]
+PARKED_CARS = ["passenger_car", "suv"]
+WORKS = ["traffic_cone", "road_barrier", "construction_sign", "cement_rubble", "bollard"]
+CORDON = ["traffic_cone", "road_barrier", "bollard"]
+HAZARDS = [*WORKS, *TRAFFIC, "pedestrian", "bicycle"]
+BRIGHT = ["yellow", "orange", "red", "pink", "cyan", "green", "gold", "blue", "purple"]
+SOBER = ["grey", "silver", "black", "white", "navy", "beige", "brown"]
+
+# --- Voices (each case names its own in `notes`) -----------------------------------------------------
+SCOUT = "film location scout: frames, shots and takes, 'the hero car', 'in my frame', practical about light"
+ROVER = "delivery-robot fleet operator: 'our rover', 'the bot', drop-offs, kerbs and routes; terse ops talk"
+GARDENER = "landscape gardener: trees, shade, planting and seating; describes greenery warmly"
+RETIRED = "retired civil engineer: formal and old-fashioned, 'motor car', yards and feet, 'if you please'"
+AUDITOR = "road safety auditor: formal findings, 'hazard', 'decommission', 'channelise', 'the ego shall'"
+PLANNER = "graduation-day event planner: guests, ushers, the ceremony, VIP parking, shuttles and timings"
+GUARD = "night-shift campus security guard: rounds and patrols, 24-hour times such as 0200, plain and blunt"
+VISITOR = "visiting researcher from France, non-native English: 'please' up front, French word order, 'of the'"
+
+
+# --- Earlier turns several cases start from -----------------------------------------------------------
+def asked(step: Json) -> Json:
+    """The same earlier turn, planned by the planner under test (its calls are only the reference)."""
+    return {**step, "planned": True}
+
+
+def ego_speed(lo: float, hi: float) -> list[list[Json]]:
+    """Fair readings of a new speed for the ego: on its lane behaviour, or by a change-of-speed manoeuvre."""
+    return [
+        [does("drive_lane", asset=EGO, speed_min=lo, speed_max=hi)],
+        [event_played(EGO, "change_speed", 3.0)],
+    ]
+
+
+def backs_up(lo: float, hi: float) -> list[list[Json]]:
+    """Fair readings of backing the ego up: a shift backwards, or a reverse manoeuvre."""
+    return [[moved(EGO, lo, hi, "backward")], [event_played(EGO, "reverse", 3.0)]]
+
+
+def crosses(lane: str | None = None) -> list[list[Json]]:
+    """Fair readings of a walker crossing: a crossing (or jaywalk) behaviour, or a crossing manoeuvre."""
+    return [
+        [does(["cross_road", "jaywalk"], "pedestrian", crosses_lane=lane)],
+        [event_played("pedestrian", "cross_road", 3.0)],
+    ]
+
+
+def halts(actor: str, line: tuple[float, float], place: str, within: float, seconds: float = 20.0) -> Json:
+    """Run the scene: `actor` never crosses `line` (a point it drives towards) and ends stopped, having come
+    within `within` metres of `place` (so a stop on the spot, far short of it, does not count)."""
+    return {
+        "kind": "scenario",
+        "seconds": seconds,
+        "expect": [
+            {"kind": "stopped_before", "actor": actor, "line": list(line)},
+            {"kind": "reached", "actor": actor, "place": place, "within": within},
+        ],
+    }
+
+
+ROVER_LOT_B = turn("Put one of our delivery robots in lot B.", add(ROBOT, where=loc("at", "parking lot B")))
+ROVERS_LOT_A = turn("Drop two delivery robots in parking lot A.", add(ROBOT, 2, loc("at", "parking lot A")))
+CONES_20_AHEAD = turn("Three cones in our lane, 20 m ahead of the test car.",
+                      add("traffic_cone", 3, ahead_of(EGO, 20)))
+CAR_WEST_EAST_GATE = turn("Stick a sedan on the westbound side, over by the back gate.",
+                          add("passenger_car", where=loc("in_lane", "east gate", lane=WEST)))
+CAR_LOT_A = turn("Park a sedan in the west car park.", add("passenger_car", where=loc("at", "parking lot A")))
+RED_CAR_LOT_A = turn("Bring in a red saloon and park it in lot A.", add("passenger_car", where=loc("at", "parking lot A"), colour="red"))
+BUS_AT_STOP = turn("A shuttle at the stop on Main Street, eastbound side, please.",
+                   add("bus", where=loc("in_lane", "bus stop", lane=EAST)))
+BENCH_ENGINEERING = turn("Set a bench outside the Engineering Hall doors.",
+                         add("bench", where=loc("in_front_of", "Engineering Hall entrance")))
+BENCH_FOUNTAIN = turn("Put a garden bench beside the fountain.", add("bench", where=loc("next_to", "fountain")))
+USHERS_UNION = turn("Put three ushers at the Student Union doors.",
+                    add("pedestrian", 3, loc("at", "Student Union entrance")))
+GUESTS_JTEKT = turn("Add five guests outside the JTEKT entrance.",
+                    add("pedestrian", 5, loc("on_sidewalk", "JTEKT building entrance")))
+WALKER_STOP = turn("Add someone waiting at the shuttle stop.", add("pedestrian", where=loc("on_sidewalk", "bus stop")))
+WALKER_NORTH = turn("Put a student on the footpath beside the north crossing.",
+                    add("pedestrian", where=loc("on_sidewalk", "north crosswalk")))
+WALKER_WEST_SOUTH = turn("Stand an extra at the southern end of the west zebra crossing.",
+                         add("pedestrian", where=xy(-11.5, -6.0)))
+WALKER_LIBRARY = turn("Put a person by the Library doors.",
+                      add("pedestrian", where=loc("at", "Library entrance")))
+VAN_JTEKT = turn("Add a van in the JTEKT drop-off.", add("truck", where=loc("at", "JTEKT building entrance")))
+LORRY_AHEAD = turn("Stage a broken-down delivery truck in the test car's lane, 35 m up ahead.",
+                   add("truck", where=ahead_of(EGO, 35)))
+RUBBLE_AHEAD = turn("Put some rubble in the eastbound lane 25 metres ahead of the test car.",
+                    add("cement_rubble", where=ahead_of(EGO, 25)))
+RUBBLE_EAST_GATE = turn("Dump a heap of broken concrete in the westbound lane near the back gate.",
+                        add("cement_rubble", where=loc("in_lane", "east gate", lane=WEST)))
+BARRIERS_AHEAD = turn("Drop two barriers in the eastbound lane 30 metres ahead of the test car.",
+                      add("road_barrier", 2, ahead_of(EGO, 30)))
+BARRIERS_LOT_B = turn("Put two barriers at the lot B entrance.", add("road_barrier", 2, loc("at", "parking lot B entrance")))
+LEAD_CAR = turn("Place a lead vehicle 25 m ahead of the ego, travelling east at 3 m/s.",
+                add("passenger_car", where=ahead_of(EGO, 25), behaviour=drive(3.0, EAST)))
+ROBOT_LOT_A_ONE = turn("Put a delivery robot in lot A.", add(ROBOT, where=loc("at", "parking lot A")))
+TREE_LOT_A_GATE = turn("Add a tree at the lot A entrance.", add("tree", where=loc("next_to", "parking lot A entrance")))
+RAIN_HEAVY = turn("It's bucketing down: heavy rain.", weather("rain", 0.9))
+RAIN_PLAIN = turn("Let's have some rain.", weather("rain", 0.6))
+FOG_HEAVY = turn("Roll in a dense fog.", weather("fog", 0.9))
+NIGHT = turn("Make it 2200 hours.", clock("22:00"))
+
+# --- Search: questions change nothing; the answer names what was asked for ---------------------------
+SEARCH_CASES: list[Json] = [
+    # direct
+    ask("direct", "count_signals", AUDITOR, "How many traffic signals are installed on the site?",
+        ["2", LIGHT_WEST, LIGHT_EAST], [find(category="traffic_light")]),
+    ask("direct", "lamp_nearest_engineering", GUARD, "Which street lamp stands closest to the Engineering Hall entrance?",
+        ["street_light_3"], [find(category="street_light", nearest_to="Engineering Hall entrance")]),
+    ask("direct", "gate_to_gate", RETIRED, "What is the distance from the main gate to the east gate?", ["200.0"],
+        [measure("main gate", "east gate")]),
+    ask("direct", "lane_nearest_union", ROVER, "Which lane is nearest to the Student Union entrance?", [NORTH],
+        [lanes(near="Student Union entrance")]),
+    ask("direct", "time_and_sky", SCOUT, "What time is it set to, and is the sky clear?", ["12:00", "clear"],
+        [environment()]),
+    ask("direct", "list_trees", PLANNER, "List all the trees on the campus.", TREES, [find(category="tree")]),
+    ask("direct", "main_street_lanes", VISITOR, "Please, which lanes are belonging to Main Street?", [EAST, WEST],
+        [lanes(road="Main Street")]),
+    ask("direct", "tree_nearest_lot_a", GARDENER, "Which tree is nearest to parking lot A?", [TREE_LOT_A],
+        [find(category="tree", nearest_to="parking lot A")]),
+    ask("direct", "signal_nearest_stop_sign", AUDITOR, "Which traffic light is nearest to the stop sign?", [LIGHT_WEST],
+        [find(category="traffic_light", nearest_to=STOP)]),
+    impossible("search", "direct", "chapel_distance", RETIRED, "How far is the chapel from the Library entrance?",
+               [measure("chapel", "Library entrance")]),
+    ask("direct", "lamps_and_hydrant_lamp", GUARD,
+        "How many lamp posts are there altogether, and how far is the nearest one from the fire hydrant?", ["12", "9.0"],
+        [find(category="street_light"), find(category="street_light", nearest_to=HYDRANT)]),
+    # indirect
+    ask("indirect", "shade_for_bus_stop", GARDENER,
+        "Which of the trees gives the bus stop the most cover? I mean the one standing nearest to it.", [TREE_STOP],
+        [find(category="tree", nearest_to="bus stop")]),
+    ask("indirect", "library_to_union_doors", ROVER,
+        "How far does the rover have to go from the Library doors to the union building's doors, in a straight line?",
+        ["90.9"], [measure("Library entrance", "Student Union entrance")]),
+    ask("indirect", "what_near_crossroads", SCOUT,
+        "For the establishing shot I need to know what's standing within 10 metres of the crossroads.",
+        [LIGHT_WEST, LIGHT_EAST, HYDRANT], [find(near="main intersection", within=10)]),
+    ask("indirect", "car_park_for_engineering", PLANNER,
+        "Our VIP guests are visiting the engineering building. Which car park is closest to its front doors?",
+        ["parking lot A"], [landmarks(query="parking lot", nearest_to="Engineering Hall entrance")]),
+    ask("indirect", "crossing_nearest_hydrant", AUDITOR,
+        "Which marked pedestrian crossing is nearest the fire hydrant?", ["north crosswalk"],
+        [landmarks(query="crosswalk", nearest_to=HYDRANT)]),
+    ask("indirect", "rover_weight", ROVER, "How heavy is one of those little four-wheeled delivery robots you have?",
+        ["60"], [properties(category=ROBOT)]),
+    ask("indirect", "bin_on_my_rounds", GUARD,
+        "On my rounds I empty the bins. Which rubbish bin is nearest to the Library entrance?", [BIN],
+        [find(category="trash_bin", nearest_to="Library entrance")]),
+    ask("indirect", "motor_car_to_far_gate", RETIRED,
+        "How far, as the crow flies, is the motor car we are testing from the gate at the eastern end?", ["160.0"],
+        [measure("east gate")]),
+    impossible("search", "indirect", "charging_dock", ROVER, "Where is the nearest charging dock for the rovers?",
+               [find(category="charging dock", nearest_to=EGO)]),
+    ask("indirect", "weather_and_fountain_jtekt", SCOUT,
+        "Two things for my notes: what is the weather doing, and how far is the fountain from the JTEKT doors?",
+        ["clear", "45.1"], [environment(), measure("fountain", "JTEKT building entrance")]),
+    ask("indirect", "how_many_ushers", PLANNER, "How many ushers have we got out there now?", ["3"],
+        [find(category="pedestrian")], setup=[asked(USHERS_UNION)]),
+    # vague
+    ask("vague", "anything_parked_lot_b", GUARD, "anything parked over in lot B?", PARKED,
+        [find(category="vehicles", near="parking lot B", within=1)]),
+    ask("vague", "how_much_greenery", GARDENER, "how much greenery have we got?", ["4"], [find(category="tree")]),
+    ask("vague", "light_right_now", SCOUT, "what's the light like right now?", [], [environment()],
+        any_of=["12:00", "day", "daylight"]),
+    ask("vague", "where_rover", ROVER, "where's the rover?", ["ackermann_robot_1"], [find(category=ROBOT)],
+        setup=[asked(ROVER_LOT_B)]),
+    ask("vague", "bus_stop_far", RETIRED, "Is the bus stop far from our motor car?", ["30.2"], [measure("bus stop")]),
+    ask("vague", "signs_west_crossing", AUDITOR, "Any signage near the western crossing?", [STOP],
+        [find(category="signs", near="west crosswalk", within=10)]),
+    ask("vague", "near_union_doors", PLANNER, "what's nearest the Student Union doors?", [CAR2],
+        [find(nearest_to="Student Union entrance", within=20)]),
+    ask("vague", "time_now_again", VISITOR, "And now, the hour, it is what?", ["22:00"], [environment()], setup=[NIGHT]),
+    impossible("search", "vague", "security_camera", GUARD, "where's the nearest security camera?",
+               [find(category="security camera", nearest_to=EGO)]),
+    ask("vague", "round_the_fountain", GARDENER, "what's growing round the fountain?", [TREE_FOUNTAIN],
+        [find(near="fountain", within=10)]),
+    ask("vague", "whats_in_our_lane", ROVER, "what's in our lane up ahead?", ["traffic_cone_1"],
+        [find(on_lane=True, lane=EAST)], setup=[CONES_20_AHEAD]),
+    # erroneous
+    ask("erroneous", "count_lamps_typos", GUARD, "how mnay lampposts in total", ["12"], [find(category="street_light")]),
+    ask("erroneous", "stop_sign_to_hydrant_typos", RETIRED, "distanse from the stop sign to the fire hydrnt?", ["31.5"],
+        [measure(STOP, HYDRANT)]),
+    ask("erroneous", "lane_near_jtekt_typos", ROVER, "wich lane is nerest the JTEKT entrence", [WEST],
+        [lanes(near="JTEKT building entrance")]),
+    ask("erroneous", "sunny_and_time_typos", SCOUT, "is it sunny or cloudy rn, and wat time", ["clear", "12:00"],
+        [environment()]),
+    ask("erroneous", "signal_near_stop_sign_typos", AUDITOR, "which trafic light is closest to the stop sing",
+        [LIGHT_WEST], [find(category="traffic_light", nearest_to=STOP)]),
+    ask("erroneous", "lot_a_to_gate_typos", PLANNER, "how far is lot A from the main gat", [],
+        [measure("parking lot A", "main gate")], any_of=["32.6", "14.0"]),
+    ask("erroneous", "vehicles_lot_b_typos", VISITOR, "which are the vehicules in the parking B please", PARKED,
+        [find(category="vehicles", near="parking lot B", within=1)]),
+    ask("erroneous", "trees_fountain_typos", GARDENER, "how many tress are near the fountian", [TREE_FOUNTAIN, TREE_QUAD],
+        [find(category="tree", near="fountain", within=20)]),
+    ask("erroneous", "union_lot_distance_typos", PLANNER, "how far is the union entrnce from lot b entrance",
+        ["47.7"], [measure("Student Union entrance", "parking lot B entrance")]),
+    ask("erroneous", "that_car_lane_typos", GUARD, "wat lane's taht car sitting in", [WEST], [lanes(near="passenger_car_3")],
+        setup=[asked(CAR_WEST_EAST_GATE)]),
+    ask("erroneous", "ego_to_lot_b_gate_typos", ROVER, "distnce from ego to lot b entrnce", ["107.0"],
+        [measure("parking lot B entrance")]),
+]
+
+# --- Addition: new things where and as asked ------------------------------------------------------------
+ADDITION_CASES: list[Json] = [
+    # direct
+    case("addition", "direct", "robot_lot_a", ROVER, "Add a delivery robot in parking lot A.",
+         [delta(ROBOT, 1, 1), near("parking lot A", 1, ROBOT), only(ROBOT)],
+         [add(ROBOT, where=loc("at", "parking lot A"))]),
+    case("addition", "direct", "two_trees_engineering", GARDENER, "Plant two trees beside the Engineering Hall entrance.",
+         [delta("tree", 2, 2), near("Engineering Hall entrance", 12, "tree", scope="added", every=True), only("tree")],
+         [add("tree", 2, loc("next_to", "Engineering Hall entrance"))]),
+    case("addition", "direct", "shuttle_east_gate", PLANNER, "Add a shuttle bus in the westbound lane at the east gate.",
+         [delta("bus", 1, 1), in_lane(WEST, "bus"), near("east gate", 15, "bus"), only("bus")],
+         [add("bus", where=loc("in_lane", "east gate", lane=WEST))]),
+    case("addition", "direct", "crossing_sign_north", AUDITOR,
+         "Install a pedestrian crossing sign on the footway next to the north crosswalk.",
+         [delta("pedestrian_sign", 1, 1), near("north crosswalk", 10, "pedestrian_sign"), on(["sidewalk"], "pedestrian_sign"),
+          only("pedestrian_sign")],
+         [add("pedestrian_sign", where=loc("on_sidewalk", "north crosswalk"))]),
+    case("addition", "direct", "white_van_jtekt", GUARD, "Add a white van parked in the JTEKT drop-off.",
+         [delta("truck", 1, 1), near("JTEKT building entrance", 12, "truck"), looks("white", "truck"), only("truck")],
+         [add("truck", where=loc("at", "JTEKT building entrance"), colour="white")]),
+    case("addition", "direct", "black_motorbike_west", SCOUT, "Add a black motorcycle riding west along Main Street at 9 m/s.",
+         [delta("motorcycle", 1, 1), does("drive_lane", "motorcycle", lane=WEST, speed_min=8.5, speed_max=9.5),
+          looks("black", "motorcycle"), only("motorcycle")],
+         [add("motorcycle", behaviour=drive(9.0, WEST), colour="black")]),
+    case("addition", "direct", "hydrant_engineering", RETIRED,
+         "Add a fire hydrant on the footway by the Engineering Hall entrance.",
+         [delta("fire_hydrant", 1, 1), near("Engineering Hall entrance", 12, "fire_hydrant"), on(["sidewalk"], "fire_hydrant"),
+          only("fire_hydrant")],
+         [add("fire_hydrant", where=loc("on_sidewalk", "Engineering Hall entrance"))]),
+    case("addition", "direct", "four_walkers_west_crossing", VISITOR,
+         "Please add four pedestrians at the west crosswalk, on the sidewalk.",
+         [delta("pedestrian", 4, 4), near("west crosswalk", 10, "pedestrian", every=True), only("pedestrian")],
+         [add("pedestrian", 4, loc("on_sidewalk", "west crosswalk"))]),
+    impossible("addition", "direct", "marquee_fountain", PLANNER, "Add a marquee tent on the lawn by the fountain.",
+               [add("marquee tent", where=loc("next_to", "fountain"))]),
+    case("addition", "direct", "robot_and_p_sign_lot_b", ROVER,
+         "Add a robot at the lot B entrance and a parking sign beside it.",
+         [delta(ROBOT, 1, 1), delta("parking_sign", 1, 1),
+          near("parking lot B entrance", 10, [ROBOT, "parking_sign"], every=True), only(ROBOT, "parking_sign")],
+         [add(ROBOT, where=loc("at", "parking lot B entrance")),
+          add("parking_sign", where=loc("next_to", "ackermann_robot_1"))]),
+    case("addition", "direct", "bicycle_library", SCOUT, "Add a bicycle by the Library entrance.",
+         [delta("bicycle", 1, 1), near("Library entrance", 8, "bicycle"), only("bicycle")],
+         [add("bicycle", where=loc("at", "Library entrance"))]),
+    case("addition", "direct", "second_car_beside", GUARD, "Add a second one right next to it.",
+         [delta("passenger_car", 1, 1), near("passenger_car_3", 6, "passenger_car", scope="added"), only("passenger_car")],
+         [add("passenger_car", where=loc("next_to", "passenger_car_3"))], setup=[asked(CAR_LOT_A)]),
+    # indirect
+    case("addition", "indirect", "seat_for_graduates", PLANNER,
+         "The graduates will need somewhere to sit while they wait outside the JTEKT building; one bench should do.",
+         [delta("bench", 1, 1), near("JTEKT building entrance", 10, "bench", scope="added"), only("bench")],
+         [add("bench", where=loc("in_front_of", "JTEKT building entrance"))]),
+    case("addition", "indirect", "shade_by_lot_a_gate", GARDENER,
+         "The way into the west car park looks bare; a bit of shade by its entrance wouldn't go amiss.",
+         [delta("tree", 1, 1), near("parking lot A entrance", 10, "tree", scope="added"), only("tree")],
+         [add("tree", where=loc("next_to", "parking lot A entrance"))]),
+    case("addition", "indirect", "rover_behind_test_car", ROVER,
+         "We need a second rover waiting 15 m behind the test car, in the same lane.",
+         [delta(ROBOT, 1, 1), in_lane(EAST, ROBOT), near(None, 5, ROBOT, point=(-75.0, -1.75)), only(ROBOT)],
+         [add(ROBOT, where=ahead_of(EGO, -15))]),
+    case("addition", "indirect", "stranded_van_opposite", AUDITOR,
+         "Simulate a breakdown hazard: a stationary goods van on the westbound side, 40 metres up the road from the ego.",
+         [delta("truck", 1, 1), in_lane(WEST, "truck"), near(None, 8, "truck", point=(-20.0, 1.75)), only("truck")],
+         [add("truck", where=ahead_of(EGO, 40, lane=WEST))]),
+    case("addition", "indirect", "walker_stop_to_library", SCOUT,
+         "I want an extra strolling from the bus stop over to the Library doors in the background.",
+         [delta("pedestrian", 1, 1), does("follow_path", "pedestrian"), only("pedestrian")],
+         [add("pedestrian", where=loc("on_sidewalk", "bus stop"), behaviour={"kind": "follow_path", "to": "Library entrance"})]),
+    case("addition", "indirect", "car_rolling_north", VISITOR,
+         "Please, for the experiment I need a car which rolls on the northbound lane of Campus Drive at 5 metres per second.",
+         [delta("passenger_car", 1, 1), does("drive_lane", "passenger_car", lane=NORTH, speed_min=4.5, speed_max=5.5),
+          only("passenger_car")],
+         [add("passenger_car", behaviour=drive(5.0, NORTH))]),
+    case("addition", "indirect", "scooter_union_doors", GUARD,
+         "Somebody always leaves a scooter by the Student Union doors; put one there for me.",
+         [delta("motorcycle", 1, 1), near("Student Union entrance", 8, "motorcycle"), only("motorcycle")],
+         [add("motorcycle", where=loc("at", "Student Union entrance"))]),
+    case("addition", "indirect", "chap_with_bike_north", RETIRED,
+         "A chap with a push-bike waiting at the kerb by the northern crossing, if you please.",
+         [delta("bicycle", 1, 1), near("north crosswalk", 8, "bicycle"), only("bicycle")],
+         [add("bicycle", where=loc("at", "north crosswalk"))]),
+    impossible("addition", "indirect", "steam_locomotive", SCOUT,
+               "For the period piece, park a steam locomotive by the JTEKT building.",
+               [add("steam locomotive", where=loc("at", "JTEKT building entrance"))]),
+    case("addition", "indirect", "coach_and_stewards_gate", PLANNER,
+         "Guests arrive by coach at the main gate: put a coach in the eastbound lane there and two stewards on the pavement.",
+         [delta("bus", 1, 1), delta("pedestrian", 2, 2), in_lane(EAST, "bus"),
+          near("main gate", 15, ["bus", "pedestrian"], every=True), only("bus", "pedestrian")],
+         [add("bus", where=loc("in_lane", "main gate", lane=EAST)), add("pedestrian", 2, loc("on_sidewalk", "main gate"))]),
+    case("addition", "indirect", "warning_sign_ahead", AUDITOR,
+         "A crossing warning sign is required on the south footway 20 metres ahead of the ego.",
+         [delta("pedestrian_sign", 1, 1), near(None, 6, "pedestrian_sign", point=(-40.0, -5.5)),
+          on(["sidewalk"], "pedestrian_sign"), only("pedestrian_sign")],
+         [add("pedestrian_sign", where=ahead_of(EGO, 20, side="right"))]),
+    case("addition", "indirect", "tree_shading_new_seat", GARDENER, "A tree next to that new seat would give it some shade.",
+         [delta("tree", 1, 1), near("bench_2", 5, "tree", scope="added"), only("tree")],
+         [add("tree", where=loc("next_to", "bench_2"))], setup=[asked(BENCH_ENGINEERING)]),
+    # vague
+    case("addition", "vague", "busy_for_graduation", PLANNER, "Make the JTEKT entrance look busy for graduation day.",
+         [delta("pedestrian", 2, None), near("JTEKT building entrance", 20, "pedestrian", every=True), only("pedestrian")],
+         [add("pedestrian", 6, loc("on_sidewalk", "JTEKT building entrance"))]),
+    case("addition", "vague", "more_trees", GARDENER, "more trees, please", [delta("tree", 1, None), only("tree")],
+         [add("tree", 3, loc("next_to", "fountain"))]),
+    case("addition", "vague", "couple_of_rovers_road", ROVER, "get a couple of rovers out on the road",
+         [delta(ROBOT, 2, 3), only(ROBOT)], [add(ROBOT, 2, behaviour=drive(lane=EAST))],
+         alternatives=[[does("drive_lane", ROBOT, min_count=2)], [in_lane(None, ROBOT)]]),
+    case("addition", "vague", "big_noisy_past", SCOUT, "something big and noisy going past on Main Street",
+         [delta(["truck", "bus", "motorcycle"], 1, 2), does("drive_lane", ["truck", "bus", "motorcycle"]),
+          only("truck", "bus", "motorcycle")],
+         [add("truck", behaviour=drive(lane=WEST))]),
+    case("addition", "vague", "loiterer_by_bins", GUARD, "someone hanging about near the bin",
+         [delta("pedestrian", 1, 2), near(BIN, 8, "pedestrian", every=True), only("pedestrian")],
+         [add("pedestrian", where=loc("next_to", BIN))]),
+    case("addition", "vague", "oncoming_traffic", RETIRED, "A spot of traffic coming the other way, perhaps.",
+         [delta(TRAFFIC, 1, None), does("drive_lane", TRAFFIC, lane=WEST), only(*TRAFFIC)],
+         [add("passenger_car", 2, loc("in_lane", "main intersection", lane=WEST), behaviour=drive(lane=WEST))]),
+    case("addition", "vague", "hazard_in_path", AUDITOR, "Introduce a hazard in the ego's path.",
+         [delta(HAZARDS, 1, None), relative("in_front_of", EGO, HAZARDS, max_distance=60, tolerance_deg=15, every=True),
+          only(*HAZARDS)],
+         [add("cement_rubble", where=ahead_of(EGO, 25))]),
+    case("addition", "vague", "bicycles_library", VISITOR, "some bicycles, please, near of the library",
+         [delta("bicycle", 2, 8), near("Library entrance", 15, "bicycle", every=True), only("bicycle")],
+         [add("bicycle", 3, loc("at", "Library entrance"))]),
+    impossible("addition", "vague", "twenty_five_rovers", ROVER, "spawn 25 more rovers round the campus",
+               [add(ROBOT, 25)]),
+    case("addition", "vague", "one_more_behind", PLANNER, "and one more behind it",
+         [delta("bus", 1, 1), relative("behind", "bus_1", "bus", max_distance=30, tolerance_deg=30), only("bus")],
+         [add("bus", where=loc("behind", "bus_1"))], setup=[asked(BUS_AT_STOP)]),
+    case("addition", "vague", "seats_by_quad_tree", GARDENER, "a couple of seats in the shade of the big tree on the quad",
+         [delta("bench", 2, 2), near(TREE_QUAD, 8, "bench", scope="added", every=True), only("bench")],
+         [add("bench", 2, loc("next_to", TREE_QUAD))]),
+    # erroneous
+    case("addition", "erroneous", "robot_library_typos", ROVER, "ad a robot at the libary drop off",
+         [delta(ROBOT, 1, 1), near("Library entrance", 10, ROBOT), only(ROBOT)],
+         [add(ROBOT, where=loc("at", "Library entrance"))]),
+    case("addition", "erroneous", "tree_bus_stop_typos", GARDENER, "plnt a tree by the bus stpo",
+         [delta("tree", 1, 1), near("bus stop", 10, "tree", scope="added"), only("tree")],
+         [add("tree", where=loc("next_to", "bus stop"))]),
+    case("addition", "erroneous", "two_buses_lot_a_typos", PLANNER, "2 shutle buses parkd in lot A",
+         [delta("bus", 2, 2), near("parking lot A", 1, "bus", every=True), only("bus")],
+         [add("bus", 2, loc("at", "parking lot A"))]),
+    case("addition", "erroneous", "walker_crossing_typos", GUARD, "add a ped walkin acros the road at the west crosswalk",
+         [delta("pedestrian", 1, 1), near("west crosswalk", 10, "pedestrian"), only("pedestrian")],
+         [add("pedestrian", where=xy(-11.5, -6.0), behaviour={"kind": "cross_road"})],
+         alternatives=crosses(EAST)),
+    case("addition", "erroneous", "silver_car_east_typos", SCOUT, "add a silvr car drivng east at 12 ms",
+         [delta("passenger_car", 1, 1), does("drive_lane", "passenger_car", lane=EAST, speed_min=11.5, speed_max=12.5),
+          looks("silver", "passenger_car"), only("passenger_car")],
+         [add("passenger_car", behaviour=drive(12.0, EAST), colour="silver")]),
+    case("addition", "erroneous", "lamp_north_typos", RETIRED, "add a lamp post on the pavment near the north crosswak",
+         [delta("street_light", 1, 1), near("north crosswalk", 8, "street_light", scope="added"), only("street_light")],
+         [add("street_light", where=loc("on_sidewalk", "north crosswalk"))]),
+    case("addition", "erroneous", "cone_ten_ahead_typos", AUDITOR, "place a cone 10m ahaed of the ego in its lane",
+         [delta("traffic_cone", 1, 1), in_lane(EAST, "traffic_cone"), near(None, 3, "traffic_cone", point=(-50.0, -1.75)),
+          only("traffic_cone")],
+         [add("traffic_cone", where=ahead_of(EGO, 10))]),
+    case("addition", "erroneous", "bin_library_door_typos", VISITOR, "add please one bin near of the door of library",
+         [delta("trash_bin", 1, 1), near("Library entrance", 6, "trash_bin", scope="added"), only("trash_bin")],
+         [add("trash_bin", where=loc("at", "Library entrance"))]),
+    impossible("addition", "erroneous", "security_camera_typos", GUARD, "add a securty camra on the lamp post",
+               [add("security camera", where=loc("next_to", "street_light_1"))]),
+    case("addition", "erroneous", "another_rover_typos", ROVER, "ad anotehr rover rite beside it",
+         [delta(ROBOT, 1, 1), near("ackermann_robot_1", 6, ROBOT, scope="added"), only(ROBOT)],
+         [add(ROBOT, where=loc("next_to", "ackermann_robot_1"))], setup=[ROVER_LOT_B]),
+    case("addition", "erroneous", "people_union_evening_typos", PLANNER, "add 3 peple at the union entrnce and make it evning",
+         [delta("pedestrian", 3, 3), near("Student Union entrance", 10, "pedestrian", every=True),
+          env(time_from="17:00", time_to="22:00"), only("pedestrian", env=True)],
+         [add("pedestrian", 3, loc("at", "Student Union entrance")), clock("evening")]),
+]
+
+# --- Removal: what was meant goes, everything else stays -------------------------------------------------
+REMOVAL_CASES: list[Json] = [
+    # direct
+    case("removal", "direct", "wheelie_bin", GUARD, "Remove the wheelie bin on the south pavement.",
+         [gone(BIN), only("trash_bin")], [remove(BIN)]),
+    case("removal", "direct", "quad_tree", GARDENER, "Remove the tree on the quad, the one south-east of the fountain.",
+         [gone(TREE_QUAD), kept(TREE_STOP, TREE_FOUNTAIN, TREE_LOT_A), only("tree")], [remove(TREE_QUAD)]),
+    case("removal", "direct", "traffic_light_2", AUDITOR, "Remove traffic_light_2.",
+         [gone(LIGHT_EAST), kept(LIGHT_WEST), only("traffic_light")], [remove(LIGHT_EAST)]),
+    case("removal", "direct", "west_half_lamps", SCOUT,
+         "Remove all the street lights on Main Street between the main gate and the crossroads.",
+         [gone(*WEST_HALF_LAMPS), kept(*EAST_HALF_LAMPS), only("street_light")], [remove(*WEST_HALF_LAMPS)]),
+    case("removal", "direct", "three_cars_lot_b", RETIRED, "Remove the three cars parked in lot B.",
+         [gone(*PARKED), only(*PARKED_CARS)], [remove(*PARKED)]),
+    impossible("removal", "direct", "engineering_hall", AUDITOR, "Remove the Engineering Hall.",
+               [remove("Engineering Hall")]),
+    case("removal", "direct", "both_robots", ROVER, "Remove both robots.",
+         [delta(ROBOT, -2, -2), only(ROBOT)], [remove("ackermann_robot_1", "ackermann_robot_2")],
+         setup=[asked(ROVERS_LOT_A)]),
+    case("removal", "direct", "suv_lot_b", PLANNER, "Remove the SUV from lot B.",
+         [gone(SUV), kept(CAR1, CAR2), only("suv")], [remove(SUV)]),
+    case("removal", "direct", "hydrant", VISITOR, "Please remove the fire hydrant.", [gone(HYDRANT), only("fire_hydrant")],
+         [remove(HYDRANT)]),
+    case("removal", "direct", "stop_sign_and_lights_on", GUARD, "Remove the stop sign and switch the street lights on.",
+         [gone(STOP), env(street_lights="on"), only("stop_sign", env=True)],
+         [remove(STOP), lighting(street_lights="on")]),
+    case("removal", "direct", "tree_lot_a", GARDENER, "Remove the tree next to parking lot A.",
+         [gone(TREE_LOT_A), kept(TREE_STOP, TREE_FOUNTAIN, TREE_QUAD), only("tree")], [remove(TREE_LOT_A)]),
+    # indirect
+    case("removal", "indirect", "lamp_in_frame", SCOUT, "The lamp right beside the bus shelter is in my frame; lose it.",
+         [gone("street_light_4"), delta("street_light", -1, -1), only("street_light")],
+         [remove(category="street_light", near="bus stop", count=1)]),
+    case("removal", "indirect", "south_west_signal", AUDITOR,
+         "The signal head on the south-west corner of the junction is redundant; decommission it.",
+         [gone(LIGHT_WEST), kept(LIGHT_EAST), only("traffic_light")], [remove(LIGHT_WEST)]),
+    case("removal", "indirect", "tree_between_stop_library", GARDENER,
+         "The tree squeezed in between the bus stop and the Library has to come out.",
+         [gone(TREE_STOP), kept(TREE_FOUNTAIN, TREE_QUAD, TREE_LOT_A), only("tree")], [remove(TREE_STOP)]),
+    case("removal", "indirect", "red_water_outlet", ROVER,
+         "Clear the red water outlet off the north kerb; the bot keeps clipping it.",
+         [gone(HYDRANT), only("fire_hydrant")], [remove(HYDRANT)]),
+    case("removal", "indirect", "vip_spaces", PLANNER,
+         "For VIP parking, take away the car nearest the union building and the one in the middle of the row.",
+         [gone(CAR2, SUV), kept(CAR1), only(*PARKED_CARS)], [remove(CAR2, SUV)]),
+    case("removal", "indirect", "halt_sign_west", RETIRED,
+         "The sign that orders motorists to come to a full stop before the western crossing: do away with it.",
+         [gone(STOP), only("stop_sign")], [remove(STOP)]),
+    case("removal", "indirect", "south_east_lamps", VISITOR,
+         "I don't want the lamps of the south side of Main Street east of the crossroads, please remove them.",
+         [gone(*SOUTH_EAST_LAMPS), kept("street_light_2", "street_light_4", "street_light_6", *NORTH_LAMPS),
+          only("street_light")], [remove(*SOUTH_EAST_LAMPS)]),
+    case("removal", "indirect", "barriers_block_patrol", GUARD, "Those barriers are blocking my patrol car; get rid of them.",
+         [delta("road_barrier", -2, -2), only("road_barrier")], [remove(category="road_barrier")],
+         setup=[asked(BARRIERS_LOT_B)]),
+    impossible("removal", "indirect", "west_zebra_stripes", ROVER,
+               "Take the zebra crossing on the west side out; the bot gets confused by the stripes.",
+               [remove("crossing_west")]),
+    case("removal", "indirect", "empty_student_car_park", SCOUT,
+         "Get every parked vehicle out of the student car park for the shot.",
+         [gone(*PARKED), only(*PARKED_CARS)], [remove(*PARKED)]),
+    case("removal", "indirect", "bin_and_lamp_beside", AUDITOR,
+         "The litter receptacle at the bus stop and the lamp column immediately beside it constitute obstructions; remove both.",
+         [gone(BIN, "street_light_4"), delta("street_light", -1, -1), only("trash_bin", "street_light")],
+         [remove(BIN), remove("street_light_4")]),
+    # vague
+    case("removal", "vague", "clutter_bus_stop", SCOUT, "too much clutter on the pavement by the bus stop",
+         [delta(["bench", "trash_bin", "street_light"], None, -1), only("bench", "trash_bin", "street_light")],
+         [remove(BENCH, BIN)]),
+    case("removal", "vague", "fewer_lamps", GARDENER, "fewer lamp posts, they spoil the view of the trees",
+         [delta("street_light", -11, -1), only("street_light")], [remove("street_light_9", "street_light_11")]),
+    case("removal", "vague", "cones_out_of_way", GUARD, "get those cones out of the way",
+         [delta("traffic_cone", -3, -3), only("traffic_cone")], [remove(category="traffic_cone")], setup=[CONES_20_AHEAD]),
+    case("removal", "vague", "motor_cars_union", RETIRED, "Dispense with the motor cars in the car park by the union.",
+         [delta(PARKED_CARS, -3, -2), only(*PARKED_CARS)], [remove(*PARKED)]),
+    case("removal", "vague", "clear_way_test_car", ROVER, "clear the way for the test car",
+         [delta("road_barrier", -2, -2), only("road_barrier")], [remove(category="road_barrier")], setup=[BARRIERS_AHEAD]),
+    case("removal", "vague", "send_guests_home", PLANNER, "the guests can go home now",
+         [delta("pedestrian", -5, -5), only("pedestrian")], [remove(category="pedestrian")], setup=[asked(GUESTS_JTEKT)]),
+    case("removal", "vague", "hazard_lane_one", AUDITOR, "Remove the hazard from the ego's lane.",
+         [delta("cement_rubble", -1, -1), only("cement_rubble")], [remove("cement_rubble_1")], setup=[RUBBLE_AHEAD]),
+    case("removal", "vague", "one_signal_enough", VISITOR, "less of traffic lights please, one is enough",
+         [delta("traffic_light", -1, -1), only("traffic_light")], [remove(LIGHT_EAST)]),
+    impossible("removal", "vague", "fountain_trip_hazard", GUARD, "get rid of the fountain, it's a trip hazard at night",
+               [remove("fountain")]),
+    case("removal", "vague", "lose_a_tree", GARDENER, "lose one of the trees, whichever",
+         [delta("tree", -1, -1), only("tree")], [remove(TREE_LOT_A)]),
+    case("removal", "vague", "scrap_that_car", SCOUT, "actually, scrap that car",
+         [delta("passenger_car", -1, -1), count("passenger_car", 2, 2), kept(CAR1, CAR2), only("passenger_car")],
+         [remove("passenger_car_3")],
+         setup=[asked(RED_CAR_LOT_A)]),
+    # erroneous
+    case("removal", "erroneous", "hydrant_north_typos", GUARD, "delet the hydrent on the north side",
+         [gone(HYDRANT), only("fire_hydrant")], [remove(HYDRANT)]),
+    case("removal", "erroneous", "tree_bus_stop_typos", GARDENER, "remove teh tree by the bus stp",
+         [gone(TREE_STOP), kept(TREE_FOUNTAIN, TREE_QUAD, TREE_LOT_A), only("tree")], [remove(TREE_STOP)]),
+    case("removal", "erroneous", "all_robots_typos", ROVER, "remov all the robots",
+         [delta(ROBOT, -2, -2), only(ROBOT)], [remove(category=ROBOT)], setup=[asked(ROVERS_LOT_A)]),
+    case("removal", "erroneous", "light_one_typos", AUDITOR, "remvoe traffic light 1",
+         [gone(LIGHT_WEST), kept(LIGHT_EAST), only("traffic_light")], [remove(LIGHT_WEST)]),
+    case("removal", "erroneous", "lamp_nearest_fountain_typos", SCOUT, "take out the lampost nearest the fountian",
+         [gone("street_light_11"), delta("street_light", -1, -1), only("street_light")], [remove("street_light_11")]),
+    case("removal", "erroneous", "west_sedan_typos", RETIRED, "remove the sedan at the wesst end of the row in lot B",
+         [gone(CAR1), kept(CAR2, SUV), only("passenger_car")], [remove(CAR1)]),
+    case("removal", "erroneous", "bench_and_bin_typos", PLANNER, "remov the bench at the bus stop and the bin to",
+         [gone(BENCH, BIN), only("bench", "trash_bin")], [remove(BENCH), remove(BIN)]),
+    case("removal", "erroneous", "suv_and_car_two_typos", VISITOR, "please remove the suv and the car numero two",
+         [gone(SUV, CAR2), kept(CAR1), only(*PARKED_CARS)], [remove(SUV, CAR2)]),
+    impossible("removal", "erroneous", "campus_drive_typos", ROVER, "delet campus drive, we dont use it",
+               [remove(NORTH, SOUTH)]),
+    case("removal", "erroneous", "that_van_typos", GUARD, "lose tha van from the dropoff",
+         [delta("truck", -1, -1), only("truck")], [remove("truck_1")], setup=[VAN_JTEKT]),
+    case("removal", "erroneous", "trees_but_fountain_typos", GARDENER, "remove al the trees exept the one by the fountian",
+         [gone(TREE_STOP, TREE_QUAD, TREE_LOT_A), kept(TREE_FOUNTAIN), only("tree")],
+         [remove(TREE_STOP, TREE_QUAD, TREE_LOT_A)]),
+]
+
+# --- Positioning: an existing thing put at a named place -------------------------------------------------
+POSITIONING_CASES: list[Json] = [
+    # direct
+    case("positioning", "direct", "suv_jtekt_dropoff", SCOUT, "Put suv_1 in the JTEKT drop-off bay.",
+         [near("JTEKT building entrance", 12, asset=SUV), moved(SUV, 20), only(assets=[SUV])],
+         [place(SUV, loc("at", "JTEKT building entrance"))]),
+    case("positioning", "direct", "quad_tree_union", GARDENER, "Move tree_3 next to the Student Union entrance.",
+         [near("Student Union entrance", 8, asset=TREE_QUAD), only(assets=[TREE_QUAD])],
+         [place(TREE_QUAD, loc("next_to", "Student Union entrance"))]),
+    case("positioning", "direct", "car1_northbound_crossing", ROVER,
+         "Place passenger_car_1 in the northbound lane of Campus Drive, level with the north crosswalk.",
+         [in_lane(NORTH, asset=CAR1), near("north crosswalk", 12, asset=CAR1), only(assets=[CAR1])],
+         [place(CAR1, loc("in_lane", "north crosswalk", lane=NORTH))]),
+    case("positioning", "direct", "stop_sign_bus_stop", AUDITOR, "Relocate the stop sign to the south footway beside the bus stop.",
+         [near("bus stop", 8, asset=STOP), on(["sidewalk"], asset=STOP), only(assets=[STOP])],
+         [place(STOP, loc("on_sidewalk", "bus stop"))]),
+    case("positioning", "direct", "bench_jtekt", PLANNER, "Put the bench at the JTEKT building entrance.",
+         [near("JTEKT building entrance", 8, asset=BENCH), only(assets=[BENCH])],
+         [place(BENCH, loc("at", "JTEKT building entrance"))]),
+    case("positioning", "direct", "ego_westbound_east_gate", RETIRED, "Place the ego vehicle in the westbound lane by the east gate.",
+         [in_lane(WEST, asset=EGO), near("east gate", 15, asset=EGO), only(assets=[EGO])],
+         [place(EGO, loc("in_lane", "east gate", lane=WEST))]),
+    case("positioning", "direct", "bin_engineering", VISITOR, "Please, the trash bin, put it in front of the entrance of Engineering Hall.",
+         [near("Engineering Hall entrance", 8, asset=BIN), only(assets=[BIN])],
+         [place(BIN, loc("in_front_of", "Engineering Hall entrance"))]),
+    case("positioning", "direct", "car2_lot_a_entrance", GUARD, "Put passenger_car_2 at the lot A entrance.",
+         [near("parking lot A entrance", 8, asset=CAR2), only(assets=[CAR2])],
+         [place(CAR2, loc("at", "parking lot A entrance"))]),
+    impossible("positioning", "direct", "suv_off_north_edge", GUARD, "Move the SUV to x 0, y 120.", [place(SUV, xy(0, 120))]),
+    case("positioning", "direct", "robot_to_jtekt", ROVER, "Put it at the JTEKT drop-off.",
+         [near("JTEKT building entrance", 12, ROBOT), only(ROBOT)],
+         [place("ackermann_robot_1", loc("at", "JTEKT building entrance"))], setup=[asked(ROVER_LOT_B)]),
+    case("positioning", "direct", "hydrant_library_bin_engineering", SCOUT,
+         "Put the hydrant by the Library entrance and the bin by the Engineering Hall entrance.",
+         [near("Library entrance", 12, asset=HYDRANT), near("Engineering Hall entrance", 8, asset=BIN),
+          only(assets=[HYDRANT, BIN])],
+         [place(HYDRANT, loc("on_sidewalk", "Library entrance")), place(BIN, loc("in_front_of", "Engineering Hall entrance"))]),
+    # indirect
+    case("positioning", "indirect", "shade_tree_to_fountain", GARDENER,
+         "The tree that shades the bus stop would look better over by the fountain.",
+         [near("fountain", 10, asset=TREE_STOP), only(assets=[TREE_STOP])], [place(TREE_STOP, loc("next_to", "fountain"))]),
+    case("positioning", "indirect", "four_by_four_blocker", ROVER,
+         "Stage the four-by-four 15 metres ahead of the test car in its lane as a blocker.",
+         [in_lane(EAST, asset=SUV), near(None, 4, asset=SUV, point=(-45.0, -1.75)), only(assets=[SUV])],
+         [place(SUV, ahead_of(EGO, 15))]),
+    case("positioning", "indirect", "hydrant_sight_lines", AUDITOR,
+         "The hydrant obstructs sight lines at the junction; relocate it to the footway outside the Library.",
+         [near("Library entrance", 12, asset=HYDRANT), moved(HYDRANT, 20), only(assets=[HYDRANT])],
+         [place(HYDRANT, loc("on_sidewalk", "Library entrance"))]),
+    case("positioning", "indirect", "vip_car_jtekt_doors", PLANNER,
+         "The VIP car, the one nearest the union, should wait at the JTEKT doors for the dean.",
+         [near("JTEKT building entrance", 12, asset=CAR2), only(assets=[CAR2])],
+         [place(CAR2, loc("at", "JTEKT building entrance"))]),
+    case("positioning", "indirect", "background_car_westbound", SCOUT,
+         "Take the sedan on the west end of the row out of lot B and put it in the westbound lane by the bus stop, as a background car.",
+         [in_lane(WEST, asset=CAR1), near("bus stop", 12, asset=CAR1), only(assets=[CAR1])],
+         [place(CAR1, loc("in_lane", "bus stop", lane=WEST))]),
+    case("positioning", "indirect", "receptacle_union", RETIRED,
+         "That receptacle for rubbish would be better placed beside the Student Union doors.",
+         [near("Student Union entrance", 6, asset=BIN), only(assets=[BIN])], [place(BIN, loc("next_to", "Student Union entrance"))]),
+    case("positioning", "indirect", "seat_near_quad_tree", VISITOR,
+         "The seat of the bus stop, I want it near to the tree of the quad.",
+         [near(TREE_QUAD, 5, asset=BENCH), only(assets=[BENCH])], [place(BENCH, loc("next_to", TREE_QUAD))]),
+    case("positioning", "indirect", "suv_library_dropoff", GUARD,
+         "Put the four-by-four in the drop-off in front of the Library doors, like it's waiting for someone.",
+         [near("Library entrance", 12, asset=SUV), only(assets=[SUV])], [place(SUV, loc("at", "Library entrance"))]),
+    impossible("positioning", "indirect", "bench_inside_engineering", AUDITOR,
+               "Relocate the bench to x = -40, y = 28, which lies within the Engineering Hall footprint.",
+               [place(BENCH, xy(-40, 28))]),
+    case("positioning", "indirect", "new_tree_by_bench", GARDENER,
+         "Actually, that new tree belongs next to the bench at the bus stop.",
+         [near(BENCH, 5, asset="tree_5"), only("tree")], [place("tree_5", loc("next_to", BENCH))],
+         setup=[asked(TREE_LOT_A_GATE)]),
+    case("positioning", "indirect", "bench_where_guests_park", PLANNER,
+         "The guests will park in the west car park, so the bench should be by its entrance.",
+         [near("parking lot A entrance", 8, asset=BENCH), only(assets=[BENCH])],
+         [place(BENCH, loc("next_to", "parking lot A entrance"))]),
+    # vague
+    case("positioning", "vague", "suv_out_of_shot", SCOUT, "get the SUV out of the shot, somewhere in the other car park",
+         [near("parking lot A", 1, asset=SUV), only(assets=[SUV])], [place(SUV, loc("at", "parking lot A"))]),
+    case("positioning", "vague", "hydrant_far_east", GARDENER,
+         "Put the hydrant somewhere it won't spoil the planting, out on the pavement by the east gate.",
+         [near("east gate", 15, asset=HYDRANT), on(["sidewalk"], asset=HYDRANT), only(assets=[HYDRANT])],
+         [place(HYDRANT, loc("on_sidewalk", "east gate"))]),
+    case("positioning", "vague", "send_it_library", ROVER, "send it over near the Library",
+         [near("Library entrance", 15, ROBOT), only(ROBOT)], [place("ackermann_robot_1", loc("at", "Library entrance"))],
+         setup=[asked(ROBOT_LOT_A_ONE)]),
+    case("positioning", "vague", "bin_nearer_union", PLANNER, "the bin should be nearer the union building",
+         [near("Student Union entrance", 12, asset=BIN), only(assets=[BIN])], [place(BIN, loc("at", "Student Union entrance"))]),
+    case("positioning", "vague", "suv_on_campus_drive", RETIRED, "Put the SUV back on the road somewhere, on Campus Drive.",
+         [moved(SUV, 5), only(assets=[SUV])], [place(SUV, loc("in_lane", "main intersection", lane=NORTH))],
+         alternatives=[[in_lane(NORTH, asset=SUV)], [in_lane(SOUTH, asset=SUV)]]),
+    case("positioning", "vague", "ego_closer_junction", AUDITOR, "The ego should start closer to the junction.",
+         [near("main intersection", 35, asset=EGO), in_lane(None, asset=EGO), only(assets=[EGO])],
+         [place(EGO, ahead_of(EGO, 30))]),
+    case("positioning", "vague", "bench_nicer_fountain", VISITOR, "the bench, put it near to the fountain, it is more nice",
+         [near("fountain", 10, asset=BENCH), only(assets=[BENCH])], [place(BENCH, loc("next_to", "fountain"))]),
+    case("positioning", "vague", "stick_bin_jtekt", GUARD, "stick the bin round by the JTEKT doors",
+         [near("JTEKT building entrance", 10, asset=BIN), only(assets=[BIN])],
+         [place(BIN, loc("at", "JTEKT building entrance"))]),
+    impossible("positioning", "vague", "missing_truck", SCOUT, "put the truck over in lot B, out of the way",
+               [place("truck_1", loc("at", "parking lot B"))]),
+    case("positioning", "vague", "her_to_jtekt", PLANNER, "she should be by the JTEKT doors instead",
+         [near("JTEKT building entrance", 10, "pedestrian"), moved("pedestrian_1", 10), only("pedestrian")],
+         [place("pedestrian_1", loc("on_sidewalk", "JTEKT building entrance"))], setup=[WALKER_STOP]),
+    case("positioning", "vague", "a_tree_nearer_library", GARDENER, "move one of the trees nearer the Library",
+         [only("tree")], [place(TREE_QUAD, loc("next_to", "Library entrance"))],
+         alternatives=[[near("Library entrance", 12, asset=t), moved(t, 5)] for t in TREES]),
+    # erroneous
+    case("positioning", "erroneous", "suv_jtekt_typos", GUARD, "move the suv to the jtekt dropof",
+         [near("JTEKT building entrance", 12, asset=SUV), only(assets=[SUV])],
+         [place(SUV, loc("at", "JTEKT building entrance"))]),
+    case("positioning", "erroneous", "lot_a_tree_fountain_typos", GARDENER, "move the tre by the parkng lot A to the fountian",
+         [near("fountain", 10, asset=TREE_LOT_A), only(assets=[TREE_LOT_A])], [place(TREE_LOT_A, loc("next_to", "fountain"))]),
+    case("positioning", "erroneous", "robot_union_typos", ROVER, "plase the robto at the union entrnce",
+         [near("Student Union entrance", 10, ROBOT), only(ROBOT)],
+         [place("ackermann_robot_1", loc("at", "Student Union entrance"))], setup=[ROVER_LOT_B]),
+    case("positioning", "erroneous", "bin_north_crossing_typos", AUDITOR, "relocat the bin to the nroth crosswalk",
+         [near("north crosswalk", 8, asset=BIN), only(assets=[BIN])], [place(BIN, loc("on_sidewalk", "north crosswalk"))]),
+    case("positioning", "erroneous", "bench_lot_b_gate_typos", PLANNER, "put the benh at the lot b entrence",
+         [near("parking lot B entrance", 8, asset=BENCH), only(assets=[BENCH])],
+         [place(BENCH, loc("next_to", "parking lot B entrance"))]),
+    case("positioning", "erroneous", "hydrant_engineering_typos", RETIRED, "place the hydrnat by the enginering hall door",
+         [near("Engineering Hall entrance", 12, asset=HYDRANT), only(assets=[HYDRANT])],
+         [place(HYDRANT, loc("on_sidewalk", "Engineering Hall entrance"))]),
+    case("positioning", "erroneous", "car1_northbound_junction_typos", VISITOR,
+         "put the car 1 in the lane northbound near of the junction",
+         [in_lane(NORTH, asset=CAR1), near("main intersection", 15, asset=CAR1), only(assets=[CAR1])],
+         [place(CAR1, loc("in_lane", "main intersection", lane=NORTH))]),
+    case("positioning", "erroneous", "suv_30_ahead_typos", SCOUT, "put the suv 30m ahed of the ego in the same lane",
+         [in_lane(EAST, asset=SUV), near(None, 4, asset=SUV, point=(-30.0, -1.75)), only(assets=[SUV])],
+         [place(SUV, ahead_of(EGO, 30))]),
+    impossible("positioning", "erroneous", "lot_d_typos", GUARD, "teleprot the suv to parking lot D",
+               [place(SUV, loc("at", "parking lot D"))]),
+    case("positioning", "erroneous", "bench_under_tree_typos", GARDENER, "put the bench under the tree by the libary",
+         [near(TREE_STOP, 4, asset=BENCH), moved(BENCH, 1), only(assets=[BENCH])], [place(BENCH, loc("next_to", TREE_STOP))]),
+    case("positioning", "erroneous", "suv_lot_a_car1_lot_b_gate_typos", ROVER,
+         "put the suv in lot a and car 1 at the lot b entrnce",
+         [near("parking lot A", 1, asset=SUV), near("parking lot B entrance", 8, asset=CAR1), only(assets=[SUV, CAR1])],
+         [place(SUV, loc("at", "parking lot A")), place(CAR1, loc("at", "parking lot B entrance"))]),
+]
+
+# --- Moving: shifts, turns and behaviours (speeds, braking, following, turning, crossing, going places) ----
+STOPS_AT_WEST_CROSSING = halts(EGO, (-13.0, -1.75), "west crosswalk", 8.0)
+LEAD_STOPS = event("passenger_car_3", "stop", {"kind": "distance", "actor": EGO, "other": "passenger_car_3", "metres": 20},
+                   rate=7.0)
+
+MOVING_CASES: list[Json] = [
+    # direct
+    case("moving", "direct", "ego_ten_forward", ROVER, "Move the ego 10 metres forward.",
+         [moved(EGO, 9.5, 10.5, "forward"), only(assets=[EGO])], [move(EGO, forward=10)]),
+    case("moving", "direct", "car1_turn_180", GUARD, "Turn passenger_car_1 around 180 degrees.",
+         [moved(CAR1, 0, 0.5, turn_min=170), only(assets=[CAR1])], [move(CAR1, turn_deg=180)]),
+    case("moving", "direct", "suv_east_8", SCOUT, "Make the SUV drive east along Main Street at 8 m/s.",
+         [does("drive_lane", asset=SUV, lane=EAST, speed_min=7.5, speed_max=8.5), only(assets=[SUV])],
+         [behave(SUV, "drive_lane", lane=EAST, speed=8.0)]),
+    case("moving", "direct", "ego_brake_at_3s", AUDITOR, "The ego shall brake to a stop three seconds after the start.",
+         [event_played(EGO, "stop", 5.0), only()], [manoeuvre(EGO, "stop", at_time=3.0)]),
+    case("moving", "direct", "car2_to_lot_b_exit", PLANNER, "Have passenger_car_2 drive to the lot B entrance.",
+         [does("follow_path", asset=CAR2), reaches(CAR2, "parking lot B entrance", 25.0, within=4.0), only(assets=[CAR2])],
+         [behave(CAR2, "follow_path", to="parking lot B entrance")]),
+    case("moving", "direct", "ego_15_ms", RETIRED, "Set the ego's speed to 15 metres per second.", [only(assets=[EGO])],
+         [behave(EGO, "drive_lane", speed=15.0, lane=EAST)], alternatives=ego_speed(14.5, 15.5)),
+    case("moving", "direct", "ego_right_junction", VISITOR, "Please make turn the test car to the right at the junction.",
+         [event_played(EGO, "junction_turn", 2.0), only()], [manoeuvre(EGO, "junction_turn", turn="right")]),
+    case("moving", "direct", "bench_two_east", GARDENER, "Move the bench 2 metres to the east.",
+         [moved(BENCH, 1.5, 2.5), only(assets=[BENCH])], [move(BENCH, east=2)]),
+    impossible("moving", "direct", "ego_180_kmh", AUDITOR, "Set the ego speed to 180 km/h.",
+               [behave(EGO, "drive_lane", speed=50.0, lane=EAST)]),
+    case("moving", "direct", "ego_forward_then_4", ROVER, "Move the ego 5 m forward and set it driving at 4 m/s.",
+         [moved(EGO, 4.5, 5.5, "forward"), only(assets=[EGO])],
+         [move(EGO, forward=5), behave(EGO, "drive_lane", speed=4.0, lane=EAST)],
+         alternatives=ego_speed(3.5, 4.5)),
+    case("moving", "direct", "her_cross_zebra", SCOUT, "Have her cross at the zebra crossing.", [only("pedestrian")],
+         [behave("pedestrian_1", "cross_road")], alternatives=crosses(EAST), setup=[asked(WALKER_WEST_SOUTH)]),
+    # indirect
+    case("moving", "indirect", "lead_emergency_stop", AUDITOR,
+         "When the ego closes to 20 metres of the lead vehicle, the lead vehicle shall perform an emergency stop.",
+         [event_played("passenger_car_3", "stop", 20.0), only()], [LEAD_STOPS], setup=[LEAD_CAR]),
+    case("moving", "indirect", "walking_pace", ROVER, "Bring the test car down to walking pace, about 5 km/h.",
+         [only(assets=[EGO])], [behave(EGO, "drive_lane", speed=1.4, lane=EAST)], alternatives=ego_speed(1.0, 1.8)),
+    case("moving", "indirect", "lap_of_car_park", GUARD, "Send the four-by-four on laps of the student car park.",
+         [does("circle", asset=SUV, centre_near="parking lot B"), only(assets=[SUV])], [behave(SUV, "circle")]),
+    case("moving", "indirect", "hero_car_left", SCOUT, "The hero car should take the left at the crossroads for this take.",
+         [event_played(EGO, "junction_turn", 2.0), only()], [manoeuvre(EGO, "junction_turn", turn="left")]),
+    case("moving", "indirect", "collect_dean", PLANNER,
+         "Have the sedan nearest the union drive out to the lot B entrance to pick up the dean.",
+         [does("follow_path", asset=CAR2), only(assets=[CAR2])], [behave(CAR2, "follow_path", to="parking lot B entrance")]),
+    case("moving", "indirect", "pass_obstruction", RETIRED,
+         "Have the motor car we're testing pull out into the other lane to pass the obstruction.",
+         [event_played(EGO, "lane_change", 3.0), only()], [manoeuvre(EGO, "lane_change", side="left", at_time=1.0)],
+         setup=[RUBBLE_AHEAD]),
+    case("moving", "indirect", "our_light_stays_red", VISITOR,
+         "The light of our side must stay red, so the test car waits before the crossing.",
+         [STOPS_AT_WEST_CROSSING, only()], [hold(LIGHT_WEST, "red")]),
+    case("moving", "indirect", "back_off_lamp", GARDENER, "Back our car up a few yards, it's right under that lamp.",
+         [only(assets=[EGO])], [move(EGO, forward=-3)], alternatives=backs_up(1.0, 10.0)),
+    impossible("moving", "indirect", "drive_to_security_office", GUARD,
+               "Have the test car drive round to the security office.", [behave(EGO, "follow_path", to="security office")]),
+    case("moving", "indirect", "proceed_westbound_10", AUDITOR, "It shall proceed westbound at 10 m/s.",
+         [does("drive_lane", "passenger_car", lane=WEST, speed_min=9.5, speed_max=10.5), only("passenger_car")],
+         [behave("passenger_car_3", "drive_lane", lane=WEST, speed=10.0)], setup=[asked(CAR_WEST_EAST_GATE)]),
+    case("moving", "indirect", "rover_out_eastbound", ROVER, "Get it rolling east along Main Street.",
+         [does("drive_lane", ROBOT, lane=EAST), only(ROBOT)], [behave("ackermann_robot_1", "drive_lane", lane=EAST)],
+         setup=[asked(ROBOT_LOT_A_ONE)]),
+    # vague
+    case("moving", "vague", "hero_car_slow", SCOUT, "slow the hero car right down", [only(assets=[EGO])],
+         [behave(EGO, "drive_lane", speed=2.0, lane=EAST)], alternatives=ego_speed(0.3, 3.5)),
+    case("moving", "vague", "west_sedan_moving", GUARD, "get the sedan at the west end of the row moving",
+         [does(["drive_lane", "circle", "follow_path"], asset=CAR1), only(assets=[CAR1])],
+         [behave(CAR1, "drive_lane", lane=NORTH)]),
+    case("moving", "vague", "nudge_suv", RETIRED, "Nudge the SUV forward a touch.",
+         [moved(SUV, 0.2, 3.0, "forward"), only(assets=[SUV])], [move(SUV, forward=1)]),
+    case("moving", "vague", "lot_b_movement", PLANNER, "get some movement out of the cars in lot B",
+         [does(["drive_lane", "circle", "follow_path"], PARKED_CARS), only(assets=PARKED)],
+         [behave(CAR1, "drive_lane", lane=NORTH)]),
+    case("moving", "vague", "more_quick", VISITOR, "our car is too slow, more quick please", [only(assets=[EGO])],
+         [behave(EGO, "drive_lane", speed=9.0, lane=EAST)], alternatives=ego_speed(6.0, 40.0)),
+    case("moving", "vague", "change_lanes_sometime", ROVER, "have the test car change lanes at some point",
+         [event_played(EGO, "lane_change", 15.0), only()], [manoeuvre(EGO, "lane_change", side="left", at_time=2.0)]),
+    case("moving", "vague", "some_braking", AUDITOR, "Introduce some braking by the ego.", [only()],
+         [manoeuvre(EGO, "stop", at_time=2.0)],
+         alternatives=[[event_played(EGO, "stop", 10.0)], [event_played(EGO, "change_speed", 10.0)]]),
+    case("moving", "vague", "bench_face_road", GARDENER, "turn the bench so it faces the road",
+         [moved(BENCH, 0, 0.5, turn_min=60, turn_max=120), only(assets=[BENCH])], [move(BENCH, turn_deg=-90)]),
+    impossible("moving", "vague", "hydrant_drive_round", SCOUT, "make the fire hydrant drive around for a gag",
+               [behave(HYDRANT, "drive_lane", lane=WEST)]),
+    case("moving", "vague", "walk_them_over", GUARD, "walk them over to the other side", [only("pedestrian")],
+         [behave("pedestrian_1", "cross_road")], alternatives=crosses(), setup=[WALKER_NORTH]),
+    case("moving", "vague", "bus_along_a_bit", PLANNER, "move the bus along a bit",
+         [moved("bus_1", 1, 20, "forward"), only("bus")], [move("bus_1", forward=5)], setup=[asked(BUS_AT_STOP)]),
+    # erroneous
+    case("moving", "erroneous", "ego_six_forward_typos", ROVER, "mvoe the ego 6 metrs forwrd",
+         [moved(EGO, 5.5, 6.5, "forward"), only(assets=[EGO])], [move(EGO, forward=6)]),
+    case("moving", "erroneous", "suv_turn_90_typos", GUARD, "trun the suv 90 degres",
+         [moved(SUV, 0, 0.5, turn_min=80, turn_max=100), only(assets=[SUV])], [move(SUV, turn_deg=90)]),
+    case("moving", "erroneous", "hero_left_typos", SCOUT, "hero car turn lef at the crosroads",
+         [event_played(EGO, "junction_turn", 2.0), only()], [manoeuvre(EGO, "junction_turn", turn="left")]),
+    case("moving", "erroneous", "ego_36_kph_typos", AUDITOR, "ego speed 36 kph pls", [only(assets=[EGO])],
+         [behave(EGO, "drive_lane", speed=10.0, lane=EAST)], alternatives=ego_speed(9.5, 10.5)),
+    case("moving", "erroneous", "car2_west_6_typos", PLANNER, "make car 2 drive west on main stret at 6 m/s",
+         [does("drive_lane", asset=CAR2, lane=WEST, speed_min=5.5, speed_max=6.5), only(assets=[CAR2])],
+         [behave(CAR2, "drive_lane", lane=WEST, speed=6.0)]),
+    case("moving", "erroneous", "reverse_four_typos", RETIRED, "reverse the test car 4 meters", [only(assets=[EGO])],
+         [move(EGO, forward=-4)], alternatives=backs_up(3.5, 4.5)),
+    case("moving", "erroneous", "car1_circles_typos", VISITOR, "the car 1 must to do circles in the parking B",
+         [does("circle", asset=CAR1, centre_near="parking lot B"), only(assets=[CAR1])], [behave(CAR1, "circle")]),
+    case("moving", "erroneous", "bin_three_right_typos", GARDENER, "move the bin 3 meter to the rigth",
+         [moved(BIN, 2.5, 3.5, "right"), only(assets=[BIN])], [move(BIN, left=-3)]),
+    case("moving", "erroneous", "robot_to_jtekt_typos", ROVER, "send the robto to the jtekt entrnce",
+         [does("follow_path", ROBOT), only(ROBOT)], [behave("ackermann_robot_1", "follow_path", to="JTEKT building entrance")],
+         setup=[ROVER_LOT_B]),
+    case("moving", "erroneous", "walk_to_union_typos", GUARD, "mak him walk to the union entrnce",
+         [does("follow_path", "pedestrian"), only("pedestrian")],
+         [behave("pedestrian_1", "follow_path", to="Student Union entrance")], setup=[asked(WALKER_LIBRARY)]),
+    case("moving", "erroneous", "speed_and_lane_change_typos", AUDITOR,
+         "speed the ego up to 12 m/s and chnage lane to the left after 2 seconds",
+         [event_played(EGO, "lane_change", 4.0), only(assets=[EGO])],
+         [behave(EGO, "drive_lane", speed=12.0, lane=EAST), manoeuvre(EGO, "lane_change", side="left", at_time=2.0)],
+         alternatives=ego_speed(11.5, 12.5)),
+]
+
+# --- Arrangement: several new things laid out as a line, a ring, a row or a cluster -----------------------
+ARRANGEMENT_CASES: list[Json] = [
+    # direct
+    case("arrangement", "direct", "five_cones_east_gate", AUDITOR, "Place five cones in a line in the westbound lane by the east gate.",
+         [delta("traffic_cone", 5, 5), layout("line", "traffic_cone", 5), near("east gate", 20, "traffic_cone", every=True),
+          only("traffic_cone")],
+         [arrange("traffic_cone", "line", loc("in_lane", "east gate", lane=WEST), count=5)]),
+    case("arrangement", "direct", "six_trees_row_fountain", GARDENER, "Plant six trees in a row by the fountain.",
+         [delta("tree", 6, 6), layout("line", "tree", 6), near("fountain", 30, "tree", scope="added", every=True), only("tree")],
+         [arrange("tree", "line", loc("next_to", "fountain"), count=6)]),
+    case("arrangement", "direct", "four_benches_jtekt", PLANNER, "Put four benches in a row in front of the JTEKT entrance.",
+         [delta("bench", 4, 4), layout("line", "bench", 4), near("JTEKT building entrance", 15, "bench", every=True),
+          only("bench")],
+         [arrange("bench", "line", loc("in_front_of", "JTEKT building entrance"), count=4)]),
+    case("arrangement", "direct", "four_robots_side_by_side", ROVER, "Park four delivery robots side by side in lot A.",
+         [delta(ROBOT, 4, 4), layout("line", ROBOT, 4), near("parking lot A", 1, ROBOT, every=True), only(ROBOT)],
+         [arrange(ROBOT, "parking_row", loc("at", "parking lot A"), count=4)]),
+    case("arrangement", "direct", "six_bollards_hydrant", GUARD, "Put a ring of six bollards around the fire hydrant.",
+         [delta("bollard", 6, 6), layout("ring", "bollard", 6, around=HYDRANT), only("bollard")],
+         [arrange("bollard", "ring", loc("at", HYDRANT), count=6)]),
+    case("arrangement", "direct", "ten_walkers_engineering", SCOUT,
+         "Arrange ten pedestrians in a line along the pavement by the Engineering Hall entrance.",
+         [delta("pedestrian", 10, 10), layout("line", "pedestrian", 10),
+          near("Engineering Hall entrance", 25, "pedestrian", every=True), only("pedestrian")],
+         [arrange("pedestrian", "line", loc("on_sidewalk", "Engineering Hall entrance"), count=10)]),
+    case("arrangement", "direct", "grid_nine_cones_lot_a", RETIRED, "Lay out a grid of nine cones in lot A.",
+         [delta("traffic_cone", 9, 9), layout("cluster", "traffic_cone", 9, tolerance=8.0),
+          near("parking lot A", 1, "traffic_cone", every=True), only("traffic_cone")],
+         [arrange("traffic_cone", "grid", loc("at", "parking lot A"), count=9)]),
+    case("arrangement", "direct", "five_cars_row_lot_a", VISITOR, "Please put five cars parked in a row in the parking A.",
+         [delta("passenger_car", 5, 5), layout("line", "passenger_car", 5),
+          near("parking lot A", 1, "passenger_car", scope="added", every=True), only("passenger_car")],
+         [arrange("passenger_car", "parking_row", loc("at", "parking lot A"), count=5)]),
+    impossible("arrangement", "direct", "cones_150_ring", AUDITOR, "Place 150 cones in a ring around the crossroads.",
+               [arrange("traffic_cone", "ring", loc("at", "main intersection"), count=150)]),
+    case("arrangement", "direct", "buses_lot_b_lights_on", PLANNER,
+         "Put a row of three buses in lot B and switch the street lights on.",
+         [delta("bus", 3, 3), layout("line", "bus", 3), near("parking lot B", 1, "bus", every=True), env(street_lights="on"),
+          only("bus", env=True)],
+         [arrange("bus", "parking_row", loc("at", "parking lot B"), count=3), lighting(street_lights="on")]),
+    case("arrangement", "direct", "bollards_round_new_bench", GARDENER, "Put a ring of four bollards round it to protect the lawn.",
+         [delta("bollard", 4, 4), layout("ring", "bollard", 4, around="bench_2"), only("bollard")],
+         [arrange("bollard", "ring", loc("at", "bench_2"), count=4)], setup=[asked(BENCH_FOUNTAIN)]),
+    # indirect
+    case("arrangement", "indirect", "channelise_eastbound", AUDITOR,
+         "A lane closure is required: channelise the eastbound lane with six cones along its edge, starting 15 metres ahead of the ego.",
+         [delta("traffic_cone", 6, 6), layout("line", "traffic_cone", 6), in_lane(EAST, "traffic_cone"),
+          relative("in_front_of", EGO, "traffic_cone", max_distance=60, tolerance_deg=15, every=True), only("traffic_cone")],
+         [arrange("traffic_cone", "lane_edge", ahead_of(EGO, 15, lane=EAST), count=6)]),
+    case("arrangement", "indirect", "shuttle_queue", PLANNER,
+         "The guests will queue for the shuttle: have six of them standing in a line along the pavement at the bus stop.",
+         [delta("pedestrian", 6, 6), layout("line", "pedestrian", 6), near("bus stop", 20, "pedestrian", every=True),
+          only("pedestrian")],
+         [arrange("pedestrian", "line", loc("on_sidewalk", "bus stop"), count=6)]),
+    case("arrangement", "indirect", "fleet_nose_to_tail", ROVER,
+         "Stage the fleet: five rovers nose to tail in the westbound lane, starting by the lot A entrance.",
+         [delta(ROBOT, 5, 5), layout("line", ROBOT, 5), in_lane(WEST, ROBOT), only(ROBOT)],
+         [arrange(ROBOT, "lane_edge", loc("in_lane", "parking lot A entrance", lane=WEST, offset_m=0.0), count=5)]),
+    case("arrangement", "indirect", "posts_round_old_tree", GARDENER,
+         "Encircle the old tree by the west car park with posts, to keep the mowers off it.",
+         [delta("bollard", 3, None), layout("ring", "bollard", 3, around=TREE_LOT_A), only("bollard")],
+         [arrange("bollard", "ring", loc("at", TREE_LOT_A))]),
+    case("arrangement", "indirect", "box_in_junction", SCOUT,
+         "For the chase scene I want the junction boxed in: eight barriers in a ring round the middle of the crossroads.",
+         [delta("road_barrier", 8, 8), layout("ring", "road_barrier", 8, around="main intersection"), only("road_barrier")],
+         [arrange("road_barrier", "ring", loc("at", "main intersection"), count=8, radius=7.0)]),
+    case("arrangement", "indirect", "block_library_dropoff", GUARD,
+         "Block off the drop-off in front of the Library with a line of barriers.",
+         [delta("road_barrier", 2, None), layout("line", "road_barrier", 2), near("Library entrance", 12, "road_barrier", every=True),
+          only("road_barrier")],
+         [arrange("road_barrier", "line", loc("in_front_of", "Library entrance"), count=3)]),
+    case("arrangement", "indirect", "dozen_cones_circle_yards", RETIRED,
+         "Set out a dozen cones in a neat circle in the student car park, about five yards across.",
+         [delta("traffic_cone", 12, 12), layout("ring", "traffic_cone", 12, tolerance=1.5),
+          near("parking lot B", 1, "traffic_cone", every=True), only("traffic_cone")],
+         [arrange("traffic_cone", "ring", loc("at", "parking lot B"), count=12, radius=2.3)]),
+    case("arrangement", "indirect", "bike_parking_library", VISITOR,
+         "I need five bicycles put in a row in front of the library, like a parking of bikes.",
+         [delta("bicycle", 5, 5), layout("line", "bicycle", 5), near("Library entrance", 15, "bicycle", every=True),
+          only("bicycle")],
+         [arrange("bicycle", "line", loc("in_front_of", "Library entrance"), count=5)]),
+    impossible("arrangement", "indirect", "statue_ring", SCOUT, "Ring the statue on the quad with cones for the shot.",
+               [arrange("traffic_cone", "ring", loc("at", "statue"))]),
+    case("arrangement", "indirect", "barriers_behind_lorry", AUDITOR,
+         "Protect the stranded vehicle: a row of barriers across the lane behind it.",
+         [delta("road_barrier", 2, None), layout("line", "road_barrier", 2),
+          relative("behind", "truck_1", "road_barrier", max_distance=15, every=True), only("road_barrier")],
+         [arrange("road_barrier", "line", loc("behind", "truck_1"), count=2)], setup=[LORRY_AHEAD]),
+    case("arrangement", "indirect", "tree_ring_fountain_morning", GARDENER,
+         "Picture a ring of six trees around the fountain in the early morning light.",
+         [delta("tree", 6, 6), layout("ring", "tree", 6, around="fountain", tolerance=2.0),
+          env(time_from="05:30", time_to="09:30"), only("tree", env=True)],
+         [arrange("tree", "ring", loc("at", "fountain"), count=6, radius=11.0), clock("07:00")]),
+    # vague
+    case("arrangement", "vague", "people_circle_library", SCOUT, "a bunch of people in a circle by the Library for a scene",
+         [delta("pedestrian", 3, None), layout("ring", "pedestrian", 3), near("Library entrance", 15, "pedestrian", every=True),
+          only("pedestrian")],
+         [arrange("pedestrian", "ring", xy(-41.0, -10.5), count=6, radius=2.0)]),
+    case("arrangement", "vague", "close_lot_b_driveway", GUARD, "close off lot B's driveway somehow",
+         [delta(CORDON, 2, None), near("parking lot B entrance", 12, CORDON, every=True), only(*CORDON)],
+         [arrange("road_barrier", "line", loc("at", "parking lot B entrance"), count=3)],
+         alternatives=[[layout("line", CORDON, 2)], [layout("ring", CORDON, 3)]]),
+    case("arrangement", "vague", "few_shuttles_lot_b", PLANNER, "a few shuttles parked together in lot B",
+         [delta("bus", 2, 6), layout("line", "bus", 2), near("parking lot B", 1, "bus", every=True), only("bus")],
+         [arrange("bus", "parking_row", loc("at", "parking lot B"), count=3)]),
+    case("arrangement", "vague", "slalom_cones", ROVER, "some cones on Main Street for the rover to slalom through",
+         [delta("traffic_cone", 3, None), layout("line", "traffic_cone", 3), in_lane(None, "traffic_cone"), only("traffic_cone")],
+         [arrange("traffic_cone", "line", loc("in_lane", "bus stop", lane=EAST), count=5)]),
+    case("arrangement", "vague", "trees_row_engineering", GARDENER, "trees in a row somewhere near the Engineering Hall",
+         [delta("tree", 3, None), layout("line", "tree", 3), near("Engineering Hall", 30, "tree", scope="added", every=True),
+          only("tree")],
+         [arrange("tree", "line", loc("next_to", "Engineering Hall entrance"), count=4)]),
+    case("arrangement", "vague", "cordon_fountain", RETIRED, "Cordon off the fountain, please.",
+         [delta(CORDON, 4, None), layout("ring", CORDON, 4, around="fountain", tolerance=2.0), only(*CORDON)],
+         [arrange("bollard", "ring", loc("at", "fountain"), count=8)]),
+    case("arrangement", "vague", "work_zone_jtekt", AUDITOR, "Mark out a work zone near the JTEKT entrance.",
+         [delta(WORKS, 3, None), near("JTEKT building entrance", 20, WORKS, every=True), only(*WORKS)],
+         [arrange("traffic_cone", "line", loc("at", "JTEKT building entrance"), count=4),
+          add("construction_sign", where=loc("at", "JTEKT building entrance"))]),
+    case("arrangement", "vague", "bollards_round_stop_tree", VISITOR, "some bollards around the tree of the bus stop, please",
+         [delta("bollard", 3, None), layout("ring", "bollard", 3, around=TREE_STOP), only("bollard")],
+         [arrange("bollard", "ring", loc("at", TREE_STOP))]),
+    impossible("arrangement", "vague", "huge_ring_junction", GUARD,
+               "ring of cones with a radius of about 80 metres round the crossroads",
+               [arrange("traffic_cone", "ring", loc("at", "main intersection"), radius=80.0)]),
+    case("arrangement", "vague", "ring_it_with_something", SCOUT, "and ring it with something so nobody drives into it",
+         [delta(CORDON, 3, None), layout("ring", CORDON, 3, around="cement_rubble_1"), only(*CORDON)],
+         [arrange("traffic_cone", "ring", loc("at", "cement_rubble_1"))], setup=[asked(RUBBLE_EAST_GATE)]),
+    case("arrangement", "vague", "line_up_for_photo", PLANNER, "line up some people outside the union for the photo",
+         [delta("pedestrian", 3, None), layout("line", "pedestrian", 3),
+          near("Student Union entrance", 20, "pedestrian", every=True), only("pedestrian")],
+         [arrange("pedestrian", "line", loc("in_front_of", "Student Union entrance"), count=5)]),
+    # erroneous
+    case("arrangement", "erroneous", "three_robots_row_typos", ROVER, "3 robts in lot b, side by sid, parkd",
+         [delta(ROBOT, 3, 3), layout("line", ROBOT, 3), near("parking lot B", 1, ROBOT, every=True), only(ROBOT)],
+         [arrange(ROBOT, "parking_row", loc("at", "parking lot B"), count=3)]),
+    case("arrangement", "erroneous", "five_trees_library_typos", GARDENER, "plant 5 tres in a line by the libary",
+         [delta("tree", 5, 5), layout("line", "tree", 5), near("Library", 30, "tree", scope="added", every=True), only("tree")],
+         [arrange("tree", "line", loc("in_front_of", "Library entrance"), count=5)]),
+    case("arrangement", "erroneous", "northbound_edge_cones_typos", AUDITOR,
+         "cones along the edg of the northbund lane, 7, strating at the north crosswalk",
+         [delta("traffic_cone", 7, 7), layout("line", "traffic_cone", 7), in_lane(NORTH, "traffic_cone"), only("traffic_cone")],
+         [arrange("traffic_cone", "lane_edge", loc("in_lane", "north crosswalk", lane=NORTH), count=7)]),
+    case("arrangement", "erroneous", "bollards_round_bin_typos", GUARD, "ring of 5 bollrds round the bin",
+         [delta("bollard", 5, 5), layout("ring", "bollard", 5, around=BIN), only("bollard")],
+         [arrange("bollard", "ring", loc("at", BIN), count=5)]),
+    case("arrangement", "erroneous", "benches_union_typos", PLANNER, "put 4 benchs in a row infront of the union",
+         [delta("bench", 4, 4), layout("line", "bench", 4), near("Student Union entrance", 15, "bench", every=True),
+          only("bench")],
+         [arrange("bench", "line", loc("in_front_of", "Student Union entrance"), count=4)]),
+    case("arrangement", "erroneous", "people_line_north_crossing_typos", SCOUT, "line of 6 peopel by the north crosswak",
+         [delta("pedestrian", 6, 6), layout("line", "pedestrian", 6), near("north crosswalk", 15, "pedestrian", every=True),
+          only("pedestrian")],
+         [arrange("pedestrian", "line", loc("on_sidewalk", "north crosswalk"), count=6)]),
+    case("arrangement", "erroneous", "cone_circle_lot_b_typos", RETIRED, "circel of 8 cones in lot b",
+         [delta("traffic_cone", 8, 8), layout("ring", "traffic_cone", 8), near("parking lot B", 1, "traffic_cone", every=True),
+          only("traffic_cone")],
+         [arrange("traffic_cone", "ring", loc("at", "parking lot B"), count=8, radius=4.0)]),
+    case("arrangement", "erroneous", "motorbikes_row_lot_a_typos", VISITOR, "please 4 moto parked in row in the parking A",
+         [delta("motorcycle", 4, 4), layout("line", "motorcycle", 4), near("parking lot A", 1, "motorcycle", every=True),
+          only("motorcycle")],
+         [arrange("motorcycle", "parking_row", loc("at", "parking lot A"), count=4)]),
+    impossible("arrangement", "erroneous", "robots_25_row_typos", ROVER, "park 25 robts in a row in lot a",
+               [arrange(ROBOT, "parking_row", loc("at", "parking lot A"), count=25)]),
+    case("arrangement", "erroneous", "cones_round_that_car_typos", GUARD, "put cones round taht car",
+         [delta("traffic_cone", 3, None), layout("ring", "traffic_cone", 3, around="passenger_car_3"), only("traffic_cone")],
+         [arrange("traffic_cone", "ring", loc("at", "passenger_car_3"))], setup=[CAR_LOT_A]),
+    case("arrangement", "erroneous", "barriers_lot_a_fog_typos", AUDITOR, "3 barriers in a lin at the lot A entrnce and make it foggy",
+         [delta("road_barrier", 3, 3), layout("line", "road_barrier", 3),
+          near("parking lot A entrance", 12, "road_barrier", every=True), env(weather=["fog"]), only("road_barrier", env=True)],
+         [arrange("road_barrier", "line", loc("at", "parking lot A entrance"), count=3), weather("fog", 0.6)]),
+]
+
+# --- Appearance: clock, weather, lights and the looks of things -----------------------------------------
+APPEARANCE_CASES: list[Json] = [
+    # direct
+    case("appearance", "direct", "time_0200", GUARD, "Set the clock to 02:00 hours.",
+         [env(time_from="01:55", time_to="02:05"), only(env=True)], [clock("02:00")]),
+    case("appearance", "direct", "light_rain", SCOUT, "Give me light rain for this take.",
+         [env(weather=["rain"], intensity_min=0.05, intensity_max=0.45), only(env=True)], [weather("rain", 0.3)]),
+    case("appearance", "direct", "bench_brown_wood", GARDENER, "Make the bench brown wood.",
+         [looks("brown", asset=BENCH, material="wood"), only(assets=[BENCH])],
+         [paint([BENCH], colour="brown", material="wood")]),
+    case("appearance", "direct", "exposure_point_six", AUDITOR, "Set the exposure to 0.6.",
+         [env(exposure_min=0.55, exposure_max=0.65), only(env=True)], [lighting(exposure=0.6)]),
+    case("appearance", "direct", "car1_navy", PLANNER, "Paint passenger_car_1 navy blue.",
+         [looks("navy", asset=CAR1), only(assets=[CAR1])], [paint([CAR1], colour="navy")]),
+    case("appearance", "direct", "heavy_snow", RETIRED, "A heavy fall of snow, if you please.",
+         [env(weather=["snow"], intensity_min=0.7), only(env=True)], [weather("snow", 0.9)]),
+    case("appearance", "direct", "robot_orange", ROVER, "Paint the delivery robot orange.",
+         [looks("orange", ROBOT), only(ROBOT)], [paint(["ackermann_robot_1"], colour="orange")], setup=[ROVER_LOT_B]),
+    case("appearance", "direct", "time_1845", VISITOR, "Please put the time at 18:45.",
+         [env(time_from="18:40", time_to="18:50"), only(env=True)], [clock("18:45")]),
+    impossible("appearance", "direct", "time_2515", AUDITOR, "Set the scene clock to 25:15.", [clock("25:15")]),
+    case("appearance", "direct", "dawn_thin_fog", SCOUT, "Set the time to 06:15 and add a thin fog.",
+         [env(weather=["fog"], intensity_min=0.05, intensity_max=0.45, time_from="06:10", time_to="06:20"), only(env=True)],
+         [clock("06:15"), weather("fog", 0.3)]),
+    case("appearance", "direct", "lamps_on_2330", GUARD, "Turn the street lights on and set the time to 23:30.",
+         [env(street_lights="on", time_from="23:25", time_to="23:35"), only(env=True)],
+         [lighting(street_lights="on"), clock("23:30")]),
+    # indirect
+    case("appearance", "indirect", "golden_hour", SCOUT, "For the golden hour shot I want it half past six in the evening.",
+         [env(time_from="18:25", time_to="18:35"), only(env=True)], [clock("18:30")]),
+    case("appearance", "indirect", "deep_winter", GARDENER,
+         "Show me what the campus looks like under a blanket of snow in deep winter.",
+         [env(weather=["snow"], intensity_min=0.7), only(env=True)], [weather("snow", 0.9)]),
+    case("appearance", "indirect", "middle_of_shift", GUARD, "Make it the middle of my shift, about three in the morning.",
+         [env(time_from="02:50", time_to="03:10"), only(env=True)], [clock("03:00")]),
+    case("appearance", "indirect", "pea_souper", ROVER, "The bot's cameras need testing in a real pea-souper; fog as thick as it goes.",
+         [env(weather=["fog"], intensity_min=0.8), only(env=True)], [weather("fog", 1.0)]),
+    case("appearance", "indirect", "ceremony_1015", PLANNER,
+         "The ceremony starts at quarter past ten in the morning; set the clock for that.",
+         [env(time_from="10:10", time_to="10:20"), only(env=True)], [clock("10:15")]),
+    case("appearance", "indirect", "getting_on_for_dusk", RETIRED,
+         "I'd like to see the lamps when it's getting on for dusk, say eight o'clock in the evening.",
+         [env(time_from="19:55", time_to="20:05"), only(env=True)], [clock("20:00")]),
+    case("appearance", "indirect", "lights_off_at_ten", AUDITOR,
+         "To assess the lighting, switch the street lights off entirely at ten at night.",
+         [env(street_lights="off", time_from="21:55", time_to="22:05"), only(env=True)],
+         [clock("22:00"), lighting(street_lights="off")]),
+    case("appearance", "indirect", "sky_coloured_cars", VISITOR,
+         "I want the cars of the student parking all in the colour of the sky on a clear day.",
+         [looks(["blue", "cyan"], asset=CAR1), looks(["blue", "cyan"], asset=CAR2), looks(["blue", "cyan"], asset=SUV),
+          only(*PARKED_CARS)],
+         [paint(PARKED, colour="blue")]),
+    impossible("appearance", "indirect", "paint_library", SCOUT, "Give the library a fresh coat of white paint for the shot.",
+               [paint(["Library"], colour="white")]),
+    case("appearance", "indirect", "forecast_improved", PLANNER, "The forecast has improved: just a light shower now.",
+         [env(weather=["rain"], intensity_min=0.05, intensity_max=0.45), only(env=True)], [weather("rain", 0.3)],
+         setup=[RAIN_HEAVY]),
+    case("appearance", "indirect", "autumn_trees", GARDENER, "Give the trees their autumn colour, a warm orange.",
+         [looks("orange", "tree", scope="all", every=True), only("tree")], [paint(category="tree", colour="orange")]),
+    # vague
+    case("appearance", "vague", "moodier", SCOUT, "make it moodier", [only(env=True)], [weather("cloudy", 0.8)],
+         alternatives=[[env(weather=["cloudy", "rain", "fog", "snow"])], [env(night=True)], [env(exposure_max=0.9)],
+                       [env(time_from="18:00", time_to="21:30")]]),
+    case("appearance", "vague", "graveyard_shift", GUARD, "make it feel like the graveyard shift",
+         [env(night=True), only(env=True)], [clock("03:00")]),
+    case("appearance", "vague", "bit_of_weather", PLANNER, "a bit of weather for drama, nothing too heavy",
+         [env(weather=["cloudy", "rain", "fog", "snow"], intensity_max=0.65), only(env=True)], [weather("rain", 0.4)]),
+    case("appearance", "vague", "worst_case_sensors", ROVER, "give me the worst case for the sensors", [only(env=True)],
+         [weather("fog", 0.9)],
+         alternatives=[[env(weather=["rain", "fog", "snow"], intensity_min=0.6)], [env(night=True)]]),
+    case("appearance", "vague", "sensible_suv_colour", RETIRED, "Make the SUV a more sensible colour.",
+         [looks(SOBER, asset=SUV), only(assets=[SUV])], [paint([SUV], colour="grey")]),
+    case("appearance", "vague", "improve_visibility", AUDITOR, "Improve visibility.", [only(env=True)], [weather("clear")],
+         setup=[FOG_HEAVY], alternatives=[[env(weather=["fog"], intensity_max=0.5)], [env(weather=["clear", "cloudy"])]]),
+    case("appearance", "vague", "more_light_please", VISITOR, "more light please, it is too dark", [only(env=True)],
+         [clock("12:00")], setup=[NIGHT],
+         alternatives=[[env(night=False)], [env(exposure_min=1.1)], [env(street_lights="on")]]),
+    case("appearance", "vague", "fresh_spring_morning", GARDENER, "make it feel like a fresh spring morning",
+         [env(time_from="05:30", time_to="11:00"), only(env=True)], [clock("08:00")]),
+    impossible("appearance", "vague", "hurricane", GUARD, "give us a hurricane tonight", [weather("hurricane")]),
+    case("appearance", "vague", "ease_off", PLANNER, "ease off a bit", [only(env=True)], [weather("rain", 0.25)],
+         setup=[RAIN_PLAIN],
+         alternatives=[[env(weather=["rain"], intensity_max=0.45)], [env(weather=["clear", "cloudy"])]]),
+    case("appearance", "vague", "cars_pop", SCOUT, "the parked cars look boring, make them pop",
+         [looks(BRIGHT, PARKED_CARS, min_count=2), only(*PARKED_CARS)], [paint(PARKED, colour="red")]),
+    # erroneous
+    case("appearance", "erroneous", "time_0400_typos", GUARD, "chnage the clock to 0400",
+         [env(time_from="03:55", time_to="04:05"), only(env=True)], [clock("04:00")]),
+    case("appearance", "erroneous", "thick_fog_typos", SCOUT, "mkae it foggy, realy thick",
+         [env(weather=["fog"], intensity_min=0.7), only(env=True)], [weather("fog", 0.9)]),
+    case("appearance", "erroneous", "bench_green_typos", GARDENER, "paint the bench gren",
+         [looks("green", asset=BENCH), only(assets=[BENCH])], [paint([BENCH], colour="green")]),
+    case("appearance", "erroneous", "street_lights_on_typos", AUDITOR, "swich on the stret lamps",
+         [env(street_lights="on"), only(env=True)], [lighting(street_lights="on")]),
+    case("appearance", "erroneous", "light_snow_typos", PLANNER, "a lite snowfal pls",
+         [env(weather=["snow"], intensity_min=0.05, intensity_max=0.45), only(env=True)], [weather("snow", 0.3)]),
+    case("appearance", "erroneous", "hydrant_yellow_typos", RETIRED, "paint teh hydrant yelow",
+         [looks("yellow", asset=HYDRANT), only(assets=[HYDRANT])], [paint([HYDRANT], colour="yellow")]),
+    case("appearance", "erroneous", "half_five_afternoon_typos", VISITOR, "please the time at half past five of the afternon",
+         [env(time_from="17:25", time_to="17:35"), only(env=True)], [clock("17:30")]),
+    case("appearance", "erroneous", "robot_white_typos", ROVER, "paint the robto white",
+         [looks("white", ROBOT), only(ROBOT)], [paint(["ackermann_robot_1"], colour="white")], setup=[ROVER_LOT_B]),
+    case("appearance", "erroneous", "suv_matte_black_typos", SCOUT, "make the suv mat blak",
+         [looks("black", asset=SUV, material="matte"), only(assets=[SUV])], [paint([SUV], colour="black", material="matte")]),
+    case("appearance", "erroneous", "night_and_rain_typos", GUARD, "make it nite and rainy",
+         [env(night=True, weather=["rain"]), only(env=True)], [clock("night"), weather("rain", 0.6)]),
+    case("appearance", "erroneous", "exposure_typos", AUDITOR, "set expsoure to 1.8",
+         [env(exposure_min=1.75, exposure_max=1.85), only(env=True)], [lighting(exposure=1.8)]),
+]
+
+
+ALL_CASES: list[Json] = [
+    *SEARCH_CASES,
+    *ADDITION_CASES,
+    *REMOVAL_CASES,
+    *POSITIONING_CASES,
+    *MOVING_CASES,
+    *ARRANGEMENT_CASES,
+    *APPEARANCE_CASES,
+]
+SUITE_PATH = S.path
+
+
+def main() -> None:
+    """Write the suite's JSONL, one case a line."""
+    S.write(ALL_CASES)
+
+
+if __name__ == "__main__":
+    main()
