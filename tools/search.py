@@ -83,6 +83,7 @@ class FindAssetsArgs(ToolArgs):
     near: str | None = Field(None, description="landmark or asset to measure distance from")
     within: float | None = Field(None, gt=0.0, le=1000.0, description="metres from `near` (or `nearest_to`)")
     nearest_to: str | None = Field(None, description=_NEAREST_TO + " (the reference asset itself is left out)")
+    furthest_from: str | None = Field(None, description="as nearest_to, the furthest first: an asset id, landmark or place name")
     on_lane: bool = Field(False, description="only assets standing on a lane (on the road, e.g. blocking it)")
     lane: str | None = Field(
         None, description="only assets on this lane id or road, e.g. campus_northbound, Main Street, northbound "
@@ -103,7 +104,7 @@ class FindAssets(Tool[FindAssetsArgs]):
     name = "find_assets"
     description = (
         "List assets in the scene, optionally of a category, within a distance of a place, "
-        "standing on a lane or road (on_lane, lane), or nearest first to an asset, place or x,y (nearest_to)."
+        "standing on a lane or road (on_lane, lane), or nearest first to an asset, place or x,y (nearest_to), or furthest first (furthest_from)."
     )
     family = "search"
     Args = FindAssetsArgs
@@ -131,7 +132,7 @@ class FindAssets(Tool[FindAssetsArgs]):
                 if lane is not None:
                     lanes_of[a.id] = lane.id
             pool = [a for a in pool if a.id in lanes_of]
-        reference = args.nearest_to or args.near
+        reference = args.nearest_to or args.furthest_from or args.near
         t = resolve_target(scene, reference) if reference else None
         area = scene.landmark(t.name) if t is not None and t.kind == "area" else None
 
@@ -140,9 +141,9 @@ class FindAssets(Tool[FindAssetsArgs]):
             return landmark_distance(area, a.pose.x, a.pose.y) if area is not None else math.hypot(a.pose.x - t.x, a.pose.y - t.y)
 
         if t is not None:
-            if args.nearest_to:
+            if args.nearest_to or args.furthest_from:
                 pool = [a for a in pool if not (t.kind == "asset" and a.id == t.name)]
-            pool.sort(key=lambda a: (gap(a), math.hypot(a.pose.x - t.x, a.pose.y - t.y)))
+            pool.sort(key=lambda a: (gap(a), math.hypot(a.pose.x - t.x, a.pose.y - t.y)), reverse=bool(args.furthest_from))
             beyond = pool[0] if pool else None
             if args.within is not None:
                 pool = [a for a in pool if gap(a) <= args.within]
@@ -163,8 +164,9 @@ class FindAssets(Tool[FindAssetsArgs]):
         lines = [line(a) for a in pool[:MAX_LISTED]]
         more = f" (+{len(pool) - MAX_LISTED} more)" if len(pool) > MAX_LISTED else ""
         text = f"{len(pool)} {what}(s) found" + (": " + "; ".join(lines) + more if pool else "")
-        if args.nearest_to and t is not None:
-            head = (f"nearest {what} to {t.name}: {pool[0].id}, {distances[pool[0].id]:.1f} m away"
+        if (args.nearest_to or args.furthest_from) and t is not None:
+            most = "furthest" if args.furthest_from else "nearest"
+            head = (f"{most} {what} {'from' if args.furthest_from else 'to'} {t.name}: {pool[0].id}, {distances[pool[0].id]:.1f} m away"
                     if pool else f"no {what} near {t.name}")
             text = f"{head}. {text}"
         data: dict[str, object] = {"ids": [a.id for a in pool]}

@@ -65,7 +65,7 @@ def unanswered(request: Request, calls: Sequence[ToolCall], scene: Scene) -> lis
 
 def _compares_distances(call: ToolCall) -> bool:
     # find_assets near X and find_lanes near X rank by distance too.
-    return call.tool == "measure_distance" or "nearest_to" in call.args or (
+    return call.tool == "measure_distance" or "nearest_to" in call.args or "furthest_from" in call.args or (
         call.tool in ("find_assets", "find_lanes") and "near" in call.args)
 
 

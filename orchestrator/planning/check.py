@@ -216,7 +216,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     scene = context.scene
     if request.question and effect.edits:
         out.append("you asked a question, but the plan would change the scene")
-    looks_up_places = any(c.tool in ("find_landmarks", "measure_distance") or "nearest_to" in c.args for c in effect.calls)
+    looks_up_places = any(c.tool in ("find_landmarks", "measure_distance") or "nearest_to" in c.args or "furthest_from" in c.args
+                          for c in effect.calls)
     if request.question and request.about_places and not effect.edits and not looks_up_places:
         out.append("you asked about places, but the plan looks up something else")
     if not request.question and effect.calls and not effect.edits:
@@ -440,8 +441,8 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     out += wrong_side(request.low, scene, effect.added)
     if not effect.removed and not effect.added and not request.excepted:  # "all but the SUV" is not all
         out += some_of_all(request.masked, [a for a in effect.changed if a.id != "ego"], scene, request.place, PLACE_RADIUS_M)
-    if request.lane is not None and placed and not request.question:
-        out += off_lane(request.lane, scene, placed)
+    if request.lane is not None and placed and not request.question:  # a work zone's sign stands beside the lane it closes
+        out += off_lane(request.lane, scene, [a for a in placed if a.category not in _companions(effect) or a.category in request.categories])
     out += off_surface(request.low, scene, placed)
     if not request.question or effect.edits:  # "could the library be painted red?" asks for an edit
         out += look_left_out(request.low, effect.calls)
@@ -663,8 +664,8 @@ def _accounts_for(number: float, used: list[float], factors: list[float]) -> boo
 
 def _totals(request: Request, effect: Effect) -> dict[str, int]:
     """How many of each kind the plan adds or removes stand at the request's place after it, where
-    the request says the count the scene should end with ("there should be exactly four cones")."""
-    if effect.outcome is None or not FINAL_COUNT.search(request.low):
+    the request says the count the scene should end with ("there should be exactly four cones", "all but three")."""
+    if effect.outcome is None or not (FINAL_COUNT.search(request.low) or KEEP_SOME.search(request.low)):
         return {}
     kinds = {a.category for a in [*effect.added, *effect.removed]}
     return {k: len(kept_at(effect.outcome.after, k, request.place)) for k in kinds}

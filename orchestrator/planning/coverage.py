@@ -64,7 +64,7 @@ _PLACE_PREPOSITION = re.compile(
     r"(?:middle|centre|center|edge|corner|far end|far side) of)\s+the (?=([a-z][a-z' -]*))"  # "the middle of the lake"; (a look-ahead: "from the
 )  # library to the pool" is read for both places; a known place masked to blanks is no name: "to the   anymore")
 # Arguments by which a call says where: a repaired place name ends up in one of them.
-_PLACE_ARG = re.compile(r"'(?:location|near|nearest_to|lane|asset|assets|target|x|y)':")
+_PLACE_ARG = re.compile(r"'(?:location|near|nearest_to|furthest_from|lane|asset|assets|target|x|y)':")
 # Words after "the" that are part of a relation, not a place ("on the right", "to the north").
 _RELATION_WORDS = frozenset(
     [

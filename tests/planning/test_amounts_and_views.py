@@ -134,3 +134,102 @@ def test_a_plan_that_moves_a_thing_away_from_what_it_should_near_is_not_applied(
     verdict = review("move the bin 3 m towards the bench", away, context)
     assert verdict.action != "apply"
     assert any("closer to bench_1" in p for p in verdict.problems), verdict.problems
+
+
+@pytest.mark.parametrize(("prompt", "left"), [("remove all but one tree", 1), ("remove every lamp post except three", 3)])
+def test_all_but_some_keeps_that_many(session, prompt, left):
+    kind = "tree" if "tree" in prompt else "street_light"
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert session.scene.count(kind) == left
+
+
+def test_things_either_side_of_a_thing_are_one_a_side_by_it(session):
+    report = session.submit("put bins on either side of the bench")
+    assert report.ok, report.error
+    bench = session.scene.asset("bench_1")
+    added = [a for a in session.scene.assets if a.category == "trash_bin" and a.id != "trash_bin_1"]
+    assert bench is not None and len(added) == 2
+    assert all(math.dist((a.pose.x, a.pose.y), (bench.pose.x, bench.pose.y)) < 5 for a in added)
+
+
+def test_a_compass_side_of_a_point_place_is_just_past_it_that_way(session):
+    report = session.submit("put a bench on the west side of the library")
+    assert report.ok, report.error
+    door = session.scene.landmark("Library entrance")
+    [bench] = [a for a in session.scene.assets if a.category == "bench" and a.id != "bench_1"]
+    assert door is not None and door.position[0] - 8 < bench.pose.x < door.position[0] - 1
+
+
+def test_a_standing_thing_told_to_wait_somewhere_goes_there(session):
+    session.submit("add a bus on Main Street")
+    report = session.submit("make the bus wait at the bus stop")
+    assert report.ok, report.error
+    bus, stop = session.scene.asset("bus_1"), session.scene.landmark("bus stop")
+    assert bus is not None and stop is not None
+    assert math.dist((bus.pose.x, bus.pose.y), stop.position) < 10
+
+
+def test_the_thing_furthest_from_a_place_is_named_first(session):
+    report = session.submit("which tree is furthest from the fountain?")
+    assert report.ok, report.error
+    assert (report.answer or "").startswith("furthest tree from fountain: tree_4")
+
+
+@pytest.mark.parametrize("prompt", ["is the SUV closer to the library or the union?", "which is closer to the SUV, the library or the union?"])
+def test_a_choice_between_two_places_measures_to_each(session, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    answer = report.answer or ""
+    assert "suv_1 to Library entrance: 69.5 m" in answer and "suv_1 to Student Union entrance: 21.5 m" in answer
+
+
+@pytest.mark.parametrize("prompt", ["Put the SUV up front, in the insured vehicle's path.", "put the SUV in the path of the ego"])
+def test_in_a_things_path_is_in_front_of_it(session, prompt):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    suv, ego = session.scene.asset("suv_1"), session.scene.ego
+    assert suv is not None and ego is not None
+    assert 2 < suv.pose.x - ego.pose.x < 15 and abs(suv.pose.y - ego.pose.y) < 1
+
+
+@pytest.mark.parametrize(("prompt", "named"), [("remove the library", "Library entrance"), ("remove the eastbound lane", "main_eastbound")])
+def test_the_map_itself_is_never_taken_away_and_says_so(session, prompt, named):
+    before = session.scene.model_dump_json()
+    report = session.submit(prompt)
+    assert not report.ok and f"{named} is part of the map" in (report.error or "")
+    assert session.scene.model_dump_json() == before
+
+
+def test_things_in_two_rows_are_a_grid_of_two_rows(session):
+    report = session.submit("six benches in two rows near the library")
+    assert report.ok, report.error
+    added = [a for a in session.scene.assets if a.category == "bench" and a.id != "bench_1"]
+    assert len(added) == 6
+    assert len({round(a.pose.y, 1) for a in added}) == 2 or len({round(a.pose.x, 1) for a in added}) == 2
+
+
+def test_some_of_a_few_is_never_all_of_them(session):
+    session.submit("Add three people by the fountain.")
+    report = session.submit("There are too many persons there now, remove some.")
+    assert report.ok, report.error
+    assert 1 <= session.scene.count("pedestrian") <= 2
+
+
+def test_a_bit_closer_to_a_thing_is_a_step_people_see_and_a_nudge_is_small(session):
+    def gap() -> float:
+        bin_, bench = session.scene.asset("trash_bin_1"), session.scene.asset("bench_1")
+        assert bin_ is not None and bench is not None
+        return math.dist((bin_.pose.x, bin_.pose.y), (bench.pose.x, bench.pose.y))
+
+    before = gap()
+    assert session.submit("nudge the bin towards the bench").ok
+    assert before - 2 < gap() < before
+    assert session.submit("Could the bin go a little closer to the bench, dear?").ok
+    assert 1.4 < gap() <= before / 2 + 0.5
+
+
+def test_three_letters_swapped_are_the_one_short_word_they_spell(campus):
+    assert repair("whihc lane is the eog in", campus).text == "which lane is the ego in"
+    assert repair("move teh bsu to lot a", campus).text == "move the bus to lot a"
+    assert repair("ok thx", campus).text == "ok thx"  # no word of three letters in another order

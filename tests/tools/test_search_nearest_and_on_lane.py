@@ -92,3 +92,14 @@ def test_a_kind_said_in_the_plural_finds_every_category_of_it(call: Caller, camp
     assert "stop_sign_1" in signs["ids"] and "tree_1" not in signs["ids"]
     # a single word is read as the catalog reads it: "vehicle" is a passenger car
     assert set(call(campus, "find_assets", category="vehicle").data["ids"]) == {"passenger_car_1", "passenger_car_2"}
+
+
+def test_furthest_from_lists_the_furthest_first_and_leaves_the_reference_out(campus):
+    from drivetwin.tools.search import FindAssets, FindAssetsArgs
+
+    result = FindAssets().propose(FindAssetsArgs(category="tree", furthest_from="tree_2"), campus)
+    ids = result.data["ids"]
+    assert "tree_2" not in ids and len(ids) == campus.count("tree") - 1
+    gaps = [result.data["distances"][i] for i in ids]
+    assert gaps == sorted(gaps, reverse=True)
+    assert result.text.startswith(f"furthest tree from tree_2: {ids[0]}")

@@ -354,6 +354,12 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             ids = [a.id for a in scene.assets if catalog()[a.category].motion == "prop" and lane_under(a, lanes)]
             return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
         ids = referenced(r, scene, memory, notes)
+        road = road_said(r.low, scene)
+        mapped = r.landmark or (r.lane if r.lane and not r.lane_guessed else road[0] if road is not None else None)
+        if not ids and mapped and not r.has(lx.GENERIC_THINGS) and not _PRONOUN.search(r.masked) and _kept(r) is None:
+            # "remove the library", "remove the eastbound lane": the map itself, which only its maker changes
+            raise ph_error(f"{mapped} is part of the map, which stays as it is: I can take away things placed in it, "
+                           f"such as the {', '.join(sorted({a.category.replace('_', ' ') for a in scene.assets})[:4])}")
         if not ids and _kept(r) is not None:  # "way too many cones. keep just the one": of those just made
             ids = notes.subject or [i for i in memory.last_added() if scene.asset(i) is not None]
         ids = _but_kept(r, ids)  # "too many, just leave one of them"
@@ -370,6 +376,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     name = mention.category
     recent = [i for i in memory.last_added(name) if scene.asset(i) is not None]
     count = find_count(r, mention)
+    if count and count >= scene.count(name) > 1 and _VAGUE_PART.search(r.low) and not r.has(("all", "every", "each")):
+        count = scene.count(name) - 1  # "too many people there, remove some": some of three is never all three
     if count is None and _HALF.search(r.low[: mention.start]):  # "half the trees have to go"
         count = max(1, len(kept_at(scene, name, r.landmark)) // 2)
     if recent and r.has(("you added", "you just added", "the new", "that", "those")):
@@ -627,6 +635,13 @@ def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[Too
     return [ToolCall(tool="set_behaviour", args={"asset": found.id, "behaviour": spec})]
 
 
+# An amount said vaguely: "some", "a few" of them.
+_VAGUE_PART = re.compile(r"\b(?:some|several|a few|a couple|a handful)\b")
+# A thing pointed back at ("remove it", "get rid of them"): never a place of the map.
+_PRONOUN = re.compile(r"\b(?:it|them|those|these|that one|this one)\b")
+# Waiting somewhere, as a thing standing still does ("wait at the bus stop", "stand by the fountain"); never
+# "stop at the crosswalk", which is what a moving thing does when it gets there.
+_WAITS = re.compile(r"\b(?:wait|waits|waiting|stand|stands|standing|queue|queues|queueing|linger|lingers|idle|idles|idling)\b")
 # "Up" said of moving a thing that drives: forward, as a queue moves up.
 _UP = re.compile(r"\b(?:move|moves|moved|inch|edge|creep|roll|bring|shift)\s+(?:\S+\s+){0,3}up\b(?!\s+(?:to|the|north))")
 
@@ -634,13 +649,15 @@ _UP = re.compile(r"\b(?:move|moves|moved|inch|edge|creep|roll|bring|shift)\s+(?:
 _TOWARD = re.compile(r"\b(?:towards?|in the direction of|(?:closer|nearer)(?: to)?|(?P<away>(?:further|farther|more|well|back)(?: away)? from|away from))\b")
 
 
+# A thing moved "a bit closer" to another, no distance said, stops at least this far from it.
+TOWARD_CLEARANCE_M = 1.5
 # A thing moved closer to the road stops this far short of its edge.
 KERB_MARGIN_M = 0.5
 # The road as such, after "closer to": "closer to the road", "nearer the kerb".
 _ROAD_AFTER = re.compile(r"\s+(?:to\s+)?(?:the\s+)?(?:road|street|kerb|curb|carriageway|traffic|lane)\b")
 
 
-def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> dict[str, float] | None:
+def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None, vague: bool = False) -> dict[str, float] | None:
     """East and north for moving `ids` `shift` metres toward the place, road or ego named after
     "toward" or "closer to" (away from it after "further from" or "away from"), from the middle of
     where they stand; None when the words say no such move."""
@@ -676,6 +693,9 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None) -> di
     gap = math.dist((x, y), goal)
     if gap < 1e-6 or shift <= 0.0:
         return None
+    if vague and said.group(0).startswith(("closer", "nearer")) and not r.has(("nudge", "budge", "inch", "scoot")):
+        # "a bit closer to the bench": a step people see, half the way there at most
+        shift = max(shift, min(gap / 2, gap - TOWARD_CLEARANCE_M))
     step = -shift if said.group("away") else shift
     return {"east": round(step * (goal[0] - x) / gap, 2), "north": round(step * (goal[1] - y) / gap, 2)}
 
@@ -773,6 +793,10 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         step = metres or (SMALL_STEP_M if r.has(md.SMALL) else DEFAULT_STEP_M)
         return [ToolCall(tool="move_asset", args={"asset": asset, "forward": -abs(step)})]
     if r.has(lx.STOP_WORDS) and motion in ("vehicle", "walker") and not r.has(("stop sign",)):
+        where = location(r, scene, memory, notes, exclude=ids) if _WAITS.search(r.low) and r.landmark else None
+        if where is not None and found is not None and found.behaviour.kind == "parked":
+            # "make the bus wait at the bus stop": one standing elsewhere goes there to wait
+            return [ToolCall(tool="place_asset", args={"asset": asset, "location": where})]
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "parked"}})]
     back = _lane_back(found, scene) if found is not None and _OTHER_WAY.search(r.low) else None
     if back is not None:  # "the ego should be going the other way down Main Street": the road's lane that runs back
@@ -841,7 +865,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
             and md.compass_direction(r.masked) is None:
         notes.guess("how far to move it")  # "push the bin further from the bus stop", "closer to the road": a step, never onto it
         shift = DEFAULT_STEP_M
-    toward = _toward(r, scene, ids, shift)
+    toward = _toward(r, scene, ids, shift, vague=metres is None)
     if toward is not None:  # "4 m toward Main Street": straight at it, from where they stand
         return [ToolCall(tool="move_asset", args={**moved, **toward})]
     compass = md.compass_direction(r.masked)

@@ -120,12 +120,24 @@ EACH_SIDE = re.compile(r"\b(?:each|either|every)\s+side\b")
 BOTH_SIDES = re.compile(r"\b(?:both|either|each)\s+(?:sides?|edges?|kerbs?|curbs?)\b|\bon (?:both|each|either) side\b")
 
 
+# Rows counted: "six benches in two rows" is a grid of two rows.
+_ROWS = re.compile(r"\b(?:in|into|as)\s+(\d+|two|three|four|five|six)\s+(?:rows|lines|ranks)\b")
+
+
+def rows_said(text: str) -> int:
+    """How many rows the words lay things out in ("in two rows": 2); 0 when they count none."""
+    said = _ROWS.search(text)
+    return 0 if said is None else int(said.group(1)) if said.group(1).isdigit() else NUMBER_WORDS.get(said.group(1), 0)
+
+
 def layout_said(text: str) -> str | None:
     """The shape of layout the words ask for ("in a line", "a row of", "a ring", "side by side"
-    is a row), if any."""
+    is a row, "in two rows" a grid), if any."""
     said = _LAYOUT.search(text)
     if said is None:
         return None
+    if rows_said(text) >= 2:
+        return "grid"
     # an avenue: trees in a line; a lattice: a grid
     return {"side by side": "row", "next to each other": "row", "avenue": "line", "lattice": "grid", "matrix": "grid"}.get(
         said.group(1), said.group(1))
@@ -184,4 +196,4 @@ SMALL_MOVE = (*SMALL, "a touch", "a tad", "a smidge", "a fraction", "a few inche
 
 
 __all__ = ["COMPASS_VECTORS", "MATERIAL_WORDS", "SMALL", "SMALL_MOVE", "catalog_tags", "compass_direction", "facing_direction", "groups_said",
-           "kind_of", "layout_said", "material_said", "outer_direction", "partitive_count"]
+           "kind_of", "layout_said", "material_said", "outer_direction", "partitive_count", "rows_said"]

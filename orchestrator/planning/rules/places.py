@@ -31,7 +31,7 @@ RELATIONS = (
     (("behind",), "behind"),
     (("left of", "to the left"), "left_of"),
     (("right of", "to the right"), "right_of"),
-    (("next to", "beside", "alongside", "by the", "close to", "closer to"), "next_to"),
+    (("next to", "beside", "alongside", "by the", "close to", "closer to", "each side of", "either side of", "both sides of"), "next_to"),  # "on each side of the bench"
 )
 _DISTANCE_SIDE = re.compile(r"\b(?:m|metres?|meters?|ft|feet)\s+(ahead|behind|back|further on|down the road)\b")
 # Words that say a place was meant; when none resolves, the rules guessed the place.
@@ -379,15 +379,19 @@ EDGE_INSET_M = 3.0
 
 
 def _edge_of(r: Reading, scene: Scene) -> dict[str, Any] | None:
-    """An absolute point just inside the side of the area the words name; None when they name
-    no side of an area (a side of a road is its lane: see side_lane)."""
+    """An absolute point just inside the side of the area the words name, or just past a place's
+    point that way ("the west side of the library"); None when they name no side of a place (a side
+    of a road is its lane: see side_lane)."""
     said = EDGE_OF.search(r.low)
     if said is None or not r.landmark or r.landmark_at < said.end() - 1:
         return None
     area = scene.landmark(r.landmark)
-    if area is None or area.kind != "area" or not area.polygon:
+    if area is None:
         return None
     dx, dy = md.COMPASS_VECTORS[said.group(1)]
+    if area.kind != "area" or not area.polygon:
+        x, y = area.position
+        return {"relation": "absolute", "x": round(x + dx * LITTLE_OFFSET_M, 2), "y": round(y + dy * LITTLE_OFFSET_M, 2)}
     cx, cy = area.position
     reach = max((x - cx) * dx + (y - cy) * dy for x, y in area.polygon)
     away = max(0.0, reach - EDGE_INSET_M)
@@ -616,9 +620,6 @@ def location(
 DRIVEWAY_IN_M = 4.5
 DRIVEWAY_WIDTH_M = 7.0
 BEYOND_PLACE_M = 15.0
-# "a little north of", "just south of": a few metres past the place.
-LITTLE_OFFSET_M = 5.0
-_A_LITTLE = re.compile(r"\b(?:a little|a bit|slightly|just|a touch|a few (?:metres|meters|steps))\s*(?:to the\s*)?$")
 _COMPASS_OF = re.compile(r"\b(north|south|east|west)\s+of\b")
 _UNIT = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
 

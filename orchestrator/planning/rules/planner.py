@@ -1458,9 +1458,12 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         count = None  # "a barrier every 10 m": one at each step, not one in all
     if count:
         args["count"] = count
+    rows_of = md.rows_said(r.low)
     vehicles = all(catalog()[c].motion == "vehicle" for c in layout)
     parking = r.has(("parked", "side by side", "car park", "parking")) or "parking" in str(r.landmark or notes.place)
-    if vehicles and parking and (r.has(("row", "rows", "line", "side by side", "next to each other")) or r.has(lx.ARRANGE_WORDS)):
+    if rows_of >= 2 and count:  # "six benches in two rows": a grid of two rows, three to a row
+        args["shape"], args["columns"] = "grid", math.ceil(count / rows_of)
+    elif vehicles and parking and (r.has(("row", "rows", "line", "side by side", "next to each other")) or r.has(lx.ARRANGE_WORDS)):
         args["shape"] = "parking_row"  # "a row of parked cars in lot B": side by side in bays
     elif _LINING.search(r.low) and not r.has(("across",)):
         args["shape"] = "lane_edge"  # "line the road near the gate with cones", "cones along the kerb"
@@ -1699,6 +1702,9 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     calls = [ToolCall(tool="add_asset", args=args)]
     if sides is not None and where is not None and where.get("target"):  # "a bin on each side of the door": one left, one right
         near = {"target": where["target"], "distance": where.get("distance", SIDE_GAP_M)}
+        if find_count(r, mention) is None:  # "bins either side of the bench": one a side, not a handful
+            count = 1
+            args["count"] = count
         calls = [ToolCall(tool="add_asset", args={**args, "location": {"relation": side, **near}}) for side in ("left_of", "right_of")]
         count *= 2
     notes.adding(scene, mention.category, count)

@@ -22,6 +22,7 @@ from drivetwin.orchestrator.planning.intent import ASKED_ABOUT, PLACE_KIND
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
+from drivetwin.orchestrator.planning.rules.edits import named_at
 from drivetwin.orchestrator.planning.rules.environment import environment
 from drivetwin.orchestrator.planning.rules.places import Notes, side_lane
 from drivetwin.orchestrator.planning.rules.reading import Reading, place_kind_said, read
@@ -42,7 +43,7 @@ AREA_NEAR_M = 3.0
 _NEXT_PART = re.compile(r",?\s+(?:and|also|plus)\s+(?=(?:which|what|where|how|is|are|does|do|who|any)\b)")
 # Relations, strongest first. Each is structure (a comparison, an obstruction, a neighbourhood),
 # not a phrasing of a particular request.
-_NEAREST = re.compile(r"\b(?:nearest|closest|most near|most close|nearer|closer|how far)\b")
+_NEAREST = re.compile(r"\b(?:nearest|closest|most near|most close|nearer|closer|how far|(?P<furthest>furthest|farthest|most distant))\b")
 _ON_LANE = re.compile(
     r"\b(?:block\w*|obstruct\w*|occupy\w*|in (?:the|its|our|their|my|his|her) way"
     r"|(?:on|in|across|along) (?:the |a |any |our )?(?:[a-z]+ )?(?:lanes?|roads?|streets?|carriageway))\b"
@@ -129,6 +130,29 @@ _SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|
                       r"|lights? (?:on|off)|lit|environment|conditions|(?:it|things) like out(?: there| here|side)?)\b")
 
 
+# One thing's distance to either of two ("is the SUV closer to the library or the union?") or two
+# things' distance to one ("which is nearer the bench, the bin or the tree?").
+_EITHER_OF_TWO = re.compile(r"\b(?:closer|nearer|further|farther)\s+(?:to\s+|from\s+)?(?P<a>[^,?.!]+?)\s+or\s+(?P<b>[^,?.!]+)")
+_TWO_TO_ONE = re.compile(r"\b(?:closer|nearer|further|farther)\s+(?:to\s+|from\s+)?(?P<s>[^,?.!]+),\s*(?P<a>[^,?.!]+?)\s+or\s+(?P<b>[^,?.!]+)")
+
+
+def _two_distances(r: Reading, scene: Scene) -> list[ToolCall] | None:
+    """measure_distance from the one thing or place a comparison is about to each of the two it
+    names with "or"; None when the clause compares no such two."""
+    two = _TWO_TO_ONE.search(r.low)
+    if two is not None:
+        subject = named_at(scene, f" {two.group('s')}", [])
+    elif (two := _EITHER_OF_TWO.search(r.low)) is not None:
+        before = re.sub(r"^\s*(?:so\s+|and\s+|then\s+)?(?:is|are|was|were|would|will)\s+", " ", r.low[: two.start()])
+        subject = named_at(scene, f" {before.strip()}", [])
+    else:
+        return None
+    ends = [named_at(scene, f" {two.group(k).strip()}", [subject or ""]) for k in ("a", "b")]
+    if subject is None or None in ends or len({subject, *ends}) < 3:
+        return None
+    return [ToolCall(tool="measure_distance", args={"a": subject, "b": end}) for end in ends if end is not None]
+
+
 # "which is closer to the ego, the bench or the bin?": two things named, each measured from the one place.
 _COMPARED = re.compile(r"\bwhich(?: one)?\b.*\b(?:closer|nearer|further|farther)\b.*\bor\b")
 MAX_COMPARED = 4
@@ -151,6 +175,9 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         # "which is further from the ego, the bench or the bin?": how far each is, the nearest of its kind
         reference = r.landmark or next(iter(r.ids), None) or "ego"
         return [ToolCall(tool="find_assets", args={"category": k, "nearest_to": reference}) for k in kinds[:MAX_COMPARED]]
+    between = _two_distances(r, scene)
+    if between is not None:  # "is the SUV closer to the library or the union?": how far it is from each place
+        return between
     if len(texts) == 1 and len(kinds) > 1 and not r.ids and (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(r.low)):
         # "the weights of both a truck and a bus": the property of each thing named
         return [_property(replace(r, mentions=[m for m in r.mentions if m.category == k][:1]), scene, None).call
@@ -252,7 +279,7 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
             later = [e for pos, e in _entities(r, scene, back) if pos > head.end and e.name != anchor.name]
             anchor = later[0] if later else Anchor("asset", EGO_ID)
         if anchor is not None:
-            return _nearest(r, scene, anchor)
+            return _nearest(r, scene, anchor, furthest=nearest.group("furthest") is not None)
     # "stop signs on Campus Drive", "is anything parked on Campus Drive": what stands on that road
     anything = not r.mentions and _ANYTHING.search(low) is not None
     on_road = (r.mentions or anything) and _road_named(r, scene) is not None and _ALONG.search(low) is not None
@@ -391,8 +418,8 @@ def _property(r: Reading, scene: Scene, subject: Anchor | None) -> Part:
     return Part(ToolCall(tool="asset_properties", args={"asset": asset}), Anchor("asset", asset))
 
 
-def _nearest(r: Reading, scene: Scene, anchor: Anchor) -> Part:
-    """What is nearest the anchor, of the kind asked for: a landmark, a lane, assets."""
+def _nearest(r: Reading, scene: Scene, anchor: Anchor, furthest: bool = False) -> Part:
+    """What is nearest the anchor (or `furthest` from it), of the kind asked for: a landmark, a lane, assets."""
     kind_at = {m.start: m for m in r.mentions}
     lane = _LANE_KIND.search(r.masked)
     kind_word = place_kind_said(r, scene)
@@ -410,7 +437,7 @@ def _nearest(r: Reading, scene: Scene, anchor: Anchor) -> Part:
         if subject_landmark or kind_word:  # "how far is the bus stop from us", "which gate is nearest"
             args["query"] = subject_landmark or kind_word
         return Part(ToolCall(tool="find_landmarks", args=args), anchor)
-    args = {"nearest_to": anchor.name}
+    args = {"furthest_from" if furthest else "nearest_to": anchor.name}
     category = next((m.category for m in r.mentions if _only_instance(r, scene, m) != anchor.name), None)
     if category is not None:
         args = {"category": category, **args}

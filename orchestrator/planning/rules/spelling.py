@@ -300,6 +300,10 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
     low = word.lower()
     if low in _SHORT_SLIPS:
         return _SHORT_SLIPS[low]
+    if len(low) == MIN_REPAIR_LEN - 1 and low.isalpha() and not is_known(low, vocab) and not is_english(low):
+        # three letters, two swapped: "eog" is the ego, "bsu" a bus (the one such thing, never a guess between two)
+        swapped = {t for t in repair_targets(vocab) if len(t) == len(low) and sorted(t) == sorted(low) and edits(low, t) == 1}
+        return swapped.pop() if len(swapped) == 1 else None
     if len(low) < MIN_REPAIR_LEN or is_known(low, vocab) or is_english(low):
         return None
     joined = _joined(vocab)
@@ -393,6 +397,10 @@ _COMPASS_CAR_PARK = re.compile(r"\b(north|south|east|west)(?:ern)? car ?park\b",
 # one the scene is seen from (a way ahead, said with no thing it is ahead of).
 _UP_AHEAD = re.compile(r"\b(?:up|just|further|a bit|somewhere|(road|lane|street|way|junction|crossing|crossroads|intersection)) ahead\b"
                        r"(?!\s+of\b)", re.IGNORECASE)
+# In a thing's path, or its way: in front of it ("in the insured vehicle's path", "in the path of the bus", "in our way").
+_IN_ITS_PATH = re.compile(r"\bin (?:the )?(?:path|way) of ((?:the |our |my )?[\w ]+?)(?=\s*(?:[,.;!?]|$|\band\b|\bso\b))"
+                          r"|\bin ((?:the |our |my )?[\w]+(?: [\w]+)?)'s (?:path|way)\b|\bin (our|my|its|their) (?:path|way)\b", re.IGNORECASE)
+_PATH_OWNERS = {"our": "us", "my": "us", "its": "it", "their": "them"}
 # "not so close to the kerb" asks for it further from the kerb.
 _NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
 # A little word typed twice: "the the one".
@@ -780,6 +788,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _COMPASS_CAR_PARK.sub(r"\1 parking lot", text)
     text = _without_place_left(text, scene)
     text = _UP_AHEAD.sub(lambda m: f"{m.group(1) or ''} ahead of the ego".lstrip(), text)
+    text = _IN_ITS_PATH.sub(lambda m: "in front of " + (m.group(1) or m.group(2) or _PATH_OWNERS[m.group(3).lower()]), text)
     text = _what_instead(text)
     text = _US_AS_OBJECT.sub(r"\1 the ego", text)  # "have us turn at the crossroads": the car under test
     text = _STOP_THERE.sub(r"\1make \2 stop ", text)
