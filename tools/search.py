@@ -5,6 +5,7 @@ from __future__ import annotations
 import difflib
 import math
 import re
+from typing import Literal
 
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
@@ -74,6 +75,28 @@ def landmark_distance(landmark: Landmark, x: float, y: float) -> float:
     return math.hypot(landmark.position[0] - x, landmark.position[1] - y)
 
 
+# What each superlative orders by, and whether the most of it comes first.
+_MOST = {"tallest": ("height", True), "shortest": ("height", False), "heaviest": ("mass", True), "lightest": ("mass", False),
+         "longest": ("length", True), "widest": ("width", True), "biggest": ("volume", True), "smallest": ("volume", False)}
+
+
+def _figure(asset: AssetInstance, key: str) -> float:
+    """An asset's height, length or width (m) or volume (m³), its kind's scaled as it is, or its mass (kg)."""
+    kind = catalog()[asset.category]
+    if key == "mass":
+        return round(asset.physics.mass, 1)
+    if key == "volume":
+        return round(kind.length * kind.width * kind.height * asset.scale**3, 2)
+    return round(float(getattr(kind, key)) * asset.scale, 2)
+
+
+def _alike(landmark: Landmark, scene: Scene) -> list[Landmark]:
+    """The landmark and those of its kind (point or area) whose names share a word of its name that
+    is no letter: the two crosswalks, the two parking lots (not a lot's entrance, a point)."""
+    words = {w for w in landmark.name.lower().split() if len(w) > 1}
+    return [lm for lm in scene.landmarks if lm.kind == landmark.kind and words & {w for w in lm.name.lower().split() if len(w) > 1}]
+
+
 def _is_reference(t: Target, names: list[str]) -> bool:
     return t.name.lower() in (n.lower() for n in names)
 
@@ -84,6 +107,8 @@ class FindAssetsArgs(ToolArgs):
     within: float | None = Field(None, gt=0.0, le=1000.0, description="metres from `near` (or `nearest_to`)")
     nearest_to: str | None = Field(None, description=_NEAREST_TO + " (the reference asset itself is left out)")
     furthest_from: str | None = Field(None, description="as nearest_to, the furthest first: an asset id, landmark or place name")
+    most: Literal["tallest", "shortest", "heaviest", "lightest", "longest", "widest", "biggest", "smallest"] | None = Field(
+        None, description="order by size or mass, the most first, and name it with its figure (e.g. 'heaviest')")
     on_lane: bool = Field(False, description="only assets standing on a lane (on the road, e.g. blocking it)")
     lane: str | None = Field(
         None, description="only assets on this lane id or road, e.g. campus_northbound, Main Street, northbound "
@@ -147,6 +172,9 @@ class FindAssets(Tool[FindAssetsArgs]):
             beyond = pool[0] if pool else None
             if args.within is not None:
                 pool = [a for a in pool if gap(a) <= args.within]
+        if args.most is not None:  # "which car is the heaviest": by the catalog's figures, times each one's scale
+            key, first = _MOST[args.most]
+            pool.sort(key=lambda a: _figure(a, key), reverse=first)
         what = args.category or "asset"
         if t is not None and args.within is not None and not pool and beyond is not None:
             # "lamp near lot A?" with none that close: none within it, and the nearest there is
@@ -164,7 +192,11 @@ class FindAssets(Tool[FindAssetsArgs]):
         lines = [line(a) for a in pool[:MAX_LISTED]]
         more = f" (+{len(pool) - MAX_LISTED} more)" if len(pool) > MAX_LISTED else ""
         text = f"{len(pool)} {what}(s) found" + (": " + "; ".join(lines) + more if pool else "")
-        if (args.nearest_to or args.furthest_from) and t is not None:
+        if args.most is not None and pool:
+            key, _ = _MOST[args.most]
+            unit = "kg" if key == "mass" else "m³" if key == "volume" else "m"
+            text = f"{args.most} {what}: {pool[0].id} ({pool[0].category}), {_figure(pool[0], key):g} {unit}. {text}"
+        elif (args.nearest_to or args.furthest_from) and t is not None:
             most = "furthest" if args.furthest_from else "nearest"
             head = (f"{most} {what} {'from' if args.furthest_from else 'to'} {t.name}: {pool[0].id}, {distances[pool[0].id]:.1f} m away"
                     if pool else f"no {what} near {t.name}")
@@ -202,6 +234,9 @@ class FindLandmarks(Tool[FindLandmarksArgs]):
     def _nearest(self, args: FindLandmarksArgs, scene: Scene, reference: str) -> ToolResult:
         t = resolve_target(scene, reference)
         marks = self._matching(args, scene)
+        if len(marks) == 1 and args.query and scene.landmark(args.query) is marks[0] and args.query.lower() != marks[0].name.lower():
+            # "which car park is nearest ...": a kind of place, said by one's other name; its like are compared with it
+            marks = _alike(marks[0], scene)
         marks = [lm for lm in marks if not (t.kind in ("landmark", "area") and _is_reference(t, lm.names()))]
         if not marks:
             raise NotFoundError(f"no other landmark to compare with {t.name}")

@@ -207,7 +207,8 @@ def dry_run(plan_calls: list[ToolCall], context: PlanContext) -> Effect | None:
 
 
 # Less of a weather already there: "less foggy", "ease the rain off a bit".
-_LESS_OF_IT = re.compile(r"\b(?:less|lighter|weaker|thinner|reduce|lower|ease|not as|not so|tone down|turn down)\b")
+_LESS_OF_IT = re.compile(r"\b(?:less|lighter|weaker|thinner|reduce|lower|ease|not as|not so|tone down|turn down|improve visibility"
+                         r"|clear (?:\w+ ){0,2}(?:a bit|a little|slightly))\b")
 
 
 def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[str]:
@@ -313,6 +314,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                and not _at_a_target(scene, effect, a, request.categories)  # a compound's other place, lane or thing
                and not _brought_closer(scene, a, request.place)  # "3 m towards the fountain"
                and not FURTHEST.search(request.low)  # "the tree furthest from the library"
+               and not _NEAREST_OF.search(request.low)  # "the lamp post nearest the fountain", however far that is
                and not _heads_to(scene, a, request.place)  # "make him walk to the library"
                and not (beyond is not None and beyond[1](a))  # "the lamps east of the crossroads": that side of it
                and not FROM_TO.search(request.low)  # "cones from the ego to the crossroads": between the two
@@ -544,10 +546,10 @@ def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Sc
 def _looked_up(topic: str, said: str, calls: tuple[ToolCall, ...], scene: Scene) -> bool:
     """Whether the plan's lookups are about `topic`: name it, name one of its lanes (a road), or
     look at a thing standing there (a place: "how heavy is the SUV in lot B")."""
-    names = [topic, *(lane.id for lane in scene.roads.lanes if lane.road == topic)]
-    if any(n.lower().replace("_", " ") in said for n in names):
-        return True
     place = scene.landmark(topic)
+    names = [topic, *(lane.id for lane in scene.roads.lanes if lane.road == topic), *(place.names() if place is not None else [])]
+    if any(n.lower().replace("_", " ") in said for n in names):  # by any of its names ("the pedestrian crossing")
+        return True
     if place is None:
         return False
     looked_at = [str(i) for c in calls for i in ([c.args["asset"]] if "asset" in c.args else c.args.get("assets", []))]
@@ -754,6 +756,7 @@ def _not_the_extreme(request: Request, effect: Effect, scene: Scene) -> list[str
 
 
 # "Further from the bus stop", "closer to the library": the way the distance to the place must go.
+_NEAREST_OF = re.compile(r"\b(?:nearest|closest)\b")
 _NEARER = re.compile(r"\b(?:closer|nearer)(?: to)?\b|\btowards?\b")
 _FURTHER = re.compile(r"\b(?:further|farther|more)(?: away)? from\b|\baway from\b")
 

@@ -101,6 +101,10 @@ _RELATION_WORDS = frozenset(
         "lane",
         "sidewalk",
         "pavement",
+        "footway",
+        "footpath",
+        "walkway",
+        "verge",
         "kerb",
         "curb",
         "ground",
@@ -123,7 +127,8 @@ _WEATHER_NAMES = ("rain", "snow", "fog", "cloud", "overcast", "drizzle", "downpo
 _KIND_OF_WEATHER = {"rain": "rain", "drizzle": "rain", "downpour": "rain", "snow": "snow", "fog": "fog",
                     "cloud": "cloudy", "overcast": "cloudy",
                     "sunny": "clear", "sunshine": "clear", "clear sk": "clear"}
-_WEATHER_DENIED = re.compile(r"(?:\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently)\b|n't\b)[^,.;]*$")
+_WEATHER_DENIED = re.compile(r"(?:\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently|clear|lift)\b"
+                             r"|n't\b)[^,.;]*$")  # "clear the fog", "lift the fog": away with it
 _WEATHER_ENDED = re.compile(r"\w*(?:\s+\S+){0,2}?\s+(?:stops?|ends?|clears?|go(?:es)? away|lets? up)\b")
 # Clock times said by name: the time tool has presets for them, checked as parts of the day.
 _NAMED_TIMES = ("midnight", "noon", "midday")
@@ -140,7 +145,8 @@ _OUGHT = re.compile(r"[^,.;]*\b(?:should|must|needs? to|has to|have to|ought to)
 # is where something is, not something the plan must act on.
 _LOCATIVE = re.compile(
     r"\b(behind|beside|next to|in front of|near|around|by|past|alongside|opposite|across from|beyond"
-    r"|towards?|(?:closer|nearer) to|nearer|(?:further|farther)(?: away)? from|away from)\s+"  # "5 m closer to the bench": where, not what
+    r"|towards?|(?:closer|nearer) to|nearer|(?:further|farther)(?: away)? from|away from"  # "5 m closer to the bench": where, not what
+    r"|same colou?r as|colou?red like|match(?:es|ing)?(?: the colou?r of)?)\s+"  # "the same colour as the bus": a model, not what
     r"(?:(?:the|a|an|that|this|those|these|its|their|our)\s+)?(?:[a-z]+\s+)?$"
 )
 # Category names that are also the planner's verbs ("stop the ego"): not a thing named.

@@ -35,9 +35,10 @@ REMOVE_WORDS = re.compile(
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
-    r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)"
+    r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)(?![^.;]*\b(?:into|onto|over to|somewhere (?:in|on|by|near))\b)"
     # "get those cars out of lot B": gone from there (moving them elsewhere says where to)
-    r"|(?:get|take|clear) (?:\w+ ){1,3}out of (?![^,.;]*\b(?:into|to|onto|and (?:put|park|move))\b)"
+    # ("get the SUV out of the shot, somewhere in the other car park": a move, its place said after the comma)
+    r"|(?:get|take|clear) (?:\w+ ){1,3}out of (?![^.;]*\b(?:into|to|onto|somewhere (?:in|on|by|near)|and (?:put|park|move))\b)"
     # "clear most of the cars out of lot B", "clear the junk off the road": gone from there
     r"|clear (?:\w+ ){1,4}(?:out of|off|from)"
     r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much"

@@ -233,3 +233,113 @@ def test_three_letters_swapped_are_the_one_short_word_they_spell(campus):
     assert repair("whihc lane is the eog in", campus).text == "which lane is the ego in"
     assert repair("move teh bsu to lot a", campus).text == "move the bus to lot a"
     assert repair("ok thx", campus).text == "ok thx"  # no word of three letters in another order
+
+
+@pytest.mark.parametrize(("prompt", "level"), [("turn the rain down", 0.3), ("make the rain lighter", 0.3), ("less rain", 0.3),
+                                               ("heavier rain", 0.9), ("make it rain harder", 0.9)])
+def test_the_weather_there_is_made_stronger_or_weaker_from_where_it_is(session, prompt, level):
+    assert session.submit("make it rain").ok
+    assert session.scene.environment.weather.intensity == pytest.approx(0.6)
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    weather = session.scene.environment.weather
+    assert weather.kind == "rain" and weather.intensity == pytest.approx(level)
+    assert session.scene.environment.lighting.exposure == 1.0  # "lighter" rain is no brighter picture
+
+
+def test_no_more_of_a_weather_ends_it(session):
+    assert session.submit("make it foggy").ok
+    assert session.submit("no more fog").ok
+    assert session.scene.environment.weather.kind == "clear"
+
+
+def test_the_same_colour_as_another_thing_is_its_colour(session):
+    assert session.submit("add a bus on Main Street").ok and session.submit("paint the bus red").ok
+    bus = session.scene.asset("bus_1")
+    assert bus is not None and bus.appearance.rgba is not None
+    report = session.submit("make the SUV the same colour as the bus")
+    assert report.ok, report.error
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.appearance.rgba == pytest.approx(bus.appearance.rgba, abs=0.01)
+    assert session.scene.asset("bus_1") == bus
+
+
+@pytest.mark.parametrize(("prompt", "first"), [("which car is the heaviest?", "heaviest cars: suv_1"),
+                                               ("what is the tallest thing here?", "tallest asset: street_light_1"),
+                                               ("which is the smallest sign?", "smallest signs: stop_sign_1")])
+def test_a_superlative_of_size_or_weight_names_the_one_with_its_figure(session, prompt, first):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert (report.answer or "").startswith(first)
+
+
+@pytest.mark.parametrize(("prompt", "kind", "top"), [("Improve visibility.", "fog", 0.5), ("clear the fog a bit", "fog", 0.5),
+                                                     ("clear the fog", "clear", 0.0), ("lift the fog", "clear", 0.0)])
+def test_seeing_better_through_fog_thins_or_lifts_it(session, prompt, kind, top):
+    assert session.submit("Roll in a dense fog.").ok
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    weather = session.scene.environment.weather
+    assert weather.kind == kind and weather.intensity <= top
+
+
+def test_how_things_are_said_after_a_command_is_its_reason_never_a_request(session):
+    before = session.scene.model_dump_json()
+    report = session.submit("get rid of the fountain, it's a trip hazard at night")
+    assert not report.ok and "fountain is part of the map" in (report.error or "")
+    assert session.scene.model_dump_json() == before  # never made night
+    report = session.submit("add a cone by the east gate, that's where the works are")
+    assert report.ok, report.error
+    assert session.scene.count("traffic_cone") == 1
+
+
+@pytest.mark.parametrize(("prompt", "first"), [
+    ("Which car park is closest to the Engineering Hall entrance?", "nearest landmark to Engineering Hall entrance: parking lot A"),
+    ("Which marked pedestrian crossing is nearest the fire hydrant?", "nearest landmark to fire_hydrant_1: north crosswalk"),
+    ("what's the light like right now?", "weather: clear; time of day: 12:00")])
+def test_a_place_asked_for_by_its_kind_is_compared_with_its_like(session, prompt, first):
+    report = session.submit(prompt)
+    assert report.ok, report.error
+    assert (report.answer or "").startswith(first)
+
+
+def test_traffic_coming_the_other_way_drives_the_oncoming_lane(session):
+    report = session.submit("A spot of traffic coming the other way, perhaps.")
+    assert report.ok, report.error
+    added = [a for a in session.scene.assets if a.category == "passenger_car" and a.id not in ("passenger_car_1", "passenger_car_2")]
+    assert added and all(a.behaviour.kind == "drive_lane" and a.behaviour.lane == "main_westbound" for a in added)
+
+
+def test_out_of_the_shot_with_somewhere_said_is_a_move_there(session):
+    report = session.submit("get the SUV out of the shot, somewhere in the other car park")
+    assert report.ok, report.error
+    suv, lot = session.scene.asset("suv_1"), session.scene.landmark("parking lot A")
+    assert suv is not None and lot is not None and math.dist((suv.pose.x, suv.pose.y), lot.position) < 20
+
+
+def test_a_cordon_of_no_kind_said_round_a_thing_on_the_grass_is_of_bollards(session):
+    report = session.submit("Cordon off the fountain, please.")
+    assert report.ok, report.error
+    assert session.scene.count("bollard") >= 4 and session.scene.count("road_barrier") == 0
+
+
+@pytest.mark.parametrize(("said", "repaired"), [("mvoe the ego 6 metrs forwrd", "move the ego 6 meters forward"),
+                                                ("how far is lot A from the main gat", "how far is lot A from the main gate"),
+                                                ("how many tress are near the fountian", "how many trees are near the fountain")])
+def test_slips_in_units_short_words_and_counted_things_are_repaired(campus, said, repaired):
+    assert repair(said, campus).text == repaired
+
+
+def test_a_shade_before_a_colour_is_the_colour_asked_and_the_footway_is_the_sidewalk(session):
+    assert session.submit("Paint passenger_car_1 navy blue.").ok
+    car = session.scene.asset("passenger_car_1")
+    assert car is not None and car.appearance.rgba is not None and car.appearance.rgba[2] < 0.5  # navy, not blue
+    report = session.submit("Add a fire hydrant on the footway by the Engineering Hall entrance.")
+    assert report.ok, report.error
+    assert session.scene.count("fire_hydrant") == 2
+
+
+def test_the_thing_nearest_a_place_goes_however_far_it_stands(session):
+    report = session.submit("take out the lampost nearest the fountian")
+    assert report.ok, report.error
+    assert session.scene.count("street_light") == 11

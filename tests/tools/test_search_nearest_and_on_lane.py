@@ -103,3 +103,12 @@ def test_furthest_from_lists_the_furthest_first_and_leaves_the_reference_out(cam
     gaps = [result.data["distances"][i] for i in ids]
     assert gaps == sorted(gaps, reverse=True)
     assert result.text.startswith(f"furthest tree from tree_2: {ids[0]}")
+
+
+def test_most_orders_by_the_figure_and_names_the_first_with_it(campus):
+    from drivetwin.tools.search import FindAssets, FindAssetsArgs
+
+    result = FindAssets().propose(FindAssetsArgs(category="vehicles", most="heaviest"), campus)
+    masses = [a.physics.mass for i in result.data["ids"] if (a := campus.asset(i)) is not None]
+    assert masses == sorted(masses, reverse=True)
+    assert result.text.startswith(f"heaviest vehicles: {result.data['ids'][0]}") and f"{masses[0]:g} kg" in result.text

@@ -477,10 +477,15 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[Too
         colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
     if colour is None and r.has(_CONSPICUOUS):
         colour = CONSPICUOUS_COLOUR
+    like = _COLOUR_FROM.search(r.low) if colour is None else None
+    source = named_at(scene, f" {r.low[like.end():]}", []) if like is not None else None
+    model = scene.asset(source) if source is not None else None
+    if model is not None and model.appearance.rgba is not None:  # "the SUV the same colour as the bus": the bus's colour
+        colour = "#" + "".join(f"{round(float(c) * 255):02x}" for c in model.appearance.rgba[:3])
     material = md.material_said(r.masked)
     if colour is None and material is None:
         return None
-    ids = referenced(r, scene, memory, notes)
+    ids = [i for i in referenced(r, scene, memory, notes) if model is None or i != model.id]
     if not ids and not r.mentions and notes.subject:
         ids = notes.subject  # "the ego should be hard to miss; bright yellow would do": the earlier clause's thing
     if not ids:
@@ -635,6 +640,8 @@ def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[Too
     return [ToolCall(tool="set_behaviour", args={"asset": found.id, "behaviour": spec})]
 
 
+# A colour said as another thing's: "the same colour as the bus", "to match the bench".
+_COLOUR_FROM = re.compile(r"\b(?:same colou?r as|colou?r of|colou?red like|match(?:es|ing)?(?: the colou?r of)?)\s+")
 # An amount said vaguely: "some", "a few" of them.
 _VAGUE_PART = re.compile(r"\b(?:some|several|a few|a couple|a handful)\b")
 # A thing pointed back at ("remove it", "get rid of them"): never a place of the map.

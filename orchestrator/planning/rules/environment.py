@@ -25,7 +25,7 @@ _INTENSITY = re.compile(rf"(?:intensity (?:of |at |to |=\s*)?|strength (?:of )?)
 # Weather kinds tried in order: "stop the rain" is clear before it is rain.
 _WEATHER_ORDER = ("clear", "snow", "fog", "rain", "cloudy")
 # Words that deny the weather after them: "no more fog", "we don't want any rain", "get rid of the snow".
-_DENIED = r"\b(?:no|not|don't|do not|without|never|get rid of|stop|end|enough) "
+_DENIED = r"\b(?:no|not|don't|do not|without|never|get rid of|stop|end|enough|clear|lift) "
 # Words that make "light" mean lamps, not a light drizzle.
 _LAMP_CONTEXT = ("street", "streets", "lamps", "headlights", "lights", "light up", "lit", "switch", "turn")
 
@@ -222,9 +222,39 @@ def brighter(r: Reading, now: Environment) -> ToolCall | None:
     return ToolCall(tool="set_lighting", args={"exposure": round(exposure, 2)})
 
 
+# The weather there is, said stronger or weaker: "heavier rain", "turn the fog down", "make the rain lighter".
+_MORE_OF_IT = re.compile(r"(?<!no )(?<!any )\b(?:more|heavier|thicker|harder|stronger|denser|worse|intensify|increase"
+                         r"|(?:turn|crank|ramp|bump|dial) (?:\w+ ){0,2}up)\b")
+_LESS_OF_IT = re.compile(r"\b(?:less|lighter|thinner|weaker|softer|milder|ease|eases|reduce|lower|(?:tone|turn|dial) (?:\w+ ){0,2}down"
+                         r"|not as (?:heavy|thick|hard|strong|dense)|clear (?:\w+ ){0,2}(?:a bit|a little|slightly|somewhat))\b")
+# Visibility is the other way round: "improve visibility" is less fog, "poorer visibility" more.
+_SEE_BETTER = re.compile(r"\b(?:improve\w*|better|increase\w*|raise|more|clearer)\s+(?:the\s+)?visibility\b|\bvisibility\s+(?:better|up|improved)\b")
+_SEE_WORSE = re.compile(r"\b(?:reduce\w*|lower\w*|worse|poor\w*|less|cut|decrease\w*)\s+(?:the\s+)?visibility\b|\bvisibility\s+(?:worse|down|poor)\b")
+# How much stronger "heavier" makes the weather there is; "lighter" halves it.
+STRONGER_STEP = 0.3
+
+
+def stronger(r: Reading, now: Environment) -> ToolCall | None:
+    """The weather there is, made stronger or weaker as the words say ("heavier rain", "turn the
+    fog down"); None when they name another weather or no change of its strength."""
+    kind, level = now.weather.kind, now.weather.intensity
+    if kind == "clear" or kind not in lx.WEATHER_WORDS or not r.has(lx.WEATHER_WORDS[kind]):
+        return None
+    more, less = _MORE_OF_IT.search(r.low), _LESS_OF_IT.search(r.low)
+    if re.search(r"\bvisibility\b", r.low):  # "improve visibility": less of it
+        more, less = _SEE_WORSE.search(r.low), _SEE_BETTER.search(r.low)
+    if bool(more) == bool(less):
+        return None
+    new = round(level / 2, 2) if less else round(min(1.0, level + STRONGER_STEP), 2)
+    return ToolCall(tool="set_weather", args={"kind": kind, "intensity": new}) if abs(new - level) >= 0.05 else None
+
+
 def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:
     """Every environment setting the clause asks for, in a stable order; `now` (the scene's)
-    for settings said relative to it ("later", "brighter")."""
+    for settings said relative to it ("later", "brighter", "heavier rain")."""
+    strength = stronger(r, now) if now is not None else None
+    if strength is not None:  # "make the rain lighter": weaker rain, never a brighter picture
+        return [strength]
     relative = [c for c in (shifted_time(r, now), brighter(r, now)) if c is not None] if now is not None else []
     if relative:
         return relative
@@ -248,4 +278,4 @@ def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:
     return calls
 
 
-__all__ = ["LIGHTS_DOWN", "brighter", "environment", "lights", "shifted_time", "time_of_day", "weather"]
+__all__ = ["LIGHTS_DOWN", "brighter", "environment", "lights", "shifted_time", "stronger", "time_of_day", "weather"]

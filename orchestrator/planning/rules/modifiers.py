@@ -166,11 +166,13 @@ def colours_asked(low: str) -> list[str]:
     """The colours a request asks things to be made, in order: every colour named but those that
     select or describe ("paint the red car blue" asks for blue only)."""
     starts = {m.start for m in find_categories(low)}
-    asked = []
+    asked: list[str] = []
     for m in _COLOUR_SAID.finditer(low):
         rest = low[m.end(2) :]
         if m.group(1) or m.group(3) or m.end(2) + len(rest) - len(rest.lstrip()) in starts:
             continue
+        if asked and re.fullmatch(rf"{re.escape(asked[-1])}\s+", low[m.start(2) - len(asked[-1]) - 1 : m.start(2)]):
+            continue  # "navy blue", "lime green": the first word is the shade of the second
         asked.append(m.group(2))
     return asked
 

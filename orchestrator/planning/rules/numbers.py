@@ -227,5 +227,9 @@ def speed_said(low: str) -> re.Match[str] | None:
     return _SPEED_MS.search(low) or _SPEED_BARE.search(low)
 
 
-__all__ = ["FOOT_M", "MAX_COUNT", "NUMBER", "RADIUS", "SPACING", "SPEED_UNIT", "Number", "NumberError", "count", "finite", "numbers_in", "parse",
+# The units measures are said in, spelt out: what a slip in one ("6 metrs") is repaired to.
+UNIT_WORDS = ("metres", "meters", "metre", "meter", "kilometres", "kilometers", "seconds", "second", "minutes", "hours", "degrees",
+              "yards", "feet", "inches")
+
+__all__ = ["FOOT_M", "MAX_COUNT", "NUMBER", "RADIUS", "SPACING", "SPEED_UNIT", "UNIT_WORDS", "Number", "NumberError", "count", "finite", "numbers_in", "parse",
            "radius_said", "spacing_said", "speed_said", "spelt_measures"]

@@ -92,7 +92,7 @@ from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog, is_layout_kit, nearest_categories
 from drivetwin.worlds.scene import DriveLane, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, surface_at
+from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, surface_at
 
 PROMPT_VERSION = "rules-2"
 # The guess noted when a clause says where but names no place the world has.
@@ -295,6 +295,7 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())
         pieces = [q for p in re.split(rf"\s+and\s+(?=(?:{'|'.join(_VERBS)}|give (?:me|us))\b)", text) for q in _comma_and(p)]
         pieces = [q for p in pieces for q in _SAME_AT.split(p)]  # "..., and the same at lot B": a clause of its own
+        pieces = [q for p in pieces for q in _WHY_AFTER.split(p)] if commands(text.lower()) else pieces  # "..., it's a trip hazard at night"
         pieces = [q for p in pieces for q in _lights_apart(p)]  # "a car pulling in, with its headlights on"
         # "get the SUV to pull out and drive off east": the one named before does the second thing too
         pieces = [f"have it {q}" if n and _GOES_ON.match(q) and ph.find_categories(pieces[n - 1]) and not ph.find_categories(q) else q
@@ -303,6 +304,10 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
     return out
 
 
+# How things are, said after a command as its reason: "get rid of the fountain, it's a trip hazard at night".
+# ("..., that's our courier" names what was added: see named_as)
+_WHY_AFTER = re.compile(r",\s+(?=(?:it|they|there)(?:'s|'re| is| are) (?!(?:got to|gotta|going to|supposed to|meant to|time)\b)"
+                        r"|that(?:'s| is) (?:where|why|because|how|what)\b)")
 # The same again said after an edit in one breath: "cones across the lot A entrance, and the same at lot B".
 _SAME_AT = re.compile(rf"(?:,\s*|\s+)(?:and\s+|then\s+)*(?={SAID_AGAIN_AT})")
 # Lights said as a detail of a thing added: "a car pulling in, with its headlights on" switches them too.
@@ -464,14 +469,20 @@ class RulePlanner:
                 calls.extend(again)
                 previous = again
                 continue
-            clause_calls = _plan_clause(reading, asked, scene, context.memory, notes)
+            statement = bool(intro or _STATEMENT.match(_INTERJECTION.sub("", reading.low))) and not asked
+            try:
+                clause_calls = _plan_clause(reading, asked, scene, context.memory, notes)
+            except PlanningError:
+                if not statement or len(clauses) == 1:
+                    raise
+                continue  # "..., that's where the works are": how things are, said as context, asks nothing of its own
             if reading.landmark:
                 notes.place = {"relation": "at", "target": reading.landmark}
             if clause_calls is None:
                 skipped.append(clause)
                 notes.scene_set = notes.place if reading.landmark else notes.scene_set
                 continue
-            if (intro or _STATEMENT.match(_INTERJECTION.sub("", reading.low))) and not asked:
+            if statement:
                 described.extend(clause_calls)  # "the bench by the stop is in the way": context, unless all there is
                 if set(notes.subject) & set(notes.coming[coming:]):
                     notes.subject = notes.named  # nor is it what a later "it" means
@@ -1242,6 +1253,19 @@ def _fallback_place(memory: Memory) -> dict[str, Any]:
     )
 
 
+# A cordon of no kind said, round a thing or place off the road, is of bollards: barriers stand on roads.
+_GROUND_CORDON = "bollard"
+_BARRIERS_SAID = re.compile(r"\b(?:barriers?|barricades?|jersey)\b")
+
+
+def _stands_off_road(scene: Scene, where: dict[str, Any] | None) -> bool:
+    """Whether the thing or place a layout goes round stands where barriers may not (grass, ground)."""
+    target = str((where or {}).get("target") or "")
+    thing, mark = scene.asset(target), scene.landmark(target)
+    point = (thing.pose.x, thing.pose.y) if thing is not None else mark.position if mark is not None else None
+    return point is not None and surface_at(scene, *point) not in DRIVABLE
+
+
 def _beside_last(scene: Scene, memory: Memory) -> dict[str, Any] | None:
     """Beside the last thing added and still there: where "more cones" go (the Worker spreads them)."""
     recent = [i for i in memory.last_added() if scene.asset(i) is not None]
@@ -1520,6 +1544,9 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         notes.guess(_UNRECOGNISED)  # "line up six people at the stop": which place is asked, never the middle of the map
     # "the student car park should look busy: a row of six cars": the place of the clause before
     args["location"] = where or (dict(notes.place) if notes.place else None) or _fallback_place(memory)
+    if args["categories"] == ["road_barrier"] and args["shape"] == "ring" and not _BARRIERS_SAID.search(r.low) \
+            and _stands_off_road(scene, args["location"]):
+        args["categories"] = [_GROUND_CORDON]  # "cordon off the fountain": on the grass, with what stands there
     if r.has(("slalom",)):  # cones a car weaves between: a few, well apart, down the middle of the lane
         if args.get("count") == 1:
             args.pop("count")  # "a cone slalom": one slalom, not one cone

@@ -126,7 +126,7 @@ _ON_OFF = re.compile(r"\b(?:on or off|off or on|switched on|turned on|lit|on|off
 # ("lights?" alone asks for the street lights, things of the scene.)
 _SETTING_ALONE = re.compile(r"\W*(?:and\s+|the\s+)*(?:weather|time|environment|conditions)"
                             r"(?:\W+(?:and\W+)?(?:the\s+)?(?:weather|time|lighting|environment|conditions))*\W*$")
-_SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|how (?:dark|bright|light)|how(?:'s| is) the light"
+_SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|the hour|how (?:dark|bright|light)|(?:how|what)(?:'s| is) the (?:light|lighting|visibility)"
                       r"|lights? (?:on|off)|lit|environment|conditions|(?:it|things) like out(?: there| here|side)?)\b")
 
 
@@ -227,6 +227,11 @@ def of_group(call: ToolCall, r: Reading) -> ToolCall:
 # A choice between two states of the light or the weather: "day or night?", "in the dark, or still daytime?".
 _STATES = r"(?:dark|darkness|daytime|day|daylight|night|night-?time|light|bright|raining|rainy|dry|sunny|foggy|snowing|snowy|wet|clear|cloudy)"
 _SETTING_EITHER = re.compile(rf"\b{_STATES}\b[^.?!]*\bor\b[^.?!]*\b{_STATES}\b")
+# A place asked for by which of its kind it is: "which car park ...", "which marked pedestrian crossing ...".
+_WHICH_PLACE = re.compile(r"\bwhich\s+(?:[a-z]+\s+){0,2}$")
+# A superlative of size or weight: "the tallest thing", "which car is the heaviest" (as find_assets orders by).
+_MOST_SAID = re.compile(r"\b(tallest|highest|shortest|heaviest|lightest|longest|widest|biggest|largest|smallest|tiniest)\b")
+_MOST_AS = {"highest": "tallest", "largest": "biggest", "tiniest": "smallest"}
 # Where to cross a road on foot: "where can people cross the road?", "where should I cross?".
 _WHERE_TO_CROSS = re.compile(r"\bwhere\s+(?:can|could|should|do|does|would|may|might|are|is)\s+(?:[a-z']+\s+){1,3}?cross\b")
 
@@ -248,6 +253,15 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "is it raining?", "what's the weather like"
     if _SETTING_EITHER.search(low) and not r.mentions:  # "am I doing this run in the dark, or is it still daytime?"
         return Part(ToolCall(tool="describe_environment", args={}), None)
+    most = _MOST_SAID.search(low)
+    if most is not None and not _NEAREST.search(low) and not re.search(r"\b(?:lanes?|roads?|streets?|buildings?|landmarks?|places?)\b", r.masked):
+        # "which car is the heaviest?", "the smallest sign": every one of the kind, by its figure
+        head = r.mentions[0] if r.mentions else None
+        word = ph.singular(r.low[head.start : head.end].strip()) if head is not None else next(
+            (w for w in map(ph.singular, ph.tokens(low)) if w in md.catalog_tags()), "")
+        kind = f"{word}s" if word in md.catalog_tags() else head.category if head is not None else None
+        ranked = {"most": _MOST_AS.get(most.group(1), most.group(1)), **({"category": kind} if kind else {})}
+        return Part(ToolCall(tool="find_assets", args=ranked), None)
     if _WHERE_TO_CROSS.search(low) and {m.category for m in r.mentions} <= {"pedestrian"}:
         # "where can people cross the road?": the marked crossings, nearest the place said first
         near = {"nearest_to": r.landmark} if r.landmark else {}
@@ -436,6 +450,11 @@ def _nearest(r: Reading, scene: Scene, anchor: Anchor, furthest: bool = False) -
         args: dict[str, Any] = {"nearest_to": anchor.name}
         if subject_landmark or kind_word:  # "how far is the bus stop from us", "which gate is nearest"
             args["query"] = subject_landmark or kind_word
+        said = _WHICH_PLACE.search(r.low[: r.landmark_at]) if subject_landmark else None
+        mark = scene.landmark(subject_landmark) if said is not None and subject_landmark else None
+        alias = next((n for n in mark.names() if r.low.startswith(ph.normalise(n).strip(), r.landmark_at)), None) if mark else None
+        if alias is not None:  # "which car park is closest": the place called so, and those of its kind (the Worker compares them)
+            args["query"] = alias
         return Part(ToolCall(tool="find_landmarks", args=args), anchor)
     args = {"furthest_from" if furthest else "nearest_to": anchor.name}
     category = next((m.category for m in r.mentions if _only_instance(r, scene, m) != anchor.name), None)

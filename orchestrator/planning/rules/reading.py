@@ -232,7 +232,8 @@ def _head(words: list[str]) -> str:
 COUNT_BEFORE_OF = ("lot", "lots", "load")
 # The lane beside the car under test that traffic drives the other way in: "the oncoming lane".
 ONCOMING_WORDS = ("oncoming", "opposing", "opposite", "contraflow", "counterflow")
-_ONCOMING = re.compile(rf"\b(?:{'|'.join(ONCOMING_WORDS)})(?:\s+traffic)?\s+lane\b|\blane\s+(?:of|for|with)\s+oncoming\s+traffic\b")
+_ONCOMING = re.compile(rf"\b(?:{'|'.join(ONCOMING_WORDS)})(?:\s+traffic)?\s+lane\b|\blane\s+(?:of|for|with)\s+oncoming\s+traffic\b"
+                       r"|\boncoming\b|\b(?:coming|driving|heading) (?:the other way|towards (?:us|the ego))\b")  # "traffic coming the other way"
 
 
 def _heading_near(lane: Lane, x: float, y: float) -> tuple[float, float]:

@@ -21,7 +21,7 @@ from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import CLOCK_WORDS
 from drivetwin.orchestrator.planning.rules.inflection import forms
 from drivetwin.orchestrator.planning.rules.modifiers import MATERIAL_WORDS
-from drivetwin.orchestrator.planning.rules.numbers import spelt_measures
+from drivetwin.orchestrator.planning.rules.numbers import UNIT_WORDS, spelt_measures
 from drivetwin.orchestrator.planning.rules.reading import ONCOMING_WORDS
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
@@ -228,6 +228,7 @@ def _domain_words() -> frozenset[str]:
         tuple(lx.ORDINALS),
         tuple(lx.COLLECTIVE_COUNTS),
         ONCOMING_WORDS,  # "the oncoming lane", never "the on coming lane"
+        UNIT_WORDS,  # "6 metrs forward": metres
     ):
         words |= _words_of(table)
     for group in (lx.WEATHER_WORDS, lx.BEHAVIOUR_WORDS, lx.CONCEPTS):
@@ -303,7 +304,8 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
     if len(low) == MIN_REPAIR_LEN - 1 and low.isalpha() and not is_known(low, vocab) and not is_english(low):
         # three letters, two swapped: "eog" is the ego, "bsu" a bus (the one such thing, never a guess between two)
         swapped = {t for t in repair_targets(vocab) if len(t) == len(low) and sorted(t) == sorted(low) and edits(low, t) == 1}
-        return swapped.pop() if len(swapped) == 1 else None
+        cut = {t for t in repair_targets(vocab) if len(t) == len(low) + 1 and t.startswith(low)}  # "the main gat": its last letter lost
+        return swapped.pop() if len(swapped) == 1 else cut.pop() if not swapped and len(cut) == 1 else None
     if len(low) < MIN_REPAIR_LEN or is_known(low, vocab) or is_english(low):
         return None
     joined = _joined(vocab)
@@ -673,7 +675,8 @@ def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "", 
     when the word is known, a number, or one slip from no thing or from more than one. `phrases`
     are the names a thing's word opens ("the buss stop": the bus stop)."""
     low = word.lower()
-    if len(low) < MIN_REPAIR_LEN or not _AFTER_DETERMINER.search(before) or low in ph.NUMBER_WORDS or is_known(low, vocab):
+    if len(low) < MIN_REPAIR_LEN or not (_AFTER_DETERMINER.search(before) or _AFTER_COUNT.search(before)) or low in ph.NUMBER_WORDS \
+            or is_known(low, vocab):
         return None
     word_slip = is_english(low)  # "tress", "buss": a word typed for a thing, never a thing longer ("a tuck" is no truck)
     if not word_slip and not _AFTER_COUNT.search(before):
@@ -750,6 +753,21 @@ def _thing_words() -> tuple[str, ...]:
     return tuple(sorted({w.lower() for cat in catalog().values() for w in cat.words if " " not in w}))
 
 
+# A word said right after a number: its unit, as written.
+_AFTER_A_NUMBER = re.compile(r"(\d\s*)([a-z]{4,})\b", re.IGNORECASE)
+
+
+def _unit_slip(word: str, repairs: list[str]) -> str:
+    """The unit one slip from `word` ("metrs": metres, "degres": degrees), or the word as written when
+    it is a unit or near none (or units of different kinds)."""
+    low = word.lower()
+    near = sorted(u for u in UNIT_WORDS if edits(low, u) == 1) if low not in UNIT_WORDS else []
+    if not near or len({u[:3] for u in near}) > 1:
+        return word
+    repairs.append(f"{word} -> {near[0]}")
+    return near[0]
+
+
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
@@ -796,6 +814,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
     repairs: list[str] = []
+    text = _AFTER_A_NUMBER.sub(lambda m: m.group(1) + _unit_slip(m.group(2), repairs), text)  # "6 metrs forward": metres
     ids = {a.id for a in scene.all_assets()}
 
     def fix_id(m: re.Match[str]) -> str:  # "passanger_car_1": the id one or two slips away, its number kept
