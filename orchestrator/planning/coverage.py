@@ -534,7 +534,7 @@ def _half_of(hour: int) -> str | None:
 def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> list[str]:
     """A plural or bare category ("remove cones", "get rid of pedestrian") of which the plan
     removes only some, with no number, place or state in the request to say which."""
-    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some|one of|a few|half|a couple|a pair|several|a handful)\b", masked):
+    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some of|one of|a few|half|a couple|a pair|several|a handful)\b", masked):
         return []
     out = []
     for m in named_in(masked):
