@@ -31,6 +31,11 @@ TIME_PRESETS: dict[str, str] = {
 }
 
 
+def hex_colour(rgba: tuple[float, ...]) -> str:
+    """'#rrggbb' for an RGBA colour: how a colour read off one asset is given to another."""
+    return "#" + "".join(f"{round(float(c) * 255):02x}" for c in rgba[:3])
+
+
 def resolve_colour(text: str) -> tuple[float, float, float, float]:
     """An RGBA colour from a name ('red') or '#rrggbb'."""
     key = text.strip().lower()

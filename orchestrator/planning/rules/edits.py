@@ -29,7 +29,7 @@ from drivetwin.orchestrator.planning.rules.reading import (
     find_count,
     find_place,
 )
-from drivetwin.tools.appearance import COLOURS
+from drivetwin.tools.appearance import COLOURS, hex_colour
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import lane_under
 from drivetwin.worlds.catalog import Category, catalog
@@ -481,7 +481,7 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[Too
     source = named_at(scene, f" {r.low[like.end():]}", []) if like is not None else None
     model = scene.asset(source) if source is not None else None
     if model is not None and model.appearance.rgba is not None:  # "the SUV the same colour as the bus": the bus's colour
-        colour = "#" + "".join(f"{round(float(c) * 255):02x}" for c in model.appearance.rgba[:3])
+        colour = hex_colour(model.appearance.rgba)
     material = md.material_said(r.masked)
     if colour is None and material is None:
         return None

@@ -88,8 +88,10 @@ from drivetwin.orchestrator.planning.rules.repeat import (
 )
 from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces, trades_places
 from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID, is_known, repair, vocabulary
-from drivetwin.tools.appearance import COLOURS
+from drivetwin.tools.appearance import COLOURS, hex_colour
 from drivetwin.tools.base import ToolCall
+from drivetwin.tools.errors import ToolError
+from drivetwin.tools.locate import resolve_target
 from drivetwin.worlds.catalog import catalog, is_layout_kit, nearest_categories
 from drivetwin.worlds.scene import DriveLane, Scene
 from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, surface_at
@@ -716,8 +718,7 @@ def _alike(calls: list[ToolCall], low: str, scene: Scene, memory: Memory) -> lis
             target = next((a for i in reversed(memory.last_added(str(category))) if (a := scene.asset(i)) is not None), None)
         rgba = target.appearance.rgba if target is not None else None
         if call.tool == "add_asset" and rgba is not None and "colour" not in call.args:
-            hexed = "#" + "".join(f"{round(float(c) * 255):02x}" for c in rgba[:3])
-            call = call.model_copy(update={"args": {**call.args, "colour": hexed}})
+            call = call.model_copy(update={"args": {**call.args, "colour": hex_colour(rgba)}})
         doing = target.behaviour.model_dump() if target is not None else {}
         if call.tool == "add_asset" and doing.get("kind") in _COPIED_DOINGS and "behaviour" not in call.args:
             copied = {k: v for k, v in doing.items() if k in ("kind", "lane", "speed") and v is not None}
@@ -1260,10 +1261,11 @@ _BARRIERS_SAID = re.compile(r"\b(?:barriers?|barricades?|jersey)\b")
 
 def _stands_off_road(scene: Scene, where: dict[str, Any] | None) -> bool:
     """Whether the thing or place a layout goes round stands where barriers may not (grass, ground)."""
-    target = str((where or {}).get("target") or "")
-    thing, mark = scene.asset(target), scene.landmark(target)
-    point = (thing.pose.x, thing.pose.y) if thing is not None else mark.position if mark is not None else None
-    return point is not None and surface_at(scene, *point) not in DRIVABLE
+    try:
+        target = resolve_target(scene, str((where or {}).get("target") or ""))
+    except ToolError:
+        return False
+    return surface_at(scene, target.x, target.y) not in DRIVABLE
 
 
 def _beside_last(scene: Scene, memory: Memory) -> dict[str, Any] | None:

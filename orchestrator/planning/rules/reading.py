@@ -17,7 +17,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import AssetInstance, Lane, Scene
-from drivetwin.worlds.surface import nearest_lane
+from drivetwin.worlds.surface import PolylinePoint, nearest_lane, nearest_on_polyline
 
 # An article before a word; "lot A" at the end of a name keeps its letter.
 _ARTICLES = re.compile(r"\b(the|a|an)\s+(?=[a-z0-9])")
@@ -236,17 +236,6 @@ _ONCOMING = re.compile(rf"\b(?:{'|'.join(ONCOMING_WORDS)})(?:\s+traffic)?\s+lane
                        r"|\boncoming\b|\b(?:coming|driving|heading) (?:the other way|towards (?:us|the ego))\b")  # "traffic coming the other way"
 
 
-def _heading_near(lane: Lane, x: float, y: float) -> tuple[float, float]:
-    """The unit direction a lane runs in along its segment nearest (x, y)."""
-    def gap(k: int) -> float:
-        (x1, y1), (x2, y2) = lane.centreline[k], lane.centreline[k + 1]
-        return math.dist(((x1 + x2) / 2, (y1 + y2) / 2), (x, y))
-    k = min(range(len(lane.centreline) - 1), key=gap)
-    (x1, y1), (x2, y2) = lane.centreline[k], lane.centreline[k + 1]
-    length = math.dist((x1, y1), (x2, y2)) or 1.0
-    return (x2 - x1) / length, (y2 - y1) / length
-
-
 def oncoming_lane(scene: Scene) -> Lane | None:
     """The lane of the ego's road nearest it whose traffic drives the other way; None without an
     ego on a road of two directions."""
@@ -254,10 +243,13 @@ def oncoming_lane(scene: Scene) -> Lane | None:
     own = nearest_lane(scene, ego.pose.x, ego.pose.y) if ego is not None else None
     if ego is None or own is None:
         return None
-    ux, uy = _heading_near(own, ego.pose.x, ego.pose.y)
+    def foot(lane: Lane) -> PolylinePoint:
+        return nearest_on_polyline(ego.pose.x, ego.pose.y, lane.centreline)
+
+    heading = foot(own).heading
     others = [lane for lane in scene.roads.lanes if lane.road == own.road and lane.id != own.id and lane.kind == "driving"
-              and sum(a * b for a, b in zip(_heading_near(lane, ego.pose.x, ego.pose.y), (ux, uy), strict=True)) < 0]
-    return min(others, key=lambda lane: min(math.dist(p, (ego.pose.x, ego.pose.y)) for p in lane.centreline), default=None)
+              and math.cos(foot(lane).heading - heading) < 0]  # runs the other way
+    return min(others, key=lambda lane: foot(lane).distance, default=None)
 
 
 def find_lane(scene: Scene, low: str) -> tuple[str, int, int, bool] | None:
