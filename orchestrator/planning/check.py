@@ -457,7 +457,9 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     if request.polarity == "remove":  # "I don't want any rain any more" never makes it rain
         now = scene.environment.weather
         unwanted = [str(c.args.get("kind")) for c in effect.calls if c.tool == "set_weather"
-                    and c.args.get("kind") not in (None, "clear") and re.search(rf"\b{c.args.get('kind')}", request.low)
+                    and c.args.get("kind") not in (None, "clear")
+                    # "remove the hydrant and make it rain": the removing is the other clause's
+                    and REMOVE_WORDS.search(_clause_saying(request.low, str(c.args.get("kind"))))
                     # "less foggy, please": the same weather, lighter, is what was asked
                     and not (c.args.get("kind") == now.kind and float(c.args.get("intensity", 1.0)) < now.intensity
                              and _LESS_OF_IT.search(request.low))]
@@ -494,6 +496,20 @@ def _category_descriptions() -> tuple[tuple[str, ...], Any]:
     names = tuple(placeable_categories())
     texts = [f"{n.replace('_', ' ')}: {catalog()[n].description}" for n in names]
     return names, embed(texts)
+
+
+# Where one clause of a request ends and the next begins.
+_CLAUSE_BREAK = re.compile(r"[,;.!?]|\b(?:and|then|but|also)\b")
+
+
+def _clause_saying(low: str, word: str) -> str:
+    """The clause of the request that says `word` (from its start): '' when none does."""
+    said = re.search(rf"\b{re.escape(word)}", low)
+    if said is None:
+        return ""
+    start = max((m.end() for m in _CLAUSE_BREAK.finditer(low, 0, said.start())), default=0)
+    end = next((m.start() for m in _CLAUSE_BREAK.finditer(low, said.end())), len(low))
+    return low[start:end]
 
 
 def _companions(effect: Effect) -> set[str]:

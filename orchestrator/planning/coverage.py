@@ -306,7 +306,7 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
 _SINGLES_OUT = re.compile(
     r"\s*(?:(?:number |no\. |nr |# ?)?\d+\b(?!\s*(?:m|metres?|meters?|ft|feet|foot|yards?|degrees?|deg|km|kph|mph)\b)|in\b(?!\s+colou?r)|at\b|on\b|"
     r"near|by\b|beside|next|behind|outside|inside|of\b|from\b|closest|nearest|furthest|farthest|that\b|"
-    r"which\b|who\b|with\b|parked|driving|moving|standing|across|opposite|(?:north|south|east|west)\w*\s+of\b|"
+    r"which\b|who\b|with\b|parked|driving|moving|standing|across|opposite|(?:north|south)?[\s-]?(?:north|south|east|west)\w*\s+of\b|"
     r"most\b|least\b|[a-z]+est\b|[a-z]+most\b)"
 )
 

@@ -130,6 +130,9 @@ def _thing_names() -> re.Pattern[str]:
 
 # "as it is", "as they are", "as is": how a thing is left, never a moment things happen at.
 _AS_IT_IS = re.compile(r"\bas (?:it|they|that|this) (?:is|are|was|were|stands?)\b|\bas is\b")
+# Lamps or lights switched on or off ("have the lamps turned off"); not "turn off at the junction".
+_LAMPS_SWITCHED = re.compile(r"\b(?:(?:street ?|head|vehicle |car )?lights?|(?:street ?)?lamps?|lamp posts?)\s+(?:\w+\s+)?"
+                             r"(?:turned|switched|flicked|turn|switch)\s+(?:on|off)\b")
 # A command that puts a thing somewhere, not a description of what it does.
 _PLACING = re.compile(r"\s*(?:(?:please|pls|now|just|can you|could you)\s+)*(?:move|put|place|shift|set|stand|drag|carry|relocate|bring)\b")
 
@@ -146,6 +149,7 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
         low = re.sub(rf"\b{re.escape(ph.normalise(name).strip())}\b", " place ", low)  # "bus stop" is no stop
     low = _thing_names().sub(" thing ", low)  # "the stop sign" is no stop
     low = _AS_IT_IS.sub(" ", low)  # "leave the bin as it is": no "as the ego approaches"
+    low = _LAMPS_SWITCHED.sub(" ", low)  # "the lamps turned off": switched, not a turn at the junction
     trigger = bool(TRIGGER.search(low) and re.search(r"\b(ego|it|car|m|metres?|meters?|seconds?|approach\w*)\b", low)) \
         or bool(DELAY.search(low))
     manoeuvre = any(words.search(low) for kind, words in _COMPILED[1:])

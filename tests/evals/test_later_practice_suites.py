@@ -36,6 +36,7 @@ from drivetwin.evals import (
     practice24_source,
     practice25_source,
     practice26_source,
+    practice27_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -107,6 +108,9 @@ BRIEFS: dict[str, Brief] = {
     # Eight everyday voices: film location scout, delivery-robot operator, landscape gardener, retired engineer, road
     # safety auditor, event planner, night security guard, a French visiting researcher; every cell holds 11 or 12.
     "practice26": Brief(300, 11, 11, practice26_source, multi_turn=35, planned=20, compound=20),
+    # Eight everyday voices: road-safety teacher, taxi driver, claims assessor, texting teenager, municipal traffic
+    # planner, wheelchair user, game-level designer, a Spanish speaker; every cell holds 11 or 12.
+    "practice27": Brief(310, 11, 11, practice27_source, multi_turn=40, planned=20, compound=20),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)

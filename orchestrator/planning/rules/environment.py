@@ -120,7 +120,9 @@ def time_of_day(r: Reading) -> ToolCall | None:
     if blank != r.low:  # "NIGHT!!! NOT DAY!!!": the day is what is not wanted
         r = replace(r, low=blank, masked=_TIME_DENIED.sub(lambda m: " " * len(m.group(0)), r.masked))
     said = clock_time(r.masked)
-    if said is not None and r.has(("time", "make it", "set", "at", "clock", "change", "to", "past")):
+    # "06:15, overcast": hours and minutes written with a colon are a clock time whatever the words round them
+    if said is not None and (r.has(("time", "make it", "set", "at", "clock", "change", "to", "past"))
+                             or re.fullmatch(r"\d{1,2}:\d{2}(?:\s*(?:am|pm|hrs|hours|h))?", said.text.strip())):
         return ToolCall(tool="set_time_of_day", args={"time": str(said)})  # the tool refuses "25:70"
     if r.has(("lunchtime", "lunch time", "lunch")):
         return ToolCall(tool="set_time_of_day", args={"time": "12:30"})

@@ -120,7 +120,7 @@ def find_categories(text: str) -> list[Mention]:
 @cache
 def _whole(phrase: str) -> re.Pattern[str]:
     # apart, hyphenated or closed up ("road-work"); not the first word of a place ("the bus stop"; "benches lot A" is two)
-    said = r"(?:\s|-)?".join(re.escape(w) for w in phrase.split())
+    said = r"(?:\s|-)?".join(re.escape(w) + ("s?" if i < phrase.count(" ") and len(w) > 3 else "") for i, w in enumerate(phrase.split()))  # "road works sign"
     said = "".join(rf"(?<!{w} )" for w in ("emergency", "sudden", "hard", "full", "complete", "to a")) + said if phrase == "stop" else said  # braking
     return re.compile(rf"(?<![a-z0-9_]){said}(?![a-z0-9_])(?!(?:\s+|-)(?:car park|park|parking|lot(?!\s+[a-z0-9]\b)|stop|station|rack|union)\b)")
 

@@ -772,15 +772,17 @@ def side_of(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool
 
 def _compass_of_road(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
     """"West of Campus Drive", "east of the crossroads": beyond that road's middle, or that place, that way."""
-    for said in re.finditer(r"\b(north|south|east|west)(?:ern)?\s+of\s+(?:the\s+)?([a-z][a-z ]*)", low):
+    for said in re.finditer(r"\b((?:north|south)[\s-]?(?:east|west)|north|south|east|west)(?:ern)?\s+of\s+(?:the\s+)?([a-z][a-z ]*)", low):
         rest = road_kinds_spelt(said.group(2))
+        ways = re.findall(r"north|south|east|west", said.group(1))  # "south-east of the fountain": both
         lanes = [lane for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())]
-        if lanes:
+        if lanes and len(ways) == 1:
             return f"{said.group(1)} of {lanes[0].road}", _beyond_middle(lanes, said.group(1))
         found = find_place(scene, f" {rest} ")
         mark = scene.landmark(found[0]) if found is not None else None
         if mark is not None and re.match(r"\s*(?:the\s+)?" + re.escape(ph.normalise(rest).split()[0]), rest):
-            return f"{said.group(1)} of {mark.name}", _beyond([mark.position], said.group(1))
+            tests = [_beyond([mark.position], way) for way in ways]
+            return f"{'-'.join(ways)} of {mark.name}", lambda a, tests=tests: all(test(a) for test in tests)
     return None
 
 

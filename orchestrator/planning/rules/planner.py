@@ -159,6 +159,7 @@ _VERBS = (
     "fix",
     "sort",
     "solve",
+    "let",  # "..., and let it drizzle"
 )
 _STRICT_ADD = (
     "add",
@@ -382,6 +383,12 @@ _PLACE_TAIL = re.compile(r"\s((?:by|at|near|next to|beside|outside|in front of|b
 _ONE_OF = re.compile(r"^\s*(the(?: other)?|that|this)\s+one\b", re.IGNORECASE)
 
 
+# Which of the things just named is meant, said after a comma: "..., the one by the fountain" (with
+# "and" it is another one: see _ONE_OF).
+_THE_ONE = re.compile(r",\s*(?:i mean\s+|namely\s+)?the one\s+(?=(?:(?:north|south)[\s-]?(?:east|west)|north|south|east|west|near|nearest"
+                      r"|closest|furthest|farthest|by|next|beside|behind|in|on|at|outside|opposite)\b)", re.IGNORECASE)
+
+
 def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     """A clause whose verb governs two things ("remove the hydrant and the bin", "put the bench at
     the fountain and the bin at the bus stop"), as one clause per thing, each with the verb.
@@ -389,6 +396,7 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     Only where both parts name a category and nothing lays them out together ("a ring of cones and
     barriers", "between the bus and the truck" stay one clause).
     """
+    clause = _THE_ONE.sub(" ", clause)  # "remove the tree on the quad, the one east of the fountain": which tree
     low = clause.lower()
     for name in places:  # "the bus stop" has no verb in it
         low = re.sub(rf"\b{re.escape(name)}\b", lambda m: " " * len(m.group(0)), low)
@@ -1016,6 +1024,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     # "put the lamps on the sidewalk" says where, and "lamps off, please" still switches
     switch = re.search(rf"\b(turn|switch|flick)\s+(on|off)\b|\b(turn|switch|put|flick|make)\b.*\b(on|off)\b{_SWITCH_ENDS}"
                        r"|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit|working)\b"
+                       rf"|\b(switched|turned|flicked)\s+(on|off)\b{_SWITCH_ENDS}"  # "have the street lamps switched on"
                        rf"|\b((?:street\s?|vehicle\s|car\s|head)?lights?|(?:street\s?)?lamps?)\s+(on|off)\b{_SWITCH_ENDS}", r.low)
     switch = switch or LIGHTS_DOWN.search(r.low)  # "the street lamps are out": off
     # "a car pulling in, with its headlights on": the car is what is asked for, its lights a detail

@@ -25,7 +25,7 @@ from drivetwin.orchestrator.planning.rules.numbers import UNIT_WORDS, spelt_meas
 from drivetwin.orchestrator.planning.rules.reading import ONCOMING_WORDS
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
-from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.scene import Environment, Lighting, Scene, Weather
 
 # Similarity (difflib ratio) a repair needs: "truk"/"truck" 0.89, "lite"/"light" 0.8, while
 # "drivers"/"drive" (a real word, 0.83) is protected by the inflection check, not the cutoff.
@@ -240,6 +240,8 @@ def _domain_words() -> frozenset[str]:
         words |= _words_of(words_)
     for cat in catalog().values():
         words |= _words_of(cat.words) | _words_of(cat.tags)  # "the vehicles", "any VRUs", "NPCs"
+    for setting in (Environment, Weather, Lighting):  # "intensty 0.7": the settings' own names
+        words |= _words_of(tuple(name.replace("_", " ") for name in setting.model_fields))
     return frozenset(words)
 
 
