@@ -59,18 +59,20 @@ def counts_named(masked: str) -> dict[str, int]:
     that category the request asks for."""
     out: dict[str, int] = {}
     for m in named_in(masked):
-        partitive = md.partitive_count(m.before)
-        if partitive is not None:
-            out[m.category] = partitive
-            continue
-        before = m.last_words(1)
-        if not before:
-            continue
-        word = before[0]
-        amount = int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
-        if amount is not None and amount >= 2 and word not in ("pair", "couple", "few", "several", "some"):
+        amount = _count_before(m.before)
+        if amount is not None:
             out[m.category] = amount
     return out
+
+
+def _count_before(before: str) -> int | None:
+    """The amount said just before a thing's name: "one of the" (partitive), "ten", "4" (two or more)."""
+    partitive = md.partitive_count(before)
+    if partitive is not None:
+        return partitive
+    word = (before.split()[-1:] or [""])[0]
+    amount = int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
+    return amount if amount is not None and amount >= 2 and word not in ("pair", "couple", "few", "several", "some") else None
 
 
 def wrong_counts(masked: str, added: Iterable[AssetInstance], per: int = 1) -> list[str]:
@@ -81,6 +83,24 @@ def wrong_counts(masked: str, added: Iterable[AssetInstance], per: int = 1) -> l
     return [f"you asked for {n} {c.replace('_', ' ')}" + (f" at each of {per} places" if per > 1 else "")
             + f", but the plan adds {made[c]}" for c, n in counts_named(masked).items()
             if made[c] and made[c] not in (n * per, n + more)]
+
+
+def wrong_removals(masked: str, removed: Iterable[AssetInstance]) -> list[str]:
+    """Categories the plan removes a different number of than the request says ("one of the traffic
+    lights", "two cones"); not an amount to be left ("down to two cones", "keep one")."""
+    gone = Counter(a.category for a in removed)
+    indexed = ph.normalise(masked)  # the text find_categories indexes
+    out = []
+    for c, n in counts_named(masked).items():
+        said = next((m for m in ph.find_categories(masked) if m.category == c and _count_before(indexed[: m.start]) == n), None)
+        if said is None or re.search(r"\b(?:to|only|just|leave|leaving|keep|keeping|but|except|save)\s+(?:\w+\s+){0,3}$", indexed[: said.start]):
+            continue
+        word = ph.singular(indexed[said.start : said.end].strip())  # "three cars": the SUV is a car too
+        kinds = {k for k, cat in catalog().items() if word in cat.tags} if word in md.catalog_tags() else {c}
+        taken = sum(gone[k] for k in kinds | {c})
+        if taken and taken != n:
+            out.append(f"you asked to take away {n} {word}{'s' if n > 1 else ''}, but the plan removes {taken}")
+    return out
 
 
 # More of the thing just named with its noun left out ("two cones at the gate and another two at

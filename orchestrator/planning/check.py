@@ -34,6 +34,7 @@ from drivetwin.orchestrator.planning.attributes import (
     wrong_counts,
     wrong_heading,
     wrong_layout,
+    wrong_removals,
     wrong_side,
 )
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
@@ -427,6 +428,8 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
     per *= 1 + len(re.findall(SAID_AGAIN_AT, request.low))  # "two cones by the library and the same by the stop"
     out = [] if _totals(request, effect) else wrong_counts(
         request.masked, [a for a in effect.added if a.category not in _companions(effect)], per)
+    if request.polarity == "remove" and not effect.added and not request.excepted and not KEEP_SOME.search(request.low):
+        out += wrong_removals(request.masked, effect.removed)  # "one of the traffic lights": one, not both
     centres = {place: centre for place in each if (centre := _centre(scene, place)) is not None}
     if effect.added and centres:  # each new thing counts for the one of those places it stands nearest
         served = {min(centres, key=lambda p: math.dist((a.pose.x, a.pose.y), centres[p])) for a in effect.added}

@@ -304,7 +304,7 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
 # Words right after a singular noun that single one out ("the car nearest the gate", "the tree
 # by the bus stop", "the car on the left", "car 2"): the planner's pick is then the words'.
 _SINGLES_OUT = re.compile(
-    r"\s*(?:(?:number |no\. |nr |# ?)?\d+\b(?!\s*(?:m|metres?|meters?|ft|feet|foot|yards?|degrees?|deg|km|kph|mph)\b)|in\b(?!\s+colou?r)|at\b|on\b|"
+    r"\s*(?:(?:number |no\. |nr |# ?)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:m|metres?|meters?|ft|feet|foot|yards?|degrees?|deg|km|kph|mph)\b)|in\b(?!\s+colou?r)|at\b|on\b|"
     r"near|by\b|beside|next|behind|outside|inside|of\b|from\b|closest|nearest|furthest|farthest|that\b|"
     r"which\b|who\b|with\b|parked|driving|moving|standing|across|opposite|(?:north|south)?[\s-]?(?:north|south|east|west)\w*\s+of\b|"
     r"most\b|least\b|[a-z]+est\b|[a-z]+most\b)"

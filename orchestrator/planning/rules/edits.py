@@ -34,7 +34,7 @@ from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import lane_under
 from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_along
+from drivetwin.worlds.surface import nearest_on_polyline, point_along, polyline_length
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
 NEAR_PLACE_M = 8.0
@@ -1007,7 +1007,10 @@ def drive_towards(r: Reading, scene: Scene, mover: AssetInstance | None = None) 
     for lane in scene.roads.lanes:
         near = nearest_on_polyline(gx, gy, lane.centreline)
         start = DRIVE_LEAD_M if mover is None else nearest_on_polyline(mover.pose.x, mover.pose.y, lane.centreline).arc_length
-        if near.distance <= DRIVE_REACH_M and near.arc_length >= max(start, DRIVE_REACH_M):
+        # one there already that drives to a place part way along a lane stops there (by path, see
+        # edit_existing); driving the lane would take it past, so only a lane that ends there is driven
+        past = mover is not None and polyline_length(lane.centreline) - near.arc_length > DRIVE_REACH_M
+        if near.distance <= DRIVE_REACH_M and near.arc_length >= max(start, DRIVE_REACH_M) and not past:
             leading.append((near.distance, lane))
     if not leading:
         return None

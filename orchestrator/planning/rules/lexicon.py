@@ -31,10 +31,10 @@ ADD_WORDS = ("add", "create", "spawn", "place", "put", "insert", "set up", "inst
              "there should be", "need a", "need some", "want a", "want some", "make a", "make some",
              "have a", "deploy", "station", "position a", "get a", "get some", "throw in")
 MOVE_WORDS = ("move", "shift", "relocate", "put", "place", "send", "bring", "take", "push", "pull",
-              "slide", "nudge", "scoot", "drag", "reposition", "park", "transfer", "should be", "would be",
+              "slide", "nudge", "scoot", "drag", "teleport", "reposition", "park", "transfer", "should be", "would be",
               "belongs", "wants its", "closer to", "over to", " to the ", "to ")
 REVERSE_WORDS = ("reverse", "back up", "back out", "backwards", "backward", "back off", "go back")
-SHIFT_VERBS = ("move", "shift", "nudge", "push", "slide", "budge", "relocate", "drag", "carry", "shove")  # only ever a move
+SHIFT_VERBS = ("move", "shift", "nudge", "push", "slide", "budge", "relocate", "drag", "carry", "shove", "teleport")  # only ever a move
 TURN_WORDS = ("turn", "turned", "rotate", "rotated", "spin", "flip", "face", "faces", "facing", "wrong way", "other way",
               "around", "about face")
 STOP_WORDS = ("stop", "halt", "wait", "stand still", "stay put", "stay where", "freeze", "hold",

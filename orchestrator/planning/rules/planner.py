@@ -222,6 +222,9 @@ _STATEMENT = re.compile(
     r"will|would|can|could|shall|may|might|let|gets?|to be)\b)[a-z' -]+\s(?:[a-z]+s|block|blocks|sit|stand|stay|face|look)\b"
     # "who put a hydrant on the pavement?": a complaint about what someone did, not a request
     r"|who\s+(?:\w+\s+)?(?:put|left|parked|placed|moved|dumped|stuck|added|thought|decided)\b"
+    # "the children can't see the road": what someone cannot do, the trouble, not what to do
+    r"|(?:the|these|those|they|he|she|people|drivers|kids|children|pupils|students|cars|we|i)\b[^,;]*?"
+    r"\b(?:can't|cannot|can not|couldn't|won't|don't|doesn't)\s+(?:\w+\s+)?(?:see|get|reach|find|pass|hear|fit|cross|walk|spot|tell)\b"
     # "people there must have nowhere to ...", "cars keep getting hidden behind ...": how things go, not a request
     rf"|{HOW_THINGS_GO.pattern}"
     rf"|{REPORTED.pattern}"
@@ -313,8 +316,9 @@ _WHY_AFTER = re.compile(r",\s+(?=(?:it|they|there)(?:'s|'re| is| are) (?!(?:got 
                         r"|that(?:'s| is) (?:where|why|because|how|what)\b)")
 # The same again said after an edit in one breath: "cones across the lot A entrance, and the same at lot B".
 _SAME_AT = re.compile(rf"(?:,\s*|\s+)(?:and\s+|then\s+)*(?={SAID_AGAIN_AT})")
-# Lights said as a detail of a thing added: "a car pulling in, with its headlights on" switches them too.
-_WITH_LIGHTS = re.compile(r",?\s+with (?:its|their|the|her|his) (headlights|vehicle lights) (?:switched |turned )?(on|off|lit|illuminated|blazing)\b"
+# Lights said as a detail of a thing: "a car pulling in, with its headlights on", "the ego: faster, and its
+# headlights on" switches them too.
+_WITH_LIGHTS = re.compile(r",?\s+(?:with|and) (?:its|their|the|her|his) (headlights|vehicle lights) (?:switched |turned )?(on|off|lit|illuminated|blazing)\b"
                           r"(?=\s*(?:[,.;!?]|$))")
 
 
@@ -331,7 +335,7 @@ _ASKING_LABEL = re.compile(r"^\s*(?:query|lookup|look ?up|info|status|report)\s*
 _GOES_ON = re.compile(r"\s*(?:drive|drives|head|heads|go|goes|continue|continues|cruise|cruises|turn|turns|stop|stops|park|parks"
                       r"|brake|brakes|slow|slows|speed|speeds|accelerate|accelerates|reverse|reverses)\b(?!\s+(?:it|them|the|a|an)\b)")
 # A sentence that only says how many, its thing named in the one before: "Lose a few.", "Take three away."
-_AMOUNT_ONLY = re.compile(r"\s*(?:(?:please|just|so|now|then|ok|okay)\s+)*[a-z]+(?:\s+rid\s+of)?\s+(?:another\s+)?"
+_AMOUNT_ONLY = re.compile(r"\s*(?:(?:please|just|so|now|then|ok|okay)\s+)*[a-z]+(?:\s+rid\s+of)?\s+(?:another\s+|all\s+)?"
                           rf"(?:\d+|a few|a couple|{'|'.join(w for w in ph.NUMBER_WORDS if w not in ('a', 'an'))})"
                           r"(?:\s+more)?(?:\s+(?:away|off|out|in|down))?(?:\s+(?:please|too))?\s*[.!?]*\s*$")
 # A sentence whose subject went unsaid, the thing the one before named: "needs to be by the door".
@@ -401,7 +405,8 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     for name in places:  # "the bus stop" has no verb in it
         low = re.sub(rf"\b{re.escape(name)}\b", lambda m: " " * len(m.group(0)), low)
     verb = _VERB_AT.search(low)
-    if verb is None or any(w in low for w in (*lx.ARRANGE_WORDS, "between", " line", " row", " grid", "mix")):
+    # "a line of cones and barriers" is one layout; "the car at the end of the row" names one of a row there
+    if verb is None or any(w in low for w in (*lx.ARRANGE_WORDS, "between", " grid", "mix")) or re.search(r"(?<!\bthe) (?:line|row)\b", low):
         return [clause]
     cuts = sorted([m for m in (*_CONJUNCT.finditer(clause), *_LISTED.finditer(clause)) if m.start() > verb.end()],
                   key=lambda m: m.start())

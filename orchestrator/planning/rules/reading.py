@@ -11,6 +11,7 @@ import math
 import re
 from dataclasses import dataclass, field, replace
 
+from drivetwin.orchestrator.planning.base import PlanningError
 from drivetwin.orchestrator.planning.intent import HOW_THINGS_GO
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
@@ -323,7 +324,7 @@ _PERCEPTION_TASK = re.compile(r"\s*(?:detection|detector|tracking|recognition|cl
 # "behind us", "ahead of me": said from the driver's seat, the first person is the ego vehicle.
 FIRST_PERSON_EGO = re.compile(
     r"(?:\b(?:behind|ahead of|in front of|front of|beside|next to|near|past|alongside|towards?|from|around|at) "
-    r"|\b(?:am|are) (?=(?:i|we) (?:in|on|driving|parked|heading|going|sitting|stopped)\b))(us|me|i|we)\b"  # "which lane am I in"
+    r"|\b(?:am|are) (?=(?:i|we) (?:in|on|driving|parked|heading|going|sitting|stopped)\b))(us|me|i|we|ours|mine)\b"  # "which lane am I in", "behind ours"
 )
 
 
@@ -343,16 +344,19 @@ _SIDE_VECTORS = {"west": (-1.0, 0.0), "east": (1.0, 0.0), "north": (0.0, 1.0), "
                  "left": (-1.0, 0.0), "right": (1.0, 0.0)}
 # An ordinal counted from a side, as said, for blanking its compass word out of the clause's directions.
 _ORDER_SAID = re.compile(r"\b(?:first|second|third|fourth|fifth|last)\s+(?:\w+\s+){1,2}?(from\s+the\s+(?:west|east|north|south|left|right))\b")
+# A thing said to be the middle one of a row: "the middle car", "the car in the middle of the row".
+_MIDDLE_SAID = re.compile(r"\bmiddle\s+([a-z]+)\b|\b([a-z]+)\s+(?:in|at) the (?:middle|centre|center) of (?:the|that|this) (?:row|line)\b")
 # Within this of a place named in the clause, things are counted as at it ("the second car from the west in lot B").
 ORDER_AT_PLACE_M = 25.0
 
 
 def counted_kinds(low: str) -> set[str]:
-    """The categories a thing counted from a side may be, by the word it was called ("the second
-    car from the left": every kind the catalog tags a car)."""
+    """The categories a thing counted from a side, or said to be the middle one, may be, by the word
+    it was called ("the second car from the left", "the middle car": every kind the catalog tags a car)."""
     kinds: set[str] = set()
-    for said in _ORDER_SAID.finditer(low):
-        word = ph.singular(said.group(0).split()[-4])  # the noun before "from the <side>"
+    # "the car by the union and the one in the middle of the row": the middle one is of a kind said before
+    middles = re.findall(r"[a-z]+", low) if _MIDDLE_SAID.search(low) else []
+    for word in (*(ph.singular(w) for w in middles), *(ph.singular(s.group(0).split()[-4]) for s in _ORDER_SAID.finditer(low))):
         if word in md.catalog_tags():
             kinds |= {c.name for c in catalog().values() if word in c.tags}
     return kinds
@@ -398,13 +402,37 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
                 present = [a for a in scene.assets if word in catalog()[a.category].tags]
             present = sorted(present, key=lambda a: -(a.pose.x * east + a.pose.y * north))
             present = _at_named_place(scene, low, present) or present
-        if number is not None and scene.asset(f"{mention.category}_{number}") is not None:
+        if before[-1:] == ["middle"] or _IN_THE_MIDDLE.match(low[mention.end :]):  # "the car in the middle of the row"
+            ids.append(_middle_of_row(scene, low, mention).id)
+        elif number is not None and scene.asset(f"{mention.category}_{number}") is not None:
             ids.append(f"{mention.category}_{number}")
         elif ordinal is not None and present and -1 <= ordinal <= len(present) and ordinal != 0:
             ids.append(present[ordinal - 1 if ordinal > 0 else -1].id)
         else:
             rest.append(mention)
     return ids, rest
+
+
+# "(the car) in the middle of the row": the middle one of a row of its kind.
+_IN_THE_MIDDLE = re.compile(r"\s+(?:\w+\s+)?(?:in|at) the (?:middle|centre|center) of (?:the|that|this) (?:row|line)\b")
+# Things of a kind further apart than this are no row ("the middle car" of the whole campus is none).
+ROW_SPAN_M = 40.0
+
+
+def _middle_of_row(scene: Scene, low: str, mention: ph.Mention) -> AssetInstance:
+    """The middle one of the row of the kind `mention` names (every kind called so: "car" takes in
+    SUVs), at the place the clause names if it names one; when they stand in no row, or in an even
+    number, no one is the middle one and the words are refused rather than one taken at random."""
+    word = ph.singular(low[mention.start : mention.end].strip())
+    kinds = {c.name for c in catalog().values() if word in c.tags} if word in md.catalog_tags() else {mention.category}
+    present = [a for a in scene.assets if a.category in kinds]
+    row = _at_named_place(scene, low, present) or present
+    xs, ys = [a.pose.x for a in row], [a.pose.y for a in row]
+    if len(row) < 3 or len(row) % 2 == 0 or max(max(xs) - min(xs), max(ys) - min(ys)) > ROW_SPAN_M:
+        raise PlanningError(f"no {word} is the middle one: the {len(row)} here stand in no row with one in the middle; "
+                            f"say which by its place or id ({', '.join(sorted(a.id for a in row))})")
+    along = (lambda a: a.pose.x) if max(xs) - min(xs) >= max(ys) - min(ys) else (lambda a: a.pose.y)
+    return sorted(row, key=along)[len(row) // 2]
 
 
 # Catalog words that are also verbs of the requests people make.
@@ -439,7 +467,7 @@ def without_beneficiaries(low: str, mentions: list[ph.Mention]) -> list[ph.Menti
 # the gate", "a man heading for the east gate", "someone on her way to the union".
 GOES_TO = re.compile(r"\b(?:walk|stroll|head|go|run|jog|wander|rid|cycl|ambl|hurr(?:y|i)|march|strid|trudg|rush|sprint"
                      r"|driv|mak(?:e|es|ing) (?:his|her|their|its)(?: own)? way|on (?:his|her|their|its) way|strode|rode|drove|ran|went)"
-                     r"(?:e|s|es|e?d|(?:n|g)?ing|(?:g)?ed)?\b(?:\s+(?:over|across|back|off|on|up|down|straight|along))?"
+                     r"(?:e|s|es|e?d|(?:n|g)?ing|(?:g)?ed)?\b(?:\s+(?:over|across|back|off|on|up|down|straight|along|out|round|around))?"
                      r"(?:\s+from(?:\s+[a-z0-9_'§]+){1,5}?)?\s+(?:to|towards?|for|into)\s+"
                      # a vehicle driven there by someone: "drive the suv towards the east gate"
                      r"|\b(?:driv(?:e|es|ing)|drove)\s+(?:the|our|my|that|this|his|her|their)\s+[a-z0-9_]+"
@@ -560,6 +588,11 @@ def read(text: str, scene: Scene) -> Reading:
         masked = _blank(masked, start, end)
     named = [said.span() for lm in scene.landmarks for name in lm.names()  # "from the bus stop to ...": no stop sign
              for said in re.finditer(rf"(?<![a-z]){re.escape(ph.normalise(name).strip())}(?![a-z])", low)]
+    # a second place named in full ("between the bus stop and the west crosswalk") asks nothing either: no
+    # stop to make ("the car park", "a crosswalk" may be a kind of place asked about: "which car park ...")
+    for start, end in (s.span() for lm in scene.landmarks for s in re.finditer(rf"(?<![a-z]){re.escape(ph.normalise(lm.name).strip())}(?![a-z])", low)):
+        if not any(s <= start and end <= e for s, e in spans):
+            masked = _blank(masked, start, end)
     # ... where the thing's word sits inside the name: "a pedestrian crossing the road" is still a pedestrian
     mentions = [m for m in ph.find_categories(text) if not any(m.start < e and s < m.end for s, e in spans)
                 and not any(s < m.start < e for s, e in named)]

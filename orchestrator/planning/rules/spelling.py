@@ -71,6 +71,8 @@ _SHORT_SLIPS = {
     "whr": "where",
     "u": "you",
     # text-speak
+    "n": "and",  # "remove the hydrant n make it nite"
+    "ur": "your",
     "rn": "right now",
     "plz": "please",
     "ppl": "people",
@@ -84,6 +86,7 @@ _NUMBER_SLIPS = {"fourty": "forty", "ninty": "ninety", "twelth": "twelfth", "fit
 _NUMBER_SLIP = re.compile(rf"\b({'|'.join(_NUMBER_SLIPS)})\b", re.IGNORECASE)
 _REPAIRABLE_GRAMMAR = (
     "straight",  # "a streight line" is straight, not a streetlight
+    "scene",  # "remov the suv from the sceen": never "seven"
     "corner",
     "much",
     "which",
@@ -353,6 +356,8 @@ _PLACE_ATTRIBUTES = frozenset({"pos", "position", "location", "xy", "loc"})
 _KEY_VALUE = re.compile(r"\b([a-z_]{2,})\s*=\s*(?=[\w(.-])", re.IGNORECASE)
 _CODE_COMMENT = re.compile(r"\s//\s*|\s#\s+")
 # "2" said for "to" before a time or a place ("set time 2 midnight", "move it 2 the gate").
+# "8 a.m.", "half past six p.m.": the hours' half written with stops, which would end the sentence there.
+_DOTTED_MERIDIEM = re.compile(r"(?<=\d|\s)([ap])\.\s?m\.?(?=\W|$)", re.IGNORECASE)
 _TWO_AS_TO = re.compile(r"(?<=[a-z] )2 (?=the\b|midni|noon|midday|dawn|dusk|night|morning|evening)", re.IGNORECASE)
 # Short forms of the kinds of road: "Main St", "Campus Dr.".
 _ROAD_SHORT = {"street": ("st",), "road": ("rd",), "drive": ("dr", "drv"), "avenue": ("ave", "av"), "boulevard": ("blvd",),
@@ -558,6 +563,36 @@ _ONE_MORE = re.compile(r"\ba (?:second|third|fourth|fifth)\b(?=\s+(?!(?:time|tim
 _OFF_SLIP = re.compile(r"\b(turn|switch|shut|power|take|clear|get) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
 # A car park named by its letter, as the British say a parking lot: "car park A".
 _CAR_PARK_OF = re.compile(r"\bcar\s?park\s+(?=[a-z]\b(?!')(?!\s+(?:car|bus|van|truck|lorry|bench|cone|few|bit)\b))", re.IGNORECASE)
+
+
+# A comparative said with "more", as learners of English say it: "more slow", "more quick".
+_MORE_ADJECTIVE = re.compile(r"\bmore ([a-z]{3,6})\b", re.IGNORECASE)
+
+
+def _comparative(m: re.Match[str]) -> str:
+    """"more slow" as "slower", when that is an English word the rule planner's patterns read."""
+    word = m.group(1).lower()
+    doubled = len(word) == 3 and word[1] in "aeiou" and word[2] not in "aeiouwxy" and word[0] not in "aeiou"  # "big": bigger
+    said = word + "r" if word.endswith("e") else word[:-1] + "ier" if word.endswith("y") else word + word[-1] + "er" if doubled else word + "er"
+    return said if (said in _pattern_words() or said in _domain_words()) and is_english(said) else m.group(0)
+
+
+@cache
+def _inverted_names() -> re.Pattern[str]:
+    """A thing's name of two or more words said head first, as many learners of English say it: "the
+    car of test" (the test car), "a sign of road works" (a road works sign)."""
+    names = {n.lower().removeprefix("the ") for c in catalog().values() for n in (*c.words, *c.synonyms, *ph.EGO_WORDS)}
+    said = "|".join(rf"{re.escape(n.split()[-1])}(?:s|es)? (?:of|for) (?:the |a |an )?{re.escape(' '.join(n.split()[:-1]))}s?"
+                    for n in sorted(names, key=len, reverse=True) if " " in n and "_" not in n and not n.startswith(("our ", "my ")))
+    return re.compile(rf"\b(?:{said})\b", re.IGNORECASE)
+
+
+def _said_head_last(m: re.Match[str]) -> str:
+    words = m.group(0).split()
+    head, rest = words[0], [w for w in words[2:] if w.lower() not in ("the", "a", "an")]
+    return f"{' '.join(rest)} {head}"
+
+
 # A marker's name said as the verb: "cone that off", "bollard off the hydrant" ring it with them.
 _MARKER_OFF = re.compile(r"\b(cone|bollard|barrier)s?\s+((?:[\w'-]+\s+){0,4}?)off\b(?!\s+with\b)", re.IGNORECASE)
 
@@ -770,9 +805,15 @@ def _unit_slip(word: str, repairs: list[str]) -> str:
     return near[0]
 
 
+def _places_by_kind(text: str) -> str:
+    """A crossing or car park told apart by its compass point, as the world names it ("the west crossing")."""
+    return _COMPASS_CAR_PARK.sub(r"\1 parking lot", _COMPASS_CROSSING.sub(r"\1 crosswalk", text))
+
+
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
+    text = _DOTTED_MERIDIEM.sub(lambda m: f"{m.group(1).lower()}m", text)  # "8 a.m. and ...": 8 am
     text = _ONE_MORE.sub("another", text)  # before "a second" is read as a measure of time
     text = spelt_measures(_NUMBER_SLIP.sub(lambda m: _NUMBER_SLIPS[m.group(1).lower()], _sound_alikes(text)))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
@@ -782,6 +823,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _OFF_SLIP.sub(r"\1 off", text)
     text = _GONE_STATE.sub(r"\1 become ", text)
     text = _CAR_PARK_OF.sub("parking lot ", text)  # "the car park A entrance": lot A's, not "the car park" (lot B)
+    text = _inverted_names().sub(_said_head_last, text)  # "the car of test": the test car
+    text = _MORE_ADJECTIVE.sub(_comparative, text)  # "more slow, please": slower
     text = _marker_off(text)
     text = _RIGHT_THERE.sub("", text)
     text = _SLASH_COMMAND.sub("", text)
@@ -804,8 +847,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _CROSSINGS.sub("crosswalks", text)
     text = _LOTS_WAY_IN.sub(lambda m: ("" if re.search(r"\b(?:the|its|that|this)\s+$", text[: m.start()], re.IGNORECASE) else "the ")
                             + f"{m.group(1)} entrance", text)  # "block off lot B's entrance": the lot B entrance
-    text = _COMPASS_CROSSING.sub(r"\1 crosswalk", text)
-    text = _COMPASS_CAR_PARK.sub(r"\1 parking lot", text)
+    text = _places_by_kind(text)
     text = _without_place_left(text, scene)
     text = _UP_AHEAD.sub(lambda m: f"{m.group(1) or ''} ahead of the ego".lstrip(), text)
     text = _IN_ITS_PATH.sub(lambda m: "in front of " + (m.group(1) or m.group(2) or _PATH_OWNERS[m.group(3).lower()]), text)
@@ -856,6 +898,8 @@ def repair(text: str, scene: Scene) -> Repaired:
         return new
 
     text = _WORD.sub(fix, text)
+    if repairs:  # "the west crosing", respelt: the west crosswalk, as if typed right
+        text = _MORE_ADJECTIVE.sub(_comparative, _places_by_kind(_CROSSINGS.sub("crosswalks", text)))
     text, read = described(text, scene)  # "the thing you throw rubbish in": the trash bin
     return Repaired(text, repairs + [f"{d.said!r} -> {d.name} (meaning {d.score:.2f})" for d in read])
 
