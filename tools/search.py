@@ -66,6 +66,12 @@ def lane_beside(asset: AssetInstance, lanes: list[Lane], reach: float = ROADSIDE
     return min(near, key=lambda g: g[0])[1] if near else None
 
 
+def _area_of(scene: Scene, a: AssetInstance) -> str:
+    """" in parking lot B" for a thing inside a place with an area, for "where is the SUV?"; else ""."""
+    inside = [lm.name for lm in scene.landmarks if lm.kind == "area" and landmark_distance(lm, a.pose.x, a.pose.y) == 0.0]
+    return f" in {inside[0]}" if inside else ""
+
+
 def landmark_distance(landmark: Landmark, x: float, y: float) -> float:
     """Metres from (x, y) to a landmark: its point, or the edge of its area (0 inside)."""
     if landmark.kind == "area" and landmark.polygon:
@@ -185,7 +191,7 @@ class FindAssets(Tool[FindAssetsArgs]):
         distances = {a.id: gap(a) for a in pool} if t else {}
 
         def line(a: AssetInstance) -> str:
-            where = f" {'beside' if a.id in beside else 'in'} {lanes_of[a.id]}" if a.id in lanes_of else ""
+            where = f" {'beside' if a.id in beside else 'in'} {lanes_of[a.id]}" if a.id in lanes_of else _area_of(scene, a)
             away = f", {distances[a.id]:.1f} m away" if a.id in distances else ""
             return f"{a.id} ({a.category}) at ({a.pose.x:.1f}, {a.pose.y:.1f}){where}{away}"
 

@@ -518,7 +518,10 @@ def ph_error(message: str) -> Exception:
 # On foot over a road or a crossing ("walking across the north crosswalk", "hurrying over the road").
 _GOING_ACROSS = re.compile(r"\b(?:walk|run|hurr|dash|dart|jog|head|go|stroll|step|wander|strid|march|ambl|saunter|trot|sprint)"
                            r"\w*\s+(?:(?:out|off|straight|right|on)\s+)?(?:across|over)\s+(?:the\s+)?"
-                           r"(?:road|street|crossing|crosswalk|zebra|junction|intersection|§)")
+                           r"(?:road|street|crossing|crosswalk|zebra|junction|intersection|§)"
+                           # "go over to the other side": of the road it stands by
+                           r"|\b(?:walk|go|get|head|cross|make (?:his|her|their|its) way)\w*\s+(?:over\s+|across\s+)?to\s+the\s+(?:other|far)\s+side\b"
+                           r"(?!\s+of\s+(?:the\s+)?(?!road|street)[a-z])")
 
 # Going somewhere on foot or on wheels ("walk to the fountain", "stroll along the sidewalk", "drive down Main Street").
 _GOING_TO = re.compile(r"\b(?:walk|stroll|jog|march|wander|drive|drove|driving)\w*\s+(?:to|towards?|along|around|down|up|off)\b")

@@ -256,6 +256,8 @@ _INTERJECTION = re.compile(r"^\s*(?:(?:ugh+|argh+|oh+|ah+|hmm+|um+|uh+|erm|well|
                            r"ok|okay|so|right|yeah|hey|huh|damn|dang|whoa|oops)\b\s*[,!.]+\s*)+")
 
 
+# How many of the things just named, said after a colon: "...: six of them in a row at the crossing".
+_SOME_OF_THEM = re.compile(r"\s*(\d+|two|three|four|five|six|seven|eight|nine|ten|twelve|a few|a couple)\s+of\s+them\b", re.IGNORECASE)
 # A sentence up to a colon: a command before it ("clear lot B: both sedans and the SUV") is one clause
 # with what follows, which says what it acts on.
 _COMMAND_COLON = re.compile(r"(?:(?<=^)|(?<=[.!?;]\s))([^.!?;:]+):\s+")
@@ -289,6 +291,14 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
                 and not commands(out[-1][0].lower()):  # "Put a bench there. Then add 2.": two more, a request of its own
             out[-1] = (f"{out[-1][0]}, {text}", out[-1][1], False)  # "Too many lamp posts. Lose a few.": a few of them
             continue
+        counted = _SOME_OF_THEM.match(text) if out else None
+        named = ph.find_categories(out[-1][0]) if counted is not None else []
+        unplaced = re.sub("|".join(rf"\b{re.escape(p)}\b" for p in places) or "$^", " ", text.lower())  # "the bus stop" is no stop sign
+        if counted is not None and named and not ph.find_categories(unplaced):
+            # "The children will line up to cross: six of them in a row at the west crossing": six children there
+            noun = ph.normalise(out[-1][0])[named[-1].start : named[-1].end].strip()
+            out[-1] = (out[-1][0], out[-1][1], True)  # what came before only introduces them
+            text = f"{counted.group(1)} {noun}{text[counted.end() :]}"
         if _SUBJECTLESS.match(text.lower()):
             text = f"it {text}"  # "bin's in a dumb spot. needs to be by the library door": it needs to
         verb = _VERB_AT.search(text.lower())

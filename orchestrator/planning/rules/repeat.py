@@ -25,7 +25,10 @@ _REPEAT = re.compile(
     r"^\s*(?:(?:ok(?:ay)?|now|and|then|also|right|please|pls|can you|could you)[,\s]+)*"
     r"(?:ditto|repeat (?:that|this|it|the last (?:one|edit|change|step))(?: (?:again|once more))?"
     r"|do (?:that|this|it|the same(?: thing)?)(?: (?:again|once more|one more time|too|as well))?"
-    r"|(?:the )?same (?:again|thing)|(?:the )?same(?= (?:for|with|at|outside|by|near|on|to|in|over)\b))"
+    r"|(?:the )?same (?:again|thing)|(?:the )?same(?= (?:for|with|at|outside|by|near|on|to|in|over)\b)"
+    # "add another row like that in lot B": the last layout again, where said
+    r"|(?:(?:add|make|put|build|lay|set up|give me|do)\s+)?(?:another|a second|one more)\s+(?:row|line|ring|circle|grid|queue|wall|one)"
+    r"\s+(?:like (?:that|this|it|the last one)|the same))"
     r"(?![\w-])(?!\s+but\b(?!\s+(?:by|at|near|next to|beside|behind|in front of|outside|in|on|over by)\b))"
 )
 

@@ -356,6 +356,8 @@ _PLACE_ATTRIBUTES = frozenset({"pos", "position", "location", "xy", "loc"})
 _KEY_VALUE = re.compile(r"\b([a-z_]{2,})\s*=\s*(?=[\w(.-])", re.IGNORECASE)
 _CODE_COMMENT = re.compile(r"\s//\s*|\s#\s+")
 # "2" said for "to" before a time or a place ("set time 2 midnight", "move it 2 the gate").
+# An amount said roughly: "six-ish", "10ish" (about that many).
+_ROUGHLY = re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty)-?ish\b", re.IGNORECASE)
 # "8 a.m.", "half past six p.m.": the hours' half written with stops, which would end the sentence there.
 _DOTTED_MERIDIEM = re.compile(r"(?<=\d|\s)([ap])\.\s?m\.?(?=\W|$)", re.IGNORECASE)
 _TWO_AS_TO = re.compile(r"(?<=[a-z] )2 (?=the\b|midni|noon|midday|dawn|dusk|night|morning|evening)", re.IGNORECASE)
@@ -805,6 +807,31 @@ def _unit_slip(word: str, repairs: list[str]) -> str:
     return near[0]
 
 
+# How many, said after the thing at the end of the sentence: "cones in a circle round the bench, about six".
+_AMOUNT_AFTER = re.compile(r",\s*((?:about|around|roughly|say|maybe)\s+)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|"
+                           r"fifteen|twenty)(?:\s+of\s+them)?\s*(?:please|pls)?\s*([.!]?)\s*$", re.IGNORECASE)
+
+
+def _amount_moved_up(text: str) -> str:
+    """A count said at the end of the sentence put before the thing it counts, the first named in
+    the plural with no count of its own: "put cones in a ring round the bench, six" as "put six cones ..."."""
+    said = _AMOUNT_AFTER.search(text)
+    if said is None:
+        return text
+    head = text[: said.start()]
+    low = ph.normalise(head)  # the text find_categories indexes
+    plural = next((m for m in ph.find_categories(head) if m.plural), None)
+    if plural is None or ph.find_count(low, plural.start) is not None:
+        return text
+    at = re.search(rf"\b{re.escape(low[plural.start : plural.end].strip())}\b", head, re.IGNORECASE)
+    if at is None:
+        return text
+    # after the determiner before its describing words: "the little orange cones" as "the eight little orange cones"
+    det = list(re.finditer(r"\b(?:the|those|these|some|our|my)\s+(?=(?:[a-z-]+\s+){0,3}$)", head[: at.start()], re.IGNORECASE))
+    cut = det[-1].end() if det else at.start()
+    return f"{head[:cut]}{said.group(1) or ''}{said.group(2)} {head[cut:]}{said.group(3)}"
+
+
 def _places_by_kind(text: str) -> str:
     """A crossing or car park told apart by its compass point, as the world names it ("the west crossing")."""
     return _COMPASS_CAR_PARK.sub(r"\1 parking lot", _COMPASS_CROSSING.sub(r"\1 crosswalk", text))
@@ -814,6 +841,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
     text = _DOTTED_MERIDIEM.sub(lambda m: f"{m.group(1).lower()}m", text)  # "8 a.m. and ...": 8 am
+    text = _ROUGHLY.sub(r"about \1", text)  # "cones round the rubble, six-ish": about six
     text = _ONE_MORE.sub("another", text)  # before "a second" is read as a measure of time
     text = spelt_measures(_NUMBER_SLIP.sub(lambda m: _NUMBER_SLIPS[m.group(1).lower()], _sound_alikes(text)))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
@@ -900,6 +928,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _WORD.sub(fix, text)
     if repairs:  # "the west crosing", respelt: the west crosswalk, as if typed right
         text = _MORE_ADJECTIVE.sub(_comparative, _places_by_kind(_CROSSINGS.sub("crosswalks", text)))
+    text = _amount_moved_up(text)
     text, read = described(text, scene)  # "the thing you throw rubbish in": the trash bin
     return Repaired(text, repairs + [f"{d.said!r} -> {d.name} (meaning {d.score:.2f})" for d in read])
 
