@@ -91,6 +91,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, kept_at
+from drivetwin.orchestrator.planning.rules.environment import said_weaker
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, SPEED_UNIT, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import (
     BETWEEN,
@@ -207,9 +208,6 @@ def dry_run(plan_calls: list[ToolCall], context: PlanContext) -> Effect | None:
     )
 
 
-# Less of a weather already there: "less foggy", "ease the rain off a bit".
-_LESS_OF_IT = re.compile(r"\b(?:less|lighter|weaker|thinner|reduce|lower|ease|not as|not so|tone down|turn down|improve visibility"
-                         r"|clear (?:\w+ ){0,2}(?:a bit|a little|slightly))\b")
 
 
 def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[str]:
@@ -465,7 +463,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
                     and REMOVE_WORDS.search(_clause_saying(request.low, str(c.args.get("kind"))))
                     # "less foggy, please": the same weather, lighter, is what was asked
                     and not (c.args.get("kind") == now.kind and float(c.args.get("intensity", 1.0)) < now.intensity
-                             and _LESS_OF_IT.search(request.low))]
+                             and said_weaker(request.low))]
         out += [f"you said no {kind}, but the plan sets {kind}" for kind in unwanted]
     return out + weather_strength(request.low, effect.calls)
 

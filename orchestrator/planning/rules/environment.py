@@ -228,12 +228,17 @@ def brighter(r: Reading, now: Environment) -> ToolCall | None:
 _MORE_OF_IT = re.compile(r"(?<!no )(?<!any )\b(?:more|heavier|thicker|harder|stronger|denser|worse|intensify|increase"
                          r"|(?:turn|crank|ramp|bump|dial) (?:\w+ ){0,2}up)\b")
 _LESS_OF_IT = re.compile(r"\b(?:less|lighter|thinner|weaker|softer|milder|ease|eases|reduce|lower|(?:tone|turn|dial) (?:\w+ ){0,2}down"
-                         r"|not as (?:heavy|thick|hard|strong|dense)|clear (?:\w+ ){0,2}(?:a bit|a little|slightly|somewhat))\b")
+                         r"|not (?:as|so)|clear (?:\w+ ){0,2}(?:a bit|a little|slightly|somewhat))\b")
 # Visibility is the other way round: "improve visibility" is less fog, "poorer visibility" more.
 _SEE_BETTER = re.compile(r"\b(?:improve\w*|better|increase\w*|raise|more|clearer)\s+(?:the\s+)?visibility\b|\bvisibility\s+(?:better|up|improved)\b")
 _SEE_WORSE = re.compile(r"\b(?:reduce\w*|lower\w*|worse|poor\w*|less|cut|decrease\w*)\s+(?:the\s+)?visibility\b|\bvisibility\s+(?:worse|down|poor)\b")
 # How much stronger "heavier" makes the weather there is; "lighter" halves it.
 STRONGER_STEP = 0.3
+
+
+def said_weaker(low: str) -> bool:
+    """Whether the words ask for less of a weather ("less foggy", "ease the rain off", "improve visibility")."""
+    return bool(_LESS_OF_IT.search(low) or _SEE_BETTER.search(low))
 
 
 def stronger(r: Reading, now: Environment) -> ToolCall | None:

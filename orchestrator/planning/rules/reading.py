@@ -586,12 +586,13 @@ def read(text: str, scene: Scene) -> Reading:
         spans.append(ego)
     for start, end in spans:
         masked = _blank(masked, start, end)
-    named = [said.span() for lm in scene.landmarks for name in lm.names()  # "from the bus stop to ...": no stop sign
-             for said in re.finditer(rf"(?<![a-z]){re.escape(ph.normalise(name).strip())}(?![a-z])", low)]
+    said_names = [(said.span(), name == lm.name) for lm in scene.landmarks for name in lm.names()
+                  for said in re.finditer(rf"(?<![a-z]){re.escape(ph.normalise(name).strip())}(?![a-z])", low)]
+    named = [span for span, _ in said_names]  # "from the bus stop to ...": no stop sign
     # a second place named in full ("between the bus stop and the west crosswalk") asks nothing either: no
     # stop to make ("the car park", "a crosswalk" may be a kind of place asked about: "which car park ...")
-    for start, end in (s.span() for lm in scene.landmarks for s in re.finditer(rf"(?<![a-z]){re.escape(ph.normalise(lm.name).strip())}(?![a-z])", low)):
-        if not any(s <= start and end <= e for s, e in spans):
+    for (start, end), full in said_names:
+        if full and not any(s <= start and end <= e for s, e in spans):
             masked = _blank(masked, start, end)
     # ... where the thing's word sits inside the name: "a pedestrian crossing the road" is still a pedestrian
     mentions = [m for m in ph.find_categories(text) if not any(m.start < e and s < m.end for s, e in spans)
