@@ -37,6 +37,7 @@ from drivetwin.evals import (
     practice25_source,
     practice26_source,
     practice27_source,
+    practice28_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -111,6 +112,8 @@ BRIEFS: dict[str, Brief] = {
     # Eight everyday voices: road-safety teacher, taxi driver, claims assessor, texting teenager, municipal traffic
     # planner, wheelchair user, game-level designer, a Spanish speaker; every cell holds 11 or 12.
     "practice27": Brief(310, 11, 11, practice27_source, multi_turn=40, planned=20, compound=20),
+    # Eight everyday voices: farmer, HGV driver, hospital porter, ex-police officer, YouTuber, Pole, product owner, worrier.
+    "practice28": Brief(320, 11, 11, practice28_source, multi_turn=40, planned=20, compound=20),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
