@@ -77,6 +77,11 @@ _COMPILED = tuple((kind, re.compile(words)) for kind, words in _MANOEUVRES)
 _LIGHT_WORDS = re.compile(r"\b(traffic (lights?|signals?)|lights|(?:(?<=the )|(?<=that )|(?<=this )|(?<=each ))light|signals?|traffic_light_\d+)\b")
 
 
+def manoeuvres_said(text: str) -> list[str]:
+    """The manoeuvres whose words `text` (lower case) says, a traffic light's change left out."""
+    return [kind for kind, words in _COMPILED if kind != "light" and words.search(text)]
+
+
 def _unit_number(text: str, units: str) -> Number | None:
     for number in numbers_in(text):
         if re.match(rf"\s*(?:{units})(?![a-z])", text[number.end:]):

@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 import time
 from dataclasses import dataclass, field
+from typing import Any
 
 from drivetwin.orchestrator.backends import Backend, Message
 from drivetwin.orchestrator.planning.base import PlanContext, PlanningError, TraceStep
@@ -26,8 +27,9 @@ from drivetwin.orchestrator.planning.llm.jr_schema import (
 from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S, Answer, Requirement, ask
 from drivetwin.orchestrator.planning.llm.request_names import RequestNames, read_names
 from drivetwin.orchestrator.planning.llm.review_hint import review_problems
+from drivetwin.orchestrator.planning.scenario_reading import SCENARIO_TOOLS
 from drivetwin.prompts.templates import as_json, jr_examples, render
-from drivetwin.tools.base import Family, ToolCall
+from drivetwin.tools.base import Family, Tool, ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.worlds.scene import Scene
 
@@ -68,6 +70,10 @@ class Grounding:
     names: WorldNames
     matches: list[Match] = field(default_factory=list)
     relation: str | None = None
+    # The request describes something happening over time: only storyboard tools can do it.
+    over_time: bool = False
+    # Tools the request gives no words for (a light's phases where no traffic light is named).
+    unfit: frozenset[str] = frozenset()
 
     def lines(self) -> list[str]:
         found = [str(m) for m in self.matches]
@@ -121,7 +127,8 @@ def ground_requirement(
     if kind == "move" and len(names.assets) == 1:  # the one thing named is the one to move
         names.required = names.required | {"asset"}
     relation = next((rel for pattern, rel in RELATION_WORDS if re.search(pattern, prompt.lower())), None)
-    return Grounding(names, matches, relation)
+    lights = "traffic_light" in said.categories or any(a in names.lights for a in said.assets)
+    return Grounding(names, matches, relation, said.over_time, frozenset() if lights else frozenset({"set_light_phases"}))
 
 
 def _unasked_fields(kind: Family, said: RequestNames, sure_category: bool) -> frozenset[str]:
@@ -129,7 +136,9 @@ def _unasked_fields(kind: Family, said: RequestNames, sure_category: bool) -> fr
     beige stop sign that drives a lane; "2 m east" as 2 m left)."""
     unasked: set[str] = set()
     if not said.colours and kind != "appearance":
-        unasked.add("colour")
+        unasked |= {"colour", "state"}  # a light's state is a colour too
+    if not any(name == "left" for name, _ in said.directions):
+        unasked.add("side")  # "change lanes" without a side: the tool asks, the model guesses
     if not said.behaviour and kind == "add":
         unasked.add("behaviour")
     if said.directions and kind == "move":
@@ -185,6 +194,7 @@ def _narrow_to_request(
     names.colours = list(said.colours)
     names.times = list(said.times)
     names.shapes = list(said.shapes)
+    names.manoeuvres = list(said.manoeuvres)
     names.signs = dict(said.directions)
 
 
@@ -221,10 +231,18 @@ class JrManager:
         self.grounder = grounder
         self.timeout_s = timeout_s
 
+    def offered(self, grounding: Grounding, context: PlanContext) -> list[Tool[Any]]:
+        """The family's tools that fit the request: the storyboard's only where it describes
+        something over time (the review refuses a static edit for it: "stop after 5 s" is no
+        move_asset), a light's phases only where it names a traffic light."""
+        tools = [t for t in context.registry.family(self.family) if t.name not in grounding.unfit]
+        timed = [t for t in tools if t.name in SCENARIO_TOOLS] if grounding.over_time else []
+        return timed or tools
+
     def messages(
         self, requirement_text: str, grounding: Grounding, context: PlanContext, prompt: str = ""
     ) -> list[Message]:
-        tools = context.registry.family(self.family)
+        tools = self.offered(grounding, context)
         hints = [f"Grounded: {'; '.join(grounding.lines())}"] if grounding.lines() else []
         system = render(
             "jr_manager.txt",
@@ -270,7 +288,7 @@ class JrManager:
             output="\n".join(grounding.lines()) or "(nothing to ground)",
             seconds=time.perf_counter() - started,
         )
-        tools = context.registry.family(self.family)
+        tools = self.offered(grounding, context)
         if not tools:
             raise PlanningError(f"no tool of the {self.family!r} family is registered")
 

@@ -15,12 +15,12 @@ from typing import Any
 
 from drivetwin.tools.appearance import COLOURS, TIME_PRESETS
 from drivetwin.tools.base import Tool
-from drivetwin.worlds.catalog import placeable_categories
+from drivetwin.worlds.catalog import category, placeable_categories
 from drivetwin.worlds.scene import Scene
 
 # Fields a Jr. manager is not offered (the tool still accepts them from other planners):
 # free geometry and fine timing that a short prompt never states and a small model invents.
-OMITTED_FIELDS = frozenset({"waypoints", "start_time", "label", "exposure", "ahead", "clockwise"})
+OMITTED_FIELDS = frozenset({"waypoints", "start_time", "label", "exposure", "ahead", "clockwise", "name"})
 # Longest free string the model may write where no enum applies.
 FREE_TEXT_CHARS = 40
 CLOCK_PATTERN = "^([01][0-9]|2[0-3]):[0-5][0-9]$"
@@ -57,6 +57,10 @@ class WorldNames:
     shapes: list[str] = field(default_factory=list)
     # The sign a direction word gives a move field ("south" makes north negative).
     signs: dict[str, int] = field(default_factory=dict)
+    # Things that can act in a storyboard (vehicles, riders, walkers) and the traffic lights.
+    movers: list[str] = field(default_factory=list)
+    lights: list[str] = field(default_factory=list)
+    manoeuvres: list[str] = field(default_factory=list)
     # Fields left out of this request's schema on top of OMITTED_FIELDS, and fields it must fill.
     omitted: frozenset[str] = frozenset()
     required: frozenset[str] = frozenset()
@@ -67,7 +71,9 @@ class WorldNames:
         lanes = [lane.id for lane in scene.roads.lanes]
         assets = [a.id for a in scene.all_assets()]
         places = [lm.name for lm in scene.landmarks] + lanes + assets
-        return cls(placeable_categories(), places, assets, lanes)
+        movers = [a.id for a in scene.all_assets() if category(a.category).motion != "prop"]
+        lights = [a.id for a in scene.all_assets() if a.category == "traffic_light"]
+        return cls(placeable_categories(), places, assets, lanes, movers=movers, lights=lights)
 
 
 def _enum(values: list[str]) -> dict[str, Any]:
@@ -86,6 +92,10 @@ def _named(prop: str, names: WorldNames) -> dict[str, Any] | None:
         return _enum(names.places)
     if prop == "asset":
         return _enum(names.assets)
+    if prop == "actor":  # a storyboard actor moves, or is a light; never a free name ("lead_car_1")
+        return _enum([a for a in names.assets if a in names.movers or a in names.lights] or names.movers)
+    if prop == "light":
+        return _enum([a for a in names.assets if a in names.lights] or names.lights)
     if prop == "assets":
         return {"type": "array", "items": _enum(names.assets), "maxItems": 20}
     if prop == "lane":
@@ -138,6 +148,9 @@ def _slim(node: Any, defs: dict[str, Any], names: WorldNames, prop: str | None =
             return {"type": out["type"], "enum": said}
     if prop == "kind" and names.weathers and set(names.weathers) <= set(out.get("enum", ())):
         return {**out, "enum": list(names.weathers)}  # the weather's kind, not a behaviour's
+    said_manoeuvres = [m for m in names.manoeuvres if m in out.get("enum", ())]
+    if prop == "kind" and said_manoeuvres:
+        return {**out, "enum": said_manoeuvres}  # "brakes" is a stop, never a lane change
     if out.get("type") == "string" and "enum" not in out and "pattern" not in out:
         out.setdefault("maxLength", FREE_TEXT_CHARS)
     if out.get("type") == "object":

@@ -20,6 +20,9 @@ from drivetwin.orchestrator.planning.retrieval.slots import read_slots
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.scenario_manoeuvres import manoeuvres_said
+from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
+from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import FAMILIES, Family
 from drivetwin.worlds.scene import Scene
 
@@ -72,6 +75,16 @@ _BEHAVIOUR = re.compile(
     r"\b(driv\w*|mov(e|es|ing)|park(ed|s)?|stall\w*|circl\w*|loop\w*|skidpad|cross(es|ing)?|jaywalk\w*|walk(s|ing)?"
     r"|cut\w*|follow\w*|patrol\w*|lap\w*|cruis\w*|travel\w*|speed|km/h|mph|m/s)\b"
 )
+# Behaviour words but "move" itself: "move the bin to the gate" only puts it there.
+_MOTION = re.compile(_BEHAVIOUR.pattern.replace(r"mov(e|es|ing)", "moving"))
+# "the", "that", ... just before a thing's name, a colour or size allowed ("the red bench").
+_DEFINITE = re.compile(rf"\b(the|that|this|its|our|my|your|their|his|her)\s+((?:{'|'.join(COLOURS)}|big|small|little|large|old)\s+)?$")
+# "a", "some", an amount just before a thing's name ("a couple of cars", "two little cones").
+_INDEFINITE = re.compile(r"\b(an?|one|two|three|four|five|six|seven|eight|nine|ten|\d+|some|several|few|couple( of)?|pair( of)?"
+                         r"|another|more|extra|new)\s+([a-z]+\s+)?$")
+# Verbs that act on things already there: with one, "a car" may be one of the cars there.
+_ACTS_ON = re.compile(r"\b(mov(e|es|ing)|shift\w*|relocat\w*|drag\w*|push\w*|pull\w*|take|bring|send|swap\w*|paint\w*"
+                      r"|recolou?r\w*|turn\w*|rotat\w*|spin\w*|revers\w*|make|get|have|let)\b")
 # A speed as said, before conversion to m/s: its number is no count or distance.
 _SPEED = re.compile(r"(\d+(?:\.\d+)?)\s*(m/s|km/h|kmh|kph|mph)")
 # Words that ask for a heading or a turn.
@@ -114,10 +127,19 @@ class RequestNames:
     polarity: Literal["add", "remove"] | None = None
     # One clause whose verb only ever asks for new things ("add ...", "spawn ...").
     new_only: bool = False
+    # Categories said of things already there, of which there are several ("the tree by the bus stop").
+    existing: tuple[str, ...] = ()
     # Opens with a command ("make it darker", "remove the bus"): never answered with a search.
     imperative: bool = False
     # Says a layout or a barrier ("in a row", "around", "block the road"): only then an arrangement.
     laid_out: bool = False
+    # Says how far, which way, how fast or how something behaves ("3 m east", "drive", "turn"):
+    # without any of it, "move the bin to the gate" puts the bin there, the move tools cannot.
+    motion: bool = False
+    # Describes something happening over time ("brake when the ego is 15 m away"): a storyboard.
+    over_time: bool = False
+    # The manoeuvres its words name ("brakes" is a stop, "changes lanes" a lane change).
+    manoeuvres: tuple[str, ...] = ()
 
     def kinds(self) -> list[Family]:
         """The requirement kinds the request's mood allows, in the Sr. manager's order: a
@@ -126,19 +148,22 @@ class RequestNames:
         not added again."""
         if self.question:
             return ["search"]
+        if self.over_time and self.assets and self.polarity is None:
+            return ["move"]  # "have the ego stop after 3 s": only a storyboard plays it
         if self.polarity == "remove":
-            return list(_TAKING_AWAY)
-        if self.assets and not self.categories:
-            return list(_EXISTING)
-        if self.polarity == "add":
+            kinds = list(_TAKING_AWAY)
+        elif (self.assets or self.existing) and set(self.categories) <= set(self.existing):
+            kinds = list(_EXISTING)
+        elif self.polarity == "add" or self.new_only:
             kinds = list(_NEW_ONLY if self.new_only else _PUTTING)
         else:
-            # No removal word: nothing is taken away. A search stays unless the request opens with a
-            # command: a question the readers miss must not be forced into an edit ("tel me the lanes"
-            # became a tree), and "make it darker outside" is no question.
-            kinds = [f for f in FAMILIES if f != "remove" and not (f == "search" and self.imperative)]
+            # No removal word: nothing is taken away; and no question, so nothing is only looked up
+            # ("a couple of cars parked up in lot A", "I'd like somewhere to rest by the doors").
+            kinds = [f for f in FAMILIES if f not in ("remove", "search")]
         # "put the bus at the stop", "three cones 20 m ahead": no layout said, no arrangement of many
-        return [f for f in kinds if f != "arrange" or self.laid_out] or kinds
+        kinds = [f for f in kinds if f != "arrange" or self.laid_out] or kinds
+        # No distance, direction, speed or behaviour said: the move tools would change nothing.
+        return [f for f in kinds if f != "move" or self.motion or self.over_time] or kinds
 
 
 def _relation(low: str, said: list[str]) -> list[str]:
@@ -147,6 +172,29 @@ def _relation(low: str, said: list[str]) -> list[str]:
     found = next((rel for pattern, rel in _PLAIN_RELATIONS if re.search(pattern, low)), None)
     # No relation word at all ("cones x3 lot A"): the thing goes at the place named.
     return list(dict.fromkeys([*said, *([found] if found else [])])) or ["at"]
+
+
+def _definite(low: str) -> list[tuple[str, bool]]:
+    """Each category the request names, in order, and whether it says "the"/"that" of it ("the
+    bench", "that truck"): a thing already there, not a new one."""
+    said = ph.normalise(low)  # where find_categories counts from
+    return [(m.category, _DEFINITE.search(said[: m.start]) is not None and not m.plural) for m in ph.find_categories(low)]
+
+
+def _only_new(low: str) -> bool:
+    """Whether every thing the request names is said with "a", "some" or an amount ("a couple of
+    cars parked up in lot A") and no verb acts on things already there ("move a car to lot A")."""
+    said = ph.normalise(low)
+    mentions = ph.find_categories(low)
+    return bool(mentions) and _ACTS_ON.search(said) is None and all(
+        _INDEFINITE.search(said[: m.start]) is not None for m in mentions)
+
+
+def _without_places(low: str, scene: Scene) -> str:
+    """`low` with every landmark's names blanked."""
+    for name in sorted({n.lower() for place in scene.landmarks for n in place.names()}, key=len, reverse=True):
+        low = re.sub(rf"\b{re.escape(name)}\b", " ", low)
+    return low
 
 
 def read_names(prompt: str, scene: Scene) -> RequestNames:
@@ -162,9 +210,22 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     speeds: list[float] = []
     weathers: list[str] = []
     colours: list[str] = []
+    existing: list[str] = []
+    low = prompt.lower()
+    mentions = _definite(low)
     for kind, value in slots:
         if kind == "category":
-            categories.append(value)
+            at = next((i for i, (said, _) in enumerate(mentions) if said == value), None)
+            definite = at is not None and mentions[at][1]
+            mentions = mentions if at is None else mentions[at + 1 :]
+            there = [a.id for a in scene.all_assets() if a.category == value]
+            if definite and there and relations:
+                places += there  # "next to the bench": the bench there (or one of the trees there) is the place
+            elif definite and len(there) == 1 and _STRICT_NEW.search(low) is None:
+                assets += there  # "put the trash bin next to ...": the bin there is what moves
+            else:
+                categories.append(value)
+                existing += [value] if definite and there and _STRICT_NEW.search(low) is None else []
         elif kind == "asset":
             # An asset after a relation word is where something goes ("in front of the ego").
             (places if relations else assets).append(value)
@@ -187,14 +248,16 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     said_speeds = [float(m.group(1)) for m in _SPEED.finditer(prompt.lower())]
     numbers = [n for n in numbers if n not in angles and n not in said_speeds and n not in speeds]
     # The request reader also reads "car" in "car 1" as a category: that car is an asset named.
-    named_kinds = {found.category for a in assets if (found := scene.asset(a)) is not None}
-    categories += sorted(request.categories - set(categories) - named_kinds)
+    named_kinds = {found.category for a in [*assets, *places] if (found := scene.asset(a)) is not None}
+    # The request reader's categories, but those only said inside a place's name ("the bus stop").
+    outside = {m.category for m in ph.find_categories(_without_places(low, scene))}
+    categories += sorted((request.categories & outside) - set(categories) - named_kinds)
     if request.place is not None:
         places.append(request.place)
-    low = prompt.lower()
     removal = REMOVE_WORDS.search(request.low) is not None and ADD_WORDS.search(request.low) is None
     shapes = next((shape for pattern, shape in SHAPES if re.search(pattern, low)), ())
-    directions = tuple(dict.fromkeys((name, sign) for pattern, name, sign in DIRECTIONS if re.search(pattern, low)))
+    unplaced = _without_places(low, scene)  # "the east gate" says no way to go
+    directions = tuple(dict.fromkeys((name, sign) for pattern, name, sign in DIRECTIONS if re.search(pattern, unplaced)))
     clock = clock_time(request.low)
     return RequestNames(
         categories=tuple(dict.fromkeys(categories)),
@@ -213,9 +276,13 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         speeds=tuple(dict.fromkeys(speeds)),
         weathers=tuple(dict.fromkeys(weathers)),
         polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
-        new_only=_STRICT_NEW.search(request.low) is not None and CLAUSE_JOINS.search(request.low) is None,
+        new_only=(_STRICT_NEW.search(request.low) is not None or _only_new(low)) and CLAUSE_JOINS.search(request.low) is None,
         imperative=commands(request.low),
         laid_out=bool(shapes) or _BARRIER.search(low) is not None,
+        existing=tuple(dict.fromkeys(existing)),
+        motion=bool(numbers or angles or speeds or directions or _MOTION.search(low)),
+        over_time=describes_behaviour_over_time(prompt, scene),
+        manoeuvres=tuple(manoeuvres_said(_without_places(low, scene))),
     )
 
 

@@ -20,6 +20,7 @@ from typing import Any
 
 from drivetwin.orchestrator.planning.retrieval._frames import RELATION_WORDS, STRENGTHS, TIME_WORDS, WEATHER
 from drivetwin.orchestrator.planning.retrieval._words import NUMBER_WORDS, plural
+from drivetwin.orchestrator.planning.rules.spelling import english_words
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog, placeable_categories
@@ -203,7 +204,8 @@ def _words(low: str, scene: Scene) -> list[tuple[int, str, Any]]:
                 found.append((spans[i][0], "count", int(word)))
             elif word in NUMBER_WORDS[2:]:
                 found.append((spans[i][0], "count", NUMBER_WORDS.index(word)))
-            elif len(word) >= SPELLING_MIN_LETTERS and word not in _COMMON:
+            elif len(word) >= SPELLING_MIN_LETTERS and word not in english_words():
+                # a real word is no slip for a near name ("there" is no "three", "over" no "rover")
                 cutoff = LONG_WORD_CUTOFF if len(word) >= LONG_WORD_LETTERS else SPELLING_CUTOFF
                 close = difflib.get_close_matches(word, singles, n=1, cutoff=cutoff)
                 if close:
@@ -211,41 +213,6 @@ def _words(low: str, scene: Scene) -> list[tuple[int, str, Any]]:
             i += 1
     return found
 
-
-# Everyday words that spell like a known one but are not it ("there"/"three", "place"/"plane").
-_COMMON = frozenset(
-    [
-        "there",
-        "three",
-        "these",
-        "where",
-        "place",
-        "please",
-        "front",
-        "right",
-        "left",
-        "behind",
-        "around",
-        "along",
-        "close",
-        "could",
-        "would",
-        "should",
-        "about",
-        "every",
-        "make",
-        "more",
-        "want",
-        "need",
-        "into",
-        "with",
-        "have",
-        "from",
-        "them",
-        "next",
-        "near",
-    ]
-)
 
 # Argument names that hold a slot, and the slot's kind.
 _KEY_KIND = {
