@@ -92,3 +92,43 @@ def test_a_light_named_is_offered_its_phases(campus: Scene, spelling_grounder: G
     prompt = "make traffic light 1 stay red for 30 s"
     offered = _offered(prompt, Requirement(kind="move", what="traffic light 1"), campus, spelling_grounder)
     assert offered["set_light_phases"]["properties"]["light"]["enum"] == ["traffic_light_1"]
+
+
+def _args(prompt: str, need: Requirement, campus: Scene, grounder: Grounder, tool: str) -> dict[str, Any]:
+    properties: dict[str, Any] = _offered(prompt, need, campus, grounder)[tool]["properties"]
+    return properties
+
+
+def test_a_length_is_never_a_count_and_a_length_field_takes_only_lengths(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    need = Requirement(kind="add", what="crossing sign", where="ego")
+    args = _args("a crossing sign on the right-hand footway 25 m ahead of the ego", need, campus, spelling_grounder,
+                 "add_asset")
+    assert "count" not in args
+    need = Requirement(kind="arrange", what="cones", where="eastbound lane", how="line")
+    args = _args("set 6 cones out in a line 4 metres apart", need, campus, spelling_grounder, "arrange_assets")
+    assert args["count"]["enum"] == [6]
+    assert args["spacing"]["enum"] == [4.0]
+
+
+def test_coordinates_go_only_to_their_own_axis_and_are_no_count(campus: Scene, spelling_grounder: Grounder) -> None:
+    need = Requirement(kind="add", what="cone", where="x=40 y=-2")
+    args = _args("drop one cone at x=40 y=-2", need, campus, spelling_grounder, "add_asset")
+    location = args["location"]["properties"]
+    assert location["x"]["enum"] == [40.0] and location["y"]["enum"] == [-2.0]
+    assert "count" not in args
+    args = _args("drop one cone by the fountain", Requirement(kind="add", what="cone", where="fountain"), campus,
+                 spelling_grounder, "add_asset")
+    assert not {"x", "y"} & set(args["location"]["properties"])  # no coordinates said, none offered
+
+
+def test_a_speed_said_must_be_written_and_a_compass_way_picks_the_lanes_going_that_way(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    need = Requirement(kind="add", what="motorbike", how="drive")
+    args = _offered("spawn a motorbike heading north at 7 m/s", need, campus, spelling_grounder)["add_asset"]
+    assert "behaviour" in args["required"]
+    behaviour = args["properties"]["behaviour"]
+    assert "speed" in behaviour["required"] and behaviour["properties"]["speed"]["enum"] == [7.0]
+    assert behaviour["properties"]["lane"]["enum"] == ["campus_northbound"]

@@ -18,6 +18,8 @@ from drivetwin.orchestrator.planning.base import PlanContext, PlanningError, Tra
 from drivetwin.orchestrator.planning.grounding import Grounder, Match
 from drivetwin.orchestrator.planning.llm.demos import fits, jr_demos
 from drivetwin.orchestrator.planning.llm.jr_schema import (
+    COORDINATE_FIELDS,
+    COUNT_FIELDS,
     NUMBER_FIELDS,
     TURN_FIELDS,
     WorldNames,
@@ -31,7 +33,7 @@ from drivetwin.orchestrator.planning.scenario_reading import SCENARIO_TOOLS
 from drivetwin.prompts.templates import as_json, jr_examples, render
 from drivetwin.tools.base import Family, Tool, ToolCall
 from drivetwin.tools.errors import ToolError
-from drivetwin.worlds.scene import Scene
+from drivetwin.worlds.scene import Lane, Scene
 
 JR_MAX_TOKENS = 200
 # Few-shot examples per call, chosen by meaning from the family's bank.
@@ -145,6 +147,10 @@ def _unasked_fields(kind: Family, said: RequestNames, sure_category: bool) -> fr
         unasked |= set(MOVE_DIRECTIONS) - {name for name, _ in said.directions}
     if not said.numbers:
         unasked |= NUMBER_FIELDS - TURN_FIELDS - ({"speed"} if said.speeds else set())
+    elif all(n in said.lengths or n in dict(said.coordinates).values() for n in said.numbers):
+        unasked |= COUNT_FIELDS  # "25 m ahead", "x=40" say no count
+    if "absolute" not in said.relations:
+        unasked |= COORDINATE_FIELDS  # no "x=40" nor "coordinates": a count is no coordinate
     if not said.turning and not said.angles:
         unasked |= TURN_FIELDS
     if said.assets and not said.categories and kind in ("appearance", "remove"):
@@ -156,16 +162,18 @@ def _unasked_fields(kind: Family, said: RequestNames, sure_category: bool) -> fr
 
 def _stated_fields(kind: Family, said: RequestNames) -> frozenset[str]:
     """Fields the request states a value for, which a small model still leaves out
-    ("move the hydrant 2 m east" as a move of nothing)."""
+    ("move the hydrant 2 m east" as a move of nothing, "a motorbike at 7 m/s" with no speed)."""
+    speed = frozenset({"speed", "behaviour"} if said.speeds and kind in ("add", "move") else ())
     if kind == "move" and said.angles and not said.numbers:
-        return frozenset({"turn_deg"})
+        return frozenset({"turn_deg"}) | speed
     if not said.numbers:
-        return frozenset()
+        return speed
     if kind == "move" and said.directions:
-        return frozenset(name for name, _ in said.directions)
-    if kind in ("add", "arrange") and any(n.is_integer() and n > 1 for n in said.numbers):
-        return frozenset({"count"})
-    return frozenset()
+        return frozenset(name for name, _ in said.directions) | speed
+    counts = [n for n in said.numbers if n not in said.lengths and n not in dict(said.coordinates).values()]
+    if kind in ("add", "arrange") and any(n.is_integer() and n > 1 for n in counts):
+        return frozenset({"count"}) | speed
+    return speed
 
 
 def _narrow_to_request(
@@ -188,6 +196,10 @@ def _narrow_to_request(
     names.places = keep(names.places, [*said.places, *pointed], world.places)
     names.relations = list(said.relations)
     names.numbers = list(said.numbers)
+    names.lengths = list(said.lengths)
+    names.coordinates = list(said.coordinates)
+    ways = [(name, sign) for name, sign in said.directions if name in ("east", "north")]
+    names.lanes = [lane.id for lane in scene.roads.lanes if ways and _heads(lane, ways)] or names.lanes
     names.angles = list(said.angles)
     names.speeds = list(said.speeds)
     names.weathers = list(said.weathers)
@@ -196,6 +208,13 @@ def _narrow_to_request(
     names.shapes = list(said.shapes)
     names.manoeuvres = list(said.manoeuvres)
     names.signs = dict(said.directions)
+
+
+def _heads(lane: Lane, ways: list[tuple[str, int]]) -> bool:
+    """Whether `lane`'s traffic goes mostly the compass way said ("driving north")."""
+    (x0, y0), (x1, y1) = lane.centreline[0], lane.centreline[-1]
+    east, north = x1 - x0, y1 - y0
+    return any(sign * (east if name == "east" else north) > abs(north if name == "east" else east) for name, sign in ways)
 
 
 def render_requirement(requirement: Requirement, grounding: Grounding) -> str:

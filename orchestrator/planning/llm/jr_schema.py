@@ -31,6 +31,13 @@ NUMBER_FIELDS = frozenset({
     "forward", "left", "east", "north", "turn_deg", "yaw_deg", "heading_deg", "x", "y", "at_x", "at_y",
     "offset_m", "gap", "metres", "rate", "seconds", "at_time", "start_time",
 })
+# Of those, the ones that count things: a length said ("25 m ahead") is never one of them.
+COUNT_FIELDS = frozenset({"count", "columns", "cones"})
+# Of those, the ones that hold metres: where the request says lengths ("every 5 m"), only those.
+LENGTH_FIELDS = frozenset({"distance", "along_m", "radius", "spacing", "within", "offset_m", "gap", "metres",
+                           "forward", "left", "east", "north"})
+# Of those, the ones that hold coordinates: offered only where the request gives some ("x=40 y=5").
+COORDINATE_FIELDS = frozenset({"x", "y", "at_x", "at_y"})
 # Of those, the ones that turn a thing: offered only when the request speaks of turning.
 TURN_FIELDS = frozenset({"yaw_deg", "turn_deg", "heading_deg"})
 # Of those, the ones a direction word can turn negative ("1.5 m south" is north -1.5).
@@ -49,6 +56,9 @@ class WorldNames:
     # Set from what the request itself says (llm/request_names.py); empty means not narrowed.
     relations: list[str] = field(default_factory=list)
     numbers: list[float] = field(default_factory=list)
+    # Of the numbers, those said as lengths ("25 m") and as coordinates ("x=40"): no count takes them.
+    lengths: list[float] = field(default_factory=list)
+    coordinates: list[tuple[str, float]] = field(default_factory=list)
     angles: list[float] = field(default_factory=list)
     speeds: list[float] = field(default_factory=list)
     weathers: list[str] = field(default_factory=list)
@@ -142,6 +152,12 @@ def _slim(node: Any, defs: dict[str, Any], names: WorldNames, prop: str | None =
         else:
             out[key] = value
     amounts = names.angles if prop in TURN_FIELDS else names.speeds if prop == "speed" else names.numbers
+    if prop in COUNT_FIELDS:
+        amounts = [n for n in amounts if n not in names.lengths and all(n != v for _, v in names.coordinates)]
+    amounts = names.lengths if prop in LENGTH_FIELDS and names.lengths else amounts
+    axis = [v for a, v in names.coordinates if prop in COORDINATE_FIELDS and prop.endswith(a)]
+    if axis and out.get("type") == "number":
+        return {"type": "number", "enum": axis}  # x as said, sign and all; never the y
     if prop in NUMBER_FIELDS and amounts and out.get("type") in ("number", "integer"):
         said = _said_numbers(out, amounts, prop in SIGNED_FIELDS | TURN_FIELDS, names.signs.get(prop))
         if said:
@@ -217,4 +233,4 @@ def _arg(name: str, sub: dict[str, Any]) -> str:
     return name
 
 
-__all__ = ["NUMBER_FIELDS", "OMITTED_FIELDS", "TURN_FIELDS", "WorldNames", "args_schema", "call_schema", "signature"]
+__all__ = ["COORDINATE_FIELDS", "COUNT_FIELDS", "LENGTH_FIELDS", "NUMBER_FIELDS", "OMITTED_FIELDS", "TURN_FIELDS", "WorldNames", "args_schema", "call_schema", "signature"]

@@ -20,6 +20,7 @@ from drivetwin.orchestrator.planning.retrieval.slots import read_slots
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.numbers import numbers_in
 from drivetwin.orchestrator.planning.scenario_manoeuvres import manoeuvres_said
 from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
 from drivetwin.tools.appearance import COLOURS
@@ -85,6 +86,8 @@ _INDEFINITE = re.compile(r"\b(an?|one|two|three|four|five|six|seven|eight|nine|t
 # Verbs that act on things already there: with one, "a car" may be one of the cars there.
 _ACTS_ON = re.compile(r"\b(mov(e|es|ing)|shift\w*|relocat\w*|drag\w*|push\w*|pull\w*|take|bring|send|swap\w*|paint\w*"
                       r"|recolou?r\w*|turn\w*|rotat\w*|spin\w*|revers\w*|make|get|have|let)\b")
+# A length's unit right after its number.
+_LENGTH_UNIT = re.compile(r"\s*(m|metres?|meters?|mtrs?|km|kilometres?|kilometers?)\b(?!/)")
 # A speed as said, before conversion to m/s: its number is no count or distance.
 _SPEED = re.compile(r"(\d+(?:\.\d+)?)\s*(m/s|km/h|kmh|kph|mph)")
 # Words that ask for a heading or a turn.
@@ -110,6 +113,9 @@ class RequestNames:
     places: tuple[str, ...] = ()
     relations: tuple[str, ...] = ()
     numbers: tuple[float, ...] = ()
+    # Of the numbers, those said as lengths ("25 m ahead", "ten metres") and as coordinates ("x=40"): no count.
+    lengths: tuple[float, ...] = ()
+    coordinates: tuple[tuple[str, float], ...] = ()
     # Numbers said as angles ("90 degrees"): only a heading or a turn takes them; speeds
     # ("6 m/s", "20 km/h", as m/s) only a speed.
     angles: tuple[float, ...] = ()
@@ -211,6 +217,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     weathers: list[str] = []
     colours: list[str] = []
     existing: list[str] = []
+    coordinates: list[tuple[str, float]] = []
     low = prompt.lower()
     mentions = _definite(low)
     for kind, value in slots:
@@ -241,6 +248,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
             weathers.append(str(value))
         elif kind in _NUMBER_SLOTS:
             numbers.append(float(value))
+            coordinates += [(kind, float(value))] if kind in ("x", "y") else []
         elif kind == "colour" and re.search(rf"\b{value}\b", prompt.lower()):  # said, not implied by a thing
             colours.append(value)
     # "a few cones", "a couple of the lamps": the amount the rule planner reads for the words, a count to copy
@@ -265,6 +273,8 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         places=tuple(dict.fromkeys(places)),
         relations=tuple(_relation(low, relations)),
         numbers=tuple(dict.fromkeys(numbers)),
+        lengths=tuple(dict.fromkeys(n.value for n in numbers_in(low) if _LENGTH_UNIT.match(low, n.end))),
+        coordinates=tuple(dict.fromkeys(coordinates)),
         colours=tuple(dict.fromkeys(colours)),
         times=(str(clock),) if clock is not None and clock.valid else (),
         directions=directions,
