@@ -132,3 +132,32 @@ def test_a_speed_said_must_be_written_and_a_compass_way_picks_the_lanes_going_th
     behaviour = args["properties"]["behaviour"]
     assert "speed" in behaviour["required"] and behaviour["properties"]["speed"]["enum"] == [7.0]
     assert behaviour["properties"]["lane"]["enum"] == ["campus_northbound"]
+
+
+@pytest.mark.parametrize(("prompt", "tools"), [
+    ("so how far is it from the fountain to the east gate?", {"measure_distance"}),
+    ("is it still foggy out there?", {"describe_environment"}),
+    ("which lanes has Campus Drive got?", {"find_lanes"}),
+    ("where have the bollards got to?", {"find_assets", "asset_properties"}),
+])
+def test_a_question_is_offered_the_lookups_that_answer_what_it_asks(
+    campus: Scene, spelling_grounder: Grounder, prompt: str, tools: set[str]
+) -> None:
+    assert set(_offered(prompt, Requirement(kind="search", what=prompt), campus, spelling_grounder)) == tools
+
+
+def test_a_distance_between_two_things_named_measures_one_to_the_other(campus: Scene, spelling_grounder: Grounder) -> None:
+    prompt = "so how far is it from the fountain to the east gate?"
+    args = _offered(prompt, Requirement(kind="search", what=prompt), campus, spelling_grounder)["measure_distance"]
+    ends = {args["properties"]["a"]["enum"][0], args["properties"]["b"]["enum"][0]}
+    assert ends == {"fountain", "east gate"} and len(args["properties"]["a"]["enum"]) == 1
+    assert "b" in args["required"]
+
+
+def test_a_search_for_a_landmark_takes_words_of_a_landmark_name_never_free_words(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    prompt = "which places are there near the junction?"
+    args = _offered(prompt, Requirement(kind="search", what=prompt), campus, spelling_grounder)["find_landmarks"]
+    query = args["properties"]["query"]["enum"]
+    assert "crosswalk" in query and "parking lot A" in query and "maxLength" not in args["properties"]["query"]

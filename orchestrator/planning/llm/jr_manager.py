@@ -126,11 +126,16 @@ def ground_requirement(
     sure_category = len(names.categories) < len(WorldNames.of(scene).categories)
     names.omitted = names.omitted | _unasked_fields(kind, said, sure_category)
     names.required = _stated_fields(kind, said)
+    if kind == "search" and len(names.ends) >= 2:  # "how far is the bench from the bus stop": both ends
+        names.required = names.required | {"b"}
     if kind == "move" and len(names.assets) == 1:  # the one thing named is the one to move
         names.required = names.required | {"asset"}
     relation = next((rel for pattern, rel in RELATION_WORDS if re.search(pattern, prompt.lower())), None)
     lights = "traffic_light" in said.categories or any(a in names.lights for a in said.assets)
-    return Grounding(names, matches, relation, said.over_time, frozenset() if lights else frozenset({"set_light_phases"}))
+    unfit = set() if lights else {"set_light_phases"}
+    if kind == "search" and said.lookups:  # "how far ..." is measured, never listed as landmarks
+        unfit |= {t.name for t in context.registry.family("search")} - set(said.lookups)
+    return Grounding(names, matches, relation, said.over_time, frozenset(unfit))
 
 
 def _unasked_fields(kind: Family, said: RequestNames, sure_category: bool) -> frozenset[str]:
@@ -197,6 +202,7 @@ def _narrow_to_request(
     names.relations = list(said.relations)
     names.numbers = list(said.numbers)
     names.lengths = list(said.lengths)
+    names.ends = list(dict.fromkeys([*said.places, *said.assets]))
     names.coordinates = list(said.coordinates)
     ways = [(name, sign) for name, sign in said.directions if name in ("east", "north")]
     names.lanes = [lane.id for lane in scene.roads.lanes if ways and _heads(lane, ways)] or names.lanes

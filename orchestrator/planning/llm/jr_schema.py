@@ -71,6 +71,11 @@ class WorldNames:
     movers: list[str] = field(default_factory=list)
     lights: list[str] = field(default_factory=list)
     manoeuvres: list[str] = field(default_factory=list)
+    # The places and things the request names (the ego too, when said): a distance's two ends.
+    ends: list[str] = field(default_factory=list)
+    # Every landmark's names and the roads' names: what a search's words may be.
+    landmark_words: list[str] = field(default_factory=list)
+    roads: list[str] = field(default_factory=list)
     # Fields left out of this request's schema on top of OMITTED_FIELDS, and fields it must fill.
     omitted: frozenset[str] = frozenset()
     required: frozenset[str] = frozenset()
@@ -83,7 +88,10 @@ class WorldNames:
         places = [lm.name for lm in scene.landmarks] + lanes + assets
         movers = [a.id for a in scene.all_assets() if category(a.category).motion != "prop"]
         lights = [a.id for a in scene.all_assets() if a.category == "traffic_light"]
-        return cls(placeable_categories(), places, assets, lanes, movers=movers, lights=lights)
+        words = [name for lm in scene.landmarks for name in lm.names()]
+        roads = sorted({lane.road for lane in scene.roads.lanes if lane.road})
+        return cls(placeable_categories(), places, assets, lanes, movers=movers, lights=lights, landmark_words=words,
+                   roads=roads)
 
 
 def _enum(values: list[str]) -> dict[str, Any]:
@@ -96,14 +104,20 @@ def _named(prop: str, names: WorldNames) -> dict[str, Any] | None:
         return _enum(names.categories)
     if prop in ("categories",):
         return {"type": "array", "items": _enum(names.categories), "minItems": 1, "maxItems": 4}
-    if prop in ("a", "b"):  # a distance's ends: those named, or the ego ("how far is the library?")
-        return _enum([*names.places, "ego"])
+    if prop in ("a", "b") and len(names.ends) == 2:  # a distance's two ends named: one each, never one twice
+        return _enum(names.ends[:1] if prop == "a" else names.ends[1:])
+    if prop in ("a", "b"):  # or one and the ego ("how far is the library?")
+        return _enum(names.ends if len(names.ends) > 2 else [*names.places, "ego"])
     if prop in ("target", "near", "centre", "to", "nearest_to"):  # a place, thing or lane named, never a free phrase ("250km/h")
         return _enum(names.places)
     if prop == "asset":
         return _enum(names.assets)
     if prop == "actor":  # a storyboard actor moves, or is a light; never a free name ("lead_car_1")
         return _enum([a for a in names.assets if a in names.movers or a in names.lights] or names.movers)
+    if prop == "query" and names.landmark_words:  # words of a landmark's name, never free words
+        return _enum(names.landmark_words)
+    if prop == "road" and names.roads:
+        return _enum(names.roads)
     if prop == "light":
         return _enum([a for a in names.assets if a in names.lights] or names.lights)
     if prop == "assets":

@@ -86,6 +86,15 @@ _INDEFINITE = re.compile(r"\b(an?|one|two|three|four|five|six|seven|eight|nine|t
 # Verbs that act on things already there: with one, "a car" may be one of the cars there.
 _ACTS_ON = re.compile(r"\b(mov(e|es|ing)|shift\w*|relocat\w*|drag\w*|push\w*|pull\w*|take|bring|send|swap\w*|paint\w*"
                       r"|recolou?r\w*|turn\w*|rotat\w*|spin\w*|revers\w*|make|get|have|let)\b")
+# What a question asks about -> the lookup that answers it; a distance asked is only measured.
+_LOOKUPS: tuple[tuple[str, str], ...] = (
+    (r"\b(weather|rain\w*|snow\w*|fog\w*|sunny|cloud\w*|wet|dry|time|clock|dark|bright|lights? (on|off))\b",
+     "describe_environment"),
+    (r"\blanes?\b", "find_lanes"),
+    (r"\b(landmarks?|places?|buildings?|entrances?|gates?|crossings?|crosswalks?|car parks?|parking lots?)\b",
+     "find_landmarks"),
+)
+_DISTANCE = re.compile(r"\bhow far\b|\bdistance\b|\bfar (away )?from\b")
 # A length's unit right after its number.
 _LENGTH_UNIT = re.compile(r"\s*(m|metres?|meters?|mtrs?|km|kilometres?|kilometers?)\b(?!/)")
 # A speed as said, before conversion to m/s: its number is no count or distance.
@@ -146,6 +155,8 @@ class RequestNames:
     over_time: bool = False
     # The manoeuvres its words name ("brakes" is a stop, "changes lanes" a lane change).
     manoeuvres: tuple[str, ...] = ()
+    # The lookups that answer what a question asks about ("how far" is measured); () when it names none.
+    lookups: tuple[str, ...] = ()
 
     def kinds(self) -> list[Family]:
         """The requirement kinds the request's mood allows, in the Sr. manager's order: a
@@ -201,6 +212,15 @@ def _without_places(low: str, scene: Scene) -> str:
     for name in sorted({n.lower() for place in scene.landmarks for n in place.names()}, key=len, reverse=True):
         low = re.sub(rf"\b{re.escape(name)}\b", " ", low)
     return low
+
+
+def _lookups(low: str, things: bool) -> tuple[str, ...]:
+    """The lookups that answer what `low` asks about: a distance is measured; things named are
+    found or described; weather and time, lanes, places each have their own."""
+    if _DISTANCE.search(low):
+        return ("measure_distance",)
+    found = [tool for pattern, tool in _LOOKUPS if re.search(pattern, low)]
+    return tuple(found + (["find_assets", "asset_properties"] if things else []))
 
 
 def read_names(prompt: str, scene: Scene) -> RequestNames:
@@ -293,6 +313,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         motion=bool(numbers or angles or speeds or directions or _MOTION.search(low)),
         over_time=describes_behaviour_over_time(prompt, scene),
         manoeuvres=tuple(manoeuvres_said(_without_places(low, scene))),
+        lookups=_lookups(low, bool(categories or assets)),
     )
 
 
