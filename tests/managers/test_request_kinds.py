@@ -161,3 +161,11 @@ def test_a_search_for_a_landmark_takes_words_of_a_landmark_name_never_free_words
     args = _offered(prompt, Requirement(kind="search", what=prompt), campus, spelling_grounder)["find_landmarks"]
     query = args["properties"]["query"]["enum"]
     assert "crosswalk" in query and "parking lot A" in query and "maxLength" not in args["properties"]["query"]
+
+
+@pytest.mark.parametrize("prompt", ["Reverse the player car 8 metres.", "nudge the insured vehicle 2 m forward",
+                                    "move the ego car 3 m"])
+def test_every_word_for_the_ego_names_the_ego_not_a_new_car(campus: Scene, prompt: str) -> None:
+    found = read_slots(prompt, campus).found
+    assert ("asset", "ego") in found
+    assert ("category", "passenger_car") not in found

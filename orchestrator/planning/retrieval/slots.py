@@ -20,6 +20,7 @@ from typing import Any
 
 from drivetwin.orchestrator.planning.retrieval._frames import RELATION_WORDS, STRENGTHS, TIME_WORDS, WEATHER
 from drivetwin.orchestrator.planning.retrieval._words import NUMBER_WORDS, plural
+from drivetwin.orchestrator.planning.rules.phrases import EGO_WORDS
 from drivetwin.orchestrator.planning.rules.spelling import english_words
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.tools.base import ToolCall
@@ -132,8 +133,8 @@ def _scene_phrases(scene: Scene) -> dict[str, tuple[str, Any]]:
                 phrases[f"{_norm(word)} number {number}"] = ("asset", asset.id)
         if asset.label:
             phrases[_norm(asset.label)] = ("asset", asset.id)
-    for word in ("ego", "ego vehicle", "ego car", "our car", "the test car"):
-        phrases[_norm(word)] = ("asset", "ego")
+    for word in EGO_WORDS:  # "the player car", "the insured vehicle": the ego, not a car
+        phrases[_norm(word)] = phrases[_norm(f"the {word.removeprefix('the ')}")] = ("asset", "ego")
     return phrases
 
 
