@@ -169,3 +169,9 @@ def test_every_word_for_the_ego_names_the_ego_not_a_new_car(campus: Scene, promp
     found = read_slots(prompt, campus).found
     assert ("asset", "ego") in found
     assert ("category", "passenger_car") not in found
+
+
+def test_a_shape_said_is_an_arrangement_not_things_added_one_by_one(campus: Scene) -> None:
+    kinds = read_names("stand six people in a ring around the fountain", campus).kinds()
+    assert "arrange" in kinds and "add" not in kinds
+    assert "add" in read_names("add a cone by the fountain", campus).kinds()

@@ -177,8 +177,10 @@ class RequestNames:
             # No removal word: nothing is taken away; and no question, so nothing is only looked up
             # ("a couple of cars parked up in lot A", "I'd like somewhere to rest by the doors").
             kinds = [f for f in FAMILIES if f not in ("remove", "search")]
-        # "put the bus at the stop", "three cones 20 m ahead": no layout said, no arrangement of many
+        # "put the bus at the stop", "three cones 20 m ahead": no layout said, no arrangement of many;
+        # a shape said ("in a circle round the fountain") is an arrangement, not things added one by one
         kinds = [f for f in kinds if f != "arrange" or self.laid_out] or kinds
+        kinds = [f for f in kinds if f != "add" or not self.shapes or "arrange" not in kinds]
         # No distance, direction, speed or behaviour said: the move tools would change nothing.
         return [f for f in kinds if f != "move" or self.motion or self.over_time] or kinds
 
