@@ -114,7 +114,7 @@ def test_a_one_clause_question_goes_straight_to_the_search_manager(
     assert backend.calls == 1
     schema = backend.schemas[0]
     assert schema is not None
-    assert {o["properties"]["tool"]["const"] for o in schema["anyOf"]} >= {"find_assets", "find_landmarks"}
+    assert {o["properties"]["tool"]["const"] for o in schema["anyOf"]} == {"find_assets", "asset_properties"}
     assert report.answer and "fire_hydrant_1" in report.answer
 
 
@@ -243,7 +243,7 @@ def test_the_two_ends_of_a_distance_are_the_places_the_request_names(campus: Sce
     prompt = "How far is the fountain from the east gate?"
     need = Requirement(kind="search", what="distance", where="fountain, east gate")
     props = _props(_args(prompt, need, campus, "measure_distance", spelling_grounder))
-    assert set(props["a"]["enum"]) == set(props["b"]["enum"]) == {"fountain", "east gate", "ego"}
+    assert {*props["a"]["enum"], *props["b"]["enum"]} == {"fountain", "east gate"}  # one end each, no ego
 
 
 @pytest.mark.parametrize(("prompt", "count"), [("put a few cones by the east gate", 3), ("a handful of bins near the library", 4)])
