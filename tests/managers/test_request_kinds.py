@@ -18,7 +18,7 @@ from drivetwin.orchestrator.planning.retrieval.slots import read_slots
 from drivetwin.tools.registry import ToolRegistry
 from drivetwin.worlds.scene import Scene
 
-from .conftest import ScriptedBackend
+from .conftest import ScriptedBackend, call, requirement, scripted_session
 
 
 def _offered(prompt: str, need: Requirement, campus: Scene, grounder: Grounder) -> dict[str, dict[str, Any]]:
@@ -175,3 +175,27 @@ def test_a_shape_said_is_an_arrangement_not_things_added_one_by_one(campus: Scen
     kinds = read_names("stand six people in a ring around the fountain", campus).kinds()
     assert "arrange" in kinds and "add" not in kinds
     assert "add" in read_names("add a cone by the fountain", campus).kinds()
+
+
+def test_a_kind_the_words_never_name_is_asked_not_guessed(campus: Scene) -> None:
+    # The model picked a truck for "somewhere to sit": nothing is applied; the kinds nearest the
+    # words in meaning (MiniLM, for real) are offered instead.
+    truck = call("add_asset", category="truck", location={"relation": "at", "target": "Library entrance"})
+    session, _ = scripted_session(campus, [requirement("add", "somewhere to sit", "Library entrance"), truck, truck],
+                                  Grounder())  # the review sends the first truck back once
+    before = session.scene.model_dump_json()
+    report = session.submit("we could do with somewhere to sit down outside the library")
+    assert report.question is not None and not report.ok
+    assert session.scene.model_dump_json() == before
+    offered = [c.args["category"] for r in report.question.readings for c in r.calls]
+    assert "bench" in offered and "truck" not in offered
+
+
+def test_a_kind_the_words_name_is_not_asked(campus: Scene, spelling_grounder: Grounder) -> None:
+    session, _ = scripted_session(campus, [
+        requirement("add", "bench", "Library entrance"),
+        call("add_asset", category="bench", location={"relation": "at", "target": "Library entrance"}),
+    ], spelling_grounder)
+    report = session.submit("add a bench at the library entrance")
+    assert report.ok, report.error
+    assert report.question is None

@@ -17,12 +17,13 @@ import time
 from typing import Any
 
 from drivetwin.orchestrator.backends import Backend, BackendError, load_backend
-from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, TraceStep
+from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningError, Question, Reading, TraceStep
 from drivetwin.orchestrator.planning.grounding import Grounder
 from drivetwin.orchestrator.planning.llm.jr_manager import JrManager
 from drivetwin.orchestrator.planning.llm.managers import CALL_TIMEOUT_S
-from drivetwin.orchestrator.planning.llm.request_names import read_names
+from drivetwin.orchestrator.planning.llm.request_names import RequestNames, read_names
 from drivetwin.orchestrator.planning.llm.sr_manager import SrManager
+from drivetwin.orchestrator.planning.readings import describe
 from drivetwin.orchestrator.planning.rules.spelling import repair
 from drivetwin.prompts.templates import prompt_version
 from drivetwin.tools.base import Family, ToolCall
@@ -33,6 +34,12 @@ DEFAULT_MODEL = "smollm2-135m"
 BASE_CONFIDENCE = 0.9
 RETRY_PENALTY = 0.15
 MIN_CONFIDENCE = 0.3
+
+# Tools that bring new things in; what kinds they bring the request must name, or the person is asked.
+_ADDING = ("add_asset", "arrange_assets")
+# Kinds nearest the request in meaning looked at, and offered (those a dry run accepts), when it names none.
+KINDS_LOOKED_AT = 6
+KINDS_OFFERED = 3
 
 # Text that addresses the planner instead of describing a scene change. Matching is on
 # purpose broad: a false alarm costs a rephrase, a miss could cost the user's scene.
@@ -123,6 +130,12 @@ class LlmPlanner:
             trace += steps
         retries = sum(step.retries for step in trace)
         tokens = sum(step.tokens for step in trace)
+        question = kind_to_ask(prompt, calls, said, context, self.grounder)
+        if question is not None:  # the model picked a kind the words never name: ask, apply nothing
+            trace.append(TraceStep(level="llm_planner", input="; ".join(str(c) for c in calls),
+                                   output="the request names no kind of thing to add: asking which"))
+            return Plan(calls=[], planner=self.name, confidence=MIN_CONFIDENCE, prompt_version=prompt_version(),
+                        trace=trace, retries=retries, tokens=tokens, read_as=read_as, question=question)
         trace.append(
             TraceStep(
                 level="llm_planner",
@@ -144,6 +157,38 @@ class LlmPlanner:
             tokens=tokens,
             read_as=read_as,
         )
+
+
+def kind_to_ask(
+    prompt: str, calls: list[ToolCall], said: RequestNames, context: PlanContext, grounder: Grounder
+) -> Question | None:
+    """A question when the plan adds a kind of thing the request never names ("somewhere to rest",
+    "set-dress the entrance"): the model's pick is a guess, so the kinds nearest the words in meaning
+    are offered instead, each as the same plan with that kind, as far as a dry run accepts it. None
+    when the request names a kind, or the thing was added the turn before ("two more of them")."""
+    at = next((i for i, c in enumerate(calls) if c.tool in _ADDING), None)
+    if at is None or said.categories or said.existing:
+        return None
+    call = calls[at]
+    picked = call.args.get("category") or next(iter(call.args.get("categories") or []), None)
+    if picked is not None and context.memory.last_added(str(picked)):
+        return None
+    readings: list[Reading] = []
+    for match in grounder.rank(prompt, "category", context.scene, KINDS_LOOKED_AT):
+        swapped = [*calls[:at], _of_kind(call, match.name), *calls[at + 1 :]]
+        if context.check(swapped) is None:
+            readings.append(Reading(text=describe(swapped), calls=swapped, confidence=max(0.0, min(1.0, match.score))))
+        if len(readings) == KINDS_OFFERED:
+            break
+    if not readings:
+        return None
+    return Question(text="I am not sure what you meant: your words name no kind of thing to add. Which did you mean?",
+                    readings=readings)
+
+
+def _of_kind(call: ToolCall, kind: str) -> ToolCall:
+    key, value = ("category", kind) if call.tool == "add_asset" else ("categories", [kind])
+    return ToolCall(tool=call.tool, args={**call.args, key: value})
 
 
 def format_trace(plan: Plan) -> str:
@@ -168,4 +213,4 @@ def format_trace(plan: Plan) -> str:
     return "\n".join(lines)
 
 
-__all__ = ["LlmPlanner", "format_trace", "injection_reason"]
+__all__ = ["LlmPlanner", "format_trace", "injection_reason", "kind_to_ask"]
