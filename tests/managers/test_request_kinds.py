@@ -199,3 +199,16 @@ def test_a_kind_the_words_name_is_not_asked(campus: Scene, spelling_grounder: Gr
     report = session.submit("add a bench at the library entrance")
     assert report.ok, report.error
     assert report.question is None
+
+
+@pytest.mark.parametrize(("prompt", "speed"), [("get the ego up to thirty-six kilometres an hour", 10.0),
+                                               ("have car 2 go east at 6 ms", 6.0)])
+def test_a_speed_however_its_unit_is_written_is_a_speed_and_no_count(campus: Scene, prompt: str, speed: float) -> None:
+    said = read_names(prompt, campus)
+    assert [round(s, 2) for s in said.speeds] == [speed]
+    assert said.numbers == ()  # neither the figure nor the unit's "an hour"
+
+
+def test_going_somewhere_is_motion_and_moving_a_thing_to_a_place_is_not(campus: Scene) -> None:
+    assert "move" in read_names("send the SUV off towards the library", campus).kinds()
+    assert "move" not in read_names("move the trash bin to the library", campus).kinds()

@@ -11,16 +11,18 @@ a command is not). Where the request names none of a kind, nothing is narrowed.
 from __future__ import annotations
 
 import re
+from contextlib import suppress
 from dataclasses import dataclass
 from typing import Literal
 
+from drivetwin.orchestrator.planning.base import PlanningError
 from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, commands
 from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.retrieval.slots import read_slots
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
-from drivetwin.orchestrator.planning.rules.numbers import numbers_in
+from drivetwin.orchestrator.planning.rules.numbers import NUMBER, SPEED_UNIT, numbers_in, speed_said, spelt_measures
 from drivetwin.orchestrator.planning.scenario_manoeuvres import manoeuvres_said
 from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
 from drivetwin.tools.appearance import COLOURS
@@ -74,10 +76,11 @@ DIRECTIONS: tuple[tuple[str, str, int], ...] = (
 # Words that ask for a behaviour; without one, a new asset just stands where it is put.
 _BEHAVIOUR = re.compile(
     r"\b(driv\w*|mov(e|es|ing)|park(ed|s)?|stall\w*|circl\w*|loop\w*|skidpad|cross(es|ing)?|jaywalk\w*|walk(s|ing)?"
-    r"|cut\w*|follow\w*|patrol\w*|lap\w*|cruis\w*|travel\w*|speed|km/h|mph|m/s)\b"
+    r"|cut\w*|follow\w*|patrol\w*|lap\w*|cruis\w*|travel\w*|rid(e|es|ing)|speed|km/h|mph|m/s)\b"
 )
-# Behaviour words but "move" itself: "move the bin to the gate" only puts it there.
-_MOTION = re.compile(_BEHAVIOUR.pattern.replace(r"mov(e|es|ing)", "moving"))
+# Behaviour words but "move" itself ("move the bin to the gate" only puts it there), and going somewhere.
+_MOTION = re.compile(_BEHAVIOUR.pattern.replace(r"mov(e|es|ing)", "moving")
+                     + r"|\b(go(es|ing)?|head(s|ing)?|set(s|ting)? off) (over |back |across |up |down |off |out )?(to|towards?|into|for)\b")
 # "the", "that", ... just before a thing's name, a colour or size allowed ("the red bench").
 _DEFINITE = re.compile(rf"\b(the|that|this|its|our|my|your|their|his|her)\s+((?:{'|'.join(COLOURS)}|big|small|little|large|old)\s+)?$")
 # "a", "some", an amount just before a thing's name ("a couple of cars", "two little cones").
@@ -95,10 +98,10 @@ _LOOKUPS: tuple[tuple[str, str], ...] = (
      "find_landmarks"),
 )
 _DISTANCE = re.compile(r"\bhow far\b|\bdistance\b|\bfar (away )?from\b")
+# Speeds (m/s) closer than this are one speed read twice ("12 mph" converted by two readers).
+SAME_SPEED = 0.05
 # A length's unit right after its number.
 _LENGTH_UNIT = re.compile(r"\s*(m|metres?|meters?|mtrs?|km|kilometres?|kilometers?)\b(?!/)")
-# A speed as said, before conversion to m/s: its number is no count or distance.
-_SPEED = re.compile(r"(\d+(?:\.\d+)?)\s*(m/s|km/h|kmh|kph|mph)")
 # Words that ask for a heading or a turn.
 _TURNING = re.compile(r"\b(turn\w*|rotat\w*|fac(e|es|ing)|head(ing)?|degrees?|deg|yaw|spin\w*|angle)\b|°")
 # Layout words -> the arrange shapes they mean.
@@ -275,7 +278,14 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
             colours.append(value)
     # "a few cones", "a couple of the lamps": the amount the rule planner reads for the words, a count to copy
     numbers += [float(lx.COLLECTIVE_COUNTS.get(w) or ph.NUMBER_WORDS[w]) for w in _VAGUE_AMOUNT.findall(request.low)]
-    said_speeds = [float(m.group(1)) for m in _SPEED.finditer(prompt.lower())]
+    # A speed however its unit is written ("forty kilometres an hour", "at 8 ms"), as the rules read it, in m/s;
+    # its figures (the unit's "an hour" too) are no count or length
+    figures = spelt_measures(low)
+    said = [m for m in re.finditer(rf"({NUMBER})\s*{SPEED_UNIT}", figures)] + [m for m in [speed_said(figures)] if m]
+    said_speeds = [n.value for m in said for n in numbers_in(m.group(0))]
+    with suppress(PlanningError):
+        speed = ph.find_speed(figures)
+        speeds += [speed] if speed is not None and all(abs(speed - v) > SAME_SPEED for v in speeds) else []
     numbers = [n for n in numbers if n not in angles and n not in said_speeds and n not in speeds]
     # The request reader also reads "car" in "car 1" as a category: that car is an asset named.
     named_kinds = {found.category for a in [*assets, *places] if (found := scene.asset(a)) is not None}
