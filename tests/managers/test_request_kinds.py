@@ -210,5 +210,5 @@ def test_a_speed_however_its_unit_is_written_is_a_speed_and_no_count(campus: Sce
 
 
 def test_going_somewhere_is_motion_and_moving_a_thing_to_a_place_is_not(campus: Scene) -> None:
-    assert "move" in read_names("send the SUV off towards the library", campus).kinds()
+    assert "move" in read_names("have the SUV head over to the library", campus).kinds()
     assert "move" not in read_names("move the trash bin to the library", campus).kinds()

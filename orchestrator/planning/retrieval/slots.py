@@ -203,7 +203,7 @@ def _words(low: str, scene: Scene) -> list[tuple[int, str, Any]]:
             word = words[i]
             if word.isdigit():
                 found.append((spans[i][0], "count", int(word)))
-            elif word in NUMBER_WORDS[2:]:
+            elif word in NUMBER_WORDS[2:] and not low[: spans[i][0]].endswith("-"):  # not the "six" of "thirty-six"
                 found.append((spans[i][0], "count", NUMBER_WORDS.index(word)))
             elif len(word) >= SPELLING_MIN_LETTERS and word not in english_words():
                 # a real word is no slip for a near name ("there" is no "three", "over" no "rover")
