@@ -212,3 +212,16 @@ def test_a_speed_however_its_unit_is_written_is_a_speed_and_no_count(campus: Sce
 def test_going_somewhere_is_motion_and_moving_a_thing_to_a_place_is_not(campus: Scene) -> None:
     assert "move" in read_names("have the SUV head over to the library", campus).kinds()
     assert "move" not in read_names("move the trash bin to the library", campus).kinds()
+
+
+def test_the_behaviour_said_is_the_only_behaviour_offered(campus: Scene, spelling_grounder: Grounder) -> None:
+    prompt = "let the SUV do laps round and round lot B"
+    args = _offered(prompt, Requirement(kind="move", what="SUV"), campus, spelling_grounder)["set_behaviour"]
+    assert args["properties"]["behaviour"]["properties"]["kind"]["enum"] == ["circle"]
+
+
+def test_driving_somewhere_is_a_path_there_never_a_teleport(campus: Scene) -> None:
+    kinds = read_names("get the SUV to drive across to the east gate", campus).kinds()
+    assert "move" in kinds and "position" not in kinds
+    assert "position" in read_names("park the SUV over in lot A", campus).kinds()
+    assert "follow_path" in read_names("get the SUV to drive across to the east gate", campus).behaviours

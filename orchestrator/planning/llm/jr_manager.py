@@ -213,6 +213,7 @@ def _narrow_to_request(
     names.times = list(said.times)
     names.shapes = list(said.shapes)
     names.manoeuvres = list(said.manoeuvres)
+    names.behaviours = list(said.behaviours)
     names.signs = dict(said.directions)
 
 

@@ -71,6 +71,7 @@ class WorldNames:
     movers: list[str] = field(default_factory=list)
     lights: list[str] = field(default_factory=list)
     manoeuvres: list[str] = field(default_factory=list)
+    behaviours: list[str] = field(default_factory=list)
     # The places and things the request names (the ego too, when said): a distance's two ends.
     ends: list[str] = field(default_factory=list)
     # Every landmark's names and the roads' names: what a search's words may be.
@@ -181,6 +182,9 @@ def _slim(node: Any, defs: dict[str, Any], names: WorldNames, prop: str | None =
     said_manoeuvres = [m for m in names.manoeuvres if m in out.get("enum", ())]
     if prop == "kind" and said_manoeuvres:
         return {**out, "enum": said_manoeuvres}  # "brakes" is a stop, never a lane change
+    said_behaviours = [b for b in names.behaviours if b in out.get("enum", ())]
+    if prop == "kind" and said_behaviours and "parked" in out.get("enum", ()):
+        return {**out, "enum": said_behaviours}  # "round and round the car park" is a circle, never parked
     if out.get("type") == "string" and "enum" not in out and "pattern" not in out:
         out.setdefault("maxLength", FREE_TEXT_CHARS)
     if out.get("type") == "object":

@@ -98,6 +98,14 @@ _LOOKUPS: tuple[tuple[str, str], ...] = (
      "find_landmarks"),
 )
 _DISTANCE = re.compile(r"\bhow far\b|\bdistance\b|\bfar (away )?from\b")
+# Words -> the behaviour they ask for; a way of going said with a place may be a path to it.
+_BEHAVIOUR_KINDS: tuple[tuple[str, str], ...] = (
+    (r"\b(circl\w*|loop\w*|laps?|doughnuts?|skidpad|(a)?round and (a)?round)\b", "circle"),
+    (r"\b(jaywalk\w*|steps? out|darts? out)\b", "jaywalk"),
+    (r"\bcross(es|ed|ing)?\b(?! ?roads?| ?walks?)|\bover to the other side\b", "cross_road"),
+    (r"\bpark(ed|s)?\b|\bstationary\b", "parked"),
+    (r"\b(driv\w*|cruis\w*|moving|rid(e|es|ing)|go(es|ing)?|head(s|ing)?|km/h|mph|m/s)\b", "drive_lane"),
+)
 # Speeds (m/s) closer than this are one speed read twice ("12 mph" converted by two readers).
 SAME_SPEED = 0.05
 # A length's unit right after its number.
@@ -158,6 +166,8 @@ class RequestNames:
     over_time: bool = False
     # The manoeuvres its words name ("brakes" is a stop, "changes lanes" a lane change).
     manoeuvres: tuple[str, ...] = ()
+    # The behaviours its words ask for ("round and round" is a circle); () when it names none.
+    behaviours: tuple[str, ...] = ()
     # The lookups that answer what a question asks about ("how far" is measured); () when it names none.
     lookups: tuple[str, ...] = ()
 
@@ -184,8 +194,11 @@ class RequestNames:
         # a shape said ("in a circle round the fountain") is an arrangement, not things added one by one
         kinds = [f for f in kinds if f != "arrange" or self.laid_out] or kinds
         kinds = [f for f in kinds if f != "add" or not self.shapes or "arrange" not in kinds]
-        # No distance, direction, speed or behaviour said: the move tools would change nothing.
-        return [f for f in kinds if f != "move" or self.motion or self.over_time] or kinds
+        # No distance, direction, speed or behaviour said: the move tools would change nothing; a way of
+        # going said ("drive over to the library", "round and round") is no teleport.
+        kinds = [f for f in kinds if f != "move" or self.motion or self.over_time] or kinds
+        going = set(self.behaviours) & {"drive_lane", "follow_path", "circle", "cross_road", "jaywalk"}
+        return [f for f in kinds if f != "position" or not going or "move" not in kinds]
 
 
 def _relation(low: str, said: list[str]) -> list[str]:
@@ -217,6 +230,12 @@ def _without_places(low: str, scene: Scene) -> str:
     for name in sorted({n.lower() for place in scene.landmarks for n in place.names()}, key=len, reverse=True):
         low = re.sub(rf"\b{re.escape(name)}\b", " ", low)
     return low
+
+
+def _behaviours(low: str, somewhere: bool) -> tuple[str, ...]:
+    """The behaviours `low` (its places blanked) asks for; driving with a place said may be a path there."""
+    found = [kind for pattern, kind in _BEHAVIOUR_KINDS if re.search(pattern, low)]
+    return tuple(found + (["follow_path"] if "drive_lane" in found and somewhere else []))
 
 
 def _lookups(low: str, things: bool) -> tuple[str, ...]:
@@ -326,6 +345,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         over_time=describes_behaviour_over_time(prompt, scene),
         manoeuvres=tuple(manoeuvres_said(_without_places(low, scene))),
         lookups=_lookups(low, bool(categories or assets)),
+        behaviours=_behaviours(unplaced, bool(places)),
     )
 
 
