@@ -246,6 +246,7 @@ def test_the_two_ends_of_a_distance_are_the_places_the_request_names(campus: Sce
     assert {*props["a"]["enum"], *props["b"]["enum"]} == {"fountain", "east gate"}  # one end each, no ego
 
 
-@pytest.mark.parametrize(("prompt", "count"), [("put a few cones by the east gate", 3), ("a handful of bins near the library", 4)])
+@pytest.mark.parametrize(("prompt", "count"), [("put a few cones by the east gate", 3), ("a handful of bins near the library", 4),
+                                               ("a couple more benches by the fountain", 2)])
 def test_an_amount_said_in_words_is_a_count_to_copy(campus: Scene, prompt: str, count: int) -> None:
     assert float(count) in read_names(prompt, campus).numbers

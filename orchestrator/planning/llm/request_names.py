@@ -53,7 +53,7 @@ _STRICT_NEW = re.compile(r"\b(add|create|spawn|insert|another|extra)\b")
 # Words and marks that join clauses: a request with one may hold several requirements.
 CLAUSE_JOINS = re.compile(r"\b(and|also|then|plus|as well)\b|[,;+&]")
 # Amounts said in words rather than figures ("a few", "a couple of", "loads of").
-_VAGUE_AMOUNT = re.compile(r"\b(pair|couple|few|handful|bunch|several|dozen|lots|loads|plenty|heaps)\b(?= of\b| [a-z]+s\b)")
+_VAGUE_AMOUNT = re.compile(r"\b(pair|couple|few|handful|bunch|several|dozen|lots|loads|plenty|heaps)\b(?= of\b| (?:more |extra |new |little |small |big )?[a-z]+s\b)")
 # Words for closing a way off, which an arrangement does ("block the road", "cordon off the rubble").
 _BARRIER = re.compile(r"\b(block\w*|clos(e|es|ing)|cordon\w*|fenc(e|es|ing)|barricad\w*|seal\w*|mark(s|ing)? (off|out)|line\w*|rows?)\b")
 # Families for a thing that is already there (the ego, "car 1"): it is not added again.
