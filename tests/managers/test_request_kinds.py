@@ -38,7 +38,7 @@ def test_a_thing_said_with_the_is_the_one_there_as_the_thing_acted_on_or_as_the_
 
 
 def test_one_of_several_things_said_with_the_is_one_already_there_never_a_new_one(campus: Scene) -> None:
-    said = read_names("shift the tree by the bus stop across to the library", campus)
+    said = read_names("shift the tree across to the library", campus)
     assert said.existing == ("tree",)
     assert "add" not in said.kinds()
 
@@ -225,3 +225,14 @@ def test_driving_somewhere_is_a_path_there_never_a_teleport(campus: Scene) -> No
     assert "move" in kinds and "position" not in kinds
     assert "position" in read_names("park the SUV over in lot A", campus).kinds()
     assert "follow_path" in read_names("get the SUV to drive across to the east gate", campus).behaviours
+
+
+def test_a_place_said_right_after_a_thing_picks_which_one_and_is_no_destination(campus: Scene) -> None:
+    said = read_names("shift the tree near the bus stop across to the engineering hall entrance", campus)
+    assert said.assets == ("tree_1",)  # the tree nearest the bus stop, not any tree
+    assert said.places == ("Engineering Hall entrance",)
+    assert read_names("stand a cone beside the tree by lot A", campus).places == ("tree_4",)
+
+
+def test_a_footway_said_puts_the_thing_on_it_not_merely_near_the_place(campus: Scene) -> None:
+    assert read_names("move the stop sign onto the footway by the east gate", campus).relations == ("on_sidewalk",)

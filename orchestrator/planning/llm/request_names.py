@@ -35,7 +35,7 @@ _NUMBER_SLOTS = ("count", "distance", "radius", "speed", "x", "y")
 # "around", "by"), still worth a relation here; first match wins.
 _PLAIN_RELATIONS: tuple[tuple[str, str], ...] = (
     (r"\baround\b|\bring\b|\bcircle\b|\bsurround", "at"),
-    (r"\b(sidewalk|pavement|footpath|kerb)\b", "on_sidewalk"),
+    (r"\b(sidewalk|side walk|pavement|footpath|footway|walkway|kerb|curb)\b", "on_sidewalk"),
     (r"\b(centre|center|middle) of the (scene|world|map|campus)\b", "scene_centre"),
     (r"\bx\s*=|\bcoordinates?\b", "absolute"),
     (r"\b(in|on) (the )?(lane|road|street)\b|\w+bound\b", "in_lane"),
@@ -106,6 +106,9 @@ _BEHAVIOUR_KINDS: tuple[tuple[str, str], ...] = (
     (r"\bpark(ed|s)?\b|\bstationary\b", "parked"),
     (r"\b(driv\w*|cruis\w*|moving|rid(e|es|ing)|go(es|ing)?|head(s|ing)?|km/h|mph|m/s)\b", "drive_lane"),
 )
+# Words that pick one of several things by a place ("the tree by the bus stop", "the lamp that's at the gate").
+_QUALIFIER = re.compile(r"\s*(?:,\s*the one\s+|(?:that|which)(?:'s| is| stands)\s+|standing\s+)?"
+                        r"(?:by|near|next to|beside|at|outside|in front of|behind|on|closest to|nearest)\s+(?:the\s+)?")
 # Speeds (m/s) closer than this are one speed read twice ("12 mph" converted by two readers).
 SAME_SPEED = 0.05
 # A length's unit right after its number.
@@ -205,15 +208,34 @@ def _relation(low: str, said: list[str]) -> list[str]:
     """The relations said, with the plainer one the slot reader leaves out ("at the west
     crossing" beside "in front of the ego")."""
     found = next((rel for pattern, rel in _PLAIN_RELATIONS if re.search(pattern, low)), None)
+    if found == "on_sidewalk":  # "on the footway by the gate": by the gate, on the footway there
+        said = [r for r in said if r not in ("next_to", "at")]
     # No relation word at all ("cones x3 lot A"): the thing goes at the place named.
     return list(dict.fromkeys([*said, *([found] if found else [])])) or ["at"]
 
 
-def _definite(low: str) -> list[tuple[str, bool]]:
-    """Each category the request names, in order, and whether it says "the"/"that" of it ("the
-    bench", "that truck"): a thing already there, not a new one."""
+def _definite(low: str, scene: Scene) -> list[tuple[str, bool, tuple[str, str] | None]]:
+    """Each category the request names, in order, whether it says "the"/"that" of it ("the
+    bench", "that truck": a thing already there, not a new one), and which one of those there
+    the place said right after it picks ("the tree by the bus stop": the one nearest the stop), with that place."""
     said = ph.normalise(low)  # where find_categories counts from
-    return [(m.category, _DEFINITE.search(said[: m.start]) is not None and not m.plural) for m in ph.find_categories(low)]
+    return [(m.category, definite, _qualified(said[m.end :], m.category, scene) if definite else None)
+            for m in ph.find_categories(low) for definite in [_DEFINITE.search(said[: m.start]) is not None and not m.plural]]
+
+
+def _qualified(after: str, category: str, scene: Scene) -> tuple[str, str] | None:
+    """The thing of `category` nearest the landmark that `after` (the words right after its name)
+    names with "by", "near", "at" ..., and that landmark; None when no landmark is named so."""
+    said = _QUALIFIER.match(after)
+    if said is None:
+        return None
+    rest = after[said.end() :]
+    place = next((lm for lm in scene.landmarks for name in lm.names() if rest.startswith(ph.normalise(name).strip())), None)
+    there = [a for a in scene.all_assets() if a.category == category]
+    if place is None or not there:
+        return None
+    x, y = place.position
+    return min(there, key=lambda a: (a.pose.x - x) ** 2 + (a.pose.y - y) ** 2).id, place.name
 
 
 def _only_new(low: str) -> bool:
@@ -261,19 +283,21 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     weathers: list[str] = []
     colours: list[str] = []
     existing: list[str] = []
+    qualifiers: list[str] = []  # places said only to pick a thing ("the tree by the bus stop")
     coordinates: list[tuple[str, float]] = []
     low = prompt.lower()
-    mentions = _definite(low)
+    mentions = _definite(low, scene)
     for kind, value in slots:
         if kind == "category":
-            at = next((i for i, (said, _) in enumerate(mentions) if said == value), None)
-            definite = at is not None and mentions[at][1]
+            at = next((i for i, (said, _, _) in enumerate(mentions) if said == value), None)
+            definite, which = (mentions[at][1], mentions[at][2]) if at is not None else (False, None)
             mentions = mentions if at is None else mentions[at + 1 :]
-            there = [a.id for a in scene.all_assets() if a.category == value]
+            qualifiers += [which[1]] if which else []
+            there = [which[0]] if which else [a.id for a in scene.all_assets() if a.category == value]
             if definite and there and relations:
                 places += there  # "next to the bench": the bench there (or one of the trees there) is the place
             elif definite and len(there) == 1 and _STRICT_NEW.search(low) is None:
-                assets += there  # "put the trash bin next to ...": the bin there is what moves
+                assets += there  # "put the trash bin next to ...", "the tree by the bus stop": that one moves
             else:
                 categories.append(value)
                 existing += [value] if definite and there and _STRICT_NEW.search(low) is None else []
@@ -313,6 +337,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     categories += sorted((request.categories & outside) - set(categories) - named_kinds)
     if request.place is not None:
         places.append(request.place)
+    places = [p for p in places if p not in qualifiers] or places  # the bus stop picked the tree; it is no destination
     removal = REMOVE_WORDS.search(request.low) is not None and ADD_WORDS.search(request.low) is None
     shapes = next((shape for pattern, shape in SHAPES if re.search(pattern, low)), ())
     unplaced = _without_places(low, scene)  # "the east gate" says no way to go
