@@ -236,3 +236,18 @@ def test_a_place_said_right_after_a_thing_picks_which_one_and_is_no_destination(
 
 def test_a_footway_said_puts_the_thing_on_it_not_merely_near_the_place(campus: Scene) -> None:
     assert read_names("move the stop sign onto the footway by the east gate", campus).relations == ("on_sidewalk",)
+
+
+def test_a_removal_of_a_kind_the_words_never_name_is_refused_and_changes_nothing(
+    campus: Scene, spelling_grounder: Grounder
+) -> None:
+    bins = call("remove_assets", category="trash_bin")
+    session, _ = scripted_session(campus, [requirement("remove", "library"), bins, bins], spelling_grounder)
+    before = session.scene.model_dump_json()
+    report = session.submit("get rid of the library, it's an eyesore")
+    assert not report.ok and report.error is not None and "no kind of thing to remove" in report.error
+    assert session.scene.model_dump_json() == before
+
+
+def test_a_question_about_people_or_traffic_is_answered_by_finding_things(campus: Scene) -> None:
+    assert read_names("is anybody walking about?", campus).lookups == ("find_assets", "asset_properties")

@@ -130,6 +130,11 @@ class LlmPlanner:
             trace += steps
         retries = sum(step.retries for step in trace)
         tokens = sum(step.tokens for step in trace)
+        guessed = next((c.args["category"] for c in calls if c.tool == "remove_assets" and "category" in c.args
+                        and not said.categories and not said.existing), None)
+        if guessed is not None:  # "delete the library": no thing named, the model picked one to take away
+            raise PlanningError(f"your words name no kind of thing to remove (the plan guessed "
+                                f"{str(guessed).replace('_', ' ')}s); name what should go, e.g. 'remove the bench by the bus stop'")
         question = kind_to_ask(prompt, calls, said, context, self.grounder)
         if question is not None:  # the model picked a kind the words never name: ask, apply nothing
             trace.append(TraceStep(level="llm_planner", input="; ".join(str(c) for c in calls),

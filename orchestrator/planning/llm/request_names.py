@@ -266,6 +266,7 @@ def _lookups(low: str, things: bool) -> tuple[str, ...]:
     if _DISTANCE.search(low):
         return ("measure_distance",)
     found = [tool for pattern, tool in _LOOKUPS if re.search(pattern, low)]
+    things = things or re.search(r"\b(any(one|body)|some(one|body)|people|persons?|walk\w*|vehicles?|traffic)\b", low) is not None
     return tuple(found + (["find_assets", "asset_properties"] if things else []))
 
 
