@@ -70,6 +70,8 @@ class WorldNames:
     # Things that can act in a storyboard (vehicles, riders, walkers) and the traffic lights.
     movers: list[str] = field(default_factory=list)
     lights: list[str] = field(default_factory=list)
+    # The manoeuvres and behaviours the request's words name: the only kinds a storyboard step
+    # or a behaviour may take where it names some.
     manoeuvres: list[str] = field(default_factory=list)
     behaviours: list[str] = field(default_factory=list)
     # The places and things the request names (the ego too, when said): a distance's two ends.

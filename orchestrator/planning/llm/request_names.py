@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from drivetwin.orchestrator.planning.base import PlanningError
-from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS, commands
+from drivetwin.orchestrator.planning.intent import ADD_WORDS, REMOVE_WORDS
 from drivetwin.orchestrator.planning.request import read_request
 from drivetwin.orchestrator.planning.retrieval.slots import read_slots
 from drivetwin.orchestrator.planning.rules import lexicon as lx
@@ -158,8 +158,6 @@ class RequestNames:
     new_only: bool = False
     # Categories said of things already there, of which there are several ("the tree by the bus stop").
     existing: tuple[str, ...] = ()
-    # Opens with a command ("make it darker", "remove the bus"): never answered with a search.
-    imperative: bool = False
     # Says a layout or a barrier ("in a row", "around", "block the road"): only then an arrangement.
     laid_out: bool = False
     # Says how far, which way, how fast or how something behaves ("3 m east", "drive", "turn"):
@@ -325,7 +323,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     # A speed however its unit is written ("forty kilometres an hour", "at 8 ms"), as the rules read it, in m/s;
     # its figures (the unit's "an hour" too) are no count or length
     figures = spelt_measures(low)
-    said = [m for m in re.finditer(rf"({NUMBER})\s*{SPEED_UNIT}", figures)] + [m for m in [speed_said(figures)] if m]
+    said = [*re.finditer(rf"({NUMBER})\s*{SPEED_UNIT}", figures), *[m for m in [speed_said(figures)] if m]]
     said_speeds = [n.value for m in said for n in numbers_in(m.group(0))]
     with suppress(PlanningError):
         speed = ph.find_speed(figures)
@@ -364,12 +362,11 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         weathers=tuple(dict.fromkeys(weathers)),
         polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
         new_only=(_STRICT_NEW.search(request.low) is not None or _only_new(low)) and CLAUSE_JOINS.search(request.low) is None,
-        imperative=commands(request.low),
         laid_out=bool(shapes) or _BARRIER.search(low) is not None,
         existing=tuple(dict.fromkeys(existing)),
         motion=bool(numbers or angles or speeds or directions or _MOTION.search(low)),
         over_time=describes_behaviour_over_time(prompt, scene),
-        manoeuvres=tuple(manoeuvres_said(_without_places(low, scene))),
+        manoeuvres=tuple(manoeuvres_said(unplaced)),
         lookups=_lookups(low, bool(categories or assets)),
         behaviours=_behaviours(unplaced, bool(places)),
     )
