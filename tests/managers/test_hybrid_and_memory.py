@@ -112,7 +112,7 @@ def test_hybrid_falls_back_to_a_half_sure_rule_plan_when_the_model_is_down(
 
 def test_the_prompt_version_is_recorded_with_every_llm_plan(campus: Scene, spelling_grounder: Grounder) -> None:
     backend = ScriptedBackend([requirement("appearance", "rain"), call("set_weather", kind="rain")])
-    report = Session(campus, LlmPlanner(backend, grounder=spelling_grounder)).submit("make it rain")
+    report = Session(campus, LlmPlanner(backend, grounder=spelling_grounder)).submit("make it rain, please")  # a comma: the Sr. manager is asked
     assert report.plan is not None
     assert report.plan.prompt_version == prompt_version()
     assert report.plan.prompt_version.startswith("prompts-v")
@@ -180,7 +180,7 @@ def test_a_jr_schema_offers_only_its_familys_tools_and_names_that_exist(campus: 
 
 def test_format_trace_shows_every_level_with_input_output_and_time(campus: Scene, spelling_grounder: Grounder) -> None:
     backend = ScriptedBackend(["oops", requirement("appearance", "rain"), call("set_weather", kind="rain")])
-    report = Session(campus, LlmPlanner(backend, grounder=spelling_grounder)).submit("make it rain")
+    report = Session(campus, LlmPlanner(backend, grounder=spelling_grounder)).submit("make it rain, please")  # a comma: the Sr. manager is asked
     assert report.plan is not None
     text = format_trace(report.plan)
     for level in ("[sr_manager]", "[grounding:appearance]", "[jr_manager:appearance]", "[llm_planner]"):

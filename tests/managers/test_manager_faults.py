@@ -19,8 +19,7 @@ def test_a_refused_call_goes_back_to_the_jr_manager_and_the_fixed_answer_is_used
     fixed = {"relation": "at", "target": "parking lot B"}
     session, backend = scripted_session(
         campus,
-        [
-            requirement("add", "car", "parking lot B"),
+        [  # one clause that only adds: the Sr. manager is not asked
             call("add_asset", category="passenger_car", location=inside_building),
             call("add_asset", category="passenger_car", location=fixed),
         ],
@@ -29,7 +28,7 @@ def test_a_refused_call_goes_back_to_the_jr_manager_and_the_fixed_answer_is_used
     report = session.submit("add a car in parking lot B")
     assert report.ok, report.error
     assert report.plan is not None and report.plan.retries == 1
-    retry_prompt = backend.seen[2][-1]["content"]
+    retry_prompt = backend.seen[1][-1]["content"]
     assert "refused" in retry_prompt and "building" in retry_prompt.lower()
     assert session.scene.count("passenger_car") == campus.count("passenger_car") + 1
 

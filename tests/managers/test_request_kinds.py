@@ -251,3 +251,19 @@ def test_a_removal_of_a_kind_the_words_never_name_is_refused_and_changes_nothing
 
 def test_a_question_about_people_or_traffic_is_answered_by_finding_things(campus: Scene) -> None:
     assert read_names("is anybody walking about?", campus).lookups == ("find_assets", "asset_properties")
+
+
+def test_the_strength_said_is_the_only_intensity_offered(campus: Scene, spelling_grounder: Grounder) -> None:
+    prompt = "the shower has thinned to a light drizzle now, set that"
+    args = _offered(prompt, Requirement(kind="appearance", what="drizzle"), campus, spelling_grounder)["set_weather"]
+    assert args["properties"]["intensity"]["enum"] == [0.3]
+
+
+def test_a_setting_alone_is_an_appearance_edit_and_nothing_else(campus: Scene) -> None:
+    assert read_names("could we have it snowing", campus).kinds() == ["appearance"]
+    assert read_names("set the clock to 07:40", campus).kinds() == ["appearance"]
+
+
+def test_no_word_for_looks_weather_time_or_light_is_no_appearance_edit(campus: Scene) -> None:
+    assert "appearance" not in read_names("give the SUV a spot by the east gate", campus).kinds()
+    assert "appearance" in read_names("give the SUV a coat of blue paint", campus).kinds()

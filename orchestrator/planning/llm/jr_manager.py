@@ -209,6 +209,7 @@ def _narrow_to_request(
     names.angles = list(said.angles)
     names.speeds = list(said.speeds)
     names.weathers = list(said.weathers)
+    names.intensities = list(said.intensities)
     names.colours = list(said.colours)
     names.times = list(said.times)
     names.shapes = list(said.shapes)

@@ -62,6 +62,7 @@ class WorldNames:
     angles: list[float] = field(default_factory=list)
     speeds: list[float] = field(default_factory=list)
     weathers: list[str] = field(default_factory=list)
+    intensities: list[float] = field(default_factory=list)
     colours: list[str] = field(default_factory=list)
     times: list[str] = field(default_factory=list)
     shapes: list[str] = field(default_factory=list)
@@ -179,6 +180,8 @@ def _slim(node: Any, defs: dict[str, Any], names: WorldNames, prop: str | None =
         said = _said_numbers(out, amounts, prop in SIGNED_FIELDS | TURN_FIELDS, names.signs.get(prop))
         if said:
             return {"type": out["type"], "enum": said}
+    if prop == "intensity" and names.intensities and out.get("type") == "number":
+        return {"type": "number", "enum": list(names.intensities)}  # "a light drizzle" is light, never 0.9
     if prop == "kind" and names.weathers and set(names.weathers) <= set(out.get("enum", ())):
         return {**out, "enum": list(names.weathers)}  # the weather's kind, not a behaviour's
     said_manoeuvres = [m for m in names.manoeuvres if m in out.get("enum", ())]

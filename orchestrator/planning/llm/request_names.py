@@ -109,6 +109,11 @@ _BEHAVIOUR_KINDS: tuple[tuple[str, str], ...] = (
 # Words that pick one of several things by a place ("the tree by the bus stop", "the lamp that's at the gate").
 _QUALIFIER = re.compile(r"\s*(?:,\s*the one\s+|(?:that|which)(?:'s| is| stands)\s+|standing\s+)?"
                         r"(?:by|near|next to|beside|at|outside|in front of|behind|on|closest to|nearest)\s+(?:the\s+)?")
+# Words for how things look or for the weather, the time and the light: without any, no appearance edit.
+_LOOKS = re.compile(r"\b(paint\w*|colou?r\w*|look\w*|light\w*|lamp\w*|bright\w*|dark\w*|dim\w*|night\w*|day\w*|morning|"
+                    r"evening|afternoon|dusk|dawn|sunset|sunrise|noon|midnight|sun\w*|weather|rain\w*|snow\w*|fog\w*|cloud\w*|wet|"
+                    r"storm\w*|sleet|hail|drizzl\w*|mist\w*|overcast|grim|gloom\w*|winter|summer|shin\w*|matte|metal\w*|wood\w*|"
+                    r"plastic|material|finish|exposure|time|clock|o'clock|am|pm|a\.m\.|p\.m\.)\b|\d:\d\d")
 # Speeds (m/s) closer than this are one speed read twice ("12 mph" converted by two readers).
 SAME_SPEED = 0.05
 # A length's unit right after its number.
@@ -144,6 +149,8 @@ class RequestNames:
     angles: tuple[float, ...] = ()
     speeds: tuple[float, ...] = ()
     weathers: tuple[str, ...] = ()
+    # The weather's strength said ("a light drizzle", "thick fog"), 0-1.
+    intensities: tuple[float, ...] = ()
     colours: tuple[str, ...] = ()
     # A clock time said ("7am", "quarter to five", "18:30"), as HH:MM: the only time a Jr. manager may set.
     times: tuple[str, ...] = ()
@@ -169,6 +176,8 @@ class RequestNames:
     manoeuvres: tuple[str, ...] = ()
     # The behaviours its words ask for ("round and round" is a circle); () when it names none.
     behaviours: tuple[str, ...] = ()
+    # Says how something looks, or the weather, the time or the light: only then an appearance edit.
+    looks: bool = True
     # The lookups that answer what a question asks about ("how far" is measured); () when it names none.
     lookups: tuple[str, ...] = ()
 
@@ -181,6 +190,8 @@ class RequestNames:
             return ["search"]
         if self.over_time and self.assets and self.polarity is None:
             return ["move"]  # "have the ego stop after 3 s": only a storyboard plays it
+        if (self.weathers or self.times) and not (self.categories or self.assets or self.existing or self.places):
+            return ["appearance"]  # "make it rain", "make it 14:45": a setting, nothing to add or move
         if self.polarity == "remove":
             kinds = list(_TAKING_AWAY)
         elif (self.assets or self.existing) and set(self.categories) <= set(self.existing):
@@ -199,7 +210,9 @@ class RequestNames:
         # going said ("drive over to the library", "round and round") is no teleport.
         kinds = [f for f in kinds if f != "move" or self.motion or self.over_time] or kinds
         going = set(self.behaviours) & {"drive_lane", "follow_path", "circle", "cross_road", "jaywalk"}
-        return [f for f in kinds if f != "position" or not going or "move" not in kinds]
+        kinds = [f for f in kinds if f != "position" or not going or "move" not in kinds]
+        # No word for a colour, the weather, the time or the light: no appearance edit ("something to do" is no headlights)
+        return [f for f in kinds if f != "appearance" or self.looks] or kinds
 
 
 def _relation(low: str, said: list[str]) -> list[str]:
@@ -282,6 +295,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     weathers: list[str] = []
     colours: list[str] = []
     existing: list[str] = []
+    intensities: list[float] = []
     qualifiers: list[str] = []  # places said only to pick a thing ("the tree by the bus stop")
     coordinates: list[tuple[str, float]] = []
     low = prompt.lower()
@@ -313,6 +327,8 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
             speeds.append(float(value))
         elif kind == "weather":
             weathers.append(str(value))
+        elif kind == "intensity":
+            intensities.append(float(value))
         elif kind in _NUMBER_SLOTS:
             numbers.append(float(value))
             coordinates += [(kind, float(value))] if kind in ("x", "y") else []
@@ -360,6 +376,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         angles=tuple(dict.fromkeys(angles)),
         speeds=tuple(dict.fromkeys(speeds)),
         weathers=tuple(dict.fromkeys(weathers)),
+        intensities=tuple(dict.fromkeys(intensities)),
         polarity="remove" if removal else request.polarity if request.polarity == "add" else None,
         new_only=(_STRICT_NEW.search(request.low) is not None or _only_new(low)) and CLAUSE_JOINS.search(request.low) is None,
         laid_out=bool(shapes) or _BARRIER.search(low) is not None,
@@ -368,6 +385,7 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
         over_time=describes_behaviour_over_time(prompt, scene),
         manoeuvres=tuple(manoeuvres_said(unplaced)),
         lookups=_lookups(low, bool(categories or assets)),
+        looks=bool(colours or weathers or clock is not None or _LOOKS.search(unplaced)),
         behaviours=_behaviours(unplaced, bool(places)),
     )
 
