@@ -267,3 +267,4 @@ def test_a_setting_alone_is_an_appearance_edit_and_nothing_else(campus: Scene) -
 def test_no_word_for_looks_weather_time_or_light_is_no_appearance_edit(campus: Scene) -> None:
     assert "appearance" not in read_names("give the SUV a spot by the east gate", campus).kinds()
     assert "appearance" in read_names("give the SUV a coat of blue paint", campus).kinds()
+    assert "appearance" not in read_names("I am putting the bench by the fountain", campus).kinds()  # "am" is no clock

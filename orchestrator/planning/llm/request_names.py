@@ -74,13 +74,12 @@ DIRECTIONS: tuple[tuple[str, str, int], ...] = (
     (r"\bright\b", "left", -1),
 )
 # Words that ask for a behaviour; without one, a new asset just stands where it is put.
-_BEHAVIOUR = re.compile(
-    r"\b(driv\w*|mov(e|es|ing)|park(ed|s)?|stall\w*|circl\w*|loop\w*|skidpad|cross(es|ing)?|jaywalk\w*|walk(s|ing)?"
-    r"|cut\w*|follow\w*|patrol\w*|lap\w*|cruis\w*|travel\w*|rid(e|es|ing)|speed|km/h|mph|m/s)\b"
-)
+_WAYS_OF_GOING = (r"driv\w*|park(ed|s)?|stall\w*|circl\w*|loop\w*|skidpad|cross(es|ing)?|jaywalk\w*|walk(s|ing)?"
+                  r"|cut\w*|follow\w*|patrol\w*|lap\w*|cruis\w*|travel\w*|rid(e|es|ing)|speed|km/h|mph|m/s")
+_BEHAVIOUR = re.compile(rf"\b(mov(e|es|ing)|{_WAYS_OF_GOING})\b")
 # Behaviour words but "move" itself ("move the bin to the gate" only puts it there), and going somewhere.
-_MOTION = re.compile(_BEHAVIOUR.pattern.replace(r"mov(e|es|ing)", "moving")
-                     + r"|\b(go(es|ing)?|head(s|ing)?|set(s|ting)? off) (over |back |across |up |down |off |out )?(to|towards?|into|for)\b")
+_MOTION = re.compile(rf"\b(moving|{_WAYS_OF_GOING})\b"
+                     r"|\b(go(es|ing)?|head(s|ing)?|set(s|ting)? off) (over |back |across |up |down |off |out )?(to|towards?|into|for)\b")
 # "the", "that", ... just before a thing's name, a colour or size allowed ("the red bench").
 _DEFINITE = re.compile(rf"\b(the|that|this|its|our|my|your|their|his|her)\s+((?:{'|'.join(COLOURS)}|big|small|little|large|old)\s+)?$")
 # "a", "some", an amount just before a thing's name ("a couple of cars", "two little cones").
@@ -113,7 +112,7 @@ _QUALIFIER = re.compile(r"\s*(?:,\s*the one\s+|(?:that|which)(?:'s| is| stands)\
 _LOOKS = re.compile(r"\b(paint\w*|colou?r\w*|look\w*|light\w*|lamp\w*|bright\w*|dark\w*|dim\w*|night\w*|day\w*|morning|"
                     r"evening|afternoon|dusk|dawn|sunset|sunrise|noon|midnight|sun\w*|weather|rain\w*|snow\w*|fog\w*|cloud\w*|wet|"
                     r"storm\w*|sleet|hail|drizzl\w*|mist\w*|overcast|grim|gloom\w*|winter|summer|shin\w*|matte|metal\w*|wood\w*|"
-                    r"plastic|material|finish|exposure|time|clock|o'clock|am|pm|a\.m\.|p\.m\.)\b|\d:\d\d")
+                    r"plastic|material|finish|exposure|time|clock|o'clock|a\.m\.|p\.m\.)\b|\d:\d\d")  # "am" alone is "I am"
 # Speeds (m/s) closer than this are one speed read twice ("12 mph" converted by two readers).
 SAME_SPEED = 0.05
 # A length's unit right after its number.
@@ -348,14 +347,14 @@ def read_names(prompt: str, scene: Scene) -> RequestNames:
     # The request reader also reads "car" in "car 1" as a category: that car is an asset named.
     named_kinds = {found.category for a in [*assets, *places] if (found := scene.asset(a)) is not None}
     # The request reader's categories, but those only said inside a place's name ("the bus stop").
-    outside = {m.category for m in ph.find_categories(_without_places(low, scene))}
+    unplaced = _without_places(low, scene)  # "the east gate" says no way to go, "the bus stop" no stop sign
+    outside = {m.category for m in ph.find_categories(unplaced)}
     categories += sorted((request.categories & outside) - set(categories) - named_kinds)
     if request.place is not None:
         places.append(request.place)
     places = [p for p in places if p not in qualifiers] or places  # the bus stop picked the tree; it is no destination
     removal = REMOVE_WORDS.search(request.low) is not None and ADD_WORDS.search(request.low) is None
     shapes = next((shape for pattern, shape in SHAPES if re.search(pattern, low)), ())
-    unplaced = _without_places(low, scene)  # "the east gate" says no way to go
     directions = tuple(dict.fromkeys((name, sign) for pattern, name, sign in DIRECTIONS if re.search(pattern, unplaced)))
     clock = clock_time(request.low)
     return RequestNames(
