@@ -4,7 +4,8 @@ The plan-versus-request review (check.py) already holds a question to changing n
 the places and roads it names. This holds it to what it asks about: a question about what is
 nearest something must compare distances, one about what blocks or stands on the road must look
 at what stands on the lanes, a question about a thing's mass, size or colour must describe that
-thing, and a question in two parts ("..., and which ...?") must be answered twice. Like
+thing, a question in two parts ("..., and which ...?") must be answered twice, and only a
+question after everything there is is answered by a list of everything. Like
 request.py it reads the words with its own small structural vocabulary, not the planners'
 phrase lists: it must catch the question a planner misread, so it cannot share that reading.
 """
@@ -38,6 +39,10 @@ _PROPERTY = re.compile(r"\b(mass|weigh\w*|how heavy|heavy is|size of|what size|h
 # What describe_environment answers at once: the weather, the time of day, the lighting.
 ENVIRONMENT_PARTS = 3
 _SECOND_PART = re.compile(r",?\s+and\s+(which|what|where|how (many|much|heavy|big|far)|is there|are there)\b")
+# A question after everything there is ("what's in the scene?", "list all of it", "is there
+# anything about?"): only such a question is answered by a search with nothing to narrow it.
+_EVERYTHING = re.compile(r"\b(all|every\w*|any\w*|some\w*|things?|stuff|assets?|objects?|items?|list|inventory|scene|world|"
+                         r"here|there|around|about)\b")
 
 
 def unanswered(request: Request, calls: Sequence[ToolCall], scene: Scene) -> list[str]:
@@ -53,6 +58,9 @@ def unanswered(request: Request, calls: Sequence[ToolCall], scene: Scene) -> lis
     if _asks_what_stands_on_road(low) and not any(_looks_on_lanes(c) for c in calls):
         out.append("you asked what is on the road, but the plan does not look at what stands on the lanes")
     out += _describes_another(request, calls, scene)
+    if all(c.tool == "find_assets" and not c.args for c in calls) and not _EVERYTHING.search(low):
+        # "current scenario time?" read as a list of every asset: what was asked is not in it
+        out.append("you asked about something in particular, but the plan lists everything in the scene")
     seconds = [found[0] for found in _SECOND_PART.findall(low)]
     if any(c.tool == "find_assets" for c in calls):  # a list of the things found says how many and where
         seconds = [word for word in seconds if word not in ("where", "how many")]

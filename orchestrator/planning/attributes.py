@@ -47,7 +47,10 @@ _SIDE = re.compile(r"\b(in front of|ahead of|behind)\s+(?:the\s+|our\s+)?([a-z0-
 MIN_SIDE_M = 1.0
 _EGO_WORDS = ("ego", "us", "me", "ego_vehicle", "ego_car", "car_under_test")
 # Weather strength: words that ask for little or for much, and where the tool's scale splits.
-_LIGHT = re.compile(r"\b(light|gentle|slight|soft|a bit of|a little)\s+(rain|snow|fog|drizzle|shower|mist)|\bdrizzl")
+_WEATHER_WORD = r"(?:rain\w*|snow\w*|fog\w*|drizzl\w*|showers?|mist\w*|cloud\w*|overcast)"
+_HEDGE = r"(?:a\s?bit|a little|a touch|slightly|somewhat|mildly|just a bit|a tad)"
+_LIGHT = re.compile(rf"\b(light|gentle|slight|soft|a bit of|a little)\s+(rain|snow|fog|drizzle|shower|mist)|\bdrizzl"
+                    rf"|\b{_HEDGE}\s+(?:of\s+)?{_WEATHER_WORD}|\b{_WEATHER_WORD}\s+(?:\w+\s+)?{_HEDGE}(?!\s+(?:more|harder|heavier|stronger|thicker))\b")
 _HEAVY = re.compile(r"\b(heavy|hard|strong|thick|dense|torrential|pouring|downpour|blizzard)\b")
 STRENGTH_SPLIT = 0.5
 # Words that ask for a look change when a colour is named ("paint the bus red", "make it blue").
@@ -333,8 +336,39 @@ def weather_strength(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     return []
 
 
+# Weather by its everyday words (this check's own small vocabulary), and a word that denies what
+# follows it: "just not sunny", "not a rainy day", "no snow please", "without the fog".
+_WEATHER_SAID = {"clear": r"sunny|sunshine|sun|clear|fine", "rain": r"rain\w*|wet|showers?|drizzl\w*",
+                 "snow": r"snow\w*", "fog": r"fog\w*|mist\w*", "cloudy": r"cloud\w*|overcast"}
+_DENIES = r"\b(?:not|no|never|without|n't)\s+(?:(?:a|an|any|the|too|so|very|that|really|at all)\s+){0,2}"
+
+
+def denied_set(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
+    """A weather or colour the words deny ("could it be less nice, just not sunny", "not red")
+    that the plan sets all the same."""
+    out = []
+    for call in calls:
+        if call.tool == "set_weather" and (words := _WEATHER_SAID.get(str(call.args.get("kind")))):
+            said = re.search(rf"{_DENIES}({words})\b", low)
+        elif call.tool == "set_asset_appearance" and isinstance(colour := call.args.get("colour"), str):
+            said = re.search(rf"{_DENIES}({re.escape(colour.lower())})\b", low)
+        else:
+            continue
+        if said is not None:
+            out.append(f"you said not {said.group(1)}, but the plan sets {describe_setting(call)}")
+    return out
+
+
+def describe_setting(call: ToolCall) -> str:
+    """What a weather or look call sets, in words ("the weather clear", "the colour red")."""
+    if call.tool == "set_weather":
+        return f"the weather {call.args.get('kind')}"
+    return f"the colour {call.args.get('colour')}"
+
+
 __all__ = [
     "counts_named",
+    "denied_set",
     "group_left_behind",
     "look_left_out",
     "names_group",

@@ -12,6 +12,7 @@ understand and what it can do.
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 from collections import Counter
@@ -23,6 +24,7 @@ from typing import Any, Literal
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.answers import SEARCH_TOOLS, unanswered
 from drivetwin.orchestrator.planning.attributes import (
+    denied_set,
     group_left_behind,
     look_left_out,
     names_group,
@@ -54,8 +56,10 @@ from drivetwin.orchestrator.planning.coverage import (
     indefinite_but_moved,
     inside_building,
     landmark_thing_changed,
+    lane_way,
     missing_categories,
     named_things,
+    numbered_passed_over,
     off_the_road,
     off_the_side,
     partial_removal,
@@ -70,6 +74,7 @@ from drivetwin.orchestrator.planning.coverage import (
     unnamed_compass_places,
     unpointed,
     wrong_direction,
+    wrong_lane_way,
 )
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed, nearest_landmark
 from drivetwin.orchestrator.planning.intent import (
@@ -91,7 +96,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, kept_at
-from drivetwin.orchestrator.planning.rules.environment import said_weaker
+from drivetwin.orchestrator.planning.rules.environment import HEAVY_INTENSITY, LIGHT_INTENSITY, said_weaker
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, SPEED_UNIT, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import (
     BETWEEN,
@@ -210,10 +215,48 @@ def dry_run(plan_calls: list[ToolCall], context: PlanContext) -> Effect | None:
 
 
 
+# Workers that set one thing outright (the time, an asset's place, look or behaviour): a second
+# call setting the same thing to something else undoes the first.
+_SETTERS = ("set_time_of_day", "set_weather", "place_asset", "set_behaviour", "set_asset_appearance")
+
+
+def overridden(calls: tuple[ToolCall, ...] | list[ToolCall]) -> list[tuple[int, int]]:
+    """Pairs (i, j) of calls where call j sets again what call i set, to something else, so that
+    the request's first value is lost ("half four ... that time of the morning" read as 04:30 and
+    then "morning"). The same weather made stronger or lighter refines it ("foggy. Thick fog")."""
+    def what(call: ToolCall) -> tuple[str, ...] | None:
+        if call.tool not in _SETTERS:
+            return None
+        if call.tool == "set_weather":
+            return (call.tool, str(call.args.get("kind")))  # another kind is another weather, judged below
+        if call.tool == "set_time_of_day":
+            return (call.tool,)
+        asset = call.args.get("asset")
+        if not isinstance(asset, str):
+            return None
+        looks = tuple(sorted(k for k in call.args if k not in ("asset", "assets")))
+        return (call.tool, asset, *looks) if call.tool == "set_asset_appearance" else (call.tool, asset)
+
+    out = []
+    weathers = [i for i, c in enumerate(calls) if c.tool == "set_weather"]
+    for a, b in itertools.pairwise(weathers):
+        if calls[a].args.get("kind") != calls[b].args.get("kind"):
+            out.append((a, b))  # "rain ... snow": one weather at a time
+    for j, later in enumerate(calls):
+        key = what(later)
+        if key is None or later.tool == "set_weather":
+            continue
+        out += [(i, j) for i in range(j) if what(calls[i]) == key and calls[i].args != later.args]
+    return out
+
+
 def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[str]:
     """Each way the plan's effect fails to account for the request, in plain words."""
     out: list[str] = []
     scene = context.scene
+    for i, j in overridden(effect.calls):
+        out.append(f"the plan sets the same thing twice ({describe([effect.calls[i]])}, then {describe([effect.calls[j]])}), "
+                   "so the first is lost")
     if request.question and effect.edits:
         out.append("you asked a question, but the plan would change the scene")
     looks_up_places = any(c.tool in ("find_landmarks", "measure_distance") or "nearest_to" in c.args or "furthest_from" in c.args
@@ -325,6 +368,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += _coverage(request, effect, scene, context.memory)
     out += _attributes(request, effect, scene)
     out += wrong_direction(request.masked, scene, _moved(effect))
+    out += wrong_lane_way(request.masked, scene, [*effect.added, *effect.changed])
     out += _wrong_way_to(request, scene, _moved(effect))
     out += _not_the_extreme(request, effect, scene)
     out += _not_between(request, scene, [*effect.added, *_moved(effect)])
@@ -403,6 +447,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += place_dropped(request.low, effect.calls)
     out += unknown_things(request.masked, effect.calls, scene)
     out += picked_but_other(request.masked, scope, scene)
+    out += numbered_passed_over(request.masked, scope, scene)
     if request.place is None and not request.question:
         out += off_the_road(request.low, scope, scene)
     out += excepted_touched(request.excepted, _kinds_named(request), scope, scene, without_contrast(request.low), memory.last_added())
@@ -434,6 +479,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
         out += [f"you said every one of {', '.join(each)}, but the plan puts nothing at {place}"
                 for place in centres if place not in served]
     out += wrong_layout(request.masked, effect.added)
+    out += _layout_of_one(effect.calls) + _layout_of_the_place(request, effect.calls, scene)
     # around what the layout names ("around the tree just north of lot A"), else the place named
     ringed = [str(c.args["location"]["target"]) for c in effect.calls if c.tool == "arrange_assets"
               and isinstance(c.args.get("location"), dict) and c.args["location"].get("target")]
@@ -465,7 +511,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
                     and not (c.args.get("kind") == now.kind and float(c.args.get("intensity", 1.0)) < now.intensity
                              and said_weaker(request.low))]
         out += [f"you said no {kind}, but the plan sets {kind}" for kind in unwanted]
-    return out + weather_strength(request.low, effect.calls)
+    return out + weather_strength(request.low, effect.calls) + denied_set(request.low, effect.calls)
 
 
 def described_category(text: str, plan_categories: set[str]) -> str | None:
@@ -895,6 +941,23 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
     polarity, only the assets at the place or of the state named, no edit for a question."""
     out: list[Reading] = []
     scene = context.scene
+    for i, j in overridden(effect.calls)[:1]:  # either of the two values said, the rest of the plan kept
+        for dropped in (j, i):
+            calls = [c for k, c in enumerate(effect.calls) if k != dropped]
+            out.append(Reading(text=describe(calls), calls=calls))
+    if any(c.tool == "arrange_assets" and c.args.get("count") == 1 for c in effect.calls):  # as many as a layout takes
+        calls = [c.model_copy(update={"args": {k: v for k, v in c.args.items() if k != "count"}})
+                 if c.tool == "arrange_assets" and c.args.get("count") == 1 else c for c in effect.calls]
+        out.append(Reading(text=describe(calls), calls=calls))
+    if strength := weather_strength(request.low, effect.calls):  # "a bit cloudy" set as medium: the light one
+        intensity = LIGHT_INTENSITY if "light" in strength[0] else HEAVY_INTENSITY
+        calls = [c.model_copy(update={"args": {**c.args, "intensity": intensity}}) if c.tool == "set_weather" else c
+                 for c in effect.calls]
+        out.append(Reading(text=describe(calls), calls=calls))
+    if (way := md.compass_direction(request.masked)) is not None:  # "drive south": the road's lane going south
+        turned = [_lane_turned(c, way, scene) for c in effect.calls]
+        if turned != list(effect.calls):
+            out.append(Reading(text=describe(turned), calls=turned))
     if request.question and effect.edits:
         queries = [c for c in effect.calls if c.tool in QUERY_TOOLS]
         if request.categories and not queries:
@@ -930,6 +993,42 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
         if keep and len(keep) < len(effect.removed):
             out.append(Reading(text="remove only " + ", ".join(keep), calls=[
                 ToolCall(tool="remove_assets", args={"assets": keep})]))
+    return out
+
+
+def _lane_turned(call: ToolCall, way: str, scene: Scene) -> ToolCall:
+    """`call` with a drive_lane behaviour in a lane going against `way` moved to the lane of the
+    same road that goes `way` (and placed in it, when the call placed it in the first)."""
+    behaviour = call.args.get("behaviour")
+    lane = scene.roads.lane(str(behaviour.get("lane"))) if isinstance(behaviour, dict) and behaviour.get("kind") == "drive_lane" else None
+    if lane is None or lane_way(lane, way) >= 0:
+        return call
+    other = next((o for o in scene.roads.lanes if o.road == lane.road and o.kind == "driving" and lane_way(o, way) > 0.5), None)
+    if other is None:
+        return call
+    args = {**call.args, "behaviour": {**behaviour, "lane": other.id}}
+    location = args.get("location")
+    if isinstance(location, dict) and location.get("target") == lane.id:
+        args["location"] = {**location, "target": other.id}
+    return call.model_copy(update={"args": args})
+
+
+def _layout_of_one(calls: tuple[ToolCall, ...]) -> list[str]:
+    """A row, ring or grid of one thing is no layout: "some seating in a row" read as count 1."""
+    return [f"the plan lays out a {c.args.get('shape', 'layout')} of one {', '.join(c.args.get('categories', []))}"
+            for c in calls if c.tool == "arrange_assets" and c.args.get("count") == 1]
+
+
+def _layout_of_the_place(request: Request, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
+    """A layout of the very kind of thing it is laid out by, that kind said once: "a few witnesses
+    in a line near the bench" read as a line of benches by the bench."""
+    out = []
+    for call in calls:
+        location = call.args.get("location")
+        where = scene.asset(str(location.get("target"))) if call.tool == "arrange_assets" and isinstance(location, dict) else None
+        if where is not None and where.category in call.args.get("categories", []) \
+                and sum(1 for m in ph.find_categories(request.masked) if m.category == where.category) <= 1:
+            out.append(f"you named the {where.category.replace('_', ' ')} as the place, but the plan lays out more of them")
     return out
 
 
@@ -1121,4 +1220,4 @@ def refusal(problems: list[str], context: PlanContext) -> str:
 _FAMILY_VERB = {"appearance": "restyle", "search": "find", "position": "place"}
 
 
-__all__ = ["Effect", "Verdict", "dry_run", "problems_of", "refusal", "repairs", "review"]
+__all__ = ["Effect", "Verdict", "dry_run", "overridden", "problems_of", "refusal", "repairs", "review"]

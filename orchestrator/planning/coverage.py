@@ -41,7 +41,7 @@ from drivetwin.tools.appearance import TIME_PRESETS
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import compass_of
 from drivetwin.worlds.catalog import catalog
-from drivetwin.worlds.scene import AssetInstance, Scene
+from drivetwin.worlds.scene import AssetInstance, Lane, Scene
 
 # Words before a category that point at one already in the scene ("the SUV", "those cones").
 _DEFINITE = ("the", "that", "this", "those", "these", "our", "my", "all", "every", "each", "both")
@@ -676,6 +676,42 @@ def wrong_direction(masked: str, scene: Scene, moved: Iterable[AssetInstance]) -
     return out
 
 
+def lane_way(lane: Lane, word: str) -> float:
+    """How far `lane`'s traffic goes the compass way `word` names: the cosine between them."""
+    (x0, y0), (x1, y1) = lane.centreline[0], lane.centreline[-1]
+    want_x, want_y = md.COMPASS_VECTORS[word]
+    length = math.hypot(x1 - x0, y1 - y0)
+    return ((x1 - x0) * want_x + (y1 - y0) * want_y) / length if length > 0 else 0.0
+
+
+def wrong_lane_way(masked: str, scene: Scene, driven: Iterable[AssetInstance]) -> list[str]:
+    """Things a plan sets driving in a lane whose traffic goes against the one compass direction the
+    request names ("car 2 must drive on Campus Drive to the south" put in the northbound lane)."""
+    word = md.compass_direction(masked)
+    if word is None:
+        return []
+    out = []
+    for asset in driven:
+        lane = scene.roads.lane(asset.behaviour.lane) if asset.behaviour.kind == "drive_lane" and asset.behaviour.lane else None
+        if lane is not None and lane_way(lane, word) < -math.cos(math.radians(DIRECTION_SLACK_DEG)):
+            (x0, y0), (x1, y1) = lane.centreline[0], lane.centreline[-1]
+            out.append(f"you said {word}, but the plan drives {asset.id} {compass_of(x1 - x0, y1 - y0)} in {lane.id}")
+    return out
+
+
+def numbered_passed_over(masked: str, scope: Scope, scene: Scene) -> list[str]:
+    """Things said by id (the request reader writes "use car 1" as passenger_car_1) that the plan
+    leaves alone while it adds, removes or changes another of their kind: the one named was meant."""
+    touched = {a.id for a in scope.touched}
+    kinds = {a.category for a in scope.touched}
+    out = []
+    for said in ASSET_ID.finditer(masked):
+        asset = scene.asset(said.group(0))
+        if asset is not None and asset.id not in touched and asset.category in kinds:
+            out.append(f"you named {asset.id}, but the plan leaves it and acts on another {asset.category.replace('_', ' ')}")
+    return list(dict.fromkeys(out))
+
+
 # Lanes named by who uses them, and the lane kind that would be ("biking" is no kind this world has).
 _LANE_KINDS = {"bike": "biking", "bicycle": "biking", "cycle": "biking", "bus": "bus", "tram": "tram", "parking": "parking"}
 _KIND_OF_LANE = re.compile(rf"\b({'|'.join(_LANE_KINDS)}) lane\b")
@@ -731,13 +767,21 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
                                    or (phrase[-1].endswith("est") and is_known(phrase[-2], vocab))):
             phrase.pop()  # "a low sun shortly after dawn", "a deer crossing", "the sign anymore", "the tree closest": the thing comes before
         word = phrase[-1]
-        if phrase[0] == "to" or (len(phrase) == 1 and word.endswith("ing")):
-            continue  # "want to be sure", "needs protecting": a verb wanted, not a thing
+        if phrase[0] == "to" or (len(phrase) == 1 and word.endswith(("ing", "more", "where", "ly"))):
+            continue  # "want to be sure", "needs protecting", "don't need anymore": a verb or an adverb, not a thing
+        if len(phrase) > 1 and (word.endswith(("ed", "en")) or word in _PARTICIPLES) and word in english_words() \
+                and any(is_known(w, vocab) or w == "ego" for w in phrase[:-1]):
+            continue  # "I want the ego sat at the gate", "a bench painted green": the thing, then how it is
         if len(word) < 3 or word in lx.GRAMMAR or word in lx.GENERIC_THINGS or word in ph.NUMBER_WORDS \
                 or _heads(phrase) or is_known(word, vocab) or word in said or any(w in weathers for w in phrase):  # "a fog bank"
             continue
         out.append(f"there is no {word!r} in this world")
     return list(dict.fromkeys(out))
+
+
+# Past participles not ending in -ed or -en: "the ego sat at the gate", "the cones left in a row".
+_PARTICIPLES = frozenset({"sat", "stood", "left", "kept", "lit", "set", "put", "held", "shut", "spread", "stuck", "laid",
+                          "hung", "parked", "built", "lent", "sent", "spent", "bent", "lost", "found"})
 
 
 def _heads(phrase: list[str]) -> bool:
@@ -1000,6 +1044,8 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         for at, word in enumerate(words):
             rest = list(itertools.takewhile(lambda w: w not in lx.GRAMMAR, words[at + 1 :]))
             place = " ".join([word, *rest])  # "the lakeside promenade for ...": the name, not one word of it
+            if {word, *words[at + 1 : at + 2]} & _TIME_HEADS:
+                break  # "at the material time", "by the weekend": when, not where
             if word in world:
                 continue
             if _CENTRE_SAID.fullmatch(word):
@@ -1031,6 +1077,9 @@ def unknown_places(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
     return list(dict.fromkeys(out))
 
 
+# Nouns that make a phrase after "at", "by" or "on" a time, not a place: "at the material time".
+_TIME_HEADS = frozenset({"time", "times", "moment", "minute", "hour", "day", "night", "weekend", "week", "start", "end",
+                         "point", "instant", "second", "stage"})
 _CENTRE_SAID = re.compile(r"\b(?:cent(?:re|er)|middle|origin|0\s*,\s*0)\b")
 
 
@@ -1093,9 +1142,11 @@ __all__ = [
     "indefinite_but_moved",
     "inside_building",
     "landmark_thing_changed",
+    "lane_way",
     "missing_categories",
     "named_in",
     "named_things",
+    "numbered_passed_over",
     "off_the_side",
     "partial_removal",
     "place_dropped",
@@ -1105,4 +1156,5 @@ __all__ = [
     "unnamed_compass_places",
     "unpointed",
     "wrong_direction",
+    "wrong_lane_way",
 ]

@@ -38,6 +38,7 @@ from drivetwin.orchestrator.planning.rules.reading import (
     find_place,
     labelled,
     named_as,
+    numbered_picks,
     without_beneficiaries,
     without_goals,
     without_order,
@@ -99,6 +100,8 @@ def read_request(prompt: str, scene: Scene) -> Request:
     low = ph.normalise(named_as(low)[0]).strip()  # "..., that's our crash vehicle": a name given, no vehicle asked for
     for ident, start, end in reversed(labelled(scene, low)):  # "the steward": the thing the person named so
         low = low[:start] + ident + low[end:]
+    for ident, start, end in reversed(numbered_picks(scene, low)):  # "car 2": that one, not two cars
+        low = low[:start] + " " + ident + " " + low[end:]
     place = _named_place(scene, low)
     masked = low if place is None else low[: place[1]] + " " + low[place[2] :]
     for word in ph.EGO_WORDS:  # "the ego car" is the ego, not a car asked for
