@@ -111,6 +111,7 @@ from drivetwin.orchestrator.planning.rules.repeat import SAID_AGAIN_AT
 from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID
 from drivetwin.orchestrator.planning.scenario_review import missed_scenario, read_as_scenario
 from drivetwin.orchestrator.transaction import TransactionError, TransactionResult, execute
+from drivetwin.tools.appearance import TIME_PRESETS
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
@@ -240,14 +241,36 @@ def overridden(calls: tuple[ToolCall, ...] | list[ToolCall]) -> list[tuple[int, 
     out = []
     weathers = [i for i, c in enumerate(calls) if c.tool == "set_weather"]
     for a, b in itertools.pairwise(weathers):
-        if calls[a].args.get("kind") != calls[b].args.get("kind"):
-            out.append((a, b))  # "rain ... snow": one weather at a time
+        if calls[a].args.get("kind") not in ("clear", calls[b].args.get("kind")):
+            out.append((a, b))  # "rain ... snow": one weather at a time ("too sunny; overcast": clear, then cloud, is one)
     for j, later in enumerate(calls):
         key = what(later)
         if key is None or later.tool == "set_weather":
             continue
-        out += [(i, j) for i in range(j) if what(calls[i]) == key and calls[i].args != later.args]
+        for i in range(j):
+            if what(calls[i]) != key or calls[i].args == later.args:
+                continue
+            if later.tool == "set_time_of_day" and _hours_apart(calls[i], later) <= SAME_TIME_H:
+                continue  # "a bit earlier ... dusk rather than dark": 19:00, then dusk, is one wish said twice
+            if later.tool == "place_asset" and any(c.tool == "place_asset" and c.args.get("asset") != key[1] for c in calls[i + 1 : j]):
+                continue  # "swap the bench and the bin": one stands aside while the other takes its place
+            out.append((i, j))
     return out
+
+
+# Two times of day this close are one time said twice, not two wishes.
+SAME_TIME_H = 2.0
+
+
+def _hours_apart(a: ToolCall, b: ToolCall) -> float:
+    """Hours between the times two set_time_of_day calls set, round the clock (24 when unreadable)."""
+    def hours(call: ToolCall) -> float | None:
+        said = str(call.args.get("time", "")).lower()
+        clock = re.fullmatch(r"(\d{1,2}):(\d{2})", TIME_PRESETS.get(said, said))
+        return int(clock.group(1)) + int(clock.group(2)) / 60 if clock else None
+
+    x, y = hours(a), hours(b)
+    return 24.0 if x is None or y is None else min(abs(x - y), 24 - abs(x - y))
 
 
 def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[str]:
@@ -479,7 +502,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
         out += [f"you said every one of {', '.join(each)}, but the plan puts nothing at {place}"
                 for place in centres if place not in served]
     out += wrong_layout(request.masked, effect.added)
-    out += _layout_of_one(effect.calls) + _layout_of_the_place(request, effect.calls, scene)
+    out += _layout_of_one(request.masked, effect.calls) + _layout_of_the_place(request, effect.calls, scene)
     # around what the layout names ("around the tree just north of lot A"), else the place named
     ringed = [str(c.args["location"]["target"]) for c in effect.calls if c.tool == "arrange_assets"
               and isinstance(c.args.get("location"), dict) and c.args["location"].get("target")]
@@ -945,7 +968,7 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
         for dropped in (j, i):
             calls = [c for k, c in enumerate(effect.calls) if k != dropped]
             out.append(Reading(text=describe(calls), calls=calls))
-    if any(c.tool == "arrange_assets" and c.args.get("count") == 1 for c in effect.calls):  # as many as a layout takes
+    if _layout_of_one(request.masked, effect.calls):  # as many as a layout takes
         calls = [c.model_copy(update={"args": {k: v for k, v in c.args.items() if k != "count"}})
                  if c.tool == "arrange_assets" and c.args.get("count") == 1 else c for c in effect.calls]
         out.append(Reading(text=describe(calls), calls=calls))
@@ -1013,8 +1036,11 @@ def _lane_turned(call: ToolCall, way: str, scene: Scene) -> ToolCall:
     return call.model_copy(update={"args": args})
 
 
-def _layout_of_one(calls: tuple[ToolCall, ...]) -> list[str]:
-    """A row, ring or grid of one thing is no layout: "some seating in a row" read as count 1."""
+def _layout_of_one(masked: str, calls: tuple[ToolCall, ...]) -> list[str]:
+    """A row, ring or grid said, laid out with one thing: "some seating in a row" read as count 1
+    (a layout of one with no layout said is how a plan puts one thing across the road)."""
+    if md.layout_said(masked) is None:
+        return []
     return [f"the plan lays out a {c.args.get('shape', 'layout')} of one {', '.join(c.args.get('categories', []))}"
             for c in calls if c.tool == "arrange_assets" and c.args.get("count") == 1]
 

@@ -62,7 +62,11 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
                       r"|motorbike|motorcycle|robot)(?:_\d+)?\s+(?:left|right)\s+(?:at|into|onto|on)\s+(?:the\s+)?(?:crossroads|junction"
                       r"|intersection|lights|place)\b"
                       r"|\b(?:turn\w*|take\w*|hang\w*|hook\w*|chuck\w*|pull\w* a|make\w* a)(?: a| off)?\s+(?:left|right|off(?! (?:all )?(?:the |those |these )?(?:[a-z]+ )?[a-z]*(?:lights?|lamps?)\b)(?! (?:all |every )?(?:the |those |these |them\b|it\b)(?!\s*(?:main|campus|road|street|drive|highway|motorway)\b)))\b|\bturn\w* at\b"
-                      r"|\bgo(?:es)? straight\b|\bstraight (?:on|through|across|over|ahead)\b"),
+                      r"|\bgo(?:es)? straight\b|\bstraight (?:on|through|across|over|ahead)\b"
+                      # a way to turn said with the junction it is taken at, in one clause: "turn the test
+                      # car to the right at the junction", "take the left at the crossroads"
+                      r"|\b(?:turn|take|go|head|hang|swing|bear|hook)\w*\b[^.,;!?]{0,30}?\b(?:left|right)\b[^.,;!?]{0,20}?"
+                      r"\b(?:at|into|onto|through|gets? to|reach\w*)\s+(?:the\s+)?(?:crossroads|junction|intersection|place)\b"),
     ("reverse", r"\brevers\w*|\bback(?:s|ing)? (?:up|out)\b"),
     ("change_speed", r"\bspeed\w* up\b|\bspeed up\b|\baccelerat\w*|\bgo(?:es)? faster\b|\bslow\w* (?:down|to)\b"
                      r"|\bdecelerat\w*|\bgo(?:es)? slower\b"),

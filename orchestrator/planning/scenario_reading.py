@@ -155,7 +155,9 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
     manoeuvre = any(words.search(low) for kind, words in _COMPILED[1:])
     if _ADDING.match(low) and not trigger:
         return False
-    if re.match(r"\s*(what|which|where|how|is|are|does|do)\b", low) or low.rstrip().endswith("?") or asks(low):
+    # "can the ego turn left at the crossroads?" asks for it to be done; "the light goes red?" asks
+    polite = re.match(r"\s*(?:[a-z' ]{0,25},\s*)?(?:(?:sorry|please|so|ok|okay)\W+)*(?:can|could|would|will)\b", low) is not None
+    if re.match(r"\s*(what|which|where|how|is|are|does|do)\b", low) or (low.rstrip().endswith("?") and not polite) or asks(low):
         return False
     light = bool(_LIGHT_WORDS.search(re.sub(r"\bstreet lights?\b", " ", low))) and not re.search(
         r"\b(paint|colou?r|recolou?r|move|remove|add|put|turn (it )?(on|off))\w*\b", low)
@@ -193,7 +195,10 @@ _ROLE = re.compile(r"\b(" + "|".join(sorted(ROLE_WORDS, key=len, reverse=True)) 
 POSSIBLE = ("a scenario can make a vehicle brake, change speed, change lanes, cut in, turn at the junction or "
             "reverse, a pedestrian cross the road or stop in it, and a traffic light change or cycle, each at a "
             "time, at a distance or time to collision between two actors, or when an actor reaches a place")
-_LEADING = re.compile(r"^(?:and |then |so |now )?(?:please )?(?:(?:i |we )?(?:want|need) |i'd like |(?:i|we) (?:should|would) like |we'd like )?"
+# Openings before the action: "and then", "sorry, can ...", "please make", "I want", "could you have".
+_LEADING = re.compile(r"^(?:(?:and|then|so|now|sorry|ok|okay|please)\s*,?\s+)*(?:[a-z' ]{0,25},\s+(?=(?:can|could|would|will)\b))?"
+                      r"(?:(?:can|could|would|will)\s+(?:you\s+)?(?:please\s+)?)?"
+                      r"(?:(?:i |we )?(?:want|need) |i'd like |(?:i|we) (?:should|would) like |we'd like )?"
                       r"(?:make|have|let|get|see that|ensure)?\s*")
 _TRAILING_MODAL = re.compile(r"(?:\s*\b(?:should|will|must|has to|needs to|is going to|is to|to|would|suddenly|then|just"
                              r"|also|quickly|slowly|gently|hard|abruptly))+\s*$")
@@ -278,6 +283,9 @@ def _readings(action: str, scene: Scene, doer: AssetInstance | None = None
             actors, what = [doer], doer.id
         else:
             actors, what = candidates(subject or "the ego", scene, moving_manoeuvre=True)
+            heads = [m.start() for m in re.finditer(r"\b(?:the|our|my|that)\b", subject)]
+            if not actors and heads and heads[-1] > 0:  # "this time round the ego ...": the thing named last
+                actors, _ = candidates(subject[heads[-1]:], scene, moving_manoeuvre=True)
         if not actors or (brings_in(subject) and parked_only(actors, read_manoeuvre(action[verb_at:], motion(actors[0])).kind)):
             raise _NoActor(f"there is no {what} in the scene to act; {POSSIBLE}", subject, verb_at)
         kind = motion(actors[0])

@@ -34,8 +34,8 @@ def applied(campus, registry, planner, prompt):
 
 
 def test_a_time_set_twice_asks_which_time_was_meant(campus, registry):
-    plan = Fixed(call("set_time_of_day", time="05:15"), call("set_time_of_day", time="dawn"))
-    report = held(campus, registry, plan, "our shift starts at 05:15, so make it that hour of the dawn please")
+    plan = Fixed(call("set_time_of_day", time="05:15"), call("set_time_of_day", time="morning"))
+    report = held(campus, registry, plan, "our shift starts at 05:15, so make it that hour of the morning please")
     assert report.question is not None
     offered = [[c.args for c in r.calls] for r in report.question.readings]
     assert [{"time": "05:15"}] in offered  # the clock time alone is one of the readings
@@ -50,6 +50,8 @@ def test_a_thing_put_in_two_places_is_not_applied(campus, registry):
 def test_the_same_weather_made_stronger_is_one_wish():
     assert overridden([call("set_weather", kind="snow"), call("set_weather", kind="snow", intensity=0.9)]) == []
     assert overridden([call("set_weather", kind="snow"), call("set_weather", kind="rain")]) == [(0, 1)]
+    # a time said twice close together is one wish ("a bit earlier, dusk rather than dark")
+    assert overridden([call("set_time_of_day", time="19:00"), call("set_time_of_day", time="dusk")]) == []
     # moves add up; only what sets a thing outright is undone by a second call
     assert overridden([call("move_asset", asset="ego", north=2.0), call("move_asset", asset="ego", east=1.0)]) == []
 
@@ -143,7 +145,7 @@ def test_words_that_are_no_things_are_not_refused_as_unknown_things():
 def test_a_layout_of_one_offers_a_layout_of_several(campus, registry):
     plan = Fixed(call("arrange_assets", categories=["traffic_cone"], count=1, shape="line",
                       location={"relation": "at", "target": "east gate"}))
-    report = held(campus, registry, plan, "cones lined up across the east gate")
+    report = held(campus, registry, plan, "cones in a row across the east gate")
     assert report.question is not None
     assert any(c.tool == "arrange_assets" and "count" not in c.args for r in report.question.readings for c in r.calls)
 

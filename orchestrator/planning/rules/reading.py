@@ -563,23 +563,26 @@ def labelled(scene: Scene, low: str) -> list[tuple[str, int, int]]:
     return out
 
 
-# A number right after a kind that picks one thing out ("car 1", "bench number two"), never an amount
-# or a measure ("car 5 m ahead", "cones 3 deep").
-_PICKED_NUMBER = re.compile(r"\s*(?:number |no\. |nr |# ?)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b"
-                            r"(?!\s*(?:m|metres?|meters?|ft|feet|yards?|km|kph|mph|%|x|more|of|deep|wide|high|across|seconds?|s)\b)")
+# A kind and a number that picks one thing out ("car 1", "bench number two"), never an amount or a
+# measure ("car 5 m ahead", "cones 3 deep"), nor a count of what follows ("plant 4 trees").
+_PICKED = re.compile(r"\b([a-z]+)\s+(?:number |no\. |nr |# ?)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b"
+                     r"(?!\s*(?:m|metres?|meters?|ft|feet|yards?|km|kph|mph|%|x|more|of|deep|wide|high|across|seconds?|s)\b)"
+                     r"(?![.,]\d)")
 
 
 def numbered_picks(scene: Scene, low: str) -> list[tuple[str, int, int]]:
     """Things the words pick out by kind and number ("use car 1", "bench number two"): the id of
-    each one the scene has, and the span that names it."""
+    each one the scene has, and the span of `low` that names it."""
     out = []
-    for mention in ph.find_categories(low):
-        said = _PICKED_NUMBER.match(low, mention.end)
-        if said is None or low[: mention.start].rstrip().endswith(" as"):  # "mark the SUV as vehicle 2": a label
+    for said in _PICKED.finditer(low):
+        kinds = {m.category for m in ph.find_categories(said.group(1))}
+        counted = ph.find_categories(low[said.end() : said.end() + 24].split(",")[0])
+        if len(kinds) != 1 or (counted and not low[said.end() :].lstrip().startswith(("and", "or", "to", "in", "at", "on", "by"))) \
+                or low[: said.start()].rstrip().endswith(" as"):  # "mark the SUV as vehicle 2": a label
             continue
-        number = int(said.group(1)) if said.group(1).isdigit() else ph.NUMBER_WORDS[said.group(1)]
-        if scene.asset(ident := f"{mention.category}_{number}") is not None:
-            out.append((ident, mention.start, said.end()))
+        number = int(said.group(2)) if said.group(2).isdigit() else ph.NUMBER_WORDS[said.group(2)]
+        if scene.asset(ident := f"{kinds.pop()}_{number}") is not None:
+            out.append((ident, said.start(), said.end()))
     return out
 
 
