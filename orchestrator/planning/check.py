@@ -307,7 +307,10 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked about the weather or the time, but the plan looks up something else")
     from_ego = any(c.tool == "measure_distance" and "ego" in (c.args.get("a"), c.args.get("b")) for c in effect.calls)
     two_ends = re.search(r"\b(?:from|between|and)\b", request.masked)  # "how far is X from Y": neither is the asker
-    if from_ego and two_ends and not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked):
+    named_ends = FROM_TO.search(request.masked) or BETWEEN.search(request.masked)  # "I'll walk from the stop to the fountain"
+    ends_not_ego = named_ends is not None and not any(re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", end)
+                                                     for end in named_ends.groupdict().values())
+    if from_ego and two_ends and (ends_not_ego or not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked)):
         out.append("the plan measures from the ego, which your words do not name")  # "how far is the hosptial from the gate"
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
     # A request that only takes away never adds, and one that only adds never removes; with

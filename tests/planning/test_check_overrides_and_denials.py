@@ -153,3 +153,18 @@ def test_a_layout_of_one_offers_a_layout_of_several(campus, registry):
 def test_a_layout_of_the_thing_it_is_laid_out_by_is_not_applied(campus, registry):
     plan = Fixed(call("arrange_assets", categories=["bench"], shape="ring", location={"relation": "at", "target": "bench_1"}))
     held(campus, registry, plan, "a handful of onlookers in a circle round the bench")
+
+
+def test_a_distance_between_two_named_places_is_not_measured_from_the_ego(campus, registry):
+    plan = Fixed(call("measure_distance", a="Library entrance", b="ego"))
+    held(campus, registry, plan, "I cycle from the Library to the east gate every day; what distance is that?")
+    applied(campus, registry, Fixed(call("measure_distance", a="ego", b="Library entrance")),
+            "what distance is it from here to the Library?")
+
+
+def test_under_a_tree_is_beside_it(campus, registry):
+    session = applied(campus, registry, RulePlanner(), "move the bench underneath the tree closest to the Library")
+    bench = session.scene.asset("bench_1")
+    trees = [a for a in session.scene.assets if a.category == "tree"]
+    nearest = min(trees, key=lambda t: (t.pose.x - bench.pose.x) ** 2 + (t.pose.y - bench.pose.y) ** 2)
+    assert ((nearest.pose.x - bench.pose.x) ** 2 + (nearest.pose.y - bench.pose.y) ** 2) ** 0.5 < 5.0

@@ -32,6 +32,7 @@ RELATIONS = (
     (("left of", "to the left"), "left_of"),
     (("right of", "to the right"), "right_of"),
     (("next to", "beside", "alongside", "by the", "close to", "closer to", "each side of", "either side of", "both sides of"), "next_to"),  # "on each side of the bench"
+    (("under the", "underneath the", "beneath the", "in the shade of"), "next_to"),  # what stands under a tree stands by its trunk
 )
 _DISTANCE_SIDE = re.compile(r"\b(?:m|metres?|meters?|ft|feet)\s+(ahead|behind|back|further on|down the road)\b")
 # Words that say a place was meant; when none resolves, the rules guessed the place.
