@@ -65,7 +65,8 @@ def unanswered(request: Request, calls: Sequence[ToolCall], scene: Scene) -> lis
     if any(c.tool == "find_assets" for c in calls):  # a list of the things found says how many and where
         seconds = [word for word in seconds if word not in ("where", "how many")]
     parts = 1 + len(seconds)
-    answered = sum(ENVIRONMENT_PARTS if c.tool == "describe_environment" else 1 for c in calls)
+    distinct = list({str(c): c for c in calls}.values())  # the same lookup twice answers once
+    answered = sum(ENVIRONMENT_PARTS if c.tool == "describe_environment" else 1 for c in distinct)
     if answered < parts:
         out.append(f"you asked {parts} things, but the plan answers {len(calls)}")
     return out

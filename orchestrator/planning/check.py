@@ -397,6 +397,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += wrong_lane_way(request.masked, scene, [*effect.added, *effect.changed])
     out += _wrong_way_to(request, scene, _moved(effect))
     out += _not_the_extreme(request, effect, scene)
+    if (other := _outermost(request, effect, scene)) is not None:
+        out.append(f"you picked one by where it stands, which is {other[1].id}, but the plan acts on {other[0].id}")
     out += _not_between(request, scene, [*effect.added, *_moved(effect)])
     out += _amount_words_left_out(request, effect, scene)
     out += _already_there(effect, scene)
@@ -844,6 +846,22 @@ def _not_the_extreme(request: Request, effect: Effect, scene: Scene) -> list[str
     return [f"you said the {said.group(0)} {kind.replace('_', ' ')}, which is {pick.id}, but the plan acts on {acted[0].id}"]
 
 
+def _outermost(request: Request, effect: Effect, scene: Scene) -> tuple[AssetInstance, AssetInstance] | None:
+    """(the one acted on, the one meant) where the request picks one thing of a kind by the side or
+    corner it stands at ("only the north-east one goes", "the westernmost lamp"), among those at the
+    place named, and a plan acts on another; None when it acts on the one meant or picks none."""
+    way = md.outer_direction(request.low)
+    acted = [a for a in [*effect.removed, *effect.changed] if a.id != "ego"]
+    if way is None or request.question or len(acted) != 1:
+        return None
+    pool = [a for a in scene.assets if a.category == acted[0].category
+            and (request.place is None or _near(scene, a, request.place))]
+    if len(pool) < 2:
+        return None
+    pick = max(pool, key=lambda a: a.pose.x * way[0] + a.pose.y * way[1])
+    return None if pick.id == acted[0].id else (acted[0], pick)
+
+
 # "Further from the bus stop", "closer to the library": the way the distance to the place must go.
 _NEAREST_OF = re.compile(r"\b(?:nearest|closest)\b")
 _NEARER = re.compile(r"\b(?:closer|nearer)(?: to)?\b|\btowards?\b")
@@ -971,6 +989,10 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
         for dropped in (j, i):
             calls = [c for k, c in enumerate(effect.calls) if k != dropped]
             out.append(Reading(text=describe(calls), calls=calls))
+    if (other := _outermost(request, effect, scene)) is not None:  # "only the north-east one": that one
+        calls = [_retargeted(c, other[0].category, {other[0].id}, [other[1].id]) for c in effect.calls]
+        if all(calls):
+            out.append(Reading(text=describe([c for c in calls if c is not None]), calls=[c for c in calls if c is not None]))
     if _layout_of_one(request.masked, effect.calls):  # as many as a layout takes
         calls = [c.model_copy(update={"args": {k: v for k, v in c.args.items() if k != "count"}})
                  if c.tool == "arrange_assets" and c.args.get("count") == 1 else c for c in effect.calls]

@@ -168,3 +168,16 @@ def test_under_a_tree_is_beside_it(campus, registry):
     trees = [a for a in session.scene.assets if a.category == "tree"]
     nearest = min(trees, key=lambda t: (t.pose.x - bench.pose.x) ** 2 + (t.pose.y - bench.pose.y) ** 2)
     assert ((nearest.pose.x - bench.pose.x) ** 2 + (nearest.pose.y - bench.pose.y) ** 2) ** 0.5 < 5.0
+
+
+def test_one_picked_by_its_corner_is_the_one_acted_on(campus, registry):
+    lights = sorted((a for a in campus.assets if a.category == "traffic_light"), key=lambda a: a.pose.x + a.pose.y)
+    report = held(campus, registry, Fixed(call("remove_assets", assets=[lights[0].id])),
+                  "of the signals at the junction, take out just the north-east one")
+    assert report.question is not None
+    assert any(c.args.get("assets") == [lights[-1].id] for r in report.question.readings for c in r.calls)
+
+
+def test_a_question_in_two_parts_is_not_answered_by_one_lookup_twice(campus, registry):
+    held(campus, registry, Fixed(call("find_assets", category="bench"), call("find_assets", category="bench")),
+         "how many benches are there, and which landmark is each one nearest?")
