@@ -48,9 +48,9 @@ MIN_SIDE_M = 1.0
 _EGO_WORDS = ("ego", "us", "me", "ego_vehicle", "ego_car", "car_under_test")
 # Weather strength: words that ask for little or for much, and where the tool's scale splits.
 _WEATHER_WORD = r"(?:rain\w*|snow\w*|fog\w*|drizzl\w*|showers?|mist\w*|cloud\w*|overcast)"
-_HEDGE = r"(?:a\s?bit|a little|a touch|slightly|somewhat|mildly|just a bit|a tad)"
+_HEDGE = r"(?:a\s?bit|a little|a touch|slightly|somewhat|mildly|just a bit|a tad|(?:not|no)\s+(?:too\s+|so\s+|very\s+)?much)"
 _LIGHT = re.compile(rf"\b(light|gentle|slight|soft|a bit of|a little)\s+(rain|snow|fog|drizzle|shower|mist)|\bdrizzl"
-                    rf"|\b{_HEDGE}\s+(?:of\s+)?{_WEATHER_WORD}|\b{_WEATHER_WORD}\s+(?:\w+\s+)?{_HEDGE}(?!\s+(?:more|harder|heavier|stronger|thicker))\b")
+                    rf"|\b{_HEDGE}\s+(?:of\s+)?{_WEATHER_WORD}|\b{_WEATHER_WORD}[\s,]+(?:\w+[\s,]+){{0,3}}?{_HEDGE}(?!\s+(?:more|harder|heavier|stronger|thicker))\b")
 _HEAVY = re.compile(r"\b(heavy|hard|strong|thick|dense|torrential|pouring|downpour|blizzard)\b")
 STRENGTH_SPLIT = 0.5
 # Words that ask for a look change when a colour is named ("paint the bus red", "make it blue").
@@ -340,15 +340,23 @@ def weather_strength(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
 # follows it: "just not sunny", "not a rainy day", "no snow please", "without the fog".
 _WEATHER_SAID = {"clear": r"sunny|sunshine|sun|clear|fine", "rain": r"rain\w*|wet|showers?|drizzl\w*",
                  "snow": r"snow\w*", "fog": r"fog\w*|mist\w*", "cloudy": r"cloud\w*|overcast"}
-_DENIES = r"\b(?:not|no|never|without|n't)\s+(?:(?:a|an|any|the|too|so|very|that|really|at all)\s+){0,2}"
+_DENIES = r"\b(?:not|no|never|without|n't)\s+(?:(?:a|an|any|the|too|so|very|that|really|at all|just|in|on|into|for|with)\s+){0,2}"
+
+
+# Behaviours by their everyday words: "get it moving, and not round and round the car park".
+_BEHAVIOUR_SAID = {"circle": r"round and round|circl\w*|loops?|laps?", "parked": r"park\w*|stationary|standing still",
+                   "drive_lane": r"driv\w*"}
 
 
 def denied_set(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
-    """A weather or colour the words deny ("could it be less nice, just not sunny", "not red")
-    that the plan sets all the same."""
+    """A weather, colour or behaviour the words deny ("could it be less nice, just not sunny",
+    "not red", "not round and round the car park") that the plan sets all the same."""
     out = []
     for call in calls:
-        if call.tool == "set_weather" and (words := _WEATHER_SAID.get(str(call.args.get("kind")))):
+        behaviour = call.args.get("behaviour") if call.tool in ("set_behaviour", "add_asset") else None
+        words = _WEATHER_SAID.get(str(call.args.get("kind"))) if call.tool == "set_weather" else \
+            _BEHAVIOUR_SAID.get(str(behaviour.get("kind"))) if isinstance(behaviour, dict) else None
+        if words:
             said = re.search(rf"{_DENIES}({words})\b", low)
         elif call.tool == "set_asset_appearance" and isinstance(colour := call.args.get("colour"), str):
             said = re.search(rf"{_DENIES}({re.escape(colour.lower())})\b", low)
@@ -363,6 +371,8 @@ def describe_setting(call: ToolCall) -> str:
     """What a weather or look call sets, in words ("the weather clear", "the colour red")."""
     if call.tool == "set_weather":
         return f"the weather {call.args.get('kind')}"
+    if isinstance(behaviour := call.args.get("behaviour"), dict):
+        return f"the behaviour {behaviour.get('kind')}"
     return f"the colour {call.args.get('colour')}"
 
 

@@ -181,3 +181,13 @@ def test_one_picked_by_its_corner_is_the_one_acted_on(campus, registry):
 def test_a_question_in_two_parts_is_not_answered_by_one_lookup_twice(campus, registry):
     held(campus, registry, Fixed(call("find_assets", category="bench"), call("find_assets", category="bench")),
          "how many benches are there, and which landmark is each one nearest?")
+
+
+def test_a_behaviour_the_words_deny_is_not_set(campus, registry):
+    plan = Fixed(call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B"}))
+    held(campus, registry, plan, "the SUV should get going, just not in circles round the car park")
+
+
+def test_not_much_snow_is_light_snow(campus, registry):
+    report = held(campus, registry, Fixed(call("set_weather", kind="snow", intensity=0.6)), "snow please, though not too much")
+    assert report.question is not None
