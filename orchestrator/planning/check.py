@@ -41,6 +41,7 @@ from drivetwin.orchestrator.planning.attributes import (
 )
 from drivetwin.orchestrator.planning.base import Plan, PlanContext, Question, Reading
 from drivetwin.orchestrator.planning.coverage import (
+    LAMPS_SWITCHED,
     MIN_MOVE_M,
     Scope,
     absent_but_added,
@@ -178,6 +179,8 @@ class Verdict:
 # A thing said to be on its way somewhere: "a bus going east", "a truck heading north".
 _HEADING = re.compile(r"\b(?:going|heading|cruising)(?= (?:to |towards? )?(?:the )?(?:north|south|east|west))")
 # Words that ask a thing to drive or ride.
+# Going on foot, said of a thing: only what moves by itself can ("make the bin stroll off").
+_WALK_VERB = re.compile(r"\b(?:walk|walks|walking|walked|stroll\w*|wander\w*|march\w*|jog\w*|hop\w*|waddl\w*)\b")
 _DRIVE_VERB = re.compile(r"\b(?:drive|drives|driving|drove|ride|rides|riding|rode)\b(?! (?:lane|way|through))")
 
 
@@ -430,6 +433,11 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         drivers = [c for c in request.categories if c in catalog() and catalog()[c].drives]  # "stop cars driving in"
         if still and len(still) == len(touched) and not drivers:
             out.append(f"you asked for driving, but {_names(still)} cannot drive; vehicles, robots and riders can")
+    if _WALK_VERB.search(unnamed) and not request.question:  # "make the tree walk over to the fountain"
+        touched = [a for a in [*effect.added, *effect.changed] if a.id != "ego"]
+        props = [a for a in touched if a.category in catalog() and catalog()[a.category].motion == "prop"]
+        if props and len(props) == len(touched):
+            out.append(f"you asked for walking, but {_names(props)} cannot move by itself; people, riders and vehicles can")
     return out
 
 
@@ -993,6 +1001,12 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
         calls = [_retargeted(c, other[0].category, {other[0].id}, [other[1].id]) for c in effect.calls]
         if all(calls):
             out.append(Reading(text=describe([c for c in calls if c is not None]), calls=[c for c in calls if c is not None]))
+    lamps = LAMPS_SWITCHED.search(request.low)
+    if lamps is not None and not any(c.tool == "set_lighting" and "street_lights" in c.args for c in effect.calls):
+        state = lamps.group("state") or lamps.group("state2")  # "exposure 1.5 and the street lights on": both
+        lit = [c.model_copy(update={"args": {**c.args, "street_lights": state}}) for c in effect.calls if c.tool == "set_lighting"]
+        calls = [*(c for c in effect.calls if c.tool != "set_lighting"), *(lit or [ToolCall(tool="set_lighting", args={"street_lights": state})])]
+        out.append(Reading(text=describe(calls), calls=calls))
     if _layout_of_one(request.masked, effect.calls):  # as many as a layout takes
         calls = [c.model_copy(update={"args": {k: v for k, v in c.args.items() if k != "count"}})
                  if c.tool == "arrange_assets" and c.args.get("count") == 1 else c for c in effect.calls]

@@ -498,6 +498,9 @@ def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
                 and not (kind == "cloudy" and kinds_set & {"rain", "snow"})):  # rain falls from clouds
             out.append(f"you mentioned {name}, but the plan sets the weather to {', '.join(sorted(kinds_set))}")
             break
+    lamps = LAMPS_SWITCHED.search(low)  # "force the street lights on", "switch the lamps off"
+    if lamps is not None and not any(c.tool == "set_lighting" and "street_lights" in c.args for c in calls):
+        out.append(f"you said the street lights {lamps.group('state') or lamps.group('state2')}, but the plan does not switch them")
     clock = clock_time(low)
     day = _DAY_PART.search(low)
     day_part = day.group(1) if day else None
@@ -517,6 +520,10 @@ def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     return out
 
 
+# Street lights switched by name: "turn the street lights on", "force the lamps off", "lamps on".
+LAMPS_SWITCHED = re.compile(r"\b(?:street ?lights?|street ?lamps?|lamp ?posts?|lamps)\b(?:\s+\w+){0,2}?\s+(?P<state>on|off)\b"
+                             r"(?!\s+(?:the|a|an|its|this|that|each|every|either|both|main|campus)\b)"
+                             r"|\b(?:switch|turn|put|force|flip|set)\w*\s+(?P<state2>on|off)\s+(?:all\s+)?(?:the\s+)?(?:street ?lights?|street ?lamps?|lamps)\b")
 # The parts of the day on either side of noon, and which a time set falls in.
 _HALF_OF_DAY = {"dawn": "morning", "sunrise": "morning", "morning": "morning",
                 "sunset": "evening", "dusk": "evening", "evening": "evening", "night": "evening"}
@@ -1128,6 +1135,7 @@ def unnamed_compass_places(low: str, scene: Scene) -> list[str]:
 
 
 __all__ = [
+    "LAMPS_SWITCHED",
     "Named",
     "Scope",
     "absent_but_added",

@@ -191,3 +191,17 @@ def test_a_behaviour_the_words_deny_is_not_set(campus, registry):
 def test_not_much_snow_is_light_snow(campus, registry):
     report = held(campus, registry, Fixed(call("set_weather", kind="snow", intensity=0.6)), "snow please, though not too much")
     assert report.question is not None
+
+
+def test_street_lights_switched_in_words_are_switched_in_the_plan(campus, registry):
+    report = held(campus, registry, Fixed(call("set_lighting", exposure=0.8)), "darken the exposure to 0.8 and put the lamps off")
+    assert report.question is not None
+    assert any(c.args == {"exposure": 0.8, "street_lights": "off"} for r in report.question.readings for c in r.calls)
+    from drivetwin.orchestrator.planning.coverage import LAMPS_SWITCHED
+
+    assert LAMPS_SWITCHED.search("leave the lamp post on the corner where it is") is None  # a place, not a switch
+
+
+def test_a_thing_that_cannot_move_by_itself_is_not_walked_there(campus, registry):
+    plan = Fixed(call("place_asset", asset="trash_bin_1", location={"relation": "next_to", "target": "fountain"}))
+    held(campus, registry, plan, "let the bin stroll across to the fountain")
