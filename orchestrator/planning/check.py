@@ -739,6 +739,8 @@ def _numbers_used(effect: Effect, scene: Scene, place: str | None, ego: bool = F
         me = scene.ego.pose
         xs, ys = [a.pose.x for a in effect.added], [a.pose.y for a in effect.added]
         used.append(float(round(math.dist((me.x, me.y), (sum(xs) / len(xs), sum(ys) / len(ys))))))
+        # "on the north pavement 10 m behind the ego": how far along its heading, the pavement beside it
+        used.append(float(round(abs((sum(xs) / len(xs) - me.x) * math.cos(me.yaw) + (sum(ys) / len(ys) - me.y) * math.sin(me.yaw)))))
     used += [math.hypot(float(c.args.get("east", 0)), float(c.args.get("north", 0)))  # a move at a slant
              for c in effect.calls if c.tool == "move_asset" and "east" in c.args and "north" in c.args]
     return used

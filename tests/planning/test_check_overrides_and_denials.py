@@ -205,3 +205,11 @@ def test_street_lights_switched_in_words_are_switched_in_the_plan(campus, regist
 def test_a_thing_that_cannot_move_by_itself_is_not_walked_there(campus, registry):
     plan = Fixed(call("place_asset", asset="trash_bin_1", location={"relation": "next_to", "target": "fountain"}))
     held(campus, registry, plan, "let the bin stroll across to the fountain")
+
+
+def test_a_pavement_of_a_side_counted_along_the_ego(campus, registry):
+    # the pavement on the south side, 15 m on from the ego along its heading (the comma is no list)
+    session = applied(campus, registry, RulePlanner(), "stand a pedestrian on the south pavement, 15 metres in front of the ego")
+    ego = campus.ego.pose
+    walker = next(a for a in session.scene.assets if a.category == "pedestrian")
+    assert abs((walker.pose.x - ego.x) - 15.0) < 2.0 and walker.pose.y < ego.y  # ahead (east), south of the ego's lane

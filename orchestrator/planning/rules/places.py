@@ -479,8 +479,13 @@ def sidewalk_of_side(r: Reading, scene: Scene, exclude: list[str]) -> dict[str, 
     if past is not None and mark is not None:  # "on the north side of Main Street, east of the JTEKT building": past it
         ux, uy = _UNIT[past.group(1)]
         x, y = x + ux * BEYOND_PLACE_M, y + uy * BEYOND_PLACE_M
+    metres, relation = ph.find_distance(r.text), relation_of(r.low)
+    ahead = thing is not None and metres is not None and relation in ("in_front_of", "behind")
+    if ahead and thing is not None and metres is not None:  # "on the south footway, 20 m ahead of the ego": counted along its heading
+        sign = 1.0 if relation == "in_front_of" else -1.0
+        x, y = x + math.cos(thing.pose.yaw) * metres * sign, y + math.sin(thing.pose.yaw) * metres * sign
     walk = min(sides, key=lambda w: nearest_on_polyline(x, y, w.polyline).distance)
-    if anchor == "ego" and past is None:
+    if anchor == "ego" and past is None and not ahead:
         return {"relation": "on_sidewalk", "target": walk.id}
     on = nearest_on_polyline(x, y, walk.polyline)
     if thing is not None and anchor == named and on.distance <= walk.width:

@@ -385,7 +385,9 @@ def _comma_and(text: str) -> list[str]:
 _CONJUNCT = re.compile(r"\s*(?:,\s*)?(?:\band\b|\bplus\b|\+|&)\s+(?=[a-z0-9])")
 _VERB_AT = re.compile(rf"\b(?:{'|'.join(_VERBS)})\b(?! sign\b)")  # "the stop sign" names a thing, no verb
 # A list of things by commas, each with its own words ("paint the bench red, the bin blue and ...").
-_LISTED = re.compile(r"\s*,\s+(?=(?:the|a|an|one|two|three|four|five|\d+)\s)")
+# ("..., 20 metres ahead of the ego" is where the thing goes, not a second thing)
+_LISTED = re.compile(r"\s*,\s+(?=(?:the|a|an|one|two|three|four|five|\d+)\s)"
+                     r"(?!\S+\s+(?:m|metres?|meters?|ft|feet|foot|yards?|km|kilomet\w*)\b)")
 # More of the thing just named, its noun left out: "another two", "two more", "one more", "another".
 _MORE_OF = re.compile(r"^\s*(?:another(?:\s+(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten))?"
                       r"|(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s+more)\b", re.IGNORECASE)
