@@ -10,6 +10,8 @@ still apply.
 
 from __future__ import annotations
 
+import pytest
+
 from drivetwin.orchestrator.planning.check import overridden
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
@@ -213,3 +215,9 @@ def test_a_pavement_of_a_side_counted_along_the_ego(campus, registry):
     ego = campus.ego.pose
     walker = next(a for a in session.scene.assets if a.category == "pedestrian")
     assert abs((walker.pose.x - ego.x) - 15.0) < 2.0 and walker.pose.y < ego.y  # ahead (east), south of the ego's lane
+
+
+@pytest.mark.parametrize(("said", "time"), [("early in the evening", "19:00"), ("late afternoon", "17:00"), ("late morning", "11:00")])
+def test_early_or_late_in_a_part_of_the_day_moves_its_hour(campus, registry, said, time):
+    session = applied(campus, registry, RulePlanner(), f"set the scene for {said}")
+    assert session.scene.environment.time_of_day == time

@@ -15,6 +15,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import NUMBER, parse
 from drivetwin.orchestrator.planning.rules.reading import Reading
+from drivetwin.tools.appearance import TIME_PRESETS
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.scene import Environment
 
@@ -135,12 +136,22 @@ def time_of_day(r: Reading) -> ToolCall | None:
     phrased = [preset for words, preset in lx.TIME_PRESETS if r.has(tuple(w for w in words if " " in w or "-" in w))]
     worded = [preset for words, preset in lx.TIME_PRESETS if r.has(words)]
     if phrased or worded:
-        return ToolCall(tool="set_time_of_day", args={"time": (phrased or worded)[0]})
+        preset = (phrased or worded)[0]
+        shifted = _EARLY_LATE.search(r.low)
+        if not phrased and shifted is not None and shifted.group(2) == preset and preset in TIME_PRESETS:
+            # "early evening", "late afternoon": the named part of the day, EARLY_LATE_H sooner or later
+            hour, minute = map(int, TIME_PRESETS[preset].split(":"))
+            hour = (hour + (EARLY_LATE_H if shifted.group(1) == "late" else -EARLY_LATE_H)) % 24
+            return ToolCall(tool="set_time_of_day", args={"time": f"{hour:02d}:{minute:02d}"})
+        return ToolCall(tool="set_time_of_day", args={"time": preset})
     if _LATE.search(r.low):  # "something wintry, and late": late in the day
         return ToolCall(tool="set_time_of_day", args={"time": "evening"})
     return None
 
 
+# A named part of the day said early or late in it: "early evening", "late afternoon", "late morning".
+_EARLY_LATE = re.compile(r"\b(early|late)(?:[\s-]+in the)?[\s-]+(morning|afternoon|evening|night)\b")
+EARLY_LATE_H = 2
 # "late" said of the time alone: "make it late", "..., and late", "late, please" (not "too late", "later").
 _LATE = re.compile(r"(?:\b(?:make it|make the time|and|it's|its|it is|set it|set the time|time)\s+|^\s*)(?:really |very |quite |a bit )?late\b"
                    r"(?=\s*(?:$|[,.;!?]|\b(?:please|pls|now|too|then)\b))")
