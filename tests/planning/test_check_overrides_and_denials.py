@@ -11,7 +11,6 @@ still apply.
 from __future__ import annotations
 
 import pytest
-
 from drivetwin.orchestrator.planning.check import overridden
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
