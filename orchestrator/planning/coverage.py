@@ -273,10 +273,26 @@ def missing_categories(categories: Iterable[str], scope: Scope, scene: Scene) ->
 _POINTED_BACK = re.compile(r"\b(?:them|those|these)\b(?!\s+(?:ones\b|[a-z]+s\b))")
 
 
+def _asks_for_new(masked: str) -> bool:
+    """Whether a word asks for a new thing ("add", "another", "more cones"); "more" before a word
+    that names no thing is a comparative ("some more nice colour", "more far from the road")."""
+    def comparative(m: re.Match[str]) -> str:
+        word = m.group(1)
+        thing = ph.find_categories(f"{word} {m.group(2) or ''}") or word in _MORE_THINGS or word.isdigit() or word in ph.NUMBER_WORDS
+        return m.group(0) if thing else f"rather {word} {m.group(2) or ''}"
+
+    return _NEW.search(re.sub(r"\bmore\s+([a-z]+)(?:\s+([a-z]+))?", comparative, masked)) is not None
+
+
+# Words after "more" that still ask for things: "more of them", "more people", "more please".
+_MORE_THINGS = frozenset({"of", "than", "and", "then", "please", "ones", "one", "them", "people", "things", "stuff",
+                          "traffic", "here", "there", "in", "at", "on", "by", "near", "to", "for", "like", "too"})
+
+
 def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """Categories referred to as existing ("the SUV", "those benches") that the plan adds anew
     while the scene has them and no word asks for a new one."""
-    if _NEW.search(masked):
+    if _asks_for_new(masked):
         return []
     # "put the cones in a ring": a layout may make the things it arranges; it makes nothing else
     arranged = {c for call in scope.calls if call.tool == "arrange_assets" for c in call.args.get("categories", [])}

@@ -220,3 +220,8 @@ def test_a_pavement_of_a_side_counted_along_the_ego(campus, registry):
 def test_early_or_late_in_a_part_of_the_day_moves_its_hour(campus, registry, said, time):
     session = applied(campus, registry, RulePlanner(), f"set the scene for {said}")
     assert session.scene.environment.time_of_day == time
+
+
+def test_more_before_a_quality_asks_for_no_new_thing(campus, registry):
+    held(campus, registry, Fixed(call("add_asset", category="suv", count=1)), "give the SUV a more lively paint job")
+    applied(campus, registry, Fixed(call("add_asset", category="suv", count=1)), "the SUV, and one more like it please")
