@@ -225,3 +225,10 @@ def test_early_or_late_in_a_part_of_the_day_moves_its_hour(campus, registry, sai
 def test_more_before_a_quality_asks_for_no_new_thing(campus, registry):
     held(campus, registry, Fixed(call("add_asset", category="suv", count=1)), "give the SUV a more lively paint job")
     applied(campus, registry, Fixed(call("add_asset", category="suv", count=1)), "the SUV, and one more like it please")
+
+
+def test_thinning_out_takes_some_away(campus, registry):
+    session = applied(campus, registry, RulePlanner(), "the trees could do with being thinned out")
+    before = sum(1 for a in campus.assets if a.category == "tree")
+    after = sum(1 for a in session.scene.assets if a.category == "tree")
+    assert 0 < after < before
