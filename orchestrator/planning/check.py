@@ -178,9 +178,9 @@ class Verdict:
 
 # A thing said to be on its way somewhere: "a bus going east", "a truck heading north".
 _HEADING = re.compile(r"\b(?:going|heading|cruising)(?= (?:to |towards? )?(?:the )?(?:north|south|east|west))")
-# Words that ask a thing to drive or ride.
 # Going on foot, said of a thing: only what moves by itself can ("make the bin stroll off").
 _WALK_VERB = re.compile(r"\b(?:walk|walks|walking|walked|stroll\w*|wander\w*|march\w*|jog\w*|hop\w*|waddl\w*)\b")
+# Words that ask a thing to drive or ride.
 _DRIVE_VERB = re.compile(r"\b(?:drive|drives|driving|drove|ride|rides|riding|rode)\b(?! (?:lane|way|through))")
 
 
