@@ -516,6 +516,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
                 for place in centres if place not in served]
     out += wrong_layout(request.masked, effect.added)
     out += _layout_of_one(request.masked, effect.calls) + _layout_of_the_place(request, effect.calls, scene)
+    out += _off_the_road_named(request, effect, scene)
     # around what the layout names ("around the tree just north of lot A"), else the place named
     ringed = [str(c.args["location"]["target"]) for c in effect.calls if c.tool == "arrange_assets"
               and isinstance(c.args.get("location"), dict) and c.args["location"].get("target")]
@@ -1075,6 +1076,30 @@ def _lane_turned(call: ToolCall, way: str, scene: Scene) -> ToolCall:
     if isinstance(location, dict) and location.get("target") == lane.id:
         args["location"] = {**location, "target": other.id}
     return call.model_copy(update={"args": args})
+
+
+# Things "on Main Street" stand within this of one of its lanes' centrelines (its pavements included).
+ON_ROAD_M = 10.0
+
+
+def _off_the_road_named(request: Request, effect: Effect, scene: Scene) -> list[str]:
+    """Things a plan removes or changes away from the road the request scopes them to ("remove the
+    cars from Main Street" never takes the cars parked in lot B)."""
+    # a thing changed may be put on the road ("park the SUV on Main Street"): away if neither before nor after is on it
+    acted = [(a, scene.asset(a.id) or a) for a in [*effect.removed, *effect.changed] if a.id != "ego"]
+    if not acted or request.place is not None:
+        return []
+    for lane_road in {lane.road for lane in scene.roads.lanes if lane.road}:
+        name = re.escape(ph.normalise(lane_road).strip())
+        # ("clear every car off Campus Drive" reads "clear away every car campus drive" once its particle moves)
+        if not re.search(rf"\b(?:on|in|along|from|off|down|up)\s+(?:the\s+)?{name}\b|\baway(?:\s+\w+){{1,4}}\s+{name}\b", request.low):
+            continue
+        lines = [lane.centreline for lane in scene.roads.lanes if lane.road == lane_road]
+        away = [after for after, before in acted if all(min(nearest_on_polyline(a.pose.x, a.pose.y, line).distance for line in lines) > ON_ROAD_M
+                                                       for a in (after, before))]
+        if away:
+            return [f"you said {lane_road}, but the plan acts on {_names(away)} away from it"]
+    return []
 
 
 def _layout_of_one(masked: str, calls: tuple[ToolCall, ...]) -> list[str]:

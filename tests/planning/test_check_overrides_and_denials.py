@@ -232,3 +232,10 @@ def test_thinning_out_takes_some_away(campus, registry):
     before = sum(1 for a in campus.assets if a.category == "tree")
     after = sum(1 for a in session.scene.assets if a.category == "tree")
     assert 0 < after < before
+
+
+def test_things_scoped_to_a_road_are_the_ones_on_it(campus, registry):
+    parked = [a.id for a in campus.assets if a.category in ("passenger_car", "suv")]  # all in lot B, off the roads
+    held(campus, registry, Fixed(call("remove_assets", assets=parked)), "clear every car off Campus Drive")
+    applied(campus, registry, Fixed(call("place_asset", asset="suv_1", location={"relation": "in_lane", "target": "main_westbound"})),
+            "leave the SUV parked up on Main Street")
