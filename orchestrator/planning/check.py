@@ -1001,9 +1001,10 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
             calls = [c for k, c in enumerate(effect.calls) if k != dropped]
             out.append(Reading(text=describe(calls), calls=calls))
     if (other := _outermost(request, effect, scene)) is not None:  # "only the north-east one": that one
-        calls = [_retargeted(c, other[0].category, {other[0].id}, [other[1].id]) for c in effect.calls]
-        if all(calls):
-            out.append(Reading(text=describe([c for c in calls if c is not None]), calls=[c for c in calls if c is not None]))
+        picked = [_retargeted(c, other[0].category, {other[0].id}, [other[1].id]) for c in effect.calls]
+        kept = [c for c in picked if c is not None]
+        if len(kept) == len(picked):
+            out.append(Reading(text=describe(kept), calls=kept))
     lamps = LAMPS_SWITCHED.search(request.low)
     if lamps is not None and not any(c.tool == "set_lighting" and "street_lights" in c.args for c in effect.calls):
         state = lamps.group("state") or lamps.group("state2")  # "exposure 1.5 and the street lights on": both
@@ -1065,7 +1066,9 @@ def _lane_turned(call: ToolCall, way: str, scene: Scene) -> ToolCall:
     """`call` with a drive_lane behaviour in a lane going against `way` moved to the lane of the
     same road that goes `way` (and placed in it, when the call placed it in the first)."""
     behaviour = call.args.get("behaviour")
-    lane = scene.roads.lane(str(behaviour.get("lane"))) if isinstance(behaviour, dict) and behaviour.get("kind") == "drive_lane" else None
+    if not isinstance(behaviour, dict) or behaviour.get("kind") != "drive_lane":
+        return call
+    lane = scene.roads.lane(str(behaviour.get("lane")))
     if lane is None or lane_way(lane, way) >= 0:
         return call
     other = next((o for o in scene.roads.lanes if o.road == lane.road and o.kind == "driving" and lane_way(o, way) > 0.5), None)
