@@ -21,6 +21,7 @@ from drivetwin.orchestrator.planning.intent import (
     REPORTED,
     WHAT_IF,
     asks,
+    commands,
     excepted,
     taken_back,
     without_reason,
@@ -91,6 +92,10 @@ class Request:
     excepted: tuple[str, ...] = ()  # what the request says it does not mean (", not the ego")
 
 
+# Words that ask: with a question mark anywhere, the request is a question.
+_QUESTION_WORD = re.compile(r"\b(?:where|wheres|which|what|whats|how|hows|who|whose|when|why)\b")
+
+
 def read_request(prompt: str, scene: Scene) -> Request:
     """The request's signals: polarity, categories, numbers, place, lane, state and mood."""
     repaired = taken_back(repair(prompt, scene).text)[0]  # "..., no wait, scrap that, ...": what follows
@@ -113,7 +118,10 @@ def read_request(prompt: str, scene: Scene) -> Request:
     # A lane is named by its id, or by a direction said of a lane ("the westbound lane"), not by a
     # compass word alone ("2 m east", "facing north").
     lane = find_lane(scene, masked) if _LANE_WORDS.search(masked) else None
-    question = asks(low) or (given is not None and not given.met)  # with no bus, whether there is one
+    # "🚒 hydrant where? coords pls", "lanes on campus drv?? and which way they go": a question mark and a
+    # question word, with no command, ask however the words run
+    marked = "?" in low and _QUESTION_WORD.search(low) is not None and not commands(low)
+    question = asks(low) or marked or (given is not None and not given.met)  # with no bus, whether there is one
     polarity: Literal["add", "remove"] | None = (
         "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None
     )

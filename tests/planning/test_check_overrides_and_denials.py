@@ -239,3 +239,8 @@ def test_things_scoped_to_a_road_are_the_ones_on_it(campus, registry):
     held(campus, registry, Fixed(call("remove_assets", assets=parked)), "clear every car off Campus Drive")
     applied(campus, registry, Fixed(call("place_asset", asset="suv_1", location={"relation": "in_lane", "target": "main_westbound"})),
             "leave the SUV parked up on Main Street")
+
+
+def test_a_question_mark_and_a_question_word_make_a_question_however_the_words_run(campus, registry):
+    session = applied(campus, registry, Fixed(call("find_assets", category="bench")), "that bench — where? exact spot pls")
+    assert session.scene == campus
