@@ -178,6 +178,8 @@ class Verdict:
 
 # A thing said to be on its way somewhere: "a bus going east", "a truck heading north".
 _HEADING = re.compile(r"\b(?:going|heading|cruising)(?= (?:to |towards? )?(?:the )?(?:north|south|east|west))")
+# A distance asked between two things named: "how far is the library from the gate".
+_HOW_FAR_FROM = re.compile(r"\bhow far (?:away )?(?:is|are|'s)\s+(?P<a>[^?.,;]+?)\s+from\s+(?P<b>[^?.,;]+)")
 # Going on foot, said of a thing: only what moves by itself can ("make the bin stroll off").
 _WALK_VERB = re.compile(r"\b(?:walk|walks|walking|walked|stroll\w*|wander\w*|march\w*|jog\w*|hop\w*|waddl\w*)\b")
 # Words that ask a thing to drive or ride.
@@ -310,7 +312,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked about the weather or the time, but the plan looks up something else")
     from_ego = any(c.tool == "measure_distance" and "ego" in (c.args.get("a"), c.args.get("b")) for c in effect.calls)
     two_ends = re.search(r"\b(?:from|between|and)\b", request.masked)  # "how far is X from Y": neither is the asker
-    named_ends = FROM_TO.search(request.masked) or BETWEEN.search(request.masked)  # "I'll walk from the stop to the fountain"
+    # "I'll walk from the stop to the fountain", "how far is the library from the gate? we ..."
+    named_ends = FROM_TO.search(request.masked) or BETWEEN.search(request.masked) or _HOW_FAR_FROM.search(request.masked)
     ends_not_ego = named_ends is not None and not any(re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", end)
                                                      for end in named_ends.groupdict().values())
     if from_ego and two_ends and (ends_not_ego or not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked)):
@@ -481,7 +484,8 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     out += place_moved(request.low, scope, scene)
     out += unnamed_compass_places(request.low, scene)
     out += place_dropped(request.low, effect.calls)
-    out += unknown_things(request.masked, effect.calls, scene)
+    out += unknown_things(request.masked, effect.calls, scene, answered=request.question and bool(scope.calls)
+                          and all(c.tool in QUERY_TOOLS for c in scope.calls))
     out += picked_but_other(request.masked, scope, scene)
     out += numbered_passed_over(request.masked, scope, scene)
     if request.place is None and not request.question:

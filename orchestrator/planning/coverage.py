@@ -758,11 +758,13 @@ _THING_WANTED = re.compile(
 _AND_A_THING = re.compile(r"\band\s+(?:a|an|some|two|three|four|five|\d+)\s+((?:[a-z][a-z-]*\s+){0,3}?[a-z]+)" + _THING_WANTED.pattern[_THING_WANTED.pattern.index("(?=\\s*(?:$"):])
 
 
-def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
+def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene, answered: bool = False) -> list[str]:
     """Things asked for that this world has no word for ("add a giraffe", "a mailbox next to the
     bench") and that no call adds: a plan that does something else instead is not what was meant.
     The thing is the phrase's last word ("a double rainbow" is a rainbow); a word that only
-    describes a known thing ("a shiny bench") is not one; the words were spelling-repaired already."""
+    describes a known thing ("a shiny bench") is not one; the words were spelling-repaired already.
+    `answered`: the request is a question the plan only answers, so what the asker says they need
+    is their story, not a thing asked for (a thing asked about still counts)."""
     vocab = vocabulary(scene)
     said = set(re.findall(r"[a-z]+", " ".join(str(v) for c in calls for k, v in c.args.items()
                                                if k in ("category", "categories", "asset", "assets", "kind")).lower()))
@@ -777,7 +779,8 @@ def unknown_things(masked: str, calls: tuple[ToolCall, ...], scene: Scene) -> li
         if not is_known(m.group(1), vocab) and m.group(1) not in said and m.group(1) not in lx.GRAMMAR \
                 and not PLACE_KIND.fullmatch(m.group(1)):  # "the nearest landmark": a place, not a thing
             out.append(f"there is no {m.group(1)!r} in this world")
-    wanted = list(_THING_WANTED.finditer(masked))
+    # a question the plan only answers: what the asker needs is their story ("... need an eta for the crew")
+    wanted = [] if answered else list(_THING_WANTED.finditer(masked))
     if wanted:  # "add a van at the gate and a crew member beside it": the second thing is asked for too
         wanted += [m for m in _AND_A_THING.finditer(masked, wanted[0].end())]
     for m in wanted:

@@ -244,3 +244,10 @@ def test_things_scoped_to_a_road_are_the_ones_on_it(campus, registry):
 def test_a_question_mark_and_a_question_word_make_a_question_however_the_words_run(campus, registry):
     session = applied(campus, registry, Fixed(call("find_assets", category="bench")), "that bench — where? exact spot pls")
     assert session.scene == campus
+
+
+def test_what_the_asker_needs_is_their_story_not_a_thing_asked_for(campus, registry):
+    applied(campus, registry, Fixed(call("measure_distance", a="bus stop", b="Library entrance")),
+            "how far from the bus stop to the Library entrance? we need a rota for the walk")
+    held(campus, registry, Fixed(call("measure_distance", a="Library entrance", b="ego")),
+         "how far is the Library from the east gate? we need a rota for the walk")
