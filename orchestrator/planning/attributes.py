@@ -18,7 +18,7 @@ from collections.abc import Iterable
 
 import numpy as np
 from drivetwin.orchestrator.planning.coverage import named_in
-from drivetwin.orchestrator.planning.intent import FEWER_WORDS
+from drivetwin.orchestrator.planning.intent import FEWER_WORDS, WEATHER_HEDGED
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import numbers as nb
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -47,10 +47,7 @@ _SIDE = re.compile(r"\b(in front of|ahead of|behind)\s+(?:the\s+|our\s+)?([a-z0-
 MIN_SIDE_M = 1.0
 _EGO_WORDS = ("ego", "us", "me", "ego_vehicle", "ego_car", "car_under_test")
 # Weather strength: words that ask for little or for much, and where the tool's scale splits.
-_WEATHER_WORD = r"(?:rain\w*|snow\w*|fog\w*|drizzl\w*|showers?|mist\w*|cloud\w*|overcast)"
-_HEDGE = r"(?:a\s?bit|a little|a touch|slightly|somewhat|mildly|just a bit|a tad|(?:not|no)\s+(?:too\s+|so\s+|very\s+)?much)"
-_LIGHT = re.compile(rf"\b(light|gentle|slight|soft|a bit of|a little)\s+(rain|snow|fog|drizzle|shower|mist)|\bdrizzl"
-                    rf"|\b{_HEDGE}\s+(?:of\s+)?{_WEATHER_WORD}|\b{_WEATHER_WORD}[\s,]+(?:\w+[\s,]+){{0,3}}?{_HEDGE}(?!\s+(?:more|harder|heavier|stronger|thicker))\b")
+_LIGHT = re.compile(rf"\b(light|gentle|slight|soft|a bit of|a little)\s+(rain|snow|fog|drizzle|shower|mist)|\bdrizzl|{WEATHER_HEDGED.pattern}")
 _HEAVY = re.compile(r"\b(heavy|hard|strong|thick|dense|torrential|pouring|downpour|blizzard)\b")
 STRENGTH_SPLIT = 0.5
 # Words that ask for a look change when a colour is named ("paint the bus red", "make it blue").

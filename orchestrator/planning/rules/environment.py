@@ -11,6 +11,7 @@ import re
 from dataclasses import replace
 from typing import Any
 
+from drivetwin.orchestrator.planning.intent import WEATHER_HEDGED
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import NUMBER, parse
@@ -87,7 +88,8 @@ def weather(r: Reading) -> ToolCall | None:
                 # "fog, light intensity", "low intensity rain": the strength said as such
                 denied = denied or re.search(r"\b(?:light|low|weak|gentle|mild)\s+(?:intens|strength|level)", r.low)
                 heavy = (r.has(lx.HEAVY) or re.search(r"[a-z]storm\b", r.low) is not None) and denied is None  # "a snowstorm"
-                light = denied is not None or (r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT)))
+                light = denied is not None or (r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT))) \
+                    or WEATHER_HEDGED.search(r.low) is not None  # "a bit cloudy", "a touch of fog": the check's own reading
                 args["intensity"] = HEAVY_INTENSITY if heavy else LIGHT_INTENSITY if light else DEFAULT_INTENSITY
                 said = _INTENSITY.search(r.low)
                 bare = re.search(rf"\b(?:{words})\s*(?:=|:)?\s*(0?\.\d+|1\.0*|0|1)(?![\d.:]|\s*(?:m\b|%|am\b|pm\b|h\b))", r.low)
