@@ -59,7 +59,7 @@ def unanswered(request: Request, calls: Sequence[ToolCall], scene: Scene) -> lis
         out.append("you asked what is on the road, but the plan does not look at what stands on the lanes")
     out += _describes_another(request, calls, scene)
     if all(c.tool == "find_assets" and not c.args for c in calls) and not _EVERYTHING.search(low) \
-            and len(request.categories) < 2:  # "n_street_lights=?, n_trees=?": one list answers both
+            and len({m.category for m in ph.find_categories(low.replace("_", " "))}) < 2:  # "n_street_lights=?, n_trees=?": one list answers both
         # "current scenario time?" read as a list of every asset: what was asked is not in it
         out.append("you asked about something in particular, but the plan lists everything in the scene")
     seconds = [found[0] for found in _SECOND_PART.findall(low)]
