@@ -683,8 +683,8 @@ class RulePlanner:
         # plans with a clause unread and a word unknown were 11 wrong edits and 5 right)
         telling = [clause for clause in skipped if not re.search(rf"{re.escape(clause.strip())}\s*:", text)
                    and (_unknown_words(clause, scene) or _SAYS_WHERE.search(clause.lower()))]
-        edits = any(context.registry.get(c.tool).family != "search" for c in calls)  # a question's story is no part of what to do
-        if dropped is None and telling and unknown and not from_statement and edits:
+        changes = any(context.registry.get(c.tool).family != "search" for c in calls)  # a question's story is no part of what to do
+        if dropped is None and telling and unknown and not from_statement and changes:
             dropped = telling[0]
         if calls and dropped is not None:  # "have the suv pull out and follow the ego": never the pulling out alone, silently
             step = TraceStep(level="rules", input=prompt, output=f"{describe(calls)}, but {dropped!r} not read; asking")
