@@ -520,7 +520,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
                 for place in centres if place not in served]
     out += wrong_layout(request.masked, effect.added)
     out += _layout_of_one(request.masked, effect.calls) + _layout_of_the_place(request, effect.calls, scene)
-    out += _off_the_road_named(request, effect, scene)
+    out += _off_the_road_named(request, effect, scene) + _light_painted(request, effect.calls, scene)
     # around what the layout names ("around the tree just north of lot A"), else the place named
     ringed = [str(c.args["location"]["target"]) for c in effect.calls if c.tool == "arrange_assets"
               and isinstance(c.args.get("location"), dict) and c.args["location"].get("target")]
@@ -1106,6 +1106,21 @@ def _off_the_road_named(request: Request, effect: Effect, scene: Scene) -> list[
                                                        for a in (after, before))]
         if away:
             return [f"you said {lane_road}, but the plan acts on {_names(away)} away from it"]
+    return []
+
+
+# A traffic light's red or green said as what it shows: "stay on red", "turn green", "held at red".
+_LIGHT_SHOWS = re.compile(r"\b(?:on|stay\w*|go(?:es)?|turn\w*|stuck (?:on|at)|hold\w*|held (?:on|at)|show\w*|at)\s+(?:red|green|amber|yellow)\b")
+
+
+def _light_painted(request: Request, calls: tuple[ToolCall, ...], scene: Scene) -> list[str]:
+    """A traffic light painted red or green where the words ask what it shows ("could the light just stay
+    on red"): that is its phase over time (set_light_phases), not the colour of its housing."""
+    painted = [str(i) for c in calls if c.tool == "set_asset_appearance" and str(c.args.get("colour")) in ("red", "green", "amber", "yellow")
+               for i in [*c.args.get("assets", []), c.args.get("asset")] if i and (a := scene.asset(str(i))) is not None
+               and a.category == "traffic_light"]
+    if painted and _LIGHT_SHOWS.search(request.low):
+        return [f"you asked what {', '.join(painted)} shows, which is its phase over time, but the plan paints it"]
     return []
 
 

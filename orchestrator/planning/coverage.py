@@ -557,7 +557,7 @@ def _half_of(hour: int) -> str | None:
 def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> list[str]:
     """A plural or bare category ("remove cones", "get rid of pedestrian") of which the plan
     removes only some, with no number, place or state in the request to say which."""
-    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some of|one of|a few|half|a couple|a pair|several|a handful)\b", masked):
+    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some of|(?<!every )(?<!each )one of|a few|half|a couple|a pair|several|a handful)\b", masked):
         return []
     out = []
     for m in named_in(masked):
@@ -569,6 +569,14 @@ def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> l
         there = scene.count(m.category)
         if 0 < gone < there:
             out.append(f"you named {m.category.replace('_', ' ')}s, but the plan removes {gone} of the {there}")
+    for word, members in md.groups_said(masked).items():  # "get rid of all the signs": every kind called a sign
+        if not re.search(rf"\b(?:all|every|each)(?:\s+one)?\s+(?:of\s+)?(?:the\s+|those\s+|these\s+)?(?:\w+\s+)?{word}", masked):
+            continue
+        called = [c for c in members if word in c.split("_")] or list(members)  # a traffic light is no "sign" to most
+        gone = sum(1 for a in scope.removed if a.category in called)
+        there = sum(scene.count(c) for c in called)
+        if 0 < gone < there:
+            out.append(f"you said all the {word}s, but the plan removes {gone} of the {there}")
     return out
 
 

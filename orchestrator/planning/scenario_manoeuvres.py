@@ -72,7 +72,7 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
                      r"|\bdecelerat\w*|\bgo(?:es)? slower\b"),
     ("brake", r"\bbrak\w*|\bslam\w* on\b"),
     ("stop", r"\bbrak\w*|\bstop\w*|\bhalt\w*|\bslam\w*|\bcome\w* to a (?:stop|halt|standstill)\b"),
-    ("cross_road", r"\bcross(?:es|ed|ing)?\b(?! ?roads?| ?walks?)|\bcut(?:s|ting)? across\b|\bwalk\w* (?:out|across|into)\b|\bsteps? out\b|\b(?:run|runs|dart\w*) (?:out|across)\b"
+    ("cross_road", r"\bcross(?:es|ed|ing)?\b(?! ?roads?| ?walks?)|\bcut(?:s|ting)? across\b|\bwalk\w* (?:straight |right |just )?(?:out|across|into)\b|\bsteps? (?:straight |right |just )?out\b|\b(?:run|runs|dart\w*) (?:straight |right |just )?(?:out|across)\b"
                    r"|\bjaywalk\w*"),
     ("keep_lane", r"\b(?:keep\w* (?:its|their|the) lane|driv\w* on|cruis\w*)\b"),
 )

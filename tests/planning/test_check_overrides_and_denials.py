@@ -251,3 +251,25 @@ def test_what_the_asker_needs_is_their_story_not_a_thing_asked_for(campus, regis
             "how far from the bus stop to the Library entrance? we need a rota for the walk")
     held(campus, registry, Fixed(call("measure_distance", a="Library entrance", b="ego")),
          "how far is the Library from the east gate? we need a rota for the walk")
+
+
+def test_all_of_a_group_is_every_kind_called_so(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    assert session.submit("put a parking sign at the lot A entrance").ok
+    session.planner = Fixed(call("remove_assets", assets=["parking_sign_1"]))
+    before = session.scene
+    report = session.submit("take away every one of the signs, please")
+    assert not report.ok and session.scene == before  # the stop sign is a sign too
+
+
+def test_a_traffic_light_asked_to_show_red_is_not_painted(campus, registry):
+    light = next(a.id for a in campus.assets if a.category == "traffic_light")
+    held(campus, registry, Fixed(call("set_asset_appearance", assets=[light], colour="red")),
+         "keep that signal stuck on red for the whole run")
+    applied(campus, registry, Fixed(call("set_asset_appearance", assets=[light], colour="green")), f"paint {light} green")
+
+
+def test_walking_straight_out_in_front_of_the_ego_is_a_crossing_over_time(campus):
+    from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
+
+    assert describes_behaviour_over_time("then the walker should step right out in front of the ego", campus)
