@@ -365,7 +365,8 @@ def denied_set(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
 
 
 def describe_setting(call: ToolCall) -> str:
-    """What a weather or look call sets, in words ("the weather clear", "the colour red")."""
+    """What a weather, behaviour or look call sets, in words ("the weather clear", "the behaviour
+    circle", "the colour red")."""
     if call.tool == "set_weather":
         return f"the weather {call.args.get('kind')}"
     if isinstance(behaviour := call.args.get("behaviour"), dict):
