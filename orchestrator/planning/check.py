@@ -12,7 +12,6 @@ understand and what it can do.
 
 from __future__ import annotations
 
-import itertools
 import math
 import re
 from collections import Counter
@@ -221,20 +220,20 @@ def dry_run(plan_calls: list[ToolCall], context: PlanContext) -> Effect | None:
 
 
 
-# Workers that set one thing outright (the time, an asset's place, look or behaviour): a second
-# call setting the same thing to something else undoes the first.
-_SETTERS = ("set_time_of_day", "set_weather", "place_asset", "set_behaviour", "set_asset_appearance")
+# Workers that set one thing outright (the time of day, an asset's behaviour or one of its looks): a
+# second call setting the same thing to something else undoes the first. (Not the weather nor a place:
+# "I can hardly see for the fog ... take the fog away" and "someone left their car across my drop-off,
+# shove it over to lot A" are read as the story's state, then the wish, and the last one is meant.)
+_SETTERS = ("set_time_of_day", "set_behaviour", "set_asset_appearance")
 
 
 def overridden(calls: tuple[ToolCall, ...] | list[ToolCall]) -> list[tuple[int, int]]:
     """Pairs (i, j) of calls where call j sets again what call i set, to something else, so that
     the request's first value is lost ("half four ... that time of the morning" read as 04:30 and
-    then "morning"). The same weather made stronger or lighter refines it ("foggy. Thick fog")."""
+    then "morning")."""
     def what(call: ToolCall) -> tuple[str, ...] | None:
         if call.tool not in _SETTERS:
             return None
-        if call.tool == "set_weather":
-            return (call.tool, str(call.args.get("kind")))  # another kind is another weather, judged below
         if call.tool == "set_time_of_day":
             return (call.tool,)
         asset = call.args.get("asset")
@@ -244,21 +243,15 @@ def overridden(calls: tuple[ToolCall, ...] | list[ToolCall]) -> list[tuple[int, 
         return (call.tool, asset, *looks) if call.tool == "set_asset_appearance" else (call.tool, asset)
 
     out = []
-    weathers = [i for i, c in enumerate(calls) if c.tool == "set_weather"]
-    for a, b in itertools.pairwise(weathers):
-        if calls[a].args.get("kind") not in ("clear", calls[b].args.get("kind")):
-            out.append((a, b))  # "rain ... snow": one weather at a time ("too sunny; overcast": clear, then cloud, is one)
     for j, later in enumerate(calls):
         key = what(later)
-        if key is None or later.tool == "set_weather":
+        if key is None:
             continue
         for i in range(j):
             if what(calls[i]) != key or calls[i].args == later.args:
                 continue
             if later.tool == "set_time_of_day" and _hours_apart(calls[i], later) <= SAME_TIME_H:
                 continue  # "a bit earlier ... dusk rather than dark": 19:00, then dusk, is one wish said twice
-            if later.tool == "place_asset" and any(c.tool == "place_asset" and c.args.get("asset") != key[1] for c in calls[i + 1 : j]):
-                continue  # "swap the bench and the bin": one stands aside while the other takes its place
             out.append((i, j))
     return out
 

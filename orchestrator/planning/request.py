@@ -92,8 +92,10 @@ class Request:
     excepted: tuple[str, ...] = ()  # what the request says it does not mean (", not the ego")
 
 
-# Words that ask: with a question mark anywhere, the request is a question.
+# Words that ask: in a sentence ending with a question mark, the request is a question, unless that
+# sentence asks for something to be done ("It's too dark to see where they're going. Can you brighten it?").
 _QUESTION_WORD = re.compile(r"\b(?:where|wheres|which|what|whats|how|hows|who|whose|when|why)\b")
+_ASKED_TO_DO = re.compile(r"\s*(?:\W*\w+\W+){0,3}?(?:can|could|would|will)\s+(?:you|we|i)\b")
 
 
 def read_request(prompt: str, scene: Scene) -> Request:
@@ -120,7 +122,8 @@ def read_request(prompt: str, scene: Scene) -> Request:
     lane = find_lane(scene, masked) if _LANE_WORDS.search(masked) else None
     # "🚒 hydrant where? coords pls", "lanes on campus drv?? and which way they go": a question mark and a
     # question word, with no command, ask however the words run
-    marked = "?" in low and _QUESTION_WORD.search(low) is not None and not commands(low)
+    marked = any(_QUESTION_WORD.search(sentence) and not commands(sentence) and not _ASKED_TO_DO.match(sentence)
+                 for sentence in re.findall(r"[^.!?]*\?", low))
     question = asks(low) or marked or (given is not None and not given.met)  # with no bus, whether there is one
     polarity: Literal["add", "remove"] | None = (
         "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None

@@ -42,15 +42,17 @@ def test_a_time_set_twice_asks_which_time_was_meant(campus, registry):
     assert [{"time": "05:15"}] in offered  # the clock time alone is one of the readings
 
 
-def test_a_thing_put_in_two_places_is_not_applied(campus, registry):
-    plan = Fixed(call("place_asset", asset="bench_1", location={"relation": "next_to", "target": "fountain"}),
-                 call("place_asset", asset="bench_1", location={"relation": "at", "target": "parking lot A"}))
-    held(campus, registry, plan, "that seat would suit the fountain better; shift it over")
+def test_a_thing_given_two_behaviours_is_not_applied(campus, registry):
+    plan = Fixed(call("set_behaviour", asset="suv_1", behaviour={"kind": "drive_lane"}),
+                 call("set_behaviour", asset="suv_1", behaviour={"kind": "circle", "centre": "parking lot B"}))
+    held(campus, registry, plan, "the SUV should get out on the road and get going")
 
 
-def test_the_same_weather_made_stronger_is_one_wish():
-    assert overridden([call("set_weather", kind="snow"), call("set_weather", kind="snow", intensity=0.9)]) == []
-    assert overridden([call("set_weather", kind="snow"), call("set_weather", kind="rain")]) == [(0, 1)]
+def test_what_a_story_states_then_the_wish_changes_is_no_conflict():
+    # the weather or the place a story states, then the one wished for: the last one is meant
+    assert overridden([call("set_weather", kind="fog"), call("set_weather", kind="clear")]) == []
+    assert overridden([call("place_asset", asset="bench_1", location={"relation": "at", "target": "fountain"}),
+                       call("place_asset", asset="bench_1", location={"relation": "at", "target": "parking lot A"})]) == []
     # a time said twice close together is one wish ("a bit earlier, dusk rather than dark")
     assert overridden([call("set_time_of_day", time="19:00"), call("set_time_of_day", time="dusk")]) == []
     # moves add up; only what sets a thing outright is undone by a second call
@@ -273,3 +275,8 @@ def test_walking_straight_out_in_front_of_the_ego_is_a_crossing_over_time(campus
     from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
 
     assert describes_behaviour_over_time("then the walker should step right out in front of the ego", campus)
+
+
+def test_a_question_word_in_a_sentence_that_asks_for_a_change_is_no_question(campus, registry):
+    session = applied(campus, registry, RulePlanner(), "We need to see where the kerb glows. Could you make it night?")
+    assert session.scene.environment.time_of_day != campus.environment.time_of_day
