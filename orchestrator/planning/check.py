@@ -1095,8 +1095,10 @@ def _off_the_road_named(request: Request, effect: Effect, scene: Scene) -> list[
         if not re.search(rf"\b(?:on|in|along|from|off|down|up)\s+(?:the\s+)?{name}\b|\baway(?:\s+\w+){{1,4}}\s+{name}\b", request.low):
             continue
         lines = [lane.centreline for lane in scene.roads.lanes if lane.road == lane_road]
-        away = [after for after, before in acted if all(min(nearest_on_polyline(a.pose.x, a.pose.y, line).distance for line in lines) > ON_ROAD_M
-                                                       for a in (after, before))]
+        ids = {lane.id for lane in scene.roads.lanes if lane.road == lane_road}
+        driving = {a.id for a, _ in acted if a.behaviour.kind == "drive_lane" and getattr(a.behaviour, "lane", None) in (None, *ids)}
+        away = [after for after, before in acted if after.id not in driving  # "follow the traffic on Main Street": its lane, or one to come
+                and all(min(nearest_on_polyline(a.pose.x, a.pose.y, line).distance for line in lines) > ON_ROAD_M for a in (after, before))]
         if away:
             return [f"you said {lane_road}, but the plan acts on {_names(away)} away from it"]
     return []

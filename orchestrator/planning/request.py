@@ -123,9 +123,10 @@ def read_request(prompt: str, scene: Scene) -> Request:
     # "🚒 hydrant where? coords pls", "lanes on campus drv?? and which way they go": a question mark and a
     # question word, with no command, ask however the words run
     # (one that opens on its question word is asks()' to judge: "how would the campus look at 7pm?" asks to see it)
-    marked = any(_QUESTION_WORD.search(sentence) and not _QUESTION_WORD.match(sentence.strip(" ,;:-—"))
-                 and not commands(sentence) and not _ASKED_TO_DO.match(sentence)
-                 for sentence in re.findall(r"[^.!?]*\?", low))
+    # (nor where another sentence gives a command: "who put a hydrant by the crossroads? get rid of it")
+    marked = not any(commands(part) for part in re.split(r"[.!?]+", low)) and any(
+        _QUESTION_WORD.search(sentence) and not _QUESTION_WORD.match(sentence.strip(" ,;:-—")) and not _ASKED_TO_DO.match(sentence)
+        for sentence in re.findall(r"[^.!?]*\?", low))
     question = asks(low) or marked or (given is not None and not given.met)  # with no bus, whether there is one
     polarity: Literal["add", "remove"] | None = (
         "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None
