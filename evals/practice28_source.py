@@ -81,6 +81,7 @@ from drivetwin.evals.practice_cases import (
     delta,
     does,
     drive,
+    ego_speed_between,
     env,
     environment,
     event,
@@ -105,6 +106,7 @@ from drivetwin.evals.practice_cases import (
     only,
     paint,
     place,
+    planned,
     properties,
     reach,
     reaches,
@@ -167,19 +169,6 @@ NERVOUS = "anxious first-time user who over-explains and apologises: 'sorry', 'I
 
 
 # --- Helpers ---------------------------------------------------------------------------------------------
-def planned(step: Json) -> Json:
-    """The same earlier turn, planned by the planner under test (its calls are only the reference)."""
-    return {**step, "planned": True}
-
-
-def ego_speed_between(lo: float, hi: float) -> list[list[Json]]:
-    """Fair readings of a new ego speed: its lane behaviour at that speed, or a change-of-speed manoeuvre."""
-    return [
-        [does("drive_lane", asset=EGO, speed_min=lo, speed_max=hi)],
-        [event_played(EGO, "change_speed", 3.0)],
-    ]
-
-
 def reversed_by(lo: float, hi: float) -> list[list[Json]]:
     """Fair readings of backing the ego up: a shift backwards, or a reverse manoeuvre."""
     return [[moved(EGO, lo, hi, "backward")], [event_played(EGO, "reverse", 3.0)]]

@@ -80,6 +80,7 @@ from drivetwin.evals.practice_cases import (
     count,
     delta,
     does,
+    ego_speed_between,
     env,
     environment,
     event,
@@ -104,6 +105,7 @@ from drivetwin.evals.practice_cases import (
     only,
     paint,
     place,
+    planned,
     properties,
     reach,
     reaches,
@@ -166,19 +168,6 @@ GERMAN = "German engineer writing very formally: 'it is requested that', 'shall 
 
 
 # --- Helpers ---------------------------------------------------------------------------------------------
-def planned(step: Json) -> Json:
-    """The same earlier turn, planned by the planner under test (its calls are only the reference)."""
-    return {**step, "planned": True}
-
-
-def ego_speed_between(lo: float, hi: float) -> list[list[Json]]:
-    """Fair readings of a new ego speed: its lane behaviour at that speed, or a change-of-speed manoeuvre."""
-    return [
-        [does("drive_lane", asset=EGO, speed_min=lo, speed_max=hi)],
-        [event_played(EGO, "change_speed", 3.0)],
-    ]
-
-
 def backed_up(asset: str, lo: float, hi: float) -> list[list[Json]]:
     """Fair readings of backing a vehicle up: a shift backwards, or a reverse manoeuvre."""
     return [[moved(asset, lo, hi, "backward")], [event_played(asset, "reverse", 3.0)]]

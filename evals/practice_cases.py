@@ -142,6 +142,11 @@ def turn(prompt: str, *calls: Json, planned: bool = False) -> Json:
     return out
 
 
+def planned(step: Json) -> Json:
+    """The same earlier turn, planned by the planner under test (its calls are only the reference)."""
+    return {**step, "planned": True}
+
+
 # --- Checks ------------------------------------------------------------------------------------
 def _selecting(
     kind: str,
@@ -370,6 +375,14 @@ def refused() -> Json:
 def event_played(actor: str, kind: str, seconds: float) -> Json:
     """The storyboard gives `actor` (an id or a category) a manoeuvre of `kind` that starts within `seconds`."""
     return {"kind": "scenario", "seconds": seconds, "expect": [{"kind": "event", "actor": actor, "manoeuvre": kind}]}
+
+
+def ego_speed_between(lo: float, hi: float) -> list[list[Json]]:
+    """Fair readings of a new ego speed: its lane behaviour at that speed, or a change-of-speed manoeuvre."""
+    return [
+        [does("drive_lane", asset=EGO, speed_min=lo, speed_max=hi)],
+        [event_played(EGO, "change_speed", 3.0)],
+    ]
 
 
 def stops_before(actor: str, x: float, y: float, seconds: float = 20.0) -> Json:

@@ -991,62 +991,113 @@ def _names_target(effect: Effect, place: str) -> bool:
 def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Reading]:
     """Readings built from the plan's own effect that fit the request better: the opposite
     polarity, only the assets at the place or of the state named, no edit for a question."""
-    out: list[Reading] = []
-    scene = context.scene
-    for i, j in overridden(effect.calls)[:1]:  # either of the two values said, the rest of the plan kept
+    return [reading for repair in _REPAIRS for reading in repair(request, effect, context.scene)]
+
+
+def _either_value(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """A time, behaviour or look set twice: either value said, the rest of the plan kept."""
+    out = []
+    for i, j in overridden(effect.calls)[:1]:
         for dropped in (j, i):
             calls = [c for k, c in enumerate(effect.calls) if k != dropped]
             out.append(Reading(text=describe(calls), calls=calls))
-    if (other := _outermost(request, effect, scene)) is not None:  # "only the north-east one": that one
-        picked = [_retargeted(c, other[0].category, {other[0].id}, [other[1].id]) for c in effect.calls]
-        kept = [c for c in picked if c is not None]
-        if len(kept) == len(picked):
-            out.append(Reading(text=describe(kept), calls=kept))
+    return out
+
+
+def _the_outermost(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """"only the north-east one": that one."""
+    if (other := _outermost(request, effect, scene)) is None:
+        return []
+    picked = [_retargeted(c, other[0].category, {other[0].id}, [other[1].id]) for c in effect.calls]
+    kept = [c for c in picked if c is not None]
+    return [Reading(text=describe(kept), calls=kept)] if len(kept) == len(picked) else []
+
+
+def _lamps_switched(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """The street lights switched as the words say ("exposure 1.5 and the street lights on": both)."""
     lamps = LAMPS_SWITCHED.search(request.low)
-    if lamps is not None and not any(c.tool == "set_lighting" and "street_lights" in c.args for c in effect.calls):
-        state = lamps.group("state") or lamps.group("state2")  # "exposure 1.5 and the street lights on": both
-        lit = [c.model_copy(update={"args": {**c.args, "street_lights": state}}) for c in effect.calls if c.tool == "set_lighting"]
-        calls = [*(c for c in effect.calls if c.tool != "set_lighting"), *(lit or [ToolCall(tool="set_lighting", args={"street_lights": state})])]
-        out.append(Reading(text=describe(calls), calls=calls))
-    if _layout_of_one(request.masked, effect.calls):  # as many as a layout takes
-        calls = [c.model_copy(update={"args": {k: v for k, v in c.args.items() if k != "count"}})
-                 if c.tool == "arrange_assets" and c.args.get("count") == 1 else c for c in effect.calls]
-        out.append(Reading(text=describe(calls), calls=calls))
-    if strength := weather_strength(request.low, effect.calls):  # "a bit cloudy" set as medium: the light one
-        intensity = LIGHT_INTENSITY if "light" in strength[0] else HEAVY_INTENSITY
-        calls = [c.model_copy(update={"args": {**c.args, "intensity": intensity}}) if c.tool == "set_weather" else c
-                 for c in effect.calls]
-        out.append(Reading(text=describe(calls), calls=calls))
-    if (way := md.compass_direction(request.masked)) is not None:  # "drive south": the road's lane going south
-        turned = [_lane_turned(c, way, scene) for c in effect.calls]
-        if turned != list(effect.calls):
-            out.append(Reading(text=describe(turned), calls=turned))
-    if request.question and effect.edits:
-        queries = [c for c in effect.calls if c.tool in QUERY_TOOLS]
-        if request.categories and not queries:
-            near = {"near": request.place} if request.place else {}
-            queries = [ToolCall(tool="find_assets", args={"category": sorted(request.categories)[0], **near})]
-        if queries:
-            out.append(Reading(text="only answer the question, change nothing", calls=queries))
+    if lamps is None or any(c.tool == "set_lighting" and "street_lights" in c.args for c in effect.calls):
+        return []
+    state = lamps.group("state") or lamps.group("state2")
+    lit = [c.model_copy(update={"args": {**c.args, "street_lights": state}}) for c in effect.calls if c.tool == "set_lighting"]
+    calls = [*(c for c in effect.calls if c.tool != "set_lighting"), *(lit or [ToolCall(tool="set_lighting", args={"street_lights": state})])]
+    return [Reading(text=describe(calls), calls=calls)]
+
+
+def _layout_in_full(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """A layout of one where a layout is said: as many as the layout takes."""
+    if not _layout_of_one(request.masked, effect.calls):
+        return []
+    calls = [c.model_copy(update={"args": {k: v for k, v in c.args.items() if k != "count"}})
+             if c.tool == "arrange_assets" and c.args.get("count") == 1 else c for c in effect.calls]
+    return [Reading(text=describe(calls), calls=calls)]
+
+
+def _weather_as_strong_as_said(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """"a bit cloudy" set as medium: the light one."""
+    if not (strength := weather_strength(request.low, effect.calls)):
+        return []
+    intensity = LIGHT_INTENSITY if "light" in strength[0] else HEAVY_INTENSITY
+    calls = [c.model_copy(update={"args": {**c.args, "intensity": intensity}}) if c.tool == "set_weather" else c
+             for c in effect.calls]
+    return [Reading(text=describe(calls), calls=calls)]
+
+
+def _lane_the_way_said(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """"drive south": the road's lane going south."""
+    if (way := md.compass_direction(request.masked)) is None:
+        return []
+    turned = [_lane_turned(c, way, scene) for c in effect.calls]
+    return [Reading(text=describe(turned), calls=turned)] if turned != list(effect.calls) else []
+
+
+def _only_the_answer(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """A question that edits: its lookups alone, or one of the kind it names."""
+    if not (request.question and effect.edits):
+        return []
+    queries = [c for c in effect.calls if c.tool in QUERY_TOOLS]
+    if request.categories and not queries:
+        near = {"near": request.place} if request.place else {}
+        queries = [ToolCall(tool="find_assets", args={"category": sorted(request.categories)[0], **near})]
+    return [Reading(text="only answer the question, change nothing", calls=queries)] if queries else []
+
+
+def _the_other_polarity(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """Each addition turned into a removal of that kind (the rest of the plan kept), or a removal
+    into an addition."""
     if request.polarity == "remove" and effect.added:
-        # Each addition turned into a removal of that kind, the rest of the plan kept.
         flipped = [_removal(c, request, scene) if c.tool == "add_asset" else c for c in effect.calls]
         if flipped != list(effect.calls) and all(flipped):
             calls = [c for c in flipped if c is not None]
-            out.append(Reading(text=describe(calls), calls=calls))
+            return [Reading(text=describe(calls), calls=calls)]
     if request.polarity == "add" and effect.removed and not effect.added:
         category = sorted(request.categories)[0] if request.categories else effect.removed[0].category
-        out.append(Reading(text=f"add a {category.replace('_', ' ')}", calls=[
-            ToolCall(tool="add_asset", args={"category": category, "count": 1})]))
+        return [Reading(text=f"add a {category.replace('_', ' ')}", calls=[
+            ToolCall(tool="add_asset", args={"category": category, "count": 1})])]
+    return []
+
+
+def _a_new_one_there(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """A thing of the kind asked for moved where a new one was meant: a new one there."""
     fresh = [ToolCall(tool="add_asset", args={"category": asset.category, "count": 1, "location": c.args["location"]})
              for c in effect.calls if c.tool == "place_asset" and "location" in c.args
              and (asset := scene.asset(str(c.args.get("asset")))) is not None and asset.category in request.categories]
-    if fresh and not effect.added:
-        out.append(Reading(text=describe(fresh), calls=fresh))
-    if request.excepted and (spared := _sparing(effect, excepted_ids(request.excepted, _kinds_named(request), scene, without_contrast(request.low)))):
-        out.append(Reading(text=describe(spared), calls=spared))
+    return [Reading(text=describe(fresh), calls=fresh)] if fresh and not effect.added else []
+
+
+def _sparing_the_excepted(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """"every car except the SUV": the plan without it."""
+    if request.excepted and (spared := _sparing(effect, excepted_ids(request.excepted, _kinds_named(request), scene,
+                                                                      without_contrast(request.low)))):
+        return [Reading(text=describe(spared), calls=spared)]
+    return []
+
+
+def _only_where_said(request: Request, effect: Effect, scene: Scene) -> list[Reading]:
+    """Removals kept to the one by the thing named, or to the place or state named."""
+    out = []
     for _, category, meant in [] if request.question else picked_by_thing(request.masked, scene):
-        if any(a.category == category and a.id not in meant for a in effect.removed):  # the one by the thing named
+        if any(a.category == category and a.id not in meant for a in effect.removed):
             out.append(Reading(text="remove " + ", ".join(sorted(meant)), calls=[
                 ToolCall(tool="remove_assets", args={"assets": sorted(meant)})]))
     if effect.removed and (request.place or request.state):
@@ -1057,6 +1108,13 @@ def repairs(request: Request, effect: Effect, context: PlanContext) -> list[Read
             out.append(Reading(text="remove only " + ", ".join(keep), calls=[
                 ToolCall(tool="remove_assets", args={"assets": keep})]))
     return out
+
+
+# Each builds readings from the plan's effect; they are offered in this order.
+_REPAIRS: tuple[Callable[[Request, Effect, Scene], list[Reading]], ...] = (
+    _either_value, _the_outermost, _lamps_switched, _layout_in_full, _weather_as_strong_as_said, _lane_the_way_said,
+    _only_the_answer, _the_other_polarity, _a_new_one_there, _sparing_the_excepted, _only_where_said,
+)
 
 
 def _lane_turned(call: ToolCall, way: str, scene: Scene) -> ToolCall:

@@ -1,6 +1,6 @@
 """Clock times as people say them: "18:30", "6.15 pm", "7 o'clock", "half past ten at night",
-"half seven" (British), "quarter to seven", "twenty past six in the evening", "midnight",
-"nine in the evening", "set the clock to 9".
+"half seven" (British), "quarter to seven", "twenty past six in the evening", "six thirty in the
+evening", "midnight", "nine in the evening", "set the clock to 9".
 
 One reader for the rule planner (which sets the time) and the plan check (which compares the
 time a plan sets with the one the words name), so the two cannot disagree about what a
@@ -40,6 +40,12 @@ _NEAR_NAMED = re.compile(rf"\b(?P<said>half|(?:a )?quarter|{_HOUR}(?: minutes)?)
 # "18.30" without a suffix is a clock time only when the sentence is about time.
 _TIME_TOPIC = re.compile(r"\b(time|clock)\b")
 _WORD_HOURS = "|".join(sorted((w for w, n in _WORD_NUMBERS.items() if n <= 12), key=len, reverse=True))
+# "six thirty", "seven fifteen", "ten oh five": the hour and then its minutes, as a digital clock is read aloud
+# (a time only where the words say which half of the day it is in, or talk of the time: never "six twenty-metre poles").
+_MINUTE_WORDS = {"oh five": 5, "ten": 10, "fifteen": 15, "twenty": 20, "twenty-five": 25, "twenty five": 25, "thirty": 30,
+                 "thirty-five": 35, "thirty five": 35, "forty": 40, "forty-five": 45, "forty five": 45, "fifty": 50,
+                 "fifty-five": 55, "fifty five": 55}
+_READ_ALOUD = re.compile(rf"\b({_WORD_HOURS}) ({'|'.join(sorted(_MINUTE_WORDS, key=len, reverse=True))})\b(?![- ](?:metres?|m\b|minutes?))")
 # An hour said in words with what makes it a time: "nine o'clock", "seven pm", "nine in the evening".
 _WORD_CLOCK = re.compile(rf"\b({_WORD_HOURS})(?=\s*(?:o'?\s?clock|am\b|pm\b|a\.m\.|p\.m\.|in the (?:morning|afternoon|evening)\b|at night\b|tonight\b))")
 # A bare hour the clock is set to: "set the time to 9", "the clock at nine", "time: 18".
@@ -91,6 +97,13 @@ def _in_half_of_day(hour: int, after: str, said: str = "", o_clock: bool = False
     return hour
 
 
+def half_of_day_said(text: str, time: ClockTime) -> bool:
+    """Whether the words say which half of the day `time` is in ("six thirty in the evening", "7 pm"): a
+    time however the sentence round it runs ("I'll test around 6 pm")."""
+    after = text[time.end :]
+    return bool(_AFTERNOON.match(after) or _MORNING.match(after) or re.search(r"(?:am|pm|a\.m\.|p\.m\.)$", time.text))
+
+
 def clock_time(text: str) -> ClockTime | None:
     """The clock time `text` names, or None. Lower-case input is expected."""
     for name, (hour, minute) in _NAMED.items():
@@ -116,6 +129,11 @@ def clock_time(text: str) -> ClockTime | None:
     if half is not None and _number(half.group(1)) <= 12:
         hour = _in_half_of_day(_number(half.group(1)), text[half.end():], text)
         return ClockTime(hour, 30, half.group(0), *half.span())
+    aloud = _READ_ALOUD.search(text)
+    if aloud is not None and (_AFTERNOON.match(text[aloud.end():]) or _MORNING.match(text[aloud.end():])
+                              or _TIME_TOPIC.search(text) or _LATER_IN_DAY.search(text)):
+        hour = _in_half_of_day(_number(aloud.group(1)), text[aloud.end():], text)
+        return ClockTime(hour, _MINUTE_WORDS[aloud.group(2)], aloud.group(0), *aloud.span())
     military = next((m for m in _MILITARY.finditer(text) if m.group("set") or m.group("hours")), None)
     if military is not None:  # "set the time to 0630", "0300 hours"
         return ClockTime(int(military.group("hour")), int(military.group("minute")), military.group(0).strip(), *military.span())

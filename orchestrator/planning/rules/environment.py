@@ -13,7 +13,7 @@ from typing import Any
 
 from drivetwin.orchestrator.planning.intent import WEATHER_HEDGED
 from drivetwin.orchestrator.planning.rules import lexicon as lx
-from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.clock import clock_time, half_of_day_said
 from drivetwin.orchestrator.planning.rules.numbers import NUMBER, parse
 from drivetwin.orchestrator.planning.rules.reading import Reading
 from drivetwin.tools.appearance import TIME_PRESETS
@@ -124,7 +124,7 @@ def time_of_day(r: Reading) -> ToolCall | None:
         r = replace(r, low=blank, masked=_TIME_DENIED.sub(lambda m: " " * len(m.group(0)), r.masked))
     said = clock_time(r.masked)
     # "06:15, overcast": hours and minutes written with a colon are a clock time whatever the words round them
-    if said is not None and (r.has(("time", "make it", "set", "at", "clock", "change", "to", "past"))
+    if said is not None and (r.has(("time", "make it", "set", "at", "clock", "change", "to", "past")) or half_of_day_said(r.masked, said)
                              or re.fullmatch(r"\d{1,2}:\d{2}(?:\s*(?:am|pm|hrs|hours|h))?", said.text.strip())):
         return ToolCall(tool="set_time_of_day", args={"time": str(said)})  # the tool refuses "25:70"
     if r.has(("lunchtime", "lunch time", "lunch")):

@@ -152,6 +152,19 @@ def spelt_measures(text: str) -> str:
 
 # A speed said as a person's pace: "at walking pace" is 1.4 m/s (5 km/h), a jog 2.5, a run 3.5.
 _PACE_MS = {"walking": 1.4, "walk": 1.4, "jogging": 2.5, "jog": 2.5, "running": 3.5, "run": 3.5}
+# A decimal comma ("4,5 m", "exposure 1,5"): one or two figures after it, with a unit or a setting's name (a pair
+# of figures alone, "cones at 10,5", may be coordinates and stays two numbers; "10,000" is ten thousand).
+_DECIMAL_COMMA = re.compile(r"(?<![\d,])(\d+),(\d{1,2})(?=\s*(?:m\b|metres?\b|meters?\b|m/s|km/?h\b|kph|mph|s\b|secs?\b|seconds?\b|"
+                            r"hours?\b|h\b|degrees?\b|deg\b|%))", re.IGNORECASE)
+_SETTING_DECIMAL = re.compile(r"\b((?:exposure|brightness|intensity|speed)\s*(?:(?:to|=|of|at|:)\s*)?)(\d+),(\d{1,2})\b(?![,.]?\d)",
+                              re.IGNORECASE)
+
+
+def decimal_points(text: str) -> str:
+    """`text` with each decimal comma written as a point, as every reader of amounts expects."""
+    return _SETTING_DECIMAL.sub(r"\1\2.\3", _DECIMAL_COMMA.sub(r"\1.\2", text))
+
+
 _PACE = re.compile(r"\b(?:a\s+)?(walking|walk|jogging|jog|running|run)(?:ning)?\s+(?:pace|speed)\b", re.IGNORECASE)
 
 

@@ -113,8 +113,9 @@ GUESS_PENALTY = 0.2
 MIN_CONFIDENCE = 0.05
 
 # Clause breaks: a stop or colon between digits is part of a number or a clock time ("2.5 m",
-# "18:30"), not a break; nor is "then" after "who" ("a man who then walks to the bench": one thing).
-_SPLIT = re.compile(r"((?:[;!?\n]|(?<!\d)[.:]|[.:](?!\d))+|(?<!\bwho),?\s+(?:and then|then|and also|after that)\s+)")
+# "18:30"), not a break; nor is "then" after "who" ("a man who then walks to the bench": one thing). "Then" said
+# formally ("and subsequently", "afterwards") breaks as "then" does.
+_SPLIT = re.compile(r"((?:[;!?\n]|(?<!\d)[.:]|[.:](?!\d))+|(?<!\bwho),?\s+(?:and then|then|and also|(?:and )?after that|(?:and )?(?:subsequently|afterwards?))\s+)")
 _VERBS = (
     "add",
     "make",

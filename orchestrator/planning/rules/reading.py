@@ -382,13 +382,10 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
     """Assets named by category and number or ordinal: "car 2", "car two", "the second car"."""
     ids: list[str] = []
     rest: list[ph.Mention] = []
+    picks = numbered_picks(scene, low)
     for mention in mentions:
-        after = [w for w in low[mention.end :].split()[:2] if w not in ("number", "no.", "#", "nr")][:1]  # "car number 2"
         before = low[: mention.start].split()[-2:]
-        number: int | None = None
-        if after and (after[0].isdigit() or after[0] in ph.NUMBER_WORDS) and after[0] not in ("a", "an") \
-                and before[-1:] != ["as"]:  # "mark the SUV as vehicle 2": a label it is given, no other vehicle
-            number = int(after[0]) if after[0].isdigit() else ph.NUMBER_WORDS[after[0]]
+        picked = next((ident for ident, start, _ in picks if mention.start <= start < mention.end), None)
         present = sorted(
             (a for a in scene.assets if a.category == mention.category),
             key=lambda a: int(a.id.rsplit("_", 1)[-1]) if a.id.rsplit("_", 1)[-1].isdigit() else 0,
@@ -404,8 +401,8 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
             present = _at_named_place(scene, low, present) or present
         if before[-1:] == ["middle"] or _IN_THE_MIDDLE.match(low[mention.end :]):  # "the car in the middle of the row"
             ids.append(_middle_of_row(scene, low, mention).id)
-        elif number is not None and scene.asset(f"{mention.category}_{number}") is not None:
-            ids.append(f"{mention.category}_{number}")
+        elif picked is not None:
+            ids.append(picked)
         elif ordinal is not None and present and -1 <= ordinal <= len(present) and ordinal != 0:
             ids.append(present[ordinal - 1 if ordinal > 0 else -1].id)
         else:

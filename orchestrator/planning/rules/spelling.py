@@ -21,7 +21,7 @@ from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import CLOCK_WORDS
 from drivetwin.orchestrator.planning.rules.inflection import forms
 from drivetwin.orchestrator.planning.rules.modifiers import MATERIAL_WORDS
-from drivetwin.orchestrator.planning.rules.numbers import UNIT_WORDS, spelt_measures
+from drivetwin.orchestrator.planning.rules.numbers import UNIT_WORDS, decimal_points, spelt_measures
 from drivetwin.orchestrator.planning.rules.reading import ONCOMING_WORDS
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
@@ -843,6 +843,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _DOTTED_MERIDIEM.sub(lambda m: f"{m.group(1).lower()}m", text)  # "8 a.m. and ...": 8 am
     text = _ROUGHLY.sub(r"about \1", text)  # "cones round the rubble, six-ish": about six
     text = _ONE_MORE.sub("another", text)  # before "a second" is read as a measure of time
+    text = decimal_points(text)  # "4,5 m": four and a half metres
     text = spelt_measures(_NUMBER_SLIP.sub(lambda m: _NUMBER_SLIPS[m.group(1).lower()], _sound_alikes(text)))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
