@@ -39,6 +39,7 @@ from drivetwin.evals import (
     practice27_source,
     practice28_source,
     practice29_source,
+    practice30_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -117,6 +118,8 @@ BRIEFS: dict[str, Brief] = {
     "practice28": Brief(320, 11, 11, practice28_source, multi_turn=40, planned=20, compound=20),
     # Eight everyday voices: field-trip teacher, race fan, Japanese speaker, architect, night-shift tester, grandparent, courier, German.
     "practice29": Brief(320, 11, 11, practice29_source, multi_turn=40, planned=20, compound=20),
+    # Eight voices: Indian-English administrator, dictation user, gamer, cyclist, estates manager, lawyer, child, AV engineer.
+    "practice30": Brief(320, 11, 11, practice30_source, multi_turn=40, planned=20, compound=20),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
