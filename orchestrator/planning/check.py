@@ -396,6 +396,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += wrong_lane_way(request.masked, scene, [*effect.added, *effect.changed])
     out += _wrong_way_to(request, scene, _moved(effect))
     out += _not_the_extreme(request, effect, scene)
+    out += _moved_to_turn(request, effect)
     if (other := _outermost(request, effect, scene)) is not None:
         out.append(f"you picked one by where it stands, which is {other[1].id}, but the plan acts on {other[0].id}")
     out += _not_between(request, scene, [*effect.added, *_moved(effect)])
@@ -909,6 +910,20 @@ def _wrong_way_to(request: Request, scene: Scene, moved: list[AssetInstance]) ->
 
 
 _FACE_SAID = re.compile(r"\bfac(?:e|es|ing)\b|\bpoint(?:s|ed|ing)?\b(?=[^,.;]*\b(?:at|towards?)\b)")
+# A thing turned to face a way where it stands: "orient the bench towards the fountain", "angle the camera car at the
+# gate", "turn the SUV to face the road" (the words after say which way, never where to).
+_TURNED_TOWARD = re.compile(r"\b(?:orient\w*|turn|turns|turned|rotate[sd]?|angle[sd]?|swivel\w*|spin)\b(?P<way>[^,.;]*?\b(?:towards?|to face|at)\b)")
+_MOVE_SAID = re.compile(r"\b(?:" + "|".join(re.escape(w) for w in lx.MOVE_WORDS) + r")\b")
+
+
+def _moved_to_turn(request: Request, effect: Effect) -> list[str]:
+    """Things carried off where the words only turn them to face a place ("orient the bench towards
+    the fountain" never puts the bench in the fountain)."""
+    turned = _TURNED_TOWARD.search(request.low)
+    if turned is None or _MOVE_SAID.search(request.low):
+        return []
+    far = [a for a in effect.changed if a.id != "ego" and _far_moved(a, effect) > SMALL_MOVE_M]
+    return [f"you asked to turn {_names(far)} to face a way where it stands, but the plan moves it"] if far else []
 
 
 # How far off the heading to a place a thing may point and still face it.

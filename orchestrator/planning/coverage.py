@@ -756,7 +756,8 @@ _LETTERED = re.compile(r"\b((?:parking )?lot|building|gate|hall|entrance|crosswa
 # A setting given a value by name: "set the weather to hail", "change the sky to purple".
 _SET_TO = re.compile(r"\b(?:set|change|switch)\b[^.,;:!?]*?\bto\s+(?:a\s+|an\s+|some\s+)?([a-z]+)\s*(?=$|[.,;:!?])")
 _THING_WANTED = re.compile(
-    r"\b(?:add|put|place|spawn|bring|drop|insert|create|want|need|needs|(?:we|i|you) have)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
+    r"\b(?:add|put|place|spawn|bring|drop|insert|create|build|install|erect|construct|set up|lay out|make (?:me|us)|"
+    r"give (?:me|us)|want|need|needs|(?:we|i|you) have)\s+(?:(?:a|an|the|some|one|more|another|few|couple|"
     r"of|\d+)\s+){0,3}((?:[a-z][a-z-]*\s+){0,3}?[a-z]+)(?=\s*(?:$|[,.;:!?]|\s(?:next|near|by|at|on|in|beside|behind|"
     r"between|along|across|over|under|above|below|beneath|opposite|past|beyond|against|within|after|before|outside|inside|"
     r"around|to|for|from|with|into|onto|and|or|so|that|which|who|"
