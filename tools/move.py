@@ -14,6 +14,7 @@ from typing import Literal
 
 from drivetwin.tools.along import driving_start, track_kind_for, tracks
 from drivetwin.tools.base import Tool, ToolArgs, ToolResult
+from drivetwin.tools.driving_route import driving_route
 from drivetwin.tools.errors import NotFoundError, RuleViolation, ToolArgumentError
 from drivetwin.tools.locate import Anchor, Location, find_free_pose, resolve_anchor, resolve_target
 from drivetwin.tools.rules import check_placement
@@ -229,7 +230,11 @@ def resolve_behaviour(
             pose = Pose(x=asset.pose.x, y=asset.pose.y, yaw=near.heading)
         return DriveLane(lane=lane.id, speed=spec.speed or min(5.0, lane.speed_limit)), pose
     if spec.kind == "follow_path":
-        waypoints = [(asset.pose.x, asset.pose.y), goal_of(scene, asset, spec.to)] if spec.to else spec.waypoints
+        waypoints: list[tuple[float, float]] | None = spec.waypoints
+        if spec.to and cat.motion == "vehicle":  # it drives the roads there, not across the grass
+            waypoints = driving_route(scene, asset, goal_of(scene, asset, spec.to))
+        elif spec.to:  # a walker or a rider goes straight there: kinematic, nothing stops it
+            waypoints = [(asset.pose.x, asset.pose.y), goal_of(scene, asset, spec.to)]
         if not waypoints or len(waypoints) < 2:
             raise RuleViolation("behaviour", "follow_path needs a place to go to or at least two waypoints [[x, y], ...]")
         default = 1.4 if cat.motion == "walker" else 4.0
