@@ -199,6 +199,20 @@ def group_left_behind(low: str, removed: Iterable[AssetInstance], candidates: It
     return out
 
 
+# A layout said as a thing of its own: "a row of bollards", "a ring of cones".
+_A_LAYOUT = re.compile(r"\b(?:a|an|one|another)\s+(line|row|ring|circle|grid|square)\s+of\b")
+
+
+def layouts_merged(masked: str, calls: Iterable[ToolCall]) -> list[str]:
+    """Two layouts asked for ("a row of bollards at lot A and a ring of cones at the fountain")
+    laid out as one of both kinds."""
+    said = [m.group(1) for m in _A_LAYOUT.finditer(masked)]
+    arranged = [c for c in calls if c.tool == "arrange_assets"]
+    if len(said) < 2 or len(arranged) != 1 or len(arranged[0].args.get("categories", [])) < 2:
+        return []
+    return [f"you asked for a {said[0]} and a {said[1]}, but the plan lays out one {arranged[0].args.get('shape', 'layout')} of both"]
+
+
 def wrong_layout(masked: str, added: Iterable[AssetInstance]) -> list[str]:
     """New things the request lays out ("in a row", "a ring of", "4 m apart") that the plan
     places otherwise: judged on where they end up, whichever Worker put them there."""

@@ -25,6 +25,7 @@ from drivetwin.orchestrator.planning.answers import SEARCH_TOOLS, unanswered
 from drivetwin.orchestrator.planning.attributes import (
     denied_set,
     group_left_behind,
+    layouts_merged,
     look_left_out,
     names_group,
     not_around,
@@ -44,7 +45,9 @@ from drivetwin.orchestrator.planning.coverage import (
     MIN_MOVE_M,
     Scope,
     absent_but_added,
+    all_when_some,
     ambiguous_pick,
+    asked_which_but_changed,
     away_from_thing,
     back_reference,
     definite_but_added,
@@ -146,7 +149,7 @@ _AWAY = re.compile(r"\b(?:get|move|send|shoo|clear|chase)\s+(?:the|those|these|t
 _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
 # A question about the scene's settings ("time + weather?", "what's the weather doing"): the
 # environment is what it must look up.
-_SETTING_ASKED = re.compile(r"\b(?:weather|what time|the time|time of day)\b")
+_SETTING_ASKED = re.compile(r"\b(?:weather|what time|the time|time of day|lighting|exposure)\b")
 # A distance said ("20 m north of the library", "ten feet behind it"): only then may a thing the
 # plan puts by a named place stand further than PLACE_RADIUS_M from it.
 _DISTANCE_SAID = re.compile(r"\d\s*(?:m|metres?|meters?|ft|feet|foot|yards?|km)\b")
@@ -302,7 +305,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
             out.append(f"you asked about the {unlooked}, but the plan looks up something else")
     if request.question and _SETTING_ASKED.search(request.low) and not any(
             c.tool in ("describe_environment", "set_weather", "set_time_of_day") for c in effect.calls):
-        out.append("you asked about the weather or the time, but the plan looks up something else")
+        out.append("you asked about the weather, the time or the lighting, but the plan looks up something else")
     from_ego = any(c.tool == "measure_distance" and "ego" in (c.args.get("a"), c.args.get("b")) for c in effect.calls)
     two_ends = re.search(r"\b(?:from|between|and)\b", request.masked)  # "how far is X from Y": neither is the asker
     # "I'll walk from the stop to the fountain", "how far is the library from the gate? we ..."
@@ -452,6 +455,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
            if not (c in counted and any(a.category in counted for a in scope.touched))]
     out += [f"you referred to the {c.replace('_', ' ')} already there, but the plan adds another"
             for c in definite_but_added(request.masked, scope, scene)]
+    out += [f"you asked which {c.replace('_', ' ')}, but the plan changes the scene" for c in asked_which_but_changed(request.masked, scope)]
     if not request.question:
         out += environment_left_out(request.low, effect.calls)
     out += environment_unasked(request.low, request.masked, effect.calls)
@@ -460,6 +464,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
                    or md.outer_direction(request.low) or request.excepted  # "the westernmost lamp", "not the ego"
                    or side_of(request.low, scene) is not None)  # "the lamps west of Campus Drive"
     out += partial_removal(request.masked, scope, scene, limited)
+    out += all_when_some(request.masked, scope, scene)
     out += [f"you asked for a new {c.replace('_', ' ')}, but the plan moves one that is there"
             for c in indefinite_but_moved(request.masked, scope, scene)]
     if effect.added or effect.changed:
@@ -513,6 +518,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
         out += [f"you said every one of {', '.join(each)}, but the plan puts nothing at {place}"
                 for place in centres if place not in served]
     out += wrong_layout(request.masked, effect.added)
+    out += layouts_merged(request.masked, effect.calls)
     out += _layout_of_one(request.masked, effect.calls) + _layout_of_the_place(request, effect.calls, scene)
     out += _off_the_road_named(request, effect, scene) + _light_painted(request, effect.calls, scene)
     # around what the layout names ("around the tree just north of lot A"), else the place named

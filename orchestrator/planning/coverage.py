@@ -14,10 +14,12 @@ from __future__ import annotations
 import itertools
 import math
 import re
+from collections import Counter
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from drivetwin.orchestrator.memory import Memory
+from drivetwin.orchestrator.planning.answers import SEARCH_TOOLS
 from drivetwin.orchestrator.planning.intent import (
     ADD_WORDS,
     ASKED_ABOUT,
@@ -289,6 +291,18 @@ _MORE_THINGS = frozenset({"of", "than", "and", "then", "please", "ones", "one", 
                           "traffic", "here", "there", "in", "at", "on", "by", "near", "to", "for", "like", "too"})
 
 
+def asked_which_but_changed(masked: str, scope: Scope) -> list[str]:
+    """Kinds the words ask about ("work out which bench is nearest", "what trees stand by the lot")
+    that the plan adds, changes or takes away without looking anything up: a thing asked which is
+    looked up, not edited (a command about it names it otherwise: "paint whichever bench is
+    nearest"; a plan that looks up, then edits, answers and acts: "which car is nearest? paint it")."""
+    if any(c.tool in SEARCH_TOOLS for c in scope.calls):
+        return []
+    asked = {m.category for m in named_in(masked)
+             if any(w in ("which", "what") for w in m.last_words(2)) or m.last_words(3)[:2] == ["which", "of"]}
+    return sorted({a.category for a in (*scope.added, *scope.touched, *scope.removed) if a.category in asked})
+
+
 def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """Categories referred to as existing ("the SUV", "those benches") that the plan adds anew
     while the scene has them and no word asks for a new one."""
@@ -554,10 +568,29 @@ def _half_of(hour: int) -> str | None:
     return "morning" if 4 <= hour < 12 else "evening" if hour >= 17 or hour < 4 else None
 
 
+# Words that keep part of a kind: "some trees", "a few of the cones", "thin them out", "all but one".
+_PART_SAID = re.compile(r"\b(?:some|a few|a couple|several|a handful|most|half|fewer)\b")
+_THINNED = re.compile(r"\bthin\w*\b(?: \w+)? out\b|\bthin(?:ned)? (?:down|the)\b")
+
+
+def all_when_some(masked: str, scope: Scope, scene: Scene) -> list[str]:
+    """A kind the words take only part of ("take away some trees", "thin them out", "every car in
+    lot B bar one") of which the plan removes every one there is."""
+    if not scope.removed:
+        return []
+    removed = Counter(a.category for a in scope.removed)
+    every = {c for c, n in removed.items() if n == scene.count(c)}
+    if (KEEP_SOME.search(masked) or _THINNED.search(masked)) and every == set(removed) and len(scope.removed) >= 2:
+        return [f"you asked to keep some, but the plan removes all {len(scope.removed)}"]  # "all the cars in lot B bar one"
+    partly = {m.category for m in named_in(masked) if _PART_SAID.search(" ".join(m.last_words(3)))}
+    return [f"you asked to keep some of the {c.replace('_', ' ')}s, but the plan removes all {removed[c]}"
+            for c in sorted(every & partly) if removed[c] >= 2]
+
+
 def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> list[str]:
     """A plural or bare category ("remove cones", "get rid of pedestrian") of which the plan
     removes only some, with no number, place or state in the request to say which."""
-    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some of|(?<!every )(?<!each )one of|a few|half|a couple|a pair|several|a handful)\b", masked):
+    if limited or not scope.removed or re.search(r"\b(fewer|less|too many|thin|some|most|(?<!every )(?<!each )one of|a few|half|a couple|a pair|several|a handful)\b", masked):
         return []
     out = []
     for m in named_in(masked):

@@ -90,7 +90,7 @@ FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|t
 # How many of them to keep: "keep just two", "leave one of them" (the amount is group 1).
 # "one is plenty", "two of them would be enough": as many kept as that.
 KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)"
-                       r"|(?:all|every\w*|each)\s+(?:(?:of\s+)?(?:the|them|those|these)\s+)?(?:[a-z]+\s+){0,2}?(?:but|except(?: for)?|save)\s+"
+                       r"|(?:all|every\w*|each)\s+(?:(?:of\s+)?(?:the|them|those|these)\s+)?(?:[a-z]+\s+){0,5}?(?:but|except(?: for)?|save|bar|apart from|other than)\s+"
                        r"(?:for\s+)?(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)"  # "all but one tree", "every lamp except two"
                        r"|(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?: of (?:them|those|these))? (?:is|are|'s|would be|will be|will do)"
                        r" (?:plenty|enough|all (?:we|i) need)\b))(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")

@@ -410,8 +410,9 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
     return ids, rest
 
 
-# "(the car) in the middle of the row": the middle one of a row of its kind.
-_IN_THE_MIDDLE = re.compile(r"\s+(?:\w+\s+)?(?:in|at) the (?:middle|centre|center) of (?:the|that|this) (?:row|line)\b")
+# "(the car) in the middle of the row", "the car in the middle": the middle one of a row of its kind (never "in the
+# middle of the road", a place).
+_IN_THE_MIDDLE = re.compile(r"\s+(?:\w+\s+)?(?:in|at) the (?:middle|centre|center)(?: of (?:the|that|this) (?:row|line)\b|(?! of\b)\b)")
 # Things of a kind further apart than this are no row ("the middle car" of the whole campus is none).
 ROW_SPAN_M = 40.0
 

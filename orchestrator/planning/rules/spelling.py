@@ -644,13 +644,27 @@ _SOUND_ALIKES = (
     (re.compile(r"\brite(?= (?:next|there|here|now|by|behind|beside|in front|outside|at|on|up|away)\b)", re.IGNORECASE), "right"),
     # "paint the trash been blue": a bin
     (re.compile(r"\btrash been\b", re.IGNORECASE), "trash bin"),
+    # dictation: "seven thirty pee em", "six ay em"; "turn write at the junction", "the write lane"
+    (re.compile(r"\b(?:pee|p)\s?em\b", re.IGNORECASE), "pm"),
+    (re.compile(r"(?<=\w )(?:ay|eh)\s?em\b", re.IGNORECASE), "am"),
+    (re.compile(r"\bwrite(?=[- ](?:lane|side|turn|hand|at|into|onto|of)\b)", re.IGNORECASE), "right"),
+    (re.compile(r"\b(turn|turns|turning|the|go|goes|keep|bear|veer|hang) write\b", re.IGNORECASE), r"\1 right"),
 )
+# A number as dictation hears it, straight after a verb that takes an amount: "add for cones", "remove too of the
+# benches", "plant to trees" (no preposition stands between such a verb and a bare plural), and "ate" before things.
+_HEARD_NUMBERS = {"to": "two", "too": "two", "for": "four", "fore": "four", "ate": "eight"}
+_HEARD_AMOUNT = re.compile(r"\b(?P<verb>add|put|place|plant|spawn|drop|create|remove|delete|lose|want|need|of)\s+(?P<said>to|too|for|fore|ate)"
+                           r"\s+(?=(?P<of>of (?:the|those|these|them)\b)|(?P<thing>[a-z]+)\b)", re.IGNORECASE)
 
 
 def _sound_alikes(text: str) -> str:
     for slip, meant in _SOUND_ALIKES:
         text = slip.sub(meant, text)
     text = re.sub(r"\b([a-z]+s|everything|all|anything) accept(?= (?:the|those|these|that|this|for|ones?)\b)", r"\1 except",
+                  text, flags=re.IGNORECASE)
+    text = _HEARD_AMOUNT.sub(lambda m: f"{m.group('verb')} {_HEARD_NUMBERS[m.group('said').lower()]} " if m.group("of") or any(
+        c.plural for c in ph.find_categories(m.group("thing") or "")) else m.group(0), text)
+    text = re.sub(r"\bate(?= ([a-z]+)\b)", lambda m: "eight" if any(c.plural for c in ph.find_categories(m.group(1))) else m.group(0),
                   text, flags=re.IGNORECASE)
     # "too" before things in the plural: "ad too buses"
     return re.sub(r"\btoo(?= ([a-z]+)\b)", lambda m: "two" if any(
