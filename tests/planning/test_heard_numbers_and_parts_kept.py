@@ -101,3 +101,19 @@ def test_part_of_a_kind_is_not_all_of_it(campus, registry):
 def test_all_but_one_said_after_a_long_scope_keeps_one(campus, registry):
     scene = applied(campus, registry, "take away all of the vehicles parked in lot B except one")
     assert sum(a.category in ("passenger_car", "suv") for a in scene.assets) == 1
+
+
+@pytest.mark.parametrize(("written", "read"), [
+    ("shift the aforementioned bench five (5) metres", "shift the bench 5 metres"),
+    ("the bin goes immediately adjacent to the fountain", "the bin goes next to the fountain"),
+    ("there is way to much fog", "there is way too much fog"),
+    ("paint the light on the SW corner blue", "paint the light on the south-west corner blue"),
+    ("drive the S U V in a southerly direction", "drive the SUV south"),
+])
+def test_formal_and_spelt_out_forms_read_as_the_plain_words(campus, written, read):
+    assert repair(written, campus).text == read
+
+
+def test_a_formal_move_is_carried_out(campus, registry):
+    scene = applied(campus, registry, "The said bench shall be shifted three (3) metres in an easterly direction.")
+    assert scene.asset("bench_1").pose.x == pytest.approx(campus.asset("bench_1").pose.x + 3.0)

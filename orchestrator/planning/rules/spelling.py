@@ -388,6 +388,27 @@ _THE_GRID = re.compile(r"\b(centre|center|middle|edge|corner|side|end|top|bottom
 _AN_FOR_AND = re.compile(r"\ban (?=(?:the|a|my|our|its|their|those|these|that|this|some|then)\b)", re.IGNORECASE)
 # A vehicle's lamps said in other words: "head lamps", "headlamps" are its headlights.
 _HEAD_LAMPS = re.compile(r"\bhead[ -]?(?:lamps?|lights?)\b", re.IGNORECASE)
+# Formal and dictated forms of words every reader knows: "ten (10) metres" is 10 metres; "the said SUV", "the
+# aforementioned bin" are the SUV and the bin; "adjacent to" is next to; "there are to many" is too many; "the NE
+# corner" is the north-east one; "S U V", spelt out letter by letter, is one word.
+_NUMBER_AND_FIGURES = re.compile(r"\b([a-z]+(?:-[a-z]+)?) \((\d+)\)", re.IGNORECASE)
+_SAID_THING = re.compile(r"\b(the|that|this|those|these) (?:said|aforesaid|aforementioned|above-?mentioned)\b", re.IGNORECASE)
+_ADJACENT = re.compile(r"\b(?:immediately |directly )?adjacent to\b", re.IGNORECASE)
+_TOO_MANY = re.compile(r"\b(are|is|'s|far|way|one|bit) to (many|much)\b", re.IGNORECASE)
+_COMPASS_SHORT = re.compile(r"\b(ne|nw|se|sw)\b(?= (?:corner|side|end|edge|crosswalk|crossing|quarter)\b)", re.IGNORECASE)
+_COMPASS_WORDS = {"ne": "north-east", "nw": "north-west", "se": "south-east", "sw": "south-west"}
+_SPELT_OUT = re.compile(r"\b[A-Z](?: [A-Z]){1,5}\b")
+# "in a northerly direction", "westwards": the compass way itself.
+_COMPASS_WAY = re.compile(r"\b(?:in an? )?(north|south|east|west)(?:erly(?: direction)?|wards?)\b(?! (?:lane|traffic|carriageway|side)\b)", re.IGNORECASE)
+
+
+def _formal_forms(text: str, vocab: frozenset[str]) -> str:
+    text = _NUMBER_AND_FIGURES.sub(lambda m: m.group(2) if ph.NUMBER_WORDS.get(m.group(1).lower()) == int(m.group(2)) else m.group(0), text)
+    text = _COMPASS_WAY.sub(r"\1", _ADJACENT.sub("next to", _SAID_THING.sub(r"\1", text)))
+    text = _COMPASS_SHORT.sub(lambda m: _COMPASS_WORDS[m.group(1).lower()], _TOO_MANY.sub(r"\1 too \2", text))
+    return _SPELT_OUT.sub(lambda m: joined if (joined := m.group(0).replace(" ", "")).lower() in vocab else m.group(0), text)
+
+
 # "to the vicinity of the east gate": near it.
 _VICINITY = re.compile(r"\b(?:(?:in|to|into) )?the (?:general |immediate )?vicinity of\b", re.IGNORECASE)
 # "in lot A by the entrance": by that lot's entrance, not somewhere in the lot.
@@ -855,6 +876,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
     text = _DOTTED_MERIDIEM.sub(lambda m: f"{m.group(1).lower()}m", text)  # "8 a.m. and ...": 8 am
+    text = _formal_forms(text, vocab)
     text = _ROUGHLY.sub(r"about \1", text)  # "cones round the rubble, six-ish": about six
     text = _ONE_MORE.sub("another", text)  # before "a second" is read as a measure of time
     text = decimal_points(text)  # "4,5 m": four and a half metres
