@@ -126,7 +126,10 @@ def _describe(call: ToolCall) -> str:
     if call.tool == "place_asset":
         return f"put {a.get('asset')} {_where(a.get('location'))}"
     if call.tool == "move_asset":
-        parts = [f"{k} {v:g}" for k, v in a.items() if k in ("forward", "left", "east", "north", "turn_deg") and v]
+        # each way said as a person says it: "back 3 m", not "forward -3"
+        ways = {"forward": ("forward", "back"), "left": ("left", "right"), "east": ("east", "west"), "north": ("north", "south")}
+        parts = [f"{ways[k][v < 0]} {abs(v):g} m" if k in ways else f"turn {v:g} degrees" for k, v in a.items()
+                 if k in (*ways, "turn_deg") and v]
         return f"move {a.get('asset') or ', '.join(a.get('assets', []))} " + ", ".join(parts)
     if call.tool == "set_behaviour":
         kind = a.get("behaviour", {}).get("kind", "") if isinstance(a.get("behaviour"), dict) else ""

@@ -910,12 +910,30 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if r.has(lx.SHIFT_VERBS):
         if (said := _DESTINATION.search(r.low)) is not None:  # a place it goes to, said but not found: never a guess
             raise ph_error(f"I could not tell where {said.group(0)!r} is; name a place of this world or say how far which way")
-        notes.guess("where to move it")
+        notes.guess(WAY_GUESSED)
         step = metres or (SMALL_STEP_M if r.has(md.SMALL) else DEFAULT_STEP_M)
         every = [scene.asset(i) for i in ids]
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]
     return None
+
+
+# The guess the rules note when a move says no way to go ("move the bench 3 m", "shift it kerbside"): the planner asks.
+WAY_GUESSED = "where to move it"
+
+
+def other_ways(calls: list[ToolCall]) -> list[list[ToolCall]]:
+    """`calls` with their one move by a step, as made on WAY_GUESSED, taken each way it could
+    have meant: ahead and back for a thing that drives, left, right and ahead for others."""
+    moves = [i for i, c in enumerate(calls) if c.tool == "move_asset" and len({"forward", "left"} & set(c.args)) == 1]
+    if len(moves) != 1:
+        return []
+    i = moves[0]
+    key = "forward" if "forward" in calls[i].args else "left"
+    step = abs(float(calls[i].args[key]))
+    ways = [("forward", step), ("forward", -step)] if key == "forward" else [("left", step), ("left", -step), ("forward", step)]
+    rest = {k: v for k, v in calls[i].args.items() if k != key}
+    return [[*calls[:i], calls[i].model_copy(update={"args": {**rest, k: v}}), *calls[i + 1 :]] for k, v in ways]
 
 
 # The far side of the road a thing stands by: "on the other side of the road", "across the street".

@@ -47,6 +47,7 @@ from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.conditions import condition, topic_first
 from drivetwin.orchestrator.planning.rules.edits import (
     FINAL_COUNT,
+    WAY_GUESSED,
     behaviour_kind,
     behaviour_spec,
     drive_towards,
@@ -54,6 +55,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     kept_at,
     named_at,
     new_pace,
+    other_ways,
     recolour,
     referenced,
     remove,
@@ -703,6 +705,11 @@ class RulePlanner:
             said = PLACE_SAID.search(text.lower())
             what = f"{said.group(1)!r}" if said else "the place you named"
             raise PlanningError(f"I do not know {what} in this world; places here include {names}")
+        if WAY_GUESSED in notes.guesses and (ways := other_ways(calls)):  # "move the bench 3 m": which way is never a guess
+            step = TraceStep(level="rules", input=prompt, output=f"{describe(calls)}, but no way to move said; asking")
+            return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
+                        question=Question(text="Which way should it move?",
+                                          readings=[Choice(text=describe(way), calls=way) for way in ways]))
         confidence = FULL_CONFIDENCE - UNKNOWN_WORD_PENALTY * len(unknown) - GUESS_PENALTY * len(notes.guesses)
         why = "; ".join([*notes.guesses, *(f"unknown word {w!r}" for w in unknown)]) or "understood every word"
         step = TraceStep(

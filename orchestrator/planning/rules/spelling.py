@@ -398,6 +398,8 @@ _TOO_MANY = re.compile(r"\b(are|is|'s|far|way|one|bit) to (many|much)\b", re.IGN
 _COMPASS_SHORT = re.compile(r"\b(ne|nw|se|sw)\b(?= (?:corner|side|end|edge|crosswalk|crossing|quarter)\b)", re.IGNORECASE)
 _COMPASS_WORDS = {"ne": "north-east", "nw": "north-west", "se": "south-east", "sw": "south-west"}
 _SPELT_OUT = re.compile(r"\b[A-Z](?: [A-Z]){1,5}\b")
+# "5 m rearward", "astern": backward.
+_REARWARD = re.compile(r"\b(?:rearwards?|astern)\b", re.IGNORECASE)
 # "in a northerly direction", "westwards": the compass way itself.
 _COMPASS_WAY = re.compile(r"\b(?:in an? )?(north|south|east|west)(?:erly(?: direction)?|wards?)\b(?! (?:lane|traffic|carriageway|side)\b)", re.IGNORECASE)
 
@@ -405,6 +407,7 @@ _COMPASS_WAY = re.compile(r"\b(?:in an? )?(north|south|east|west)(?:erly(?: dire
 def _formal_forms(text: str, vocab: frozenset[str]) -> str:
     text = _NUMBER_AND_FIGURES.sub(lambda m: m.group(2) if ph.NUMBER_WORDS.get(m.group(1).lower()) == int(m.group(2)) else m.group(0), text)
     text = _COMPASS_WAY.sub(r"\1", _ADJACENT.sub("next to", _SAID_THING.sub(r"\1", text)))
+    text = _REARWARD.sub("backward", text)
     text = _COMPASS_SHORT.sub(lambda m: _COMPASS_WORDS[m.group(1).lower()], _TOO_MANY.sub(r"\1 too \2", text))
     return _SPELT_OUT.sub(lambda m: joined if (joined := m.group(0).replace(" ", "")).lower() in vocab else m.group(0), text)
 
