@@ -118,3 +118,10 @@ def test_formal_and_spelt_out_forms_read_as_the_plain_words(campus, written, rea
 def test_a_formal_move_is_carried_out(campus, registry):
     scene = applied(campus, registry, "The said bench shall be shifted three (3) metres in an easterly direction.")
     assert scene.asset("bench_1").pose.x == pytest.approx(campus.asset("bench_1").pose.x + 3.0)
+
+
+def test_a_slip_is_never_repaired_into_the_opposite_wish(campus):
+    # "respawn" is one letter from "despawn", but a first letter is rarely the slip: the request
+    # would be turned round from placing the bin to removing it
+    assert repair("respawn the bin by the fountain", campus).repairs == []
+    assert repair("remvoe the bin", campus).text == "remove the bin"

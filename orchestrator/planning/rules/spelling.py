@@ -495,8 +495,17 @@ def _closest(low: str, close: list[str], targets: tuple[str, ...]) -> str | None
     by_edits = _nearest_by_edits(low, targets)
     if by_edits is not None and (not close or edits(low, by_edits) < edits(low, close[0])
                                  or (edits(low, by_edits) == edits(low, close[0]) and _first_kept(low, by_edits, close[0]))):
-        return by_edits
-    return close[0] if close else None
+        picked: str | None = by_edits
+    else:
+        picked = close[0] if close else None
+    # a word that decides whether things come or go is repaired to only from a slip that keeps its first letter
+    # ("remvoe" is remove; "respawn" is no despawn): a guess there turns the whole request round
+    return None if picked is not None and picked in _polarity_words() and picked[0] != low[0] else picked
+
+
+@cache
+def _polarity_words() -> frozenset[str]:
+    return frozenset(w for w in (*lx.REMOVE_WORDS, *lx.ADD_WORDS) if " " not in w)
 
 
 def _first_kept(low: str, a: str, b: str) -> bool:
