@@ -78,6 +78,8 @@ def test_smollm2_respells_slips_no_rule_reads_and_leaves_real_words_alone(campus
     turned = respell("tern the sooveee around", campus, score)
     assert turned.text == "turn the suv around"  # "suv" first, then "turn" in its light
     assert "cone" in respell("put a trafic coan in frunt of the stop sign", campus, score).text
+    # one slip from "east" and from "west": the typed first letter is kept (a first letter is rarely the slip)
+    assert respell("park a bus at the eest gate", campus, score).text == "park a bus at the east gate"
     for meant in ("the dean is visiting, so put a bench at the fountain", "paint the bench a warm ochre"):
         assert respell(meant, campus, score).repairs == []
 

@@ -55,6 +55,9 @@ SOUND, SURE_SOUND = 2, 3
 SOUND_LETTER = 0.5
 # Extra cost of a word the planners do not read: "coan" is a cone here, not a coin.
 OTHER_WORD_COST = 3.0
+# Extra cost of a word that does not keep the typed first letter, which is rarely the slip: "the eest gate" is
+# the east gate, though the model may find "west" as likely (half a slip).
+FIRST_LETTER_COST = 1.5
 # Rounds over the request: a word respelt may make an earlier one clear.
 PASSES = 2
 # Candidates scored per word, nearest first (each costs one short model evaluation).
@@ -125,9 +128,10 @@ def candidates(word: str, vocab: frozenset[str]) -> tuple[str, ...]:
 
 
 def cost(typed: str, meant: str, vocab: frozenset[str]) -> float:
-    """The channel's cost of reading `typed` as `meant`: its slips, and more for a word the
-    planners do not read, which the person less likely meant here."""
-    return EDIT_COST * slips(typed, meant) + (0.0 if meant in _domain(vocab) else OTHER_WORD_COST)
+    """The channel's cost of reading `typed` as `meant`: its slips, more for a word the planners
+    do not read, which the person less likely meant here, and more for a first letter changed."""
+    return EDIT_COST * slips(typed, meant) + (0.0 if meant in _domain(vocab) else OTHER_WORD_COST) \
+        + (FIRST_LETTER_COST if typed[:1] != meant[:1] else 0.0)
 
 
 def _suspects(text: str, scene: Scene, vocab: frozenset[str]) -> list[str]:
