@@ -52,14 +52,16 @@ def test_a_thing_built_that_the_world_has_is_added(campus, registry):
     assert sum(a.category == "road_barrier" for a in scene.assets) == 2
 
 
-def test_a_move_that_says_no_way_asks_which_way(campus, registry):
+def test_a_move_whose_way_is_not_read_asks_which_way(campus, registry):
     from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 
     session = Session(campus, RulePlanner(), registry)
-    report = session.submit("shift the trash bin 2 metres, thanks")
+    report = session.submit("shift the trash bin 2 metres kerbwards, thanks")
     assert not report.ok and report.question is not None and session.scene == campus
     offered = [r.text for r in report.question.readings]
     assert any("left 2 m" in t for t in offered) and any("right 2 m" in t for t in offered)
     report = session.submit("shift the trash bin 2 metres to the east")
     assert report.ok, report.error or report.question
     assert session.scene.asset("trash_bin_1").pose.x == campus.asset("trash_bin_1").pose.x + 2.0
+    report = session.submit("shift the trash bin a little")  # no way said: any way is what was asked
+    assert report.ok, report.error or report.question

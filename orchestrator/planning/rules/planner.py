@@ -705,8 +705,11 @@ class RulePlanner:
             said = PLACE_SAID.search(text.lower())
             what = f"{said.group(1)!r}" if said else "the place you named"
             raise PlanningError(f"I do not know {what} in this world; places here include {names}")
-        if WAY_GUESSED in notes.guesses and (ways := other_ways(calls)):  # "move the bench 3 m": which way is never a guess
-            step = TraceStep(level="rules", input=prompt, output=f"{describe(calls)}, but no way to move said; asking")
+        # "shift it 2 m kerbside": a way said and not read is never guessed (with none said, as in "shift the bin a
+        # little", any way is what was asked)
+        respelt = any(g.startswith("spelling ") for g in notes.guesses)  # "5 m aftwards", read as "towards"
+        if WAY_GUESSED in notes.guesses and (unknown or respelt) and (ways := other_ways(calls)):
+            step = TraceStep(level="rules", input=prompt, output=f"{describe(calls)}, but the way to move not read; asking")
             return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
                         question=Question(text="Which way should it move?",
                                           readings=[Choice(text=describe(way), calls=way) for way in ways]))
