@@ -92,6 +92,9 @@ FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|t
 KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)"
                        r"|(?:all|every\w*|each)\s+(?:(?:of\s+)?(?:the|them|those|these)\s+)?(?:[a-z]+\s+){0,5}?(?:but|except(?: for)?|save|bar|apart from|other than)\s+"
                        r"(?:for\s+)?(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)"  # "all but one tree", "every lamp except two"
+                       # "the vehicles in lot B, save for one, ...": a number set apart by commas
+                       r"|(?:(?<=, )|(?<=,  ))(?:save for|except for|except|apart from|other than|bar)\s+"
+                       r"(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*,)"
                        r"|(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)(?: of (?:them|those|these))? (?:is|are|'s|would be|will be|will do)"
                        r" (?:plenty|enough|all (?:we|i) need)\b))(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")

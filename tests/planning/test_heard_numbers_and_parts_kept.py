@@ -125,3 +125,8 @@ def test_a_slip_is_never_repaired_into_the_opposite_wish(campus):
     # would be turned round from placing the bin to removing it
     assert repair("respawn the bin by the fountain", campus).repairs == []
     assert repair("remvoe the bin", campus).text == "remove the bin"
+
+
+def test_a_number_set_apart_by_commas_is_kept(campus, registry):
+    scene = applied(campus, registry, "the vehicles parked in lot B, other than one, have to be cleared away")
+    assert sum(a.category in ("passenger_car", "suv") for a in scene.assets) == 1
