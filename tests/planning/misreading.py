@@ -1,9 +1,11 @@
 """Planners that misread on purpose, for the plan-check tests: each answers every prompt with
-the same fixed calls, as the measured planners did when they misread a request."""
+the same fixed calls, as the measured planners did when they misread a request; and the two
+outcomes those tests assert, a request held (the scene unchanged) or applied."""
 
 from __future__ import annotations
 
 from drivetwin.orchestrator.planning import Plan, PlanContext
+from drivetwin.orchestrator.session import Session, TurnReport
 from drivetwin.tools.base import ToolCall
 
 
@@ -25,3 +27,21 @@ def call(tool: str, **args: object) -> ToolCall:
 
 def add(category: str, **extra: object) -> ToolCall:
     return ToolCall(tool="add_asset", args={"category": category, "count": 1, **extra})
+
+
+def held(campus: object, registry: object, planner: object, prompt: str) -> TurnReport:
+    """The report of `prompt` planned by `planner`, which must leave the scene as it was."""
+    session = Session(campus, planner, registry)  # type: ignore[arg-type]
+    before = session.scene
+    report = session.submit(prompt)
+    assert not report.ok, f"{prompt!r} was applied: {report.plan.calls if report.plan else None}"
+    assert session.scene == before
+    return report
+
+
+def applied(campus: object, registry: object, planner: object, prompt: str) -> Session:
+    """The session after `prompt` planned by `planner`, which must have applied it."""
+    session = Session(campus, planner, registry)  # type: ignore[arg-type]
+    report = session.submit(prompt)
+    assert report.ok, report.error or report.question
+    return session

@@ -14,24 +14,7 @@ import pytest
 from drivetwin.orchestrator.planning.check import overridden
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
-from misreading import Fixed, call  # this folder is on sys.path (no __init__.py)
-
-
-def held(campus, registry, planner, prompt):
-    """The report of `prompt` planned by `planner`, which must leave the scene as it was."""
-    session = Session(campus, planner, registry)
-    before = session.scene
-    report = session.submit(prompt)
-    assert not report.ok, f"{prompt!r} was applied: {report.plan.calls if report.plan else None}"
-    assert session.scene == before
-    return report
-
-
-def applied(campus, registry, planner, prompt):
-    session = Session(campus, planner, registry)
-    report = session.submit(prompt)
-    assert report.ok, report.error or report.question
-    return session
+from misreading import Fixed, applied, call, held  # this folder is on sys.path (no __init__.py)
 
 
 def test_a_time_set_twice_asks_which_time_was_meant(campus, registry):

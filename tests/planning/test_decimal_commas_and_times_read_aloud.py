@@ -9,24 +9,17 @@ import pytest
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.numbers import decimal_points
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
-from drivetwin.orchestrator.session import Session
-
-
-def applied(campus, registry, prompt):
-    session = Session(campus, RulePlanner(), registry)
-    report = session.submit(prompt)
-    assert report.ok, report.error or report.question
-    return session.scene
+from misreading import applied  # this folder is on sys.path (no __init__.py)
 
 
 def test_a_decimal_comma_with_a_unit_is_a_decimal(campus, registry):
-    scene = applied(campus, registry, "shift the bench 2,5 m to the west")
+    scene = applied(campus, registry, RulePlanner(), "shift the bench 2,5 m to the west").scene
     before = campus.asset("bench_1")
     assert scene.asset("bench_1").pose.x == pytest.approx(before.pose.x - 2.5)
 
 
 def test_a_setting_given_with_a_decimal_comma_is_that_value(campus, registry):
-    scene = applied(campus, registry, "exposure 0,8 please")
+    scene = applied(campus, registry, RulePlanner(), "exposure 0,8 please").scene
     assert scene.environment.lighting.exposure == pytest.approx(0.8)
 
 
@@ -55,14 +48,14 @@ def test_hours_and_minutes_words_that_count_things_are_no_time():
 
 
 def test_a_time_is_set_when_its_half_of_the_day_is_said(campus, registry):
-    scene = applied(campus, registry, "we start the night runs around 9 pm")
+    scene = applied(campus, registry, RulePlanner(), "we start the night runs around 9 pm").scene
     assert scene.environment.time_of_day == "21:00"
-    scene = applied(campus, registry, "the drive happens about seven fifteen in the morning")
+    scene = applied(campus, registry, RulePlanner(), "the drive happens about seven fifteen in the morning").scene
     assert scene.environment.time_of_day == "07:15"
 
 
 def test_then_said_formally_splits_the_request(campus, registry):
-    scene = applied(campus, registry, "Paint the SUV green and subsequently move it 3 m north.")
+    scene = applied(campus, registry, RulePlanner(), "Paint the SUV green and subsequently move it 3 m north.").scene
     before, after = campus.asset("suv_1"), scene.asset("suv_1")
     assert after.appearance is not None and after.appearance != before.appearance
     assert after.pose.y == pytest.approx(before.pose.y + 3.0)

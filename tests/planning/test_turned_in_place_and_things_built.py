@@ -4,24 +4,9 @@ swapped for another thing the request names (worded unlike any suite prompt)."""
 
 from __future__ import annotations
 
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
-from misreading import Fixed, add, call  # this folder is on sys.path (no __init__.py)
-
-
-def held(campus, registry, planner, prompt):
-    session = Session(campus, planner, registry)
-    before = session.scene
-    report = session.submit(prompt)
-    assert not report.ok, f"{prompt!r} was applied: {report.plan.calls if report.plan else None}"
-    assert session.scene == before
-    return report
-
-
-def applied(campus, registry, planner, prompt):
-    session = Session(campus, planner, registry)
-    report = session.submit(prompt)
-    assert report.ok, report.error or report.question
-    return session.scene
+from misreading import Fixed, add, applied, call, held  # this folder is on sys.path (no __init__.py)
 
 
 def test_a_thing_turned_toward_a_place_is_not_carried_there(campus, registry):
@@ -33,7 +18,7 @@ def test_a_thing_turned_toward_a_place_is_not_carried_there(campus, registry):
 
 def test_a_thing_turned_in_place_or_moved_when_asked_still_applies(campus, registry):
     turned = Fixed(call("move_asset", asset="trash_bin_1", turn_deg=90.0))
-    scene = applied(campus, registry, turned, "swivel the bin to face the Library entrance")
+    scene = applied(campus, registry, turned, "swivel the bin to face the Library entrance").scene
     assert scene.asset("trash_bin_1").pose.x == campus.asset("trash_bin_1").pose.x
     carried = Fixed(call("place_asset", asset="trash_bin_1", location={"relation": "next_to", "target": "Library entrance"}))
     applied(campus, registry, carried, "shift the bin over to the Library entrance and turn it to face the road")
@@ -48,13 +33,11 @@ def test_a_thing_built_that_the_world_lacks_is_not_swapped_for_another(campus, r
 
 def test_a_thing_built_that_the_world_has_is_added(campus, registry):
     scene = applied(campus, registry, Fixed(add("road_barrier", count=2, location={"relation": "at", "target": "bus stop"})),
-                    "set up two barriers at the bus stop")
+                    "set up two barriers at the bus stop").scene
     assert sum(a.category == "road_barrier" for a in scene.assets) == 2
 
 
 def test_a_move_whose_way_is_not_read_asks_which_way(campus, registry):
-    from drivetwin.orchestrator.planning.rules.planner import RulePlanner
-
     session = Session(campus, RulePlanner(), registry)
     report = session.submit("shift the trash bin 2 metres kerbwards, thanks")
     assert not report.ok and report.question is not None and session.scene == campus
