@@ -94,6 +94,8 @@ def test_all_but_one_said_after_a_long_scope_keeps_one(campus, registry):
     ("paint the light on the SW corner blue", "paint the light on the south-west corner blue"),
     ("drive the S U V in a southerly direction", "drive the SUV south"),
     ("roll the bus 4 m rearwards", "roll the bus 4 m backward"),
+    ("please make the bus little bit fast", "please make the bus little bit faster"),
+    ("could the lamps be a tad bright", "could the lamps be a tad brighter"),
 ])
 def test_formal_and_spelt_out_forms_read_as_the_plain_words(campus, written, read):
     assert repair(written, campus).text == read

@@ -602,14 +602,26 @@ _CAR_PARK_OF = re.compile(r"\bcar\s?park\s+(?=[a-z]\b(?!')(?!\s+(?:car|bus|van|t
 
 # A comparative said with "more", as learners of English say it: "more slow", "more quick".
 _MORE_ADJECTIVE = re.compile(r"\bmore ([a-z]{3,6})\b", re.IGNORECASE)
+# "make the ego little bit slow", "a tad dark": a change by a little, said with the plain adjective (a bit slower).
+_BIT_ADJECTIVE = re.compile(r"\b((?:a )?little bit|a bit|a little|a tad|slightly) ([a-z]{3,6})\b(?! (?:of|more|less)\b)", re.IGNORECASE)
 
 
 def _comparative(m: re.Match[str]) -> str:
     """"more slow" as "slower", when that is an English word the rule planner's patterns read."""
-    word = m.group(1).lower()
+    said = _comparative_of(m.group(1).lower())
+    return said if said is not None else m.group(0)
+
+
+def _by_a_bit(m: re.Match[str]) -> str:
+    """"little bit slow" as "little bit slower", when that is a word the rule planner's patterns read."""
+    said = _comparative_of(m.group(2).lower())
+    return f"{m.group(1)} {said}" if said is not None else m.group(0)
+
+
+def _comparative_of(word: str) -> str | None:
     doubled = len(word) == 3 and word[1] in "aeiou" and word[2] not in "aeiouwxy" and word[0] not in "aeiou"  # "big": bigger
     said = word + "r" if word.endswith("e") else word[:-1] + "ier" if word.endswith("y") else word + word[-1] + "er" if doubled else word + "er"
-    return said if (said in _pattern_words() or said in _domain_words()) and is_english(said) else m.group(0)
+    return said if (said in _pattern_words() or said in _domain_words()) and is_english(said) else None
 
 
 @cache
@@ -902,6 +914,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _CAR_PARK_OF.sub("parking lot ", text)  # "the car park A entrance": lot A's, not "the car park" (lot B)
     text = _inverted_names().sub(_said_head_last, text)  # "the car of test": the test car
     text = _MORE_ADJECTIVE.sub(_comparative, text)  # "more slow, please": slower
+    text = _BIT_ADJECTIVE.sub(_by_a_bit, text)  # "little bit slow": a bit slower
     text = _marker_off(text)
     text = _RIGHT_THERE.sub("", text)
     text = _SLASH_COMMAND.sub("", text)
