@@ -399,7 +399,8 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
                 present = [a for a in scene.assets if word in catalog()[a.category].tags]
             present = sorted(present, key=lambda a: -(a.pose.x * east + a.pose.y * north))
             present = _at_named_place(scene, low, present) or present
-        if before[-1:] == ["middle"] or _IN_THE_MIDDLE.match(low[mention.end :]):  # "the car in the middle of the row"
+        middle = _IN_THE_MIDDLE.match(low[mention.end :])  # "the car in the middle (of the row)"; "one bin in the middle" is a place
+        if before[-1:] == ["middle"] or (middle is not None and (" of " in middle.group(0) or before[-1:] in (["the"], ["that"], ["this"]))):
             ids.append(_middle_of_row(scene, low, mention).id)
         elif picked is not None:
             ids.append(picked)
