@@ -918,7 +918,7 @@ def _wrong_way_to(request: Request, scene: Scene, moved: list[AssetInstance]) ->
 _FACE_SAID = re.compile(r"\bfac(?:e|es|ing)\b|\bpoint(?:s|ed|ing)?\b(?=[^,.;]*\b(?:at|towards?)\b)")
 # A thing turned to face a way where it stands: "orient the bench towards the fountain", "angle the camera car at the
 # gate", "turn the SUV to face the road" (the words after say which way, never where to).
-_TURNED_TOWARD = re.compile(r"\b(?:orient\w*|turn|turns|turned|rotate[sd]?|angle[sd]?|swivel\w*|spin)\b(?P<way>[^,.;]*?\b(?:towards?|to face|at)\b)")
+_TURNED_TOWARD = re.compile(r"\b(?:orient\w*|turn|turns|turned|rotate[sd]?|angle[sd]?|swivel\w*|spin)\b[^,.;]*?\b(?:towards?|to face|at)\b")
 _MOVE_SAID = re.compile(r"\b(?:" + "|".join(re.escape(w) for w in lx.MOVE_WORDS) + r")\b")
 
 

@@ -80,12 +80,12 @@ HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|p
 # A thing something is forbidden to ("the robot mustn't drive through the fountain"): a constraint
 # on it, not a thing asked for.
 FORBIDDEN = re.compile(r"\s+(?:mustn'?t|must not|shouldn'?t|should not|can'?t|cannot|won'?t|may not)\b")
-# Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
 # Weather asked for a little: "a bit cloudy", "a touch of fog", "snow, though not too much".
 _WEATHER_WORD = r"(?:rain\w*|snow\w*|fog\w*|drizzl\w*|showers?|mist\w*|cloud\w*|overcast)"
 _HEDGE = r"(?:a\s?bit|a little|a touch|slightly|somewhat|mildly|just a bit|a tad|(?:not|no)\s+(?:too\s+|so\s+|very\s+)?much)"
 WEATHER_HEDGED = re.compile(rf"\b{_HEDGE}\s+(?:of\s+)?{_WEATHER_WORD}"
                             rf"|\b{_WEATHER_WORD}[\s,]+(?:\w+[\s,]+){{0,3}}?{_HEDGE}(?!\s+(?:more|harder|heavier|stronger|thicker))\b")
+# Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
 FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less|(?:do|does|did)(?:n't| not) (?:\w+ ){0,3}need (?:quite |nearly )?(?:so|as|that) (?:much|many)|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cut down on|reduce)\b")
 # How many of them to keep: "keep just two", "leave one of them" (the amount is group 1).
 # "one is plenty", "two of them would be enough": as many kept as that.

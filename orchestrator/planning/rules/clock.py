@@ -100,8 +100,12 @@ def _in_half_of_day(hour: int, after: str, said: str = "", o_clock: bool = False
 def half_of_day_said(text: str, time: ClockTime) -> bool:
     """Whether the words say which half of the day `time` is in ("six thirty in the evening", "7 pm"): a
     time however the sentence round it runs ("I'll test around 6 pm")."""
-    after = text[time.end :]
-    return bool(_AFTERNOON.match(after) or _MORNING.match(after) or re.search(r"(?:am|pm|a\.m\.|p\.m\.)$", time.text))
+    return _half_of_day_after(text[time.end :]) or re.search(r"(?:am|pm|a\.m\.|p\.m\.)$", time.text) is not None
+
+
+def _half_of_day_after(after: str) -> bool:
+    """Whether the words straight after a time say which half of the day it is in ("pm", "in the evening")."""
+    return bool(_AFTERNOON.match(after) or _MORNING.match(after))
 
 
 def clock_time(text: str) -> ClockTime | None:
@@ -130,8 +134,7 @@ def clock_time(text: str) -> ClockTime | None:
         hour = _in_half_of_day(_number(half.group(1)), text[half.end():], text)
         return ClockTime(hour, 30, half.group(0), *half.span())
     aloud = _READ_ALOUD.search(text)
-    if aloud is not None and (_AFTERNOON.match(text[aloud.end():]) or _MORNING.match(text[aloud.end():])
-                              or _TIME_TOPIC.search(text) or _LATER_IN_DAY.search(text)):
+    if aloud is not None and (_half_of_day_after(text[aloud.end():]) or _TIME_TOPIC.search(text) or _LATER_IN_DAY.search(text)):
         hour = _in_half_of_day(_number(aloud.group(1)), text[aloud.end():], text)
         return ClockTime(hour, _MINUTE_WORDS[aloud.group(2)], aloud.group(0), *aloud.span())
     military = next((m for m in _MILITARY.finditer(text) if m.group("set") or m.group("hours")), None)
@@ -141,7 +144,7 @@ def clock_time(text: str) -> ClockTime | None:
         separator, said_minutes, suffix = m.group(2), m.group(3), m.group(4)
         if separator == "." and suffix is None and not _TIME_TOPIC.search(text):
             continue  # "2.50 m" is a number, not ten to three
-        said_day_half = _AFTERNOON.match(text[m.end():]) or _MORNING.match(text[m.end():])
+        said_day_half = _half_of_day_after(text[m.end():])
         if separator is None and suffix in (None, "h", "hrs", "hours") and not (suffix is None and said_day_half):
             continue  # a bare "7" or "7 hours" is an amount; "9 in the evening" is a time
         after = text[m.end():]

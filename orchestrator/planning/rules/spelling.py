@@ -405,6 +405,7 @@ _COMPASS_WAY = re.compile(r"\b(?:in an? )?(north|south|east|west)(?:erly(?: dire
 
 
 def _formal_forms(text: str, vocab: frozenset[str]) -> str:
+    """`text` with its formal, dictated and spelt-out forms written as the plain words (see above)."""
     text = _NUMBER_AND_FIGURES.sub(lambda m: m.group(2) if ph.NUMBER_WORDS.get(m.group(1).lower()) == int(m.group(2)) else m.group(0), text)
     text = _COMPASS_WAY.sub(r"\1", _ADJACENT.sub("next to", _SAID_THING.sub(r"\1", text)))
     text = _REARWARD.sub("backward", text)
@@ -709,11 +710,9 @@ def _sound_alikes(text: str) -> str:
                   text, flags=re.IGNORECASE)
     text = _HEARD_AMOUNT.sub(lambda m: f"{m.group('verb')} {_HEARD_NUMBERS[m.group('said').lower()]} " if m.group("of") or any(
         c.plural for c in ph.find_categories(m.group("thing") or "")) else m.group(0), text)
-    text = re.sub(r"\bate(?= ([a-z]+)\b)", lambda m: "eight" if any(c.plural for c in ph.find_categories(m.group(1))) else m.group(0),
-                  text, flags=re.IGNORECASE)
-    # "too" before things in the plural: "ad too buses"
-    return re.sub(r"\btoo(?= ([a-z]+)\b)", lambda m: "two" if any(
-        c.plural for c in ph.find_categories(m.group(1))) else m.group(0), text, flags=re.IGNORECASE)
+    # "too" or "ate" before things in the plural: "ad too buses", "a row of ate cones"
+    return re.sub(r"\b(too|ate)(?= ([a-z]+)\b)", lambda m: _HEARD_NUMBERS[m.group(1).lower()] if any(
+        c.plural for c in ph.find_categories(m.group(2))) else m.group(0), text, flags=re.IGNORECASE)
 
 
 # Two words that are one known word written apart ("side walk", "cross walk"); a catalog phrase
