@@ -40,6 +40,7 @@ from drivetwin.evals import (
     practice28_source,
     practice29_source,
     practice30_source,
+    practice31_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -120,6 +121,9 @@ BRIEFS: dict[str, Brief] = {
     "practice29": Brief(320, 11, 11, practice29_source, multi_turn=40, planned=20, compound=20),
     # Eight voices: Indian-English administrator, dictation user, gamer, cyclist, estates manager, lawyer, child, AV engineer.
     "practice30": Brief(320, 11, 11, practice30_source, multi_turn=40, planned=20, compound=20),
+    # Eight voices: air-traffic controller, stage director, Russian, Nigerian English, estate agent, coach, tired parent,
+    # hesitant over-thinker; every cell holds 13.
+    "practice31": Brief(340, 11, 11, practice31_source, multi_turn=40, planned=20, compound=20),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
