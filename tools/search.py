@@ -96,6 +96,16 @@ def _figure(asset: AssetInstance, key: str) -> float:
     return round(float(getattr(kind, key)) * asset.scale, 2)
 
 
+def most_of(most: str, assets: list[AssetInstance]) -> list[AssetInstance]:
+    """The ones of `assets` a superlative picks ("tallest": the greatest height), several where
+    they tie, each by its kind's figures scaled as it is."""
+    if not assets:
+        return []
+    key, first = _MOST[most]
+    best = (max if first else min)(_figure(a, key) for a in assets)
+    return [a for a in assets if _figure(a, key) == best]
+
+
 def _alike(landmark: Landmark, scene: Scene) -> list[Landmark]:
     """The landmark and those of its kind (point or area) whose names share a word of its name that
     is no letter: the two crosswalks, the two parking lots (not a lot's entrance, a point)."""

@@ -98,7 +98,7 @@ from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, kept_at
+from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, TOO_CONSPICUOUS, kept_at
 from drivetwin.orchestrator.planning.rules.environment import HEAVY_INTENSITY, LIGHT_INTENSITY, said_weaker
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, SPEED_UNIT, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import (
@@ -118,9 +118,10 @@ from drivetwin.tools.appearance import TIME_PRESETS
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
+from drivetwin.tools.search import most_of
 from drivetwin.worlds.catalog import LAYOUT_KIT_TAGS, catalog, placeable_categories
 from drivetwin.worlds.scene import AssetInstance, Scene
-from drivetwin.worlds.surface import nearest_on_polyline, point_in_polygon
+from drivetwin.worlds.surface import lane_at, nearest_on_polyline, point_in_polygon
 
 Action = Literal["apply", "ask", "refuse"]
 # Metres from a named place within which an edit counts as "at" it (a parking lot or a building
@@ -145,6 +146,13 @@ MAX_READINGS = 3
 _LAYOUT_KIT = LAYOUT_KIT_TAGS | {"sign"}
 # Sending things off: "get the crowd away from the gate", "move those people away" (never more of them).
 _AWAY = re.compile(r"\b(?:get|move|send|shoo|clear|chase)\s+(?:the|those|these|that|them|it|all)\b(?:\s+[\w-]+){0,2}?\s+away\b")
+# Things to be kept away, said as the object of a verb of deterring ("something to keep people off the
+# grass", "deter cyclists from the footpath", "to stop cars parking there"): never what the plan adds.
+# ("keep the walker waiting" is having one; kept, it must be kept off, out or away.)
+_KEPT_AWAY = re.compile(r"\b(?:(?P<keep>keep|keeps|keeping)|stop|stops|stopping|prevent|prevents|preventing|deter|deters|deterring"
+                        r"|discourage|discourages|discouraging|ban|bans|banning|bar|bars|barring|warn off|scare (?:off|away))\s+"
+                        r"(?:(?:the|any|all|those|these|other)\s+)?(?:[a-z]+\s+)?$")
+_KEPT_OFF = re.compile(r"\s+(?:[a-z]+\s+)?(?:off|away|out|from|back|clear)\b")
 # Words asking for one more of a thing there: what answers them adds.
 _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
 # A question about the scene's settings ("time + weather?", "what's the weather doing"): the
@@ -338,6 +346,11 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if going is not None and any(a.category in said_of for a in effect.added):
         # "kids can't see the cars": how it is for them, never more of them
         out.append("you said how things are for " + ", ".join(sorted(said_of)) + ", but the plan adds more of them")
+    said = ph.normalise(request.text.lower())  # "..., to keep people off the grass" is a reason the request drops
+    kept_away = {m.category for m in ph.find_categories(request.text.lower()) if (verb := _KEPT_AWAY.search(said[max(0, m.start - 30) : m.start]))
+                 and (not verb.group("keep") or _KEPT_OFF.match(said, m.end))}
+    if (more := [a for a in effect.added if a.category in kept_away]) and not request.question:
+        out.append("you asked to keep " + ", ".join(sorted(c.replace("_", " ") for c in kept_away)) + " away, but the plan adds " + _names(more))
     if _AWAY.search(request.low) and effect.added and not request.question:  # "get the crowd away from the gate"
         out.append("you asked for things to go away, but the plan adds " + _names(effect.added))
     if LIVELIER.search(request.low) and effect.removed and not request.question:  # "liven them up"
@@ -349,6 +362,11 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you said it is empty, but the plan takes away " + _names(effect.removed))
     if _ANOTHER_ONE.search(request.low) and not effect.added and _moved(effect) and not request.question:
         out.append("you asked for another one, but the plan only moves " + _names(_moved(effect)))  # "a copy of that one by the gate"
+    if ((_LOOKS_MORE_OR_LESS.search(request.low) or TOO_CONSPICUOUS.search(request.low)) and (effect.removed or effect.added) and not request.question
+            and not LIVELIER.search(request.low) and not QUIETER.search(request.low)  # "look less crowded" is fewer
+            and not _TOO_MANY.search(request.low)):  # "too many cones, they're too visible"
+        # "make the SUV look a bit less aggressive": how it looks, not how many there are
+        out.append("you asked how something looks, but the plan " + ("removes " + _names(effect.removed) if effect.removed else "adds " + _names(effect.added)))
     if request.polarity == "add" and effect.removed and (not effect.added or not REMOVE_WORDS.search(request.low)):
         out.append("you asked for more, but the plan removes " + _names(effect.removed))
     touched = [*effect.added, *effect.removed, *(a for a in effect.changed if a.id != "ego")]
@@ -399,6 +417,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += wrong_lane_way(request.masked, scene, [*effect.added, *effect.changed])
     out += _wrong_way_to(request, scene, _moved(effect))
     out += _not_the_extreme(request, effect, scene)
+    out += _not_the_biggest(request, effect, scene)
     out += _moved_to_turn(request, effect)
     if (other := _outermost(request, effect, scene)) is not None:
         out.append(f"you picked one by where it stands, which is {other[1].id}, but the plan acts on {other[0].id}")
@@ -667,18 +686,54 @@ _MOVED_AWAY = re.compile(r"\b(?:wrong|belongs?|should(?:n't| not) be|out of|away
 
 
 def _already_there(effect: Effect, scene: Scene) -> list[str]:
-    """A thing put at a place it already stands at: nobody asks for that ("it is in the wrong car
-    park; it belongs in the western one" read as the car park it is in)."""
+    """A thing put where it already stands, and nothing else done to it: nobody asks for that, so
+    the words that picked it out were read as where it should go ("it is in the wrong car park; it
+    belongs in the western one" read as the car park it is in, "the tree adjacent to the bus stop
+    has to go" put next to the bus stop, "the cars on Campus Drive have to go" put in its lane)."""
     out = []
+    touched = [str(c.args.get("asset")) for c in effect.calls if c.tool not in QUERY_TOOLS]
+    after = effect.outcome.after if effect.outcome else scene
     for call in effect.calls:
         where = call.args.get("location")
         thing = scene.asset(str(call.args.get("asset")))
-        if call.tool != "place_asset" or not isinstance(where, dict) or where.get("relation") != "at" or thing is None:
+        if call.tool != "place_asset" or not isinstance(where, dict) or thing is None or touched.count(thing.id) > 1:
             continue
-        place = scene.landmark(str(where.get("target")))
-        if place is not None and place.polygon and _near(scene, thing, place.name):
-            out.append(f"{thing.id} already stands in {place.name}")
+        moved = after.asset(thing.id) or thing
+        stands = _standing_at(scene, thing, moved, where, touched)
+        if stands is not None:
+            out.append(f"{thing.id} already stands {stands}")
     return out
+
+
+def _standing_at(scene: Scene, thing: AssetInstance, moved: AssetInstance, where: dict[str, Any], touched: list[str]) -> str | None:
+    """Where `thing` already stands, said as `where` says it, if it already stands there: in the
+    area named, in the lane named, or by the landmark or unmoved thing named (and `moved`, where
+    the plan puts it, is no nearer); None when it does not or `where` asks for a distance, a side,
+    a heading or a spot along a lane."""
+    if any(where.get(k) is not None for k in ("distance", "along_m", "side", "offset_m", "x", "y", "heading")):
+        return None
+    relation, target = where.get("relation"), str(where.get("target") or "")
+    place = scene.landmark(target)
+    if relation == "at" and place is not None and place.polygon:
+        return f"in {place.name}" if _near(scene, thing, place.name) else None
+    if relation == "in_lane" and where.get("lane") is None:
+        lane = lane_at(scene, thing.pose.x, thing.pose.y)
+        return f"in {lane.id}" if lane is not None and lane.id == target else None
+    if relation in ("at", "next_to") and target and not target.lower().startswith("ego"):
+        try:
+            spot = resolve_target(scene, target)
+        except ToolError:
+            return None
+        was, now = (math.dist((a.pose.x, a.pose.y), (spot.x, spot.y)) for a in (thing, moved))
+        if spot.kind in ("landmark", "asset") and spot.polygon is None and target not in touched and was <= BY_A_THING_M and now >= was - 1.0:
+            return f"by {target}"
+    return None
+
+
+_TOO_MANY = re.compile(r"\b(?:too many|fewer)\b")
+# How a thing should look, said as more or less of a quality: "look a bit less aggressive", "seem more friendly".
+_LOOKS_MORE_OR_LESS = re.compile(r"\b(?:look|looks|looking|appear|appears|seem|seems)\s+(?:(?:a (?:bit|little|touch|lot)|a little bit"
+                                 r"|slightly|much|far|way|somewhat|even|rather)\s+)?(?:less|more)\b")
 
 
 # Said of a move, words for a small one ("nudge the bench a little"); a move longer than this is no small one.
@@ -859,6 +914,24 @@ def _not_the_extreme(request: Request, effect: Effect, scene: Scene) -> list[str
     if pick.id == acted[0].id:
         return []
     return [f"you said the {said.group(0)} {kind.replace('_', ' ')}, which is {pick.id}, but the plan acts on {acted[0].id}"]
+
+
+def _not_the_biggest(request: Request, effect: Effect, scene: Scene) -> list[str]:
+    """A plan that acts on things of the kind a size word picks among ("the biggest vehicle", "the
+    tallest of the trees") other than the ones it picks (the search tool's figures say which)."""
+    said = md.SIZE_SUPERLATIVE.search(request.masked)
+    if said is None or request.question:
+        return []
+    after = request.masked[said.end() : said.end() + 40]
+    groups = [m for m in md.groups_said(request.masked[said.start() : said.end() + 40]).values()]
+    named = ph.find_categories(after)
+    kinds = set(groups[0]) if groups else {named[0].category} if named else set()
+    acted = [a for a in [*effect.removed, *effect.changed] if a.id != "ego" and a.category in kinds]
+    picks = most_of(md.most_said(said.group(1)), [a for a in scene.assets if a.category in kinds])
+    wrong = [a for a in acted if a.id not in {p.id for p in picks}]
+    if not wrong:
+        return []
+    return [f"you said the {said.group(1)} one, which is {_names(picks)}, but the plan also acts on {_names(wrong)}"]
 
 
 def _outermost(request: Request, effect: Effect, scene: Scene) -> tuple[AssetInstance, AssetInstance] | None:

@@ -19,6 +19,7 @@ from functools import cache
 from typing import Any
 
 from drivetwin.orchestrator.planning.grounding import GroundingUnavailable, embed
+from drivetwin.orchestrator.planning.rules.modifiers import SIZE_WORDS
 from drivetwin.tools.appearance import COLOURS
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import Scene
@@ -39,8 +40,9 @@ _PLACE_HEADS = ("place", "building", "spot", "location", "site", "entrance", "ex
 _CLAUSE_START = r"(?:that|which|who|where|whose|with|for|you|we|people|they|everyone|[a-z]+ers|[a-z]+ists|students|of the campus|of campus)"
 # Catalog tags that are not nouns a person calls a thing by.
 _NOT_HEADS = frozenset(["ego", "actor", "npc", "permanent", "temporary", "vulnerable", "vru", "maintenance", "street furniture"])
-# Modifiers that pick one out rather than say what it is: a colour or what it is doing ("the red car", "the parked cars").
-_PICKING = frozenset([*COLOURS, "parked", "moving", "driving", "stopped", "stationary", "nearest", "closest", "furthest"])
+# Modifiers that pick one out rather than say what it is: a colour, what it is doing or its size among
+# the others ("the red car", "the parked cars", "the smallest vehicle").
+_PICKING = frozenset([*COLOURS, *SIZE_WORDS, "parked", "moving", "driving", "stopped", "stationary", "nearest", "closest", "furthest"])
 
 
 # A clause that only says where a thing is ("which are standing in lot B", "parked by the gate").

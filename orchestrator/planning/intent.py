@@ -101,6 +101,7 @@ ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create
 
 _QUESTION_START = re.compile(r"(?:^\s*|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question)\s*,?\s+)*(which|what|in which|in what|where|how|is there|are there|is the|are the|does|do any|who|whats|wheres|hows|whos"
                              r"|is anything|is any|is anyone|is anybody|is someone|is somebody|is nobody|are any|is something|has anything|has anyone|have any|do the"
+                             r"|do (?:we|you|i) (?:have|see|got)|have (?:we|you) got|(?:we|you) got any|got any"  # "do we have any bikes"
                              # "is it dark yet", "is it raining": a state asked about; "is it possible to ..." asks for a change
                              r"|is it(?! (?:possible|ok|okay|alright|all right|fine|feasible|allowed|doable|worth|a good idea|too|time|ever)\b))\b"
                              # "the gates, where are they": the thing first, the question after it
@@ -161,8 +162,13 @@ _WRAPPED = re.compile(
 
 # A clause saying why ("... so traffic can flow again", "... so that the ego has to stop", "in
 # order to test the wipers"): the reason for a request, not a second request.
+# A want said as what would do good, ending its clause or before a place ("so maybe two benches would
+# help", "a couple of bins might be handy by the gate"): what is asked for, never a reason.
+WOULD_HELP = (r"(?:would|could|might|may)(?: \w+ly)? (?:help|do the trick|be (?:\w+ )?(?:nice|good|great|handy|useful|welcome|ideal))"
+              r"(?=\s*(?:[,.;!?]|$|(?:here|there|too|i think|i reckon|i guess|by|at|near|next to|beside|around|outside|in|on)\b))")
 _REASON = re.compile(
-    r",?\s+(?:so that|so as to|in order to|in order that|so)\s+(?:(?:the |a |our |we |they |it |cars |traffic |people )?(?:[a-z'-]+\s+){0,2}\w*\s*)?"
+    r",?\s+(?:so that|so as to|in order to|in order that|so)\s+(?![^.;!?]*\b" + WOULD_HELP + ")"
+    r"(?:(?:the |a |our |we |they |it |cars |traffic |people )?(?:[a-z'-]+\s+){0,2}\w*\s*)?"
     # "... so people can rest, and a litter bin beside it": the reason ends where a second thing is asked for
     r"(?:can|could|will|would|may|might|won'?t|can'?t|cannot|doesn'?t|don'?t|has to|have to|gets?|is|are)\b(?:(?!,?\s+and\s+(?:a|an|some|two|three|\d+)\s)[^.;!?])*"
     # "... so that it blocks oncoming traffic": whatever follows "so that" says why

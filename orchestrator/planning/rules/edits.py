@@ -31,7 +31,7 @@ from drivetwin.orchestrator.planning.rules.reading import (
 )
 from drivetwin.tools.appearance import COLOURS, hex_colour
 from drivetwin.tools.base import ToolCall
-from drivetwin.tools.search import lane_under
+from drivetwin.tools.search import lane_under, most_of
 from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, polyline_length
@@ -60,6 +60,9 @@ _ANCHOR_BEFORE = re.compile(r"\b(?:near|from|to|behind|ahead of|in front of|of|b
 _CONSPICUOUS = ("stand out", "stands out", "hard to miss", "eye-catching", "conspicuous", "easy to spot", "easier to spot", "hi-vis", "high-vis",
                 "more visible", "easier to see", "easy to see")
 CONSPICUOUS_COLOUR = "orange"
+# Standing out said as too much: "too conspicuous", "less eye-catching", "stands out too much", "tone it down".
+TOO_CONSPICUOUS = re.compile(r"\b(?:too|less|not (?:so|as)|overly)\s+(?:\w+\s+)?(?:conspicuous|eye-catching|visible|hard to miss|easy to spot)"
+                              r"|\bstands? out (?:\w+\s+)?too much\b|\btone (?:it|them|that|this|\w+) down\b|\bblend in\b")
 # A motion verb with a side and no amount ("pull forward", "nudge it left", "roll back"), not a
 # relation ("left of the bench") or a lane ("the right lane").
 _SIDE_MOVE = re.compile(
@@ -115,6 +118,13 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             present = [i for i in present if (a := scene.asset(i)) is not None and side[1](a)]
         if not present:
             return []
+        sized = _SIZE_PICKED.search(r.low[: mention.start]) or _SIZE_OF.match(r.low[mention.end :])
+        # "the biggest vehicle", "the car that's largest", "the tallest of the trees"
+        if sized is not None and (not mention.plural or " of " in sized.group(0)):
+            picked = most_of(md.most_said(sized.group(1)), [a for i in present if (a := scene.asset(i)) is not None])
+            if len(picked) == 1:
+                return [picked[0].id]
+            present = [a.id for a in picked]  # several as big: one of them, which the check asks about
         nearest = _NEAREST_TO.match(r.low[mention.end :])
         furthest = _FURTHEST_FROM.match(r.low[mention.end :])
         if (nearest or furthest) and not mention.plural:  # "the car nearest the Student Union", "... furthest from"
@@ -142,6 +152,12 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         # "move the bench to the fountain" then "actually, put it back by the bus stop": what the last edit touched
         return _asked_about(memory, scene) or [i for i in memory.last_touched() if scene.asset(i) is not None]
     return []
+
+
+# A size word said just before the thing ("the biggest vehicle", "the very tallest tree") or after it
+# ("the car that is largest").
+_SIZE_PICKED = re.compile(md.SIZE_SUPERLATIVE.pattern + r"\s+(?:(?:of (?:the|all the|those|these) )|[a-z]+\s+)?$")
+_SIZE_OF = re.compile(r"\s+(?:that is|that's|which is|which's)\s+(?:the\s+)?" + md.SIZE_SUPERLATIVE.pattern.removeprefix(r"\b"))
 
 
 # One picked from a group: "one of the cars", "just one of those family cars".
@@ -475,7 +491,7 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[Too
     colour = asked[-1] if asked else next((c for c in COLOURS if r.has((c,))), None)
     if colour is None and r.has(("blend in", "match", "same colour as", "colour of", "coloured like")):
         colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
-    if colour is None and r.has(_CONSPICUOUS):
+    if colour is None and r.has(_CONSPICUOUS) and not TOO_CONSPICUOUS.search(r.low):  # "it stands out too much": less, never more
         colour = CONSPICUOUS_COLOUR
     like = _COLOUR_FROM.search(r.low) if colour is None else None
     source = named_at(scene, f" {r.low[like.end():]}", []) if like is not None else None
@@ -1062,4 +1078,4 @@ def _bare_angle(low: str) -> re.Match[str] | None:
     return found[0] if len(found) == 1 else None
 
 
-__all__ = ["FURTHEST", "behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]
+__all__ = ["FURTHEST", "TOO_CONSPICUOUS", "behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]

@@ -57,8 +57,21 @@ def compass_direction(text: str) -> str | None:
     return said.pop() if len(said) == 1 else None
 
 
-# Words after which a singular names a kind, not one thing: "every vehicle", "how many vehicle".
-_COUNTING = r"\b(?:every|each|all|any|how many|\d+) "
+# A thing picked by its size among those of a kind or group ("the biggest vehicle", "which tree is
+# the tallest"): the word (group 1), read as the search tool's superlative by most_said.
+SIZE_WORDS = ("tallest", "highest", "shortest", "heaviest", "lightest", "longest", "widest", "biggest", "largest", "smallest", "tiniest")
+SIZE_SUPERLATIVE = re.compile(rf"\b({'|'.join(SIZE_WORDS)})\b")
+_MOST_AS = {"highest": "tallest", "largest": "biggest", "tiniest": "smallest"}
+
+
+def most_said(word: str) -> str:
+    """The search tool's superlative for a size word ("largest" is "biggest")."""
+    return _MOST_AS.get(word, word)
+
+
+# Words after which a singular names a kind, not one thing: "every vehicle", "how many vehicle", "the biggest vehicle".
+_COUNTING = r"\b(?:every|each|all|any|how many|\d+|" + SIZE_SUPERLATIVE.pattern.removeprefix(r"\b") + r") "
+
 
 
 @cache
@@ -197,5 +210,5 @@ SMALL_MOVE = (*SMALL, "a touch", "a tad", "a smidge", "a fraction", "a few inche
               "budge", "scoot")
 
 
-__all__ = ["COMPASS_VECTORS", "MATERIAL_WORDS", "SMALL", "SMALL_MOVE", "catalog_tags", "compass_direction", "facing_direction", "groups_said",
-           "kind_of", "layout_said", "material_said", "outer_direction", "partitive_count", "rows_said"]
+__all__ = ["COMPASS_VECTORS", "MATERIAL_WORDS", "SIZE_SUPERLATIVE", "SIZE_WORDS", "SMALL", "SMALL_MOVE", "catalog_tags", "compass_direction", "facing_direction", "groups_said",
+           "kind_of", "layout_said", "material_said", "most_said", "outer_direction", "partitive_count", "rows_said"]

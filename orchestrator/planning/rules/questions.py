@@ -230,8 +230,6 @@ _SETTING_EITHER = re.compile(rf"\b{_STATES}\b[^.?!]*\bor\b[^.?!]*\b{_STATES}\b")
 # A place asked for by which of its kind it is: "which car park ...", "which marked pedestrian crossing ...".
 _WHICH_PLACE = re.compile(r"\bwhich\s+(?:[a-z]+\s+){0,2}$")
 # A superlative of size or weight: "the tallest thing", "which car is the heaviest" (as find_assets orders by).
-_MOST_SAID = re.compile(r"\b(tallest|highest|shortest|heaviest|lightest|longest|widest|biggest|largest|smallest|tiniest)\b")
-_MOST_AS = {"highest": "tallest", "largest": "biggest", "tiniest": "smallest"}
 # Where to cross a road on foot: "where can people cross the road?", "where should I cross?".
 _WHERE_TO_CROSS = re.compile(r"\bwhere\s+(?:can|could|should|do|does|would|may|might|are|is)\s+(?:[a-z']+\s+){1,3}?cross\b")
 
@@ -253,14 +251,14 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "is it raining?", "what's the weather like"
     if _SETTING_EITHER.search(low) and not r.mentions:  # "am I doing this run in the dark, or is it still daytime?"
         return Part(ToolCall(tool="describe_environment", args={}), None)
-    most = _MOST_SAID.search(low)
+    most = md.SIZE_SUPERLATIVE.search(low)
     if most is not None and not _NEAREST.search(low) and not re.search(r"\b(?:lanes?|roads?|streets?|buildings?|landmarks?|places?)\b", r.masked):
         # "which car is the heaviest?", "the smallest sign": every one of the kind, by its figure
         head = r.mentions[0] if r.mentions else None
         word = ph.singular(r.low[head.start : head.end].strip()) if head is not None else next(
             (w for w in map(ph.singular, ph.tokens(low)) if w in md.catalog_tags()), "")
         kind = f"{word}s" if word in md.catalog_tags() else head.category if head is not None else None
-        ranked = {"most": _MOST_AS.get(most.group(1), most.group(1)), **({"category": kind} if kind else {})}
+        ranked = {"most": md.most_said(most.group(1)), **({"category": kind} if kind else {})}
         return Part(ToolCall(tool="find_assets", args=ranked), None)
     if _WHERE_TO_CROSS.search(low) and {m.category for m in r.mentions} <= {"pedestrian"}:
         # "where can people cross the road?": the marked crossings, nearest the place said first

@@ -351,9 +351,10 @@ ORDER_AT_PLACE_M = 25.0
 
 
 def counted_kinds(low: str) -> set[str]:
-    """The categories a thing counted from a side, or said to be the middle one, may be, by the word
-    it was called ("the second car from the left", "the middle car": every kind the catalog tags a car)."""
-    kinds: set[str] = set()
+    """The categories a thing counted from a side, said to be the middle one or picked by its size
+    may be, by the word it was called ("the second car from the left", "the middle car", "the
+    biggest vehicle": every kind the catalog tags a car or a vehicle)."""
+    kinds = {c for members in md.groups_said(low).values() for c in members} if md.SIZE_SUPERLATIVE.search(low) else set()
     # "the car by the union and the one in the middle of the row": the middle one is of a kind said before
     middles = re.findall(r"[a-z]+", low) if _MIDDLE_SAID.search(low) else []
     for word in (*(ph.singular(w) for w in middles), *(ph.singular(s.group(0).split()[-4]) for s in _ORDER_SAID.finditer(low))):

@@ -20,7 +20,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import CLOCK_WORDS
 from drivetwin.orchestrator.planning.rules.inflection import forms
-from drivetwin.orchestrator.planning.rules.modifiers import MATERIAL_WORDS
+from drivetwin.orchestrator.planning.rules.modifiers import MATERIAL_WORDS, groups_said
 from drivetwin.orchestrator.planning.rules.numbers import UNIT_WORDS, decimal_points, spelt_measures
 from drivetwin.orchestrator.planning.rules.reading import ONCOMING_WORDS
 from drivetwin.tools.appearance import COLOURS
@@ -403,12 +403,26 @@ _REARWARD = re.compile(r"\b(?:rearwards?|astern)\b", re.IGNORECASE)
 # "in a northerly direction", "westwards": the compass way itself.
 _COMPASS_WAY = re.compile(r"\b(?:in an? )?(north|south|east|west)(?:erly(?: direction)?|wards?)\b(?! (?:lane|traffic|carriageway|side)\b)", re.IGNORECASE)
 
+# Halving things said as a verb: "halve the lamps", "cut the number of cones in half", "reduce the trees by
+# 50%" are half of them taken away (not "halve the speed": only where the words name things).
+_HALVE = re.compile(r"\bhalve ((?:the (?:number|amount|count) of )?)((?:[\w'-]+\s+){0,5}?[\w'-]+)(?=\s*(?:[,.;!?]|$|\s(?:on|in|at|by|near|along|from|and)\b))",
+                    re.IGNORECASE)
+_IN_HALF = re.compile(r"\b(?:cut|reduce|drop|bring down)\s+(?:the (?:number|amount|count) of\s+)?((?:[\w'-]+\s+){1,6}?)"
+                      r"(?:in half|by half|by (?:50|fifty) ?(?:%|per ?cent))(?!\w)", re.IGNORECASE)
+
+
+def _halved(things: str, said: str) -> str:
+    """"remove half of" `things` where they name things, else the words `said` as they were."""
+    things = things.strip() if re.match(r"(?:the|those|these|all|our|my|its|their)\b", things.strip()) else f"the {things.strip()}"
+    return f"remove half of {things} " if ph.find_categories(things) or groups_said(things) else said
+
 
 def _formal_forms(text: str, vocab: frozenset[str]) -> str:
     """`text` with its formal, dictated and spelt-out forms written as the plain words (see above)."""
     text = _NUMBER_AND_FIGURES.sub(lambda m: m.group(2) if ph.NUMBER_WORDS.get(m.group(1).lower()) == int(m.group(2)) else m.group(0), text)
     text = _COMPASS_WAY.sub(r"\1", _ADJACENT.sub("next to", _SAID_THING.sub(r"\1", text)))
-    text = _REARWARD.sub("backward", text)
+    text = _HALVE.sub(lambda m: _halved(m.group(2), m.group(0)), text)
+    text = _REARWARD.sub("backward", _IN_HALF.sub(lambda m: _halved(m.group(1), m.group(0)), text))
     text = _COMPASS_SHORT.sub(lambda m: _COMPASS_WORDS[m.group(1).lower()], _TOO_MANY.sub(r"\1 too \2", text))
     return _SPELT_OUT.sub(lambda m: joined if (joined := m.group(0).replace(" ", "")).lower() in vocab else m.group(0), text)
 
