@@ -124,7 +124,7 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             picked = most_of(md.most_said(sized.group(1)), [a for i in present if (a := scene.asset(i)) is not None])
             if len(picked) == 1:
                 return [picked[0].id]
-            present = [a.id for a in picked]  # several as big: one of them, which the check asks about
+            present = [a.id for a in picked]  # several as big: the rest of the reading picks among them
         nearest = _NEAREST_TO.match(r.low[mention.end :])
         furthest = _FURTHEST_FROM.match(r.low[mention.end :])
         if (nearest or furthest) and not mention.plural:  # "the car nearest the Student Union", "... furthest from"
@@ -154,10 +154,10 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
     return []
 
 
-# A size word said just before the thing ("the biggest vehicle", "the very tallest tree") or after it
-# ("the car that is largest").
+# A size word said just before the thing ("the biggest vehicle", "the tallest green tree", "the biggest
+# of the cars") or after it ("the car that is largest").
 _SIZE_PICKED = re.compile(md.SIZE_SUPERLATIVE.pattern + r"\s+(?:(?:of (?:the|all the|those|these) )|[a-z]+\s+)?$")
-_SIZE_OF = re.compile(r"\s+(?:that is|that's|which is|which's)\s+(?:the\s+)?" + md.SIZE_SUPERLATIVE.pattern.removeprefix(r"\b"))
+_SIZE_OF = re.compile(r"\s+(?:that is|that's|which is)\s+(?:the\s+)?" + md.SIZE_SUPERLATIVE.pattern.removeprefix(r"\b"))
 
 
 # One picked from a group: "one of the cars", "just one of those family cars".
