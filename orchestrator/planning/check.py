@@ -149,9 +149,10 @@ _AWAY = re.compile(r"\b(?:get|move|send|shoo|clear|chase)\s+(?:the|those|these|t
 # Things to be kept away, said as the object of a verb of deterring ("something to keep people off the
 # grass", "deter cyclists from the footpath", "to stop cars parking there"): never what the plan adds.
 # ("keep the walker waiting" is having one; kept, it must be kept off, out or away.)
-_KEPT_AWAY = re.compile(r"\b(?:(?P<keep>keep|keeps|keeping)|stop|stops|stopping|prevent|prevents|preventing|deter|deters|deterring"
-                        r"|discourage|discourages|discouraging|ban|bans|banning|bar|bars|barring|warn off|scare (?:off|away))\s+"
-                        r"(?:(?:the|any|all|those|these|other)\s+)?(?:[a-z]+\s+)?$")
+# (a verb, not "the bus stop with cones": no article before it, no preposition after)
+_KEPT_AWAY = re.compile(r"(?<!\bthe )(?<!\ba )(?<!\bbus )(?<!\bshuttle )\b(?:(?P<keep>keep|keeps|keeping)|stop|stops|stopping|prevent|prevents"
+                        r"|preventing|deter|deters|deterring|discourage|discourages|discouraging|ban|bans|banning|bar|bars|barring|warn off"
+                        r"|scare (?:off|away))\s+(?:(?:the|any|all|those|these|other)\s+)?(?:(?!(?:with|at|by|in|on|near|for|to|from|and|of)\b)[a-z]+\s+)?$")
 _KEPT_OFF = re.compile(r"\s+(?:[a-z]+\s+)?(?:off|away|out|from|back|clear)\b")
 # Words asking for one more of a thing there: what answers them adds.
 _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
@@ -323,6 +324,10 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if from_ego and two_ends and (ends_not_ego or not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked)):
         out.append("the plan measures from the ego, which your words do not name")  # "how far is the hosptial from the gate"
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
+    if (both := [a for a in effect.removed if a.id in {b.id for b in effect.added}]):  # nothing comes of it
+        out.append("the plan adds " + _names(both) + " and takes it away again")
+    if _MOVE_ONLY.search(request.low) and effect.added and not effect.changed and not effect.removed and not ADD_WORDS.search(request.low):
+        out.append("you asked to move something, but the plan only adds " + _names(effect.added))  # "reposition that traffic"
     # A request that only takes away never adds, and one that only adds never removes; with
     # words of both ("swap", "replace", "instead"), each half is judged by what it names.
     says_add = bool(ADD_WORDS.search(request.low))
@@ -724,13 +729,18 @@ def _standing_at(scene: Scene, thing: AssetInstance, moved: AssetInstance, where
             spot = resolve_target(scene, target)
         except ToolError:
             return None
+        # by a place, it is at it ("the bin at the bus stop smells, take it away" is no move to the bus stop);
+        # by a thing, only a move no nearer leaves it as it was ("the bench right up against the bin" is nearer)
         was, now = (math.dist((a.pose.x, a.pose.y), (spot.x, spot.y)) for a in (thing, moved))
-        if spot.kind in ("landmark", "asset") and spot.polygon is None and target not in touched and was <= BY_A_THING_M and now >= was - 1.0:
+        nearer = now < was - 1.0 and (spot.kind == "asset" or relation == "next_to")
+        if spot.kind in ("landmark", "asset") and spot.polygon is None and target not in touched and was <= BY_A_THING_M and not nearer:
             return f"by {target}"
     return None
 
 
 _TOO_MANY = re.compile(r"\b(?:too many|fewer)\b")
+# Verbs that only ever move what is there: "reposition that traffic", "relocate the bins".
+_MOVE_ONLY = re.compile(r"\b(?:reposition|repositions|relocate|relocates|move|moves|shift|shifts|transfer|shunt|budge|nudge)\b")
 # How a thing should look, said as more or less of a quality: "look a bit less aggressive", "seem more friendly".
 _LOOKS_MORE_OR_LESS = re.compile(r"\b(?:look|looks|looking|appear|appears|seem|seems)\s+(?:(?:a (?:bit|little|touch|lot)|a little bit"
                                  r"|slightly|much|far|way|somewhat|even|rather)\s+)?(?:less|more)\b")

@@ -50,6 +50,10 @@ from drivetwin.worlds.scene import AssetInstance, Lane, Scene
 _DEFINITE = ("the", "that", "this", "those", "these", "our", "my", "all", "every", "each", "both")
 # What comes before a thing named bare as a clause's topic: nothing, a stop, a filler, a wish.
 _BARE_TOPIC = re.compile(r"(?:^|[,.;:!?]|\b(?:ok|okay|so|and|then|now|hmm|um|want|need))\s*$")
+# Verbs a thing is said bare after by a speaker who drops articles, and any article at all ("put" and
+# "place" make new things as often as they move those there: "put bench near fountain" is asked about).
+_BARE_VERBS = ("make", "move", "paint", "colour", "color", "shift", "park", "bring", "take", "turn")
+_ARTICLE = re.compile(r"\b(?:a|an|the)\b")
 # Words that ask for a new one even after a definite article ("the new bench", "another").
 _NEW = re.compile(
     r"\b(add|adds|added|adding|new|another|(?<!out )(?<!apart )more(?!\s+[a-z]+(?:al|ful|ive|ous|ic|ible|able|ly|er|y)\b)(?! apart| spread)"
@@ -130,9 +134,10 @@ _WEATHER_NAMES = ("rain", "snow", "fog", "cloud", "overcast", "drizzle", "downpo
 _KIND_OF_WEATHER = {"rain": "rain", "drizzle": "rain", "downpour": "rain", "snow": "snow", "fog": "fog",
                     "cloud": "cloudy", "overcast": "cloudy",
                     "sunny": "clear", "sunshine": "clear", "clear sk": "clear"}
-_WEATHER_DENIED = re.compile(r"(?:\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently|clear|lift)\b"
+_WEATHER_DENIED = re.compile(r"(?:\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently|clear|lift"
+                             r"|remove|kill|cancel|off)\b"  # "turn off the fog", "off the rain": switched off, as lamps are
                              r"|n't\b)[^,.;]*$")  # "clear the fog", "lift the fog": away with it
-_WEATHER_ENDED = re.compile(r"\w*(?:\s+\S+){0,2}?\s+(?:stops?|ends?|clears?|go(?:es)? away|lets? up)\b")
+_WEATHER_ENDED = re.compile(r"\w*(?:\s+\S+){0,2}?\s+(?:stops?|ends?|clears?|go(?:es)? away|lets? up|off)\b")
 # Clock times said by name: the time tool has presets for them, checked as parts of the day.
 _NAMED_TIMES = ("midnight", "noon", "midday")
 # Parts of the day a request names as a time to set; "this morning" is when, not what.
@@ -319,6 +324,10 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
         # bare as the clause's topic, with no word for adding, of which the scene holds one, is that one
         bare = (not m.plural and not asks_to_add and scene.count(m.category) == 1
                 and _BARE_TOPIC.search(m.before) is not None)
+        # "make SUV colour blue", "move hydrant to other side of road": with no article at all, as some
+        # speakers say it, the one thing of its kind the scene holds is as likely as a new one
+        bare = bare or (not m.plural and scene.count(m.category) == 1 and _NEW.search(masked) is None
+                        and m.last_words(1)[-1:] in ([v] for v in _BARE_VERBS) and not _ARTICLE.search(masked))
         # "the red bench", but not "give the bus stop a bench": the nearest article is the noun's
         indefinite = m.last_words(1)[-1:] in (["a"], ["an"], ["some"], ["any"])
         # "cars in lot B: park them nose to tail": things said bare, then pointed back at, are those there

@@ -14,9 +14,12 @@ from drivetwin.tools.appearance import COLOURS
 
 # How things go, said of people or many things: "people there must have nowhere to ...", "cars keep
 # getting hidden behind ...", "the kids can't see them": a state of affairs, not a request.
+# Said of one ("the kid can't sleep unless it's dark", "students from the library want to sit outside"), it is
+# who the request is for too, as is whoever wants or complains.
 HOW_THINGS_GO = re.compile(
-    r"(?:people|drivers|kids|children|students|pedestrians|visitors|folks|passengers|everyone|nobody|no one)\b[^,;.]*?"
-    r"\b(?:must have|keep|keeps|can't|cannot|couldn't|don't|doesn't|never|always|have nowhere|has nowhere|have no|struggle)\b"
+    r"(?:people|drivers|kids?|child|children|students?|pedestrians|visitors?|folks|passengers|everyone|nobody|no one)\b[^,;.]*?"
+    r"\b(?:must have|keep|keeps|can't|cant|cannot|couldn't|don't|doesn't|never|always|have nowhere|has nowhere|have no|struggle"
+    r"|want|wants|would like|wish|wishes|complain|complains|complained)\b"
     r"|\b[a-z]+s\s+(?:keep|kept)\s+(?:getting|being|on)\b")
 # What others say, which the request follows ("residents complain the test car dawdles and holds the
 # buses up. Have it do 30 mph."); not what they say should be ("people say there should be a bench").
@@ -116,7 +119,7 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"distance (?:between|from)|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
-                   r"(to|i|we|me) know (?:[a-z]+ )?(what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"
+                   r"(to|i|we|me|wants?|wanna|wan) know (?:[a-z]+ )?(what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"
                    # "kindly advise the location of ...", "need suv_1's pose in the map frame": where something is
                    r"advise (?:me |us )?(?:of |on |as to )?the (?:the )?(?:location|position|whereabouts|distance|number)|"
                    # "coordinates of the nearest tree?", "req grid ref of the bin": where something is, asked bare

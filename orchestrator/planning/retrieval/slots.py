@@ -176,12 +176,19 @@ def read_slots(text: str, scene: Scene) -> Slots:
     for words, relation in _RELATIONS:
         for m in list(re.finditer(rf"\b{re.escape(words)}\b", low)):
             take(m, "relation", relation)
-    found += _words(low, scene)
+    # weather said gone ("no more snow", "kill the rain", "turn off the fog") is clear weather
+    found += [(at, kind, "clear" if kind == "weather" and _WEATHER_GONE.search(low[max(0, at - 24) : at]) else value)
+              for at, kind, value in _words(low, scene)]
     if "light" in low or "lamp" in low:
         state = re.search(r"\b(on|off)\b", low)
         if state:
             found.append((state.start(), "lights", state.group(1)))
     return Slots([(kind, value) for _, kind, value in sorted(found, key=lambda f: f[0])])
+
+
+# Words before a weather that deny it: what is asked for is the weather without it.
+_WEATHER_GONE = re.compile(r"\b(?:no|no more|stop|end|without|get rid of|rid of|kill|cancel|remove|lift|clear|off|(?:turn|switch|shut) off"
+                           r"|don'?t want|do not want)\s+(?:(?:the|any|all|that|this|more|of)\s+)*$")
 
 
 def _words(low: str, scene: Scene) -> list[tuple[int, str, Any]]:

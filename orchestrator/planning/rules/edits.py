@@ -952,8 +952,9 @@ def other_ways(calls: list[ToolCall]) -> list[list[ToolCall]]:
     return [[*calls[:i], calls[i].model_copy(update={"args": {**rest, k: v}}), *calls[i + 1 :]] for k, v in ways]
 
 
-# The far side of the road a thing stands by: "on the other side of the road", "across the street".
-_OTHER_SIDE = re.compile(r"\b(?:on|to|onto|over to) the other side of the (?:road|street)\b|\bacross the (?:road|street) from where it is\b")
+# The far side of the road a thing stands by: "on the other side of the road", "across the street" (the
+# articles may be left out: "to other side of road").
+_OTHER_SIDE = re.compile(r"\b(?:on|to|onto|over to) (?:the )?other side of (?:the )?(?:road|street)\b|\bacross the (?:road|street) from where it is\b")
 
 
 def _across_the_road(scene: Scene, thing: AssetInstance) -> tuple[float, float] | None:

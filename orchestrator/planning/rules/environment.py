@@ -26,8 +26,10 @@ HEAVY_INTENSITY, DEFAULT_INTENSITY, LIGHT_INTENSITY = 0.9, 0.6, 0.3
 _INTENSITY = re.compile(rf"(?:intensity (?:of |at |to |=\s*)?|strength (?:of )?)({NUMBER})|({NUMBER})\s*(%|percent)")
 # Weather kinds tried in order: "stop the rain" is clear before it is rain.
 _WEATHER_ORDER = ("clear", "snow", "fog", "rain", "cloudy")
-# Words that deny the weather after them: "no more fog", "we don't want any rain", "get rid of the snow".
-_DENIED = r"\b(?:no|not|don't|do not|without|never|get rid of|stop|end|enough|clear|lift) "
+# Words that deny the weather after them: "no more fog", "we don't want any rain", "get rid of the snow",
+# "turn off the fog", "off the rain" (switched off, as lamps are).
+_DENIED = (r"\b(?:no|not|don't|do not|without|never|get rid of|stop|end|enough|clear|lift|remove|kill|cancel"
+           r"|(?:turn|switch|shut|put|take) off|off) ")
 # Words that make "light" mean lamps, not a light drizzle.
 _LAMP_CONTEXT = ("street", "streets", "lamps", "headlights", "lights", "light up", "lit", "switch", "turn")
 
@@ -74,7 +76,7 @@ def weather(r: Reading) -> ToolCall | None:
             ):
                 continue  # "clear the roadworks away" is a removal
             words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
-            stopped = re.search(rf"\b(?:{words})\b(?:\s+\S+){{0,2}}?\s+(?:stop|stops|end|ends|clear|clears|go away|let up)\b", r.low)
+            stopped = re.search(rf"\b(?:{words})\b(?:\s+\S+){{0,2}}?\s+(?:stop|stops|end|ends|clear|clears|go away|let up|off)\b", r.low)
             # "wet roads, not a downpour though": how strong it is denied, not the rain
             strength = re.search(rf"\bnot (?:a |too |to |that |so )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)  # "not to thick"
             if kind != "clear" and strength is None and (re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low) or stopped):

@@ -410,6 +410,13 @@ _HALVE = re.compile(r"\bhalve ((?:the (?:number|amount|count) of )?)((?:[\w'-]+\
 _IN_HALF = re.compile(r"\b(?:cut|reduce|drop|bring down)\s+(?:the (?:number|amount|count) of\s+)?((?:[\w'-]+\s+){1,6}?)"
                       r"(?:in half|by half|by (?:50|fifty) ?(?:%|per ?cent))(?!\w)", re.IGNORECASE)
 
+# "of" ending a clause after what switches on and off is "off" mistyped: "streetlights of.", "turn them of".
+_OF_FOR_OFF = re.compile(r"\b((?:street ?|head ?)?(?:lights?|lamps?)|it|them|everything)\s+of\b(?=\s*(?:[.!?;,]|$|please\b|thanks?\b|over\b))",
+                         re.IGNORECASE)
+
+# A lot named by the radio alphabet: "lot Alpha" is lot A.
+_LOT_SPOKEN = re.compile(r"\b((?:parking )?lot|car park|parking) (alpha|bravo|charlie|delta)\b", re.IGNORECASE)
+
 
 def _halved(things: str, said: str) -> str:
     """"remove half of" `things` where they name things, else the words `said` as they were."""
@@ -421,7 +428,8 @@ def _formal_forms(text: str, vocab: frozenset[str]) -> str:
     """`text` with its formal, dictated and spelt-out forms written as the plain words (see above)."""
     text = _NUMBER_AND_FIGURES.sub(lambda m: m.group(2) if ph.NUMBER_WORDS.get(m.group(1).lower()) == int(m.group(2)) else m.group(0), text)
     text = _COMPASS_WAY.sub(r"\1", _ADJACENT.sub("next to", _SAID_THING.sub(r"\1", text)))
-    text = _HALVE.sub(lambda m: _halved(m.group(2), m.group(0)), text)
+    text = _LOT_SPOKEN.sub(lambda m: f"{m.group(1)} {m.group(2)[0].upper()}", text)
+    text = _HALVE.sub(lambda m: _halved(m.group(2), m.group(0)), _OF_FOR_OFF.sub(r"\1 off", text))
     text = _REARWARD.sub("backward", _IN_HALF.sub(lambda m: _halved(m.group(1), m.group(0)), text))
     text = _COMPASS_SHORT.sub(lambda m: _COMPASS_WORDS[m.group(1).lower()], _TOO_MANY.sub(r"\1 too \2", text))
     return _SPELT_OUT.sub(lambda m: joined if (joined := m.group(0).replace(" ", "")).lower() in vocab else m.group(0), text)
