@@ -35,6 +35,7 @@ BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|quit|g[ei]t rid(?: of)?|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|take (?:\w+ ){1,3}?out\b(?! of\b)|(?:has|have|needs?|must|should|ought) to come (?:down|out)\b(?! (?:of|from|to|onto|into)\b)|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)(?!\s+an?\s+(?!single\b))|fewer|less|lose|eliminate|erase|discard|scrap"
+    r"|strike (?=(?:the|that|those|these|all|both|it|them|every|most|some|half|one|two|three|\d+)\b)"  # "strike the set": off the stage
     r"|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cull\w*|prun(?:e|es|ed|ing)\b|weed(?:s|ed|ing)? (?:\w+ )?out"  # "them trees want thinning out"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
@@ -115,6 +116,8 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    # "kindly state the weather", "please identify the tree closest to ...": asked to say, not to set
                    r"(?:^|(?:please|kindly|pls|now|could you|can you|would you)\s+)(?:state|identify|report|indicate|specify|name)\s+(?:the|which|what|where|how)|"
                    r"tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|at what distance|how long is|"
+                   # "say position of the hydrant", "say separation to the traffic ahead": radio for "tell me"
+                   r"(?:^|[,:]\s*)say (?:the |your )?(?:position|location|separation|distance|heading|speed|weather|time|what|which|where|how)\b|"
                    r"(?:inventory|rundown|overview|summary|tally) of|how many|how far|how much|number of|count of|list of|"
                    r"distance (?:between|from)|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
@@ -278,7 +281,9 @@ def _contrasts(text: str) -> list[tuple[int, int, int]]:
 _SALUTATION = re.compile(
     r"(?:^|(?<=[.!?]))\s*(?:good\s+(?:morning|afternoon|evening|day)|hello|hi|hey|hiya|greetings|dear\s+\w+"
     r"|(?:many\s+)?thanks?(?:\s+you)?(?:\s+(?:so\s+much|kindly|very\s+much|in\s+advance|a\s+lot))?|cheers|(?:kind\s+|best\s+)?regards)"
-    r"(?:\s*,?\s+(?:there|all|everyone|team|folks|[a-z]+))?\s*(?:[,.!]+|$)", re.IGNORECASE)
+    r"(?:\s*,?\s+(?:there|all|everyone|team|folks|[a-z]+))?\s*(?:[,.!]+|$)"
+    # the one spoken to, called by a radio station's name or the machine's: "Tower, ...", "Control: ..."
+    r"|^\s*(?:tower|ground|control|base|approach|computer|system|drivetwin|sim|simulator)\s*[,:]", re.IGNORECASE)
 
 
 def without_salutations(text: str) -> str:

@@ -67,3 +67,23 @@ def test_a_thing_by_the_place_it_is_said_to_be_at_is_not_moved_there(campus, reg
     assert "already stands by bus stop" in (report.error or "")
     applied(campus, registry, Fixed(call("place_asset", asset="bench_1", location={"relation": "at", "target": "fountain"})),
             "take the bench over to the fountain")
+
+
+def test_struck_as_a_set_is_struck(campus, registry):
+    scene = _ruled(campus, registry, "strike both the hydrant and the bin").scene
+    assert scene.asset("fire_hydrant_1") is None and scene.asset("trash_bin_1") is None
+
+
+def test_radio_words_the_station_called_and_numbers_digit_by_digit(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("Control, say position of the bench")
+    assert report.ok and report.answer is not None and "bench_1" in report.answer
+    scene = _ruled(campus, registry, "three cones in a line across the eastbound lane, two-zero metres ahead of the ego").scene
+    cones = [a for a in scene.assets if a.category == "traffic_cone"]
+    ego = campus.asset("ego")
+    assert len(cones) == 3 and all(abs(a.pose.x - (ego.pose.x + 20.0)) < 3.0 for a in cones)
+
+
+def test_some_of_them_is_no_number_to_hold_a_removal_to(campus, registry):
+    scene = _ruled(campus, registry, "could you lose some of the cars").scene
+    left = [a for a in scene.assets if a.category in ("passenger_car", "suv")]
+    assert 0 < len(left) < 3

@@ -17,7 +17,7 @@ SEARCH_STARTS = ("where", "remind me", "how many", "how much", "find", "list", "
 PROPERTY_WORDS = ("mass", "masses", "weight", "weights", "weigh", "weighs", "how heavy", "size", "how big", "how long",
                   "how tall", "how wide", "dimensions", "properties", "length", "width", "height")
 REMOVE_WORDS = ("remove", "delete", "get rid of", "get rid", "take away", "take out", "clear away", "erase",
-                "eliminate", "despawn", "clear out", "destroy", "lose", "ditch", "scrap", "decommission",
+                "eliminate", "despawn", "clear out", "destroy", "lose", "ditch", "scrap", "decommission", "strike",
                 "throw away", "throw out", "take down", "dispose of", "clean up",
                 "tidy up", "clear the", "clear it", "clear them", "clear lot", "clear parking lot", "empty", "emptied", "cleared of", "no more", "none left", "none of", "without any", "gone")
 # "X is over", "the pedestrians went home": the goal is that X is gone.

@@ -194,12 +194,17 @@ def colours_asked(low: str) -> list[str]:
 _PARTITIVE = re.compile(r"\b(\w+)\s+of\s+(?:the|those|these|our|your|its|their)\s+(?:[a-z-]+\s+){0,3}$")
 
 
+def partitive_word(before: str) -> str | None:
+    """The word of a partitive ("one", "some" of "some of the ...") right before a thing named."""
+    said = _PARTITIVE.search(before)
+    return said.group(1) if said is not None else None
+
+
 def partitive_count(before: str) -> int | None:
     """The number of a partitive ("one of the ...") right before a thing named, if there is one."""
-    said = _PARTITIVE.search(before)
-    if said is None:
+    word = partitive_word(before)
+    if word is None:
         return None
-    word = said.group(1)
     return int(word) if word.isdigit() else NUMBER_WORDS.get(word)
 
 
@@ -211,4 +216,4 @@ SMALL_MOVE = (*SMALL, "a touch", "a tad", "a smidge", "a fraction", "a few inche
 
 
 __all__ = ["COMPASS_VECTORS", "MATERIAL_WORDS", "SIZE_SUPERLATIVE", "SIZE_WORDS", "SMALL", "SMALL_MOVE", "catalog_tags", "compass_direction", "facing_direction", "groups_said",
-           "kind_of", "layout_said", "material_said", "most_said", "outer_direction", "partitive_count", "rows_said"]
+           "kind_of", "layout_said", "material_said", "most_said", "outer_direction", "partitive_count", "partitive_word", "rows_said"]

@@ -414,6 +414,25 @@ _IN_HALF = re.compile(r"\b(?:cut|reduce|drop|bring down)\s+(?:the (?:number|amou
 _OF_FOR_OFF = re.compile(r"\b((?:street ?|head ?)?(?:lights?|lamps?)|it|them|everything)\s+of\b(?=\s*(?:[.!?;,]|$|please\b|thanks?\b|over\b))",
                          re.IGNORECASE)
 
+# Numbers said digit by digit, as on the radio: "two-zero metres" is 20, "heading zero niner zero" 090,
+# "one decimal seven five" 1.75 (only with a zero or a niner in them, or a decimal: "four-five metres"
+# may be four or five).
+_DIGIT_WORDS = {"zero": "0", "oh": "0", "one": "1", "two": "2", "three": "3", "four": "4", "five": "5", "six": "6", "seven": "7",
+                "eight": "8", "nine": "9", "niner": "9"}
+_DIGIT = r"(?:zero|one|two|three|four|five|six|seven|eight|nine|niner)"
+_RADIO_NUMBER = re.compile(rf"\b{_DIGIT}(?:[- ]{_DIGIT})*(?: (?:decimal|point) {_DIGIT}(?:[- ]{_DIGIT})*)?\b", re.IGNORECASE)
+
+
+def _radio_number(m: re.Match[str]) -> str:
+    said = m.group(0).lower()
+    words = re.findall(r"[a-z]+", said)
+    if not ({"zero", "niner", "decimal"} & set(words)) or len([w for w in words if w in _DIGIT_WORDS]) < 2:
+        return m.group(0)
+    return "".join("." if w in ("decimal", "point") else _DIGIT_WORDS[w] for w in words)
+
+# A sign said as a word before a figure: "x minus 40" is x = -40.
+_MINUS = re.compile(r"\b(?:minus|negative) (?=\d)", re.IGNORECASE)
+
 # A lot named by the radio alphabet: "lot Alpha" is lot A.
 _LOT_SPOKEN = re.compile(r"\b((?:parking )?lot|car park|parking) (alpha|bravo|charlie|delta)\b", re.IGNORECASE)
 
@@ -428,7 +447,8 @@ def _formal_forms(text: str, vocab: frozenset[str]) -> str:
     """`text` with its formal, dictated and spelt-out forms written as the plain words (see above)."""
     text = _NUMBER_AND_FIGURES.sub(lambda m: m.group(2) if ph.NUMBER_WORDS.get(m.group(1).lower()) == int(m.group(2)) else m.group(0), text)
     text = _COMPASS_WAY.sub(r"\1", _ADJACENT.sub("next to", _SAID_THING.sub(r"\1", text)))
-    text = _LOT_SPOKEN.sub(lambda m: f"{m.group(1)} {m.group(2)[0].upper()}", text)
+    text = _RADIO_NUMBER.sub(_radio_number, _LOT_SPOKEN.sub(lambda m: f"{m.group(1)} {m.group(2)[0].upper()}", text))
+    text = _MINUS.sub("-", text)
     text = _HALVE.sub(lambda m: _halved(m.group(2), m.group(0)), _OF_FOR_OFF.sub(r"\1 off", text))
     text = _REARWARD.sub("backward", _IN_HALF.sub(lambda m: _halved(m.group(1), m.group(0)), text))
     text = _COMPASS_SHORT.sub(lambda m: _COMPASS_WORDS[m.group(1).lower()], _TOO_MANY.sub(r"\1 too \2", text))
