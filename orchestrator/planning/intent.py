@@ -151,7 +151,14 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      r"|(?:^|[.!;?]\s*)(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come|disappear|vanish|leave)\b"
                      # "the car you just put there, could it go forward?": the same wish for a thing named first
                      r"|(?:^|[,.;:!?-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift|look|be|get|face"
-                     r"|disappear|vanish|leave)\b")
+                     r"|disappear|vanish|leave)\b"
+                     # "maybe the ego could... back up?", "perhaps the hydrant could live by JTEKT?", "could the bin shift
+                     # east?", "I wonder whether the parked cars could all go?": a wish for what a thing should do, hedged
+                     # (not what it is able to do: "could the truck fit in lot A?")
+                     r"|(?:^|[.!;?]\s*)(?:(?:maybe|perhaps|possibly|so|i wonder (?:whether|if))[,\s]+)?(?:(?:can|could|might) )?"
+                     r"(?:the|that|this|our|those|these|someone|somebody) (?:[\w'-]+ ){0,2}?(?:(?:could|might|may)(?: \w+ly| all| both| just)?(?:\s*\.+\s*|\s+))?"
+                     r"(?<!\bthe )(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come|disappear|vanish|leave|live|shift|back up|reverse"
+                     r"|cross|walk|change|slow|speed|stop|brake|sit|wait|head)\b(?! (?:in|into|through|under|past) (?:it|there|here)\b)")
 
 
 # English's ways of wrapping a request in a question ("is it possible to park ...", "any chance we

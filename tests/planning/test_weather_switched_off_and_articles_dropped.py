@@ -87,3 +87,12 @@ def test_some_of_them_is_no_number_to_hold_a_removal_to(campus, registry):
     scene = _ruled(campus, registry, "could you lose some of the cars").scene
     left = [a for a in scene.assets if a.category in ("passenger_car", "suv")]
     assert 0 < len(left) < 3
+
+
+def test_a_wish_for_what_a_thing_could_do_is_a_request(campus, registry):
+    assert not asks("maybe the bench could... sit over by the fountain?")
+    assert not asks("i wonder if the suv could head to lot a?")
+    assert asks("could the truck fit in lot a?")  # what it is able to do is asked
+    scene = _ruled(campus, registry, "perhaps the bin might move over by the fountain? anywhere there's fine").scene
+    bin_ = scene.asset("trash_bin_1")
+    assert abs(bin_.pose.x - 75.0) < 15 and abs(bin_.pose.y - 40.0) < 15
