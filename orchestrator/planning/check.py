@@ -324,7 +324,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if from_ego and two_ends and (ends_not_ego or not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked)):
         out.append("the plan measures from the ego, which your words do not name")  # "how far is the hosptial from the gate"
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
-    if (both := [a for a in effect.removed if a.id in {b.id for b in effect.added}]):  # nothing comes of it
+    if (both := _added_then_removed(effect)):  # nothing comes of it
         out.append("the plan adds " + _names(both) + " and takes it away again")
     if _MOVE_ONLY.search(request.low) and effect.added and not effect.changed and not effect.removed and not ADD_WORDS.search(request.low):
         out.append("you asked to move something, but the plan only adds " + _names(effect.added))  # "reposition that traffic"
@@ -707,6 +707,19 @@ def _already_there(effect: Effect, scene: Scene) -> list[str]:
         stands = _standing_at(scene, thing, moved, where, touched)
         if stands is not None:
             out.append(f"{thing.id} already stands {stands}")
+    return out
+
+
+def _added_then_removed(effect: Effect) -> list[AssetInstance]:
+    """Things the plan adds and then takes away again (one taken away and then added anew, as
+    "make that five" does with the last turn's three, is no such thing)."""
+    added: dict[str, AssetInstance] = {}
+    out = []
+    for op in effect.outcome.edit.ops if effect.outcome else ():
+        if op.op == "add":
+            added[op.asset.id] = op.asset
+        elif op.op == "remove" and op.before.id in added:
+            out.append(added.pop(op.before.id))
     return out
 
 
