@@ -65,15 +65,18 @@ def counts_named(masked: str) -> dict[str, int]:
     return out
 
 
+# Words of amount that say no number ("some of the cars", "a couple of benches" as a guess).
+_VAGUE_AMOUNTS = ("pair", "couple", "few", "several", "some")
+
+
 def _count_before(before: str) -> int | None:
     """The amount said just before a thing's name: "one of the" (partitive), "ten", "4" (two or more)."""
     partitive = md.partitive_count(before)
-    vague = ("pair", "couple", "few", "several", "some")  # "some of the cars" says no number
     if partitive is not None:
-        return None if md.partitive_word(before) in vague else partitive
+        return None if md.partitive_word(before) in _VAGUE_AMOUNTS else partitive
     word = (before.split()[-1:] or [""])[0]
     amount = int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
-    return amount if amount is not None and amount >= 2 and word not in vague else None
+    return amount if amount is not None and amount >= 2 and word not in _VAGUE_AMOUNTS else None
 
 
 def wrong_counts(masked: str, added: Iterable[AssetInstance], per: int = 1) -> list[str]:

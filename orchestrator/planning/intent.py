@@ -157,8 +157,9 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      # (not what it is able to do: "could the truck fit in lot A?")
                      r"|(?:^|[.!;?]\s*)(?:(?:maybe|perhaps|possibly|so|i wonder (?:whether|if))[,\s]+)?(?:(?:can|could|might) )?"
                      r"(?:the|that|this|our|those|these|someone|somebody) (?:[\w'-]+ ){0,2}?(?:(?:could|might|may)(?: \w+ly| all| both| just)?(?:\s*\.+\s*|\s+))?"
+                     # (a word straight after "the" names the thing: "the stop sign could ...")
                      r"(?<!\bthe )(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come|disappear|vanish|leave|live|shift|back up|reverse"
-                     r"|cross|walk|change|slow|speed|stop|brake|sit|wait|head)\b(?! (?:in|into|through|under|past) (?:it|there|here)\b)")
+                     r"|cross|walk|change|slow|speed|stop|brake|wait|head)\b(?! (?:in|into|through|under|past) (?:it|there|here)\b)")
 
 
 # English's ways of wrapping a request in a question ("is it possible to park ...", "any chance we

@@ -186,9 +186,10 @@ def read_slots(text: str, scene: Scene) -> Slots:
     return Slots([(kind, value) for _, kind, value in sorted(found, key=lambda f: f[0])])
 
 
-# Words before a weather that deny it: what is asked for is the weather without it.
-_WEATHER_GONE = re.compile(r"\b(?:no|no more|stop|end|without|get rid of|rid of|kill|cancel|remove|lift|clear|off|(?:turn|switch|shut) off"
-                           r"|don'?t want|do not want)\s+(?:(?:the|any|all|that|this|more|of)\s+)*$")
+# Words just before a weather that deny it ("no more snow", "turn off the fog"): what is asked for is the
+# weather without it. (Narrower than the rule planner's: "not too heavy rain" is still rain.)
+_WEATHER_GONE = re.compile(r"\b(?:no|stop|end|without|rid of|kill|cancel|remove|lift|clear|off|don'?t want|do not want)\s+"
+                           r"(?:(?:the|any|all|that|this|more|of)\s+)*$")
 
 
 def _words(low: str, scene: Scene) -> list[tuple[int, str, Any]]:

@@ -28,8 +28,7 @@ _INTENSITY = re.compile(rf"(?:intensity (?:of |at |to |=\s*)?|strength (?:of )?)
 _WEATHER_ORDER = ("clear", "snow", "fog", "rain", "cloudy")
 # Words that deny the weather after them: "no more fog", "we don't want any rain", "get rid of the snow",
 # "turn off the fog", "off the rain" (switched off, as lamps are).
-_DENIED = (r"\b(?:no|not|don't|do not|without|never|get rid of|stop|end|enough|clear|lift|remove|kill|cancel"
-           r"|(?:turn|switch|shut|put|take) off|off) ")
+_DENIED = r"\b(?:no|not|don't|do not|without|never|get rid of|stop|end|enough|clear|lift|remove|kill|cancel|off) "
 # Words that make "light" mean lamps, not a light drizzle.
 _LAMP_CONTEXT = ("street", "streets", "lamps", "headlights", "lights", "light up", "lit", "switch", "turn")
 
