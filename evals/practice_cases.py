@@ -385,6 +385,52 @@ def ego_speed_between(lo: float, hi: float) -> list[list[Json]]:
     ]
 
 
+def new_speed(actor: str, lo: float, hi: float) -> list[list[Json]]:
+    """Fair readings of a new speed: the lane behaviour at that speed, or a change-of-speed manoeuvre."""
+    return [
+        [does("drive_lane", asset=actor, speed_min=lo, speed_max=hi)],
+        [event_played(actor, "change_speed", 3.0)],
+    ]
+
+
+def slows_down(actor: str, seconds: float = 20.0) -> list[list[Json]]:
+    """Fair readings of braking: a stop, or a change of speed (down), started within `seconds`."""
+    return [[event_played(actor, "stop", seconds)], [event_played(actor, "change_speed", seconds)]]
+
+
+def backs_up(asset: str, lo: float, hi: float) -> list[list[Json]]:
+    """Fair readings of backing up: a shift backwards, or a reverse manoeuvre."""
+    return [[moved(asset, lo, hi, "backward")], [event_played(asset, "reverse", 3.0)]]
+
+
+def walks_over(lane: str | None = None, seconds: float = 10.0) -> list[list[Json]]:
+    """Fair readings of a walker going over the road: a crossing or jaywalk behaviour, or a crossing manoeuvre."""
+    return [
+        [does(["cross_road", "jaywalk"], "pedestrian", crosses_lane=lane)],
+        [event_played("pedestrian", "cross_road", seconds)],
+    ]
+
+
+def gets_going(asset: str) -> list[list[Json]]:
+    """Fair readings of setting a parked vehicle off: a driving behaviour of any kind, or a manoeuvre."""
+    return [
+        [does(["drive_lane", "follow_path", "circle"], asset=asset)],
+        [event_played(asset, "keep_lane", 3.0)],
+        [event_played(asset, "follow_route", 3.0)],
+        [event_played(asset, "change_speed", 3.0)],
+    ]
+
+
+def some_in_lane(lane: str, category: str | list[str]) -> Json:
+    """At least one of the added or changed assets of these categories stands in `lane` (a block across it)."""
+    return {"kind": "in_lane", "category": category, "lane": lane, "require_all": False}
+
+
+def darker() -> list[list[Json]]:
+    """Fair readings of 'darker': a clock time from early evening to before dawn, or a lower exposure."""
+    return [[env(time_from="17:30", time_to="06:00")], [env(exposure_max=0.85)]]
+
+
 def stops_before(actor: str, x: float, y: float, seconds: float = 20.0) -> Json:
     """Run the scene: `actor` never crosses the point (x, y) it drives towards and ends stopped."""
     return {
