@@ -90,7 +90,9 @@ class AddAsset(Tool[AddArgs]):
                 # Going somewhere: placed first (where said, else some way off), then on its way from there.
                 start_at = anchor if located else start_towards(scene, cat.name, spec.to)
                 here = start_at if not placed else replace(start_at, exact=False)
-                pose = find_free_pose(scene, template, here, [*others, *placed], yaw if yaw is not None else start_at.heading,
+                # A walker faces where it goes; a vehicle put in a lane faces along it (default_yaw).
+                facing = yaw if yaw is not None or cat.motion == "vehicle" else start_at.heading
+                pose = find_free_pose(scene, template, here, [*others, *placed], facing,
                                       keep_clear=[*walkers, *placed], slots=args.count)
                 moved = template.model_copy(update={"pose": pose})
                 behaviour, _ = resolve_behaviour(scene, moved, spec)

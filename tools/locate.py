@@ -17,7 +17,7 @@ from drivetwin.tools.along import Side, TrackPoint, along_point, free_pose_on_tr
 from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.rules import assets_near, check_placement, footprints_overlap
 from drivetwin.worlds.catalog import category
-from drivetwin.worlds.scene import AssetInstance, Finite, Pose, Scene
+from drivetwin.worlds.scene import AssetInstance, Finite, Lane, Pose, Scene
 from drivetwin.worlds.surface import (
     lane_at,
     nearest_on_polyline,
@@ -229,9 +229,13 @@ def resolve_anchor(scene: Scene, location: Location, new_half_length: float,
         else:
             # At a point landmark: just out from it along its facing, parallel to its front.
             gap = (location.distance or 0.0) + CLEARANCE_M + new_half_length * 0.5
-            return Anchor(target.x + gap * math.cos(target.heading),
-                          target.y + gap * math.sin(target.heading),
-                          target.heading + math.pi / 2, near=target)
+            x, y = target.x + gap * math.cos(target.heading), target.y + gap * math.sin(target.heading)
+            lane = _lane_along(scene, x, y, target.heading) if _is_vehicle(category_name) else None
+            if lane is not None:
+                # A vehicle whose spot is in a lane faces along it (at a gate, along the lane
+                # running in through it): parallel to a gate it stood across the road.
+                return Anchor(x, y, nearest_on_polyline(x, y, lane.centreline).heading, near=target)
+            return Anchor(x, y, target.heading + math.pi / 2, near=target)
     offsets = {"in_front_of": 0.0, "behind": math.pi, "left_of": math.pi / 2,
                "right_of": -math.pi / 2, "next_to": math.pi / 2}
     direction = target.heading + offsets[rel]
@@ -247,6 +251,19 @@ def resolve_anchor(scene: Scene, location: Location, new_half_length: float,
                       target.heading, surface="lane", near=target, lane_id=lane.id)
     return Anchor(target.x + gap * math.cos(direction), target.y + gap * math.sin(direction),
                   target.heading, near=target)
+
+
+def _is_vehicle(category_name: str | None) -> bool:
+    return category_name is not None and category(category_name).motion == "vehicle"
+
+
+def _lane_along(scene: Scene, x: float, y: float, heading: float) -> Lane | None:
+    """The lane whose strip holds (x, y), the nearest centreline winning and, on the line
+    between two, the one running nearer `heading`; None where no lane does."""
+    under = [(nearest_on_polyline(x, y, lane.centreline), lane) for lane in scene.roads.lanes]
+    under = [(near, lane) for near, lane in under if near.distance <= lane.width / 2 + 1e-6]
+    best = min(under, key=lambda item: (round(item[0].distance, 6), -math.cos(item[0].heading - heading)), default=None)
+    return None if best is None else best[1]
 
 
 def _along_anchor(scene: Scene, location: Location, category_name: str | None) -> Anchor:
@@ -297,14 +314,11 @@ def _sidewalk_anchor(scene: Scene, target: Target) -> Anchor:
 
 
 def default_yaw(scene: Scene, category_name: str, anchor: Anchor, x: float, y: float) -> float:
-    """Vehicles face along the lane they stand in; everything else takes the anchor's heading."""
+    """Vehicles face along the lane they stand in (on the line between two, the one running
+    nearer the anchor's heading); everything else takes the anchor's heading."""
     cat = category(category_name)
-    if cat.motion == "vehicle" and scene.roads.lanes:
-        lane = min(scene.roads.lanes, key=lambda ln: nearest_on_polyline(x, y, ln.centreline).distance)
-        near = nearest_on_polyline(x, y, lane.centreline)
-        if near.distance <= lane.width / 2:
-            return near.heading
-    return anchor.heading
+    lane = _lane_along(scene, x, y, anchor.heading) if cat.motion == "vehicle" else None
+    return nearest_on_polyline(x, y, lane.centreline).heading if lane is not None else anchor.heading
 
 
 def _ring(radius: float) -> list[tuple[float, float]]:

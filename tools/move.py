@@ -232,7 +232,7 @@ def resolve_behaviour(
     if spec.kind == "follow_path":
         waypoints: list[tuple[float, float]] | None = spec.waypoints
         if spec.to and cat.motion == "vehicle":  # it drives the roads there, not across the grass
-            waypoints = driving_route(scene, asset, goal_of(scene, asset, spec.to))
+            waypoints = driving_route(scene, asset, goal_of(scene, asset, spec.to), spec.to)
         elif spec.to:  # a walker or a rider goes straight there: kinematic, nothing stops it
             waypoints = [(asset.pose.x, asset.pose.y), goal_of(scene, asset, spec.to)]
         if not waypoints or len(waypoints) < 2:

@@ -36,6 +36,8 @@ from drivetwin.worlds.scene import EGO_ID, AssetInstance, DriveLane, Scene
 from drivetwin.worlds.vehicles import AckermannGeometry, VehicleController, VehicleState, pure_pursuit_curvature
 
 __all__ = [
+    "SENSE_SIDES",
+    "STOP_GAP_M",
     "BehaviourRunner",
     "UnknownLaneError",
     "VehicleParkedRunner",
@@ -75,6 +77,9 @@ STOP_LINE_DECEL = 1.8
 LINE_OVERSHOOT_M = 3.0
 # Below this asked and measured speed (m/s) a vehicle told to stop holds its wheels.
 STANDSTILL_MPS = 0.05
+# A vehicle that stops at the end of its route plans to brake this gently (m/s², as for a red
+# line) to come to rest there.
+ARRIVAL_DECEL = STOP_LINE_DECEL
 
 AtEnd = Literal["loop", "stop"]
 StartCondition = Callable[[MujocoWorld, float], bool]
@@ -159,6 +164,8 @@ class VehicleRouteRunner(BehaviourRunner):
         # Stop lines of red lights (set by the storyboard player every tick).
         self.red_stops: Sequence[tuple[float, float]] = ()
         self.start = _Start(start)
+        # How far along the route the vehicle was last tick (None: not yet known, or it looped).
+        self.progress: float | None = None
         shape = category(asset.category)
         # From the rear axle (where VehicleState is) to the front bumper, and half the width.
         self.front_m = (shape.length / 2 + self.vehicle.geometry.wheelbase / 2) * asset.scale
@@ -185,7 +192,9 @@ class VehicleRouteRunner(BehaviourRunner):
         if self.speed <= STANDSTILL_MPS and abs(state.speed) <= STANDSTILL_MPS * 4:
             self.vehicle.brake(data)
             return
-        s = self.route.project(state.x, state.y)
+        s = self.route.project(state.x, state.y) if self.progress is None else (
+            self.route.follow(state.x, state.y, self.progress))
+        self.progress = s
         if not self.route.closed and s >= self.route.length - ARRIVAL_M:
             if self.at_end == "stop":
                 self.vehicle.brake(data)
@@ -195,10 +204,27 @@ class VehicleRouteRunner(BehaviourRunner):
             yaw = self.route.heading(0.0)
             half = self.vehicle.geometry.wheelbase / 2
             self.vehicle.teleport(data, x0 + half * math.cos(yaw), y0 + half * math.sin(yaw), yaw)
+            self.progress = None
             return
-        tx, ty = self.route.point(s + self.lookahead())
+        tx, ty = self.pursuit_point(s)
         curvature = pure_pursuit_curvature(state.x, state.y, state.yaw, tx, ty)
-        self.vehicle.drive(data, self.safe_speed(world, state, tx, ty), curvature, dt)
+        speed = self.safe_speed(world, state, tx, ty)
+        if not self.route.closed and self.at_end == "stop":
+            # Braking to arrive: a vehicle at speed when it reached the end would overshoot it.
+            to_end = self.route.length - s - ARRIVAL_M / 2
+            speed = min(speed, math.sqrt(2 * ARRIVAL_DECEL * max(0.0, to_end)))
+        self.vehicle.drive(data, speed, curvature, dt)
+
+    def pursuit_point(self, s: float) -> tuple[float, float]:
+        """The point a lookahead ahead of arc length `s`; past the end of an open route, on the
+        line of its last heading: aimed at the end itself, a vehicle that comes to it off line
+        circles it, its turn too tight to steer."""
+        ahead = s + self.lookahead()
+        if self.route.closed or ahead <= self.route.length:
+            return self.route.point(ahead)
+        (ex, ey), heading = self.route.point(self.route.length), self.route.heading(self.route.length)
+        over = ahead - self.route.length
+        return ex + over * math.cos(heading), ey + over * math.sin(heading)
 
     def safe_speed(self, world: MujocoWorld, state: VehicleState, tx: float, ty: float) -> float:
         """The route speed, lowered so the vehicle can stop STOP_GAP_M short of an obstacle.

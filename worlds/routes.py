@@ -31,6 +31,11 @@ TURN_TOLERANCE_RAD = math.pi / 4
 JUNCTION_SAMPLE_M = 0.5
 # Points on a turn's curve through the junction (a quadratic Bézier).
 TURN_CURVE_POINTS = 16
+# A vehicle following a route looks for itself at most this far (m) ahead of where it was a
+# moment ago, and this far back: a route that passes near itself again (a U-turn, out of a
+# car park and back past it) is followed in order, not jumped along to where it passes again.
+FOLLOW_AHEAD_M = 8.0
+FOLLOW_BACK_M = 2.0
 
 
 class Route:
@@ -50,6 +55,11 @@ class Route:
     def project(self, x: float, y: float) -> float:
         """The arc length of the route point nearest to (x, y)."""
         raise NotImplementedError
+
+    def follow(self, x: float, y: float, s_last: float) -> float:
+        """The arc length of the route point nearest to (x, y) within FOLLOW_BACK_M behind and
+        FOLLOW_AHEAD_M ahead of `s_last` (where the vehicle was a moment ago)."""
+        return self.project(x, y)
 
     def wrap(self, s: float) -> float:
         if self.closed:
@@ -102,14 +112,27 @@ class PolylineRoute(Route):
         return math.atan2(by - ay, bx - ax)
 
     def project(self, x: float, y: float) -> float:
-        best, best_s = math.inf, 0.0
+        return self._nearest(x, y, 0.0, self.length)
+
+    def follow(self, x: float, y: float, s_last: float) -> float:
+        if self.closed:
+            return self.project(x, y)
+        return self._nearest(x, y, s_last - FOLLOW_BACK_M, s_last + FOLLOW_AHEAD_M)
+
+    def _nearest(self, x: float, y: float, s_from: float, s_to: float) -> float:
+        """The arc length in [s_from, s_to] of the route point nearest to (x, y)."""
+        best, best_s = math.inf, min(max(s_from, 0.0), self.length)
         for index, ((ax, ay), (bx, by)) in enumerate(itertools.pairwise(self._points)):
+            s0, s1 = self._cumulative[index], self._cumulative[index + 1]
+            if s1 < s_from or s0 > s_to:
+                continue
             dx, dy = bx - ax, by - ay
-            length2 = dx * dx + dy * dy
-            t = min(1.0, max(0.0, ((x - ax) * dx + (y - ay) * dy) / length2))
+            length = s1 - s0
+            t_from, t_to = max(0.0, (s_from - s0) / length), min(1.0, (s_to - s0) / length)
+            t = min(t_to, max(t_from, ((x - ax) * dx + (y - ay) * dy) / (length * length)))
             distance2 = (ax + t * dx - x) ** 2 + (ay + t * dy - y) ** 2
             if distance2 < best:
-                best, best_s = distance2, self._cumulative[index] + t * math.sqrt(length2)
+                best, best_s = distance2, s0 + t * length
         return best_s
 
     def distance_to(self, x: float, y: float) -> float:
@@ -204,6 +227,9 @@ class OffsetRoute(Route):
 
     def project(self, x: float, y: float) -> float:
         return self.base.project(x, y)
+
+    def follow(self, x: float, y: float, s_last: float) -> float:
+        return self.base.follow(x, y, s_last)
 
 
 class NoJunctionError(LookupError):

@@ -52,13 +52,17 @@ def ackermann_angles(curvature: float, wheelbase: float, track: float) -> tuple[
 def pure_pursuit_curvature(x: float, y: float, yaw: float, target_x: float, target_y: float) -> float:
     """The curvature of the arc from the rear axle (x, y, heading yaw) through the target.
 
-    κ = 2·sin(α) / ℓ, with α the target's bearing from the heading and ℓ its distance.
+    κ = 2·sin(α) / ℓ, with α the target's bearing from the heading and ℓ its distance. A
+    target behind (|α| > 90°) is steered for as one abeam on its side: sin(α) shrinks past 90°,
+    so a vehicle facing away from its route would turn ever more gently, and not at all with
+    the route straight behind it.
     """
     dx, dy = target_x - x, target_y - y
     distance = math.hypot(dx, dy)
     if distance < 1e-9:
         return 0.0
-    alpha = math.atan2(dy, dx) - yaw
+    alpha = math.remainder(math.atan2(dy, dx) - yaw, math.tau)
+    alpha = max(-math.pi / 2, min(math.pi / 2, alpha))
     return 2.0 * math.sin(alpha) / distance
 
 
