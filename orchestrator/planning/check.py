@@ -946,9 +946,9 @@ def _not_the_biggest(request: Request, effect: Effect, scene: Scene) -> list[str
     if said is None or request.question:
         return []
     after = request.masked[said.end() : said.end() + 40]
-    groups = [m for m in md.groups_said(request.masked[said.start() : said.end() + 40]).values()]
+    group = next(iter(md.groups_said(request.masked[said.start() : said.end() + 40]).values()), None)
     named = ph.find_categories(after)
-    kinds = set(groups[0]) if groups else {named[0].category} if named else set()
+    kinds = set(group) if group else {named[0].category} if named else set()
     acted = [a for a in [*effect.removed, *effect.changed] if a.id != "ego" and a.category in kinds]
     picks = most_of(md.most_said(said.group(1)), [a for a in scene.assets if a.category in kinds])
     wrong = [a for a in acted if a.id not in {p.id for p in picks}]

@@ -327,7 +327,7 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
         # "make SUV colour blue", "move hydrant to other side of road": with no article at all, as some
         # speakers say it, the one thing of its kind the scene holds is as likely as a new one
         bare = bare or (not m.plural and scene.count(m.category) == 1 and _NEW.search(masked) is None
-                        and m.last_words(1)[-1:] in ([v] for v in _BARE_VERBS) and not _ARTICLE.search(masked))
+                        and any(w in _BARE_VERBS for w in m.last_words(1)) and not _ARTICLE.search(masked))
         # "the red bench", but not "give the bus stop a bench": the nearest article is the noun's
         indefinite = m.last_words(1)[-1:] in (["a"], ["an"], ["some"], ["any"])
         # "cars in lot B: park them nose to tail": things said bare, then pointed back at, are those there

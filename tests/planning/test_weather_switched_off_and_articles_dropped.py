@@ -42,7 +42,8 @@ def test_a_lot_named_by_the_radio_alphabet(campus, registry):
 
 def test_a_thing_said_without_articles_is_asked_about_not_added_anew(campus, registry):
     report = held(campus, registry, Fixed(add("suv")), "paint SUV green colour")
-    assert "already there" in (report.error or report.question.text if report.question else report.error or "")
+    said = report.error or (report.question.text if report.question else "")
+    assert "already there" in said
     moved = _ruled(campus, registry, "shift hydrant onto other side of street").scene
     assert moved.asset("fire_hydrant_1").pose.y < 0 < campus.asset("fire_hydrant_1").pose.y
 
