@@ -343,7 +343,8 @@ def weather_strength(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     strengths = [float(s) for s in set_to if isinstance(s, int | float) and math.isfinite(s)]
     if not strengths:
         return []
-    low = re.sub(r"\bnot (?:too |to |so |very |a |that )?(?:much )?(?=heavy|hard|strong|thick|dense|downpour|deluge|blizzard)", "un", low)  # "not too strong", "not to thick"
+    # "not too strong", "not to thick"; "the fog is far too thick": a strength denied or complained of
+    low = re.sub(r"\b(?:not (?:too |to |so |very |a |that )?|too )(?:much )?(?=heavy|hard|strong|thick|dense|downpour|deluge|blizzard)", "un", low)
     if (_LIGHT.search(low) or "unstrong" in low or "unheavy" in low) and strengths[-1] > STRENGTH_SPLIT:
         return [f"you asked for light weather, but the plan sets intensity {strengths[-1]:g}"]
     if _HEAVY.search(low) and strengths[-1] < STRENGTH_SPLIT:

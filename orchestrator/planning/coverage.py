@@ -137,7 +137,7 @@ _KIND_OF_WEATHER = {"rain": "rain", "drizzle": "rain", "downpour": "rain", "snow
 _WEATHER_DENIED = re.compile(r"(?:\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently|clear|lift"
                              r"|remove|kill|cancel|off)\b"  # "turn off the fog", "off the rain": switched off, as lamps are
                              r"|n't\b)[^,.;]*$")  # "clear the fog", "lift the fog": away with it
-_WEATHER_ENDED = re.compile(r"\w*(?:\s+\S+){0,2}?\s+(?:stops?|ends?|clears?|go(?:es)? away|lets? up|off)\b")
+_WEATHER_ENDED = re.compile(r"\w*(?:\s+\S+){0,3}?\s+(?:stops?|ends?|clears?|go(?:es)? away|lets? up|off)\b")
 # Clock times said by name: the time tool has presets for them, checked as parts of the day.
 _NAMED_TIMES = ("midnight", "noon", "midday")
 # Parts of the day a request names as a time to set; "this morning" is when, not what.

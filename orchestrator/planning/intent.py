@@ -122,7 +122,7 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"distance (?:between|from)|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
-                   r"(to|i|we|me|wants?|wanna|wan) know (?:[a-z]+ )?(what|which|where|how|whether|if)|find out|check (which|what|where|how|whether|if)|"
+                   r"find out|check (which|what|where|how|wh?ether|if)|"
                    # "kindly advise the location of ...", "need suv_1's pose in the map frame": where something is
                    r"advise (?:me |us )?(?:of |on |as to )?the (?:the )?(?:location|position|whereabouts|distance|number)|"
                    # "coordinates of the nearest tree?", "req grid ref of the bin": where something is, asked bare
@@ -131,10 +131,22 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"'s (?:pose|position|coordinates|location|whereabouts|heading)(?!\s+(?:should|must|needs?|has|is to|ought|will|would|can|could|to)\b)|"
                    r"(?:write|note|jot|put) (?:it )?down (?:what|which|where|how|whether|if)|"  # "asked me to write down which lane ..."
                    # "I'd like to confirm there are no cars in it", "just want to be sure there isn't one": verifying
-                   r"(?:confirm|verify|double[- ]check|be (?:sure|certain)) (?:that |whether |if )?(?:there (?:is|are|was|were|'s)|"
+                   r"(?:confirm|verify|double[- ]check|be (?:sure|certain)) (?:that |wh?ether |if )?(?:there (?:is|are|was|were|'s)|"
                    r"there (?:isn'?t|aren'?t)|(?:the|it|they|nothing|none|no|all|every)\b)|"
                    # "the distance between them is to be reported": what is wanted is an answer
-                   r"(?:is|are) to be (?:reported|measured|listed|counted|checked|confirmed|stated|given))\b")
+                   r"(?:is|are) to be (?:reported|measured|listed|counted|checked|confirmed|stated|given))\b"
+                   # Read after any word (the lookbehind above is for "others tell me", a story):
+                   # "the boss wants know where the bus is", "I want to know is it raining": a question after
+                   # knowing, its "to" or its "whether" left out
+                   r"|\b(?:to|i|we|me|wants?|wanna|wan) know (?:[a-z]+ )?(?:what|which|where|how|wh?ether|if|is|are|does|do|did|was|were|has|have)\b"
+                   # "see if it is foggy", "see whether there are cones": whether a thing is so ("see if you can
+                   # move it" asks for the moving)
+                   r"|\bsee (?:wh?ether|if) (?!(?:you|u|we|i)\b)|\bremind (?:me|us) (?:again )?(?:what|which|where|how|wh?ether|if)\b"
+                   # doubt about what is so: "I was wondering if there's a bin", "can't remember whether I parked it
+                   # in lot A", "not sure if the hydrant is still there" (wondering whether we could is a request)
+                   r"|\bwonder(?:ing|ed)? (?:if|wh?ether) (?!(?:you|u|we|i|someone|somebody|anyone)\b)"
+                   r"|\b(?:can'?t|cannot|don'?t|do not|couldn'?t) (?:remember|recall) (?:if|wh?ether|which|where|what|how)\b"
+                   r"|\bnot (?:sure|certain) (?:if|wh?ether) (?!(?:you|u|we|i)\b)|\b(?:no|any) idea (?:if|wh?ether)\b")
 # Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
 # in the mood of a command, whatever the politeness around them.
 _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"

@@ -539,6 +539,19 @@ _GOING_ACROSS = re.compile(r"\b(?:walk|run|hurr|dash|dart|jog|head|go|stroll|ste
                            r"|\b(?:walk|go|get|head|cross|make (?:his|her|their|its) way)\w*\s+(?:over\s+|across\s+)?to\s+the\s+(?:other|far)\s+side\b"
                            r"(?!\s+of\s+(?:the\s+)?(?!road|street)[a-z])")
 
+def _without_things(r: Reading) -> str:
+    """The clause's masked words with the things it names, and their articles and numbers, left out:
+    a verb and its particle said round the thing ("walk a pedestrian across the crosswalk") read together."""
+    out = r.masked
+    for m in sorted(r.mentions, key=lambda m: -m.start):
+        start = _ARTICLE_BEFORE.search(out, 0, m.start)
+        out = out[: start.start() if start is not None else m.start] + out[m.end :]
+    return re.sub(r"\s+", " ", out)
+
+
+# An article or number just before a thing's word ("a", "the", "two", "3").
+_ARTICLE_BEFORE = re.compile(r"\b(?:a|an|the|one|two|three|four|five|some|\d+)\s+$")
+
 # Going somewhere on foot or on wheels ("walk to the fountain", "stroll along the sidewalk", "drive down Main Street").
 _GOING_TO = re.compile(r"\b(?:walk|stroll|jog|march|wander|drive|drove|driving)\w*\s+(?:to|towards?|along|around|down|up|off)\b")
 
@@ -560,7 +573,8 @@ def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
         plain = kind != "drive_lane" and r.has(lx.BEHAVIOUR_WORDS[kind])  # the driving words are read inflected
         # "someone crossing at the west crosswalk": the walker named, then what it is doing
         doing = kind == "cross_road" and any(re.match(r"\s*crossing\b", r.low[m.end :]) for m in r.mentions)
-        if not said and not plain and not doing and not (kind == "cross_road" and _GOING_ACROSS.search(r.masked)):
+        across = kind == "cross_road" and bool(_GOING_ACROSS.search(r.masked) or _GOING_ACROSS.search(_without_things(r)))
+        if not said and not plain and not doing and not across:
             continue
         if category is not None and (
             (kind in ("jaywalk", "cross_road") and category.motion != "walker")

@@ -75,7 +75,8 @@ def weather(r: Reading) -> ToolCall | None:
             ):
                 continue  # "clear the roadworks away" is a removal
             words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
-            stopped = re.search(rf"\b(?:{words})\b(?:\s+\S+){{0,2}}?\s+(?:stop|stops|end|ends|clear|clears|go away|let up|off)\b", r.low)
+            # "the rain stops", "the fog can be turned off": switched off after it is named
+            stopped = re.search(rf"\b(?:{words})\b(?:\s+\S+){{0,3}}?\s+(?:stop|stops|end|ends|clear|clears|go away|let up|off)\b", r.low)
             # "wet roads, not a downpour though": how strong it is denied, not the rain
             strength = re.search(rf"\bnot (?:a |too |to |that |so )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)  # "not to thick"
             if kind != "clear" and strength is None and (re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low) or stopped):
@@ -261,13 +262,21 @@ def stronger(r: Reading, now: Environment) -> ToolCall | None:
     kind, level = now.weather.kind, now.weather.intensity
     if kind == "clear" or kind not in lx.WEATHER_WORDS or not r.has(lx.WEATHER_WORDS[kind]):
         return None
-    more, less = _MORE_OF_IT.search(r.low), _LESS_OF_IT.search(r.low)
+    more, less = _MORE_OF_IT.search(r.low), _LESS_OF_IT.search(r.low) or _too_much(r.low, kind)
     if re.search(r"\bvisibility\b", r.low):  # "improve visibility": less of it
         more, less = _SEE_WORSE.search(r.low), _SEE_BETTER.search(r.low)
     if bool(more) == bool(less):
         return None
     new = round(level / 2, 2) if less else round(min(1.0, level + STRONGER_STEP), 2)
     return ToolCall(tool="set_weather", args={"kind": kind, "intensity": new}) if abs(new - level) >= 0.05 else None
+
+
+def _too_much(low: str, kind: str) -> re.Match[str] | None:
+    """The weather there is complained of as too much ("it's way too foggy", "too much rain", "the
+    fog is far too thick"): less of it is wanted."""
+    words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
+    return re.search(rf"\btoo (?:much |heavy |thick |dense |strong )?(?:{words})\b"
+                     rf"|\b(?:{words}) (?:is|are|'s|feels?|looks?) (?:\w+ )?too (?:heavy|thick|dense|strong|much|intense)\b", low)
 
 
 def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:

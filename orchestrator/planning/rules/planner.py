@@ -777,13 +777,19 @@ def _alike(calls: list[ToolCall], low: str, scene: Scene, memory: Memory) -> lis
 
 
 def _as_searches(calls: list[ToolCall]) -> list[ToolCall]:
-    """A question's calls with each addition a story named made a search for its kind at its place
-    (and a search for anything there dropped beside a search for a kind there)."""
-    if not any(c.tool == "add_asset" and c.args.get("category") for c in calls):
+    """A question's calls with each addition a story named made a search for its kind at its place,
+    weather, time or lighting it names a look at the environment ("confirm whether it is raining"),
+    a thing it places a look at the thing, and a search for anything there dropped beside a search
+    for a kind there."""
+    if not any((c.tool == "add_asset" and c.args.get("category")) or c.tool in _ENVIRONMENT_SET or c.tool in _PLACING for c in calls):
         return calls
     out: list[ToolCall] = []
     for call in calls:
-        if call.tool == "add_asset" and call.args.get("category"):
+        if call.tool in _ENVIRONMENT_SET:
+            call = ToolCall(tool="describe_environment", args={})
+        elif call.tool in _PLACING and isinstance(call.args.get("asset"), str):
+            call = ToolCall(tool="asset_properties", args={"asset": call.args["asset"]})  # "can't recall if I parked it in lot A"
+        elif call.tool == "add_asset" and call.args.get("category"):
             where = call.args.get("location") or {}
             target = where.get("target") if isinstance(where, dict) else None
             args: dict[str, Any] = {"category": call.args["category"]}
@@ -798,6 +804,10 @@ def _as_searches(calls: list[ToolCall]) -> list[ToolCall]:
                                    and any(c.args.get("near") == k.get("near") for k in kinds))]
 
 
+# What sets the weather, the time or the lights: in a question, what the environment is now.
+_ENVIRONMENT_SET = ("set_weather", "set_time_of_day", "set_lighting")
+# What puts a thing somewhere: in a question, where it is now.
+_PLACING = ("place_asset", "move_asset")
 # How far from the place a statement names the thing it describes may stand ("a hydrant by the crossroads").
 DESCRIBED_NEAR_M = 20.0
 

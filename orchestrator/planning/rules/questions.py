@@ -498,14 +498,16 @@ _WAY_ASKED = re.compile(rf"\b(?:{_WAY})\b")
 
 # A question about people: "who is near the fountain?", "who's waiting at the stop?".
 _WHO = re.compile(r"\s*(?:who|who's|whos)\b")
+# What only vehicles do: "who's parked up in the car park?" asks about the cars.
+_DRIVEN = re.compile(r"\b(?:park(?:ed|s|ing)|driv\w*|drove)\b")
 
 
 def _around(r: Reading, scene: Scene, anchor: Anchor) -> Part:
     """Assets (of the category named, if any) within a radius of the anchor, nearest first."""
     args: dict[str, Any] = {}
     category = next((m.category for m in r.mentions if _only_instance(r, scene, m) != anchor.name), None)
-    if category is None and _WHO.match(r.low):
-        category = "pedestrian"  # "who is standing near the fountain?": people, not the trees
+    if category is None and _WHO.match(r.low) and not _DRIVEN.search(r.low):
+        category = "pedestrian"  # "who is standing near the fountain?": people, not the trees ("who's parked ...": whatever is)
     if category is not None:
         args["category"] = category
     # An asset is left out of its own neighbourhood: nearest_to excludes it, near would list it.

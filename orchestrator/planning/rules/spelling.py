@@ -298,8 +298,19 @@ def _joined(vocab: frozenset[str]) -> dict[str, str]:
         for word in cat.words:
             parts = word.lower().split()
             if len(parts) == 2:
-                phrases["".join(parts)] = " ".join(parts)
+                for glued in _run_together(parts):
+                    phrases[glued] = " ".join(parts)
     return phrases
+
+
+def _run_together(words: list[str]) -> set[str]:
+    """`words` written as one, and with a letter two of them share written once ("bus stop" is
+    "busstop" and "bustop", "street light" "streetlight")."""
+    glued = "".join(words)
+    shared = words[0]
+    for word in words[1:]:
+        shared += word[1:] if shared[-1:] == word[:1] else word
+    return {glued, shared}
 
 
 def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
@@ -336,7 +347,8 @@ def _glued_places(scene: Scene) -> dict[str, str]:
             words = ph.tokens(ph.normalise(name))
             for i, j in itertools.combinations(range(len(words) + 1), 2):
                 if j - i >= 2:
-                    out["".join(words[i:j])] = " ".join(words[i:j])
+                    for glued in _run_together(words[i:j]):
+                        out[glued] = " ".join(words[i:j])
     return out
 
 
@@ -607,6 +619,15 @@ _GERUND = re.compile(
 
 # "were is the lot": "were" before "is" is never the verb, always a slip for "where".
 _WHERE_SLIP = re.compile(r"\bwere(?= (?:is|are|can|do|does|did|was)\b)", re.IGNORECASE)
+# "confirm wether it is raining", "check weather there are cones": after a verb of finding out, or
+# "wether" before a clause's subject, the word is "whether" ("change the weather, it's too sunny" keeps it).
+_WHETHER_SLIP = re.compile(r"(?:(?<=\bconfirm )|(?<=\bcheck )|(?<=\bsee )|(?<=\bknow )|(?<=\bwonder )|(?<=\bask )"
+                           r"|(?<=\bsure )|(?<=\bout )|(?<=\bverify ))(?:wh?eather|wether|whather)\b"
+                           r"|\bwh?ether(?= (?:it|there|or|we|you|i|they|the|any|all)\b)", re.IGNORECASE)
+# "Make it rain. Heavy.", "Fog, please. Thick." : a strength said alone after the weather is its strength.
+_STRENGTH_AFTER = re.compile(r"(?P<weather>\b(?:rain\w*|snow\w*|fog\w*|mist\w*|drizzl\w*)\b[^.!;]*?)\s*[.!;]+\s+"
+                             r"(?P<strength>(?:very |really |quite |pretty )?(?:heavy|heavily|hard|thick|dense|strong|intense|light|lightly"
+                             r"|gentle|slight|thin)(?:\s*,?\s*(?:please|pls|thanks))?)\s*[.!]*\s*$", re.IGNORECASE)
 # "is their a bench", "their are cones": "their" next to "is"/"are" and before a thing is "there".
 _THERE_SLIP = re.compile(r"(?:(?<=\bis )|(?<=\bare )|(?<=\bwas )|(?<=\bwere ))their(?= (?:a|an|any|some|no|\d+)\b)"
                          r"|\btheir(?= (?:is|are|was|were)\b)"
@@ -948,6 +969,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = spelt_measures(_NUMBER_SLIP.sub(lambda m: _NUMBER_SLIPS[m.group(1).lower()], _sound_alikes(text)))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
+    text = _WHETHER_SLIP.sub("whether", text)
+    text = _STRENGTH_AFTER.sub(lambda m: f"{m.group('strength')} {m.group('weather')}", text)
     text = _THERE_SLIP.sub("there", text)
     text = _THING_PRONOUN.sub("it", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
