@@ -976,7 +976,11 @@ def _outermost(request: Request, effect: Effect, scene: Scene) -> tuple[AssetIns
 # "Further from the bus stop", "closer to the library": the way the distance to the place must go.
 _NEAREST_OF = re.compile(r"\b(?:nearest|closest)\b")
 _NEARER = re.compile(r"\b(?:closer|nearer)(?: to)?\b|\btowards?\b")
-_FURTHER = re.compile(r"\b(?:further|farther|more)(?: away)? from\b|\baway from\b")
+_FURTHER = re.compile(r"\b(?:further|farther|more)(?: away)? from\b|\baway from\b"
+                      # "the SUV blocks my view of the Library, can it be somewhere else?": away from the place said,
+                      # unless another place is said after it ("put it elsewhere, by the fountain")
+                      r"|\b(?:elsewhere|somewhere else|out of (?:the|my|our|their) (?:way|view|shot|sight))\b"
+                      r"(?![^.;!?]*\b(?:to|by|near|next to|beside|at|in|into|onto|outside|behind)\s+(?:the|lot|parking)\b)")
 
 
 def _wrong_way_to(request: Request, scene: Scene, moved: list[AssetInstance]) -> list[str]:

@@ -6,6 +6,8 @@ particle."""
 
 from __future__ import annotations
 
+import math
+
 from drivetwin.orchestrator.planning.intent import asks
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
@@ -77,3 +79,19 @@ def test_doubt_about_what_is_so_is_answered_not_acted_on(campus, registry):
     assert not asks("I was wondering if you could add a bench by the fountain")
     report = Session(campus, RulePlanner(), registry).submit("remind me again which lane the ego drives in")
     assert report.ok and report.answer is not None and "main_eastbound" in report.answer
+
+
+def test_a_thing_sent_elsewhere_is_never_sent_to_the_place_it_is_said_to_block(campus, registry):
+    for said in ("the tree by the bus stop completely hides the Library from the road, can it be somewhere else?",
+                 "the bench sits right in front of the Library entrance, get it out of the way"):
+        session = Session(campus, RulePlanner(), registry)
+        session.submit(said)
+        moved = [a for a in session.scene.assets if (b := campus.asset(a.id)) is not None and a.pose != b.pose]
+        entrance = next(lm for lm in campus.landmarks if lm.name == "Library entrance").position
+        for a in moved:  # whatever was done, nothing went nearer the place it blocks
+            before = campus.asset(a.id)
+            assert before is not None
+            assert math.dist((a.pose.x, a.pose.y), entrance[:2]) >= math.dist((before.pose.x, before.pose.y), entrance[:2]) - 0.5, said
+    moved = _ruled(campus, registry, "the bench is an eyesore, put it elsewhere, maybe by the fountain").scene.asset("bench_1")
+    fountain = next(lm for lm in campus.landmarks if lm.name == "fountain").position
+    assert moved is not None and math.dist((moved.pose.x, moved.pose.y), fountain[:2]) < 15

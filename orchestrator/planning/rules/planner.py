@@ -360,10 +360,20 @@ _BUILDING = re.compile(r"\b(?:walls?|facade|façade|building|roof|doors?|windows
 _COMMA_COMMAND = re.compile(rf",\s+(?=(?:(?:please|pls|just|so|now|then|let'?s)\s+)*(?:{'|'.join(_VERBS)}|give)\b)")
 
 
+# A command after a comma that sends a thing away from where it is, saying no place of its own.
+_AWAY_AFTER = re.compile(r",\s+(?=[^,;]*\b(?:elsewhere|somewhere else|out of (?:the|my|our|their) (?:way|view|shot|sight))\b)",
+                         re.IGNORECASE)
+
+
 def _said_first(text: str, places: tuple[str, ...]) -> tuple[str, str] | None:
     """A statement of how things are that names nothing, and the command after its comma ("it's
     too dark, make it day"); None where the statement names a thing or place the command may
     mean ("Campus Drive feels empty, make it livelier", "the bench is in the way, move it")."""
+    away = _AWAY_AFTER.search(text)
+    if away is not None and _STATEMENT.match(text[: away.start()].lower()) and not any(
+            re.search(rf"\b{re.escape(p)}\b", text[away.end() :].lower()) for p in places):
+        # "the SUV is blocking the Library, can it be somewhere else?": the place said is where it is, not where to
+        return text[: away.start()], text[away.end() :]
     cut = _COMMA_COMMAND.search(text)
     if cut is None or not _STATEMENT.match(low := text[: cut.start()].lower()):
         return None
