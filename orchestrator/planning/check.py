@@ -153,6 +153,8 @@ _AWAY = re.compile(r"\b(?:get|move|send|shoo|clear|chase)\s+(?:the|those|these|t
 _KEPT_AWAY = re.compile(r"(?<!\bthe )(?<!\ba )(?<!\bbus )(?<!\bshuttle )\b(?:(?P<keep>keep|keeps|keeping)|stop|stops|stopping|prevent|prevents"
                         r"|preventing|deter|deters|deterring|discourage|discourages|discouraging|ban|bans|banning|bar|bars|barring|warn off"
                         r"|scare (?:off|away))\s+(?:(?:the|any|all|those|these|other)\s+)?(?:(?!(?:with|at|by|in|on|near|for|to|from|and|of)\b)[a-z]+\s+)?$")
+# What things named keep doing, a nuisance: "joggers keep cutting through", "cars are always parking there".
+_KEEPS_DOING = re.compile(r"\s+(?:(?:are|is)\s+)?(?:always|constantly|forever|continually|keeps?(?: on)?)\s+[a-z]+ing\b")
 _KEPT_OFF = re.compile(r"\s+(?:[a-z]+\s+)?(?:off|away|out|from|back|clear)\b")
 # Words asking for one more of a thing there: what answers them adds.
 _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
@@ -356,6 +358,12 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                  and (not verb.group("keep") or _KEPT_OFF.match(said, m.end))}
     if (more := [a for a in effect.added if a.category in kept_away]) and not request.question:
         out.append("you asked to keep " + ", ".join(sorted(c.replace("_", " ") for c in kept_away)) + " away, but the plan adds " + _names(more))
+    # "joggers keep cutting through lot A, fence it off": who keeps doing it is the trouble, never what to add
+    doers = {m.category for m in ph.find_categories(request.text.lower()) if _KEEPS_DOING.match(said, m.end)
+             and not ADD_WORDS.search(said[max(0, m.start - 20) : m.start])}
+    if (more := [a for a in effect.added if a.category in doers]) and not request.question:
+        out.append("you named " + ", ".join(sorted(c.replace("_", " ") for c in doers)) + " as the trouble (they keep at it), but the plan adds "
+                   + _names(more))
     if _AWAY.search(request.low) and effect.added and not request.question:  # "get the crowd away from the gate"
         out.append("you asked for things to go away, but the plan adds " + _names(effect.added))
     if LIVELIER.search(request.low) and effect.removed and not request.question:  # "liven them up"

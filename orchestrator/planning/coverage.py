@@ -320,6 +320,8 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     asks_to_add = ADD_WORDS.search(masked) is not None
     for m in named_in(masked):
         every = any(w in ("all", "every", "each", "both") for w in m.last_words(3))  # "line up all the cars": those there
+        # "the three lot B cars lined up along Main Street": so many of them, counted as known, are those there
+        every = every or _COUNTED_BACK.search(" ".join(m.last_words(4))) is not None
         # "stop sign to the other side of the road", "I want stop sign near ...": a thing named
         # bare as the clause's topic, with no word for adding, of which the scene holds one, is that one
         bare = (not m.plural and not asks_to_add and scene.count(m.category) == 1
@@ -333,12 +335,16 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
         # "cars in lot B: park them nose to tail": things said bare, then pointed back at, are those there
         said_back = m.plural and not indefinite and _POINTED_BACK.search(m.after) is not None
         pointed_back = said_back and not asks_to_add
-        if (not (bare or pointed_back or (any(w in _DEFINITE for w in m.last_words(2)) and not indefinite)) or not scene.count(m.category)
+        if (not (bare or pointed_back or every or (any(w in _DEFINITE for w in m.last_words(2)) and not indefinite)) or not scene.count(m.category)
                 or (m.category in arranged and not (every or said_back))):  # "the cars in lot B, line them up": those there
             continue
         if any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)
     return out
+
+
+# A definite article and a count before a noun: "the three cars", "those two benches".
+_COUNTED_BACK = re.compile(r"\b(?:the|those|these|our|my)\s+(?:\d+|two|three|four|five|six|seven|eight|nine|ten)\b")
 
 
 # Words right after a singular noun that single one out ("the car nearest the gate", "the tree

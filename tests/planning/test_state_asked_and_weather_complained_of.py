@@ -11,6 +11,7 @@ import math
 from drivetwin.orchestrator.planning.intent import asks
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
+from misreading import Fixed, add, call, held  # this folder is on sys.path (no __init__.py)
 
 
 def _ruled(campus, registry, *prompts: str) -> Session:
@@ -95,3 +96,16 @@ def test_a_thing_sent_elsewhere_is_never_sent_to_the_place_it_is_said_to_block(c
     moved = _ruled(campus, registry, "the bench is an eyesore, put it elsewhere, maybe by the fountain").scene.asset("bench_1")
     fountain = next(lm for lm in campus.landmarks if lm.name == "fountain").position
     assert moved is not None and math.dist((moved.pose.x, moved.pose.y), fountain[:2]) < 15
+
+
+def test_who_keeps_doing_it_is_the_trouble_never_what_is_added(campus, registry):
+    report = held(campus, registry, Fixed(add("pedestrian", count=4, location={"relation": "at", "target": "parking lot A"})),
+                  "students are always wandering across lot A, can we put a stop to it")
+    assert "trouble" in (report.error or (report.question.text if report.question else ""))
+
+
+def test_things_counted_as_known_are_those_there_even_in_a_layout(campus, registry):
+    row = Fixed(call("arrange_assets", categories=["passenger_car"], count=3, shape="line",
+                     location={"relation": "at", "target": "parking lot B"}))
+    report = held(campus, registry, row, "the three lot B cars should stand in one straight line instead")
+    assert "already there" in (report.error or (report.question.text if report.question else ""))
