@@ -41,6 +41,7 @@ from drivetwin.evals import (
     practice29_source,
     practice30_source,
     practice31_source,
+    practice32_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -124,6 +125,9 @@ BRIEFS: dict[str, Brief] = {
     # Eight voices: air-traffic controller, stage director, Russian, Nigerian English, estate agent, coach, tired parent,
     # hesitant over-thinker; every cell holds 13.
     "practice31": Brief(340, 11, 11, practice31_source, multi_turn=40, planned=20, compound=20),
+    # Eight voices: museum curator, Brazilian Portuguese speaker, electrician, Mandarin speaker, markdown lists,
+    # sarcastic user, warehouse manager, New Zealander; every cell holds 13.
+    "practice32": Brief(350, 12, 12, practice32_source, multi_turn=40, planned=20, compound=20),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
