@@ -153,6 +153,7 @@ _OUGHT = re.compile(r"[^,.;]*\b(?:should|must|needs? to|has to|have to|ought to|
 # is where something is, not something the plan must act on.
 _LOCATIVE = re.compile(
     r"\b(behind|beside|next to|in front of|near|around|by|past|alongside|opposite|across from|beyond"
+    r"|(?:on|to) the (?:left|right|(?:north|south|east|west)(?:ern)?|far|other) (?:side )?of"  # "the car on the left of the SUV"
     r"|towards?|(?:closer|nearer) to|nearer|(?:further|farther)(?: away)? from|away from"  # "5 m closer to the bench": where, not what
     r"|same colou?r as|colou?red like|match(?:es|ing)?(?: the colou?r of)?)\s+"  # "the same colour as the bus": a model, not what
     r"(?:(?:the|a|an|that|this|those|these|its|their|our)\s+)?(?:[a-z]+\s+)?$"

@@ -181,6 +181,7 @@ _NOT_INFO = r"(?!tell|say|know|see|find|check|count|list|show|measure)"
 _WRAPPED = re.compile(
     rf"\b(?:is it|would it be|will it be|is that) (?:at all )?possible (?:for (?:you|us|me) )?to {_NOT_INFO}\w+"
     rf"|\b(?:any|some) (?:chance|way) (?:that )?(?:you|we|i|someone) (?:could|can|might|would) {_NOT_INFO}\w+"
+    rf"|\bis there (?:any|a|some) (?:way|chance) (?:to|of) {_NOT_INFO}\w+"  # "is there any way to make the ego blue?"
     r"|\b(?:would|do) you mind (?!telling|saying|checking|counting|listing|showing)\w+ing\b"
     rf"|\bwonder(?:ing)? (?:if|whether) (?:you|we|i) (?:could|can|might) {_NOT_INFO}\w+"
     rf"|\bdo you think (?:you|we) (?:could|can) {_NOT_INFO}\w+")

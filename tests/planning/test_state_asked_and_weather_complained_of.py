@@ -109,3 +109,16 @@ def test_things_counted_as_known_are_those_there_even_in_a_layout(campus, regist
                      location={"relation": "at", "target": "parking lot B"}))
     report = held(campus, registry, row, "the three lot B cars should stand in one straight line instead")
     assert "already there" in (report.error or (report.question.text if report.question else ""))
+
+
+def test_a_thing_a_side_is_taken_from_is_where_not_what(campus, registry):
+    scene = _ruled(campus, registry, "make the car on the left of the SUV yellow").scene
+    painted = [a.id for a in scene.assets if a.appearance != (campus.asset(a.id) or a).appearance]
+    assert painted == ["passenger_car_1"]  # the SUV faces north: its left is the car west of it
+
+
+def test_is_there_a_way_to_do_it_asks_for_it_done(campus, registry):
+    assert not asks("is there any way to make the ego a different colour?")
+    assert asks("is there a way to find out where the bus is?")
+    session = _ruled(campus, registry, "thick fog please", "is there any way to get rid of the fog?")
+    assert session.scene.environment.weather.kind == "clear"
