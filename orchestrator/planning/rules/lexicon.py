@@ -32,8 +32,7 @@ ADD_WORDS = ("add", "create", "spawn", "place", "put", "insert", "set up", "inst
              "have a", "deploy", "station", "position a", "get a", "get some", "throw in")
 MOVE_WORDS = ("move", "shift", "relocate", "put", "place", "send", "bring", "take", "push", "pull",
               "slide", "nudge", "scoot", "drag", "teleport", "reposition", "park", "transfer", "should be", "would be",
-              "belongs", "wants its", "closer to", "over to", " to the ", "to ",
-              "elsewhere", "somewhere else", "out of the way")  # where it is not to be: moved, never made anew
+              "belongs", "wants its", "closer to", "over to", " to the ", "to ")
 REVERSE_WORDS = ("reverse", "back up", "back out", "backwards", "backward", "back off", "go back")
 SHIFT_VERBS = ("move", "shift", "nudge", "push", "slide", "budge", "relocate", "drag", "carry", "shove", "teleport")  # only ever a move
 TURN_WORDS = ("turn", "turned", "rotate", "rotated", "spin", "flip", "face", "faces", "facing", "wrong way", "other way",
