@@ -118,9 +118,9 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|at what distance|how long is|"
                    # "say position of the hydrant", "say separation to the traffic ahead": radio for "tell me"
                    r"(?:^|[,:]\s*)say (?:the |your )?(?:position|location|separation|distance|heading|speed|weather|time|what|which|where|how)\b|"
-                   r"(?:inventory|rundown|overview|summary|tally) of|how many|how far|how much|number of|count of|list of|"
+                   r"(?:inventory|rundown|overview|summary|tally|head ?count|count) of|how many|how far|how much|number of|count of|list of|"
                    r"distance (?:between|from)|"
-                   r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?)|"
+                   r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?|head ?count|count|tally|list)\b|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
                    r"find out|check (which|what|where|how|wh?ether|if)|"
                    # "kindly advise the location of ...", "need suv_1's pose in the map frame": where something is
@@ -616,10 +616,16 @@ def setting_shown(low: str) -> bool:
                for said in _SHOWN.finditer(low))
 
 
+# A tag question ending a statement: "..., right?", "..., isn't it?", "..., yeah?" (not "ok?", which asks leave).
+TAG_QUESTION = re.compile(r",\s*(?:right|yeah|yes|correct|true|no|is(?:n'?t| not)? (?:it|there|that)|are(?:n'?t| not)? (?:they|there))\s*\?+\s*$")
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
     if setting_shown(low):
         return False  # "show me the campus at dawn": the scene set so, to be seen
+    if TAG_QUESTION.search(low) and not commands(low):
+        return True  # "the SUV is parked, yeah?": whether what was said is so
     polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip())
                   or _setting_offered(low) or _HAVE_ONE.match(low) is not None or _thing_asked(low))
     return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
@@ -640,6 +646,7 @@ __all__ = [
     "REMINISCED",
     "REMOVE_WORDS",
     "REPORTED",
+    "TAG_QUESTION",
     "WHAT_IF",
     "asks",
     "commands",

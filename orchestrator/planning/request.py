@@ -19,6 +19,7 @@ from drivetwin.orchestrator.planning.intent import (
     REMINISCED,
     REMOVE_WORDS,
     REPORTED,
+    TAG_QUESTION,
     WHAT_IF,
     asks,
     commands,
@@ -127,7 +128,9 @@ def read_request(prompt: str, scene: Scene) -> Request:
     marked = not any(commands(part) for part in re.split(r"[.!?]+", low)) and any(
         _QUESTION_WORD.search(sentence) and not _QUESTION_WORD.match(sentence.strip(" ,;:-—")) and not _ASKED_TO_DO.match(sentence)
         for sentence in re.findall(r"[^.!?]*\?", low))
-    question = asks(low) or marked or (given is not None and not given.met)  # with no bus, whether there is one
+    # "no trucks anywhere, right?": a tag asks whether what was said is so (the reason stripper drops it)
+    tagged = TAG_QUESTION.search(ph.normalise(repaired).strip()) is not None and not commands(low)
+    question = asks(low) or marked or tagged or (given is not None and not given.met)  # with no bus, whether there is one
     polarity: Literal["add", "remove"] | None = (
         "remove" if REMOVE_WORDS.search(low) else "add" if ADD_WORDS.search(low) else None
     )

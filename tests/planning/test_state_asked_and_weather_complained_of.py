@@ -122,3 +122,12 @@ def test_is_there_a_way_to_do_it_asks_for_it_done(campus, registry):
     assert asks("is there a way to find out where the bus is?")
     session = _ruled(campus, registry, "thick fog please", "is there any way to get rid of the fog?")
     assert session.scene.environment.weather.kind == "clear"
+
+
+def test_a_headcount_and_a_tag_question_ask(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("could you give me a quick headcount of the benches")
+    assert report.ok and report.answer is not None and "bench_1" in report.answer
+    report = session.submit("the bench is still by the bus stop, isn't it?")
+    assert report.ok and report.answer is not None
+    assert session.scene == campus
