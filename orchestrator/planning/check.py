@@ -50,6 +50,7 @@ from drivetwin.orchestrator.planning.coverage import (
     asked_which_but_changed,
     away_from_thing,
     back_reference,
+    circumstance_added,
     definite_but_added,
     described_not_destination,
     environment_left_out,
@@ -509,6 +510,9 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
         out.append(f"the plan changes {_names(strays)}, which your words do not point at")
     if unasked := unnamed_added(request.masked, scope):
         out.append(f"the plan adds {_names(unasked)}, which your words do not name")
+    kit = _companions(effect)
+    out += [f"you spoke of {c.replace('_', ' ')} only as the setting, but the plan adds some"
+            for c in circumstance_added(request.masked, scope, scene) if c not in kit]
     out += [f"you spoke of your {c.replace('_', ' ')}, but the plan adds one; say 'add' if you want one"
             for c in possessed_added(request.masked, scope)]
     out += unknown_places(request.masked, effect.calls, scene)

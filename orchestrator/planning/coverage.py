@@ -711,6 +711,27 @@ def unnamed_added(masked: str, scope: Scope) -> list[AssetInstance]:
     return [a for a in scope.added if not any(re.search(rf"\b{re.escape(w)}\b", low) for w in lx.CONCEPTS.get(a.category, ()))]
 
 
+def circumstance_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
+    """Kinds a plan adds that the words name only as the setting of the request, never as what to
+    act on (see named_things): "put it where people actually go", "the kids at the fountain reckon
+    there's no shade", "a bench next to the tree" done by adding people or a tree."""
+    mentions = ph.find_categories(masked)
+    acted_on = named_things(masked, {m.category for m in mentions}, scene)
+    indexed = ph.normalise(masked)  # the text find_categories indexes
+    asked = {m.category for m in mentions if _added_by_verb(indexed, m.start)}  # "..., add two benches there"
+    return [c for c in dict.fromkeys(a.category for a in scope.added)
+            if c in {m.category for m in mentions} and c not in acted_on and c not in asked]
+
+
+def _added_by_verb(low: str, at: int) -> bool:
+    """Whether a word of adding governs the thing named at `at` in its clause, with no clause of
+    time, place or reason between ("add two benches there", not "put it where people go")."""
+    start = max(low.rfind(p, 0, at) for p in ",;.!?") + 1
+    verbs = [*ADD_WORDS.finditer(low, start, at), *_LEXICON_ADDS.finditer(low, start, at)]
+    last = max((v.end() for v in verbs), default=None)
+    return last is not None and not _BACKGROUND.search(low[last:at])
+
+
 # A thing of the speaker's ("my truck", "our van") spoken of, not asked for: the subject of what it
 # does or needs ("my truck can't park here", "my truck needs the room"), or after a preposition
 # ("ice on my truck roof"). "Park my truck in lot A" and "my truck, east gate" ask for one.

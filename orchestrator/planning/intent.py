@@ -17,9 +17,11 @@ from drivetwin.tools.appearance import COLOURS
 # Said of one ("the kid can't sleep unless it's dark", "students from the library want to sit outside"), it is
 # who the request is for too, as is whoever wants or complains.
 HOW_THINGS_GO = re.compile(
+    r"(?:(?:the|our|my|some|these|those|all the)\s+)?"
     r"(?:people|drivers|kids?|child|children|students?|pedestrians|visitors?|folks|passengers|everyone|nobody|no one)\b[^,;.]*?"
     r"\b(?:must have|keep|keeps|can't|cant|cannot|couldn't|don't|doesn't|never|always|have nowhere|has nowhere|have no|struggle"
-    r"|want|wants|would like|wish|wishes|complain|complains|complained)\b"
+    r"|want|wants|would like|wish|wishes|complain|complains|complained"
+    r"|reckon|reckons|say|says|said|think|thinks|feel|feels|would|will|could|might)\b"  # "the kids at the fountain reckon there's no shade"
     r"|\b[a-z]+s\s+(?:keep|kept)\s+(?:getting|being|on)\b")
 # What others say, which the request follows ("residents complain the test car dawdles and holds the
 # buses up. Have it do 30 mph."); not what they say should be ("people say there should be a bench").
@@ -118,7 +120,7 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|at what distance|how long is|"
                    # "say position of the hydrant", "say separation to the traffic ahead": radio for "tell me"
                    r"(?:^|[,:]\s*)say (?:the |your )?(?:position|location|separation|distance|heading|speed|weather|time|what|which|where|how)\b|"
-                   r"(?:inventory|rundown|overview|summary|tally|head ?count|count) of|how many|how far|how much|number of|count of|list of|"
+                   r"(?:inventory|rundown|overview|summary|tally|head ?count|count|stock ?take|census|roll ?call) of|how many|how far|how much|number of|count of|list of|"
                    r"distance (?:between|from)|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?|head ?count|count|tally|list)\b|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"
@@ -144,7 +146,8 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"|\bsee (?:wh?ether|if) (?!(?:you|u|we|i)\b)|\bremind (?:me|us) (?:again )?(?:what|which|where|how|wh?ether|if)\b"
                    # doubt about what is so: "I was wondering if there's a bin", "can't remember whether I parked it
                    # in lot A", "not sure if the hydrant is still there" (wondering whether we could is a request)
-                   r"|\bwonder(?:ing|ed)? (?:if|wh?ether) (?!(?:you|u|we|i|someone|somebody|anyone)\b)"
+                   # ("I wonder if the SUV could head to lot A?" wishes it done: see _POLITE)
+                   r"|\bwonder(?:ing|ed)? (?:if|wh?ether) (?!(?:you|u|we|i|someone|somebody|anyone)\b)(?![^.?!]*\b(?:could|might|would|can)\b)"
                    r"|\b(?:can'?t|cannot|don'?t|do not|couldn'?t) (?:remember|recall) (?:if|wh?ether|which|where|what|how)\b"
                    r"|\bnot (?:sure|certain) (?:if|wh?ether) (?!(?:you|u|we|i)\b)|\b(?:no|any) idea (?:if|wh?ether)\b")
 # Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
@@ -153,12 +156,18 @@ _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s
                      r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show|measure|work out)\b")
 # A request put politely, at the start of the sentence or of a clause ("..., could you add two
 # cars?", "could the bus go ..."): a command even when it ends with a question mark.
+# Commands a hedge may come before or after ("maybe slow it down a bit?", "angle it a bit, maybe?").
+_HEDGED_VERBS = ("add|put|drop|place|move|make|set|remove|take|get|give|turn|paint|park|bring|have|let'?s|slow|speed|angle|nudge|shift"
+                 "|rotate|lose|ditch|swap|stop|send|clear|delete")
 _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will|might) (?:you|we|i)\b|^\s*please\b(?!\s*,?\s*(?:where|what|which|how|who|is there|are there)\b)"
                      # "could there be a couple of people at the stop?": a wish for what should be there
                      r"|(?:^|[.!;,\-\u2013\u2014]\s*)(?:can|could) (?:there|someone|somebody) be\b"
                      # "maybe drop a car by the library?": a suggestion, hedged
-                     r"|^(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:add|put|drop|place|move|make|set|"
-                     r"remove|take|get|give|turn|paint|park|bring|have|let'?s)\b"
+                     # (any sentence of it: "Let the ego race around. Maybe slow it down a bit?"), and a command hedged
+                     # after it ("angle it a bit, maybe?") or put as a dare ("would it kill you to add a bin?")
+                     rf"|(?:^|[.!;?]\s*)(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:{_HEDGED_VERBS})\b"
+                     rf"|(?:^|[.!;?]\s*)(?:just\s+)?(?:{_HEDGED_VERBS})\b[^.!?]*,\s*(?:maybe|perhaps|possibly)\s*\?"
+                     r"|\bwould it (?:kill|hurt) (?:you|anyone|ya) to\b"
                      # "could the second car go in lot A?": a wish for where a thing should be
                      r"|(?:^|[.!;?]\s*)(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come|disappear|vanish|leave)\b"
                      # "the car you just put there, could it go forward?": the same wish for a thing named first
@@ -171,7 +180,10 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      r"(?:the|that|this|our|those|these|someone|somebody) (?:[\w'-]+ ){0,2}?(?:(?:could|might|may)(?: \w+ly| all| both| just)?(?:\s*\.+\s*|\s+))?"
                      # (a word straight after "the" names the thing: "the stop sign could ...")
                      r"(?<!\bthe )(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come|disappear|vanish|leave|live|shift|back up|reverse"
-                     r"|cross|walk|change|slow|speed|stop|brake|wait|head)\b(?! (?:in|into|through|under|past) (?:it|there|here)\b)")
+                     r"|cross|walk|change|slow|speed|stop|brake|wait|head)\b(?! (?:in|into|through|under|past) (?:it|there|here)\b)"
+                     # "maybe it could go somewhere?": the same wish said of the thing just spoken of
+                     r"|(?:^|[.!;?]\s*)(?:maybe|perhaps|possibly)[,\s]+(?:it|they) (?:could|might) (?:\w+ly )?"
+                     r"(?:go|be|move|stand|sit|park|drive|face|turn|come|leave|live|shift|back up|reverse|slow|speed|stop|wait|head)\b")
 
 
 # English's ways of wrapping a request in a question ("is it possible to park ...", "any chance we
@@ -301,7 +313,9 @@ def _contrasts(text: str) -> list[tuple[int, int, int]]:
 # you kindly, Margaret."); "good night" is left alone: it may ask for the night.
 _SALUTATION = re.compile(
     r"(?:^|(?<=[.!?]))\s*(?:good\s+(?:morning|afternoon|evening|day)|hello|hi|hey|hiya|greetings|dear\s+\w+"
-    r"|(?:many\s+)?thanks?(?:\s+you)?(?:\s+(?:so\s+much|kindly|very\s+much|in\s+advance|a\s+lot))?|cheers|(?:kind\s+|best\s+)?regards)"
+    r"|(?:many\s+)?thanks?(?:\s+you)?(?:\s+(?:so\s+much|kindly|very\s+much|in\s+advance|a\s+lot))?|cheers|(?:kind\s+|best\s+)?regards"
+    # a sentence that only acknowledges the last turn: "Sweet.", "Nice one!", "Sure, ..."
+    r"|sweet|cool|nice(?:\s+one)?|great|awesome|brilliant|perfect|lovely|excellent|sorted|ta|alright|sure)"
     r"(?:\s*,?\s+(?:there|all|everyone|team|folks|[a-z]+))?\s*(?:[,.!]+|$)"
     # the one spoken to, called by a radio station's name or the machine's: "Tower, ...", "Control: ..."
     r"|^\s*(?:tower|ground|control|base|approach|computer|system|drivetwin|sim|simulator)\s*[,:]", re.IGNORECASE)

@@ -488,7 +488,7 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[Too
     """set_asset_appearance for "paint the bus red", "the bins should blend in with the grass",
     "make the benches wooden"."""
     asked = md.colours_asked(r.low)  # "paint the red car blue": blue
-    colour = asked[-1] if asked else next((c for c in COLOURS if r.has((c,))), None)
+    colour = asked[-1] if asked else next((c for c in COLOURS if r.has((c,)) and not md.SIGNAL_STATE.search(r.low)), None)
     if colour is None and r.has(("blend in", "match", "same colour as", "colour of", "coloured like")):
         colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
     if colour is None and r.has(_CONSPICUOUS) and not TOO_CONSPICUOUS.search(r.low):  # "it stands out too much": less, never more
@@ -676,7 +676,7 @@ def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[Too
 # A colour said as another thing's: "the same colour as the bus", "to match the bench".
 _COLOUR_FROM = re.compile(r"\b(?:same colou?r as|colou?r of|colou?red like|match(?:es|ing)?(?: the colou?r of)?)\s+")
 # An amount said vaguely: "some", "a few" of them.
-_VAGUE_PART = re.compile(r"\b(?:some|several|a few|a couple|a handful)\b")
+_VAGUE_PART = re.compile(r"\b(?:some|several|a few|a handful)\b")  # ("a couple" is two, even of two)
 # A thing pointed back at ("remove it", "get rid of them"): never a place of the map.
 _PRONOUN = re.compile(r"\b(?:it|them|those|these|that one|this one)\b")
 # Waiting somewhere, as a thing standing still does ("wait at the bus stop", "stand by the fountain"); never
@@ -830,7 +830,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     if r.has(lx.REVERSE_WORDS) or _BACK_IT_UP.search(r.low):  # "back that SUV up 3 metres"
         if metres is None:
             notes.guess("how far to reverse")
-        step = metres or (SMALL_STEP_M if r.has(md.SMALL) else DEFAULT_STEP_M)
+        step = metres or (SMALL_STEP_M if r.has(md.SMALL_MOVE) else DEFAULT_STEP_M)
         return [ToolCall(tool="move_asset", args={"asset": asset, "forward": -abs(step)})]
     if r.has(lx.STOP_WORDS) and motion in ("vehicle", "walker") and not r.has(("stop sign",)):
         where = location(r, scene, memory, notes, exclude=ids) if _WAITS.search(r.low) and r.landmark else None
@@ -941,7 +941,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         if (said := _DESTINATION.search(r.low)) is not None:  # a place it goes to, said but not found: never a guess
             raise ph_error(f"I could not tell where {said.group(0)!r} is; name a place of this world or say how far which way")
         notes.guess(WAY_GUESSED)
-        step = metres or (SMALL_STEP_M if r.has(md.SMALL) else DEFAULT_STEP_M)
+        step = metres or (SMALL_STEP_M if r.has(md.SMALL_MOVE) else DEFAULT_STEP_M)
         every = [scene.asset(i) for i in ids]
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]

@@ -79,7 +79,9 @@ def weather(r: Reading) -> ToolCall | None:
             stopped = re.search(rf"\b(?:{words})\b(?:\s+\S+){{0,3}}?\s+(?:stop|stops|end|ends|clear|clears|go away|let up|off)\b", r.low)
             # "wet roads, not a downpour though": how strong it is denied, not the rain
             strength = re.search(rf"\bnot (?:a |too |to |that |so )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)  # "not to thick"
-            if kind != "clear" and strength is None and (re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low) or stopped):
+            # "close the fog", "shut the rain": switched off, as some say of lights
+            closed = re.search(rf"\b(?:close|shut)\s+(?:the\s+|that\s+)?(?:{words})\b", r.low)
+            if kind != "clear" and strength is None and (re.search(rf"{_DENIED}(?:\S+ ){{0,4}}(?:{words})\b", r.low) or stopped or closed):
                 return ToolCall(tool="set_weather", args={"kind": "clear"})  # "I don't want any rain any more"
             args: dict[str, Any] = {"kind": kind}
             if kind != "clear":
@@ -88,8 +90,12 @@ def weather(r: Reading) -> ToolCall | None:
                 # "rainy but not too strong": a strength denied is a light one
                 denied = strength or re.search(rf"\bnot (?:too |so |very )?(?:much )?(?:{'|'.join(map(re.escape, lx.HEAVY))})\b", r.low)
                 # "fog, light intensity", "low intensity rain": the strength said as such
-                denied = denied or re.search(r"\b(?:light|low|weak|gentle|mild)\s+(?:intens|strength|level)", r.low)
-                heavy = (r.has(lx.HEAVY) or re.search(r"[a-z]storm\b", r.low) is not None) and denied is None  # "a snowstorm"
+                denied = denied or re.search(r"\b(?:light|low|weak|gentle|mild)\s+(?:intens|strength|level)"
+                                             r"|\b(?:intensity|strength|level)\s*[:=]?\s*(?:light|low|weak|gentle|mild)\b", r.low)
+                # "a snowstorm"; "big snow", "proper rain": how much of it, said of the weather
+                big = re.search(rf"\b(?:big|huge|massive|serious|proper)\s+(?:{words})\b"
+                                r"|\b(?:intensity|strength|level)\s*[:=]?\s*(?:heavy|high|strong|thick|max\w*)\b", r.low)
+                heavy = (r.has(lx.HEAVY) or re.search(r"[a-z]storm\b", r.low) is not None or big is not None) and denied is None
                 light = denied is not None or (r.has(lx.LIGHT) and (bool(said_of_weather) or not r.has(_LAMP_CONTEXT))) \
                     or WEATHER_HEDGED.search(r.low) is not None  # "a bit cloudy", "a touch of fog": the check's own reading
                 args["intensity"] = HEAVY_INTENSITY if heavy else LIGHT_INTENSITY if light else DEFAULT_INTENSITY
@@ -275,8 +281,9 @@ def _too_much(low: str, kind: str) -> re.Match[str] | None:
     """The weather there is complained of as too much ("it's way too foggy", "too much rain", "the
     fog is far too thick"): less of it is wanted."""
     words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
-    return re.search(rf"\btoo (?:much |heavy |thick |dense |strong )?(?:{words})\b"
-                     rf"|\b(?:{words}) (?:is|are|'s|feels?|looks?) (?:\w+ )?too (?:heavy|thick|dense|strong|much|intense)\b", low)
+    return re.search(rf"\btoo (?:much |heavy |thick |dense |strong |big )?(?:{words})\b"
+                     rf"|\b(?:{words})(?: (?:is|are|'s|feels?|looks?|already|now|still|getting|way|far|much|a bit))* too"
+                     rf" (?:heavy|thick|dense|strong|much|intense|big)\b", low)
 
 
 def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:

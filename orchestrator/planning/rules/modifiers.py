@@ -175,14 +175,18 @@ _COLOUR_SAID = re.compile(r"\b(?:(the|that|this|those|these|not|no|than|from|is|
                           rf"({'|'.join(COLOURS)})\b(?!-)(\s+ones?\b)?")
 
 
+# A traffic signal's state, never a colour to paint: "waiting at a red light", "the green signal".
+SIGNAL_STATE = re.compile(r"\b(?:red|green|amber|yellow)\s+(?:lights?|signals?|phase)\b")
+
+
 def colours_asked(low: str) -> list[str]:
     """The colours a request asks things to be made, in order: every colour named but those that
-    select or describe ("paint the red car blue" asks for blue only)."""
+    select or describe ("paint the red car blue" asks for blue only) and a signal's state."""
     starts = {m.start for m in find_categories(low)}
     asked: list[str] = []
     for m in _COLOUR_SAID.finditer(low):
         rest = low[m.end(2) :]
-        if m.group(1) or m.group(3) or m.end(2) + len(rest) - len(rest.lstrip()) in starts:
+        if m.group(1) or m.group(3) or m.end(2) + len(rest) - len(rest.lstrip()) in starts or SIGNAL_STATE.match(low, m.start(2)):
             continue
         if asked and re.fullmatch(rf"{re.escape(asked[-1])}\s+", low[m.start(2) - len(asked[-1]) - 1 : m.start(2)]):
             continue  # "navy blue", "lime green": the first word is the shade of the second

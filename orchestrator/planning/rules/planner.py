@@ -1144,7 +1144,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         said = re.search(r"\b(?:more|another)\b", r.low)
         at = said.end() if said is not None else len(r.low)
         amount = re.match(r"\s+(?:\d+|[a-z]+)(?=\s+of\b|\s+(?:those|them|these)\b)", r.low[at:])  # "another pair of those"
-        plural = said is None or said.group(0) == "more" or amount is not None  # "another": one
+        # "another": one; "another pair of those": more; "another one of those": one
+        plural = said is None or said.group(0) == "more" or (amount is not None and amount.group(0).strip() not in ("1", "one"))
         at += amount.end() if amount is not None else 0
         counted = re.search(r"\b(\d+|[a-z]+)\s+$", r.low[: said.start()]) if said is not None else None
         if said is not None and counted is not None and (counted.group(1).isdigit() or counted.group(1) in ph.NUMBER_WORDS):

@@ -624,9 +624,13 @@ _WHERE_SLIP = re.compile(r"\bwere(?= (?:is|are|can|do|does|did|was)\b)", re.IGNO
 _WHETHER_SLIP = re.compile(r"(?:(?<=\bconfirm )|(?<=\bcheck )|(?<=\bsee )|(?<=\bknow )|(?<=\bwonder )|(?<=\bask )"
                            r"|(?<=\bsure )|(?<=\bout )|(?<=\bverify ))(?:wh?eather|wether|whather)\b"
                            r"|\bwh?ether(?= (?:it|there|or|we|you|i|they|the|any|all)\b)", re.IGNORECASE)
+# A markdown list's markers ("- add two cones", "2. make it rain"), never amounts; and its "key: value" lines
+# ("- weather: fog" / "- intensity: light"), one setting said in parts.
+_LIST_MARKER = re.compile(r"^[ \t]*(?:[-*\u2022+]|\d{1,2}[.)])[ \t]+", re.MULTILINE)
+_KEY_LINE = re.compile(r"^[ \t]*([a-z][a-z _]{0,20}):[ \t]*(?=\S)", re.IGNORECASE | re.MULTILINE)
 # "Make it rain. Heavy.", "Fog, please. Thick." : a strength said alone after the weather is its strength.
 _STRENGTH_AFTER = re.compile(r"(?P<weather>\b(?:rain\w*|snow\w*|fog\w*|mist\w*|drizzl\w*)\b[^.!;]*?)\s*[.!;]+\s+"
-                             r"(?P<strength>(?:very |really |quite |pretty )?(?:heavy|heavily|hard|thick|dense|strong|intense|light|lightly"
+                             r"(?P<strength>(?:very |really |quite |pretty |proper |real |super |nice and )?(?:heavy|heavily|hard|thick|dense|strong|intense|light|lightly"
                              r"|gentle|slight|thin)(?:\s*,?\s*(?:please|pls|thanks))?)\s*[.!]*\s*$", re.IGNORECASE)
 # "is their a bench", "their are cones": "their" next to "is"/"are" and before a thing is "there".
 _THERE_SLIP = re.compile(r"(?:(?<=\bis )|(?<=\bare )|(?<=\bwas )|(?<=\bwere ))their(?= (?:a|an|any|some|no|\d+)\b)"
@@ -659,7 +663,7 @@ _GONE_STATE = re.compile(r"\b(has|have|had|'s|'ve) gone (?=(?:(?:rather|a bit|a 
 _ONE_MORE = re.compile(r"\ba (?:second|third|fourth|fifth)\b(?=\s+(?!(?:time|times|later|or|ago|earlier|long|longer|after|before|to|and|of|in|at)\b)[a-z])",
                        re.IGNORECASE)
 # "turn of the street light": "of" right after a switching verb is a slip for "off".
-_OFF_SLIP = re.compile(r"\b(turn|switch|shut|power|take|clear|get) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
+_OFF_SLIP = re.compile(r"\b(turn|switch|shut|power|(?<!stock )take|clear|get) of(?= (?:the|all|every|those|these|them|it)\b)", re.IGNORECASE)
 # A car park named by its letter, as the British say a parking lot: "car park A".
 _CAR_PARK_OF = re.compile(r"\bcar\s?park\s+(?=[a-z]\b(?!')(?!\s+(?:car|bus|van|truck|lorry|bench|cone|few|bit)\b))", re.IGNORECASE)
 
@@ -961,6 +965,9 @@ def _places_by_kind(text: str) -> str:
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
+    text = _LIST_MARKER.sub("", text)
+    if len(keyed := _KEY_LINE.findall(text)) >= 2 and len(keyed) == len(text.strip().splitlines()):
+        text = ", ".join(_KEY_LINE.sub(r"\1 ", line).strip() for line in text.strip().splitlines())  # "weather fog, intensity light"
     text = _DOTTED_MERIDIEM.sub(lambda m: f"{m.group(1).lower()}m", text)  # "8 a.m. and ...": 8 am
     text = _formal_forms(text, vocab)
     text = _ROUGHLY.sub(r"about \1", text)  # "cones round the rubble, six-ish": about six
