@@ -135,7 +135,7 @@ _KIND_OF_WEATHER = {"rain": "rain", "drizzle": "rain", "downpour": "rain", "snow
                     "cloud": "cloudy", "overcast": "cloudy",
                     "sunny": "clear", "sunshine": "clear", "clear sk": "clear"}
 _WEATHER_DENIED = re.compile(r"(?:\b(?:no|not|without|stop|too|less|rid of|instead of|any more|anymore|than|it'?s|it is|currently|clear|lift"
-                             r"|remove|kill|cancel|off)\b"  # "turn off the fog", "off the rain": switched off, as lamps are
+                             r"|remove|kill|cancel|off|close|shut)\b"  # "turn off the fog", "off the rain", "close the rain": switched off
                              r"|n't\b)[^,.;]*$")  # "clear the fog", "lift the fog": away with it
 _WEATHER_ENDED = re.compile(r"\w*(?:\s+\S+){0,3}?\s+(?:stops?|ends?|clears?|go(?:es)? away|lets? up|off)\b")
 # Clock times said by name: the time tool has presets for them, checked as parts of the day.
@@ -433,8 +433,9 @@ def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
                                       or before[-1] in ("put", "place", "plant", "stick"))
         if before[-2:-1] and before[-2] in ("all", "both", "the", "those", "these"):
             asked_new = False  # "all three vehicles", "the two cars": things already there, counted
-        if re.match(r"\s*(?:number |no\.? |#)?\d+\b", m.after):
-            asked_new = False  # "put passenger car 2 in lot A": that one, by its number
+        if re.match(r"\s*(?:number |no\.? |#)?\d+\b(?!\s*(?:m\b|metres?|meters?|km|ft|feet|foot|yards?|m/s|mph|km/h|kph|seconds?|s\b|%))",
+                    m.after):
+            asked_new = False  # "put passenger car 2 in lot A": that one, by its number ("one car 25 metres ahead" is new)
         if asked_new and m.category in moved and m.category not in out:
             out.append(m.category)
     return out

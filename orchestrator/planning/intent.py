@@ -11,14 +11,18 @@ import re
 from functools import cache
 
 from drivetwin.tools.appearance import COLOURS
+from drivetwin.worlds.catalog import catalog
 
 # How things go, said of people or many things: "people there must have nowhere to ...", "cars keep
 # getting hidden behind ...", "the kids can't see them": a state of affairs, not a request.
 # Said of one ("the kid can't sleep unless it's dark", "students from the library want to sit outside"), it is
 # who the request is for too, as is whoever wants or complains.
+# What people are called, singular or plural: the catalog's words for a walker ("commuter", "jogger").
+_PEOPLE_WORDS = tuple(f"{re.escape(w)}s?" for w in dict.fromkeys((*catalog()["pedestrian"].words, "cyclist")) if " " not in w)
 HOW_THINGS_GO = re.compile(
     r"(?:(?:the|our|my|some|these|those|all the)\s+)?"
-    r"(?:people|drivers|kids?|child|children|students?|pedestrians|visitors?|folks|passengers|everyone|nobody|no one)\b[^,;.]*?"
+    # (people by any of the catalog's words for them: "the commuters at the stop say ...")
+    rf"(?:{'|'.join(sorted(_PEOPLE_WORDS, key=len, reverse=True))}|drivers|children|folks|passengers|everyone|nobody|no one)\b[^,;.]*?"
     r"\b(?:must have|keep|keeps|can't|cant|cannot|couldn't|don't|doesn't|never|always|have nowhere|has nowhere|have no|struggle"
     r"|want|wants|would like|wish|wishes|complain|complains|complained"
     r"|reckon|reckons|say|says|said|think|thinks|feel|feels|would|will|could|might)\b"  # "the kids at the fountain reckon there's no shade"

@@ -468,6 +468,10 @@ def _distance(r: Reading, scene: Scene, back: Anchor | None, origin: Anchor | No
     """measure_distance between the two things a clause names, each read on its own side of
     "from", "to", "and" or "between"; one thing named is measured from the asker (the ego), or
     from the `origin` an earlier "nearest" question measured from when it is the thing found."""
+    kinds = {m.category for m in r.mentions}
+    pair = [a.id for a in scene.assets if a.category in kinds] if len(kinds) == 1 and _PAIR.search(r.low) else []
+    if len(pair) == 2:  # "distance between the two traffic lights": the two there are
+        return Part(ToolCall(tool="measure_distance", args={"a": pair[0], "b": pair[1]}), Anchor("asset", pair[0]))
     ends: list[Anchor] = []
     for piece in _ENDS.split(r.text.lower()):
         if _ASKER_ALONE.match(piece):
@@ -494,6 +498,8 @@ def _distance(r: Reading, scene: Scene, back: Anchor | None, origin: Anchor | No
 
 
 _WAY_ASKED = re.compile(rf"\b(?:{_WAY})\b")
+# Two things of one kind measured against each other: "between the two lights", "how far apart are both cars".
+_PAIR = re.compile(r"\b(?:between|apart)\b.*\b(?:the two|both|the 2|the pair of)\b|\b(?:the two|both|the 2)\b.*\bapart\b")
 
 
 # A question about people: "who is near the fountain?", "who's waiting at the stop?".

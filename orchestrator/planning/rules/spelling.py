@@ -628,6 +628,9 @@ _WHETHER_SLIP = re.compile(r"(?:(?<=\bconfirm )|(?<=\bcheck )|(?<=\bsee )|(?<=\b
 # ("- weather: fog" / "- intensity: light"), one setting said in parts.
 _LIST_MARKER = re.compile(r"^[ \t]*(?:[-*\u2022+]|\d{1,2}[.)])[ \t]+", re.MULTILINE)
 _KEY_LINE = re.compile(r"^[ \t]*([a-z][a-z _]{0,20}):[ \t]*(?=\S)", re.IGNORECASE | re.MULTILINE)
+# A count said with a counting word, as Chinese and trade English do: "cone 6 piece", "3 pcs of barrier", "2 units bench".
+_PIECES_AFTER = re.compile(r"\b([a-z]+)\s+(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*(?:pieces?|pcs?|units?)\b", re.IGNORECASE)
+_PIECES_BEFORE = re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*(?:pieces?|pcs?|units?)(?:\s+of)?\s+", re.IGNORECASE)
 # "Make it rain. Heavy.", "Fog, please. Thick." : a strength said alone after the weather is its strength.
 _STRENGTH_AFTER = re.compile(r"(?P<weather>\b(?:rain\w*|snow\w*|fog\w*|mist\w*|drizzl\w*)\b[^.!;]*?)\s*[.!;]+\s+"
                              r"(?P<strength>(?:very |really |quite |pretty |proper |real |super |nice and )?(?:heavy|heavily|hard|thick|dense|strong|intense|light|lightly"
@@ -747,6 +750,8 @@ _SOUND_ALIKES = (
     # "next too the bench", "close too it": "too" before what it is next to is "to"
     (re.compile(r"\b(next|close|closer|up|back|over) too(?= (?:the|a|an|it|them|that|this|those|these|my|our)\b)",
                 re.IGNORECASE), r"\1 to"),
+    # "between the too traffic lights", "add too cones": "too" before a plural thing is two
+    (re.compile(r"\b(the|add|put|place|those|these|remove|move|all) too(?! (?:many|much|few|little|far)\b)(?= (?:[a-z]+ )?[a-z]+s\b(?! (?:is|are)\b))", re.IGNORECASE), r"\1 two"),
     # "ahead the AV", "in front the bench": of dropped
     (re.compile(r"\b(ahead|in front|instead|out) (?=the|our|my|it|them|that|this)\b", re.IGNORECASE), r"\1 of "),
     # "get rid o' the bench": of
@@ -858,6 +863,19 @@ def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "", 
     return thing + ("es" if thing.endswith(("s", "sh", "ch", "x")) else "s") if many else thing
 
 
+def _place_word_slip(word: str, before: str, vocab: frozenset[str], scene: Scene) -> str | None:
+    """The last word of a place's name, where the words before it are that name's and `word`, an
+    English word the vocabulary does not hold, is two slips or fewer from it ("the east gait",
+    "the main gait"); None otherwise ("the bus stops here": "stops" is known)."""
+    low = word.lower()
+    if len(low) < MIN_REPAIR_LEN or is_known(low, vocab):
+        return None
+    said = ph.normalise(before).rstrip()
+    hits = {name.split()[-1] for name in _place_phrases(scene) if len(name.split()) >= 2
+            and said.endswith(" " + " ".join(name.split()[:-1])) and edits(low, name.split()[-1]) <= 2}
+    return hits.pop() if len(hits) == 1 else None
+
+
 def _place_phrases(scene: Scene) -> frozenset[str]:
     """The scene's place names in lower case ("bus stop", "lot a entrance")."""
     return frozenset(ph.normalise(name).strip() for landmark in scene.landmarks for name in landmark.names())
@@ -966,6 +984,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
     text = _LIST_MARKER.sub("", text)
+    text = _PIECES_BEFORE.sub(r"\1 ", _PIECES_AFTER.sub(r"\2 \1", text))
     if len(keyed := _KEY_LINE.findall(text)) >= 2 and len(keyed) == len(text.strip().splitlines()):
         text = ", ".join(_KEY_LINE.sub(r"\1 ", line).strip() for line in text.strip().splitlines())  # "weather fog, intensity light"
     text = _DOTTED_MERIDIEM.sub(lambda m: f"{m.group(1).lower()}m", text)  # "8 a.m. and ...": 8 am
@@ -1036,8 +1055,9 @@ def repair(text: str, scene: Scene) -> Repaired:
         word = m.group(0)
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
-        slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :], _place_phrases(scene))
-        if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away
+        slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :], _place_phrases(scene)) \
+            or _place_word_slip(word, text[: m.start()], vocab, scene)
+        if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away; "the east gait"
             repairs.append(f"{word} -> {slip}")
             return slip
         new = _place_glued(word, scene) or _repair_word(word, vocab) or _split_glued(word, scene, vocab) \

@@ -1,0 +1,98 @@
+"""Readings and checks from one round's unseen suite, each worded here unlike any suite prompt: an
+inventory asked for, a signal's colour, people named as the setting, counts said as pieces or as "a
+couple", acknowledgements, hedged commands, weather strengths said several ways, markdown lists, a
+pair measured, and the last word of a place's name mistyped."""
+
+from __future__ import annotations
+
+import math
+
+from drivetwin.orchestrator.planning.intent import asks
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.session import Session
+from misreading import Fixed, add, call, held  # this folder is on sys.path (no __init__.py)
+
+
+def _ruled(campus, registry, *prompts: str) -> Session:
+    session = Session(campus, RulePlanner(), registry)
+    for prompt in prompts:
+        report = session.submit(prompt)
+        assert report.ok, report.error or report.question
+    return session
+
+
+def _said(report) -> str:
+    return report.error or (report.question.text if report.question else "")
+
+
+def test_an_inventory_asked_for_changes_nothing(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("can I get a stock take of the cars in lot B")
+    assert report.ok and report.answer is not None and "suv_1" in report.answer
+    assert session.scene == campus
+
+
+def test_a_signals_colour_is_never_paint(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    session.submit("the ego should sit at a red light by the north crosswalk")
+    assert session.scene.asset("ego").appearance == campus.asset("ego").appearance
+
+
+def test_people_named_as_the_setting_are_never_added(campus, registry):
+    plan = Fixed(add("pedestrian", count=3, location={"relation": "at", "target": "Student Union entrance"}))
+    assert "setting" in _said(held(campus, registry, plan, "move the bin to where the students hang out, the Student Union"))
+    plan = Fixed(add("pedestrian", count=2, location={"relation": "at", "target": "bus stop"}))
+    assert "pedestrian" in _said(held(campus, registry, plan, "the commuters at the bus stop say there's nowhere to sit"))
+    scene = _ruled(campus, registry, "people will want to rest by the fountain, add two benches there").scene
+    assert sum(a.category == "bench" for a in scene.assets) == 3
+
+
+def test_counts_said_as_a_couple_as_pieces_and_as_one_more(campus, registry):
+    scene = _ruled(campus, registry, "far too many lamp posts along the south side. lose a couple").scene
+    assert sum(a.category == "street_light" for a in scene.assets) == sum(a.category == "street_light" for a in campus.assets) - 2
+    scene = _ruled(campus, registry, "add 3 pcs of cone by the east gate", "nice one! another one of those by the main gate").scene
+    assert sum(a.category == "traffic_cone" for a in scene.assets) == 4
+    scene = _ruled(campus, registry, "add too trees by the fountain").scene
+    assert sum(a.category == "tree" for a in scene.assets) == sum(a.category == "tree" for a in campus.assets) + 2
+
+
+def test_a_command_hedged_or_dared_is_a_request(campus, registry):
+    for said in ("the ego is crawling. maybe speed it up a bit?", "turn the bench round a bit, perhaps?",
+                 "would it hurt you to add a bench by the fountain?", "the bus has sat there all day. maybe it could go?"):
+        assert not asks(said.lower()), said
+    bench = _ruled(campus, registry, "nudge the bench along a touch").scene.asset("bench_1")
+    start = campus.asset("bench_1")
+    assert 0.3 < math.dist((bench.pose.x, bench.pose.y), (start.pose.x, start.pose.y)) <= 2.0
+
+
+def test_weather_strength_said_several_ways(campus, registry):
+    assert _ruled(campus, registry, "snow please. proper heavy").scene.environment.weather.intensity > 0.8
+    assert _ruled(campus, registry, "weather change to rain, big rain").scene.environment.weather.intensity > 0.8
+    thinned = _ruled(campus, registry, "thick fog", "fog now way too thick").scene.environment.weather
+    assert thinned.kind == "fog" and thinned.intensity < 0.8
+    assert _ruled(campus, registry, "heavy rain", "close the rain please").scene.environment.weather.kind == "clear"
+
+
+def test_a_markdown_list_is_read_line_by_line(campus, registry):
+    weather = _ruled(campus, registry, "- weather: rain\n- intensity: low").scene.environment.weather
+    assert weather.kind == "rain" and weather.intensity < 0.5
+    scene = _ruled(campus, registry, "1. add a bench by the fountain\n2. make it night").scene
+    assert sum(a.category == "bench" for a in scene.assets) == 2 and scene.environment.time_of_day != campus.environment.time_of_day
+
+
+def test_two_of_a_kind_measured_against_each_other(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("how far apart are the two traffic lights?")
+    assert report.ok and report.answer is not None and "22.7" in report.answer
+
+
+def test_the_last_word_of_a_place_mistyped(campus, registry):
+    scene = _ruled(campus, registry, "put a bench by the main gait").scene
+    gate = next(lm for lm in campus.landmarks if lm.name == "main gate").position
+    new = [a for a in scene.assets if a.category == "bench" and campus.asset(a.id) is None]
+    assert len(new) == 1 and math.dist((new[0].pose.x, new[0].pose.y), gate[:2]) < 12
+
+
+def test_one_new_thing_a_distance_away_is_never_one_moved(campus, registry):
+    plan = Fixed(call("place_asset", asset="passenger_car_1",
+                      location={"relation": "in_front_of", "target": "ego", "distance": 30.0}))
+    assert "new passenger car" in _said(held(campus, registry, plan, "stick one car 30 m ahead of the ego in its lane"))
