@@ -446,6 +446,12 @@ NEAR_THING_M = 12.0
 _BESIDE = re.compile(r"\b(?:near|by|beside|next to|close to|alongside)\s+(?:the|that|this|our)\s+$")
 
 
+# A thing picked out by what it stands by, and a place it goes to said after: "the lamp post (that's) by the stop sign ... to the".
+_PICKED_BY = re.compile(r"\b(?:the|that|this)\s+[a-z ]{1,20}?\s+(?:(?:that'?s|which is|right|just)\s+)*"
+                        r"(?:near|by|beside|next to|close to)\s+(?:the|that|this|our)\s+$")
+_GOES_ON_TO = re.compile(r"\b(?:to|into|onto|towards?)\s+(?:the|a|an|lot|parking)\b")
+
+
 def away_from_thing(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """Things the words put beside a thing there ("stick a bin near the bench", "it should be by
     the hydrant") that the plan puts or leaves far from every thing of that kind."""
@@ -459,8 +465,8 @@ def away_from_thing(masked: str, scope: Scope, scene: Scene) -> list[str]:
     after = {a.id: a for a in [*scene.all_assets(), *scope.added, *scope.touched] if a.id not in removed}
     for m in named_in(masked):
         anchors = [a for a in after.values() if a.category == m.category]
-        if not _BESIDE.search(m.before) or not anchors:
-            continue
+        if not _BESIDE.search(m.before) or not anchors or (_PICKED_BY.search(m.before) and _GOES_ON_TO.search(m.after)):
+            continue  # "move the lamp post by the stop sign to the Engineering Hall": which lamp, not where
         far = [a for a in placed if a.category != m.category
                and min(math.hypot(a.pose.x - b.pose.x, a.pose.y - b.pose.y) for b in anchors) > NEAR_THING_M]
         if far:

@@ -96,3 +96,21 @@ def test_one_new_thing_a_distance_away_is_never_one_moved(campus, registry):
     plan = Fixed(call("place_asset", asset="passenger_car_1",
                       location={"relation": "in_front_of", "target": "ego", "distance": 30.0}))
     assert "new passenger car" in _said(held(campus, registry, plan, "stick one car 30 m ahead of the ego in its lane"))
+
+
+def test_a_thing_picked_out_by_what_it_stands_by(campus, registry):
+    def nearest(category: str, point: tuple[float, float]) -> str:
+        return min((a for a in campus.assets if a.category == category), key=lambda a: math.dist((a.pose.x, a.pose.y), point)).id
+
+    stop = next(lm for lm in campus.landmarks if lm.name == "bus stop").position[:2]
+    lamp = nearest("street_light", stop)
+    scene = _ruled(campus, registry, "colour the street lamp that's right by the bus stop green").scene
+    assert [a.id for a in scene.assets if a.appearance != (campus.asset(a.id) or a).appearance] == [lamp]
+    sign = campus.asset("stop_sign_1")
+    by_sign = nearest("street_light", (sign.pose.x, sign.pose.y))
+    scene = _ruled(campus, registry, "take away the lamp post next to the stop sign").scene
+    assert scene.asset(by_sign) is None and sum(a.category == "street_light" for a in scene.assets) == sum(
+        a.category == "street_light" for a in campus.assets) - 1
+    union = next(lm for lm in campus.landmarks if lm.name == "Student Union entrance").position[:2]
+    moved = _ruled(campus, registry, "shift the lamp post beside the stop sign over to the Student Union entrance").scene.asset(by_sign)
+    assert moved is not None and math.dist((moved.pose.x, moved.pose.y), union) < 15

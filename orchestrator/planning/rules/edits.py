@@ -28,6 +28,7 @@ from drivetwin.orchestrator.planning.rules.reading import (
     destination,
     find_count,
     find_place,
+    read,
 )
 from drivetwin.tools.appearance import COLOURS, hex_colour
 from drivetwin.tools.base import ToolCall
@@ -131,6 +132,10 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             point = _point_of(r, scene, memory)
             if point is not None:
                 return [(max if furthest else min)(present, key=lambda i: _distance_to(scene, i, point))]
+        by = _BY_AFTER.match(r.low[mention.end :]) if not mention.plural and len(present) > 1 else None
+        point = _anchor_after(r, scene, mention, mention.end + by.end()) if by is not None else None
+        if point is not None:  # "the lamp post by the bus stop", "the tree that's next to the bench": the one nearest it
+            return [min(present, key=lambda i: _distance_to(scene, i, point))]
         if _ONE_OF.search(r.low[: mention.start]):  # "move one of the cars to lot A": one, never all of them
             return recent[-1:] if recent else present[:1]
         if mention.plural or r.has(("all", "every", "each", "both")):
@@ -206,6 +211,50 @@ def _point_of(r: Reading, scene: Scene, memory: Memory) -> tuple[float, float] |
         return landmark.position[0], landmark.position[1]
     ego = scene.asset("ego") if r.ego else None
     return (ego.pose.x, ego.pose.y) if ego is not None else None
+
+
+# A thing picked out by what it stands by, said right after it: "the lamp post (that's) (right) by the bus stop".
+_BY_AFTER = re.compile(r"\s*(?:(?:that'?s|that is|which is|standing|sitting|right|just)\s+)*(?:by|near|next to|beside|close to|outside)\s+")
+
+
+def _anchor_after(r: Reading, scene: Scene, mention: ph.Mention, at: int) -> tuple[float, float] | None:
+    """Where the place, the ego or the one thing of a kind said right at `at` (after "by") stands;
+    None when what is said there is none of those or one of several."""
+    rest = r.low[at:]
+    lead = len(rest) - len(re.sub(r"^(?:the|a|an|that|this|our)\s+", "", rest))
+    if r.landmark is not None and at <= r.landmark_at <= at + lead:
+        return _point_of(r, scene, Memory())
+    said = r.low[at + lead :]  # another place than the clause's own ("the lamp by the bus stop ... closer to the Library")
+    place = next((lm for lm in scene.landmarks for n in lm.names() if said.startswith(ph.normalise(n).strip() + " ")
+                  or said.rstrip(" .!?") == ph.normalise(n).strip()), None)
+    if place is not None:
+        return place.position[0], place.position[1]
+    if r.ego and at <= r.ego_at <= at + lead:
+        ego = scene.asset("ego")
+        return (ego.pose.x, ego.pose.y) if ego is not None else None
+    after = next((m for m in r.mentions if at <= m.start <= at + lead and m is not mention), None)
+    there = [a for a in scene.assets if after is not None and a.category == after.category]
+    return (there[0].pose.x, there[0].pose.y) if len(there) == 1 else None
+
+
+def _without_description(r: Reading, scene: Scene) -> Reading | None:
+    """The clause without what picks its thing out ("the lamp post [by the stop sign] to the
+    Engineering Hall"), when a place to go to is said after it; None when none is."""
+    mention = r.mentions[0] if r.mentions else None
+    by = _BY_AFTER.match(r.low[mention.end :]) if mention is not None else None
+    if mention is None or by is None or _anchor_after(r, scene, mention, mention.end + by.end()) is None:
+        return None
+    at = mention.end + by.end()
+    rest = r.masked[at:]
+    lead = len(rest) - len(re.sub(r"^(?:the|a|an|that|this|our)\s+", "", rest))
+    after = next((m for m in r.mentions if at <= m.start <= at + lead and m is not mention), None)
+    end = after.end if after is not None else at + lead + len(re.match(r"[\s\u00a7]*(?:ego\b)?[\s\u00a7]*", rest[lead:]).group(0))
+    left = read(r.low[: mention.end] + " " + r.low[end:], scene)
+    return left if _GOES_AFTER.search(left.low[mention.end :]) else None
+
+
+# Where a thing is to go, said after what picks it out: "to", "over to", "into", "closer to".
+_GOES_AFTER = re.compile(r"\b(?:to|into|onto|towards?)\s+(?:the|a|an|lot|parking|[a-z]+_\d)")
 
 
 def _distance_to(scene: Scene, asset_id: str, point: tuple[float, float]) -> float:
@@ -400,6 +449,9 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         # "remove two of those cones": that many of them, the newest first; "leave one of those": all but one
         chosen = recent[-count:] if count and count < len(recent) and _kept(r) is None else _but_kept(r, recent)
         return [ToolCall(tool="remove_assets", args={"assets": chosen})] if chosen else None
+    by = _BY_AFTER.match(r.low[mention.end :]) if not mention.plural and count in (None, 1) else None
+    if by is not None and _anchor_after(r, scene, mention, mention.end + by.end()) is not None:
+        return [ToolCall(tool="remove_assets", args={"assets": referenced(r, scene, memory, notes)[:1]})]  # "the lamp by the stop sign"
     args: dict[str, Any] = {"category": name}
     grouped = any(name in members for members in md.groups_said(r.low).values())
     if grouped and count and r.landmark and not fewer and _kept(r) is None:
@@ -929,7 +981,8 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     across = _across_the_road(scene, found) if found is not None and _OTHER_SIDE.search(r.low) else None
     if across is not None:  # "stick the hydrant on the other side of the road": where it stands, mirrored over the road
         return [ToolCall(tool="place_asset", args={"asset": asset, "location": {"relation": "absolute", "x": across[0], "y": across[1]}})]
-    where = None if scoped else location(r, scene, memory, notes, exclude=ids)  # the place said which, not where to
+    # the place said which, not where to ("move the lamp post by the stop sign to the Engineering Hall")
+    where = None if scoped else location(_without_description(r, scene) or r, scene, memory, notes, exclude=ids)
     if where is not None:
         # "move them to the gate": each of them, side by side; a layout ("in one line") is not one place
         group = ids if where.get("relation") != "absolute" and md.layout_said(r.low) is None else [asset]
