@@ -114,3 +114,15 @@ def test_a_thing_picked_out_by_what_it_stands_by(campus, registry):
     union = next(lm for lm in campus.landmarks if lm.name == "Student Union entrance").position[:2]
     moved = _ruled(campus, registry, "shift the lamp post beside the stop sign over to the Student Union entrance").scene.asset(by_sign)
     assert moved is not None and math.dist((moved.pose.x, moved.pose.y), union) < 15
+
+
+def test_a_layout_asked_for_in_the_passive_and_a_thing_just_one_way_of_a_place(campus, registry):
+    lot_a = next(lm for lm in campus.landmarks if lm.name == "parking lot A").position[:2]
+    tree = min((a for a in campus.assets if a.category == "tree" and a.pose.y > lot_a[1]),
+               key=lambda a: math.dist((a.pose.x, a.pose.y), lot_a))
+    scene = _ruled(campus, registry, "That tree just north of lot A is protected. It has to be fenced off all the way round.").scene
+    assert scene.asset(tree.id).pose == tree.pose  # the tree stays where it stands
+    ring = [a for a in scene.assets if campus.asset(a.id) is None]
+    assert len(ring) >= 4 and all(math.dist((a.pose.x, a.pose.y), (tree.pose.x, tree.pose.y)) < 8 for a in ring)
+    painted = _ruled(campus, registry, "paint the tree just north of lot A gold").scene
+    assert [a.id for a in painted.assets if a.appearance != (campus.asset(a.id) or a).appearance] == [tree.id]

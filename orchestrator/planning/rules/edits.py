@@ -117,6 +117,9 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         side = side_of(r.low, scene)
         if side is not None:  # "the street lights on the south side": those on that side
             present = [i for i in present if (a := scene.asset(i)) is not None and side[1](a)]
+            point = _point_of(r, scene, memory) if not mention.plural else None
+            if point is not None:  # "the tree just north of lot A": of those that way, the one nearest it first
+                present.sort(key=lambda i: _distance_to(scene, i, point))
         if not present:
             return []
         sized = _SIZE_PICKED.search(r.low[: mention.start]) or _SIZE_OF.match(r.low[mention.end :])

@@ -62,6 +62,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     walk_said,
 )
 from drivetwin.orchestrator.planning.rules.environment import LIGHTS_DOWN, environment, lights
+from drivetwin.orchestrator.planning.rules.inflection import inflected
 from drivetwin.orchestrator.planning.rules.places import (
     EACH_PLACE,
     EDGE_OF,
@@ -1179,7 +1180,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             raise PlanningError(f"unknown asset {noun!r}; nearest: {', '.join(nearest_categories(noun))}")
         env = environment(r, scene.environment)
         return env or None
-    arranged = r.has(tuple(w for w in lx.ARRANGE_WORDS if w != "around")) or (r.has(("around",)) and not _AROUND_LOOSE.search(r.low))
+    # (a verb of it in any form: "it must be cordoned off", "ringed with cones")
+    arranged = r.has(tuple(w for w in lx.ARRANGE_WORDS if w != "around")) or (r.has(("around",)) and not _AROUND_LOOSE.search(r.low)) \
+        or inflected(_LAYOUT_VERBS).search(r.masked) is not None
     laid_out = (arranged or md.layout_said(r.masked) is not None  # "line up 4 bins"
                 or _AROUND_BY.search(r.low) is not None  # "the fountain should be ringed by six benches"
                 or _ROUND_IT.search(r.low) is not None
@@ -1199,6 +1202,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     return _add(r, scene, memory, notes)
 
 
+# Verbs of laying things out round or along something, read in any of their forms.
+_LAYOUT_VERBS = ("cordon", "surround", "encircle", "ring", "fence", "enclose", "rope off", "tape off")
 # Words of something to be done over time that, left unread in a request, leave part of it undone.
 _DROPPED_ACTION = re.compile(r"(?<!\bto )\b(?:follow\w*|overtak\w*|brak(?:e|es|ed|ing)|revers\w*|cut(?:s|ting)? in|chang\w* lanes?|"
                              r"slow\w* down|speed\w* up|accelerat\w*|yield\w*|tailgat\w*|swerv\w*)\b")

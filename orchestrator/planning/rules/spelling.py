@@ -631,6 +631,12 @@ _KEY_LINE = re.compile(r"^[ \t]*([a-z][a-z _]{0,20}):[ \t]*(?=\S)", re.IGNORECAS
 # A count said with a counting word, as Chinese and trade English do: "cone 6 piece", "3 pcs of barrier", "2 units bench".
 _PIECES_AFTER = re.compile(r"\b([a-z]+)\s+(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*(?:pieces?|pcs?|units?)\b", re.IGNORECASE)
 _PIECES_BEFORE = re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*(?:pieces?|pcs?|units?)(?:\s+of)?\s+", re.IGNORECASE)
+# A layout asked for in the passive, its thing first: "the tree north of lot A must be cordoned off all the way
+# round", "it should be ringed with cones"; read as the command ("cordon the tree ... off").
+_PASSIVE_LAYOUT = re.compile(r"(?:(?<=^)|(?<=[.!?;]\s))(?P<thing>[^.!?;,]+?)\s+(?:must|should|needs? to|has to|have to|ought to|is to|are to)"
+                             r"\s+be\s+(?P<verb>cordon|ring|surround|encircl|fenc|enclos|rop|tap)e?d\b(?P<off>\s+off\b)?", re.IGNORECASE)
+_LAYOUT_BASE = {"cordon": "cordon", "ring": "ring", "surround": "surround", "encircl": "encircle", "fenc": "fence",
+                "enclos": "enclose", "rop": "rope", "tap": "tape"}
 # "Make it rain. Heavy.", "Fog, please. Thick." : a strength said alone after the weather is its strength.
 _STRENGTH_AFTER = re.compile(r"(?P<weather>\b(?:rain\w*|snow\w*|fog\w*|mist\w*|drizzl\w*)\b[^.!;]*?)\s*[.!;]+\s+"
                              r"(?P<strength>(?:very |really |quite |pretty |proper |real |super |nice and )?(?:heavy|heavily|hard|thick|dense|strong|intense|light|lightly"
@@ -997,6 +1003,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _WHERE_SLIP.sub("where", text)
     text = _WHETHER_SLIP.sub("whether", text)
     text = _STRENGTH_AFTER.sub(lambda m: f"{m.group('strength')} {m.group('weather')}", text)
+    text = _PASSIVE_LAYOUT.sub(lambda m: f"{_LAYOUT_BASE[m.group('verb').lower()]}{' off' if m.group('off') else ''} {m.group('thing')}", text)
     text = _THERE_SLIP.sub("there", text)
     text = _THING_PRONOUN.sub("it", text)
     text = _OFF_SLIP.sub(r"\1 off", text)
