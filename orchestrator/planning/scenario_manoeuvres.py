@@ -62,7 +62,7 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
                       r"|motorbike|motorcycle|robot)(?:_\d+)?\s+(?:left|right)\s+(?:at|into|onto|on)\s+(?:the\s+)?(?:crossroads|junction"
                       r"|intersection|lights|place)\b"
                       # (said in the passive it is switched: "the fog can be turned off")
-                      r"|\b(?<!be )(?<!been )(?<!being )(?:turn\w*|take\w*|hang\w*|hook\w*|chuck\w*|pull\w* a|make\w* a)(?: a| off)?\s+(?:left|right|off(?! (?:all )?(?:the |those |these )?(?:[a-z]+ )?[a-z]*(?:lights?|lamps?)\b)(?! (?:all |every )?(?:the |those |these |them\b|it\b)(?!\s*(?:main|campus|road|street|drive|highway|motorway)\b)))\b|\bturn\w* at\b"
+                      r"|\b(?<!be )(?<!been )(?<!being )(?:turn\w*|take\w*|hang\w*|hook\w*|chuck\w*|pull\w* a|make\w* a)(?: a| off)?\s+(?:left|right|off(?! (?:all )?(?:the |those |these )?(?:[a-z]+ )?[a-z]*(?:lights?|lamps?)\b)(?! (?:some|a few|a couple|several|half|most|one|two|three|four|five|\d+)\b)(?! (?:all |every )?(?:the |those |these |them\b|it\b)(?!\s*(?:main|campus|road|street|drive|highway|motorway)\b)))\b|\bturn\w* at\b"
                       r"|\bgo(?:es)? straight\b|\bstraight (?:on|through|across|over|ahead)\b"
                       # a way to turn said with the junction it is taken at, in one clause: "turn the test
                       # car to the right at the junction", "take the left at the crossroads"

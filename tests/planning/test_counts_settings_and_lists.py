@@ -126,3 +126,16 @@ def test_a_layout_asked_for_in_the_passive_and_a_thing_just_one_way_of_a_place(c
     assert len(ring) >= 4 and all(math.dist((a.pose.x, a.pose.y), (tree.pose.x, tree.pose.y)) < 8 for a in ring)
     painted = _ruled(campus, registry, "paint the tree just north of lot A gold").scene
     assert [a.id for a in painted.assets if a.appearance != (campus.asset(a.id) or a).appearance] == [tree.id]
+
+
+def test_a_word_of_the_speakers_own_for_putting_and_words_said_together(campus, registry):
+    scene = _ruled(campus, registry, "toss two bollards in lot A and a bench by the Library").scene
+    assert sum(a.category == "bollard" for a in scene.assets) == sum(a.category == "bollard" for a in campus.assets) + 2
+    assert sum(a.category == "bench" for a in scene.assets) == 2
+    scene = _ruled(campus, registry, "get all the cars outta lot B").scene
+    assert not any(a.category in ("passenger_car", "suv") for a in scene.assets)
+    lamps = sum(a.category == "street_light" for a in campus.assets)
+    scene = _ruled(campus, registry, "way too many lamp posts. take off some").scene  # never a turn at a junction
+    assert 0 < lamps - sum(a.category == "street_light" for a in scene.assets) < lamps
+    scene = _ruled(campus, registry, "add 4 pcs of cone by the east gate", "cones too many, remove two piece").scene
+    assert sum(a.category == "traffic_cone" for a in scene.assets) == 2

@@ -628,9 +628,19 @@ _WHETHER_SLIP = re.compile(r"(?:(?<=\bconfirm )|(?<=\bcheck )|(?<=\bsee )|(?<=\b
 # ("- weather: fog" / "- intensity: light"), one setting said in parts.
 _LIST_MARKER = re.compile(r"^[ \t]*(?:[-*\u2022+]|\d{1,2}[.)])[ \t]+", re.MULTILINE)
 _KEY_LINE = re.compile(r"^[ \t]*([a-z][a-z _]{0,20}):[ \t]*(?=\S)", re.IGNORECASE | re.MULTILINE)
+# Words run together as they are said: "clear the cars outta lot B", "lemme see the cones".
+_SAID_TOGETHER = {"outta": "out of", "gimme": "give me", "lemme": "let me", "gonna": "going to", "gotta": "got to",
+                  "kinda": "kind of", "sorta": "sort of", "dunno": "don't know", "coulda": "could have", "shoulda": "should have"}
+_SAID_TOGETHER_RE = re.compile(rf"\b(?:{'|'.join(_SAID_TOGETHER)})\b", re.IGNORECASE)
 # A count said with a counting word, as Chinese and trade English do: "cone 6 piece", "3 pcs of barrier", "2 units bench".
 _PIECES_AFTER = re.compile(r"\b([a-z]+)\s+(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*(?:pieces?|pcs?|units?)\b", re.IGNORECASE)
-_PIECES_BEFORE = re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*(?:pieces?|pcs?|units?)(?:\s+of)?\s+", re.IGNORECASE)
+_PIECES_BEFORE = re.compile(r"\b(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\s*(?:pieces?|pcs?|units?)\b(?:\s+of)?\s*", re.IGNORECASE)
+
+
+def _counted_first(m: re.Match[str]) -> str:
+    """"cone 6 piece": "6 cone"; "remove three piece": "remove three" (a verb is no thing)."""
+    thing = m.group(1).lower()
+    return f"{m.group(2)} {m.group(1)}" if thing in _thing_words() or thing.rstrip("s") in _thing_words() else f"{m.group(1)} {m.group(2)}"
 # A layout asked for in the passive, its thing first: "the tree north of lot A must be cordoned off all the way
 # round", "it should be ringed with cones"; read as the command ("cordon the tree ... off").
 _PASSIVE_LAYOUT = re.compile(r"(?:(?<=^)|(?<=[.!?;]\s))(?P<thing>[^.!?;,]+?)\s+(?:must|should|needs? to|has to|have to|ought to|is to|are to)"
@@ -936,6 +946,26 @@ def _what_instead(text: str) -> str:
     return re.sub(r"\bit\b", said.group(2), text[said.end() :], count=1)
 
 
+# An unknown word opening a clause before a new thing's count ("chuck two motorbikes in lot A", "stage a
+# truck at the east gate"): a verb of putting, said in a word of the speaker's own.
+_PUTTING_SLOT = re.compile(r"(?:^|(?<=[.;!?]\s)|(?<=\bthen\s)|(?<=\band\s))([a-z]{3,})(?=\s+(?:a|an|one|two|three|four|five|six|\d+|a couple of|a few)\s+([a-z]+))",
+                           re.IGNORECASE)
+
+
+def _verb_of_putting(text: str, vocab: frozenset[str], repairs: list[str]) -> str:
+    """`text` with an unknown word that opens a clause before a count and a thing read as "put"."""
+    def put(m: re.Match[str]) -> str:
+        word, thing = m.group(1).lower(), m.group(2).lower()
+        # (an English word only: "remvoe two cones" is a slip the usual repair reads, never a verb of putting)
+        if is_known(word, vocab) or word in lx.GRAMMAR or not is_english(word) \
+                or (thing not in _thing_words() and thing.rstrip("s") not in _thing_words()):
+            return m.group(1)
+        repairs.append(f"{m.group(1)} -> put")
+        return "put"
+
+    return _PUTTING_SLOT.sub(put, text)
+
+
 @cache
 def _thing_words() -> tuple[str, ...]:
     return tuple(sorted({w.lower() for cat in catalog().values() for w in cat.words if " " not in w}))
@@ -990,7 +1020,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
     text = _LIST_MARKER.sub("", text)
-    text = _PIECES_BEFORE.sub(r"\1 ", _PIECES_AFTER.sub(r"\2 \1", text))
+    text = _SAID_TOGETHER_RE.sub(lambda m: _SAID_TOGETHER[m.group(0).lower()], text)
+    text = _PIECES_BEFORE.sub(r"\1 ", _PIECES_AFTER.sub(_counted_first, text))
     if len(keyed := _KEY_LINE.findall(text)) >= 2 and len(keyed) == len(text.strip().splitlines()):
         text = ", ".join(_KEY_LINE.sub(r"\1 ", line).strip() for line in text.strip().splitlines())  # "weather fog, intensity light"
     text = _DOTTED_MERIDIEM.sub(lambda m: f"{m.group(1).lower()}m", text)  # "8 a.m. and ...": 8 am
@@ -1085,6 +1116,7 @@ def repair(text: str, scene: Scene) -> Repaired:
         repairs.append(f"{word} -> {new}")
         return new
 
+    text = _verb_of_putting(text, vocab, repairs)  # before a slip repair makes "plonk" a pylon
     text = _WORD.sub(fix, text)
     if repairs:  # "the west crosing", respelt: the west crosswalk, as if typed right
         text = _MORE_ADJECTIVE.sub(_comparative, _places_by_kind(_CROSSINGS.sub("crosswalks", text)))
