@@ -887,7 +887,9 @@ def _place_word_slip(word: str, before: str, vocab: frozenset[str], scene: Scene
     if len(low) < MIN_REPAIR_LEN or is_known(low, vocab):
         return None
     said = ph.normalise(before).rstrip()
+    # (a head of real words: "the quad" has none, and "the lead car" is no quad)
     hits = {name.split()[-1] for name in _place_phrases(scene) if len(name.split()) >= 2
+            and not all(w in lx.GRAMMAR for w in name.split()[:-1])
             and said.endswith(" " + " ".join(name.split()[:-1])) and edits(low, name.split()[-1]) <= 2}
     return hits.pop() if len(hits) == 1 else None
 
