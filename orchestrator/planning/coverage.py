@@ -154,10 +154,14 @@ _OUGHT = re.compile(r"[^,.;]*\b(?:should|must|needs? to|has to|have to|ought to|
 _LOCATIVE = re.compile(
     r"\b(behind|beside|next to|in front of|near|around|by|past|alongside|opposite|across from|beyond"
     r"|(?:on|to) the (?:left|right|(?:north|south|east|west)(?:ern)?|far|other) (?:side )?of"  # "the car on the left of the SUV"
+    r"|(?:the )?way of"  # "in the way of the people who walk": where it stands, not what to act on
     r"|towards?|(?:closer|nearer) to|nearer|(?:further|farther)(?: away)? from|away from"  # "5 m closer to the bench": where, not what
     r"|same colou?r as|colou?red like|match(?:es|ing)?(?: the colou?r of)?)\s+"  # "the same colour as the bus": a model, not what
     r"(?:(?:the|a|an|that|this|those|these|its|their|our)\s+)?(?:[a-z]+\s+)?$"
 )
+# A thing said to be left as it is: "keep the SUV.", "leave the two cars where they are", "leave the bench alone".
+_SPARED_BEFORE = re.compile(r"\b(?:keep|keeping|leave|leaving)\s+(?:the|that|this|those|these|our|my|both|all)?\s*(?:two|three|\d+)?\s*(?:[a-z]+\s+)?$")
+_SPARED_AFTER = re.compile(r"\w*\s*(?:[,.;!?]|$|where (?:it|they)|alone\b|as (?:it|they)|in place\b|untouched\b|be\b)")
 # Category names that are also the planner's verbs ("stop the ego"): not a thing named.
 _VERB_NAMES = frozenset(
     w for table in (lx.STOP_WORDS, lx.MOVE_WORDS, lx.TURN_WORDS, lx.REMOVE_WORDS) for w in table if " " not in w
@@ -238,6 +242,8 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
             continue
         if _LOCATIVE.search(masked[max(0, m.start - 40) : m.start]):
             continue
+        if _SPARED_BEFORE.search(masked[max(0, m.start - 30) : m.start]) and _SPARED_AFTER.match(masked, m.end):
+            continue  # "..., keep the SUV", "leave the two cars where they are": not to be touched
         if _SO_AFTER.match(masked, m.end) and _STATE_VERB.search(masked, m.end, m.end + 30):
             continue  # "the visitors are from JTEKT, so the SUV goes ...": who the reason is about
         if not (near_place or compound):

@@ -49,7 +49,11 @@ REMOVE_WORDS = re.compile(
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)(?![^.;]*\b(?:into|onto|over to|somewhere (?:in|on|by|near))\b)"
     # "get those cars out of lot B": gone from there (moving them elsewhere says where to)
     # ("get the SUV out of the shot, somewhere in the other car park": a move, its place said after the comma)
-    r"|(?:get|take|clear) (?:\w+ ){1,3}out of (?![^.;]*\b(?:into|to|onto|somewhere (?:in|on|by|near)|and (?:put|park|move))\b)"
+    r"|(?:get|take|clear|pull) (?:\w+ ){1,3}out of (?![^.;]*\b(?:into|to|onto|somewhere (?:in|on|by|near)|and (?:put|park|move))\b)"
+    # "pull the truck off site", "the cones can go offsite": out of the world
+    r"|\boff[- ]?site\b|\boff (?:the )?(?:site|campus|set)\b(?![^.;]*\b(?:into|to|onto)\b)"
+    # "pull the two cars from lot B": gone from there
+    r"|pull (?:\w+ ){1,4}(?:from|off) (?=the|lot|parking|it|there)"
     # "clear most of the cars out of lot B", "clear the junk off the road": gone from there
     r"|clear (?:\w+ ){1,4}(?:out of|off|from)"
     r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much"

@@ -139,3 +139,17 @@ def test_a_word_of_the_speakers_own_for_putting_and_words_said_together(campus, 
     assert 0 < lamps - sum(a.category == "street_light" for a in scene.assets) < lamps
     scene = _ruled(campus, registry, "add 4 pcs of cone by the east gate", "cones too many, remove two piece").scene
     assert sum(a.category == "traffic_cone" for a in scene.assets) == 2
+
+
+def test_pulled_off_site_kept_things_markdown_marks_and_intensifiers(campus, registry):
+    scene = _ruled(campus, registry, "pull the SUV off site please").scene
+    assert scene.asset("suv_1") is None and scene.asset("passenger_car_1") is not None
+    scene = _ruled(campus, registry, "pull both passenger cars from lot B but keep the SUV").scene
+    assert scene.asset("suv_1") is not None and not any(a.category == "passenger_car" for a in scene.assets)
+    scene = _ruled(campus, registry, "pul the bench from the bus stop").scene  # as near "pull" as "put": never an addition
+    assert sum(a.category == "bench" for a in scene.assets) <= 1
+    moved = _ruled(campus, registry, "- move: `bench_1`\n- to: **the fountain**").scene.asset("bench_1")
+    fountain = next(lm for lm in campus.landmarks if lm.name == "fountain").position[:2]
+    assert moved is not None and math.dist((moved.pose.x, moved.pose.y), fountain) < 12
+    scene = _ruled(campus, registry, "lot A looks too much empty, put a couple of cars there").scene
+    assert sum(a.category == "passenger_car" for a in scene.assets) == 4

@@ -609,7 +609,7 @@ def edits(a: str, b: str) -> int:
 # follows, so "the moving car" stays an adjective. Verbs whose -ing form is a noun or a state in
 # this domain ("parking", "crossing", "building", "driving") are not among them.
 _COMMAND_VERBS = ("remove", "delete", "erase", "eliminate", "add", "create", "spawn", "insert", "place", "put",
-                  "move", "shift", "relocate", "rotate", "paint", "change", "make", "set", "get", "take", "bring")
+                  "move", "shift", "relocate", "rotate", "paint", "change", "make", "set", "get", "take", "bring", "pull", "push")
 _GERUND = re.compile(
     r"\b(remov|delet|eras|eliminat|add|creat|spawn|insert|plac|putt|mov|shift|relocat|rotat|paint|chang|mak|sett"
     r"|gett|tak|bring)ing(?= (?:the|a|an|all|every|some|that|those|this|these|it|them|\d|one|two|three|four|five)\b)",
@@ -628,6 +628,11 @@ _WHETHER_SLIP = re.compile(r"(?:(?<=\bconfirm )|(?<=\bcheck )|(?<=\bsee )|(?<=\b
 # ("- weather: fog" / "- intensity: light"), one setting said in parts.
 _LIST_MARKER = re.compile(r"^[ \t]*(?:[-*\u2022+]|\d{1,2}[.)])[ \t]+", re.MULTILINE)
 _KEY_LINE = re.compile(r"^[ \t]*([a-z][a-z _]{0,20}):[ \t]*(?=\S)", re.IGNORECASE | re.MULTILINE)
+# Markdown's emphasis and code marks and a heading's hashes ("**Goal:** ...", "`trash_bin_1`", "## Scene"): no words.
+_MARKDOWN = re.compile(r"\*\*|__|`|^#{1,6}\s+", re.MULTILINE)
+# "too much empty", "very much dark": an intensifier, never an amount ("too much rain" keeps it).
+_MUCH_ADJECTIVE = re.compile(r"\b(too|very|so) much (?=(?:empty|dark|bright|quiet|busy|slow|fast|big|small|close|far|near|full|crowded)\b)",
+                             re.IGNORECASE)
 # Words run together as they are said: "clear the cars outta lot B", "lemme see the cones".
 _SAID_TOGETHER = {"outta": "out of", "gimme": "give me", "lemme": "let me", "gonna": "going to", "gotta": "got to",
                   "kinda": "kind of", "sorta": "sort of", "dunno": "don't know", "coulda": "could have", "shoulda": "should have"}
@@ -1021,7 +1026,8 @@ def _places_by_kind(text: str) -> str:
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
-    text = _LIST_MARKER.sub("", text)
+    text = _LIST_MARKER.sub("", _MARKDOWN.sub("", text))
+    text = _MUCH_ADJECTIVE.sub(r"\1 ", text)
     text = _SAID_TOGETHER_RE.sub(lambda m: _SAID_TOGETHER[m.group(0).lower()], text)
     text = _PIECES_BEFORE.sub(r"\1 ", _PIECES_AFTER.sub(_counted_first, text))
     if len(keyed := _KEY_LINE.findall(text)) >= 2 and len(keyed) == len(text.strip().splitlines()):
@@ -1109,7 +1115,10 @@ def repair(text: str, scene: Scene) -> Repaired:
             # "plase the suv in lot A": a slip opening a clause before a thing is the command verb
             # it is as near to as to anything else ("place", not "please")
             near = [v for v in _COMMAND_VERBS if edits(word.lower(), v) <= edits(word.lower(), new)]
-            new = min(near, key=lambda v: edits(word.lower(), v)) if near else new
+            best = min((edits(word.lower(), v) for v in near), default=None)
+            # "pul the two cars from lot B": as near "pull" as "put", which would turn the request round; never guessed
+            new = None if len([v for v in near if edits(word.lower(), v) == best]) > 1 else min(
+                near, key=lambda v: edits(word.lower(), v)) if near else new
         if new is not None and new not in _thing_words() and _THING_SLOT.search(text[: m.start()]):
             near = [t for t in _thing_words() if edits(word.lower(), t) <= edits(word.lower(), new)]
             new = near[0] if len(near) == 1 else new  # one thing as near as the other word: the thing
