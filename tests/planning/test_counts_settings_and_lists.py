@@ -153,3 +153,9 @@ def test_pulled_off_site_kept_things_markdown_marks_and_intensifiers(campus, reg
     assert moved is not None and math.dist((moved.pose.x, moved.pose.y), fountain) < 12
     scene = _ruled(campus, registry, "lot A looks too much empty, put a couple of cars there").scene
     assert sum(a.category == "passenger_car" for a in scene.assets) == 4
+
+
+def test_lamps_opened_closed_and_killed(campus, registry):
+    assert _ruled(campus, registry, "open the street lights please").scene.environment.lighting.street_lights == "on"
+    assert _ruled(campus, registry, "lights on", "ok now close the street lamps").scene.environment.lighting.street_lights == "off"
+    assert _ruled(campus, registry, "lights on", "kill the lamps").scene.environment.lighting.street_lights == "off"

@@ -172,6 +172,10 @@ LIGHTS_DOWN = re.compile(r"\b(?:street ?light(?:s|ing)?|street ?lamps?|lamps|lig
                           r"(?:failed|failing|out|dead|broken|down|not working|(?:gone|went|are|is) (?:out|dark))\b")
 
 
+# "open the street light", "close the lamps", "kill the lights": switched on or off, as some say it.
+LAMPS_SWITCHED_AS_SAID = re.compile(r"\b(?:open|close|shut|kill)\s+(?:the\s+|all\s+(?:the\s+)?)?(?:street\s*)?(?:lights?|lamps?|lamp posts?)\b(?! down\b)")
+
+
 def lights(r: Reading) -> ToolCall | None:
     """Street or vehicle lights switched on or off, or None."""
     if LIGHTS_DOWN.search(r.low):  # "street lighting failed", "the lamps are out": off
@@ -180,9 +184,11 @@ def lights(r: Reading) -> ToolCall | None:
         return None
     if r.has(("light", "lights")) and not r.has((*_LAMP_CONTEXT, "on", "off")):
         return None
-    if not re.search(r"\b(on|off|up|lit|switch|switched|turn|turned|bright|brighter|dark|darker|see|visible)\b", r.low):
+    switched = LAMPS_SWITCHED_AS_SAID.search(r.low)
+    if not re.search(r"\b(on|off|up|lit|switch|switched|turn|turned|bright|brighter|dark|darker|see|visible)\b", r.low) and not switched:
         return None  # "the lights handle it": lamps named as a circumstance, not switched
-    state = "off" if r.has(("off", "switch off", "turn off", "no lights", "dark streets")) else "on"
+    off = r.has(("off", "switch off", "turn off", "no lights", "dark streets")) or (switched is not None and not switched.group(0).startswith("open"))
+    state = "off" if off else "on"
     vehicles = r.has(("headlights", "vehicle lights", "car lights", "vehicle", "vehicles"))
     streets = not vehicles or r.has(("street lights", "street", "streetlights", "lamps", "street lamps", "lamp posts"))
     # "street and vehicle lights on": both kinds said, both switched

@@ -61,7 +61,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     remove,
     walk_said,
 )
-from drivetwin.orchestrator.planning.rules.environment import LIGHTS_DOWN, environment, lights
+from drivetwin.orchestrator.planning.rules.environment import LAMPS_SWITCHED_AS_SAID, LIGHTS_DOWN, environment, lights
 from drivetwin.orchestrator.planning.rules.inflection import inflected
 from drivetwin.orchestrator.planning.rules.places import (
     EACH_PLACE,
@@ -1088,7 +1088,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
                        r"|\b(be|stay|kept|left)\s+(?:\w+\s+)?(on|off|lit|working)\b"
                        rf"|\b(switched|turned|flicked)\s+(on|off)\b{_SWITCH_ENDS}"  # "have the street lamps switched on"
                        rf"|\b((?:street\s?|vehicle\s|car\s|head)?lights?|(?:street\s?)?lamps?)\s+(on|off)\b{_SWITCH_ENDS}", r.low)
-    switch = switch or LIGHTS_DOWN.search(r.low)  # "the street lamps are out": off
+    switch = switch or LIGHTS_DOWN.search(r.low) or LAMPS_SWITCHED_AS_SAID.search(r.low)  # "the street lamps are out": off
     # "a car pulling in, with its headlights on": the car is what is asked for, its lights a detail
     adds_a_thing = any(m.category != "street_light" and not m.plural and re.search(r"\b(?:a|an|one)\s+(?:\w+\s+)?$", r.low[: m.start])
                        for m in r.mentions)
