@@ -35,7 +35,7 @@ REPORTED = re.compile(r"(?:residents|people|neighbou?rs|locals|parents|drivers|u
 # What a test is for, said as a case to see: "I want to see what happens if a child runs out in front of us".
 WHAT_IF = re.compile(r"\b(?:see|know|find out|check|test)\s+what (?:happens|would happen|will happen|the ego does)\s+(?:if|when)\b")
 # A place said to be empty as it is ("feels empty", "looks a bit bare"): a lack, not "empty it".
-BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b"
+BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s|too|so|very|rather|quite)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b"
                         # "empty roads and the lamps buzzing": places described, never "empty the roads"
                         r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
 REMOVE_WORDS = re.compile(

@@ -159,3 +159,10 @@ def test_lamps_opened_closed_and_killed(campus, registry):
     assert _ruled(campus, registry, "open the street lights please").scene.environment.lighting.street_lights == "on"
     assert _ruled(campus, registry, "lights on", "ok now close the street lamps").scene.environment.lighting.street_lights == "off"
     assert _ruled(campus, registry, "lights on", "kill the lamps").scene.environment.lighting.street_lights == "off"
+
+
+def test_too_empty_is_how_it_is_and_em_is_them(campus, registry):
+    scene = _ruled(campus, registry, "the Library front is way too empty, needs a tree or two").scene
+    assert sum(a.category == "tree" for a in scene.assets) > sum(a.category == "tree" for a in campus.assets)
+    scene = _ruled(campus, registry, "line up some bollards by the east gate - five of 'em").scene
+    assert sum(a.category == "bollard" for a in scene.assets) == sum(a.category == "bollard" for a in campus.assets) + 5

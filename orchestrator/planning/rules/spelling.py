@@ -1029,6 +1029,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _LIST_MARKER.sub("", _MARKDOWN.sub("", text))
     text = _MUCH_ADJECTIVE.sub(r"\1 ", text)
     text = _SAID_TOGETHER_RE.sub(lambda m: _SAID_TOGETHER[m.group(0).lower()], text)
+    text = re.sub(r"(?<![a-z])['\u2019]em\b", "them", text, flags=re.IGNORECASE)  # "eight of 'em"
     text = _PIECES_BEFORE.sub(r"\1 ", _PIECES_AFTER.sub(_counted_first, text))
     if len(keyed := _KEY_LINE.findall(text)) >= 2 and len(keyed) == len(text.strip().splitlines()):
         text = ", ".join(_KEY_LINE.sub(r"\1 ", line).strip() for line in text.strip().splitlines())  # "weather fog, intensity light"
