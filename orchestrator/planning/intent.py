@@ -45,6 +45,7 @@ REMOVE_WORDS = re.compile(
     r"|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cull\w*|prun(?:e|es|ed|ing)\b|weed(?:s|ed|ing)? (?:\w+ )?out"  # "them trees want thinning out"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
     r"|(?:must|should|may) ?n(?:o|')t (?:appear|exist|be (?:existing|there|here|present|visible|in (?:the )?(?:scene|run|simulation|world)))"
+    r"|(?:does|do) ?n(?:o|')t need to (?:exist|be (?:there|here|in (?:the )?scene))|\bneeds? not (?:exist|be there)"  # "maybe it doesn't need to exist?"
     # "get that truck out of here", "take the cones out of the scene": out of the world, not to a place
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)(?![^.;]*\b(?:into|onto|over to|somewhere (?:in|on|by|near))\b)"
     # "get those cars out of lot B": gone from there (moving them elsewhere says where to)
@@ -189,6 +190,8 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      # (a word straight after "the" names the thing: "the stop sign could ...")
                      r"(?<!\bthe )(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come|disappear|vanish|leave|live|shift|back up|reverse"
                      r"|cross|walk|change|slow|speed|stop|brake|wait|head)\b(?! (?:in|into|through|under|past) (?:it|there|here)\b)"
+                     # "maybe it doesn't need to exist?": a wish it were gone, hedged
+                     r"|(?:^|[.!;?]\s*)(?:maybe|perhaps)[,\s]+(?:it|they|that|this|the \w+) (?:does|do) ?n(?:o|')t need to\b"
                      # "maybe it could go somewhere?": the same wish said of the thing just spoken of
                      r"|(?:^|[.!;?]\s*)(?:maybe|perhaps|possibly)[,\s]+(?:it|they) (?:could|might) (?:\w+ly )?"
                      r"(?:go|be|move|stand|sit|park|drive|face|turn|come|leave|live|shift|back up|reverse|slow|speed|stop|wait|head)\b")

@@ -166,3 +166,8 @@ def test_too_empty_is_how_it_is_and_em_is_them(campus, registry):
     assert sum(a.category == "tree" for a in scene.assets) > sum(a.category == "tree" for a in campus.assets)
     scene = _ruled(campus, registry, "line up some bollards by the east gate - five of 'em").scene
     assert sum(a.category == "bollard" for a in scene.assets) == sum(a.category == "bollard" for a in campus.assets) + 5
+
+
+def test_a_thing_said_where_it_stands_then_wished_gone(campus, registry):
+    scene = _ruled(campus, registry, "that SUV has been sitting in lot B all week. perhaps it doesn't need to be there?").scene
+    assert scene.asset("suv_1") is None and scene.asset("passenger_car_1") is not None

@@ -453,6 +453,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         chosen = recent[-count:] if count and count < len(recent) and _kept(r) is None else _but_kept(r, recent)
         return [ToolCall(tool="remove_assets", args={"assets": chosen})] if chosen else None
     by = _BY_AFTER.match(r.low[mention.end :]) if not mention.plural and count in (None, 1) else None
+    # (by the clause's own place, the removal says so itself: near it, below)
+    by = by if by is None or not (r.landmark is not None and 0 <= r.landmark_at - mention.end - by.end() <= 5) else None
     if by is not None and _anchor_after(r, scene, mention, mention.end + by.end()) is not None:
         return [ToolCall(tool="remove_assets", args={"assets": referenced(r, scene, memory, notes)[:1]})]  # "the lamp by the stop sign"
     args: dict[str, Any] = {"category": name}

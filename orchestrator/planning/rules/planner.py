@@ -97,7 +97,7 @@ from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
 from drivetwin.worlds.catalog import catalog, is_layout_kit, nearest_categories
 from drivetwin.worlds.scene import DriveLane, Scene
-from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, surface_at
+from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, point_in_polygon, surface_at
 
 PROMPT_VERSION = "rules-2"
 # The guess noted when a clause says where but names no place the world has.
@@ -675,6 +675,7 @@ class RulePlanner:
         calls = _not_removed_twice(calls, scene)  # "clear the cars out of lot B: both sedans and the SUV"
         calls = _cleared_first(calls, scene)  # "could the bench go, and the bin be moved to where the bench was"
         calls = _not_restated(calls, text.lower())  # "turn it around ... turn it all the way around, the ego car"
+        calls = _not_put_where_it_is(calls, scene)  # "the SUV sits in lot B doing nothing. maybe it doesn't need to exist?"
         if calls and asks(text.lower()) and not any(commands(clause.lower()) for clause, _, _ in clauses):
             # "a driver mentioned a stop sign by the crossing; I want to confirm it's there": what the
             # story names is what the question is about, never something to add
@@ -813,6 +814,19 @@ def _as_searches(calls: list[ToolCall]) -> list[ToolCall]:
     # "anything near the crossing" beside "a stop sign near the crossing": the search for the kind
     return [c for c in out if not (c.tool == "find_assets" and not c.args.get("category") and set(c.args) <= {"near", "within"}
                                    and any(c.args.get("near") == k.get("near") for k in kinds))]
+
+
+def _not_put_where_it_is(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
+    """`calls` without a placement of a thing in the area it already stands in, where another call
+    acts on it too: a statement of where it is ("the SUV sits there in lot B"), read before the request."""
+    def idle(call: ToolCall) -> bool:
+        where, thing = call.args.get("location"), scene.asset(str(call.args.get("asset")))
+        place = scene.landmark(str(where.get("target"))) if isinstance(where, dict) and where.get("relation") == "at" else None
+        return (call.tool == "place_asset" and thing is not None and place is not None and place.polygon is not None
+                and point_in_polygon(thing.pose.x, thing.pose.y, place.polygon)
+                and sum(c.args.get("asset") == thing.id or thing.id in (c.args.get("assets") or []) for c in calls) > 1)
+
+    return [c for c in calls if not idle(c)]
 
 
 # What sets the weather, the time or the lights: in a question, what the environment is now.

@@ -359,7 +359,7 @@ def _place_glued(word: str, scene: Scene) -> str | None:
 
 # "bin's in a dumb spot": a thing's "is", not its belongings (not "it's", "that's": read as they are).
 _IS_CONTRACTED = re.compile(r"\b(?!(?:it|that|there|here|what|who|let|he|she)'s)([a-z]+)'s\s+(?=(?:in|on|at|too|not|still|now|right|way|over"
-                            r"|under|by|near|blocking|parked|standing|sitting|facing|a bit|so|very|really|always|just)\b)", re.IGNORECASE)
+                            r"|under|by|near|blocking|parked|standing|sitting|sat|stood|stuck|facing|a bit|so|very|really|always|just)\b)", re.IGNORECASE)
 # A console-style command ("/spawn cone", "/find suv"): the word is the command.
 _SLASH_COMMAND = re.compile(r"(?:^|(?<=[\s;,]))/(?=[a-z])", re.IGNORECASE)
 # A programmer's attribute set ("ego.speed = 8", "bin.pos = (10, -20)") and key=value pairs ("spacing=3m").
