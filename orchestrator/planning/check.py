@@ -147,6 +147,8 @@ MAX_READINGS = 3
 _LAYOUT_KIT = LAYOUT_KIT_TAGS | {"sign"}
 # Sending things off: "get the crowd away from the gate", "move those people away" (never more of them).
 _AWAY = re.compile(r"\b(?:get|move|send|shoo|clear|chase)\s+(?:the|those|these|that|them|it|all)\b(?:\s+[\w-]+){0,2}?\s+away\b")
+# A place beyond the world's edge: "well off the map", "outside the world", "past the edge of the map".
+_OFF_THE_MAP = re.compile(r"\b(?:off|outside|beyond|past)\s+(?:of\s+)?(?:the\s+)?(?:edge\s+of\s+(?:the\s+)?)?(?:map|world)\b")
 # Things to be kept away, said as the object of a verb of deterring ("something to keep people off the
 # grass", "deter cyclists from the footpath", "to stop cars parking there"): never what the plan adds.
 # ("keep the walker waiting" is having one; kept, it must be kept off, out or away.)
@@ -365,6 +367,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if (more := [a for a in effect.added if a.category in doers]) and not request.question:
         out.append("you named " + ", ".join(sorted(c.replace("_", " ") for c in doers)) + " as the trouble (they keep at it), but the plan adds "
                    + _names(more))
+    if _OFF_THE_MAP.search(request.low) and _moved(effect) and not request.question:  # "somewhere well off the map"
+        out.append("you asked for a place off the map, but the world ends at its edge; the plan moves " + _names(_moved(effect)))
     if _AWAY.search(request.low) and effect.added and not request.question:  # "get the crowd away from the gate"
         out.append("you asked for things to go away, but the plan adds " + _names(effect.added))
     if LIVELIER.search(request.low) and effect.removed and not request.question:  # "liven them up"

@@ -171,3 +171,11 @@ def test_too_empty_is_how_it_is_and_em_is_them(campus, registry):
 def test_a_thing_said_where_it_stands_then_wished_gone(campus, registry):
     scene = _ruled(campus, registry, "that SUV has been sitting in lot B all week. perhaps it doesn't need to be there?").scene
     assert scene.asset("suv_1") is None and scene.asset("passenger_car_1") is not None
+
+
+def test_list_lines_of_their_own_and_a_place_off_the_map(campus, registry):
+    scene = _ruled(campus, registry, "- bench colour: teal\n- bin colour: teal too").scene
+    assert all(scene.asset(i).appearance != campus.asset(i).appearance for i in ("bench_1", "trash_bin_1"))
+    report = held(campus, registry, Fixed(call("place_asset", asset="bench_1", location={"relation": "at", "target": "main gate"})),
+                  "move the bench past the main gate, right off the edge of the map")
+    assert "off the map" in _said(report)

@@ -627,6 +627,8 @@ _WHETHER_SLIP = re.compile(r"(?:(?<=\bconfirm )|(?<=\bcheck )|(?<=\bsee )|(?<=\b
 # A markdown list's markers ("- add two cones", "2. make it rain"), never amounts; and its "key: value" lines
 # ("- weather: fog" / "- intensity: light"), one setting said in parts.
 _LIST_MARKER = re.compile(r"^[ \t]*(?:[-*\u2022+]|\d{1,2}[.)])[ \t]+", re.MULTILINE)
+_QUALIFIER_KEYS = frozenset({"intensity", "strength", "level", "to", "at", "where", "place", "location", "position", "speed",
+                             "count", "number", "amount", "time", "colour", "color", "spacing", "shape", "heading", "near", "lane"})
 _KEY_LINE = re.compile(r"^[ \t]*([a-z][a-z _]{0,20}):[ \t]*(?=\S)", re.IGNORECASE | re.MULTILINE)
 # Markdown's emphasis and code marks and a heading's hashes ("**Goal:** ...", "`trash_bin_1`", "## Scene"): no words.
 _MARKDOWN = re.compile(r"\*\*|__|`|^#{1,6}\s+", re.MULTILINE)
@@ -1032,7 +1034,9 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = re.sub(r"(?<![a-z])['\u2019]em\b", "them", text, flags=re.IGNORECASE)  # "eight of 'em"
     text = _PIECES_BEFORE.sub(r"\1 ", _PIECES_AFTER.sub(_counted_first, text))
     if len(keyed := _KEY_LINE.findall(text)) >= 2 and len(keyed) == len(text.strip().splitlines()):
-        text = ", ".join(_KEY_LINE.sub(r"\1 ", line).strip() for line in text.strip().splitlines())  # "weather fog, intensity light"
+        # "weather fog, intensity light": a line that qualifies the one before joins it; others are requests of their own
+        lines = [(key.strip().lower(), _KEY_LINE.sub(r"\1 ", line).strip()) for key, line in zip(keyed, text.strip().splitlines(), strict=True)]
+        text = lines[0][1] + "".join((", " if key in _QUALIFIER_KEYS else ". ") + line for key, line in lines[1:])
     text = _DOTTED_MERIDIEM.sub(lambda m: f"{m.group(1).lower()}m", text)  # "8 a.m. and ...": 8 am
     text = _formal_forms(text, vocab)
     text = _ROUGHLY.sub(r"about \1", text)  # "cones round the rubble, six-ish": about six
