@@ -148,7 +148,7 @@ _BACKGROUND = re.compile(r"\b(where|when|while|before|after|because|so that|so|s
 # A reason said before ", so ..." ("the visitors are from JTEKT, so ..."): its things are the setting.
 _SO_AFTER = re.compile(r"[^.;!?]*,\s*so\b")
 _STATE_VERB = re.compile(r"\b(?:is|are|was|were|come|comes|came)\b")
-_OUGHT = re.compile(r"[^,.;]*\b(?:should|must|needs? to|has to|have to|ought to|" + WOULD_HELP + r")\b")  # "..., so maybe two benches would help"
+_OUGHT = re.compile(r"[^,.;]*\b(?:should|must|needs? to|has to|have to|ought to|(?:i|we)(?:'d| would)? (?:need|want|like)|" + WOULD_HELP + r")\b")  # "..., so maybe two benches would help"
 # A thing named after a preposition of place ("from behind the parked bus", "next to a bench")
 # is where something is, not something the plan must act on.
 _LOCATIVE = re.compile(

@@ -179,3 +179,9 @@ def test_list_lines_of_their_own_and_a_place_off_the_map(campus, registry):
     report = held(campus, registry, Fixed(call("place_asset", asset="bench_1", location={"relation": "at", "target": "main gate"})),
                   "move the bench past the main gate, right off the edge of the map")
     assert "off the map" in _said(report)
+
+
+def test_two_things_wished_for_together(campus, registry):
+    scene = _ruled(campus, registry, "the pavers start at the JTEKT entrance tomorrow, so we need a cone and a roadworks sign there").scene
+    assert sum(a.category == "traffic_cone" for a in scene.assets) == 1
+    assert sum(a.category == "construction_sign" for a in scene.assets) == 1

@@ -419,6 +419,10 @@ _THE_ONE = re.compile(r",\s*(?:i mean\s+|namely\s+)?the one\s+(?=(?:(?:north|sou
                       r"|closest|furthest|farthest|by|next|beside|behind|in|on|at|outside|opposite)\b)", re.IGNORECASE)
 
 
+# A wish that governs the things after it as a verb does: "I need", "we want", "I'd like".
+_WISHED = re.compile(r"\b(?:need|needs|want|wants|would like|'d like)\b")
+
+
 def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     """A clause whose verb governs two things ("remove the hydrant and the bin", "put the bench at
     the fountain and the bin at the bus stop"), as one clause per thing, each with the verb.
@@ -430,7 +434,7 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     low = clause.lower()
     for name in places:  # "the bus stop" has no verb in it
         low = re.sub(rf"\b{re.escape(name)}\b", lambda m: " " * len(m.group(0)), low)
-    verb = _VERB_AT.search(low)
+    verb = _VERB_AT.search(low) or _WISHED.search(low)  # "I need a barrier and a roadworks sign there": both wished for
     # "a line of cones and barriers" is one layout; "the car at the end of the row" names one of a row there
     if verb is None or any(w in low for w in (*lx.ARRANGE_WORDS, "between", " grid", "mix")) or re.search(r"(?<!\bthe) (?:line|row)\b", low):
         return [clause]

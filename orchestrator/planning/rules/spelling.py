@@ -896,7 +896,7 @@ def _place_word_slip(word: str, before: str, vocab: frozenset[str], scene: Scene
     said = ph.normalise(before).rstrip()
     # (a head of real words: "the quad" has none, and "the lead car" is no quad)
     hits = {name.split()[-1] for name in _place_phrases(scene) if len(name.split()) >= 2
-            and not all(w in lx.GRAMMAR for w in name.split()[:-1])
+            and not all(w in ("the", "a", "an", "this", "that", "our", "my") for w in name.split()[:-1])
             and said.endswith(" " + " ".join(name.split()[:-1])) and edits(low, name.split()[-1]) <= 2}
     return hits.pop() if len(hits) == 1 else None
 
