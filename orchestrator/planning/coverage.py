@@ -155,6 +155,7 @@ _LOCATIVE = re.compile(
     r"\b(behind|beside|next to|in front of|near|around|by|past|alongside|opposite|across from|beyond"
     r"|(?:on|to) the (?:left|right|(?:north|south|east|west)(?:ern)?|far|other) (?:side )?of"  # "the car on the left of the SUV"
     r"|(?:the )?way of"  # "in the way of the people who walk": where it stands, not what to act on
+    r"|across (?:the )?(?:road|street) from"
     r"|towards?|(?:closer|nearer) to|nearer|(?:further|farther)(?: away)? from|away from"  # "5 m closer to the bench": where, not what
     r"|same colou?r as|colou?red like|match(?:es|ing)?(?: the colou?r of)?)\s+"  # "the same colour as the bus": a model, not what
     r"(?:(?:the|a|an|that|this|those|these|its|their|our)\s+)?(?:[a-z]+\s+)?$"
@@ -357,7 +358,7 @@ _COUNTED_BACK = re.compile(r"\b(?:the|those|these|our|my)\s+(?:\d+|two|three|fou
 # Words right after a singular noun that single one out ("the car nearest the gate", "the tree
 # by the bus stop", "the car on the left", "car 2"): the planner's pick is then the words'.
 _SINGLES_OUT = re.compile(
-    r"\s*(?:(?:number |no\. |nr |# ?)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:m|metres?|meters?|ft|feet|foot|yards?|degrees?|deg|km|kph|mph)\b)|in\b(?!\s+colou?r)|at\b|on\b|"
+    r"\s*(?:(?:directly|right|just|immediately)\s+)?(?:(?:number |no\. |nr |# ?)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:m|metres?|meters?|ft|feet|foot|yards?|degrees?|deg|km|kph|mph)\b)|in\b(?!\s+colou?r)|at\b|on\b|"
     r"near|by\b|beside|next|behind|outside|inside|of\b|from\b|closest|nearest|furthest|farthest|that\b|"
     r"which\b|who\b|with\b|parked|driving|moving|standing|across|opposite|(?:north|south)?[\s-]?(?:north|south|east|west)\w*\s+of\b|"
     r"most\b|least\b|[a-z]+est\b|[a-z]+most\b)"
@@ -923,6 +924,10 @@ PICKED_RADIUS_M = 12.0
 _PLACING = ("move_asset", "place_asset", "arrange_assets")
 
 
+# Two things whose distances from what picks them differ by less than this are as near.
+TIE_M = 0.5
+
+
 def picked_by_thing(masked: str, scene: Scene) -> list[tuple[str, str, set[str]]]:
     """(what was said, category, the ids it picks out) for each thing picked out by another
     thing it stands by: the one of its kind nearest to one of those (or, in the plural, all of
@@ -942,7 +947,9 @@ def picked_by_thing(masked: str, scene: Scene) -> list[tuple[str, str, set[str]]
         def gap(asset: AssetInstance, anchors: list[tuple[float, float]] = anchors) -> float:
             return min(math.dist((asset.pose.x, asset.pose.y), p) for p in anchors)
 
-        meant = {a.id for a in mine if gap(a) <= PICKED_RADIUS_M} if kind.plural else {min(mine, key=gap).id}
+        # (in the singular, any as near as the nearest: "the car next to the SUV" with one each side is either)
+        meant = {a.id for a in mine if gap(a) <= PICKED_RADIUS_M} if kind.plural else {
+            a.id for a in mine if gap(a) <= min(map(gap, mine)) + TIE_M}
         said = indexed[m.start() : m.start("b") + refs[0].end].strip()  # up to the thing it stands by
         out.append((said, kind.category, meant))
     return out

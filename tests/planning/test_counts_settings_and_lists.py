@@ -185,3 +185,15 @@ def test_two_things_wished_for_together(campus, registry):
     scene = _ruled(campus, registry, "the pavers start at the JTEKT entrance tomorrow, so we need a cone and a roadworks sign there").scene
     assert sum(a.category == "traffic_cone" for a in scene.assets) == 1
     assert sum(a.category == "construction_sign" for a in scene.assets) == 1
+
+
+def test_a_thing_picked_across_the_road_and_two_as_near(campus, registry):
+    bench = campus.asset("bench_1")
+    over = min((a for a in campus.assets if a.category == "street_light" and a.pose.y > 0),
+               key=lambda a: abs(a.pose.x - bench.pose.x))
+    scene = _ruled(campus, registry, "recolour the lamp directly opposite the bench purple").scene
+    assert [a.id for a in scene.assets if a.appearance != (campus.asset(a.id) or a).appearance] == [over.id]
+    report = Session(campus, RulePlanner(), registry).submit("paint the car beside the SUV silver")  # one each side of it
+    assert not report.ok and "which" in _said(report)
+    scene = _ruled(campus, registry, "paint the car beside the SUV on the east side silver").scene
+    assert [a.id for a in scene.assets if a.appearance != (campus.asset(a.id) or a).appearance] == ["passenger_car_2"]

@@ -34,7 +34,7 @@ from drivetwin.tools.appearance import COLOURS, hex_colour
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import lane_under, most_of
 from drivetwin.worlds.catalog import Category, catalog
-from drivetwin.worlds.scene import AssetInstance, Scene
+from drivetwin.worlds.scene import AssetInstance, Pose, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, polyline_length
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
@@ -135,10 +135,18 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             point = _point_of(r, scene, memory)
             if point is not None:
                 return [(max if furthest else min)(present, key=lambda i: _distance_to(scene, i, point))]
+        tied: list[str] = []
         by = _BY_AFTER.match(r.low[mention.end :]) if not mention.plural and len(present) > 1 else None
         point = _anchor_after(r, scene, mention, mention.end + by.end()) if by is not None else None
+        if point is not None and by is not None and by.group("over"):  # "the lamp opposite the bench": by where it faces it
+            point = _across_the_road(scene, AssetInstance.model_construct(pose=Pose(x=point[0], y=point[1])))
         if point is not None:  # "the lamp post by the bus stop", "the tree that's next to the bench": the one nearest it
-            return [min(present, key=lambda i: _distance_to(scene, i, point))]
+            nearest = sorted(present, key=lambda i: _distance_to(scene, i, point))
+            # two as near ("the car next to the SUV", one each side): the words after it pick, or the check asks
+            if _distance_to(scene, nearest[1], point) - _distance_to(scene, nearest[0], point) > TIE_M:
+                return nearest[:1]
+            present = nearest
+            tied = [i for i in nearest if _distance_to(scene, i, point) <= _distance_to(scene, nearest[0], point) + TIE_M]
         if _ONE_OF.search(r.low[: mention.start]):  # "move one of the cars to lot A": one, never all of them
             return recent[-1:] if recent else present[:1]
         if mention.plural or r.has(("all", "every", "each", "both")):
@@ -146,6 +154,9 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         outermost = _outermost(r, scene, mention, present)
         if outermost is not None:
             return [outermost]
+        if tied and not recent:  # two as near and nothing else to pick by: which is the person's to say
+            raise ph_error(f"which {name.replace('_', ' ')}? {' and '.join(tied)} stand as near it; say which, "
+                           f"e.g. 'the one on the east side'")
         return recent[-1:] if recent else present[:1]
     nth = _NTH_ONE.search(r.low)
     recent = [i for i in memory.last_added() if scene.asset(i) is not None]
@@ -217,7 +228,10 @@ def _point_of(r: Reading, scene: Scene, memory: Memory) -> tuple[float, float] |
 
 
 # A thing picked out by what it stands by, said right after it: "the lamp post (that's) (right) by the bus stop".
-_BY_AFTER = re.compile(r"\s*(?:(?:that'?s|that is|which is|standing|sitting|right|just)\s+)*(?:by|near|next to|beside|close to|outside)\s+")
+_BY_AFTER = re.compile(r"\s*(?:(?:that'?s|that is|which is|standing|sitting|right|just|directly)\s+)*"
+                       r"(?:by|near|next to|beside|close to|outside|(?P<over>opposite|across (?:the )?(?:road|street) from))\s+")
+# Two things nearer than this to each other's distance from what they are picked by are as near.
+TIE_M = 0.5
 
 
 def _anchor_after(r: Reading, scene: Scene, mention: ph.Mention, at: int) -> tuple[float, float] | None:
