@@ -197,3 +197,10 @@ def test_a_thing_picked_across_the_road_and_two_as_near(campus, registry):
     assert not report.ok and "which" in _said(report)
     scene = _ruled(campus, registry, "paint the car beside the SUV on the east side silver").scene
     assert [a.id for a in scene.assets if a.appearance != (campus.asset(a.id) or a).appearance] == ["passenger_car_2"]
+
+
+def test_a_question_about_the_thing_by_a_place(campus, registry):
+    stop = next(lm for lm in campus.landmarks if lm.name == "bus stop").position[:2]
+    lamp = min((a for a in campus.assets if a.category == "street_light"), key=lambda a: math.dist((a.pose.x, a.pose.y), stop))
+    report = Session(campus, RulePlanner(), registry).submit("what colour is the street lamp next to the bus stop?")
+    assert report.ok and report.answer is not None and report.answer.startswith(lamp.id)

@@ -254,6 +254,20 @@ def _anchor_after(r: Reading, scene: Scene, mention: ph.Mention, at: int) -> tup
     return (there[0].pose.x, there[0].pose.y) if len(there) == 1 else None
 
 
+def picked_by_what_it_stands_by(r: Reading, scene: Scene, mention: ph.Mention) -> str | None:
+    """The one thing of the mention's kind picked out by what it stands by ("the lamp by the bus
+    stop", "the lamp opposite the bench"): the nearest to it; None when none is said or two are as near."""
+    by = _BY_AFTER.match(r.low[mention.end :]) if not mention.plural else None
+    point = _anchor_after(r, scene, mention, mention.end + by.end()) if by is not None else None
+    if point is not None and by is not None and by.group("over"):
+        point = _across_the_road(scene, AssetInstance.model_construct(pose=Pose(x=point[0], y=point[1])))
+    present = sorted((a.id for a in scene.assets if a.category == mention.category), key=lambda i: _distance_to(scene, i, point)) \
+        if point is not None else []
+    if not present or (len(present) > 1 and _distance_to(scene, present[1], point) - _distance_to(scene, present[0], point) <= TIE_M):
+        return None
+    return present[0]
+
+
 def _without_description(r: Reading, scene: Scene) -> Reading | None:
     """The clause without what picks its thing out ("the lamp post [by the stop sign] to the
     Engineering Hall"), when a place to go to is said after it; None when none is."""

@@ -22,7 +22,7 @@ from drivetwin.orchestrator.planning.intent import ASKED_ABOUT, PLACE_KIND
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.edits import named_at
+from drivetwin.orchestrator.planning.rules.edits import named_at, picked_by_what_it_stands_by
 from drivetwin.orchestrator.planning.rules.environment import environment
 from drivetwin.orchestrator.planning.rules.places import Notes, side_lane
 from drivetwin.orchestrator.planning.rules.reading import Reading, place_kind_said, read
@@ -394,6 +394,8 @@ def _entities(r: Reading, scene: Scene, back: Anchor | None) -> list[tuple[int, 
 def _only_instance(r: Reading, scene: Scene, mention: ph.Mention) -> str | None:
     """The asset a definite mention names when the scene holds exactly one of its category."""
     present = [a.id for a in scene.assets if a.category == mention.category]
+    if len(present) > 1 and _DEFINITE.search(r.low[: mention.start]):  # "what colour is the lamp by the bus stop?"
+        return picked_by_what_it_stands_by(r, scene, mention)
     return present[0] if len(present) == 1 and _DEFINITE.search(r.low[: mention.start]) else None
 
 

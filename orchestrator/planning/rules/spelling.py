@@ -648,8 +648,10 @@ def _counted_first(m: re.Match[str]) -> str:
     """"cone 6 piece": "6 cone"; "remove three piece": "remove three" (a verb is no thing)."""
     thing = m.group(1).lower()
     return f"{m.group(2)} {m.group(1)}" if thing in _thing_words() or thing.rstrip("s") in _thing_words() else f"{m.group(1)} {m.group(2)}"
+
+
 # A layout asked for in the passive, its thing first: "the tree north of lot A must be cordoned off all the way
-# round", "it should be ringed with cones"; read as the command ("cordon the tree ... off").
+# round", "it should be ringed with cones"; read as the command ("cordon off the tree ...").
 _PASSIVE_LAYOUT = re.compile(r"(?:(?<=^)|(?<=[.!?;]\s))(?P<thing>[^.!?;,]+?)\s+(?:must|should|needs? to|has to|have to|ought to|is to|are to)"
                              r"\s+be\s+(?P<verb>cordon|ring|surround|encircl|fenc|enclos|rop|tap)e?d\b(?P<off>\s+off\b)?", re.IGNORECASE)
 _LAYOUT_BASE = {"cordon": "cordon", "ring": "ring", "surround": "surround", "encircl": "encircle", "fenc": "fence",
