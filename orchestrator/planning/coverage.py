@@ -155,7 +155,7 @@ _LOCATIVE = re.compile(
     r"\b(behind|beside|next to|in front of|near|around|by|past|alongside|opposite|across from|beyond"
     r"|(?:on|to) the (?:left|right|(?:north|south|east|west)(?:ern)?|far|other) (?:side )?of"  # "the car on the left of the SUV"
     r"|(?:the )?way of"  # "in the way of the people who walk": where it stands, not what to act on
-    r"|across (?:the )?(?:road|street) from"
+    r"|across (?:the )?(?:road|street) from|(?:to the )?(?:north|south|east|west)(?:ern)?(?: side)? of"  # "the sedan east of the SUV"
     r"|towards?|(?:closer|nearer) to|nearer|(?:further|farther)(?: away)? from|away from"  # "5 m closer to the bench": where, not what
     r"|same colou?r as|colou?red like|match(?:es|ing)?(?: the colou?r of)?)\s+"  # "the same colour as the bus": a model, not what
     r"(?:(?:the|a|an|that|this|those|these|its|their|our)\s+)?(?:[a-z]+\s+)?$"
@@ -358,7 +358,7 @@ _COUNTED_BACK = re.compile(r"\b(?:the|those|these|our|my)\s+(?:\d+|two|three|fou
 # Words right after a singular noun that single one out ("the car nearest the gate", "the tree
 # by the bus stop", "the car on the left", "car 2"): the planner's pick is then the words'.
 _SINGLES_OUT = re.compile(
-    r"\s*(?:(?:directly|right|just|immediately)\s+)?(?:(?:number |no\. |nr |# ?)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:m|metres?|meters?|ft|feet|foot|yards?|degrees?|deg|km|kph|mph)\b)|in\b(?!\s+colou?r)|at\b|on\b|"
+    r"\s*(?:(?:directly|right|just|immediately|to the)\s+)?(?:(?:number |no\. |nr |# ?)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?!\s*(?:m|metres?|meters?|ft|feet|foot|yards?|degrees?|deg|km|kph|mph)\b)|in\b(?!\s+colou?r)|at\b|on\b|"
     r"near|by\b|beside|next|behind|outside|inside|of\b|from\b|closest|nearest|furthest|farthest|that\b|"
     r"which\b|who\b|with\b|parked|driving|moving|standing|across|opposite|(?:north|south)?[\s-]?(?:north|south|east|west)\w*\s+of\b|"
     r"most\b|least\b|[a-z]+est\b|[a-z]+most\b)"

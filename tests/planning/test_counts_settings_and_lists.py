@@ -204,3 +204,10 @@ def test_a_question_about_the_thing_by_a_place(campus, registry):
     lamp = min((a for a in campus.assets if a.category == "street_light"), key=lambda a: math.dist((a.pose.x, a.pose.y), stop))
     report = Session(campus, RulePlanner(), registry).submit("what colour is the street lamp next to the bus stop?")
     assert report.ok and report.answer is not None and report.answer.startswith(lamp.id)
+
+
+def test_a_thing_picked_by_the_way_it_stands_from_another(campus, registry):
+    for said, meant in (("repaint the sedan just west of the SUV orange", "passenger_car_1"),
+                        ("repaint the car to the east of the SUV orange", "passenger_car_2")):
+        scene = _ruled(campus, registry, said).scene
+        assert [a.id for a in scene.assets if a.appearance != (campus.asset(a.id) or a).appearance] == [meant], said

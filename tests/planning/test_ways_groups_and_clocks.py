@@ -333,8 +333,11 @@ def test_what_a_warning_is_made_with_is_asked_for(session):
 
 
 def test_what_not_to_do_then_what_to_do_does_the_second_with_it_meaning_the_first(context):
-    plan = RulePlanner().plan("Don't move the SUV, move the sedan beside it two metres forward.", context)
-    assert [c.tool for c in plan.calls] == ["move_asset"] and plan.calls[0].args["asset"].startswith("passenger_car")
+    plan = RulePlanner().plan("Don't move the SUV, move the sedan east of it two metres forward.", context)
+    assert [c.tool for c in plan.calls] == ["move_asset"] and plan.calls[0].args["asset"] == "passenger_car_2"
+    # a sedan stands each side of the SUV: "beside it" is either, which is asked, never the SUV moved
+    with pytest.raises(PlanningError, match="which passenger car"):
+        RulePlanner().plan("Don't move the SUV, move the sedan beside it two metres forward.", context)
 
 
 def test_only_what_not_to_do_changes_nothing(context):

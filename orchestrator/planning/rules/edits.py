@@ -136,6 +136,14 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             if point is not None:
                 return [(max if furthest else min)(present, key=lambda i: _distance_to(scene, i, point))]
         tied: list[str] = []
+        way = _WAY_OF_AFTER.match(r.low[mention.end :]) if not mention.plural and len(present) > 1 else None
+        there = _anchor_after(r, scene, mention, mention.end + way.end()) if way is not None else None
+        if there is not None and way is not None and (r.landmark is None or r.landmark_at < mention.end + way.end()):
+            # "the sedan east of the SUV": of those that way of it, the nearest
+            dx, dy = _COMPASS[way.group(1)]
+            beyond = [i for i in present if (a := scene.asset(i)) is not None and (a.pose.x - there[0]) * dx + (a.pose.y - there[1]) * dy > 0]
+            if beyond:
+                return [min(beyond, key=lambda i: _distance_to(scene, i, there))]
         by = _BY_AFTER.match(r.low[mention.end :]) if not mention.plural and len(present) > 1 else None
         point = _anchor_after(r, scene, mention, mention.end + by.end()) if by is not None else None
         if point is not None and by is not None and by.group("over"):  # "the lamp opposite the bench": by where it faces it
@@ -230,6 +238,9 @@ def _point_of(r: Reading, scene: Scene, memory: Memory) -> tuple[float, float] |
 # A thing picked out by what it stands by, said right after it: "the lamp post (that's) (right) by the bus stop".
 _BY_AFTER = re.compile(r"\s*(?:(?:that'?s|that is|which is|standing|sitting|right|just|directly)\s+)*"
                        r"(?:by|near|next to|beside|close to|outside|(?P<over>opposite|across (?:the )?(?:road|street) from))\s+")
+# A thing picked out by the way it stands from another: "the sedan (just) east of the SUV", "the car to the west of it".
+_WAY_OF_AFTER = re.compile(r"\s*(?:(?:that'?s|which is|just|right|directly|to the)\s+)*(north|south|east|west)(?:ern)?\s+of\s+")
+_COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}
 # Two things nearer than this to each other's distance from what they are picked by are as near.
 TIE_M = 0.5
 
