@@ -34,7 +34,7 @@ from drivetwin.tools.appearance import COLOURS, hex_colour
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.search import lane_under, most_of
 from drivetwin.worlds.catalog import Category, catalog
-from drivetwin.worlds.scene import AssetInstance, Pose, Scene
+from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, polyline_length
 
 # How far from a place its "clutter" or "stuff" reaches, metres (a bus stop's bench and bin).
@@ -117,9 +117,9 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         side = side_of(r.low, scene)
         if side is not None:  # "the street lights on the south side": those on that side
             present = [i for i in present if (a := scene.asset(i)) is not None and side[1](a)]
-            point = _point_of(r, scene, memory) if not mention.plural else None
-            if point is not None:  # "the tree just north of lot A": of those that way, the one nearest it first
-                present.sort(key=lambda i: _distance_to(scene, i, point))
+            centre = _point_of(r, scene, memory) if not mention.plural else None
+            if centre is not None:  # "the tree just north of lot A": of those that way, the one nearest it first
+                present = _nearest_first(scene, present, centre)[0]
         if not present:
             return []
         sized = _SIZE_PICKED.search(r.low[: mention.start]) or _SIZE_OF.match(r.low[mention.end :])
@@ -143,18 +143,12 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
             dx, dy = _COMPASS[way.group(1)]
             beyond = [i for i in present if (a := scene.asset(i)) is not None and (a.pose.x - there[0]) * dx + (a.pose.y - there[1]) * dy > 0]
             if beyond:
-                return [min(beyond, key=lambda i: _distance_to(scene, i, there))]
-        by = _BY_AFTER.match(r.low[mention.end :]) if not mention.plural and len(present) > 1 else None
-        point = _anchor_after(r, scene, mention, mention.end + by.end()) if by is not None else None
-        if point is not None and by is not None and by.group("over"):  # "the lamp opposite the bench": by where it faces it
-            point = _across_the_road(scene, AssetInstance.model_construct(pose=Pose(x=point[0], y=point[1])))
-        if point is not None:  # "the lamp post by the bus stop", "the tree that's next to the bench": the one nearest it
-            nearest = sorted(present, key=lambda i: _distance_to(scene, i, point))
-            # two as near ("the car next to the SUV", one each side): the words after it pick, or the check asks
-            if _distance_to(scene, nearest[1], point) - _distance_to(scene, nearest[0], point) > TIE_M:
-                return nearest[:1]
-            present = nearest
-            tied = [i for i in nearest if _distance_to(scene, i, point) <= _distance_to(scene, nearest[0], point) + TIE_M]
+                return _nearest_first(scene, beyond, there)[0][:1]
+        by_point = _by_point(r, scene, mention) if len(present) > 1 else None
+        if by_point is not None:  # "the lamp post by the bus stop", "the tree that's next to the bench": the one nearest it
+            present, tied = _nearest_first(scene, present, by_point)
+            if len(tied) == 1:  # two as near ("the car next to the SUV", one each side): the words after pick, or it is asked
+                return tied
         if _ONE_OF.search(r.low[: mention.start]):  # "move one of the cars to lot A": one, never all of them
             return recent[-1:] if recent else present[:1]
         if mention.plural or r.has(("all", "every", "each", "both")):
@@ -268,15 +262,24 @@ def _anchor_after(r: Reading, scene: Scene, mention: ph.Mention, at: int) -> tup
 def picked_by_what_it_stands_by(r: Reading, scene: Scene, mention: ph.Mention) -> str | None:
     """The one thing of the mention's kind picked out by what it stands by ("the lamp by the bus
     stop", "the lamp opposite the bench"): the nearest to it; None when none is said or two are as near."""
+    point = _by_point(r, scene, mention)
+    tied = _nearest_first(scene, [a.id for a in scene.assets if a.category == mention.category], point)[1] if point else []
+    return tied[0] if len(tied) == 1 else None
+
+
+def _by_point(r: Reading, scene: Scene, mention: ph.Mention) -> tuple[float, float] | None:
+    """Where what a singular mention is picked out by stands ("the lamp by the bus stop"), or its
+    mirror over the road ("the lamp opposite the bench"); None when no such words follow it."""
     by = _BY_AFTER.match(r.low[mention.end :]) if not mention.plural else None
     point = _anchor_after(r, scene, mention, mention.end + by.end()) if by is not None else None
-    if point is not None and by is not None and by.group("over"):
-        point = _across_the_road(scene, AssetInstance.model_construct(pose=Pose(x=point[0], y=point[1])))
-    present = sorted((a.id for a in scene.assets if a.category == mention.category), key=lambda i: _distance_to(scene, i, point)) \
-        if point is not None else []
-    if not present or (len(present) > 1 and _distance_to(scene, present[1], point) - _distance_to(scene, present[0], point) <= TIE_M):
-        return None
-    return present[0]
+    return _across_the_road_at(scene, point) if point is not None and by is not None and by.group("over") else point
+
+
+def _nearest_first(scene: Scene, ids: list[str], point: tuple[float, float]) -> tuple[list[str], list[str]]:
+    """`ids` nearest `point` first, and those of them as near as the nearest (within TIE_M)."""
+    ordered = sorted(ids, key=lambda i: _distance_to(scene, i, point))
+    best = _distance_to(scene, ordered[0], point) if ordered else 0.0
+    return ordered, [i for i in ordered if _distance_to(scene, i, point) <= best + TIE_M]
 
 
 def _without_description(r: Reading, scene: Scene) -> Reading | None:
@@ -290,7 +293,8 @@ def _without_description(r: Reading, scene: Scene) -> Reading | None:
     rest = r.masked[at:]
     lead = len(rest) - len(re.sub(r"^(?:the|a|an|that|this|our)\s+", "", rest))
     after = next((m for m in r.mentions if at <= m.start <= at + lead and m is not mention), None)
-    end = after.end if after is not None else at + lead + len(re.match(r"[\s\u00a7]*(?:ego\b)?[\s\u00a7]*", rest[lead:]).group(0))
+    blank = re.match(r"[\s\u00a7]*(?:ego\b)?[\s\u00a7]*", rest[lead:])  # a place or the ego, blanked in the masked words
+    end = after.end if after is not None else at + lead + (blank.end() if blank is not None else 0)
     left = read(r.low[: mention.end] + " " + r.low[end:], scene)
     return left if _GOES_AFTER.search(left.low[mention.end :]) else None
 
@@ -1071,7 +1075,12 @@ _OTHER_SIDE = re.compile(r"\b(?:on|to|onto|over to) (?:the )?other side of (?:th
 def _across_the_road(scene: Scene, thing: AssetInstance) -> tuple[float, float] | None:
     """Where `thing` stands mirrored over the middle of the road it is beside: the point as far
     past the road's centre as it stands before it; None with no road near."""
-    x, y = thing.pose.x, thing.pose.y
+    return _across_the_road_at(scene, (thing.pose.x, thing.pose.y))
+
+
+def _across_the_road_at(scene: Scene, point: tuple[float, float]) -> tuple[float, float] | None:
+    """`point` mirrored over the middle of the road nearest it; None with no road."""
+    x, y = point
     lanes = scene.roads.lanes
     if not lanes:
         return None
