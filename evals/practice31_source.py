@@ -89,6 +89,7 @@ from drivetwin.evals.practice_cases import (
     Suite,
     add,
     ahead_of,
+    any_shape,
     arrange,
     backs_up,
     behave,
@@ -132,6 +133,7 @@ from drivetwin.evals.practice_cases import (
     slows_down,
     some_in_lane,
     stops_before,
+    timed_event,
     turn,
     walks_over,
     weather,
@@ -226,28 +228,6 @@ HEDGER = (
 
 
 # --- Helpers ----------------------------------------------------------------------------------------------
-def any_shape(category: str | list[str], least: int, tolerance: float = 1.0) -> list[list[Json]]:
-    """Fair readings of 'a pattern' or 'some sort of shape': a line, a ring or a tight cluster."""
-    return [
-        [layout("line", category, least, tolerance=tolerance)],
-        [layout("ring", category, least, tolerance=tolerance)],
-        [layout("cluster", category, least, tolerance=6.0)],
-    ]
-
-
-def timed_event(actor: str, kind: str, seconds: float, passes: tuple[float, float]) -> Json:
-    """Run the scene: `actor` has a `kind` manoeuvre started by a clock (time) trigger within `seconds`, and
-    first gets as far as `passes` (so the manoeuvre did not start at once)."""
-    return {
-        "kind": "scenario",
-        "seconds": seconds,
-        "expect": [
-            {"kind": "event", "actor": actor, "manoeuvre": kind, "trigger": "simulation_time"},
-            {"kind": "reached", "actor": actor, "place": f"{passes[0]:g}, {passes[1]:g}", "within": 3.0},
-        ],
-    }
-
-
 # The ego (eastbound at 5 m/s from x = -60) halts short of the west crosswalk: its front never passes x = -13.
 EGO_HALTS_AT_WEST_CROSSWALK = stops_before(EGO, -13.0, -1.75, 20.0)
 

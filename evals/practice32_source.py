@@ -97,6 +97,7 @@ from drivetwin.evals.practice_cases import (
     Suite,
     add,
     ahead_of,
+    any_shape,
     arrange,
     backs_up,
     behave,
@@ -139,6 +140,7 @@ from drivetwin.evals.practice_cases import (
     slows_down,
     some_in_lane,
     stops_before,
+    timed_event,
     turn,
     walks_over,
     weather,
@@ -235,26 +237,6 @@ KIWI = (
 
 
 # --- Helpers ----------------------------------------------------------------------------------------------
-def any_shape(category: str | list[str], least: int, tolerance: float = 1.0) -> list[list[Json]]:
-    """Fair readings of 'some shape' or 'a nice composition': a line, a ring or a tight cluster."""
-    return [
-        [layout("line", category, least, tolerance=tolerance)],
-        [layout("ring", category, least, tolerance=tolerance)],
-        [layout("cluster", category, least, tolerance=6.0)],
-    ]
-
-
-def timed_event(actor: str, kind: str, seconds: float, passes: tuple[float, float]) -> Json:
-    """Run the scene: `actor` has a `kind` manoeuvre started by a clock (time) trigger within `seconds`, and
-    first gets as far as `passes` (so the manoeuvre did not start at once)."""
-    return {
-        "kind": "scenario",
-        "seconds": seconds,
-        "expect": [
-            {"kind": "event", "actor": actor, "manoeuvre": kind, "trigger": "simulation_time"},
-            {"kind": "reached", "actor": actor, "place": f"{passes[0]:g}, {passes[1]:g}", "within": 3.0},
-        ],
-    }
 
 
 def brighter() -> list[list[Json]]:

@@ -440,6 +440,28 @@ def stops_before(actor: str, x: float, y: float, seconds: float = 20.0) -> Json:
     }
 
 
+def any_shape(category: str | list[str], least: int, tolerance: float = 1.0) -> list[list[Json]]:
+    """Fair readings of 'a pattern', 'some shape' or 'a nice composition': a line, a ring or a tight cluster."""
+    return [
+        [layout("line", category, least, tolerance=tolerance)],
+        [layout("ring", category, least, tolerance=tolerance)],
+        [layout("cluster", category, least, tolerance=6.0)],
+    ]
+
+
+def timed_event(actor: str, kind: str, seconds: float, passes: tuple[float, float]) -> Json:
+    """Run the scene: `actor` has a `kind` manoeuvre started by a clock (time) trigger within `seconds`, and
+    first gets as far as `passes` (so the manoeuvre did not start at once)."""
+    return {
+        "kind": "scenario",
+        "seconds": seconds,
+        "expect": [
+            {"kind": "event", "actor": actor, "manoeuvre": kind, "trigger": "simulation_time"},
+            {"kind": "reached", "actor": actor, "place": f"{passes[0]:g}, {passes[1]:g}", "within": 3.0},
+        ],
+    }
+
+
 def reaches(actor: str, place: str, seconds: float, within: float = 4.0) -> Json:
     """Run the scene: `actor` comes within `within` metres of `place`."""
     return {
