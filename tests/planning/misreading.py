@@ -1,6 +1,7 @@
 """Planners that misread on purpose, for the plan-check tests: each answers every prompt with
 the same fixed calls, as the measured planners did when they misread a request; and the two
-outcomes those tests assert, a request held (the scene unchanged) or applied."""
+outcomes those tests assert, a request held (the scene unchanged) or applied; and the rule planner's
+session those tests read requests with (`ruled`)."""
 
 from __future__ import annotations
 
@@ -44,4 +45,15 @@ def applied(campus: object, registry: object, planner: object, prompt: str) -> S
     session = Session(campus, planner, registry)  # type: ignore[arg-type]
     report = session.submit(prompt)
     assert report.ok, report.error or report.question
+    return session
+
+
+def ruled(campus: object, registry: object, *prompts: str) -> Session:
+    """A rule-planner session that has applied every one of `prompts`."""
+    from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+
+    session = Session(campus, RulePlanner(), registry)  # type: ignore[arg-type]
+    for prompt in prompts:
+        report = session.submit(prompt)
+        assert report.ok, report.error or report.question
     return session

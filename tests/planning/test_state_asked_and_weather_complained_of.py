@@ -11,15 +11,7 @@ import math
 from drivetwin.orchestrator.planning.intent import asks
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
-from misreading import Fixed, add, call, held  # this folder is on sys.path (no __init__.py)
-
-
-def _ruled(campus, registry, *prompts: str) -> Session:
-    session = Session(campus, RulePlanner(), registry)
-    for prompt in prompts:
-        report = session.submit(prompt)
-        assert report.ok, report.error or report.question
-    return session
+from misreading import Fixed, add, call, held, ruled  # this folder is on sys.path (no __init__.py)
 
 
 def test_whether_the_weather_is_so_is_looked_at_not_set(campus, registry):
@@ -41,19 +33,19 @@ def test_a_question_after_knowing_with_its_to_left_out(campus, registry):
 
 def test_weather_said_to_be_too_much_is_made_lighter(campus, registry):
     for setup, said in (("thick fog please", "ugh, it's far too foggy now"), ("heavy rain", "the rain feels way too heavy")):
-        before = _ruled(campus, registry, setup).scene.environment.weather
-        after = _ruled(campus, registry, setup, said).scene.environment.weather
+        before = ruled(campus, registry, setup).scene.environment.weather
+        after = ruled(campus, registry, setup, said).scene.environment.weather
         assert after.kind == before.kind and after.intensity < before.intensity, said
-    assert _ruled(campus, registry, "fog please", "ok that fog can be switched off now").scene.environment.weather.kind == "clear"
+    assert ruled(campus, registry, "fog please", "ok that fog can be switched off now").scene.environment.weather.kind == "clear"
 
 
 def test_a_strength_said_alone_after_the_weather(campus, registry):
-    assert _ruled(campus, registry, "Let it snow. Heavy please.").scene.environment.weather.intensity > 0.8
-    assert _ruled(campus, registry, "Bring in some mist! Thin.").scene.environment.weather.intensity < 0.4
+    assert ruled(campus, registry, "Let it snow. Heavy please.").scene.environment.weather.intensity > 0.8
+    assert ruled(campus, registry, "Bring in some mist! Thin.").scene.environment.weather.intensity < 0.4
 
 
 def test_words_run_together_with_a_letter_they_share(campus, registry):
-    scene = _ruled(campus, registry, "drop a bin beside the bustop").scene
+    scene = ruled(campus, registry, "drop a bin beside the bustop").scene
     bins = [a for a in scene.assets if a.category == "trash_bin" and campus.asset(a.id) is None]
     stop = next(lm for lm in campus.landmarks if lm.name == "bus stop")
     assert len(bins) == 1 and abs(bins[0].pose.x - stop.position[0]) < 10 and abs(bins[0].pose.y - stop.position[1]) < 10
@@ -65,7 +57,7 @@ def test_who_is_parked_asks_about_the_cars(campus, registry):
 
 
 def test_a_walker_sent_across_with_the_walker_between_verb_and_particle(campus, registry):
-    scene = _ruled(campus, registry, "walk two pedestrians over the road at the west crosswalk").scene
+    scene = ruled(campus, registry, "walk two pedestrians over the road at the west crosswalk").scene
     walkers = [a for a in scene.assets if a.category == "pedestrian"]
     assert len(walkers) == 2 and all(a.behaviour is not None and a.behaviour.kind == "cross_road" for a in walkers)
 
@@ -93,7 +85,7 @@ def test_a_thing_sent_elsewhere_is_never_sent_to_the_place_it_is_said_to_block(c
             before = campus.asset(a.id)
             assert before is not None
             assert math.dist((a.pose.x, a.pose.y), entrance[:2]) >= math.dist((before.pose.x, before.pose.y), entrance[:2]) - 0.5, said
-    moved = _ruled(campus, registry, "the bench is an eyesore, put it elsewhere, maybe by the fountain").scene.asset("bench_1")
+    moved = ruled(campus, registry, "the bench is an eyesore, put it elsewhere, maybe by the fountain").scene.asset("bench_1")
     fountain = next(lm for lm in campus.landmarks if lm.name == "fountain").position
     assert moved is not None and math.dist((moved.pose.x, moved.pose.y), fountain[:2]) < 15
 
@@ -112,7 +104,7 @@ def test_things_counted_as_known_are_those_there_even_in_a_layout(campus, regist
 
 
 def test_a_thing_a_side_is_taken_from_is_where_not_what(campus, registry):
-    scene = _ruled(campus, registry, "make the car on the left of the SUV yellow").scene
+    scene = ruled(campus, registry, "make the car on the left of the SUV yellow").scene
     painted = [a.id for a in scene.assets if a.appearance != (campus.asset(a.id) or a).appearance]
     assert painted == ["passenger_car_1"]  # the SUV faces north: its left is the car west of it
 
@@ -120,7 +112,7 @@ def test_a_thing_a_side_is_taken_from_is_where_not_what(campus, registry):
 def test_is_there_a_way_to_do_it_asks_for_it_done(campus, registry):
     assert not asks("is there any way to make the ego a different colour?")
     assert asks("is there a way to find out where the bus is?")
-    session = _ruled(campus, registry, "thick fog please", "is there any way to get rid of the fog?")
+    session = ruled(campus, registry, "thick fog please", "is there any way to get rid of the fog?")
     assert session.scene.environment.weather.kind == "clear"
 
 

@@ -8,20 +8,12 @@ from drivetwin.orchestrator.planning.intent import asks
 from drivetwin.orchestrator.planning.retrieval.slots import read_slots
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
-from misreading import Fixed, add, applied, call, held  # this folder is on sys.path (no __init__.py)
-
-
-def _ruled(campus, registry, *prompts: str) -> Session:
-    session = Session(campus, RulePlanner(), registry)
-    for prompt in prompts:
-        report = session.submit(prompt)
-        assert report.ok, report.error or report.question
-    return session
+from misreading import Fixed, add, applied, call, held, ruled  # this folder is on sys.path (no __init__.py)
 
 
 def test_weather_switched_off_is_clear_weather(campus, registry):
     for said in ("could you shut off the snow", "right, off the rain now", "switch the fog off now"):
-        session = _ruled(campus, registry, "heavy snow please" if "snow" in said else "make it rain" if "rain" in said else "thick fog", said)
+        session = ruled(campus, registry, "heavy snow please" if "snow" in said else "make it rain" if "rain" in said else "thick fog", said)
         assert session.scene.environment.weather.kind == "clear", said
     # the slots the example bank is adapted by read it so too: "cancel the fog" is clear weather
     assert ("weather", "clear") in read_slots("cancel the fog please", campus).found
@@ -29,13 +21,13 @@ def test_weather_switched_off_is_clear_weather(campus, registry):
 
 
 def test_of_typed_for_off_after_what_switches(campus, registry):
-    assert _ruled(campus, registry, "lamps of thanks").scene.environment.lighting.street_lights == "off"
+    assert ruled(campus, registry, "lamps of thanks").scene.environment.lighting.street_lights == "off"
     report = Session(campus, RulePlanner(), registry).submit("what are the street lamps made of?")
     assert report.ok and report.answer is not None  # a question, nothing switched
 
 
 def test_a_lot_named_by_the_radio_alphabet(campus, registry):
-    scene = _ruled(campus, registry, "two cones in lot bravo").scene
+    scene = ruled(campus, registry, "two cones in lot bravo").scene
     cones = [a for a in scene.assets if a.category == "traffic_cone"]
     assert len(cones) == 2 and all(15 <= a.pose.x <= 62 and -46 <= a.pose.y <= -12 for a in cones)
 
@@ -44,7 +36,7 @@ def test_a_thing_said_without_articles_is_asked_about_not_added_anew(campus, reg
     report = held(campus, registry, Fixed(add("suv")), "paint SUV green colour")
     said = report.error or (report.question.text if report.question else "")
     assert "already there" in said
-    moved = _ruled(campus, registry, "shift hydrant onto other side of street").scene
+    moved = ruled(campus, registry, "shift hydrant onto other side of street").scene
     assert moved.asset("fire_hydrant_1").pose.y < 0 < campus.asset("fire_hydrant_1").pose.y
 
 
@@ -71,21 +63,21 @@ def test_a_thing_by_the_place_it_is_said_to_be_at_is_not_moved_there(campus, reg
 
 
 def test_struck_as_a_set_is_struck(campus, registry):
-    scene = _ruled(campus, registry, "strike both the hydrant and the bin").scene
+    scene = ruled(campus, registry, "strike both the hydrant and the bin").scene
     assert scene.asset("fire_hydrant_1") is None and scene.asset("trash_bin_1") is None
 
 
 def test_radio_words_the_station_called_and_numbers_digit_by_digit(campus, registry):
     report = Session(campus, RulePlanner(), registry).submit("Control, say position of the bench")
     assert report.ok and report.answer is not None and "bench_1" in report.answer
-    scene = _ruled(campus, registry, "three cones in a line across the eastbound lane, two-zero metres ahead of the ego").scene
+    scene = ruled(campus, registry, "three cones in a line across the eastbound lane, two-zero metres ahead of the ego").scene
     cones = [a for a in scene.assets if a.category == "traffic_cone"]
     ego = campus.asset("ego")
     assert len(cones) == 3 and all(abs(a.pose.x - (ego.pose.x + 20.0)) < 3.0 for a in cones)
 
 
 def test_some_of_them_is_no_number_to_hold_a_removal_to(campus, registry):
-    scene = _ruled(campus, registry, "could you lose some of the cars").scene
+    scene = ruled(campus, registry, "could you lose some of the cars").scene
     left = [a for a in scene.assets if a.category in ("passenger_car", "suv")]
     assert 0 < len(left) < 3
 
@@ -94,6 +86,6 @@ def test_a_wish_for_what_a_thing_could_do_is_a_request(campus, registry):
     assert not asks("maybe the bench could... sit over by the fountain?")
     assert not asks("i wonder if the suv could head to lot a?")
     assert asks("could the truck fit in lot a?")  # what it is able to do is asked
-    scene = _ruled(campus, registry, "perhaps the bin might move over by the fountain? anywhere there's fine").scene
+    scene = ruled(campus, registry, "perhaps the bin might move over by the fountain? anywhere there's fine").scene
     bin_ = scene.asset("trash_bin_1")
     assert abs(bin_.pose.x - 75.0) < 15 and abs(bin_.pose.y - 40.0) < 15
