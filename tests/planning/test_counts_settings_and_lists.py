@@ -203,3 +203,13 @@ def test_a_thing_picked_by_the_way_it_stands_from_another(campus, registry):
                         ("repaint the car to the east of the SUV orange", "passenger_car_2")):
         scene = ruled(campus, registry, said).scene
         assert [a.id for a in scene.assets if a.appearance != (campus.asset(a.id) or a).appearance] == [meant], said
+
+
+def test_a_thing_left_as_it_is_is_not_acted_on(campus, registry):
+    scene = ruled(campus, registry, "take the bench away. leave the bin where it is").scene
+    assert scene.asset("bench_1") is None and scene.asset("trash_bin_1") == campus.asset("trash_bin_1")
+    scene = ruled(campus, registry, "keep both cars as they are and get rid of the SUV").scene
+    assert scene.asset("suv_1") is None
+    assert all(scene.asset(i) == campus.asset(i) for i in ("passenger_car_1", "passenger_car_2"))
+    scene = ruled(campus, registry, "leave the SUV alone, paint the bench green").scene
+    assert scene.asset("suv_1") == campus.asset("suv_1") and scene.asset("bench_1").appearance != campus.asset("bench_1").appearance

@@ -90,7 +90,7 @@ from drivetwin.orchestrator.planning.rules.repeat import (
     said_again,
 )
 from drivetwin.orchestrator.planning.rules.replacing import replace_things, replaces, trades_places
-from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID, is_known, repair, vocabulary
+from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID, is_known, repair, vocabulary, without_left_as_it_is
 from drivetwin.tools.appearance import COLOURS, hex_colour
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
@@ -635,6 +635,7 @@ class RulePlanner:
     def _plan(self, prompt: str, context: PlanContext, which_place: bool = True) -> Plan:
         """The plan; `which_place`: whether a place word several places share may be asked about
         (not while reading one of the places offered, which would ask again without end)."""
+        prompt = without_left_as_it_is(prompt)  # "..., leave the two cars where they are": nothing to ask of them
         each = self._each_place(prompt, context)
         if each is not None:
             return each

@@ -630,6 +630,18 @@ _LIST_MARKER = re.compile(r"^[ \t]*(?:[-*\u2022+]|\d{1,2}[.)])[ \t]+", re.MULTIL
 _QUALIFIER_KEYS = frozenset({"intensity", "strength", "level", "to", "at", "where", "place", "location", "position", "speed",
                              "count", "number", "amount", "time", "colour", "color", "spacing", "shape", "heading", "near", "lane"})
 _KEY_LINE = re.compile(r"^[ \t]*([a-z][a-z _]{0,20}):[ \t]*(?=\S)", re.IGNORECASE | re.MULTILINE)
+# A thing said to be left as it is ("Leave the bin where it is.", "leave the SUV alone, ...", "keep the two cars as they
+# are and ..."): nothing to do with it, never a drive off or a new one.
+_LEFT_AS_IT_IS = re.compile(r"(?:^|(?<=[.;!?,]\s)|(?<=\band\s)|(?<=\bbut\s))(?:(?:please|just|and)\s+)*(?:leave|keep)\s+"
+                            r"(?:(?:the|that|this|those|these|our|my|both|all)\s+)?(?:[a-z0-9_]+\s+){0,3}?"
+                            r"(?:where (?:it|they) (?:is|are|was|were|stands?)|alone|as (?:it|they) (?:is|are)|be|in place|untouched|as is)\b"
+                            r"(?:\s*[.,;!]+)?(?:\s*(?:and|but)\b)?\s*", re.IGNORECASE)
+def without_left_as_it_is(text: str) -> str:
+    """`text` without its clauses that leave a thing as it is ("Leave the bin where it is."), unless
+    that is all it says."""
+    return _LEFT_AS_IT_IS.sub("", text).strip() or text
+
+
 # Markdown's emphasis and code marks and a heading's hashes ("**Goal:** ...", "`trash_bin_1`", "## Scene"): no words.
 _MARKDOWN = re.compile(r"\*\*|__|`|^#{1,6}\s+", re.MULTILINE)
 # "too much empty", "very much dark": an intensifier, never an amount ("too much rain" keeps it).
@@ -1031,6 +1043,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
     text = _LIST_MARKER.sub("", _MARKDOWN.sub("", text))
+    text = without_left_as_it_is(text)
     text = _MUCH_ADJECTIVE.sub(r"\1 ", text)
     text = _SAID_TOGETHER_RE.sub(lambda m: _SAID_TOGETHER[m.group(0).lower()], text)
     text = re.sub(r"(?<![a-z])['\u2019]em\b", "them", text, flags=re.IGNORECASE)  # "eight of 'em"
