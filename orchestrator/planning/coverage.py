@@ -36,6 +36,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
+from drivetwin.orchestrator.planning.rules.edits import TIE_M
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
 from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, road_said, side_of
 from drivetwin.orchestrator.planning.rules.reading import used_as_verb
@@ -922,10 +923,6 @@ _PICKED_BY_THING = re.compile(
 PICKED_RADIUS_M = 12.0
 # Workers that take a thing somewhere: there "the bench next to the tree" may be where it goes.
 _PLACING = ("move_asset", "place_asset", "arrange_assets")
-
-
-# Two things whose distances from what picks them differ by less than this are as near.
-TIE_M = 0.5
 
 
 def picked_by_thing(masked: str, scene: Scene) -> list[tuple[str, str, set[str]]]:

@@ -242,8 +242,7 @@ TIE_M = 0.5
 def _anchor_after(r: Reading, scene: Scene, mention: ph.Mention, at: int) -> tuple[float, float] | None:
     """Where the place, the ego or the one thing of a kind said right at `at` (after "by") stands;
     None when what is said there is none of those or one of several."""
-    rest = r.low[at:]
-    lead = len(rest) - len(re.sub(r"^(?:the|a|an|that|this|our)\s+", "", rest))
+    lead = _leading_article(r.low[at:])
     if r.landmark is not None and at <= r.landmark_at <= at + lead:
         return _point_of(r, scene, Memory())
     said = r.low[at + lead :]  # another place than the clause's own ("the lamp by the bus stop ... closer to the Library")
@@ -257,6 +256,15 @@ def _anchor_after(r: Reading, scene: Scene, mention: ph.Mention, at: int) -> tup
     after = next((m for m in r.mentions if at <= m.start <= at + lead and m is not mention), None)
     there = [a for a in scene.assets if after is not None and a.category == after.category]
     return (there[0].pose.x, there[0].pose.y) if len(there) == 1 else None
+
+
+def _leading_article(text: str) -> int:
+    """How long the article opening `text` is, with the space after it ("the bus stop": 4)."""
+    said = _LEADING_ARTICLE.match(text)
+    return said.end() if said is not None else 0
+
+
+_LEADING_ARTICLE = re.compile(r"(?:the|a|an|that|this|our)\s+")
 
 
 def picked_by_what_it_stands_by(r: Reading, scene: Scene, mention: ph.Mention) -> str | None:
@@ -291,7 +299,7 @@ def _without_description(r: Reading, scene: Scene) -> Reading | None:
         return None
     at = mention.end + by.end()
     rest = r.masked[at:]
-    lead = len(rest) - len(re.sub(r"^(?:the|a|an|that|this|our)\s+", "", rest))
+    lead = _leading_article(rest)
     after = next((m for m in r.mentions if at <= m.start <= at + lead and m is not mention), None)
     blank = re.match(r"[\s\u00a7]*(?:ego\b)?[\s\u00a7]*", rest[lead:])  # a place or the ego, blanked in the masked words
     end = after.end if after is not None else at + lead + (blank.end() if blank is not None else 0)
