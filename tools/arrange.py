@@ -1,4 +1,4 @@
-"""Arrange Worker: lay out several new assets as a line, a ring, a grid or along a lane edge."""
+"""Arrange Worker: lay out several new assets (or ones already there) as a line, a ring, a grid or along a lane edge."""
 
 from __future__ import annotations
 
@@ -11,9 +11,10 @@ from drivetwin.tools.along import along_point
 from drivetwin.tools.base import CategoryName, Tool, ToolArgs, ToolResult
 from drivetwin.tools.errors import NotFoundError, RuleViolation
 from drivetwin.tools.locate import SEARCH_RADIUS_M, Location, resolve_anchor, resolve_target
+from drivetwin.tools.move import find_asset, follow_placement
 from drivetwin.tools.rules import check_placement, footprint
 from drivetwin.worlds.catalog import category, is_layout_kit, placeable_categories
-from drivetwin.worlds.edits import AddAsset, WorldEdit
+from drivetwin.worlds.edits import AddAsset, UpdateAsset, WorldEdit
 from drivetwin.worlds.scene import AssetInstance, Pose, Scene
 from drivetwin.worlds.surface import nearest_on_polyline, point_along, point_in_polygon, polyline_length
 from pydantic import Field
@@ -63,15 +64,23 @@ class ArrangeArgs(ToolArgs):
     )
     columns: int | None = Field(None, ge=1, le=20, description="grid columns")
     label: str = Field("", max_length=80)
+    assets: list[str] = Field(
+        default_factory=list, max_length=MAX_ARRANGED,
+        description="ids of assets already there to lay out, moved into the layout instead of adding new ones "
+        "(then the count is theirs and categories is ignored)",
+    )
 
 
 
-def _enclosing_radius(scene: Scene, centre: tuple[float, float], widths: list[float], kin: str | None) -> float:
+def _enclosing_radius(scene: Scene, centre: tuple[float, float], widths: list[float], kin: str | None,
+                      moving: frozenset[str] = frozenset()) -> float:
     """A ring radius that clears what stands near `centre` and belongs inside: work-zone kit and
     the posts of an earlier ring (the rubble and its cones, a ring of bollards) and things of the
     ringed thing's kind, not a bench beside a tree."""
     radius = 0.0
     for asset in scene.assets:
+        if asset.id in moving:  # the trees laid round the fountain are what the ring is made of
+            continue
         distance = math.hypot(asset.pose.x - centre[0], asset.pose.y - centre[1])
         inside = asset.category == kin or is_layout_kit(asset.category)
         if distance <= ENCLOSE_WITHIN_M and inside:
@@ -96,7 +105,7 @@ def _ring(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: list[floa
         anchor_xy = (anchor.x, anchor.y)
     largest = max(sizes)
     radius = args.radius or max(
-        target_half + RING_CLEARANCE_M + largest / 2, _enclosing_radius(scene, anchor_xy, widths, kin), 2.0
+        target_half + RING_CLEARANCE_M + largest / 2, _enclosing_radius(scene, anchor_xy, widths, kin, frozenset(args.assets)), 2.0
     )
     count = args.count or max(4, int(2 * math.pi * radius / (largest + (args.spacing or 1.0))))
     step = 2 * math.pi / count
@@ -256,13 +265,13 @@ def _row_at(x: float, y: float, heading: float, spacing: float, count: int) -> l
 
 
 def _row_fits(scene: Scene, poses: list[Pose], templates: list[AssetInstance],
-              area: list[tuple[float, float]] | None) -> bool:
+              area: list[tuple[float, float]] | None, moving: frozenset[str] = frozenset()) -> bool:
     row = [t.model_copy(update={"pose": p}) for p, t in zip(poses, templates, strict=True)]
     # The cheap test first: a row that sticks out of the lot needs no rule checks.
     if area is not None and not all(point_in_polygon(x, y, area) for a in row for x, y in footprint(a)):
         return False
     placed: list[AssetInstance] = []
-    others = scene.all_assets()
+    others = [a for a in scene.all_assets() if a.id not in moving]
     for asset in row:
         try:
             check_placement(scene, asset, [*others, *placed])
@@ -278,7 +287,8 @@ def _parking_row(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: li
     heading = math.radians(args.heading_deg) if args.heading_deg is not None else anchor.heading
     spacing = args.spacing or max(PARKING_BAY_WIDTH_M, max(widths) + PARKING_SIDE_GAP_M)
     count = args.count or DEFAULT_ROW
-    templates = [new_asset(scene, args.categories[k % len(args.categories)], set()) for k in range(count)]
+    templates = ([find_asset(scene, i) for i in args.assets] if args.assets
+                 else [new_asset(scene, args.categories[k % len(args.categories)], set()) for k in range(count)])
     # Distinct ids, so the row's members are told apart by the overlap rule.
     templates = [t.model_copy(update={"id": f"{t.id}_row{k}"}) for k, t in enumerate(templates)]
     area = anchor.area
@@ -297,7 +307,7 @@ def _parking_row(args: ArrangeArgs, scene: Scene, sizes: list[float], widths: li
     def first_fit(n: int) -> list[Pose] | None:
         for cx, cy in centres:
             poses = _row_at(cx, cy, heading, spacing, n)
-            if _row_fits(scene, poses, templates[:n], area):
+            if _row_fits(scene, poses, templates[:n], area, frozenset(args.assets)):
                 return poses
         return None
 
@@ -395,12 +405,18 @@ class ArrangeAssets(Tool[ArrangeArgs]):
     description = (
         "Add several assets laid out as a line, a ring around a target, a grid, along a "
         "lane's edge, or as a parking_row of vehicles side by side in a parking lot; one "
-        "category or a mix used in turn."
+        "category or a mix used in turn; or lay out assets already there (assets), moved into it."
     )
     family = "arrange"
     Args = ArrangeArgs
 
     def propose(self, args: ArrangeArgs, scene: Scene) -> ToolResult:
+        if args.assets:  # "line up the cars in lot B": those there, moved into the layout
+            members = [find_asset(scene, i) for i in dict.fromkeys(args.assets)]
+            if any(m.id == "ego" for m in members):
+                raise RuleViolation("protected", "the ego is placed on its own (place_asset), not laid out with others")
+            member_kinds = list(dict.fromkeys(m.category for m in members))[:4]
+            args = args.model_copy(update={"assets": [m.id for m in members], "count": len(members), "categories": member_kinds})
         for name in args.categories:
             if name not in placeable_categories():
                 raise RuleViolation("protected", f"{name} cannot be arranged")
@@ -435,11 +451,16 @@ class ArrangeAssets(Tool[ArrangeArgs]):
                 raise _across_refusal(args, sizes, refusals[0])
             raise refusals[0]
         placed, poses, note = fitted
-        edit = WorldEdit(ops=tuple(AddAsset(asset=a) for a in placed))
+        if args.assets:
+            before = {a.id: a for a in scene.all_assets()}
+            edit = WorldEdit(ops=tuple(UpdateAsset(before=before[a.id], after=a) for a in placed))
+        else:
+            edit = WorldEdit(ops=tuple(AddAsset(asset=a) for a in placed))
         cx = sum(p.x for p in poses) / len(poses)
         cy = sum(p.y for p in poses) / len(poses)
         kinds = "/".join(c.name for c in cats)
-        return ToolResult(edit, f"arranged {len(placed)} {kinds} as a {args.shape} at ({cx:.1f}, {cy:.1f}){note}",
+        moved = f" ({', '.join(args.assets)}, moved)" if args.assets else ""
+        return ToolResult(edit, f"arranged {len(placed)} {kinds}{moved} as a {args.shape} at ({cx:.1f}, {cy:.1f}){note}",
                           (cx, cy), {"ids": [a.id for a in placed]})
 
     @classmethod
@@ -465,13 +486,17 @@ class ArrangeAssets(Tool[ArrangeArgs]):
 
     @staticmethod
     def _placed(args: ArrangeArgs, scene: Scene, poses: list[Pose]) -> list[AssetInstance]:
-        """The new assets at `poses`, each checked against the scene and the ones before it."""
+        """The new assets at `poses` (or those laid out, moved there), each checked against the
+        scene and the ones before it."""
         cats = [category(c) for c in args.categories]
         placed: list[AssetInstance] = []
-        others = scene.all_assets()
+        others = [a for a in scene.all_assets() if a.id not in args.assets]
         for k, pose in enumerate(poses):
-            template = new_asset(scene, cats[k % len(cats)].name, {a.id for a in placed}, args.label)
-            asset = template.model_copy(update={"pose": pose})
+            if args.assets:
+                asset = follow_placement(scene, find_asset(scene, args.assets[k]).model_copy(update={"pose": pose}))[0]
+            else:
+                template = new_asset(scene, cats[k % len(cats)].name, {a.id for a in placed}, args.label)
+                asset = template.model_copy(update={"pose": pose})
             try:
                 check_placement(scene, asset, [*others, *placed])
             except RuleViolation as exc:

@@ -209,6 +209,20 @@ def placeable_categories() -> list[str]:
     return [name for name, c in catalog().items() if "ego" not in c.tags]
 
 
+@cache
+def shared_heads() -> dict[str, list[str]]:
+    """Words that several placeable kinds' names end in and no kind is called by alone ("sign":
+    the stop, construction, pedestrian and parking signs), with those kinds."""
+    full = {w.lower() for c in catalog().values() for w in c.words}
+    heads: dict[str, list[str]] = {}
+    for name in placeable_categories():
+        for word in catalog()[name].words:
+            head = word.lower().split()[-1]
+            if head not in full and name not in heads.setdefault(head, []):
+                heads[head].append(name)
+    return {h: kinds for h, kinds in heads.items() if len(kinds) > 1}
+
+
 def nearest_categories(text: str, limit: int = 3) -> list[str]:
     """Category names whose words are closest in spelling to `text`."""
     key = text.strip().lower().replace("_", " ")

@@ -120,7 +120,7 @@ from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
 from drivetwin.tools.search import most_of
-from drivetwin.worlds.catalog import LAYOUT_KIT_TAGS, catalog, placeable_categories
+from drivetwin.worlds.catalog import LAYOUT_KIT_TAGS, catalog, placeable_categories, shared_heads
 from drivetwin.worlds.scene import AssetInstance, Scene
 from drivetwin.worlds.surface import lane_at, nearest_on_polyline, point_in_polygon
 
@@ -385,14 +385,19 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
             and not _TOO_MANY.search(request.low)):  # "too many cones, they're too visible"
         # "make the SUV look a bit less aggressive": how it looks, not how many there are
         out.append("you asked how something looks, but the plan " + ("removes " + _names(effect.removed) if effect.removed else "adds " + _names(effect.added)))
-    if request.polarity == "add" and effect.removed and (not effect.added or not REMOVE_WORDS.search(request.low)):
+    cleared = request.place is not None and _CLEARS.search(request.low) is not None \
+        and all(_near(scene, a, request.place) for a in effect.removed)  # "empty lot B and put two buses there"
+    if request.polarity == "add" and effect.removed and (not effect.added or not (REMOVE_WORDS.search(request.low) or cleared)):
         out.append("you asked for more, but the plan removes " + _names(effect.removed))
     touched = [*effect.added, *effect.removed, *(a for a in effect.changed if a.id != "ego")]
     if request.categories and touched:
         grouped = {c for members in md.groups_said(request.low).values() for c in members}  # "the vehicles"
         grouped |= counted_kinds(request.low)  # "the second car from the left": SUVs are cars too
+        grouped |= {k for head, kinds in shared_heads().items() if re.search(rf"\b{head}s?\b", request.low) for k in kinds}  # "a sign"
         grouped |= {a.category for a in context.scene.all_assets() if re.search(rf"\b{a.id}\b", request.low)}  # by id
         strays = {a.category for a in touched} - request.categories - grouped - _companions(effect)
+        if cleared:  # "clear lot B and put 2 buses there": what stood there
+            strays -= {a.category for a in effect.removed} - {a.category for a in effect.added}
         if strays:
             out.append(f"you named {', '.join(sorted(request.categories))}, but the plan touches {', '.join(sorted(strays))}")
     if not request.categories and effect.added and not _companions(effect):
@@ -414,7 +419,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.place is not None and effect.edits and not effect.environment:
         last = {a.id: a for a in [*effect.added, *effect.changed]}  # where each ends up, after every call
         beyond = side_of(request.low, scene) if _COMPASS_OF.search(request.low) else None
-        far = [a for a in [*last.values(), *effect.removed] if a.id != "ego"
+        replaced = {a.category for a in effect.added if _near(scene, a, request.place)}  # "remove the bench and put a new one in lot A"
+        far = [a for a in [*last.values(), *(a for a in effect.removed if a.category not in replaced)] if a.id != "ego"
                and not _near(scene, a, request.place)
                and not (_DISTANCE_SAID.search(spelt_measures(request.low)) and _names_target(effect, request.place))
                and not _at_a_target(scene, effect, a, request.categories)  # a compound's other place, lane or thing
@@ -1498,6 +1504,10 @@ def _screened(prompt: str, question: Question, context: PlanContext) -> Verdict:
                        outcome=runs[0].outcome, calls=list(kept[0].calls))
     return Verdict("ask", ["the planner could not tell which reading was meant"],
                    question.model_copy(update={"readings": kept}))
+
+
+# Clearing a place of whatever stands there, said without naming it: "clear lot B", "empty out the car park".
+_CLEARS = re.compile(r"\b(?:clear|empty|clean)(?:ed|s|ing)?(?: out| up| off)?\s+(?:the |all of |everything (?:in|at|from|out of) )?(?!away\b)")
 
 
 # A reading the request leaves standing alone is applied only when its planner was this sure of it.

@@ -347,7 +347,8 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
         if (not (bare or pointed_back or every or (any(w in _DEFINITE for w in m.last_words(2)) and not indefinite)) or not scene.count(m.category)
                 or (m.category in arranged and not (every or said_back))):  # "the cars in lot B, line them up": those there
             continue
-        if any(a.category == m.category for a in scope.added) and m.category not in out:
+        replaced = any(a.category == m.category for a in scope.removed)  # "take the bin away and put a fresh one ..."
+        if any(a.category == m.category for a in scope.added) and not replaced and m.category not in out:
             out.append(m.category)
     return out
 

@@ -42,6 +42,7 @@ from drivetwin.evals import (
     practice30_source,
     practice31_source,
     practice32_source,
+    practice33_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -128,6 +129,11 @@ BRIEFS: dict[str, Brief] = {
     # Eight voices: museum curator, Brazilian Portuguese speaker, electrician, Mandarin speaker, markdown lists,
     # sarcastic user, warehouse manager, New Zealander; every cell holds 13.
     "practice32": Brief(350, 12, 12, practice32_source, multi_turn=40, planned=20, compound=20),
+    # Eight voices: land surveyor, Korean speaker, fat-fingered phone typist, chef, Filipino English speaker, festival
+    # steward, Welsh English speaker, rambling retired bus driver; arrangement (every grade) and the vague and erroneous
+    # grades of every task hold 13, the rest 11 or 12.
+    "practice33": Brief(340, 11, 11, practice33_source, multi_turn=45, planned=30, compound=20,
+                        weighted_grades=("vague", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)

@@ -547,11 +547,14 @@ def test_a_compass_way_said_with_away_from_the_road_is_the_way_moved(session, ca
     assert (moved.pose.x, moved.pose.y) == pytest.approx((was.pose.x, was.pose.y + 1.0), abs=0.05)
 
 
-def test_things_asked_into_a_layout_are_not_just_moved_to_its_place(session, campus):
+def test_things_asked_into_a_layout_are_laid_out_not_piled_on_its_place(session, campus):
     session.submit("arrange the trees in one line along the library front")
     trees = [a for a in session.scene.assets if a.category == "tree"]
     library = campus.landmark("Library entrance").position
-    assert sum(_dist(t, library) < 15.0 for t in trees if t != campus.asset(t.id)) < 4
+    assert len(trees) == campus.count("tree") and all(_dist(t, library) < 15.0 for t in trees)
+    assert len({round(t.pose.y, 1) for t in trees}) == 1  # one line, along the library front
+    xs = sorted(t.pose.x for t in trees)
+    assert min(b - a for a, b in zip(xs, xs[1:], strict=False)) > 1.0  # each its own spot
 
 
 # Dozens, and weather that stops ---------------------------------------------------------------------------

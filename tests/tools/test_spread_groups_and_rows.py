@@ -135,3 +135,29 @@ def test_a_line_that_runs_into_a_building_moves_out_whole_and_keeps_its_spacing(
     assert entrance is not None and all(abs(g - 3.0) < 1e-6 for g in gaps)
     assert all(math.dist((b.pose.x, b.pose.y), entrance.position) < 15.0 for b in barriers)
 
+
+
+def test_things_already_there_are_moved_into_a_layout_not_added(call: Caller, campus: Scene) -> None:
+    cars = ["passenger_car_1", "passenger_car_2", "suv_1"]
+    result = call(campus, "arrange_assets", categories=["passenger_car"], shape="parking_row", assets=cars,
+                  location={"relation": "at", "target": "parking lot A"})
+    after = result.edit.apply(campus)
+    assert len(after.assets) == len(campus.assets) and result.data["ids"] == cars
+    lot = campus.landmark("parking lot A")
+    assert lot is not None and lot.polygon is not None
+    moved = [after.asset(i) for i in cars]
+    assert all(a is not None and point_in_polygon(a.pose.x, a.pose.y, lot.polygon) for a in moved)
+    assert len({round(a.pose.yaw, 3) for a in moved if a is not None}) == 1  # side by side, one way
+    # a ring round the fountain made of the trees there, however far each stood
+    trees = [a.id for a in campus.assets if a.category == "tree"]
+    ringed = call(campus, "arrange_assets", categories=["tree"], shape="ring", assets=trees,
+                  location={"relation": "at", "target": "fountain"}).edit.apply(campus)
+    fountain = campus.landmark("fountain")
+    assert fountain is not None
+    points = [(a.pose.x, a.pose.y) for i in trees if (a := ringed.asset(i)) is not None]
+    centre = (sum(x for x, _ in points) / len(points), sum(y for _, y in points) / len(points))
+    distances = [math.dist(p, centre) for p in points]
+    assert len(points) == len(trees) and max(distances) - min(distances) < 0.5 and math.dist(centre, fountain.position) < 2
+    with pytest.raises(RuleViolation, match="ego"):
+        call(campus, "arrange_assets", categories=["passenger_car"], shape="line", assets=["ego", "suv_1"],
+             location={"relation": "at", "target": "parking lot B"})

@@ -439,6 +439,10 @@ def _listed(r: Reading) -> list[ph.Mention]:
     return listed
 
 
+# Not both of two things ("we don't need both cars", "no need for both benches"): one of them, not both.
+_NOT_BOTH = re.compile(r"\b(?:don'?t|do not|dont|doesn'?t|does not|no need for|not)\s+(?:\w+\s+){0,2}both\s+(?:of\s+)?(?:the\s+|those\s+|these\s+)?$")
+
+
 def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """remove_assets calls for a clause that asks for removal, or None when it names nothing."""
     fewer = bool(FEWER_WORDS.search(r.low))
@@ -493,6 +497,9 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         return [c for m in listed for c in remove(replace(r, mentions=[m]), scene, memory, notes) or []] or None
     mention = r.mentions[0]
     name = mention.category
+    if _NOT_BOTH.search(r.low[: mention.start]):  # "we don't need both cars": one of them goes, and which is theirs to say
+        word = r.low[mention.start : mention.end]
+        raise ph_error(f"which of the {word} should go? name it, e.g. 'remove the {word.rstrip('s')} on the left'")
     recent = [i for i in memory.last_added(name) if scene.asset(i) is not None]
     count = find_count(r, mention)
     if count and count >= scene.count(name) > 1 and _VAGUE_PART.search(r.low) and not r.has(("all", "every", "each")):
@@ -517,8 +524,9 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     if (grouped or _scoped_by_place(r, mention, anywhere=True)) and (count is None or _kept(r) is not None) and not fewer:
         # "the vehicles in lot B": every one there, of every category the words cover ("..., just leave one": all but one)
         ids = _but_kept(r, referenced(r, scene, memory, notes))
-        if not ids and r.landmark and not grouped:  # "lose the trees by lot A" with none there: never an addition
-            raise ph_error(f"there is no {name.replace('_', ' ')} at {r.landmark} to take away")
+        if not ids and r.landmark:  # "lose the trees by lot A", "remove the cars in lot A" with none there: never an addition
+            word = r.low[mention.start : mention.end] if grouped else name.replace("_", " ")
+            raise ph_error(f"there is no {word} at {r.landmark} to take away")
         return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
     road = road_said(r.low, scene)
     if _ONE_SIDE.search(r.low) and side_of(r.low, scene) is None:  # "along one side of Main Street": which one is the person's to say

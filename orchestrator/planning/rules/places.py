@@ -606,6 +606,12 @@ def location(
         raise PlanningError("I can put things on a sidewalk, in a lane or by a place, but not just 'off the sidewalk'; "
                             "say where it should go instead, e.g. 'next to the bench by the library'")
     if r.has(("sidewalk", "side walk", "pavement", "footpath", "footway", "walkway", "kerb", "curb")) and not _OFF_SIDEWALK.search(r.low):
+        metres, relation = ph.find_distance(r.text), relation_of(r.low)
+        if target is not None and scene.asset(target) is not None and metres is not None and relation in ("in_front_of", "behind"):
+            # "15 m ahead of the ego on the right-hand pavement": counted along its way, on that side's sidewalk
+            side = _HAND.search(r.low)
+            return {"relation": "on_sidewalk", "target": target, "along_m": metres if relation == "in_front_of" else -metres,
+                    **({"side": side.group(1)} if side else {})}
         return {"relation": "on_sidewalk", **({"target": target} if target else {})}
     if r.has(("in the lane", "on the road", "in lane", "on the street", "onto the road", "onto the street", "into the lane")):
         if target is not None and scene.asset(target) is not None and relation_of(r.low) in ("in_front_of", "behind"):
@@ -620,6 +626,10 @@ def location(
     if metres is not None and found["relation"] != "at":
         found["distance"] = metres
     return found
+
+
+# A hand said of a sidewalk or side: "the right-hand pavement", "on the left footpath".
+_HAND = re.compile(r"\b(left|right)(?:[\s-]hand)?(?:\s+(?:side\s+)?(?:sidewalk|side walk|pavement|footpath|footway|walkway|kerb|curb))")
 
 
 # How far into a driveway from the road a closure stands, and "east of the crossroads" from its centre.

@@ -20,6 +20,7 @@ from drivetwin.orchestrator.planning.base import Plan, PlanContext, PlanningErro
 from drivetwin.orchestrator.planning.base import Reading as Choice
 from drivetwin.orchestrator.planning.descriptions import unsure
 from drivetwin.orchestrator.planning.intent import (
+    ADD_WORDS,
     BARE_STATE,
     FEWER_WORDS,
     HABITUAL,
@@ -61,7 +62,13 @@ from drivetwin.orchestrator.planning.rules.edits import (
     remove,
     walk_said,
 )
-from drivetwin.orchestrator.planning.rules.environment import LAMPS_SWITCHED_AS_SAID, LIGHTS_DOWN, environment, lights
+from drivetwin.orchestrator.planning.rules.environment import (
+    BRIGHTER,
+    LAMPS_SWITCHED_AS_SAID,
+    LIGHTS_DOWN,
+    environment,
+    lights,
+)
 from drivetwin.orchestrator.planning.rules.inflection import inflected
 from drivetwin.orchestrator.planning.rules.places import (
     EACH_PLACE,
@@ -95,7 +102,7 @@ from drivetwin.tools.appearance import COLOURS, hex_colour
 from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
-from drivetwin.worlds.catalog import catalog, is_layout_kit, nearest_categories
+from drivetwin.worlds.catalog import catalog, is_layout_kit, nearest_categories, shared_heads
 from drivetwin.worlds.scene import DriveLane, Scene
 from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, point_in_polygon, surface_at
 
@@ -210,6 +217,23 @@ _NEGATED_WISH = re.compile(
 
 # The guess noted when a request is only a statement, read as the edit it describes.
 STATEMENT_READ = "read a statement of how things are as the request"
+# A statement's subject, said as a thing already there ("the truck is in a daft spot", "the trucks
+# are blocking the lane"), and one that says it is not there ("the bench is missing"): a wish for it.
+_DEFINITE_SUBJECT = re.compile(r"^\s*(?:(?:now|still|and|but)\s+)?(?:the|this|that|these|those|our|my)\s+(?P<thing>[a-z' -]+?)\s+(?:is|are|was|were)\b")
+_SAID_ABSENT = re.compile(r"\b(?:missing|gone|absent|lost|nowhere|no longer|not there|isn'?t there|aren'?t there|not here|disappeared|vanished)\b")
+
+
+def _spoken_of_as_there(text: str, calls: list[ToolCall], scene: Scene) -> str | None:
+    """The category a statement's subject names as already there ("the truck is in a daft spot")
+    that the scene has none of and its reading adds: a presupposition, not a wish for one."""
+    said = _DEFINITE_SUBJECT.match(text.lower())
+    if said is None or _SAID_ABSENT.search(text.lower()):
+        return None
+    named = {m.category for m in ph.find_categories(said.group("thing"))}
+    added = {c.args.get("category") for c in calls if c.tool == "add_asset"}
+    return next((c for c in sorted(named & added) if not scene.count(c)), None)
+
+
 # A clause that says how things are ("the bench by the stop is in the way"), not what to do.
 # So is one that opens on a thing and says what it does ("the test car starts too close", "the two
 # trees block the view"), unless it says what should be ("the bus should stop", "it belongs in lot A").
@@ -468,6 +492,37 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     return [parts[0], *(f"{lead} {p}" for p in parts[1:])]
 
 
+def _own_words(kind: str, head: str) -> set[str]:
+    """The words of a kind's names other than the head they share ("stop", "roadworks", "work zone")."""
+    return {w for phrase in catalog()[kind].words for w in phrase.lower().replace("_", " ").split() if w != head}
+
+
+# "Less" right after a thing, then a word for how it is: "make the SUV less flashy", "the bench a bit
+# less shiny": how the thing is, never fewer of them ("fewer cars", "less of the cones", "less than two").
+_LESS_OF_A_KIND = re.compile(r"\s+(?:(?:be|made|look|looks|seem|seems|a|bit|little|lot|touch|much|slightly|way|far|somewhat)\s+){0,4}less\s+(?!of\b|than\b|(?:fast|quick|slow|speedy|rapid)\w*\b)[a-z]+")
+
+
+# One of a kind said before, with no noun of its own: "a new one", "a replacement one", "the last one".
+_A_NEW_ONE = re.compile(r"\b(an?\s+(?:brand[\s-]new|new|fresh|replacement|different|spare|better|nicer)\s+"
+                        r"|the\s+(?:last|first|second|third|final)\s+)one\b", re.IGNORECASE)
+
+
+def _kind_said_last(memory: Memory) -> str | None:
+    """The kind of thing the latest turn still in the scene acted on ("remove the bin", then
+    "put a new one at the bus stop"), from its calls; None when it named none."""
+    turns = memory.live_turns()
+    try:
+        calls = turns[-1].tool_calls() if turns else []
+    except (ValueError, SyntaxError):
+        return None
+    for call in calls:
+        ids = [call.args.get("asset"), *(call.args.get("assets") or [])]
+        said = call.args.get("category") or next((i.rsplit("_", 1)[0] for i in ids if isinstance(i, str) and "_" in i), None)
+        if isinstance(said, str) and said in catalog():
+            return said
+    return None
+
+
 class RulePlanner:
     """Keyword-and-slot planner over the Worker tools."""
 
@@ -485,9 +540,16 @@ class RulePlanner:
         skipped: list[str] = []
         described: list[ToolCall] = []
         previous: list[ToolCall] = []  # the calls of the last clause that asked for something
+        kind: str | None = _kind_said_last(context.memory)  # what "a new one" is one of
         for clause, asked, intro in clauses:
             clause, name = named_as(clause)  # "add a pedestrian at the gate, that's our steward"
             reading = read(clause, scene)
+            new_one = _A_NEW_ONE.search(clause)
+            if new_one is not None and kind is not None:
+                # "remove the bin and put a new one at the bus stop": a new bin
+                clause = f"{clause[: new_one.end(1)]}{kind.replace('_', ' ')}{clause[new_one.end() :]}"
+                reading = read(clause, scene)
+            kind = reading.mentions[0].category if reading.mentions else kind
             coming = len(notes.coming)
             if name and not reading.mentions and calls and calls[-1].tool == "add_asset":  # "... at the gate. That's our steward."
                 calls[-1] = _labelled_as(calls[-1], name)
@@ -614,6 +676,60 @@ class RulePlanner:
         return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
                     question=Question(text=f"What should I add{where or ' there'}?", readings=readings))
 
+    def _how_lit(self, prompt: str, context: PlanContext) -> Plan | None:
+        """A question where a request wants more light at one place and names no lamp or setting
+        ("could do with more light round the fountain", "it's too dark by the library"): a street
+        light there, or the whole picture brighter? None for any other request."""
+        low = ph.normalise(prompt)
+        place = find_place(context.scene, low)
+        weather = (w for words in lx.WEATHER_WORDS.values() for w in words)
+        if place is None or not (BRIGHTER.search(low) or re.search(r"\bmore light\b", low)) \
+                or ph.find_categories(low[: place[1]] + low[place[2] :]) \
+                or asks(low.strip()) or ph.has_any(low, (*weather, "exposure", "brightness", "lamp", "lamps", "lights on")):
+            return None
+        readings = []
+        for offer in (f"add a street light next to the {place[0]}", "make the picture brighter"):
+            try:
+                reading = self._plan(offer, context, which_place=False)
+            except PlanningError:
+                continue
+            if reading.calls and reading.question is None:
+                readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
+        if len(readings) < 2:
+            return None
+        step = TraceStep(level="rules", input=prompt, output=f"more light asked for at the {place[0]}; asking how")
+        return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
+                    question=Question(text=f"More light at the {place[0]}: a street light there, or the whole picture brighter?",
+                                      readings=readings))
+
+    def _which_kind(self, prompt: str, context: PlanContext) -> Plan | None:
+        """A question where a new thing is named only by a word several kinds end in ("add a sign
+        next to the bench": a stop, construction, pedestrian or parking sign?), offering the
+        request with each kind; None when no such word is said, or a word of one kind is."""
+        heads = shared_heads()
+        said = re.search(rf"\b(?:an?|one|two|three|four|five|some|another|\d+)\s+(?:(?:new|small|big|little|extra|more)\s+)?"
+                         rf"(?P<head>{'|'.join(heads)})(?P<plural>s)?\b", prompt, re.IGNORECASE) if heads else None
+        if said is None or not (ADD_WORDS.search(prompt.lower()) or _WISHED.search(prompt.lower())):
+            return None
+        kinds = heads[said.group("head").lower()]
+        if any(re.search(rf"\b{re.escape(w)}\b", prompt, re.IGNORECASE) for k in kinds for w in _own_words(k, said.group("head"))):
+            return None  # "a sign for the roadworks", "a sign telling drivers to stop": the kind is said
+        readings = []
+        for kind in kinds[:MAX_READINGS]:
+            name = kind.replace("_", " ") + (said.group("plural") or "")
+            try:
+                reading = self._plan(prompt[: said.start("head")] + name + prompt[said.end() :], context, which_place=False)
+            except PlanningError:
+                continue
+            if reading.calls and reading.question is None:
+                readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
+        if len(readings) < 2:
+            return None
+        head = said.group("head").lower()
+        step = TraceStep(level="rules", input=prompt, output=f"{head!r} names {', '.join(kinds)}; asking")
+        return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
+                    question=Question(text=f"Which {head}: {', '.join(k.replace('_', ' ') for k in kinds)}?", readings=readings))
+
     def _each_place(self, prompt: str, context: PlanContext) -> Plan | None:
         """The request done at each place of a kind it says every one of ("a stop sign at every
         crosswalk", "cones at both gates"); None when it says no such thing."""
@@ -643,6 +759,10 @@ class RulePlanner:
             return doubt  # "the big vehicle that carries lots of passengers": a bus or a truck?
         if which_place and (offer := self._what_fills(prompt, context)) is not None:
             return offer  # "the junction looks a bit bare": people, trees or benches there?
+        if which_place and (offer := self._how_lit(prompt, context)) is not None:
+            return offer  # "more light round the fountain": a lamp there, or the whole picture brighter?
+        if which_place and (offer := self._which_kind(prompt, context)) is not None:
+            return offer  # "add a sign next to the bench": a stop sign, a construction sign, ...?
         started = time.perf_counter()
         scene = context.scene
         repaired = repair(prompt, scene)
@@ -673,6 +793,9 @@ class RulePlanner:
                 "e.g. 'make it daytime', 'remove the cones'"
             )
         from_statement = not calls and bool(described)
+        if from_statement and (absent := _spoken_of_as_there(text, described, scene)):
+            raise PlanningError(f"you spoke of the {absent.replace('_', ' ')} as if it were there, but the scene has none, "
+                                f"so nothing was changed; say 'add a {absent.replace('_', ' ')} ...' to add one")
         if from_statement:
             calls = described  # "the bench by the stop is in the way", and nothing else: what it says is a guess at the wish
             notes.guess(STATEMENT_READ)
@@ -1094,8 +1217,15 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     if final is not None:  # "there should be exactly four cones in lot A": as many as that, no more
         return final
     # The removal words the plan check reads polarity by ("take it out", "without the bin") count too.
-    taken_away = bool(REMOVE_WORDS.search(r.low.strip()))
-    fewer = bool(FEWER_WORDS.search(r.low))
+    less_of = next((m for m in r.mentions if _LESS_OF_A_KIND.match(r.low[m.end :])), None)  # "make the SUV less flashy"
+    how_it_is = less_of is not None
+    if less_of is not None and not re.search(rf"\b(?:{'|'.join(COLOURS)})\b", r.low):
+        # what it should be less of is said, and not what it should be: never a guess (nor fewer of them)
+        thing = less_of.category.replace("_", " ")
+        raise PlanningError(f"I can tell how the {thing} should not be, not how it should; say a colour or finish, "
+                            f"e.g. 'paint the {thing} grey' or 'give the {thing} a matte finish'")
+    taken_away = bool(REMOVE_WORDS.search(r.low.strip())) and not how_it_is
+    fewer = bool(FEWER_WORDS.search(r.low)) and not how_it_is
     filled = _FILL_WITH.search(r.low) is not None  # "fill the empty half of lot B with cars" adds
     if (r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or fewer or _NEGATED_WISH.search(r.low) or taken_away) and not filled:
         removed = remove(r, scene, memory, notes)
@@ -1180,6 +1310,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             return colour
     if mention is None and QUIETER.search(r.low):
         return _quieter(r, scene, memory, notes)  # "make it a bit quieter out there": fewer of what moves, never a move
+    if mention is not None and not strict_add and (lined := _laid_out_there(r, mention, scene, memory, notes)) is not None:
+        return lined  # "line up the cars in lot B", "move the trees into a circle round the fountain": those there
     if not fresh:
         existing = edit_existing(r, scene, memory, notes)
         if existing is not None:
@@ -1195,7 +1327,13 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         if r.has(lx.GENERIC_THINGS):
             return environment(r, scene.environment) or None  # "we want to put something there": an intention
         if r.has(("add", "create", "spawn", "place", "put", "insert")) and not r.has(("it", "them", "there")):
-            noun = next((w for w in reversed(ph.tokens(r.masked)) if w.isalpha() and w not in lx.GRAMMAR), "it")
+            verbs = ("add", "create", "spawn", "place", "put", "insert", "one", "new", "another")
+            noun = next((w for w in reversed(ph.tokens(r.masked)) if w.isalpha() and w not in lx.GRAMMAR and w not in verbs), None)
+            if noun is None and r.landmark and not re.search(r"\bones?\b", r.low):  # "add a pedestrian crossing at the north crosswalk": a place the map has
+                raise PlanningError(f"'{r.landmark}' is a place on the map, not a thing I can add; I can put things at it, "
+                                    f"e.g. 'add a bench at the {r.landmark}'")
+            if noun is None:  # "add a new one at the gate", with nothing said before
+                raise PlanningError("say what to add, e.g. 'add a bench at the fountain'")
             raise PlanningError(f"unknown asset {noun!r}; nearest: {', '.join(nearest_categories(noun))}")
         env = environment(r, scene.environment)
         return env or None
@@ -1557,6 +1695,27 @@ def _from_to(r: Reading, scene: Scene) -> tuple[tuple[float, float], tuple[float
     return (x1 + ux * gap, y1 + uy * gap), (x2 - ux * gap, y2 - uy * gap)
 
 
+# The things a layout is made of, pointed at as those there: "the cars", "both benches", "all the cones".
+_THOSE_THERE = re.compile(r"\b(?:the|those|these|both|all|our|my)\s+(?:(?:the|of|two|three|four|five|six|\d+)\s+){0,2}$")
+
+
+def _laid_out_there(r: Reading, mention: ph.Mention, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
+    """Things already there moved into the layout the words ask for ("line up the cars in lot B",
+    "arrange the trees in a ring around the fountain"), never new ones added nor one of them moved;
+    None when the words ask for no layout of several things there."""
+    shape = md.layout_said(r.masked)
+    if shape is None or not mention.plural or _THOSE_THERE.search(r.low[: mention.start]) is None:
+        return None
+    there = referenced(r, scene, memory, notes)
+    if len(there) < 2 or any(i == "ego" for i in there):
+        return None
+    row = _arrange(r, scene, memory, notes)
+    args = {k: v for k, v in row.args.items() if k != "count"}
+    laid = [i for i in there if (a := scene.asset(i)) is not None and a.category in catalog()]
+    args["categories"] = list(dict.fromkeys(a.category for i in laid if (a := scene.asset(i)) is not None))[:4]
+    return [ToolCall(tool="arrange_assets", args={**args, "assets": laid})]
+
+
 def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall:
     size = _grid_size(r.low)
     mentions = [m for m in r.mentions if size is None or not size[2] <= m.start < size[3]]  # "four-by-four" is no SUV here
@@ -1660,6 +1819,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
     edge = EDGE_OF.search(r.low)
     if args["shape"] == "line" and edge is not None and args["location"].get("relation") == "absolute":
         args["heading_deg"] = 90.0 if edge.group(1) in ("east", "west") else 0.0  # along that edge of the area
+    if args["shape"] == "parking_row" and edge is not None and args["location"].get("relation") == "absolute":
+        args["heading_deg"] = 0.0 if edge.group(1) in ("east", "west") else 90.0  # side by side along that edge, facing across it
     spacing = nb.spacing_said(r.low)
     if spacing is not None:
         args["spacing"] = spacing

@@ -97,6 +97,9 @@ _REPAIRABLE_GRAMMAR = (
     "forward",
     "backward",
     "ahead",  # "15m ahaed of ego"
+    "faster",  # "make the ego go fater": a pace, never "after"
+    "slower",
+    "quicker",
     "across",
     "along",
     "degrees",
@@ -916,8 +919,9 @@ def _place_word_slip(word: str, before: str, vocab: frozenset[str], scene: Scene
 
 
 def _place_phrases(scene: Scene) -> frozenset[str]:
-    """The scene's place names in lower case ("bus stop", "lot a entrance")."""
-    return frozenset(ph.normalise(name).strip() for landmark in scene.landmarks for name in landmark.names())
+    """The scene's place and road names in lower case ("bus stop", "lot a entrance", "campus drive")."""
+    roads = (lane.road for lane in scene.roads.lanes if lane.road)
+    return frozenset(ph.normalise(name).strip() for name in (*(n for lm in scene.landmarks for n in lm.names()), *roads))
 
 
 def _without_place_left(text: str, scene: Scene) -> str:
