@@ -119,7 +119,7 @@ def _is_reference(t: Target, names: list[str]) -> bool:
 
 class FindAssetsArgs(ToolArgs):
     category: str | None = Field(None, description="category or a word for it, e.g. 'cones', or a kind in the plural, e.g. 'vehicles'")
-    near: str | None = Field(None, description="landmark or asset to measure distance from")
+    near: str | None = Field(None, description="landmark or asset to measure distance from (an asset itself is left out)")
     within: float | None = Field(None, gt=0.0, le=1000.0, description="metres from `near` (or `nearest_to`)")
     nearest_to: str | None = Field(None, description=_NEAREST_TO + " (the reference asset itself is left out)")
     furthest_from: str | None = Field(None, description="as nearest_to, the furthest first: an asset id, landmark or place name")
@@ -182,8 +182,7 @@ class FindAssets(Tool[FindAssetsArgs]):
             return landmark_distance(area, a.pose.x, a.pose.y) if area is not None else math.hypot(a.pose.x - t.x, a.pose.y - t.y)
 
         if t is not None:
-            if args.nearest_to or args.furthest_from:
-                pool = [a for a in pool if not (t.kind == "asset" and a.id == t.name)]
+            pool = [a for a in pool if not (t.kind == "asset" and a.id == t.name)]  # what is near the ego is not the ego
             pool.sort(key=lambda a: (gap(a), math.hypot(a.pose.x - t.x, a.pose.y - t.y)), reverse=bool(args.furthest_from))
             beyond = pool[0] if pool else None
             if args.within is not None:

@@ -28,6 +28,7 @@ from drivetwin.orchestrator.planning.intent import (
     HABITUAL,
     HOW_THINGS_GO,
     KEEP_SOME,
+    NONE_THERE,
     PLACE_KIND,
     WOULD_HELP,
     asks,
@@ -37,6 +38,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
 from drivetwin.orchestrator.planning.rules.edits import TIE_M
+from drivetwin.orchestrator.planning.rules.environment import TIME_NOT_SET
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
 from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, road_said, side_of
 from drivetwin.orchestrator.planning.rules.reading import used_as_verb
@@ -239,7 +241,8 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
             len(p.split()) > len(said.split()) and edits(" ".join(rest[: len(p.split())]), p) <= 2 for p in places
         )
         compound = i > 0 and not masked[mentions[i - 1].end : m.start].strip()
-        if (m.category not in wanted or _in_background(masked, m.start) or said in _VERB_NAMES
+        missing = NONE_THERE.search(masked[: m.start]) is not None  # "people keep dropping cans, there's no bin": wanted
+        if (m.category not in wanted or (_in_background(masked, m.start) and not missing) or said in _VERB_NAMES
                 or HABITUAL.match(masked, m.start) or FORBIDDEN.match(masked, m.end) or used_as_verb(masked, m.start, m.end)):
             continue
         if _LOCATIVE.search(masked[max(0, m.start - 40) : m.start]):
@@ -565,7 +568,7 @@ def environment_left_out(low: str, calls: tuple[ToolCall, ...]) -> list[str]:
     if lamps is not None and not any(c.tool == "set_lighting" and "street_lights" in c.args for c in calls):
         out.append(f"you said the street lights {lamps.group('state') or lamps.group('state2')}, but the plan does not switch them")
     clock = clock_time(low)
-    day = _DAY_PART.search(low)
+    day = _DAY_PART.search(TIME_NOT_SET.sub(" ", low))  # not "all morning", "like a Sunday morning", "not night"
     day_part = day.group(1) if day else None
     # "the quad is too dark at night, it needs a lamp post": the night says when lights are needed
     lights_added = any("street_light" in (c.args.get("category"), *c.args.get("categories", ())) for c in calls)

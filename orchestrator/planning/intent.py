@@ -39,7 +39,7 @@ BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s|too|so|very|rather
                         # "empty roads and the lamps buzzing": places described, never "empty the roads"
                         r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
 REMOVE_WORDS = re.compile(
-    r"\b(remove|delete|quit|g[ei]t rid(?: of)?|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|take (?:\w+ ){1,3}?out\b(?! of\b)|(?:has|have|needs?|must|should|ought) to come (?:down|out)\b(?! (?:of|from|to|onto|into)\b)|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
+    r"\b(remove|delete|quit|g[ei]t rid(?: of)?|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|tow (?:\w+ ){1,3}?away\b|take (?:\w+ ){1,3}?out\b(?! of\b)|(?:has|have|needs?|must|should|ought) to come (?:down|out)\b(?! (?:of|from|to|onto|into)\b)|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)(?!\s+an?\s+(?!single\b))|fewer|less|lose|eliminate|erase|discard|scrap"
     r"|strike (?=(?:the|that|those|these|all|both|it|them|every|most|some|half|one|two|three|\d+)\b)"  # "strike the set": off the stage
     r"|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cull\w*|prun(?:e|es|ed|ing)\b|weed(?:s|ed|ing)? (?:\w+ )?out"  # "them trees want thinning out"
@@ -50,7 +50,9 @@ REMOVE_WORDS = re.compile(
     r"|(?:get|take|clear|move) (?:\w+ ){1,3}out of (?:here|there|the scene|the world|the simulation|sight|the picture)(?![^.;]*\b(?:into|onto|over to|somewhere (?:in|on|by|near))\b)"
     # "get those cars out of lot B": gone from there (moving them elsewhere says where to)
     # ("get the SUV out of the shot, somewhere in the other car park": a move, its place said after the comma)
-    r"|(?:get|take|clear|pull) (?:\w+ ){1,3}out of (?![^.;]*\b(?:into|to|onto|somewhere (?:in|on|by|near)|and (?:put|park|move))\b)"
+    # "get a car or two out of it"; "get the SUV out of lot B, anywhere": moved, not taken away
+    r"|(?:get|take|clear|pull) (?:\w+ ){1,5}?out of (?![^.;]*\b(?:into|to|onto|somewhere (?:in|on|by|near)|and (?:put|park|move)|anywhere"
+    r"|elsewhere|somewhere else|some ?place else)\b)"
     # "pull the truck off site", "the cones can go offsite": out of the world
     r"|\boff[- ]?site\b|\boff (?:the )?(?:site|campus|set)\b(?![^.;]*\b(?:into|to|onto)\b)"
     # "pull the two cars from lot B": gone from there
@@ -72,7 +74,7 @@ REMOVE_WORDS = re.compile(
     r"|\b(?:vanish|disappear)(?:es|s|ed|ing)?\b|\bpoof\b"
     r"|^\s*(?:(?:please|just|now|then|ok|so)\W+)*fell (?=(?:the|that|this|those|these|all|every|both|a|one|two|three)\b)"  # "fell the tree": cut down
     r"|\b(?:want|need|like|prefer|there (?:should|must|can|may|is to|are to) be|there'?s to be|(?:should|must) (?:be )?have) (?:no|zero)\b"
-    r"|^(?:nobody|no one|no-one|nothing) (?=should|must|may|can|is|to|uses?|needs?|wants?)"  # "nobody should be parked there"
+    r"|^(?:nobody|no one|no-one|nothing) (?=(?:should|must|may|can(?! (?:see|hear|spot|notice|find|reach|tell|make out)\b)|is|to|uses?|needs?|wants?)\b)"  # "nobody should be parked there"
     # "there's no need for the bench", "I don't think we need the sign anymore": not needed, so gone
     r"|\bno (?:need|use) for\b|\b(?:is|are)(?:n'?t| not) (?:needed|necessary|wanted) (?:any ?more|any longer)\b"
     r"|\b(?:don'?t|dont|do not|doesn'?t|does not) (?:really )?(?:think (?:we|i|you|they) )?(?:really )?need\b[^,.;!?]*\b(?:any ?more|any longer)\b"
@@ -90,6 +92,8 @@ REMINISCED = re.compile(r"\b(?:back (?:when|in (?:my|the|those) days?|home|then|
 # A place or things wished livelier: "make the street busier", "liven them up".
 # Asking for less going on: "make it a bit quieter out there", "calm the street down", "less busy".
 QUIETER = re.compile(r"\b(?:quieter|calmer|less busy|not so busy|emptier|less crowded|less hectic|calm (?:it|things|the \w+) down)\b")
+# A thing said to be missing: "there's no bin", "we have no benches", "the stop has no shelter" (said before the thing).
+NONE_THERE = re.compile(r"\b(?:there(?:'s| is|s| are|re)|we(?:'ve| have)|(?:it|this|that|they) (?:has|have)|(?:has|have) got|got)\s+no\s+(?:[a-z]+\s+)?$")
 LIVELIER = re.compile(r"\b(?:busier|more busy|livelier|more lively|liven (?:it |\w+ )?up|more going on|more life)\b")
 HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|pedestrians)\s+(?:will|often|usually|always|sometimes|tend to)\b")
 # A thing something is forbidden to ("the robot mustn't drive through the fountain"): a constraint
@@ -158,7 +162,10 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    # ("I wonder if the SUV could head to lot A?" wishes it done: see _POLITE)
                    r"|\bwonder(?:ing|ed)? (?:if|wh?ether) (?!(?:you|u|we|i|someone|somebody|anyone)\b)(?![^.?!]*\b(?:could|might|would|can)\b)"
                    r"|\b(?:can'?t|cannot|don'?t|do not|couldn'?t) (?:remember|recall) (?:if|wh?ether|which|where|what|how)\b"
-                   r"|\bnot (?:sure|certain) (?:if|wh?ether) (?!(?:you|u|we|i)\b)|\b(?:no|any) idea (?:if|wh?ether)\b")
+                   r"|\bnot (?:sure|certain) (?:if|wh?ether) (?!(?:you|u|we|i)\b)|\b(?:no|any) idea (?:if|wh?ether)\b"
+                   # "can you see any pedestrians", "do we spot anything on the road": what is there, looked at
+                   r"|^\s*(?:(?:so|ok|okay|hey|and|now)\s+)?(?:can|could|do|does|did)\s+(?:you|u|we|i|the ego)\s+(?:see|spot|notice|make out)"
+                   r"\s+(?:any|anything|anyone|anybody|a|an|the|some|how|if|whether|where|which|what)\b")
 # Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
 # in the mood of a command, whatever the politeness around them.
 _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
@@ -666,6 +673,7 @@ __all__ = [
     "HOW_THINGS_GO",
     "KEEP_SOME",
     "LIVELIER",
+    "NONE_THERE",
     "PLACE_KIND",
     "QUIETER",
     "REMINISCED",

@@ -7,6 +7,7 @@ the check's tests hand the session a plan that misreads the request."""
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import pytest
@@ -554,7 +555,7 @@ def test_things_asked_into_a_layout_are_laid_out_not_piled_on_its_place(session,
     assert len(trees) == campus.count("tree") and all(_dist(t, library) < 15.0 for t in trees)
     assert len({round(t.pose.y, 1) for t in trees}) == 1  # one line, along the library front
     xs = sorted(t.pose.x for t in trees)
-    assert min(b - a for a, b in zip(xs, xs[1:], strict=False)) > 1.0  # each its own spot
+    assert min(b - a for a, b in itertools.pairwise(xs)) > 1.0  # each its own spot
 
 
 # Dozens, and weather that stops ---------------------------------------------------------------------------

@@ -124,3 +124,39 @@ def test_a_word_several_kinds_share_is_asked_about_never_read_as_the_thing_besid
     # a kind said in full is not asked about
     scene = ruled(campus, registry, "add a pedestrian sign beside the bench").scene
     assert _kinds(scene, "pedestrian_sign") == 1
+
+
+def test_where_a_statement_says_a_thing_is_is_never_where_it_goes(campus, registry):
+    # "the middle of the pavement" is no centre of the map, and the bin stands on the pavement already
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("that bin is in the middle of the pavement")
+    assert not report.ok and session.scene == campus
+
+
+def test_were_for_where_before_it_was(campus, registry):
+    scene = ruled(campus, registry, "take out the hydrant and stick a bench were it was").scene
+    bench = next(a for a in scene.assets if a.category == "bench" and a.id != "bench_1")
+    hydrant = campus.asset("fire_hydrant_1")
+    assert math.dist((bench.pose.x, bench.pose.y), (hydrant.pose.x, hydrant.pose.y)) < 1.5
+
+
+def test_a_line_across_a_road_said_by_its_name_spans_it(campus, registry):
+    scene = ruled(campus, registry, "three barriers across Campus Drive north of the junction").scene
+    barriers = [a for a in scene.assets if a.category == "road_barrier"]
+    assert len(barriers) == 3 and len({round(b.pose.y, 1) for b in barriers}) == 1  # across the north-south road
+    assert max(b.pose.x for b in barriers) > 1 and min(b.pose.x for b in barriers) < -1  # both lanes
+
+
+def test_whether_the_road_ahead_is_clear_looks_at_what_stands_on_it(campus, registry):
+    session = ruled(campus, registry, "add a car 20 m ahead of the ego")
+    report = session.submit("is the road clear in front of the ego?")
+    assert report.ok and report.answer is not None and "passenger_car_3" in report.answer
+    assert "ego (" not in report.answer  # what is near the ego is not the ego
+    assert [c.tool for c in report.plan.calls] == ["find_assets"]
+
+
+def test_whether_something_can_be_seen_is_a_question(campus, registry):
+    for said in ("can you see any cyclists", "do we spot anything near the fountain"):
+        session = Session(campus, RulePlanner(), registry)
+        report = session.submit(said)
+        assert report.ok and report.answer is not None and session.scene == campus, said  # it had added three

@@ -119,17 +119,21 @@ _BEFORE_DARK = re.compile(r"\b(?:just |right )?before (?:the )?(?:sun (?:goes|ha
 
 
 # A part of the day said as not wanted: "night, not day", "no daytime", "rather than morning".
-_TIME_DENIED = re.compile(r"\b(?:not|no|never|instead of|rather than)\s+(?:the\s+|a\s+|in the\s+)?"
+TIME_NOT_SET = re.compile(r"\b(?:not|no|never|instead of|rather than)\s+(?:the\s+|a\s+|in the\s+)?"
                           r"(?:day(?:time|light)?|night(?:time)?|evening|morning|afternoon|dusk|dawn|noon|midday|midnight)\b"
                           # an occasion named by its day ("for the open day", "sports day"), or a day counted: no time of day
-                          r"|\b(?:open|sports?|demo|test|game|race|match|school|work|working|visit|launch|media|press|every|one|some|other|next|whole|all)[\s-]+day\b")
+                          r"|\b(?:open|sports?|demo|test|game|race|match|school|work|working|visit|launch|media|press|every|one|some|other|next|whole|all)[\s-]+day\b"
+                          # how long ("levelling all morning", "the whole afternoon") or what a place is like ("looks like a
+                          # Sunday morning"): no time to set
+                          r"|\b(?:all|the whole|the entire|throughout the|for the)\s+(?:morning|afternoon|evening|night)\b"
+                          r"|\b(?:like|as if it were|as though it were)\s+(?:a|an|the)\s+(?:[a-z]+\s+)?(?:morning|afternoon|evening|night)\b")
 
 
 def time_of_day(r: Reading) -> ToolCall | None:
     """The time a clause asks for ("at 7 pm", "18:30", "dusk", "lunchtime"), or None."""
-    blank = _TIME_DENIED.sub(lambda m: " " * len(m.group(0)), r.low)
+    blank = TIME_NOT_SET.sub(lambda m: " " * len(m.group(0)), r.low)
     if blank != r.low:  # "NIGHT!!! NOT DAY!!!": the day is what is not wanted
-        r = replace(r, low=blank, masked=_TIME_DENIED.sub(lambda m: " " * len(m.group(0)), r.masked))
+        r = replace(r, low=blank, masked=TIME_NOT_SET.sub(lambda m: " " * len(m.group(0)), r.masked))
     said = clock_time(r.masked)
     # "06:15, overcast": hours and minutes written with a colon are a clock time whatever the words round them
     if said is not None and (r.has(("time", "make it", "set", "at", "clock", "change", "to", "past")) or half_of_day_said(r.masked, said)
@@ -321,4 +325,4 @@ def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:
     return calls
 
 
-__all__ = ["BRIGHTER", "LIGHTS_DOWN", "brighter", "environment", "lights", "shifted_time", "stronger", "time_of_day", "weather"]
+__all__ = ["BRIGHTER", "LIGHTS_DOWN", "TIME_NOT_SET", "brighter", "environment", "lights", "shifted_time", "stronger", "time_of_day", "weather"]

@@ -198,15 +198,16 @@ def count(number: Number, what: str) -> int:
 
 # A spacing between things laid out ("4 m apart"): not a distance to a place.
 SPACING = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+(?:apart|spacing|gaps?)\b"
-                     r"|\b(?:every|spaced(?: out)?(?: by)?|at|spacing(?: of)?|gaps? of)\s+(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b(?:\s+intervals?)?")
+                     r"|\b(?:every|spaced(?: out)?(?: by)?|at|spacing(?: of)?|gaps? of)\s+(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b"
+                     r"(?:\s+(?:intervals?|centres|centers|c/c|spacing|apart))?")
 
 
 def spacing_said(text: str) -> float | None:
     """The spacing the words ask for between things laid out ("4 m apart", "every 3 m", "at 5 m
     intervals"), in metres."""
     for said in SPACING.finditer(text.lower()):
-        if said.group(0).startswith("at") and not said.group(0).endswith(("interval", "intervals")):
-            continue  # "at 5 m" is where, not how far apart
+        if said.group(0).startswith("at") and not said.group(0).endswith(("interval", "intervals", "centres", "centers", "c/c", "spacing", "apart")):
+            continue  # "at 5 m" is where, not how far apart ("at 3 m centres" is)
         return float(said.group(1) or said.group(2))
     return None
 

@@ -502,7 +502,9 @@ def location(
     coords = ph.find_coordinates(r.text)
     if coords is not None:
         return {"relation": "absolute", "x": coords[0], "y": coords[1]}
-    of_place = r.landmark and re.search(r"\b(?:middle|centre) of (?:the )?(?!scene|map|world|campus)[a-z]", r.low)
+    of_place = (r.landmark and re.search(r"\b(?:middle|centre) of (?:the )?(?!scene|map|world|campus)[a-z]", r.low)) or re.search(
+        r"\b(?:middle|centre) of (?:the |a |that |this )?(?:pavement|sidewalk|footpath|path|road|street|lane|crossing|crosswalk|junction"
+        r"|walkway|driveway|entrance|lot|car park|way)\b", r.low)  # "the middle of the pavement" is no centre of the map
     if (r.has(_CENTRE) or any(c in r.low for c in _CENTRE)) and not of_place:  # "the middle of lot B" is lot B
         return {"relation": "scene_centre"}
     halfway = between(scene, r.low)
@@ -565,6 +567,13 @@ def location(
         entrance = scene.landmark(f"{notes.place.get('target')} entrance")
         target = entrance.name if entrance is not None else None
     other = _other_place(scene, exclude) if exclude and says_other_place(r.low, scene) else None
+    if exclude and r.landmark and target in (None, r.landmark) and _LEAVING.search(r.low[: max(r.landmark_at, 0)]):
+        # "get the SUV out of lot B, anywhere", "park it anywhere but lot B": the place most like it, else asked
+        other = other or _other_place(scene, exclude)
+        if other is None:
+            from drivetwin.orchestrator.planning.base import PlanningError
+
+            raise PlanningError(f"where should it go instead of {r.landmark}? name a place, e.g. 'by the east gate'")
     way = md.outer_direction(r.low) if exclude and r.landmark is None and _THE_ONE.search(r.low) else None
     other = other or (_outer_place(scene, exclude, way) if way is not None else None)  # "the western one"
     if other is not None and (target is None or target == r.landmark):
@@ -626,6 +635,10 @@ def location(
     if metres is not None and found["relation"] != "at":
         found["distance"] = metres
     return found
+
+
+# A place said as the one to leave: "out of lot B", "anywhere but the lot", "somewhere other than the gate".
+_LEAVING = re.compile(r"\b(?:out of|anywhere (?:but|except|other than|apart from)|somewhere (?:other than|besides|except)|not in)\s+(?:the\s+)?$")
 
 
 # A hand said of a sidewalk or side: "the right-hand pavement", "on the left footpath".

@@ -26,6 +26,7 @@ from drivetwin.orchestrator.planning.intent import (
     HABITUAL,
     HOW_THINGS_GO,
     LIVELIER,
+    NONE_THERE,
     QUIETER,
     REMINISCED,
     REMOVE_WORDS,
@@ -504,7 +505,9 @@ _LESS_OF_A_KIND = re.compile(r"\s+(?:(?:be|made|look|looks|seem|seems|a|bit|litt
 
 # One of a kind said before, with no noun of its own: "a new one", "a replacement one", "the last one".
 _A_NEW_ONE = re.compile(r"\b(an?\s+(?:brand[\s-]new|new|fresh|replacement|different|spare|better|nicer)\s+"
-                        r"|the\s+(?:last|first|second|third|final)\s+)one\b", re.IGNORECASE)
+                        # ("paint the second one blue" is of the last turn's things, read elsewhere; "next to the last one" is here)
+                        r"|(?:next to|beside|by|behind|near|in front of|opposite)\s+the\s+(?:last|first|second|third|final)\s+)one\b",
+                        re.IGNORECASE)
 
 
 def _kind_said_last(memory: Memory) -> str | None:
@@ -797,7 +800,9 @@ class RulePlanner:
             raise PlanningError(f"you spoke of the {absent.replace('_', ' ')} as if it were there, but the scene has none, "
                                 f"so nothing was changed; say 'add a {absent.replace('_', ' ')} ...' to add one")
         if from_statement:
-            calls = described  # "the bench by the stop is in the way", and nothing else: what it says is a guess at the wish
+            # "the bench by the stop is in the way", and nothing else: what it says is a guess at the wish;
+            # never to put a thing where the statement says it already is ("the bin is in the middle of the pavement")
+            calls = [c for c in described if not _said_where_it_is(c, scene)]
             notes.guess(STATEMENT_READ)
         calls = _alike(calls, text.lower(), scene, context.memory)  # "another exactly like it"
         calls = _not_removed_twice(calls, scene)  # "clear the cars out of lot B: both sedans and the SUV"
@@ -942,6 +947,19 @@ def _as_searches(calls: list[ToolCall]) -> list[ToolCall]:
     # "anything near the crossing" beside "a stop sign near the crossing": the search for the kind
     return [c for c in out if not (c.tool == "find_assets" and not c.args.get("category") and set(c.args) <= {"near", "within"}
                                    and any(c.args.get("near") == k.get("near") for k in kinds))]
+
+
+def _said_where_it_is(call: ToolCall, scene: Scene) -> bool:
+    """Whether `call` puts a thing where it already stands: on a sidewalk it is on, or at a place
+    it is within DESCRIBED_NEAR_M of (a statement's place is where the thing is, not where to go)."""
+    where, thing = call.args.get("location"), scene.asset(str(call.args.get("asset")))
+    if call.tool != "place_asset" or thing is None or not isinstance(where, dict):
+        return False
+    if where.get("relation") == "on_sidewalk" and "target" not in where:
+        return surface_at(scene, thing.pose.x, thing.pose.y) == "sidewalk"
+    place = scene.landmark(str(where.get("target"))) if where.get("relation") in ("at", "next_to", "on_sidewalk") else None
+    return place is not None and (math.dist((thing.pose.x, thing.pose.y), place.position) <= DESCRIBED_NEAR_M
+                                  or (place.polygon is not None and point_in_polygon(thing.pose.x, thing.pose.y, place.polygon)))
 
 
 def _not_put_where_it_is(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
@@ -1257,7 +1275,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     gone = taken_away or fewer or r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS)
     if not (r.mentions or r.ids or r.ego or gone) and r.has(lx.WORKS_WORDS):
         return _work_zone(r, scene, memory, notes)  # "set up roadworks by the east gate", "make it look like a building site"
-    closure = _ACROSS_ROAD.search(r.low) and r.mentions and all(_closes_roads(m.category) for m in r.mentions)
+    roads = "|".join(re.escape(ph.normalise(n).strip()) for n in {lane.road for lane in scene.roads.lanes if lane.road})
+    across = _ACROSS_ROAD.search(r.low) or (roads and re.search(rf"\b(?:across|spanning) (?:the )?(?:whole )?(?:{roads})\b", r.low))
+    closure = across and r.mentions and all(_closes_roads(m.category) for m in r.mentions)  # "3 barriers across Campus Drive"
     closure = closure or (_SEALED_OFF.search(r.low) is not None and _way_through(r, scene))
     if (r.has(lx.BLOCK_WORDS) or _CLOSE_ROAD.search(r.low) or closure) and not r.ids:
         return [_block(r, scene, memory, notes)]
@@ -1280,6 +1300,10 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     said_add = tuple(w for w in _STRICT_ADD if w != "more" and not (definite and w in _WISHES))
     strict_add = ph.has_any(_THE_NEW.sub(" ", r.masked), said_add) or _more_of_a_thing(r) or filled
     mention = r.mentions[0] if r.mentions else None
+    # "there's no bin outside the JTEKT building": one wanted there, never the one elsewhere moved
+    strict_add = strict_add or (mention is not None and NONE_THERE.search(r.low[: mention.start]) is not None
+                                and not any(commands(part) for part in re.split(r"[,.;!]+|\band\b|\bso\b", r.low)))
+    # ("there is no bench in lot B, move the bench there": that one)
     # A bare plural ("benches in lot A") asks for new ones where fewer than two are there.
     present = mention is not None and scene.count(mention.category) >= (2 if mention.plural else 1)
     fresh = mention is not None and is_new(r, mention, strict_add, present)

@@ -47,7 +47,11 @@ _NEAREST = re.compile(r"\b(?:nearest|closest|most near|most close|nearer|closer|
 _ON_LANE = re.compile(
     r"\b(?:block\w*|obstruct\w*|occupy\w*|in (?:the|its|our|their|my|his|her) way"
     r"|(?:on|in|across|along) (?:the |a |any |our )?(?:[a-z]+ )?(?:lanes?|roads?|streets?|carriageway))\b"
+    # "is the road clear ahead of the ego", "is our lane free": whether anything stands on it
+    r"|\b(?:lanes?|roads?|streets?|way) (?:\w+ )?(?:clear|free|empty|open|passable)\b"
 )
+# How far from a thing the road is looked along when a question names it ("is the road clear ahead of the ego").
+ROAD_AHEAD_M = 40.0
 # "of" after a word for an amount or a list ("the number of benches") names what is counted.
 _AROUND = re.compile(r"\b(?:around|near|nearby|close to|next to|beside|by|at|in|inside|within|"
                      r"(?<!number )(?<!count )(?<!list )(?<!names )(?<!amount )(?<!total )of)\b")
@@ -259,6 +263,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
             (w for w in map(ph.singular, ph.tokens(low)) if w in md.catalog_tags()), "")
         kind = f"{word}s" if word in md.catalog_tags() else head.category if head is not None else None
         ranked = {"most": md.most_said(most.group(1)), **({"category": kind} if kind else {})}
+        if r.landmark:  # "the heaviest vehicle in lot B": of those there
+            ranked.update(near=r.landmark, within=_radius(scene, Anchor("landmark", r.landmark)))
         return Part(ToolCall(tool="find_assets", args=ranked), None)
     if _WHERE_TO_CROSS.search(low) and {m.category for m in r.mentions} <= {"pedestrian"}:
         # "where can people cross the road?": the marked crossings, nearest the place said first
@@ -304,6 +310,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
             args["category"] = r.mentions[0].category  # not "anything in the road that would block a cyclist": who it blocks
         if r.landmark:  # "is the road blocked near the east gate": only that stretch
             args.update(near=r.landmark, within=_radius(scene, Anchor("landmark", r.landmark)))
+        elif r.ego and road is None:  # "is the road clear ahead of the ego": its stretch of road
+            args.update(near="ego", within=ROAD_AHEAD_M)
         return _found(ToolCall(tool="find_assets", args=args), scene)
     if _asks_for_lanes(r) or (_ROAD_KIND.search(r.masked) and not r.mentions and not r.landmark):
         return Part(_lanes(r, scene, back), None)

@@ -98,6 +98,9 @@ _REPAIRABLE_GRAMMAR = (
     "backward",
     "ahead",  # "15m ahaed of ego"
     "faster",  # "make the ego go fater": a pace, never "after"
+    "centres",  # "at 2 m cnetres": a spacing
+    "intervals",
+    "apart",
     "slower",
     "quicker",
     "across",
@@ -621,7 +624,9 @@ _GERUND = re.compile(
 
 
 # "were is the lot": "were" before "is" is never the verb, always a slip for "where".
-_WHERE_SLIP = re.compile(r"\bwere(?= (?:is|are|can|do|does|did|was)\b)", re.IGNORECASE)
+_WHERE_SLIP = re.compile(r"\bwere(?= (?:is|are|can|do|does|did|was)\b)"
+                         # "put a bin were it was", "back were they stood" (never "were it not for")
+                         r"|\bwere(?= (?:it|they|that one|those|the \w+) (?:was|were|is|are|stood|used to|sits|stands)\b)", re.IGNORECASE)
 # "confirm wether it is raining", "check weather there are cones": after a verb of finding out, or
 # "wether" before a clause's subject, the word is "whether" ("change the weather, it's too sunny" keeps it).
 _WHETHER_SLIP = re.compile(r"(?:(?<=\bconfirm )|(?<=\bcheck )|(?<=\bsee )|(?<=\bknow )|(?<=\bwonder )|(?<=\bask )"
@@ -717,6 +722,16 @@ _MORE_ADJECTIVE = re.compile(r"\bmore ([a-z]{3,6})\b", re.IGNORECASE)
 _BIT_ADJECTIVE = re.compile(r"\b((?:a )?little bit|a bit|a little|a tad|slightly) ([a-z]{3,6})\b(?! (?:of|more|less)\b)", re.IGNORECASE)
 
 
+# "the most heavy", "most near": a superlative said with "most", as learners of English often say it.
+_MOST_ADJECTIVE = re.compile(r"\bmost ([a-z]{3,6})\b", re.IGNORECASE)
+
+
+def _superlative(m: re.Match[str]) -> str:
+    """"most heavy" as "heaviest", when its comparative is a word the rule planner reads."""
+    said = _comparative_of(m.group(1).lower())
+    return said[:-1] + "st" if said is not None and is_english(said[:-1] + "st") else m.group(0)
+
+
 def _comparative(m: re.Match[str]) -> str:
     """"more slow" as "slower", when that is an English word the rule planner's patterns read."""
     said = _comparative_of(m.group(1).lower())
@@ -802,6 +817,9 @@ _SOUND_ALIKES = (
     (re.compile(r"\brite(?= (?:next|there|here|now|by|behind|beside|in front|outside|at|on|up|away)\b)", re.IGNORECASE), "right"),
     # "paint the trash been blue": a bin
     (re.compile(r"\btrash been\b", re.IGNORECASE), "trash bin"),
+    # "quarter to ate", "half past ate": a clock's eight
+    (re.compile(r"\b(quarter to|quarter past|half past|to|past|at|after|before|until|till|by) ate\b(?= *(?:o'?clock|am|pm|in|at|tonight|$|[,.!?]))",
+                re.IGNORECASE), r"\1 eight"),
     # dictation: "seven thirty pee em", "six ay em"; "turn write at the junction", "the write lane"
     (re.compile(r"\b(?:pee|p)\s?em\b", re.IGNORECASE), "pm"),
     (re.compile(r"(?<=\w )(?:ay|eh)\s?em\b", re.IGNORECASE), "am"),
@@ -810,7 +828,7 @@ _SOUND_ALIKES = (
 )
 # A number as dictation hears it, straight after a verb that takes an amount: "add for cones", "remove too of the
 # benches", "plant to trees" (no preposition stands between such a verb and a bare plural), and "ate" before things.
-_HEARD_NUMBERS = {"to": "two", "too": "two", "for": "four", "fore": "four", "ate": "eight"}
+_HEARD_NUMBERS = {"to": "two", "too": "two", "tow": "two", "for": "four", "fore": "four", "ate": "eight"}
 _HEARD_AMOUNT = re.compile(r"\b(?P<verb>add|put|place|plant|spawn|drop|create|remove|delete|lose|want|need|of)\s+(?P<said>to|too|for|fore|ate)"
                            r"\s+(?=(?P<of>of (?:the|those|these|them)\b)|(?P<thing>[a-z]+)\b)", re.IGNORECASE)
 
@@ -822,8 +840,8 @@ def _sound_alikes(text: str) -> str:
                   text, flags=re.IGNORECASE)
     text = _HEARD_AMOUNT.sub(lambda m: f"{m.group('verb')} {_HEARD_NUMBERS[m.group('said').lower()]} " if m.group("of") or any(
         c.plural for c in ph.find_categories(m.group("thing") or "")) else m.group(0), text)
-    # "too" or "ate" before things in the plural: "ad too buses", "a row of ate cones"
-    return re.sub(r"\b(too|ate)(?= ([a-z]+)\b)", lambda m: _HEARD_NUMBERS[m.group(1).lower()] if any(
+    # "too", "tow" or "ate" before things in the plural: "ad too buses", "set out tow bollards", "a row of ate cones"
+    return re.sub(r"\b(too|tow|ate)(?= ([a-z]+)\b)", lambda m: _HEARD_NUMBERS[m.group(1).lower()] if any(
         c.plural for c in ph.find_categories(m.group(2))) else m.group(0), text, flags=re.IGNORECASE)
 
 
@@ -993,6 +1011,37 @@ def _verb_of_putting(text: str, vocab: frozenset[str], repairs: list[str]) -> st
     return _PUTTING_SLOT.sub(put, text)
 
 
+# The part of the day said before its hour, as some speakers order it: "night 9 o'clock", "evening 7".
+_HOURS_SAID = r"\d{1,2}|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve"
+_PERIOD_FIRST = re.compile(rf"\b(morning|afternoon|evening|night)\s+({_HOURS_SAID})(?:\s*o'?\s?clock)?(?=\s*(?:[,.!?]|$|please\b|pls\b|thanks\b|ok\b))",
+                           re.IGNORECASE)
+
+
+def _period_after(said: re.Match[str]) -> str:
+    period, hour = said.group(1).lower(), said.group(2)
+    return f"{hour} o'clock {'at night' if period == 'night' else 'in the ' + period}"
+
+
+# What the speaker did earlier, said in the present as some speakers do: "the bicycle I add before",
+# "the cones we place earlier": added, placed (a thing there, never one more).
+_DONE_BEFORE = re.compile(r"\b(i|we|you)\s+(add|place|create|spawn|make|move|paint)(?=\s+(?:it\s+|them\s+)?(?:before|earlier|previously|already"
+                          r"|just now|a (?:moment|minute|while) ago|last time|the other time|yesterday)\b)", re.IGNORECASE)
+_PAST = {"make": "made", "place": "placed", "create": "created", "move": "moved"}
+
+
+def _them_as_those(text: str) -> str:
+    """"Them" said before a thing's name, as some speakers say "those" ("lose one of them lamp
+    posts", "move them cones"): "those"."""
+    return _them_before_a_thing().sub("those", text)
+
+
+@cache
+def _them_before_a_thing() -> re.Pattern[str]:
+    first_words = {w.lower().split()[0] for cat in catalog().values() for w in cat.words}
+    said = "|".join(sorted(first_words, key=len, reverse=True))
+    return re.compile(rf"\bthem(?=\s+(?:{said})\b)", re.IGNORECASE)
+
+
 @cache
 def _thing_words() -> tuple[str, ...]:
     return tuple(sorted({w.lower() for cat in catalog().values() for w in cat.words if " " not in w}))
@@ -1069,10 +1118,14 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _PASSIVE_LAYOUT.sub(lambda m: f"{_LAYOUT_BASE[m.group('verb').lower()]}{' off' if m.group('off') else ''} {m.group('thing')}", text)
     text = _THERE_SLIP.sub("there", text)
     text = _THING_PRONOUN.sub("it", text)
+    text = _them_as_those(text)  # "one of them lamp posts": those
+    text = _PERIOD_FIRST.sub(_period_after, text)  # "night 9 o'clock": 9 o'clock at night
+    text = _DONE_BEFORE.sub(lambda m: f"{m.group(1)} {_PAST.get(m.group(2).lower(), m.group(2) + 'ed')}", text)  # "the bike I add before"
     text = _OFF_SLIP.sub(r"\1 off", text)
     text = _GONE_STATE.sub(r"\1 become ", text)
     text = _CAR_PARK_OF.sub("parking lot ", text)  # "the car park A entrance": lot A's, not "the car park" (lot B)
     text = _inverted_names().sub(_said_head_last, text)  # "the car of test": the test car
+    text = _MOST_ADJECTIVE.sub(_superlative, text)  # "the most heavy vehicle": the heaviest
     text = _MORE_ADJECTIVE.sub(_comparative, text)  # "more slow, please": slower
     text = _BIT_ADJECTIVE.sub(_by_a_bit, text)  # "little bit slow": a bit slower
     text = _marker_off(text)

@@ -1,0 +1,79 @@
+"""Readings from one round's unseen suite (practice33), each worded here unlike any suite prompt:
+dialect "them" for "those", a complaint that nobody can see a thing, spacing said in centres, numbers
+heard as words, taking some out of a place said as "it", a place to leave, what the speaker "add
+before", the part of the day said before its hour, a duration or a likeness that sets no time, a
+superlative said with "most", and a thing said to be missing."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.session import Session
+from misreading import ruled  # this folder is on sys.path (no __init__.py)
+
+
+def _kinds(scene, category: str) -> int:
+    return sum(a.category == category for a in scene.assets)
+
+
+def test_them_said_for_those_takes_one(campus, registry):
+    scene = ruled(campus, registry, "take out one of them street lights on the south side").scene
+    assert _kinds(scene, "street_light") == _kinds(campus, "street_light") - 1
+
+
+def test_nobody_seeing_or_touching_a_thing_never_takes_it_away(campus, registry):
+    scene = ruled(campus, registry, "three cones by the main gate", "Make the cones orange, nobody can see them").scene
+    assert _kinds(scene, "traffic_cone") == 3
+    scene = ruled(campus, registry, "ring the hydrant with bollards so nobody touches it").scene
+    assert scene.asset("fire_hydrant_1") is not None and _kinds(scene, "bollard") >= 4
+
+
+def test_spacing_said_in_centres(campus, registry):
+    scene = ruled(campus, registry, "four bollards in a row at 4 m centres in lot A").scene
+    posts = sorted((a.pose.x, a.pose.y) for a in scene.assets if a.category == "bollard")
+    assert len(posts) == 4 and all(abs(math.dist(p, q) - 4.0) < 0.1 for p, q in itertools.pairwise(posts))
+
+
+def test_numbers_heard_as_words(campus, registry):
+    assert _kinds(ruled(campus, registry, "add tow cones at the main gate").scene, "traffic_cone") == 2
+    assert ruled(campus, registry, "make the clock quarter past ate in the evening").scene.environment.time_of_day == "20:15"
+
+
+def test_some_taken_out_of_a_place_said_as_it(campus, registry):
+    scene = ruled(campus, registry, "Lot B is rammed. Take a car or two out of it.").scene
+    cars = [a for a in scene.assets if a.category in ("passenger_car", "suv")]
+    assert 1 <= 3 - len(cars) <= 2 and len(scene.assets) < len(campus.assets)
+
+
+def test_a_place_to_leave_is_never_where_it_goes(campus, registry):
+    scene = ruled(campus, registry, "shift the SUV out of lot B, anywhere will do").scene
+    lot_a = next(lm for lm in scene.landmarks if lm.name == "parking lot A")
+    suv = scene.asset("suv_1")
+    assert suv is not None and math.dist((suv.pose.x, suv.pose.y), lot_a.position) < 20
+
+
+def test_what_the_speaker_add_before_is_the_one_there(campus, registry):
+    scene = ruled(campus, registry, "a bicycle at the fountain", "the bicycle we add earlier, take it to the main gate").scene
+    assert _kinds(scene, "bicycle") == 1
+
+
+def test_the_part_of_the_day_said_before_its_hour(campus, registry):
+    assert ruled(campus, registry, "time to evening 8 please").scene.environment.time_of_day == "20:00"
+
+
+def test_a_duration_or_a_likeness_sets_no_time(campus, registry):
+    scene = ruled(campus, registry, "we'll be resurfacing by the north crosswalk all afternoon, put a construction sign there").scene
+    assert scene.environment.time_of_day == campus.environment.time_of_day and _kinds(scene, "construction_sign") == 1
+
+
+def test_a_superlative_said_with_most(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("which car in lot B is the most heavy")
+    assert report.ok and report.answer is not None and report.answer.startswith("heaviest") and "suv_1" in report.answer
+
+
+def test_a_thing_said_missing_is_added_never_fetched_from_elsewhere(campus, registry):
+    scene = ruled(campus, registry, "litter everywhere outside the union, there's no bin").scene
+    assert _kinds(scene, "trash_bin") == 2 and scene.asset("trash_bin_1") == campus.asset("trash_bin_1")
