@@ -382,7 +382,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked for another one, but the plan only moves " + _names(_moved(effect)))  # "a copy of that one by the gate"
     if ((_LOOKS_MORE_OR_LESS.search(request.low) or TOO_CONSPICUOUS.search(request.low)) and (effect.removed or effect.added) and not request.question
             and not LIVELIER.search(request.low) and not QUIETER.search(request.low)  # "look less crowded" is fewer
-            and not _TOO_MANY.search(request.low)):  # "too many cones, they're too visible"
+            and not _TOO_MANY.search(request.low)  # "too many cones, they're too visible"
+            and not _look_made_with(request.low, effect)):  # "look tidier with some greenery": the greenery is the means
         # "make the SUV look a bit less aggressive": how it looks, not how many there are
         out.append("you asked how something looks, but the plan " + ("removes " + _names(effect.removed) if effect.removed else "adds " + _names(effect.added)))
     cleared = request.place is not None and _CLEARS.search(request.low) is not None \
@@ -1504,6 +1505,16 @@ def _screened(prompt: str, question: Question, context: PlanContext) -> Verdict:
                        outcome=runs[0].outcome, calls=list(kept[0].calls))
     return Verdict("ask", ["the planner could not tell which reading was meant"],
                    question.model_copy(update={"readings": kept}))
+
+
+def _look_made_with(low: str, effect: Effect) -> bool:
+    """Whether a look is said to come from what the plan adds, named after "with" ("make the Union
+    look tidier with some greenery", "nicer with a few benches")."""
+    said = re.search(r"\bwith\b(.*)$", low)
+    if said is None or not effect.added or effect.removed:
+        return False
+    named = {m.category for m in ph.find_categories(said.group(1))} | _concepts_said(said.group(1))
+    return all(a.category in named for a in effect.added)
 
 
 # Clearing a place of whatever stands there, said without naming it: "clear lot B", "empty out the car park".

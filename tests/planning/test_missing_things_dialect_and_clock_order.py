@@ -77,3 +77,52 @@ def test_a_superlative_said_with_most(campus, registry):
 def test_a_thing_said_missing_is_added_never_fetched_from_elsewhere(campus, registry):
     scene = ruled(campus, registry, "litter everywhere outside the union, there's no bin").scene
     assert _kinds(scene, "trash_bin") == 2 and scene.asset("trash_bin_1") == campus.asset("trash_bin_1")
+
+
+def test_a_thing_to_go_with_another_stands_beside_it(campus, registry):
+    scene = ruled(campus, registry, "a bench by the Engineering Hall", "plus a bin to go with it").scene
+    bench = next(a for a in scene.assets if a.category == "bench" and a.id != "bench_1")
+    bin_ = next(a for a in scene.assets if a.category == "trash_bin" and a.id != "trash_bin_1")
+    assert math.dist((bench.pose.x, bench.pose.y), (bin_.pose.x, bin_.pose.y)) < 4
+
+
+def test_a_bright_colour_asked_is_one(campus, registry):
+    scene = ruled(campus, registry, "give the hydrant a bright colour").scene
+    assert scene.asset("fire_hydrant_1").appearance != campus.asset("fire_hydrant_1").appearance
+
+
+def test_also_carries_the_verb_and_the_colour_past_a_place_name(campus, registry):
+    scene = ruled(campus, registry, "take away the SUV in lot B, and also the bench at the bus stop").scene
+    assert scene.asset("suv_1") is None and scene.asset("bench_1") is None
+    scene = ruled(campus, registry, "paint the hydrant yellow, and also the bin").scene
+    assert scene.asset("trash_bin_1").appearance == scene.asset("fire_hydrant_1").appearance != campus.asset("trash_bin_1").appearance
+
+
+def test_each_thing_its_own_colour(campus, registry):
+    scene = ruled(campus, registry, "for the parade the bin should be purple and the hydrant white").scene
+    assert scene.asset("trash_bin_1").appearance != scene.asset("fire_hydrant_1").appearance
+
+
+def test_a_look_made_with_things_added(campus, registry):
+    scene = ruled(campus, registry, "make the Engineering Hall look a bit more tidy with a couple of trees").scene
+    assert _kinds(scene, "tree") == _kinds(campus, "tree") + 2
+
+
+def test_a_chair_is_somewhere_to_sit(campus, registry):
+    assert _kinds(ruled(campus, registry, "put a chair outside the library").scene, "bench") == 2
+
+
+def test_weather_said_too_much_then_how_little(campus, registry):
+    session = ruled(campus, registry, "heavy fog please", "that fog is way too much, just a wisp")
+    assert 0 < session.scene.environment.weather.intensity < 0.9 and session.scene.environment.weather.kind == "fog"
+
+
+def test_a_speed_said_without_its_unit(campus, registry):
+    ego = ruled(campus, registry, "slow the ego to 2").scene.asset("ego")
+    assert ego is not None and getattr(ego.behaviour, "speed", None) == 2.0
+
+
+def test_slips_in_a_layout_and_a_colour(campus, registry):
+    assert _kinds(ruled(campus, registry, "a ring of bolards round the hydrant").scene, "bollard") >= 4
+    assert ruled(campus, registry, "no wait, make the bench yelow instead").scene.asset("bench_1").appearance.rgba is not None
+    assert ruled(campus, registry, "make the bench pnk instead").scene.asset("bench_1").appearance.rgba is not None

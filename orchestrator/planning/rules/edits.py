@@ -59,7 +59,8 @@ _THAT_LAST = re.compile(r"\b(?:that|this)\s*(?:please|pls|now|too|again|as well)
 _ANCHOR_BEFORE = re.compile(r"\b(?:near|from|to|behind|ahead of|in front of|of|by|beside|around|closest to|nearest)\s+(?:the\s+)?$")
 # "make the suv stand out": a look meant to be seen, in the colour of safety clothing.
 _CONSPICUOUS = ("stand out", "stands out", "hard to miss", "eye-catching", "conspicuous", "easy to spot", "easier to spot", "hi-vis", "high-vis",
-                "more visible", "easier to see", "easy to see")
+                "more visible", "easier to see", "easy to see",
+                "something bright", "a bright colour", "a bright color", "bright colours", "bright colors", "something brighter")
 CONSPICUOUS_COLOUR = "orange"
 # Standing out said as too much: "too conspicuous", "less eye-catching", "stands out too much", "tone it down".
 TOO_CONSPICUOUS = re.compile(r"\b(?:too|less|not (?:so|as)|overly)\s+(?:\w+\s+)?(?:conspicuous|eye-catching|visible|hard to miss|easy to spot)"
@@ -604,6 +605,12 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[Too
     """set_asset_appearance for "paint the bus red", "the bins should blend in with the grass",
     "make the benches wooden"."""
     asked = md.colours_asked(r.low)  # "paint the red car blue": blue
+    paired = _colour_each(r, asked)
+    if paired:  # "the SUV should be red and the bench green": each its own colour
+        calls = [c for m, said in paired for c in recolour(replace(r, mentions=[m], low=r.low.replace(said, " " * len(said)) + f" {said}"),
+                                                         scene, memory, notes) or []]
+        if len(calls) == len(paired):
+            return calls
     colour = asked[-1] if asked else next((c for c in COLOURS if r.has((c,)) and not md.SIGNAL_STATE.search(r.low)), None)
     if colour is None and r.has(("blend in", "match", "same colour as", "colour of", "coloured like")):
         colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
@@ -639,6 +646,18 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[Too
         # "paint the cones orange": every one of a kind; "the cars in lot B" (an SUV too) are those named
         return [ToolCall(tool="set_asset_appearance", args={"category": r.mentions[0].category, **look})]
     return [ToolCall(tool="set_asset_appearance", args={"assets": ids, **look})]
+
+
+def _colour_each(r: Reading, asked: list[str]) -> list[tuple[ph.Mention, str]]:
+    """Things each said with its own colour after it ("the SUV should be red and the bench green"),
+    as (thing, colour) pairs in the order said; [] unless things and colours take turns."""
+    if len(asked) < 2 or len(r.mentions) != len(asked):
+        return []
+    colours = list(re.finditer(rf"\b(?:{'|'.join(asked)})\b", r.low))
+    order = sorted([(m.start, "thing") for m in r.mentions] + [(c.start(), "colour") for c in colours])
+    if [kind for _, kind in order] != ["thing", "colour"] * len(asked) or len(colours) != len(asked):
+        return []
+    return [(m, c.group(0)) for m, c in zip(sorted(r.mentions, key=lambda m: m.start), colours, strict=True)]
 
 
 def ph_error(message: str) -> Exception:
@@ -730,10 +749,13 @@ def behaviour_spec(kind: str, r: Reading, scene: Scene | None = None) -> dict[st
 # A new speed for one thing that is there: "set the ego's speed to 8 m/s", "the truck should be doing
 # about 10 m/s", "could the ego go a bit slower?" (by PACE_FACTOR when no speed is said).
 _PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|driving|travel(?:s|ling|ing)?|move|moves|moving"
-                        r"|cruise|cruising|ride|rides|riding|walk|walks|walking)\b")
+                        r"|cruise|cruising|ride|rides|riding|walk|walks|walking|slow|slows|slowed|slowing)\b")
 _SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
 _FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed)\b")
 PACE_FACTOR = 1.5
+# A speed said as a bare number after a change of pace: "slow it to 3", "speed up to 6, please".
+_BARE_PACE = re.compile(r"\b(?:down |up )?to (\d+(?:\.\d+)?)\b(?!\s*(?:[%°:/]|\.\d|m\b|ms\b|metres?|meters?|km|kph|mph|s\b|secs?\b|seconds?"
+                        r"|minutes?|hours?|o'?clock|am\b|pm\b|times\b|of\b|cars?\b|people\b))")
 # A pace said against the ego's: "going slower than we are", "a bit faster than our car".
 _THAN_EGO = re.compile(r"\b(slower|faster|quicker)\s+than\s+(?:we|us|me|i|the ego|ego|our car|my car|our vehicle)\b")
 # A speed said as a multiple of the one now: "double its speed", "halve the truck's speed".
@@ -752,6 +774,10 @@ def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[Too
     times = _TIMES_SAID.search(r.low) if speed is None else None
     slower = _SLOWER.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] < 1)
     faster = _FASTER.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] > 1)
+    bare = _BARE_PACE.search(r.low) if speed is None and (slower or faster or re.search(r"\bslow\b", r.low)) else None
+    if bare is not None:  # "slow it to 3", "speed the ego up to 6": metres a second, the speed the Workers take
+        speed = float(bare.group(1))
+        notes.guess("a speed said without its unit, read as m/s")
     if (speed is None and slower == faster) or (speed is not None and not _PACE_SAID.search(r.low)) or r.has(_ADDING):
         return None
     if r.ids or (r.ego and not r.mentions):

@@ -269,7 +269,7 @@ STRONGER_STEP = 0.3
 
 def said_weaker(low: str) -> bool:
     """Whether the words ask for less of a weather ("less foggy", "ease the rain off", "improve visibility")."""
-    return bool(_LESS_OF_IT.search(low) or _SEE_BETTER.search(low))
+    return bool(_LESS_OF_IT.search(low) or _SEE_BETTER.search(low) or any(_too_much(low, kind) for kind in lx.WEATHER_WORDS))
 
 
 def stronger(r: Reading, now: Environment) -> ToolCall | None:
@@ -292,7 +292,7 @@ def _too_much(low: str, kind: str) -> re.Match[str] | None:
     fog is far too thick"): less of it is wanted."""
     words = "|".join(map(re.escape, lx.WEATHER_WORDS[kind]))
     return re.search(rf"\btoo (?:much |heavy |thick |dense |strong |big )?(?:{words})\b"
-                     rf"|\b(?:{words})(?: (?:is|are|'s|feels?|looks?|already|now|still|getting|way|far|much|a bit))* too"
+                     rf"|\b(?:{words})(?:'s)?(?: (?:is|are|'s|feels?|looks?|already|now|still|getting|way|far|much|a bit))* too"
                      rf" (?:heavy|thick|dense|strong|much|intense|big)\b", low)
 
 

@@ -94,7 +94,7 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
 # Mass or collective nouns for catalog things: the words a person uses, not the catalog's.
 CONCEPTS: dict[str, tuple[str, ...]] = {
     "tree": ("greenery", "vegetation", "shrub", "shrubs", "bush", "bushes", "foliage", "palm"),
-    "bench": ("somewhere to sit", "to sit", "sit down", "seat", "seats", "chairs"),  # not "sit" said of a thing ("the car should sit")
+    "bench": ("somewhere to sit", "to sit", "sit down", "seat", "seats", "chairs", "chair"),  # not "sit" said of a thing ("the car should sit")
     "construction_sign": ("warn", "warned", "warning", "warning sign", "heads-up"),
     "road_barrier": ("fence off", "cordon off", "barriers", "block the road", "block off"),
     "pedestrian": ("foot traffic", "crowd", "passers-by", "someone", "somebody", "anyone", "anybody", "guy"),

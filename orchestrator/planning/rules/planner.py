@@ -273,7 +273,7 @@ _FIX = re.compile(r"(?:(?:please|pls|just|can you|could you|now)\s+)*(?:fix|sort
 # A clause that asks for what the one before it asked, of other things: "..., and so does the bin",
 # "..., same for the benches".
 _SO_DOES = re.compile(r"^\s*(?:[a-z]+\s+)??(?:and\s+)?(?:so (?:does|do|is|are|should|must|will|can|has|have)|(?:the )?same (?:goes )?for"
-                      r"|likewise(?: for)?|ditto for)\b")
+                      r"|likewise(?: for)?|ditto for|also (?=(?:the|that|this|those|these|both|all)\b))")  # "..., and also the bench"
 # A clause that asks for the same again of other things ("..., and the bin too", "the bollards as well").
 _TOO = re.compile(r"\b(?:too|as well)(?:,?\s+(?:so|to|for|because|since|as)\b[^.!?;]*)?\s*[.!?]*\s*$")  # "..., so they match"
 # An ellipsis the sentence goes on after ("the bench by the stop... vanishes"): a pause, not a break.
@@ -330,11 +330,16 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
             text = f"{counted.group(1)} {noun}{text[counted.end() :]}"
         if _SUBJECTLESS.match(text.lower()):
             text = f"it {text}"  # "bin's in a dumb spot. needs to be by the library door": it needs to
-        verb = _VERB_AT.search(text.lower())
+        # (a verb inside a place's name is none: "the bench at the bus stop" has no "stop" to do)
+        verb = _VERB_AT.search(re.sub("|".join(rf"\b{re.escape(p)}\b" for p in places) or "$^", lambda m: " " * len(m.group(0)), text.lower()))
         if verb is None and lead and re.search(r"and also", parts[i - 1]) and ph.find_categories(text):
             text = f"{lead} {text}"  # "remove the hydrant and also the bin": the bin is removed too
+            look = re.search(rf"\s((?:{'|'.join(COLOURS)}))\s*[.!]*\s*$", out[-1][0].lower()) if out else None
+            if look is not None and not re.search(rf"\b(?:{'|'.join(COLOURS)})\b", text.lower()):
+                text = f"{text} {look.group(1)}"  # "paint the bin red, and also the bench": red too
         elif verb is not None:
-            lead = text[: verb.end()]
+            particle = re.match(r"\s+(?:away|out|off|down|rid of)\b", text[verb.end() :], re.IGNORECASE)
+            lead = text[: verb.end() + (particle.end() if particle else 0)]  # "take away the SUV ..., and also the bench": away too
         # "Could you put the hydrant by the sign, and the bin beside the bench?": a request, every part of it
         asked = i + 1 < len(parts) and "?" in parts[i + 1] and asks(f"{text.lower()}?")
         intro = i + 2 < len(parts) and ":" in parts[i + 1] and bool(parts[i + 2].strip())

@@ -262,7 +262,7 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         word = ph.singular(r.low[head.start : head.end].strip()) if head is not None else next(
             (w for w in map(ph.singular, ph.tokens(low)) if w in md.catalog_tags()), "")
         kind = f"{word}s" if word in md.catalog_tags() else head.category if head is not None else None
-        ranked = {"most": md.most_said(most.group(1)), **({"category": kind} if kind else {})}
+        ranked: dict[str, Any] = {"most": md.most_said(most.group(1)), **({"category": kind} if kind else {})}
         if r.landmark:  # "the heaviest vehicle in lot B": of those there
             ranked.update(near=r.landmark, within=_radius(scene, Anchor("landmark", r.landmark)))
         return Part(ToolCall(tool="find_assets", args=ranked), None)

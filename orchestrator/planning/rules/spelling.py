@@ -892,7 +892,10 @@ _THING_SLOT = re.compile(rf"\b(?:{'|'.join(_COMMAND_VERBS)})\s+(?:a|an|the|some|
 
 
 # Where a thing's name stands: after an article, a determiner or a count ("all the tress", "3 bueses").
-_AFTER_DETERMINER = re.compile(r"\b(?:a|an|the|some|all|both|those|these|my|our|\d+)\s+$", re.IGNORECASE)
+_AFTER_DETERMINER = re.compile(r"\b(?:a|an|the|some|all|both|those|these|my|our|\d+)\s+$"
+                               # "a row of tress", "a ring of conse": a layout's things
+                               r"|\b(?:row|rows|line|lines|ring|circle|group|pair|couple|bunch|lots|dozen|handful|grid|column|cluster) of\s+$",
+                               re.IGNORECASE)
 _AFTER_COUNT = re.compile(r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|twelve|several|many)\s+$", re.IGNORECASE)
 
 
@@ -919,6 +922,17 @@ def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "", 
     if word_slip and following is not None and following.group(1) not in lx.GRAMMAR and f"{thing} {following.group(1)}" not in phrases:
         return None  # "the lone tree", "a deep blue": a word said of what follows, not a slip for a thing
     return thing + ("es" if thing.endswith(("s", "sh", "ch", "x")) else "s") if many else thing
+
+
+def _colour_slip(word: str, before: str, after: str, vocab: frozenset[str]) -> str | None:
+    """The colour one slip from `word` where a colour is asked for, even when the slip is an English
+    word: "make it blu instead", "paint the bench gren" (a word of the vocabulary stays)."""
+    low = word.lower()
+    if len(low) < 3 or is_known(low, vocab) or not re.search(r"\b(?:paint|colou?r|make|turn|it|them|be|to)\s+(?:[a-z]+\s+){0,2}$", before.lower()) \
+            or not re.match(r"\s*(?:$|[,.;!?]|instead\b|please\b|pls\b|now\b|too\b|and\b|then\b)", after.lower()):
+        return None
+    near = {c for c in COLOURS if len(c) >= len(low) and edits(low, c) == 1}
+    return near.pop() if len(near) == 1 else None
 
 
 def _place_word_slip(word: str, before: str, vocab: frozenset[str], scene: Scene) -> str | None:
@@ -1179,8 +1193,8 @@ def repair(text: str, scene: Scene) -> Repaired:
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
         slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :], _place_phrases(scene)) \
-            or _place_word_slip(word, text[: m.start()], vocab, scene)
-        if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away; "the east gait"
+            or _place_word_slip(word, text[: m.start()], vocab, scene) or _colour_slip(word, text[: m.start()], text[m.end() :], vocab)
+        if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away; "the east gait"; "make it blu"
             repairs.append(f"{word} -> {slip}")
             return slip
         new = _place_glued(word, scene) or _repair_word(word, vocab) or _split_glued(word, scene, vocab) \
