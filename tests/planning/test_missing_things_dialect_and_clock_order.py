@@ -126,3 +126,20 @@ def test_slips_in_a_layout_and_a_colour(campus, registry):
     assert _kinds(ruled(campus, registry, "a ring of bolards round the hydrant").scene, "bollard") >= 4
     assert ruled(campus, registry, "no wait, make the bench yelow instead").scene.asset("bench_1").appearance.rgba is not None
     assert ruled(campus, registry, "make the bench pnk instead").scene.asset("bench_1").appearance.rgba is not None
+
+
+def test_fewer_by_half(campus, registry):
+    session = ruled(campus, registry, "eight cones in lot A", "way too many cones now. Cut them down to half.")
+    assert _kinds(session.scene, "traffic_cone") == 4
+
+
+def test_a_sign_sung_and_a_lamp_column(campus, registry):
+    assert _kinds(ruled(campus, registry, "a works sing by the main gate").scene, "construction_sign") == 1
+    scene = ruled(campus, registry, "take out the lamp column nearest the fountain").scene
+    assert _kinds(scene, "street_light") == _kinds(campus, "street_light") - 1
+
+
+def test_a_place_said_by_its_compass_side_is_never_dropped(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("stand a cone just west of the crossing")  # which crossing is not known: asked, never anywhere
+    assert not report.ok and session.scene == campus

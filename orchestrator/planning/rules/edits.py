@@ -374,6 +374,10 @@ FINAL_COUNT = re.compile(r"\b(?:there (?:should|must|has to|needs to|is to|are t
 
 # Half of the things named ("half the trees", "half of those cones").
 _HALF = re.compile(r"\bhalf (?:of )?(?:the|those|these|them|all(?: the)?|our|its)\b[^,;]*$")
+# Thinned out: fewer, by about half ("thin the cones out", "thin them out").
+_THINNED = re.compile(r"\bthin(?:s|ned|ning)? (?:\w+ ){0,2}out\b")
+# Fewer by half, said after the things or with none: "reduce to half", "cut them by half", "halve the cones".
+_HALVED = re.compile(r"\b(?:reduce|cut|bring|trim|thin)\w*\s+(?:[a-z]+\s+){0,3}?(?:down\s+)?(?:to|by)\s+(?:a\s+|one\s+)?half\b|\bhalve[ds]?\b")
 
 
 def kept_at(scene: Scene, category: str, place: str | None) -> list[str]:
@@ -505,7 +509,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     count = find_count(r, mention)
     if count and count >= scene.count(name) > 1 and _VAGUE_PART.search(r.low) and not r.has(("all", "every", "each")):
         count = scene.count(name) - 1  # "too many people there, remove some": some of three is never all three
-    if count is None and _HALF.search(r.low[: mention.start]):  # "half the trees have to go"
+    if (count is None and (_HALF.search(r.low[: mention.start]) or _THINNED.search(r.low))) or _HALVED.search(r.low):
+        # "half the trees have to go", "cut them by half", "thin them out": half of them
         count = max(1, len(kept_at(scene, name, r.landmark)) // 2)
     if recent and r.has(("you added", "you just added", "the new", "that", "those")):
         # "remove two of those cones": that many of them, the newest first; "leave one of those": all but one

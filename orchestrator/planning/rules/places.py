@@ -160,7 +160,8 @@ def _anchor_point(r: Reading, scene: Scene, after: list[ph.Mention], exclude: li
 FROM_TO = re.compile(r"\bfrom\s+(?P<a>.+?)\s+(?:to|up to|as far as|until)\s+(?P<b>.+)$")
 # Where a request says a thing should go ("at the bus stp", "around the helipad", "by the eest gate"),
 # and sayings that only look like it ("at the moment", "by the way").
-PLACE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in front of|behind|opposite|close to)"
+PLACE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in front of|behind|opposite|close to"
+                        r"|(?:north|south|east|west)(?:[\s-]?(?:east|west))? of)"
                          r"\s+the\s+(?!(?:moment|same time|end of the day|way|time|least|most|latest|earliest|start|end)\b)"
                          r"([a-z][a-z ]{1,30}?)\s*(?:[,.;!?]|$|\b(?:and|please|pls|plz|with|so|for|to|now)\b)")
 # Away from a sidewalk ("shove it somewhere off the sidewalk", "get it off the pavement"): not onto one.

@@ -316,7 +316,8 @@ def _clauses(prompt: str, places: tuple[str, ...] = (), reasons: bool = False) -
         if said is not None:  # "it's too dark, make it day": how it is, then what to do
             out.append((said[0], False, True))
             text = said[1]
-        if out and _AMOUNT_ONLY.match(text.lower()) and ph.find_categories(out[-1][0]) and not ph.find_categories(text) \
+        if out and (_AMOUNT_ONLY.match(text.lower()) or (_TOO_MANY_SAID.match(out[-1][0].lower()) and _THEM.search(text.lower())))\
+                and ph.find_categories(out[-1][0]) and not ph.find_categories(text) \
                 and not commands(out[-1][0].lower()):  # "Put a bench there. Then add 2.": two more, a request of its own
             out[-1] = (f"{out[-1][0]}, {text}", out[-1][1], False)  # "Too many lamp posts. Lose a few.": a few of them
             continue
@@ -380,8 +381,11 @@ _GOES_ON = re.compile(r"\s*(?:drive|drives|head|heads|go|goes|continue|continues
                       r"|brake|brakes|slow|slows|speed|speeds|accelerate|accelerates|reverse|reverses)\b(?!\s+(?:it|them|the|a|an)\b)")
 # A sentence that only says how many, its thing named in the one before: "Lose a few.", "Take three away."
 _AMOUNT_ONLY = re.compile(r"\s*(?:(?:please|just|so|now|then|ok|okay)\s+)*[a-z]+(?:\s+rid\s+of)?\s+(?:another\s+|all\s+)?"
-                          rf"(?:\d+|a few|a couple|{'|'.join(w for w in ph.NUMBER_WORDS if w not in ('a', 'an'))})"
-                          r"(?:\s+more)?(?:\s+(?:away|off|out|in|down))?(?:\s+(?:please|too))?\s*[.!?]*\s*$")
+                          rf"(?:\d+|a few|a couple|(?:(?:down\s+)?(?:to|by)\s+)?(?:a\s+)?half|{'|'.join(w for w in ph.NUMBER_WORDS if w not in ('a', 'an'))})"
+                          r"(?:\s+more)?(?:\s+(?:away|off|out|in|down))?(?:\s+(?:please|too))?\s*[.!?]*\s*$")  # "... Reduce to half."
+# Too many of a thing, said on its own, then what to do about them: "Too many cones now. Thin them out."
+_TOO_MANY_SAID = re.compile(r"\s*(?:(?:there are|there's|we have|we've got|way|far|just|so|still)\s+)*too many\b")
+_THEM = re.compile(r"\b(?:them|those|these)\b")
 # A sentence whose subject went unsaid, the thing the one before named: "needs to be by the door".
 _SUBJECTLESS = re.compile(r"\s*(?:needs?|has|have|should|must|ought|wants?)\s+(?:to\s+)?(?:be|go|stand|sit|move|face)\b")
 # A new look asked for ("paint ...", "repaint ...", "recolour ..."), and a building's parts.

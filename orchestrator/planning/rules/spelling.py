@@ -801,7 +801,7 @@ _SOUND_ALIKES = (
     (re.compile(r"\bwon(?= (?:eighty|hundred|more|of (?:the|those|them))\b)", re.IGNORECASE), "one"),
     (re.compile(r"(?<=\b(?:stop|road|warn|park|work) )sine\b|(?<=\bparking |warning )sine\b", re.IGNORECASE), "sign"),
     # "a stop sing", "the road sing": a sign, as no road has a song
-    (re.compile(r"\b(stop|road|street|yield|parking|warning) sing\b", re.IGNORECASE), r"\1 sign"),
+    (re.compile(r"\b(stop|road|street|yield|parking|warning|construction|works|roadworks|pedestrian|crossing) sing\b", re.IGNORECASE), r"\1 sign"),
     # "next too the bench", "close too it": "too" before what it is next to is "to"
     (re.compile(r"\b(next|close|closer|up|back|over) too(?= (?:the|a|an|it|them|that|this|those|these|my|our)\b)",
                 re.IGNORECASE), r"\1 to"),
