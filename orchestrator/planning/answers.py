@@ -64,7 +64,9 @@ def unanswered(request: Request, calls: Sequence[ToolCall], scene: Scene) -> lis
         out.append("you asked about something in particular, but the plan lists everything in the scene")
     seconds = [found[0] for found in _SECOND_PART.findall(low)]
     if any(c.tool == "find_assets" for c in calls):  # a list of the things found says how many and where
-        seconds = [word for word in seconds if word not in ("where", "how many")]
+        which_ones = re.search(r"\band which(?: ones?| of them| are they| they are| is it)?\s*[?.!]*\s*$", low) is not None
+        # "how many, and which ones?": the list names them
+        seconds = [word for word in seconds if word not in ("where", "how many") and not (word == "which" and which_ones)]
     parts = 1 + len(seconds)
     distinct = list({str(c): c for c in calls}.values())  # the same lookup twice answers once
     answered = sum(ENVIRONMENT_PARTS if c.tool == "describe_environment" else 1 for c in distinct)

@@ -146,6 +146,7 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"'s (?:pose|position|coordinates|location|whereabouts|heading)(?!\s+(?:should|must|needs?|has|is to|ought|will|would|can|could|to)\b)|"
                    r"(?:write|note|jot|put) (?:it )?down (?:what|which|where|how|whether|if)|"  # "asked me to write down which lane ..."
                    # "I'd like to confirm there are no cars in it", "just want to be sure there isn't one": verifying
+                   r"(?:confirm|verify|double[- ]check|be (?:sure|certain)) (?:which|what|where|how)\b|"  # "kindly confirm which lane ..."
                    r"(?:confirm|verify|double[- ]check|be (?:sure|certain)) (?:that |wh?ether |if )?(?:there (?:is|are|was|were|'s)|"
                    r"there (?:isn'?t|aren'?t)|(?:the|it|they|nothing|none|no|all|every)\b)|"
                    # "the distance between them is to be reported": what is wanted is an answer

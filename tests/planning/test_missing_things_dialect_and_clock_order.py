@@ -9,6 +9,7 @@ from __future__ import annotations
 import itertools
 import math
 
+import pytest
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from misreading import ruled  # this folder is on sys.path (no __init__.py)
@@ -143,3 +144,27 @@ def test_a_place_said_by_its_compass_side_is_never_dropped(campus, registry):
     session = Session(campus, RulePlanner(), registry)
     report = session.submit("stand a cone just west of the crossing")  # which crossing is not known: asked, never anywhere
     assert not report.ok and session.scene == campus
+
+
+def test_a_place_said_as_easting_and_northing(campus, registry):
+    scene = ruled(campus, registry, "set a bollard down at easting 12, northing -8").scene
+    post = next(a for a in scene.assets if a.category == "bollard")
+    assert math.dist((post.pose.x, post.pose.y), (12, -8)) < 1.5
+
+
+def test_a_way_between_two_compass_points_or_as_a_bearing(campus, registry):
+    for said in ("nudge the bin 2 m south-west", "shift the bin 2 m on a bearing of 225"):
+        bin_ = ruled(campus, registry, said).scene.asset("trash_bin_1")
+        start = campus.asset("trash_bin_1")
+        assert bin_.pose.x - start.pose.x == pytest.approx(-1.41, abs=0.05), said
+        assert bin_.pose.y - start.pose.y == pytest.approx(-1.41, abs=0.05), said
+
+
+def test_questions_asked_in_a_working_way(campus, registry):
+    for said, tool in (("how many cars are parked in lot B, and which ones?", "find_assets"),
+                       ("give me the straight-line distance from the fountain to the east gate", "measure_distance"),
+                       ("please confirm which lane the SUV would leave by", "find_lanes")):
+        session = Session(campus, RulePlanner(), registry)
+        report = session.submit(said)
+        assert report.ok and report.plan is not None and [c.tool for c in report.plan.calls][:1] == [tool], said
+        assert session.scene == campus

@@ -1055,10 +1055,10 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     toward = _toward(r, scene, ids, shift, vague=metres is None)
     if toward is not None:  # "4 m toward Main Street": straight at it, from where they stand
         return [ToolCall(tool="move_asset", args={**moved, **toward})]
-    compass = md.compass_direction(r.masked)
+    compass = md.compass_vector(r.masked)
     if compass is not None and shift is not None and not anchored:
-        east, north = md.COMPASS_VECTORS[compass]
-        return [ToolCall(tool="move_asset", args={**moved, "east": east * shift, "north": north * shift})]
+        east, north = compass  # "4 m north-east": both ways at once
+        return [ToolCall(tool="move_asset", args={**moved, "east": round(east * shift, 2), "north": round(north * shift, 2)})]
     drives = found is not None and catalog()[found.category].drives
     if drives and _UP.search(r.low) and not anchored:  # "move our car up a bit": on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward": shift or DEFAULT_STEP_M})]

@@ -53,8 +53,27 @@ def outer_direction(text: str) -> tuple[float, float] | None:
 def compass_direction(text: str) -> str | None:
     """The one compass direction the words say to go ("2 m east"); None for none, or for two
     ("north-east", "east then north"): not one direction."""
+    if _BETWEEN_POINTS.search(text):
+        return None  # "2 m north-east": not east (see compass_vector)
     said = {m.group(1) for m in _COMPASS.finditer(text)}
     return said.pop() if len(said) == 1 else None
+
+
+# A way between two compass points: "north-east", "south west", "northwestwards".
+_BETWEEN_POINTS = re.compile(r"\b(north|south)[\s-]?(east|west)(?:wards?)?\b"
+                             r"(?! ?bound| gate| side of\b| entrance| crosswalk| crossing| of\b| corner| sidewalk| pavement| footpath)")
+
+
+def compass_vector(text: str) -> tuple[float, float] | None:
+    """The unit vector of the way the words say to go, a point between two included ("4 m
+    north-east": both ways at once); None for none or for several."""
+    between = {m.groups() for m in _BETWEEN_POINTS.finditer(text)}
+    if len(between) == 1:
+        first, second = between.pop()
+        east, north = (a + b for a, b in zip(COMPASS_VECTORS[first], COMPASS_VECTORS[second], strict=True))
+        return (round(east / 2**0.5, 4), round(north / 2**0.5, 4))
+    word = compass_direction(text)
+    return COMPASS_VECTORS[word] if word is not None else None
 
 
 # A thing picked by its size among those of a kind or group ("the biggest vehicle", "which tree is
@@ -219,5 +238,5 @@ SMALL_MOVE = (*SMALL, "a touch", "a tad", "a smidge", "a fraction", "a few inche
               "budge", "scoot")
 
 
-__all__ = ["COMPASS_VECTORS", "MATERIAL_WORDS", "SIZE_SUPERLATIVE", "SIZE_WORDS", "SMALL", "SMALL_MOVE", "catalog_tags", "compass_direction", "facing_direction", "groups_said",
+__all__ = ["COMPASS_VECTORS", "MATERIAL_WORDS", "SIZE_SUPERLATIVE", "SIZE_WORDS", "SMALL", "SMALL_MOVE", "catalog_tags", "compass_direction", "compass_vector", "facing_direction", "groups_said",
            "kind_of", "layout_said", "material_said", "most_said", "outer_direction", "partitive_count", "partitive_word", "rows_said"]

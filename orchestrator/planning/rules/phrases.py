@@ -194,6 +194,8 @@ def find_coordinates(text: str) -> tuple[float, float] | None:
     m = re.search(r"(?:\bat\b|\bto\b|\()\s*" + _COORDS.pattern, low)
     if m is None:
         m = re.search(rf"\bx\s*[=:]?\s*{_COORD}\s*(?:m\b)?\s*(?:,|and)?\s*\by\s*[=:]?\s*{_COORD}", low)  # "x 40 y -20", "x = 40 m, y = 2"
+    if m is None:  # "easting 30, northing -20", as a map gives them (east is x, north is y)
+        m = re.search(rf"\beasting\s*[=:]?\s*{_COORD}\s*(?:m\b)?\s*(?:,|and)?\s*\bnorth?ing\s*[=:]?\s*{_COORD}", low)
     if m is None:
         return None
     x, y = (nb.Number(nb.parse(m.group(i)), m.group(i), m.start(i), m.end(i)) for i in (1, 2))

@@ -1031,6 +1031,16 @@ _PERIOD_FIRST = re.compile(rf"\b(morning|afternoon|evening|night)\s+({_HOURS_SAI
                            re.IGNORECASE)
 
 
+# A way said as a compass bearing in degrees ("on a bearing of 270", "bearing 045"), a multiple of 45.
+_BEARING = re.compile(r"\b(?:on |along |at )?(?:a )?b(?:ea|ae)ring (?:of )?(\d{1,3})(?:\s*(?:degrees?|deg|°))?\b", re.IGNORECASE)
+_POINTS = ("north", "north-east", "east", "south-east", "south", "south-west", "west", "north-west")
+
+
+def _compass_of_bearing(said: re.Match[str]) -> str:
+    degrees = int(said.group(1))
+    return _POINTS[degrees // 45 % 8] if degrees % 45 == 0 and degrees <= 360 else said.group(0)
+
+
 def _period_after(said: re.Match[str]) -> str:
     period, hour = said.group(1).lower(), said.group(2)
     return f"{hour} o'clock {'at night' if period == 'night' else 'in the ' + period}"
@@ -1134,6 +1144,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _THING_PRONOUN.sub("it", text)
     text = _them_as_those(text)  # "one of them lamp posts": those
     text = _PERIOD_FIRST.sub(_period_after, text)  # "night 9 o'clock": 9 o'clock at night
+    text = _BEARING.sub(_compass_of_bearing, text)  # "3 m on a bearing of 090": 3 m east
+    text = re.sub(r"\bstraight[- ]line (distance|gap|separation)\b", r"\1", text, flags=re.IGNORECASE)  # the distance measured is straight
     text = _DONE_BEFORE.sub(lambda m: f"{m.group(1)} {_PAST.get(m.group(2).lower(), m.group(2) + 'ed')}", text)  # "the bike I add before"
     text = _OFF_SLIP.sub(r"\1 off", text)
     text = _GONE_STATE.sub(r"\1 become ", text)
