@@ -168,3 +168,15 @@ def test_questions_asked_in_a_working_way(campus, registry):
         report = session.submit(said)
         assert report.ok and report.plan is not None and [c.tool for c in report.plan.calls][:1] == [tool], said
         assert session.scene == campus
+
+
+def test_along_a_things_route_is_in_front_of_it(campus, registry):
+    scene = ruled(campus, registry, "leave a cone somewhere along the ego's route").scene
+    cone = next(a for a in scene.assets if a.category == "traffic_cone")
+    ego = campus.asset("ego")
+    assert cone.pose.x > ego.pose.x and abs(cone.pose.y - ego.pose.y) < 2  # ahead of it, in its lane
+
+
+def test_somewhere_to_throw_rubbish_is_a_bin(campus, registry):
+    scene = ruled(campus, registry, "visitors at the fountain need somewhere to chuck their wrappers").scene
+    assert _kinds(scene, "trash_bin") == 2

@@ -494,8 +494,10 @@ _COMPASS_CAR_PARK = re.compile(r"\b(north|south|east|west)(?:ern)? car ?park\b",
 _UP_AHEAD = re.compile(r"\b(?:up|just|further|a bit|somewhere|(road|lane|street|way|junction|crossing|crossroads|intersection)) ahead\b"
                        r"(?!\s+of\b)", re.IGNORECASE)
 # In a thing's path, or its way: in front of it ("in the insured vehicle's path", "in the path of the bus", "in our way").
-_IN_ITS_PATH = re.compile(r"\bin (?:the )?(?:path|way) of ((?:the |our |my )?[\w ]+?)(?=\s*(?:[,.;!?]|$|\band\b|\bso\b))"
-                          r"|\bin ((?:the |our |my )?[\w]+(?: [\w]+)?)'s (?:path|way)\b|\bin (our|my|its|their) (?:path|way)\b", re.IGNORECASE)
+_IN_ITS_PATH = re.compile(r"\b(?:in|on|along|across) (?:the )?(?:path|way|route) of ((?:the |our |my )?[\w ]+?)(?=\s*(?:[,.;!?]|$|\band\b|\bso\b))"
+                          r"|\b(?:in|on|along|across) ((?:the |our |my )?[\w]+(?: [\w]+)?)'s (?:path|way|route)\b"
+                          # ("along the ego's route"; never "send it on its way")
+                          r"|\b(?:in|across) (our|my|its|their) (?:path|way|route)\b|\b(?:on|along) (our|my|its|their) (?:path|route)\b", re.IGNORECASE)
 _PATH_OWNERS = {"our": "us", "my": "us", "its": "it", "their": "them"}
 # "not so close to the kerb" asks for it further from the kerb.
 _NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
@@ -1179,7 +1181,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _places_by_kind(text)
     text = _without_place_left(text, scene)
     text = _UP_AHEAD.sub(lambda m: f"{m.group(1) or ''} ahead of the ego".lstrip(), text)
-    text = _IN_ITS_PATH.sub(lambda m: "in front of " + (m.group(1) or m.group(2) or _PATH_OWNERS[m.group(3).lower()]), text)
+    text = _IN_ITS_PATH.sub(lambda m: "in front of " + (m.group(1) or m.group(2) or _PATH_OWNERS[(m.group(3) or m.group(4)).lower()]), text)
     text = _what_instead(text)
     text = _US_AS_OBJECT.sub(r"\1 the ego", text)  # "have us turn at the crossroads": the car under test
     text = _STOP_THERE.sub(r"\1make \2 stop ", text)
