@@ -180,3 +180,16 @@ def test_along_a_things_route_is_in_front_of_it(campus, registry):
 def test_somewhere_to_throw_rubbish_is_a_bin(campus, registry):
     scene = ruled(campus, registry, "visitors at the fountain need somewhere to chuck their wrappers").scene
     assert _kinds(scene, "trash_bin") == 2
+
+
+def test_a_thing_moved_across_the_road_goes_to_its_far_side(campus, registry):
+    hydrant = ruled(campus, registry, "carry the hydrant across the street").scene.asset("fire_hydrant_1")
+    start = campus.asset("fire_hydrant_1")
+    assert hydrant is not None and hydrant.pose.y * start.pose.y < 0 and abs(hydrant.pose.x - start.pose.x) < 2
+
+
+def test_a_vehicle_sent_on_its_way_drives_off_or_goes_for_good(campus, registry):
+    suv = ruled(campus, registry, "send the SUV on its way").scene.asset("suv_1")
+    assert suv is not None and suv.behaviour.kind == "drive_lane"
+    scene = ruled(campus, registry, "send the SUV off, it won't be back").scene
+    assert scene.asset("suv_1") is None and _kinds(scene, "suv") == 0

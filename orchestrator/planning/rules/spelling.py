@@ -1033,6 +1033,19 @@ _PERIOD_FIRST = re.compile(rf"\b(morning|afternoon|evening|night)\s+({_HOURS_SAI
                            re.IGNORECASE)
 
 
+# A thing moved across a road: to the road's other side ("move the bin across the street"; not "across the road from ...").
+_MOVED_ACROSS = re.compile(r"\b((?:move|put|shift|take|carry|bring|get|stick|place)\s+(?:the\s+\w+(?:\s+\w+)?|it|them|that|this))\s+"
+                           r"across\s+the\s+(road|street)\b(?!\s+(?:from|to)\b)", re.IGNORECASE)
+
+
+# A vehicle sent away: "send the truck on its way", "send the SUV off" (it drives off; it is not added).
+_SENT_OFF = re.compile(r"\bsend\s+(the\s+\w+(?:\s+\w+)?|it|them)\s+(?:off|away|on\s+(?:its|their|his|her)\s+way)\b(?!\s+(?:to|towards?|into|at)\b)",
+                       re.IGNORECASE)
+
+
+_FOR_GOOD = re.compile(r"\b(?:not|never) (?:coming|going to come) back\b|\bfor good\b|\bnever to return\b|\bwon'?t be back\b", re.IGNORECASE)
+
+
 # A way said as a compass bearing in degrees ("on a bearing of 270", "bearing 045"), a multiple of 45.
 _BEARING = re.compile(r"\b(?:on |along |at )?(?:a )?b(?:ea|ae)ring (?:of )?(\d{1,3})(?:\s*(?:degrees?|deg|°))?\b", re.IGNORECASE)
 _POINTS = ("north", "north-east", "east", "south-east", "south", "south-west", "west", "north-west")
@@ -1148,6 +1161,9 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _PERIOD_FIRST.sub(_period_after, text)  # "night 9 o'clock": 9 o'clock at night
     text = _BEARING.sub(_compass_of_bearing, text)  # "3 m on a bearing of 090": 3 m east
     text = re.sub(r"\bstraight[- ]line (distance|gap|separation)\b", r"\1", text, flags=re.IGNORECASE)  # the distance measured is straight
+    text = _MOVED_ACROSS.sub(r"\1 to the other side of the \2", text)  # "move the bin across the street": to its far side
+    # "send the truck on its way": it drives off; "..., it's not coming back": it goes for good
+    text = _SENT_OFF.sub(r"remove \1" if _FOR_GOOD.search(text) else r"make \1 drive away", text)
     text = _DONE_BEFORE.sub(lambda m: f"{m.group(1)} {_PAST.get(m.group(2).lower(), m.group(2) + 'ed')}", text)  # "the bike I add before"
     text = _OFF_SLIP.sub(r"\1 off", text)
     text = _GONE_STATE.sub(r"\1 become ", text)
