@@ -178,7 +178,7 @@ def test_along_a_things_route_is_in_front_of_it(campus, registry):
 
 
 def test_somewhere_to_throw_rubbish_is_a_bin(campus, registry):
-    scene = ruled(campus, registry, "visitors at the fountain need somewhere to chuck their wrappers").scene
+    scene = ruled(campus, registry, "visitors at the fountain need somewhere to throw their wrappers").scene
     assert _kinds(scene, "trash_bin") == 2
 
 

@@ -217,7 +217,7 @@ _LEVEL = r"(?:the )?(?:exposure|brightness)"
 _UP = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) up|(?:raise|increase|turn up|bring up|push up) {_LEVEL}"
 _DOWN = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) down|(?:lower|reduce|turn down|bring down|pull down) {_LEVEL}"
 _EXPOSURE_TO = re.compile(r"\b(?:exposure|brightness)\s+(?:to|at|of|=|:)?\s*(\d+(?:\.\d+)?)(?!\s*(?:%|percent|m\b))")
-BRIGHTER = re.compile(rf"\b(brighter|lighter|more exposure|too dark|overexpose|brighten|{_UP})\b")
+_BRIGHTER = re.compile(rf"\b(brighter|lighter|more exposure|too dark|overexpose|brighten|{_UP})\b")
 _DIMMER = re.compile(rf"\b({_DOWN}|washed out|dimmer|less bright|(?:too|so|very|far too|way too) (?:bright|glaring|dazzling)|less exposure"
                      r"|underexpose|(?:tone|turn) down the (?:brightness|exposure|glare)|dim (?:it|the scene|things) down)\b")
 
@@ -246,7 +246,7 @@ def brighter(r: Reading, now: Environment) -> ToolCall | None:
     said = _EXPOSURE_TO.search(r.masked)
     if said is not None:  # "drop the camera exposure to 0.5": that value, within what the renderer takes
         return ToolCall(tool="set_lighting", args={"exposure": min(MAX_EXPOSURE, max(MIN_EXPOSURE, float(said.group(1))))})
-    if BRIGHTER.search(r.masked) is not None:
+    if _BRIGHTER.search(r.masked) is not None:
         exposure = min(MAX_EXPOSURE, now.lighting.exposure * BRIGHTER_FACTOR)
     elif _DIMMER.search(r.masked) is not None:
         exposure = max(MIN_EXPOSURE, now.lighting.exposure / BRIGHTER_FACTOR)
@@ -325,4 +325,4 @@ def environment(r: Reading, now: Environment | None = None) -> list[ToolCall]:
     return calls
 
 
-__all__ = ["BRIGHTER", "LIGHTS_DOWN", "TIME_NOT_SET", "brighter", "environment", "lights", "shifted_time", "stronger", "time_of_day", "weather"]
+__all__ = ["LIGHTS_DOWN", "TIME_NOT_SET", "brighter", "environment", "lights", "shifted_time", "stronger", "time_of_day", "weather"]

@@ -167,8 +167,9 @@ PLACE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in
 # Away from a sidewalk ("shove it somewhere off the sidewalk", "get it off the pavement"): not onto one.
 _OFF_SIDEWALK = re.compile(r"\b(?:off|away from|clear of|not on) (?:of )?(?:the |that |this )?(?:sidewalk|pavement|footpath|kerb|curb)\b")
 # A relation to what an earlier clause of the prompt adds: "a rover at the gate and a sign next to it".
-BY_IT = re.compile(r"\b(?:next to|beside|by|near|behind|in front of|ahead of|alongside|around|opposite|(?:left|right) of"
-                   r"|to go with|to go along with|to match|to pair with|to accompany)\s+(?:it|them|him|her)\b")  # "a bin to go with it": beside it
+_GOES_WITH = re.compile(r"\bto (?:go (?:along )?with|match|pair with|accompany)\s+(?:it|them|him|her)\b")
+BY_IT = re.compile(rf"\b(?:next to|beside|by|near|behind|in front of|ahead of|alongside|around|opposite|(?:left|right) of)\s+(?:it|them|him|her)\b"
+                   rf"|{_GOES_WITH.pattern}")  # "a bin to go with it": beside it
 # "There" after a turn that put things somewhere: beside the one of them within this of its focus.
 THERE_BESIDE_M = 6.0
 
@@ -595,7 +596,8 @@ def location(
         if notes.coming or named:
             on_walk = r.has(("sidewalk", "pavement", "footpath")) and not _OFF_SIDEWALK.search(r.low)  # "on the sidewalk next to it"
             said = relation_of(r.low)
-            by_it: dict[str, Any] = {"relation": "on_sidewalk" if on_walk else said if said != "at" else "next_to",  # "to go with it"
+            said = "next_to" if said == "at" and _GOES_WITH.search(r.low) else said  # "a bin to go with it": beside it
+            by_it: dict[str, Any] = {"relation": "on_sidewalk" if on_walk else said,
                                      "target": (notes.coming or named)[-1 if notes.coming else 0]}
             metres = ph.find_distance(r.text)
             if metres is not None and by_it["relation"] in ("in_front_of", "behind", "left_of", "right_of", "next_to"):

@@ -63,13 +63,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     remove,
     walk_said,
 )
-from drivetwin.orchestrator.planning.rules.environment import (
-    BRIGHTER,
-    LAMPS_SWITCHED_AS_SAID,
-    LIGHTS_DOWN,
-    environment,
-    lights,
-)
+from drivetwin.orchestrator.planning.rules.environment import LAMPS_SWITCHED_AS_SAID, LIGHTS_DOWN, environment, lights
 from drivetwin.orchestrator.planning.rules.inflection import inflected
 from drivetwin.orchestrator.planning.rules.places import (
     EACH_PLACE,
@@ -688,32 +682,6 @@ class RulePlanner:
         return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
                     question=Question(text=f"What should I add{where or ' there'}?", readings=readings))
 
-    def _how_lit(self, prompt: str, context: PlanContext) -> Plan | None:
-        """A question where a request wants more light at one place and names no lamp or setting
-        ("could do with more light round the fountain", "it's too dark by the library"): a street
-        light there, or the whole picture brighter? None for any other request."""
-        low = ph.normalise(prompt)
-        place = find_place(context.scene, low)
-        weather = (w for words in lx.WEATHER_WORDS.values() for w in words)
-        if place is None or not (BRIGHTER.search(low) or re.search(r"\bmore light\b", low)) \
-                or ph.find_categories(low[: place[1]] + low[place[2] :]) \
-                or asks(low.strip()) or ph.has_any(low, (*weather, "exposure", "brightness", "lamp", "lamps", "lights on")):
-            return None
-        readings = []
-        for offer in (f"add a street light next to the {place[0]}", "make the picture brighter"):
-            try:
-                reading = self._plan(offer, context, which_place=False)
-            except PlanningError:
-                continue
-            if reading.calls and reading.question is None:
-                readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
-        if len(readings) < 2:
-            return None
-        step = TraceStep(level="rules", input=prompt, output=f"more light asked for at the {place[0]}; asking how")
-        return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
-                    question=Question(text=f"More light at the {place[0]}: a street light there, or the whole picture brighter?",
-                                      readings=readings))
-
     def _which_kind(self, prompt: str, context: PlanContext) -> Plan | None:
         """A question where a new thing is named only by a word several kinds end in ("add a sign
         next to the bench": a stop, construction, pedestrian or parking sign?), offering the
@@ -771,8 +739,6 @@ class RulePlanner:
             return doubt  # "the big vehicle that carries lots of passengers": a bus or a truck?
         if which_place and (offer := self._what_fills(prompt, context)) is not None:
             return offer  # "the junction looks a bit bare": people, trees or benches there?
-        if which_place and (offer := self._how_lit(prompt, context)) is not None:
-            return offer  # "more light round the fountain": a lamp there, or the whole picture brighter?
         if which_place and (offer := self._which_kind(prompt, context)) is not None:
             return offer  # "add a sign next to the bench": a stop sign, a construction sign, ...?
         started = time.perf_counter()

@@ -450,7 +450,7 @@ def used_as_verb(low: str, start: int, end: int) -> bool:
 
 
 # Concept words that name one person or thing, not a crowd or a mass ("somewhere to sit" is one bench).
-_ONE_THING = ("someone", "somebody", "guy", "somewhere to sit", "to sit", "sit down", "seat", "chair", "somewhere to chuck", "somewhere to throw", "shrub",
+_ONE_THING = ("someone", "somebody", "guy", "somewhere to sit", "to sit", "sit down", "seat", "chair", "somewhere to throw", "shrub",
               "bush", "palm", "warning", "warning sign")
 
 # A wish said of someone with the thing wished for after it ("the students could use somewhere to
