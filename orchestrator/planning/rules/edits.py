@@ -376,8 +376,10 @@ FINAL_COUNT = re.compile(r"\b(?:there (?:should|must|has to|needs to|is to|are t
 _HALF = re.compile(r"\bhalf (?:of )?(?:the|those|these|them|all(?: the)?|our|its)\b[^,;]*$")
 # Thinned out: fewer, by about half ("thin the cones out", "thin them out").
 _THINNED = re.compile(r"\bthin(?:s|ned|ning)? (?:\w+ ){0,2}out\b")
-# Fewer by half, said after the things or with none: "reduce to half", "cut them by half", "halve the cones".
-_HALVED = re.compile(r"\b(?:reduce|cut|bring|trim|thin)\w*\s+(?:[a-z]+\s+){0,3}?(?:down\s+)?(?:to|by)\s+(?:a\s+|one\s+)?half\b|\bhalve[ds]?\b")
+# Fewer by half with no things named after the verb ("reduce to half", "cut them down to half", "halve them"):
+# spelling's _HALVE and _IN_HALF rewrite the forms that name them ("halve the cones") as "remove half of".
+_HALVED = re.compile(r"\b(?:reduce|cut|bring|trim)\w*\s+(?:(?:it|them|those|these|that)\s+)?(?:down\s+)?(?:to|by)\s+(?:a\s+|one\s+)?half\b"
+                     r"|\bhalve[ds]?\s+(?:it|them|those|these|that)\b")
 
 
 def kept_at(scene: Scene, category: str, place: str | None) -> list[str]:

@@ -668,19 +668,24 @@ class RulePlanner:
             return None  # "main street feels deserted, make it livelier": the request says what to do
         place = find_place(context.scene, low)
         where = f" near the {place[0]}" if place is not None else ""
-        readings = []
-        for offer in _FILLERS_OFFERED:
-            try:
-                reading = self._plan(f"add {offer}{where}", context, which_place=False)
-            except PlanningError:
-                continue
-            if reading.calls and reading.question is None:
-                readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
+        readings = self._offered([f"add {offer}{where}" for offer in _FILLERS_OFFERED], context)
         if len(readings) < 2:
             return None
         step = TraceStep(level="rules", input=prompt, output="a place said to be bare, nothing named for it; asking")
         return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
                     question=Question(text=f"What should I add{where or ' there'}?", readings=readings))
+
+    def _offered(self, texts: list[str], context: PlanContext) -> list[Choice]:
+        """The readings of `texts` the rules plan without a question of their own, to offer in one."""
+        readings = []
+        for text in texts:
+            try:
+                reading = self._plan(text, context, which_place=False)
+            except PlanningError:
+                continue
+            if reading.calls and reading.question is None:
+                readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
+        return readings
 
     def _which_kind(self, prompt: str, context: PlanContext) -> Plan | None:
         """A question where a new thing is named only by a word several kinds end in ("add a sign
@@ -694,15 +699,8 @@ class RulePlanner:
         kinds = heads[said.group("head").lower()]
         if any(re.search(rf"\b{re.escape(w)}\b", prompt, re.IGNORECASE) for k in kinds for w in _own_words(k, said.group("head"))):
             return None  # "a sign for the roadworks", "a sign telling drivers to stop": the kind is said
-        readings = []
-        for kind in kinds[:MAX_READINGS]:
-            name = kind.replace("_", " ") + (said.group("plural") or "")
-            try:
-                reading = self._plan(prompt[: said.start("head")] + name + prompt[said.end() :], context, which_place=False)
-            except PlanningError:
-                continue
-            if reading.calls and reading.question is None:
-                readings.append(Choice(text=describe(reading.calls), calls=reading.calls))
+        names = [kind.replace("_", " ") + (said.group("plural") or "") for kind in kinds[:MAX_READINGS]]
+        readings = self._offered([prompt[: said.start("head")] + name + prompt[said.end() :] for name in names], context)
         if len(readings) < 2:
             return None
         head = said.group("head").lower()
