@@ -494,10 +494,10 @@ _COMPASS_CAR_PARK = re.compile(r"\b(north|south|east|west)(?:ern)? car ?park\b",
 _UP_AHEAD = re.compile(r"\b(?:up|just|further|a bit|somewhere|(road|lane|street|way|junction|crossing|crossroads|intersection)) ahead\b"
                        r"(?!\s+of\b)", re.IGNORECASE)
 # In a thing's path, or its way: in front of it ("in the insured vehicle's path", "in the path of the bus", "in our way").
-_IN_ITS_PATH = re.compile(r"\b(?:in|on|along|across) (?:the )?(?:path|way|route) of ((?:the |our |my )?[\w ]+?)(?=\s*(?:[,.;!?]|$|\band\b|\bso\b))"
-                          r"|\b(?:in|on|along|across) ((?:the |our |my )?[\w]+(?: [\w]+)?)'s (?:path|way|route)\b"
-                          # ("along the ego's route"; never "send it on its way")
-                          r"|\b(?:in|across) (our|my|its|their) (?:path|way|route)\b|\b(?:on|along) (our|my|its|their) (?:path|route)\b", re.IGNORECASE)
+_IN_ITS_PATH = re.compile(r"\b(?:in|on|along) (?:the )?(?:path|way|route) of ((?:the |our |my )?[\w ]+?)(?=\s*(?:[,.;!?]|$|\band\b|\bso\b))"
+                          r"|\b(?:in|on|along) ((?:the |our |my )?[\w]+(?: [\w]+)?)'s (?:path|way|route)\b"
+                          # ("along the ego's route"; never "send it on its way", nor "cut across its path", which crosses it)
+                          r"|\bin (our|my|its|their) (?:path|way|route)\b|\b(?:on|along) (our|my|its|their) (?:path|route)\b", re.IGNORECASE)
 _PATH_OWNERS = {"our": "us", "my": "us", "its": "it", "their": "them"}
 # "not so close to the kerb" asks for it further from the kerb.
 _NOT_SO_CLOSE = re.compile(r"\bnot (?:so|as|that|too|quite so) (?:close|near)(?: to)?\b", re.IGNORECASE)
