@@ -284,6 +284,8 @@ def stronger(r: Reading, now: Environment) -> ToolCall | None:
     if bool(more) == bool(less):
         return None
     new = round(level / 2, 2) if less else round(min(1.0, level + STRONGER_STEP), 2)
+    if less and _too_much(r.low, kind):
+        new = min(new, LIGHT_INTENSITY)  # "that snow's far too much": light, not half as heavy
     return ToolCall(tool="set_weather", args={"kind": kind, "intensity": new}) if abs(new - level) >= 0.05 else None
 
 
