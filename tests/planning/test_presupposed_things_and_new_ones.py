@@ -151,3 +151,9 @@ def test_whether_something_can_be_seen_is_a_question(campus, registry):
         session = Session(campus, RulePlanner(), registry)
         report = session.submit(said)
         assert report.ok and report.answer is not None and session.scene == campus, said  # it had added three
+
+
+def test_a_statement_of_where_things_are_moves_none_of_them(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("the trees round the fountain are in my way")
+    assert not report.ok and session.scene == campus  # every tree, the far ones too, had been moved in front of it

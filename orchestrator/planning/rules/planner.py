@@ -775,7 +775,7 @@ class RulePlanner:
         if from_statement:
             # "the bench by the stop is in the way", and nothing else: what it says is a guess at the wish;
             # never to put a thing where the statement says it already is ("the bin is in the middle of the pavement")
-            calls = [c for c in described if not _said_where_it_is(c, scene)]
+            calls = [] if any(_said_where_it_is(c, scene) for c in described) else described  # none of its placements is a wish
             notes.guess(STATEMENT_READ)
         calls = _alike(calls, text.lower(), scene, context.memory)  # "another exactly like it"
         calls = _not_removed_twice(calls, scene)  # "clear the cars out of lot B: both sedans and the SUV"
@@ -930,7 +930,7 @@ def _said_where_it_is(call: ToolCall, scene: Scene) -> bool:
         return False
     if where.get("relation") == "on_sidewalk" and "target" not in where:
         return surface_at(scene, thing.pose.x, thing.pose.y) == "sidewalk"
-    place = scene.landmark(str(where.get("target"))) if where.get("relation") in ("at", "next_to", "on_sidewalk") else None
+    place = scene.landmark(str(where.get("target"))) if where.get("relation") != "absolute" else None
     return place is not None and (math.dist((thing.pose.x, thing.pose.y), place.position) <= DESCRIBED_NEAR_M
                                   or (place.polygon is not None and point_in_polygon(thing.pose.x, thing.pose.y, place.polygon)))
 
