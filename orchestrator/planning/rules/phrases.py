@@ -192,10 +192,8 @@ def find_coordinates(text: str) -> tuple[float, float] | None:
     """Coordinates written as (x, y), 'x=3 y=4' or 'at 3, 4' — after 'at' or in brackets."""
     low = text.lower()
     m = re.search(r"(?:\bat\b|\bto\b|\()\s*" + _COORDS.pattern, low)
-    if m is None:
-        m = re.search(rf"\bx\s*[=:]?\s*{_COORD}\s*(?:m\b)?\s*(?:,|and)?\s*\by\s*[=:]?\s*{_COORD}", low)  # "x 40 y -20", "x = 40 m, y = 2"
-    if m is None:  # "easting 30, northing -20", as a map gives them (east is x, north is y)
-        m = re.search(rf"\beasting\s*[=:]?\s*{_COORD}\s*(?:m\b)?\s*(?:,|and)?\s*\bnorth?ing\s*[=:]?\s*{_COORD}", low)
+    if m is None:  # "x 40 y -20", "x = 40 m, y = 2", "easting 30, northing -20" (as a map gives them: east is x)
+        m = re.search(rf"\b(?:x|easting)\s*[=:]?\s*{_COORD}\s*(?:m\b)?\s*(?:,|and)?\s*\b(?:y|north?ing)\s*[=:]?\s*{_COORD}", low)
     if m is None:
         return None
     x, y = (nb.Number(nb.parse(m.group(i)), m.group(i), m.start(i), m.end(i)) for i in (1, 2))
