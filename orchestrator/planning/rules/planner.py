@@ -546,12 +546,12 @@ class RulePlanner:
         skipped: list[str] = []
         described: list[ToolCall] = []
         previous: list[ToolCall] = []  # the calls of the last clause that asked for something
-        kind: str | None = _kind_said_last(context.memory)  # what "a new one" is one of
+        kind: str | None = None  # what "a new one" is one of: the clause before's, else (read only when asked) the last turn's
         for clause, asked, intro in clauses:
             clause, name = named_as(clause)  # "add a pedestrian at the gate, that's our steward"
             reading = read(clause, scene)
             new_one = _A_NEW_ONE.search(clause)
-            if new_one is not None and kind is not None:
+            if new_one is not None and (kind := kind or _kind_said_last(context.memory)) is not None:
                 # "remove the bin and put a new one at the bus stop": a new bin
                 clause = f"{clause[: new_one.end(1)]}{kind.replace('_', ' ')}{clause[new_one.end() :]}"
                 reading = read(clause, scene)
