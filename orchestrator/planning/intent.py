@@ -233,7 +233,9 @@ _REASON = re.compile(
     r"|,?\s+(?:so that|in order that)\s+[^.;!?]*"
     # "... so nobody drives into it", ", to keep cars off the forecourt": who is kept from what, why
     r"|,?\s+so\s+(?:nobody|no one|nothing|no cars?|no traffic|everyone|everybody|drivers|cars|traffic)\s+[a-z']+\b[^.;!?]*"
-    r"|,?\s+(?:to|so as to|in order to)\s+(?:keep|stop|prevent|protect|warn|calm|avoid|ensure)\s+[^.;!?]*",
+    r"|,?\s+(?:to|so as to|in order to)\s+(?:keep|stop|prevent|protect|warn|calm|avoid|ensure)\s+[^.;!?]*"
+    # "... on the road to slow people down": who is slowed is no thing asked for
+    r"|,?\s+(?:to|so as to|in order to)\s+slow\s+(?:down\s+)?(?:the\s+)?(?:people|drivers|cars|traffic|vehicles|everyone|everybody)\b[^.;!?]*",
     re.IGNORECASE,
 )
 

@@ -637,6 +637,11 @@ def location(
         return None
     found: dict[str, Any] = {"relation": relation_of(r.low), "target": target}
     metres = ph.find_distance(r.text)
+    hand = _SIDE_OF_WAY.search(r.low)
+    if hand is not None and found["relation"] in ("in_front_of", "behind") and scene.asset(target) is not None:
+        # "a bike 10 m ahead of the ego on the left side": counted along its way, at that edge
+        along = metres if metres is not None else SIDE_AHEAD_M
+        return {**found, "along_m": along if found["relation"] == "in_front_of" else -along, "side": hand.group(1)}
     if metres is not None and found["relation"] != "at":
         found["distance"] = metres
     return found
@@ -648,6 +653,13 @@ _LEAVING = re.compile(r"\b(?:out of|anywhere (?:but|except|other than|apart from
 
 # A hand said of a sidewalk or side: "the right-hand pavement", "on the left footpath".
 _HAND = re.compile(r"\b(left|right)(?:[\s-]hand)?(?:\s+(?:side\s+)?(?:sidewalk|side walk|pavement|footpath|footway|walkway|kerb|curb))")
+
+
+# A hand said of the way itself: "on the left side", "on the right-hand side of the road" (not "on the left of the bin").
+_SIDE_OF_WAY = re.compile(r"\bon (?:the |its |their )?(left|right)(?:[\s-]hand)?(?: side)?"
+                          r"(?: of (?:the |its |their )?(?:road|street|lane|carriageway)\b|(?! of\b))")
+# How far ahead a thing said only by its side goes ("a bike in front of the ego on the left").
+SIDE_AHEAD_M = 10.0
 
 
 # How far into a driveway from the road a closure stands, and "east of the crossroads" from its centre.

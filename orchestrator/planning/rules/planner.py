@@ -1218,7 +1218,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     taken_away = bool(REMOVE_WORDS.search(r.low.strip())) and not how_it_is
     fewer = bool(FEWER_WORDS.search(r.low)) and not how_it_is
     filled = _FILL_WITH.search(r.low) is not None  # "fill the empty half of lot B with cars" adds
-    if (r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or fewer or _NEGATED_WISH.search(r.low) or taken_away) and not filled:
+    # "tidy the benches up into a row": a layout to tidy them into, not a tidying away
+    tidied = re.search(r"\b(?:tidy|tidied|clean|cleaned|neaten)\b", r.low) is not None and md.layout_said(r.masked) is not None
+    if (r.has(lx.REMOVE_WORDS) or r.has(lx.GONE_WORDS) or fewer or _NEGATED_WISH.search(r.low) or taken_away) and not (filled or tidied):
         removed = remove(r, scene, memory, notes)
         if removed is not None:
             return removed
@@ -1710,6 +1712,11 @@ def _laid_out_there(r: Reading, mention: ph.Mention, scene: Scene, memory: Memor
     args = {k: v for k, v in row.args.items() if k != "count"}
     laid = [i for i in there if (a := scene.asset(i)) is not None and a.category in catalog()]
     args["categories"] = list(dict.fromkeys(a.category for i in laid if (a := scene.asset(i)) is not None))[:4]
+    if args.get("location") == {"relation": "scene_centre"}:  # "line up the trees": where they stand, not at the crossroads
+        spots = [(a.pose.x, a.pose.y) for i in laid if (a := scene.asset(i)) is not None]
+        cx, cy = sum(x for x, _ in spots) / len(spots), sum(y for _, y in spots) / len(spots)
+        x, y = min(spots, key=lambda p: math.hypot(p[0] - cx, p[1] - cy))
+        args["location"] = {"relation": "absolute", "x": round(x, 1), "y": round(y, 1)}
     return [ToolCall(tool="arrange_assets", args={**args, "assets": laid})]
 
 

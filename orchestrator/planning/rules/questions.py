@@ -48,7 +48,7 @@ _ON_LANE = re.compile(
     r"\b(?:block\w*|obstruct\w*|occupy\w*|in (?:the|its|our|their|my|his|her) way"
     r"|(?:on|in|across|along) (?:the |a |any |our )?(?:[a-z]+ )?(?:lanes?|roads?|streets?|carriageway))\b"
     # "is the road clear ahead of the ego", "is our lane free": whether anything stands on it
-    r"|\b(?:lanes?|roads?|streets?|way) (?:\w+ )?(?:clear|free|empty|open|passable)\b"
+    r"|\b(?:lanes?|roads?|streets?|way) (?:\w+ ){0,4}?(?:clear|free|empty|open|passable)\b"  # "the road ahead (of the ego) clear"
 )
 # How far from a thing the road is looked along when a question names it ("is the road clear ahead of the ego").
 ROAD_AHEAD_M = 40.0

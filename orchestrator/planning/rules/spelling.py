@@ -930,10 +930,13 @@ def _colour_slip(word: str, before: str, after: str, vocab: frozenset[str]) -> s
     """The colour one slip from `word` where a colour is asked for, even when the slip is an English
     word: "make it blu instead", "paint the bench gren" (a word of the vocabulary stays)."""
     low = word.lower()
-    if len(low) < 3 or is_known(low, vocab) or not re.search(r"\b(?:paint|colou?r|make|turn|it|them|be|to)\s+(?:[a-z]+\s+){0,2}$", before.lower()) \
+    # an English word only after a painting verb ("paint the suv read"), a letter dropped or not
+    painted = re.search(r"\b(?:paint|colou?r|recolou?r|respray|spray)\s+(?:[a-z]+\s+){0,2}$", before.lower()) is not None
+    if len(low) < 3 or low in COLOURS or (is_known(low, vocab) and not painted) \
+            or not re.search(r"\b(?:paint|colou?r|make|turn|it|them|be|to)\s+(?:[a-z]+\s+){0,2}$", before.lower()) \
             or not re.match(r"\s*(?:$|[,.;!?]|instead\b|please\b|pls\b|now\b|too\b|and\b|then\b)", after.lower()):
         return None
-    near = {c for c in COLOURS if len(c) >= len(low) and edits(low, c) == 1}
+    near = {c for c in COLOURS if len(c) >= len(low) - painted and edits(low, c) == 1}
     return near.pop() if len(near) == 1 else None
 
 

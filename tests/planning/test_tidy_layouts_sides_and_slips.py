@@ -1,0 +1,67 @@
+"""Readings worded here, none from a suite: things tidied into a layout (not tidied away), a layout of
+things there with no place said (where they stand), a side of the way said with "ahead of", a reason
+naming who is slowed, a colour slip that is an English word, and whether the road ahead is clear."""
+
+from __future__ import annotations
+
+import math
+
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.session import Session
+from misreading import ruled  # this folder is on sys.path (no __init__.py)
+
+
+def _of(scene, category: str) -> list:
+    return [a for a in scene.assets if a.category == category]
+
+
+def test_things_tidied_into_a_row_are_laid_out_not_taken_away(campus, registry):
+    for said in ("can you tidy up the trees into a row", "tidy the trees up into a neat line please"):
+        trees = _of(ruled(campus, registry, said).scene, "tree")
+        assert len(trees) == 4, said  # the same four, none removed and none added
+        xs, ys = [t.pose.x for t in trees], [t.pose.y for t in trees]
+        assert min(max(xs) - min(xs), max(ys) - min(ys)) < 0.5, said  # in one straight row
+    # tidying with no layout still tidies away
+    assert _of(ruled(campus, registry, "tidy up the trees").scene, "tree") == []
+
+
+def test_a_layout_of_things_there_with_no_place_said_stays_where_they_stand(campus, registry):
+    before = {t.id: (t.pose.x, t.pose.y) for t in _of(campus, "tree")}
+    trees = _of(ruled(campus, registry, "line up the trees").scene, "tree")
+    centre = ((lambda xs: sum(xs) / len(xs))([t.pose.x for t in trees]), (lambda ys: sum(ys) / len(ys))([t.pose.y for t in trees]))
+    # the row is centred on one of the trees, not moved to the crossroads at the scene's centre
+    assert min(math.dist(centre, spot) for spot in before.values()) < 5.0
+    assert math.dist(centre, (0.0, 0.0)) > 10.0
+
+
+def test_a_side_said_with_ahead_of_puts_the_thing_on_that_side(campus, registry):
+    ego = campus.asset("ego")
+    for said, side in (("put a bike 10 m in front of the ego on the left side", 1), ("add a pedestrian 15 m ahead of the ego on the right", -1)):
+        (new,) = [a for a in ruled(campus, registry, said).scene.assets if a.category in ("bicycle", "pedestrian")]
+        ahead = (new.pose.x - ego.pose.x) * math.cos(ego.pose.yaw) + (new.pose.y - ego.pose.y) * math.sin(ego.pose.yaw)
+        left = -(new.pose.x - ego.pose.x) * math.sin(ego.pose.yaw) + (new.pose.y - ego.pose.y) * math.cos(ego.pose.yaw)
+        assert ahead > 5.0 and left * side > 0.5, (said, ahead, left)
+
+
+def test_who_a_thing_slows_down_is_no_thing_asked_for(campus, registry):
+    scene = ruled(campus, registry, "put a couple of cones on the road to slow people down").scene
+    assert len(_of(scene, "traffic_cone")) == 2 and _of(scene, "pedestrian") == []
+    # with nothing named but the people slowed, no people are added
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("put a couple things on the road to slow people down")
+    assert not report.ok and _of(session.scene, "pedestrian") == []
+
+
+def test_a_colour_slip_that_is_an_english_word_after_a_painting_verb(campus, registry):
+    r, g, b, _ = ruled(campus, registry, "paint the suv read").scene.asset("suv_1").appearance.rgba
+    assert r > 0.7 and g < 0.3 and b < 0.3
+    r, g, b, _ = ruled(campus, registry, "paint the bench grey").scene.asset("bench_1").appearance.rgba
+    assert abs(r - g) < 0.05 and abs(g - b) < 0.05  # a colour word is never "repaired" to another
+
+
+def test_whether_the_road_ahead_is_clear_looks_along_it_and_changes_nothing(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("is the road ahead clear")
+    assert report.ok and report.plan is not None and session.scene == campus
+    (step,) = report.plan.calls
+    assert step.tool == "find_assets" and step.args.get("on_lane") is True and step.args.get("near") == "ego"
