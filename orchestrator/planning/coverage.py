@@ -649,8 +649,8 @@ def partial_removal(masked: str, scope: Scope, scene: Scene, limited: bool) -> l
     return out
 
 
-# A part of what was pointed at: "about half of them", "some of those", "most of these".
-_PART_OF = re.compile(r"\b(?:half|most|some|a few|a couple|part|a third|a quarter) of (?:them|those|these)\b")
+# A part of what was pointed at: "about half of them", "some of those", "most of these", "one of them".
+_PART_OF = re.compile(r"\b(?:half|most|some|a few|a couple|part|a third|a quarter|one|two|three|four|\d+|either|another) of (?:them|those|these)\b")
 
 
 def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory: Memory, scene: Scene,

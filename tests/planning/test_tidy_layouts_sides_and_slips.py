@@ -65,3 +65,26 @@ def test_whether_the_road_ahead_is_clear_looks_along_it_and_changes_nothing(camp
     assert report.ok and report.plan is not None and session.scene == campus
     (step,) = report.plan.calls
     assert step.tool == "find_assets" and step.args.get("on_lane") is True and step.args.get("near") == "ego"
+
+
+def test_a_kind_of_place_several_places_are_is_never_dropped_from_a_behaviour(campus, registry):
+    for said in ("make the ego stop at the gate", "make the ego stop at the crossing"):
+        session = Session(campus, RulePlanner(), registry)
+        report = session.submit(said)
+        assert not report.ok and session.scene == campus, said  # never parked on the spot, the place dropped
+        assert "may be the" in (report.error or ""), report.error
+    # a place of that kind named outright is not asked about: the reading offered stops there
+    report = Session(campus, RulePlanner(), registry).submit("make the ego stop at the north crosswalk")
+    assert report.question is not None and "may be the" not in (report.error or "")
+    assert any(c.args.get("when", {}).get("place") == "north crosswalk" for o in report.question.readings for c in o.calls)
+
+
+def test_one_of_them_acts_on_one_of_the_things_just_added(campus, registry):
+    scene = ruled(campus, registry, "add two pedestrians on the north sidewalk", "make one of them cross the road").scene
+    kinds = sorted(a.behaviour.kind for a in _of(scene, "pedestrian"))
+    assert len(kinds) == 2 and kinds.count("cross_road") == 1
+
+
+def test_filling_a_place_with_things_adds_lots_of_them(campus, registry):
+    assert len(_of(ruled(campus, registry, "fill lot A with cars").scene, "passenger_car")) == 2 + 6
+    assert len(_of(ruled(campus, registry, "fill lot A with 4 cars").scene, "passenger_car")) == 2 + 4

@@ -614,10 +614,10 @@ class RulePlanner:
             unknown += _unknown_words(clause, scene)
         return calls, unknown, skipped, described
 
-    def _which_place(self, prompt: str, context: PlanContext) -> Plan | None:
+    def _which_place(self, prompt: str, context: PlanContext, to_place: bool = False) -> Plan | None:
         """A question offering the request at each place its place word may mean, when it names
         a kind of place several places are ("by the gate"), or the request at the one place called
-        that ("at the stop"); None when it does neither."""
+        that ("at the stop"); None when it does neither. `to_place`: only readings that go there."""
         low = prompt.lower()
         for said in _THE_KIND.finditer(low):
             places = places_called(context.scene, said.group("kind"))
@@ -628,7 +628,7 @@ class RulePlanner:
                     reading = self._plan(text, context, which_place=False)
                 except PlanningError:
                     continue
-                if reading.calls and _UNRECOGNISED not in reading.trace[0].output:
+                if reading.calls and _UNRECOGNISED not in reading.trace[0].output and (not to_place or _goes_to(reading.calls, [name])):
                     plans.append(reading)
             if len(places) == 1 and plans:
                 return plans[0]  # "at the stop": the one place called that, the bus stop
@@ -814,10 +814,13 @@ class RulePlanner:
                                           readings=[Choice(text=describe(calls), calls=calls)]))
         for clause in skipped:
             notes.guess(f"ignored {clause!r}")
-        if _UNRECOGNISED in notes.guesses:
-            question = self._which_place(prompt, context) if which_place else None
+        left_out = _kind_of_place_left_out(text, calls, scene) if calls else None
+        if _UNRECOGNISED in notes.guesses or left_out:
+            question = self._which_place(prompt, context, to_place=left_out is not None) if which_place else None
             if question is not None:
                 return question  # "put a cone by the gate": the main gate or the east gate?
+            if left_out is not None and _UNRECOGNISED not in notes.guesses:  # "make the ego stop at the gate"
+                raise PlanningError(f"'the {left_out[0]}' may be the {' or the '.join(left_out[1])}; say which")
             # "by the red building": said where, and no place of the world fits; never put it just anywhere
             names = ", ".join(lm.name for lm in scene.landmarks[:MAX_PLACES_LISTED])
             said = PLACE_SAID.search(text.lower())
@@ -1093,6 +1096,22 @@ _ONLY_FORBIDS = re.compile(r"^\s*(?:please\s+)?(?:don'?t|do not|never|no need to
                            r"rotate|park|drive|shift|place|recolou?r)\b[^,;.!?]*[.!]?\s*$", re.IGNORECASE)
 _THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+"
                        r"(?P<said>the\s+(?:[a-z]+\s+)?(?P<kind>[a-z]+))\b")
+
+
+def _kind_of_place_left_out(text: str, calls: list[ToolCall], scene: Scene) -> tuple[str, list[str]] | None:
+    """The kind of place the words name that several places are ("stop at the gate", "at the
+    crossing"), and those places, when the plan goes to none of them: the place was dropped,
+    never to be guessed; None otherwise."""
+    for said in _THE_KIND.finditer(text.lower()):
+        places = places_called(scene, said.group("kind"))
+        if len(places) >= 2 and scene.landmark(said.group("said")[4:]) is None and not _goes_to(calls, places):
+            return said.group("kind"), places
+    return None
+
+
+def _goes_to(calls: list[ToolCall], places: list[str]) -> bool:
+    said_in_calls = " ".join(str(c.args) for c in calls).lower()
+    return any(p.lower() in said_in_calls for p in places)
 
 
 def _unknown_words(clause: str, scene: Scene) -> list[str]:

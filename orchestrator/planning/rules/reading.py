@@ -698,7 +698,10 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
     count = ph.count_in_window(before, ph.singular(reading.low[mention.start : mention.end].strip()) + "s")
     # "a no-go zone with cones": an "a" belongs to a singular noun, never to the plural one
     # ("a buss" right before is a singular misspelt, and stays one)
-    return None if count == 1 and mention.plural and not re.search(r"\b(?:1|an?)\s*$", before) else count
+    count = None if count == 1 and mention.plural and not re.search(r"\b(?:1|an?)\s*$", before) else count
+    if count is None and mention.plural and re.search(r"\bfill(?:s|ed|ing)?\b.*\bwith\s+(?:\w+\s+)?$", before):
+        return lx.COLLECTIVE_COUNTS["lots"]  # "fill lot A with cars": lots of them, not the default few
+    return count
 
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:
