@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import math
 
+import pytest
+
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from misreading import ruled  # this folder is on sys.path (no __init__.py)
@@ -88,3 +90,21 @@ def test_one_of_them_acts_on_one_of_the_things_just_added(campus, registry):
 def test_filling_a_place_with_things_adds_lots_of_them(campus, registry):
     assert len(_of(ruled(campus, registry, "fill lot A with cars").scene, "passenger_car")) == 2 + 6
     assert len(_of(ruled(campus, registry, "fill lot A with 4 cars").scene, "passenger_car")) == 2 + 4
+
+
+def test_slips_that_read_as_english_are_repaired_where_only_one_reading_fits(campus, registry):
+    # a number with a letter dropped, where an amount goes; a unit slipped after a number said in words
+    assert len(_of(ruled(campus, registry, "add fur pedestrians near the library").scene, "pedestrian")) == 4
+    before = campus.asset("suv_1").pose
+    after = ruled(campus, registry, "shift the suv two metrs forward").scene.asset("suv_1").pose
+    assert math.dist((before.x, before.y), (after.x, after.y)) == pytest.approx(2.0, abs=0.05)
+    # "fornt" is no "for" without its apostrophe, "acrosss" no plural of "across", "gte" three letters of a gate
+    ego = campus.asset("ego").pose
+    (walker,) = _of(ruled(campus, registry, "put a pedestrian 12 m in fornt of the ego").scene, "pedestrian")
+    assert (walker.pose.x - ego.x) * math.cos(ego.yaw) + (walker.pose.y - ego.y) * math.sin(ego.yaw) > 8.0
+    barriers = _of(ruled(campus, registry, "put two barriers acrosss the road near the east gte").scene, "road_barrier")
+    assert len(barriers) == 2 and all(abs(b.pose.x - 100.0) < 25.0 for b in barriers)
+    # "our cones" are the cones there, never four of them
+    session = ruled(campus, registry, "add three cones in lot A")
+    session.submit("put our cones in lot B")
+    assert len(_of(session.scene, "traffic_cone")) == 3

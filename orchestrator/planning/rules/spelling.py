@@ -8,6 +8,7 @@ repair is reported, because a repaired prompt is a guess the planner's confidenc
 
 from __future__ import annotations
 
+import functools
 import difflib
 import itertools
 import re
@@ -164,8 +165,14 @@ def is_english(low: str) -> bool:
     low = low.replace("'", "")  # "don't" is "dont": a contraction, not a misspelt "donut"
     gerund = low.endswith("ing") and len(low) > 5 and not low[:-3].endswith("e") and (
         low[:-3] in words or low[:-3] + "e" in words)  # "spacing": WordPiece holds only "space"
-    return low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in words) or (
-        low.endswith("s") and low[:-1] in words) or gerund
+    # ("fornt" is no "for" without its apostrophe, nor "acrosss" a plural of "across")
+    return low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in _NOT_CONTRACTED) or (
+        low.endswith("s") and low[:-1] in words and not low[:-1].endswith("s")) or gerund
+
+
+# The words "n't" is written after ("dont", "isnt", "couldnt").
+_NOT_CONTRACTED = frozenset({"do", "does", "did", "is", "are", "was", "were", "has", "have", "had", "could", "would", "should",
+                             "must", "need", "might", "ai", "ca", "wo"})
 
 
 def _word_only_inflected(low: str) -> bool:
@@ -843,8 +850,27 @@ def _sound_alikes(text: str) -> str:
     text = _HEARD_AMOUNT.sub(lambda m: f"{m.group('verb')} {_HEARD_NUMBERS[m.group('said').lower()]} " if m.group("of") or any(
         c.plural for c in ph.find_categories(m.group("thing") or "")) else m.group(0), text)
     # "too", "tow" or "ate" before things in the plural: "ad too buses", "set out tow bollards", "a row of ate cones"
+    text = _DROPPED_AMOUNT.sub(lambda m: f"{m.group('verb')} {_number_dropped().get(m.group('said').lower(), m.group('said'))} " if any(
+        c.plural for c in ph.find_categories(m.group("thing"))) else m.group(0), text)
     return re.sub(r"\b(too|tow|ate)(?= ([a-z]+)\b)", lambda m: _HEARD_NUMBERS[m.group(1).lower()] if any(
         c.plural for c in ph.find_categories(m.group(2))) else m.group(0), text, flags=re.IGNORECASE)
+
+
+# A number with a letter dropped, in the same place: "add fur pedestrians", "remove thre cones".
+_DROPPED_AMOUNT = re.compile(r"\b(?P<verb>add|put|place|plant|spawn|drop|create|remove|delete|lose|want|need)\s+(?P<said>[a-z]{3,6})"
+                             r"\s+(?=(?P<thing>[a-z]+)\b)", re.IGNORECASE)
+
+
+@functools.cache
+def _number_dropped() -> dict[str, str]:
+    """Each number from two to twelve with one letter dropped, where that is no thing's name nor
+    another number ("tree" is a tree) nor a possessive ("our cones" are the ones there)."""
+    out: dict[str, set[str]] = {}
+    for number in ("two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve"):
+        for i in range(len(number)):
+            out.setdefault(number[:i] + number[i + 1 :], set()).add(number)
+    spare = {*_thing_words(), *ph.NUMBER_WORDS, "our", "the"}
+    return {slip: meant.pop() for slip, meant in out.items() if len(slip) >= 3 and len(meant) == 1 and slip not in spare}
 
 
 # Two words that are one known word written apart ("side walk", "cross walk"); a catalog phrase
@@ -945,13 +971,14 @@ def _place_word_slip(word: str, before: str, vocab: frozenset[str], scene: Scene
     English word the vocabulary does not hold, is two slips or fewer from it ("the east gait",
     "the main gait"); None otherwise ("the bus stops here": "stops" is known)."""
     low = word.lower()
-    if len(low) < MIN_REPAIR_LEN or is_known(low, vocab):
+    if len(low) < MIN_REPAIR_LEN - 1 or is_known(low, vocab):
         return None
     said = ph.normalise(before).rstrip()
+    reach = 2 if len(low) >= MIN_REPAIR_LEN else 1  # "the east gte": three letters, one slip
     # (a head of real words: "the quad" has none, and "the lead car" is no quad)
     hits = {name.split()[-1] for name in _place_phrases(scene) if len(name.split()) >= 2
             and not all(w in ("the", "a", "an", "this", "that", "our", "my") for w in name.split()[:-1])
-            and said.endswith(" " + " ".join(name.split()[:-1])) and edits(low, name.split()[-1]) <= 2}
+            and said.endswith(" " + " ".join(name.split()[:-1])) and edits(low, name.split()[-1]) <= reach}
     return hits.pop() if len(hits) == 1 else None
 
 
@@ -1091,6 +1118,8 @@ def _thing_words() -> tuple[str, ...]:
 
 # A word said right after a number: its unit, as written.
 _AFTER_A_NUMBER = re.compile(r"(\d\s*)([a-z]{4,})\b", re.IGNORECASE)
+_AFTER_A_NUMBER_WORD = re.compile(r"\b((?:one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|fifteen|twenty|thirty|forty|fifty"
+                                  r"|sixty|seventy|eighty|ninety|hundred)\s+)([a-z]{4,})\b", re.IGNORECASE)
 
 
 def _unit_slip(word: str, repairs: list[str]) -> str:
@@ -1152,6 +1181,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _ROUGHLY.sub(r"about \1", text)  # "cones round the rubble, six-ish": about six
     text = _ONE_MORE.sub("another", text)  # before "a second" is read as a measure of time
     text = decimal_points(text)  # "4,5 m": four and a half metres
+    early: list[str] = []  # "two metrs forward": the unit repaired before the number is read as a measure
+    text = _AFTER_A_NUMBER_WORD.sub(lambda m: m.group(1) + _unit_slip(m.group(2), early), text)
     text = spelt_measures(_NUMBER_SLIP.sub(lambda m: _NUMBER_SLIPS[m.group(1).lower()], _sound_alikes(text)))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
     text = _WHERE_SLIP.sub("where", text)
@@ -1207,7 +1238,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _IS_CONTRACTED.sub(r"\1 is ", text)
     text = _NUMBER_GLUED.sub(lambda m: f"{m.group(1)} {m.group(2)}" if _names_one(scene, m.group(1), m.group(2)) else m.group(0), text)
     text = _joined_apart(text, vocab)
-    repairs: list[str] = []
+    repairs: list[str] = early
     text = _AFTER_A_NUMBER.sub(lambda m: m.group(1) + _unit_slip(m.group(2), repairs), text)  # "6 metrs forward": metres
     ids = {a.id for a in scene.all_assets()}
 
