@@ -8,7 +8,6 @@ repair is reported, because a repaired prompt is a guess the planner's confidenc
 
 from __future__ import annotations
 
-import functools
 import difflib
 import itertools
 import re
@@ -861,7 +860,7 @@ _DROPPED_AMOUNT = re.compile(r"\b(?P<verb>add|put|place|plant|spawn|drop|create|
                              r"\s+(?=(?P<thing>[a-z]+)\b)", re.IGNORECASE)
 
 
-@functools.cache
+@cache
 def _number_dropped() -> dict[str, str]:
     """Each number from two to twelve with one letter dropped, where that is no thing's name nor
     another number ("tree" is a tree) nor a possessive ("our cones" are the ones there)."""
