@@ -7,7 +7,6 @@ from __future__ import annotations
 import math
 
 import pytest
-
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.session import Session
 from misreading import ruled  # this folder is on sys.path (no __init__.py)
