@@ -43,6 +43,7 @@ from drivetwin.evals import (
     practice31_source,
     practice32_source,
     practice33_source,
+    practice34_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -133,6 +134,11 @@ BRIEFS: dict[str, Brief] = {
     # steward, Welsh English speaker, rambling retired bus driver; arrangement (every grade) and the vague and erroneous
     # grades of every task hold 13, the rest 11 or 12.
     "practice33": Brief(340, 11, 11, practice33_source, multi_turn=45, planned=30, compound=20,
+                        weighted_grades=("vague", "erroneous")),
+    # Eight voices: terse power user, Italian speaker, Arabic speaker, campus tour guide, librarian, Kenyan English
+    # speaker, marathon organiser, nervous first-timer; arrangement (every grade) and the vague and erroneous grades of
+    # every task hold 13, the rest 11 or 12.
+    "practice34": Brief(340, 11, 11, practice34_source, multi_turn=45, planned=30, compound=20,
                         weighted_grades=("vague", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
