@@ -107,3 +107,21 @@ def test_slips_that_read_as_english_are_repaired_where_only_one_reading_fits(cam
     session = ruled(campus, registry, "add three cones in lot A")
     session.submit("put our cones in lot B")
     assert len(_of(session.scene, "traffic_cone")) == 3
+
+
+def test_queues_walls_and_semicircles_are_layouts(campus, registry):
+    for said, kind, count in (("make a little wall of barriers near the east gate", "road_barrier", None),
+                              ("put three pedestrians in a queue at the bus stop", "pedestrian", 3)):
+        things = _of(ruled(campus, registry, said).scene, kind)
+        xs, ys = [t.pose.x for t in things], [t.pose.y for t in things]
+        assert len(things) >= 2 and (count is None or len(things) == count), said
+        assert min(max(xs) - min(xs), max(ys) - min(ys)) < 0.5, said  # one straight line
+    # "a few" in a ring is three, not as many as the ring holds
+    benches = _of(ruled(campus, registry, "put a few benches in a semicircle facing the fountain").scene, "bench")
+    assert len(benches) == 1 + 3
+
+
+def test_lamps_spaced_out_are_never_switched_off(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    session.submit("space the street lights out evenly")
+    assert session.scene.environment == campus.environment

@@ -172,7 +172,9 @@ _LATE = re.compile(r"(?:\b(?:make it|make the time|and|it's|its|it is|set it|set
 
 
 # Street lamps said to be broken ("street lighting failed", "the streetlights are dead"): off.
-LIGHTS_DOWN = re.compile(r"\b(?:street ?light(?:s|ing)?|street ?lamps?|lamps|lighting)\s+(?:have |has |is |are )?"
+# ("space the street lights out evenly" lays them out: the lamps stay lit)
+LIGHTS_DOWN = re.compile(r"(?<!space the )(?<!spread the )(?<!lay the )(?<!fan the )"
+                         r"\b(?:street ?light(?:s|ing)?|street ?lamps?|lamps|lighting)\s+(?:have |has |is |are )?"
                           r"(?:failed|failing|out|dead|broken|down|not working|(?:gone|went|are|is) (?:out|dark))\b")
 
 

@@ -1794,8 +1794,8 @@ def _arrange(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> ToolCall
         args["shape"] = "line"  # "benches along the north side of lot B"
     else:
         args["shape"] = "ring"
-    if args["shape"] == "ring" and _VAGUE_AMOUNT.search(r.low[: first.start]):
-        args.pop("count", None)  # "some bollards round the tree": as many as the ring needs
+    if args["shape"] == "ring" and _VAGUE_AMOUNT.search(r.low[: first.start]) and not re.search(r"\ba few\s+(?:[\w-]+\s+){0,2}$", r.low[: first.start]):
+        args.pop("count", None)  # "some bollards round the tree": as many as the ring needs ("a few" are three)
     where = location(r, scene, memory, notes)
     if args["shape"] == "lane_edge" and where is not None and where.get("relation") == "on_sidewalk" and r.landmark:
         where = {"relation": "at", "target": r.landmark}
