@@ -125,3 +125,12 @@ def test_lamps_spaced_out_are_never_switched_off(campus, registry):
     session = Session(campus, RulePlanner(), registry)
     session.submit("space the street lights out evenly")
     assert session.scene.environment == campus.environment
+
+
+def test_a_colour_said_as_what_a_thing_should_not_be_is_never_painted(campus, registry):
+    for said in ("make the hydrant less red", "the bench shouldn't be brown", "paint the suv anything but red"):
+        session = Session(campus, RulePlanner(), registry)
+        session.submit(said)
+        assert session.scene == campus, said
+    rgba = ruled(campus, registry, "the bench should not be brown, make it green").scene.asset("bench_1").appearance.rgba
+    assert rgba is not None and rgba[1] > rgba[0] and rgba[1] > rgba[2]

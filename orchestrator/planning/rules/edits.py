@@ -618,7 +618,8 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[Too
                                                          scene, memory, notes) or []]
         if len(calls) == len(paired):
             return calls
-    colour = asked[-1] if asked else next((c for c in COLOURS if r.has((c,)) and not md.SIGNAL_STATE.search(r.low)), None)
+    unwanted = set(md.NOT_THAT_COLOUR.findall(r.low))  # "make the hydrant less red": never red
+    colour = asked[-1] if asked else next((c for c in COLOURS if r.has((c,)) and c not in unwanted and not md.SIGNAL_STATE.search(r.low)), None)
     if colour is None and r.has(("blend in", "match", "same colour as", "colour of", "coloured like")):
         colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
     if colour is None and r.has(_CONSPICUOUS) and not TOO_CONSPICUOUS.search(r.low):  # "it stands out too much": less, never more

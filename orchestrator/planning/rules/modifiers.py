@@ -200,14 +200,19 @@ _COLOUR_SAID = re.compile(r"\b(?:(the|that|this|those|these|not|no|than|from|is|
 SIGNAL_STATE = re.compile(r"\b(?:red|green|amber|yellow)\s+(?:lights?|signals?|phase)\b")
 
 
+# A colour said as what a thing should not be: "less red", "anything but red", "no longer red".
+NOT_THAT_COLOUR = re.compile(rf"(?:\b(?:not|no|less|but|than|longer|never)|n't)\s+(?:be\s+)?({'|'.join(COLOURS)})\b")
+
+
 def colours_asked(low: str) -> list[str]:
     """The colours a request asks things to be made, in order: every colour named but those that
     select or describe ("paint the red car blue" asks for blue only) and a signal's state."""
     starts = {m.start for m in find_categories(low)}
+    unwanted = {m.start(1) for m in NOT_THAT_COLOUR.finditer(low)}  # "the bench should not be brown"
     asked: list[str] = []
     for m in _COLOUR_SAID.finditer(low):
         rest = low[m.end(2) :]
-        if m.group(1) or m.group(3) or m.end(2) + len(rest) - len(rest.lstrip()) in starts or SIGNAL_STATE.match(low, m.start(2)):
+        if m.group(1) or m.group(3) or m.start(2) in unwanted or m.end(2) + len(rest) - len(rest.lstrip()) in starts or SIGNAL_STATE.match(low, m.start(2)):
             continue
         if asked and re.fullmatch(rf"{re.escape(asked[-1])}\s+", low[m.start(2) - len(asked[-1]) - 1 : m.start(2)]):
             continue  # "navy blue", "lime green": the first word is the shade of the second

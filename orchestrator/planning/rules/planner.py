@@ -1229,7 +1229,8 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     # The removal words the plan check reads polarity by ("take it out", "without the bin") count too.
     less_of = next((m for m in r.mentions if _LESS_OF_A_KIND.match(r.low[m.end :])), None)  # "make the SUV less flashy"
     how_it_is = less_of is not None
-    if less_of is not None and not re.search(rf"\b(?:{'|'.join(COLOURS)})\b", r.low):
+    wanted = [c for c in COLOURS if re.search(rf"\b{c}\b", r.low) and c not in md.NOT_THAT_COLOUR.findall(r.low)]
+    if less_of is not None and not wanted:  # "less flashy", "less red": what it should not be
         # what it should be less of is said, and not what it should be: never a guess (nor fewer of them)
         thing = less_of.category.replace("_", " ")
         raise PlanningError(f"I can tell how the {thing} should not be, not how it should; say a colour or finish, "
