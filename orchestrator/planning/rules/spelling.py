@@ -133,6 +133,7 @@ _REPAIRABLE_GRAMMAR = (
     "everything",
     "except",
     "without",
+    "nearest", "closest", "furthest", "farthest",  # a comparison decides the question: "the nearrest bench" is no "near rest"
 )
 _SUFFIXES = ("ies", "es", "s", "ing", "ed", "er", "ers", "ly", "ward", "wards", "'s")
 
