@@ -197,7 +197,7 @@ _HEADING = re.compile(r"\b(?:going|heading|cruising)(?= (?:to |towards? )?(?:the
 # A distance asked between two things named: "how far is the library from the gate".
 _HOW_FAR_FROM = re.compile(r"\bhow far (?:away )?(?:is|are|'s)\s+(?P<a>[^?.,;]+?)\s+from\s+(?P<b>[^?.,;]+)")
 # Going on foot, said of a thing: only what moves by itself can ("make the bin stroll off").
-_WALK_VERB = re.compile(r"\b(?:walk|walks|walking|walked|stroll\w*|wander\w*|march\w*|jog\w*|hop\w*|waddl\w*)\b")
+_WALK_VERB = re.compile(r"\b(?:walk|walks|walking|walked|stroll\w*|wander\w*|march\w*|jog\w*|hop(?:s|ped|ping)?|waddl\w*)\b")
 # Words that ask a thing to drive or ride.
 _DRIVE_VERB = re.compile(r"\b(?:drive|drives|driving|drove|ride|rides|riding|rode)\b(?! (?:lane|way|through))")
 
