@@ -118,7 +118,7 @@ KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(
                        r" (?:plenty|enough|all (?:we|i) need)\b))(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b")
 ADD_WORDS = re.compile(r"\b(add|(?<!any )more|another|extra|busier|fuller|create|spawn|insert|put|place|bring in|new)\b")
 
-_QUESTION_START = re.compile(r"(?:^\s*|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question)\s*,?\s+)*(which|what|in which|in what|where|how|is there|are there|is the|are the|does|do any|who|whats|wheres|hows|whos"
+_QUESTION_START = re.compile(r"(?:^\s*|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|hey|right|and|wait|hmm+|um+|uh+|erm|oh|quick question|roughly|approximately|about|just)\s*,?\s+)*(which|what|in which|in what|where|how|is there|are there|is the|are the|does|do any|who|whats|wheres|hows|whos"
                              r"|is anything|is any|is anyone|is anybody|is someone|is somebody|is nobody|are any|is something|has anything|has anyone|have any|do the"
                              r"|do (?:we|you|i) (?:have|see|got)|have (?:we|you) got|(?:we|you) got any|got any"  # "do we have any bikes"
                              # "is it dark yet", "is it raining": a state asked about; "is it possible to ..." asks for a change

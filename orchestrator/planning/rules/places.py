@@ -267,6 +267,25 @@ def places_called(scene: Scene, word: str) -> list[str]:
     return [lm.name for lm in scene.landmarks if any(ph.tokens(ph.normalise(n))[-1:] == [word] for n in lm.names())]
 
 
+# A compass end or part of a road: "the southern end of Campus Drive", "the north part of the road".
+_ROAD_PART = re.compile(r"\b(north|south|east|west)(?:ern)?\s+(end|half|part|stretch|section|bit)\s+of\b")
+
+
+def _road_part(scene: Scene, lane: Lane, compass: str, end: bool, lane_said: str | None) -> dict[str, Any]:
+    """The spot in the road's lanes furthest that way (near its end, or half way there from the
+    road's middle for a part of it); in the lane said, if one was."""
+    ux, uy = _UNIT[compass]
+    lanes = [ln for ln in scene.roads.lanes if ln.road == lane.road] if lane_said is None else [lane]
+    spots = []
+    for ln in lanes or [lane]:
+        length = sum(math.dist(p, q) for p, q in itertools.pairwise(ln.centreline))
+        for arc in ((min(LANE_END_M, length / 2), max(length - LANE_END_M, length / 2)) if end else (length / 4, 3 * length / 4)):
+            x, y, _ = point_along(ln.centreline, arc)
+            spots.append((x * ux + y * uy, x, y, ln.id))
+    _, x, y, lane_id = max(spots)
+    return {"relation": "in_lane", "target": f"{x:.1f}, {y:.1f}", "lane": lane_id}
+
+
 # Either end of a lane or road: "the start of Main Street westbound", "the far end of the lane".
 _LANE_END = re.compile(r"\b(start|beginning|entry|end) of\b")
 # The end of the road a thing is on, said without naming it: "back at the start of the road".
@@ -556,8 +575,11 @@ def location(
             return {"relation": relation, "target": thing.id}  # "right behind the ego in the eastbound lane": its lane, by it
         if r.landmark:  # "the eastbound lane by the east gate": that lane, where it passes the place
             return {"relation": "in_lane", "target": r.landmark, **({} if r.lane_guessed else {"lane": r.lane})}
-        end = _LANE_END.search(r.low)
         lane = scene.roads.lane(r.lane)
+        part = _ROAD_PART.search(r.low)
+        if part is not None and lane is not None:  # "the southern end of Campus Drive", "the north part of it"
+            return _road_part(scene, lane, part.group(1), part.group(2) == "end", None if r.lane_guessed else r.lane)
+        end = _LANE_END.search(r.low)
         if end is not None and lane is not None:  # "at the start of Main Street westbound": near where the lane begins
             length = sum(math.dist(p, q) for p, q in itertools.pairwise(lane.centreline))
             arc = min(LANE_END_M, length / 2) if end.group(1) in ("start", "beginning", "entry") else max(length - LANE_END_M, length / 2)

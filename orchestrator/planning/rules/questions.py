@@ -62,7 +62,11 @@ _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
 # which thing is nearest instead, and a range ("within 20 m") asks what is around.
 # A way asked between two places ("which way is the fountain from here"): what a distance says too.
 _WAY = r"which way|what way|(?:which|what) direction"
-_DISTANCE = re.compile(r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|"
+# A journey's length asked with "how long" ("how long is the walk from A to B", "how long a drive is it
+# from the gate to lot B"): a distance, not a thing's length.
+_JOURNEY = re.compile(r"\bhow long (?:\w+ ){0,6}?(?:walk|walking|drive|driving|ride|cycle|journey|trip)\b(?: \w+){0,3}? (?:from|to|between)\b")
+_DISTANCE = re.compile(rf"{_JOURNEY.pattern}|"
+                       r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|"
                        rf"{_WAY}|"  # the distance says the way too
                        r"stone'?s throw (?:from|to|of)|(?:a |long |short )?walk (?:from|to)|how many (?:metres|"
                        r"meters|feet|yards) (?:from|to|between|apart))\b|\bfar\s*\??\s*$")
@@ -278,10 +282,11 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         return None  # "bins? benches? how many of each": the earlier clauses already ask it
     if _WAY_ASKED.search(low) and re.search(r"\b(?:from|to)\b", low) and (way := _distance(r, scene, back)) is not None:
         return way  # "which way is the fountain from the bus stop": not which way a thing faces
-    if (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low)) and not r.mentions and not r.ids and not r.ego and (
+    asks_property = (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low) is not None) and not _JOURNEY.search(low)
+    if asks_property and not r.mentions and not r.ids and not r.ego and (
             r.lane or _asks_for_lanes(r)):  # "how wide is the lane on Main Street": the lanes' facts
         return Part(_lanes(r, scene, back), None)
-    if r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low):
+    if asks_property:
         return _property(r, scene, named or back)
     if _DISTANCE.search(low) and not _SUPERLATIVE.search(low) and not _WITHIN.search(low):
         measured = _distance(r, scene, back, origin)

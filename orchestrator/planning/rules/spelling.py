@@ -1159,8 +1159,16 @@ def _amount_moved_up(text: str) -> str:
 
 
 def _places_by_kind(text: str) -> str:
-    """A crossing or car park told apart by its compass point, as the world names it ("the west crossing")."""
+    """A crossing or car park told apart by its compass point, as the world names it ("the west crossing"),
+    the point said first ("the crossing in the north" is the north crossing)."""
+    text = _COMPASS_AFTER.sub(lambda m: f"the {m.group(2).lower()} {m.group(1)}", text)
     return _COMPASS_CAR_PARK.sub(r"\1 parking lot", _COMPASS_CROSSING.sub(r"\1 crosswalk", text))
+
+
+# A kind of place with its compass point after it: "the crossing in the north", "the cross-walk of north",
+# "the gate on the east side" (not "the gate to the east of the fountain", a place beside another).
+_COMPASS_AFTER = re.compile(r"\bthe (crossing|crosswalk|gate|car park|parking lot|lot)\s+(?:in|on|at|of|to)\s+(?:the\s+)?"
+                            r"(north|south|east|west)(?:ern)?(?:\s+(?:side|end|one))?\b(?!\s+(?:of|side of)\b)", re.IGNORECASE)
 
 
 def repair(text: str, scene: Scene) -> Repaired:
