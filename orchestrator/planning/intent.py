@@ -303,7 +303,8 @@ _CONTRAST = re.compile(
     rf"|,?\s+and\s+(?:keep|leave)\s+(?={_DETERMINER}\b[^,.;]*\b(?:as (?:it|they) (?:is|are)|alone|untouched|where (?:it|they) (?:is|are)|in place|be)\b)"
     r"|\s+rather\s+than\s+(?=[a-z])"
     # "remove the cars from lot B, the SUV should stay": what stays is excepted
-    rf"|,\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:should|must|can|will|is to|has to)\s+(?:stay|remain|be left|be kept)\b)"
+    rf"|,\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:(?:should|must|can|will|is to|has to)\s+(?:stay|remain|be left|be kept)"
+    r"|(?:it\s+|they\s+)?(?:stays?|remains?)(?:\s+(?:where|as|put|there|here|please)\b|\s*[.!;]|\s*$))\b)"  # "..., the truck stays", "the truck it stay"
     r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
     re.IGNORECASE,
 )

@@ -134,3 +134,37 @@ def test_a_colour_said_as_what_a_thing_should_not_be_is_never_painted(campus, re
         assert session.scene == campus, said
     rgba = ruled(campus, registry, "the bench should not be brown, make it green").scene.asset("bench_1").appearance.rgba
     assert rgba is not None and rgba[1] > rgba[0] and rgba[1] > rgba[2]
+
+
+def test_a_journeys_length_asked_with_how_long_is_a_distance(campus, registry):
+    for said in ("how long is the walk from the bus stop to the fountain", "roughly how long a drive is it from the main gate to lot B"):
+        session = Session(campus, RulePlanner(), registry)
+        report = session.submit(said)
+        assert report.ok and report.plan is not None and [c.tool for c in report.plan.calls] == ["measure_distance"], said
+    (step,) = Session(campus, RulePlanner(), registry).submit("how long is the bench").plan.calls
+    assert step.tool == "asset_properties"  # a thing's own length stays a property
+
+
+def test_a_compass_end_or_part_of_a_road_and_a_compass_point_said_after_a_place(campus, registry):
+    (south,) = _of(ruled(campus, registry, "put a barrier on the southern end of campus drive").scene, "road_barrier")
+    assert south.pose.y < -50 and abs(south.pose.x) < 4  # Campus Drive runs north-south through x = 0
+    (west,) = _of(ruled(campus, registry, "put a cone at the west end of main street").scene, "traffic_cone")
+    assert west.pose.x < -70
+    north = next(lm for lm in campus.landmarks if lm.name == "north crosswalk")
+    (walker,) = _of(ruled(campus, registry, "put a pedestrian at the crossing in the north").scene, "pedestrian")
+    assert math.dist((walker.pose.x, walker.pose.y), north.position) < 8
+
+
+def test_learners_forms_of_size_amount_and_what_stays(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("which is the more big vehicle in lot B")
+    assert report.ok and "suv_1" in (report.answer or "").split(".")[0]
+    assert {t.id for t in _of(ruled(campus, registry, "remove the both tree near the fountain").scene, "tree")} == {"tree_1", "tree_4"}
+    for said in ("remove the bus, the truck stays", "remove the bus, the truck it stay"):
+        scene = ruled(campus, registry, "add a bus and a truck at the east gate", said).scene
+        assert _of(scene, "bus") == [] and len(_of(scene, "truck")) == 1, said
+
+
+def test_gentle_snow_and_a_lovely_day(campus, registry):
+    weather = ruled(campus, registry, "it should be snowing gently").scene.environment.weather
+    assert weather.kind == "snow" and weather.intensity < 0.45
+    assert ruled(campus, registry, "make it foggy", "make it a lovely day").scene.environment.weather.kind == "clear"

@@ -51,12 +51,12 @@ WEATHER_WORDS: dict[str, tuple[str, ...]] = {
     "clear": ("clear weather", "clear the weather", "clear sky", "sunny", "make it clear", "sun",
               "sunshine", "stop raining", "stop the rain", "no rain", "fine weather", "clear skies",
               "weather clear", "weather nice", "clear up", "clears up", "nice weather", "nicer weather",
-              "better weather", "good weather", "dry", "blue sky", "stops raining"),
+              "better weather", "good weather", "dry", "blue sky", "stops raining", "lovely day", "nice day", "beautiful day"),
 }
 HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "intense", "lot of", "a lot",
          "blizzard", "downpour", "deluge", "cloudburst", "pouring", "storm", "very", "really", "poor", "bad", "terrible",
          "barely", "low visibility")
-LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "some", "gentle")
+LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "some", "gentle", "gently", "softly")
 # (words, preset) in order: the first that matches wins, so "midnight" beats "night".
 TIME_PRESETS = ((("midnight",), "midnight"), (("night", "nighttime", "night time", "nite", "dark", "darker",
                  "late at night", "sun has gone down", "after the sun goes down", "once the sun goes down", "after dark"), "night"),

@@ -677,6 +677,8 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
         return partitive
     if not mention.plural and re.search(r"\bsome\s+(?:[a-z]+\s+)?$", before):
         return 1  # "some broken concrete", "some rubble": one heap of a thing not counted
+    if re.search(r"\bboth\s+(?:of\s+)?(?:the\s+)?(?:[a-z]+\s+)?$", before):
+        return 2  # "the both tree near the fountain": two, however the noun is said
     itself = reading.low[mention.start : mention.end].strip()
     if lx.COLLECTIVE_COUNTS.get(itself) and not re.search(r"\b(?:\d+|a few|several)\s*$", before):
         return lx.COLLECTIVE_COUNTS[itself]  # "a crowd at the fountain": a crowd's worth, not one

@@ -20,7 +20,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import CLOCK_WORDS
 from drivetwin.orchestrator.planning.rules.inflection import forms
-from drivetwin.orchestrator.planning.rules.modifiers import MATERIAL_WORDS, groups_said
+from drivetwin.orchestrator.planning.rules.modifiers import MATERIAL_WORDS, SIZE_WORDS, groups_said
 from drivetwin.orchestrator.planning.rules.numbers import UNIT_WORDS, decimal_points, spelt_measures
 from drivetwin.orchestrator.planning.rules.reading import ONCOMING_WORDS
 from drivetwin.tools.appearance import COLOURS
@@ -736,9 +736,12 @@ _MOST_ADJECTIVE = re.compile(r"\bmost ([a-z]{3,6})\b", re.IGNORECASE)
 
 
 def _superlative(m: re.Match[str]) -> str:
-    """"most heavy" as "heaviest", when its comparative is a word the rule planner reads."""
+    """"most heavy" as "heaviest", when it or its comparative is a word the rule planner reads ("most big": biggest)."""
     said = _comparative_of(m.group(1).lower())
-    return said[:-1] + "st" if said is not None and is_english(said[:-1] + "st") else m.group(0)
+    if said is not None and is_english(said[:-1] + "st"):
+        return said[:-1] + "st"
+    size = next((w for w in SIZE_WORDS if w.startswith(m.group(1).lower()[:3]) and w[: len(m.group(1))] == m.group(1).lower()), None)
+    return size or m.group(0)
 
 
 def _comparative(m: re.Match[str]) -> str:
@@ -1211,6 +1214,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _GONE_STATE.sub(r"\1 become ", text)
     text = _CAR_PARK_OF.sub("parking lot ", text)  # "the car park A entrance": lot A's, not "the car park" (lot B)
     text = _inverted_names().sub(_said_head_last, text)  # "the car of test": the test car
+    if re.match(r"\s*(?:which|what)\b", text, re.IGNORECASE):  # "which is the more big vehicle": the biggest of them
+        text = re.sub(r"\bthe more (?=[a-z]{3,6}\b)", "the most ", text, flags=re.IGNORECASE)
     text = _MOST_ADJECTIVE.sub(_superlative, text)  # "the most heavy vehicle": the heaviest
     text = _MORE_ADJECTIVE.sub(_comparative, text)  # "more slow, please": slower
     text = _BIT_ADJECTIVE.sub(_by_a_bit, text)  # "little bit slow": a bit slower
