@@ -702,7 +702,8 @@ def unpointed(masked: str, scope: Scope, scene: Scene) -> list[AssetInstance]:
     no kind, id, place, lane or pointing word ("broken concrete in the lane" done by painting
     a parked car concrete)."""
     acted = [a for a in scope.touched if a.id != "ego" and a not in scope.added]
-    if not acted or named_in(masked) or _POINTS.search(masked) or KEEP_SOME.search(masked) or md.groups_said(masked):
+    if not acted or named_in(masked) or _POINTS.search(masked) or KEEP_SOME.search(masked) or md.groups_said(masked) \
+            or md.SHADE_ALONE.match(masked.strip()):  # "nah, darker": what was just painted
         return []
     low = ph.normalise(masked)
     if any(ph.normalise(n).strip() in low for lm in scene.landmarks for n in lm.names()):

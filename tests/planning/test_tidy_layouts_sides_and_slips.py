@@ -168,3 +168,16 @@ def test_gentle_snow_and_a_lovely_day(campus, registry):
     weather = ruled(campus, registry, "it should be snowing gently").scene.environment.weather
     assert weather.kind == "snow" and weather.intensity < 0.45
     assert ruled(campus, registry, "make it foggy", "make it a lovely day").scene.environment.weather.kind == "clear"
+
+
+def test_a_shade_said_alone_after_painting_shades_that_paint(campus, registry):
+    session = ruled(campus, registry, "paint the bench yellow", "nah, darker")
+    r, g, b, _ = session.scene.asset("bench_1").appearance.rgba
+    assert 0.4 < r < 0.8 and b < 0.2 and session.scene.environment == campus.environment  # a darker yellow, still noon
+    # with nothing painted just before, "darker" is the light
+    assert ruled(campus, registry, "darker").scene.environment != campus.environment
+
+
+def test_for_the_day_is_how_long_not_a_time_of_day(campus, registry):
+    scene = ruled(campus, registry, "close main street for the day").scene
+    assert scene.environment == campus.environment and _of(scene, "road_barrier")

@@ -125,7 +125,7 @@ TIME_NOT_SET = re.compile(r"\b(?:not|no|never|instead of|rather than)\s+(?:the\s
                           r"|\b(?:open|sports?|demo|test|game|race|match|school|work|working|visit|launch|media|press|every|one|some|other|next|whole|all)[\s-]+day\b"
                           # how long ("levelling all morning", "the whole afternoon") or what a place is like ("looks like a
                           # Sunday morning"): no time to set
-                          r"|\b(?:all|the whole|the entire|throughout the|for the)\s+(?:morning|afternoon|evening|night)\b"
+                          r"|\b(?:all|the whole|the entire|throughout the|for the)\s+(?:morning|afternoon|evening|night|day)\b"
                           r"|\b(?:like|as if it were|as though it were)\s+(?:a|an|the)\s+(?:[a-z]+\s+)?(?:morning|afternoon|evening|night)\b")
 
 

@@ -200,6 +200,11 @@ _COLOUR_SAID = re.compile(r"\b(?:(the|that|this|those|these|not|no|than|from|is|
 SIGNAL_STATE = re.compile(r"\b(?:red|green|amber|yellow)\s+(?:lights?|signals?|phase)\b")
 
 
+# A shade said alone, as a reply to a turn that painted things: "nah, darker", "a bit lighter please".
+SHADE_ALONE = re.compile(r"^(?:\w+\s*[,!.]?\s+){0,2}(?:a (?:bit|little|touch|shade)\s+|slightly\s+|much\s+|even\s+)?(darker|deeper|lighter|paler|brighter)\b"
+                         r"(?:\s+(?:please|pls|than that|still|again|one))*\s*[.!?]*\s*$")
+
+
 # A colour said as what a thing should not be: "less red", "anything but red", "no longer red".
 NOT_THAT_COLOUR = re.compile(rf"(?:\b(?:not|no|less|but|than|longer|never)|n't)\s+(?:be\s+)?({'|'.join(COLOURS)})\b")
 

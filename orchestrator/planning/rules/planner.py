@@ -1098,6 +1098,28 @@ _THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behi
                        r"(?P<said>the\s+(?:[a-z]+\s+)?(?P<kind>[a-z]+))\b")
 
 
+# How far a shade goes: towards black for darker, towards white for lighter.
+_SHADES = {"darker": 0.6, "deeper": 0.7, "lighter": -0.4, "paler": -0.4, "brighter": -0.3}
+
+
+def _shade_of_last_paint(r: Reading, scene: Scene, memory: Memory) -> list[ToolCall] | None:
+    """The things the last turn painted, each its colour made darker or lighter as the words say;
+    None unless the words say only a shade and the last turn painted something."""
+    said = md.SHADE_ALONE.match(r.low.strip())
+    last = memory.live_turns()[-1:]
+    if said is None or not last or not any(c.startswith("set_asset_appearance") for c in last[0].calls):
+        return None
+    factor = _SHADES[said.group(1)]
+    calls: dict[str, list[str]] = {}
+    for i in last[0].touched:
+        asset = scene.asset(i)
+        if asset is None or asset.appearance.rgba is None:
+            continue
+        rgb = [float(c) * factor if factor > 0 else float(c) + (1.0 - float(c)) * -factor for c in asset.appearance.rgba[:3]]
+        calls.setdefault(hex_colour((*rgb, 1.0)), []).append(i)
+    return [ToolCall(tool="set_asset_appearance", args={"assets": ids, "colour": colour}) for colour, ids in calls.items()] or None
+
+
 def _kind_of_place_left_out(text: str, calls: list[ToolCall], scene: Scene) -> tuple[str, list[str]] | None:
     """The kind of place the words name that several places are ("stop at the gate", "at the
     crossing"), and those places, when the plan goes to none of them: the place was dropped,
@@ -1259,6 +1281,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             return environment(r, scene.environment)
         if any(m.category == "street_light" for m in r.mentions):
             return [ToolCall(tool="set_lighting", args={"street_lights": "off" if "off" in switch.groups() else "on"})]
+    shaded = _shade_of_last_paint(r, scene, memory) if not (r.mentions or r.ids or r.ego) else None
+    if shaded:  # "paint the bench yellow" then "nah, darker": that colour darker, not the night
+        return shaded
     if not (r.mentions or r.ids or r.ego) and notes.subject and any(r.has((c,)) for c in COLOURS):
         colour = recolour(r, scene, memory, notes)  # "...; bright yellow would do": a look for the thing just named
         if colour is not None:
