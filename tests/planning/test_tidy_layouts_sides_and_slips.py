@@ -172,7 +172,7 @@ def test_gentle_snow_and_a_lovely_day(campus, registry):
 
 def test_a_shade_said_alone_after_painting_shades_that_paint(campus, registry):
     session = ruled(campus, registry, "paint the bench yellow", "nah, darker")
-    r, g, b, _ = session.scene.asset("bench_1").appearance.rgba
+    r, _g, b, _ = session.scene.asset("bench_1").appearance.rgba
     assert 0.4 < r < 0.8 and b < 0.2 and session.scene.environment == campus.environment  # a darker yellow, still noon
     # with nothing painted just before, "darker" is the light
     assert ruled(campus, registry, "darker").scene.environment != campus.environment
