@@ -109,14 +109,16 @@ def wrong_removals(masked: str, removed: Iterable[AssetInstance]) -> list[str]:
 
 # More of the thing just named with its noun left out ("two cones at the gate and another two at
 # the fountain", "three more by the library"): the amount after "another", or before "more".
-_MORE_SAID = re.compile(r"\banother\s+(\d+|[a-z]+)\b|\b(\d+|[a-z]+)\s+more\b")
+# ("... and 2 at the east gate": two more of them, placed)
+_MORE_SAID = re.compile(r"\banother\s+(\d+|[a-z]+)\b|\b(\d+|[a-z]+)\s+more\b"
+                        r"|\band\s+(\d+|[a-z]+)\s+(?=(?:at|by|near|in|on|next|beside|outside|behind)\b)")
 
 
 def _more_unnamed(masked: str) -> int:
     """How many more of the thing named before the words ask for without naming it again."""
     total = 0
     for m in _MORE_SAID.finditer(masked):
-        word = m.group(1) or m.group(2)
+        word = m.group(1) or m.group(2) or m.group(3)
         amount = int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
         if amount is not None and not ph.find_categories(" ".join(masked[m.end() :].split()[:2])):
             total += amount

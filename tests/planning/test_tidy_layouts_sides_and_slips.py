@@ -181,3 +181,28 @@ def test_a_shade_said_alone_after_painting_shades_that_paint(campus, registry):
 def test_for_the_day_is_how_long_not_a_time_of_day(campus, registry):
     scene = ruled(campus, registry, "close main street for the day").scene
     assert scene.environment == campus.environment and _of(scene, "road_barrier")
+
+
+def test_two_amounts_at_two_places_are_two_requests(campus, registry):
+    scene = ruled(campus, registry, "put 5 cones in a line at the west crosswalk and 2 barriers at the north crosswalk").scene
+    west, north = (next(lm for lm in campus.landmarks if lm.name == n).position for n in ("west crosswalk", "north crosswalk"))
+    cones, barriers = _of(scene, "traffic_cone"), _of(scene, "road_barrier")
+    assert len(cones) == 5 and all(math.dist((c.pose.x, c.pose.y), west) < 12 for c in cones)
+    assert len(barriers) == 2 and all(math.dist((b.pose.x, b.pose.y), north) < 12 for b in barriers)
+    cones = _of(ruled(campus, registry, "put 3 cones at the main gate and 2 at the east gate").scene, "traffic_cone")
+    assert sorted(c.pose.x > 0 for c in cones) == [False, False, False, True, True]
+
+
+def test_a_ring_round_a_thing_named_by_its_id(campus, registry):
+    tree = campus.asset("tree_3").pose
+    bollards = _of(ruled(campus, registry, "bollards round tree_3").scene, "bollard")
+    assert len(bollards) >= 4
+    assert max(math.dist((b.pose.x, b.pose.y), (tree.x, tree.y)) for b in bollards) - min(
+        math.dist((b.pose.x, b.pose.y), (tree.x, tree.y)) for b in bollards) < 0.5  # all on one circle round it
+
+
+def test_the_persons_own_car_at_home_is_never_the_ego(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    session.submit("my real car is blue, paint the suv that colour")
+    assert session.scene.asset("ego").appearance == campus.asset("ego").appearance
+    assert session.scene.asset("suv_1").appearance.rgba is not None

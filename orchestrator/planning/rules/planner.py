@@ -447,6 +447,10 @@ _THE_ONE = re.compile(r",\s*(?:i mean\s+|namely\s+)?the one\s+(?=(?:(?:north|sou
                       r"|closest|furthest|farthest|by|next|beside|behind|in|on|at|outside|opposite)\b)", re.IGNORECASE)
 
 
+# A second amount of things after "and": "... and 2 barriers at the north crosswalk".
+_COUNTED_AND = re.compile(r",?\s+and\s+(?=(?:\d+|two|three|four|five|six|seven|eight|nine|ten|a couple of|a few)\s+[a-z])", re.IGNORECASE)
+
+
 # A wish that governs the things after it as a verb does: "I need", "we want", "I'd like".
 _WISHED = re.compile(r"\b(?:need|needs|want|wants|would like|'d like)\b")
 
@@ -463,6 +467,16 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     for name in places:  # "the bus stop" has no verb in it
         low = re.sub(rf"\b{re.escape(name)}\b", lambda m: " " * len(m.group(0)), low)
     verb = _VERB_AT.search(low) or _WISHED.search(low)  # "I need a barrier and a roadworks sign there": both wished for
+    # "5 cones in a line at the west crosswalk and 2 barriers at the north crosswalk": each counted and placed, two requests
+    second = _COUNTED_AND.search(clause, verb.end()) if verb is not None else None
+    if second is not None and (said := ph.find_categories(clause[: second.start()])):
+        first, rest = clause[: second.start()], clause[second.end() :]
+        if not ph.find_categories(rest):  # "3 cones at the main gate and 2 at the east gate": 2 cones
+            amount = re.match(r"\s*(?:a couple of|a few|\S+)", rest)
+            noun = ph.normalise(first)[said[0].start : said[0].end].strip()
+            rest = f"{rest[: amount.end()]} {noun}{rest[amount.end() :]}" if amount else rest
+        if _PLACE_TAIL.search(first) and _PLACE_TAIL.search(rest) and ph.find_categories(rest):
+            return [first, f"{clause[: verb.end()]} {rest}"]
     # "a line of cones and barriers" is one layout; "the car at the end of the row" names one of a row there
     if verb is None or any(w in low for w in (*lx.ARRANGE_WORDS, "between", " grid", "mix")) or re.search(r"(?<!\bthe) (?:line|row)\b", low):
         return [clause]
@@ -1693,7 +1707,7 @@ _AROUND = re.compile(r"\b(?:a?round|surround(?:s|ed|ing)?|encircl(?:e|es|ed|ing)
 _AROUND_BY = re.compile(r"\b(?:ring|encircl|surround|circl)ed\s+(?:all\s+round\s+)?by\b")
 # "Around" with nothing to go round ("a few more bins around", "cones around here"): here and there, not a ring.
 _AROUND_LOOSE = re.compile(r"\baround\s*(?:$|[.,!?;]|(?:here|somewhere|the (?:place|campus|scene|map)|campus)\b)")
-_ROUND_IT = re.compile(r"\b(?:all\s+)?round\s+(?:it|them|that|this|the|its)\b")  # "stick some cones round it": a ring
+_ROUND_IT = re.compile(r"\b(?:all\s+)?round\s+(?:it|them|that|this|the|its|[a-z]+_\d+)\b")  # "stick some cones round it": a ring
 # ("some of those short metal posts": a vague part of a kind, its words describing the kind)
 _VAGUE_AMOUNT = re.compile(r"\b(?:some|several|a few|a number of)\s+(?:of\s+(?:the|those|these|them|our)\s+)?(?:[\w-]+\s+){0,2}$")
 

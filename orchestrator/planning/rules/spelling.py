@@ -1168,6 +1168,11 @@ def _places_by_kind(text: str) -> str:
     return _COMPASS_CAR_PARK.sub(r"\1 parking lot", _COMPASS_CROSSING.sub(r"\1 crosswalk", text))
 
 
+# The person's own car, away from the scene: "my car at home", "my real car", "my own car back home".
+_CAR_AT_HOME = re.compile(r"\bmy (?:own |real |actual )?(?:car|vehicle)\s+(?:at home|back home|in real life|irl|in (?:my|the) garage|outside my house)\b"
+                          r"|\bmy (?:real|actual) (?:car|vehicle)\b", re.IGNORECASE)
+
+
 # A kind of place with its compass point after it: "the crossing in the north", "the cross-walk of north",
 # "the gate on the east side" (not "the gate to the east of the fountain", a place beside another).
 _COMPASS_AFTER = re.compile(r"\bthe (crossing|crosswalk|gate|car park|parking lot|lot)\s+(?:in|on|at|of|to)\s+(?:the\s+)?"
@@ -1242,6 +1247,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _LOTS_WAY_IN.sub(lambda m: ("" if re.search(r"\b(?:the|its|that|this)\s+$", text[: m.start()], re.IGNORECASE) else "the ")
                             + f"{m.group(1)} entrance", text)  # "block off lot B's entrance": the lot B entrance
     text = _places_by_kind(text)
+    if _CAR_AT_HOME.search(text):  # "my car at home is green; make the SUV like my car": the person's own, never the ego
+        text = re.sub(r"\bmy (?:own |real |actual )?(?:car|vehicle)\b", "mine", text, flags=re.IGNORECASE)
     text = _without_place_left(text, scene)
     text = _UP_AHEAD.sub(lambda m: f"{m.group(1) or ''} ahead of the ego".lstrip(), text)
     text = _IN_ITS_PATH.sub(lambda m: "in front of " + (m.group(1) or m.group(2) or _PATH_OWNERS[(m.group(3) or m.group(4)).lower()]), text)
