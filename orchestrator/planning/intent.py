@@ -157,6 +157,9 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"|\b(?:to|i|we|me|wants?|wanna|wan) know (?:[a-z]+ )?(?:what|which|where|how|wh?ether|if|is|are|does|do|did|was|were|has|have)\b"
                    # "see if it is foggy", "see whether there are cones": whether a thing is so ("see if you can
                    # move it" asks for the moving)
+                   # "for my notes I need the bench nearest the ego", "the log wants the car closest to it": which one is
+                   r"|\b(?:need|needs|want|wants|require|requires|after)\s+the\s+(?:[a-z_]+\s+){1,3}?(?:nearest|closest|furthest|farthest)\b"
+                   r"(?![^.;!?]*\b(?:moved|put|placed|brought|taken|to be|painted|gone|removed)\b)"
                    r"|\bsee (?:wh?ether|if) (?!(?:you|u|we|i)\b)|\bremind (?:me|us) (?:again )?(?:what|which|where|how|wh?ether|if)\b"
                    # doubt about what is so: "I was wondering if there's a bin", "can't remember whether I parked it
                    # in lot A", "not sure if the hydrant is still there" (wondering whether we could is a request)

@@ -206,3 +206,17 @@ def test_the_persons_own_car_at_home_is_never_the_ego(campus, registry):
     session.submit("my real car is blue, paint the suv that colour")
     assert session.scene.asset("ego").appearance == campus.asset("ego").appearance
     assert session.scene.asset("suv_1").appearance.rgba is not None
+
+
+def test_a_kind_of_place_said_before_another_word_is_still_asked_about(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("paint the car closest to the gate red")
+    assert report.question is not None and "gate" in report.question.text and session.scene == campus
+    picks = {c.args["assets"][0] for o in report.question.readings for c in o.calls}
+    assert picks == {"passenger_car_1", "passenger_car_2"}  # nearest the main gate, nearest the east gate
+
+
+def test_a_need_for_the_thing_nearest_a_place_is_a_question(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("for my notes I need the bench nearest the ego")
+    assert report.ok and "bench_1" in (report.answer or "") and session.scene == campus

@@ -283,7 +283,8 @@ def test_a_place_no_place_of_the_world_fits_is_refused_by_name(session, campus):
     assert session.scene.assets == campus.assets
 
 
-@pytest.mark.parametrize("prompt", ["set up a bus at teh bus stp", "a ring of bollards arround the heliport"])
+# ("teh bus stp" is now read as the bus stop: three letters one slip from a place's last word)
+@pytest.mark.parametrize("prompt", ["set up a bus at teh bus dpt", "a ring of bollards arround the heliport"])
 def test_a_place_said_but_dropped_from_the_plan_is_not_applied(session, campus, prompt):
     report = session.submit(prompt)
     assert not report.ok

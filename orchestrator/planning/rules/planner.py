@@ -13,6 +13,7 @@ import math
 import re
 import time
 from dataclasses import replace
+from collections.abc import Iterator
 from typing import Any
 
 from drivetwin.orchestrator.memory import Memory
@@ -628,27 +629,27 @@ class RulePlanner:
             unknown += _unknown_words(clause, scene)
         return calls, unknown, skipped, described
 
-    def _which_place(self, prompt: str, context: PlanContext, to_place: bool = False) -> Plan | None:
+    def _which_place(self, prompt: str, context: PlanContext, left_out: list[ToolCall] | None = None) -> Plan | None:
         """A question offering the request at each place its place word may mean, when it names
         a kind of place several places are ("by the gate"), or the request at the one place called
-        that ("at the stop"); None when it does neither. `to_place`: only readings that go there."""
-        low = prompt.lower()
-        for said in _THE_KIND.finditer(low):
-            places = places_called(context.scene, said.group("kind"))
+        that ("at the stop"); None when it does neither. `left_out`: the plan that dropped the place,
+        and so no reading (the place named changing nothing is no reading of it)."""
+        for start, end, kind, places in _kinds_of_place(prompt.lower(), context.scene):
             plans = []
             for name in places[:MAX_READINGS]:
-                text = prompt[: said.start("said")] + f"the {name}" + prompt[said.end("said") :]
+                text = prompt[:start] + f"the {name}" + prompt[end:]
                 try:
                     reading = self._plan(text, context, which_place=False)
                 except PlanningError:
                     continue
-                if reading.calls and _UNRECOGNISED not in reading.trace[0].output and (not to_place or _goes_to(reading.calls, [name])):
+                if reading.calls and _UNRECOGNISED not in reading.trace[0].output:
                     plans.append(reading)
+            if left_out is not None and all(p.calls == left_out for p in plans):
+                plans = []  # the place named changes nothing: no reading of it
             if len(places) == 1 and plans:
                 return plans[0]  # "at the stop": the one place called that, the bus stop
             readings = [Choice(text=describe(p.calls), calls=p.calls) for p in plans]
             if len(readings) >= 2:
-                kind = said.group("kind")
                 step = TraceStep(level="rules", input=prompt, output=f"{kind!r} names {', '.join(places)}; asking")
                 return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
                             question=Question(text=f"Which {kind} do you mean?", readings=readings))
@@ -830,7 +831,7 @@ class RulePlanner:
             notes.guess(f"ignored {clause!r}")
         left_out = _kind_of_place_left_out(text, calls, scene) if calls else None
         if _UNRECOGNISED in notes.guesses or left_out:
-            question = self._which_place(prompt, context, to_place=left_out is not None) if which_place else None
+            question = self._which_place(prompt, context, left_out=calls if left_out is not None else None) if which_place else None
             if question is not None:
                 return question  # "put a cone by the gate": the main gate or the east gate?
             if left_out is not None and _UNRECOGNISED not in notes.guesses:  # "make the ego stop at the gate"
@@ -1138,11 +1139,24 @@ def _kind_of_place_left_out(text: str, calls: list[ToolCall], scene: Scene) -> t
     """The kind of place the words name that several places are ("stop at the gate", "at the
     crossing"), and those places, when the plan goes to none of them: the place was dropped,
     never to be guessed; None otherwise."""
-    for said in _THE_KIND.finditer(text.lower()):
-        places = places_called(scene, said.group("kind"))
-        if len(places) >= 2 and scene.landmark(said.group("said")[4:]) is None and not _goes_to(calls, places):
-            return said.group("kind"), places
+    low = text.lower()
+    for start, end, kind, places in _kinds_of_place(low, scene):
+        if len(places) >= 2 and scene.landmark(low[start + 4 : end]) is None and not _goes_to(calls, places):
+            return kind, places
     return None
+
+
+def _kinds_of_place(low: str, scene: Scene) -> Iterator[tuple[int, int, str, list[str]]]:
+    """Each "the <kind>" after a relation that names a kind of place, as (start, end, kind, the
+    places of that kind): the last word when it is one ("by the red gate"), else the word before
+    it ("closest to the gate red")."""
+    for said in _THE_KIND.finditer(low):
+        words = list(re.finditer(r"[a-z]{3,}", low[said.start("said") : said.end("said")]))[1:]  # ("the kerb a little": no lot A)
+        for word in reversed(words):
+            places = places_called(scene, word.group(0))
+            if places:
+                yield said.start("said"), said.start("said") + word.end(), word.group(0), places
+                break
 
 
 def _goes_to(calls: list[ToolCall], places: list[str]) -> bool:

@@ -165,9 +165,9 @@ def is_english(low: str) -> bool:
     low = low.replace("'", "")  # "don't" is "dont": a contraction, not a misspelt "donut"
     gerund = low.endswith("ing") and len(low) > 5 and not low[:-3].endswith("e") and (
         low[:-3] in words or low[:-3] + "e" in words)  # "spacing": WordPiece holds only "space"
-    # ("fornt" is no "for" without its apostrophe, nor "acrosss" a plural of "across")
+    # ("fornt" is no "for" without its apostrophe, nor "acrosss", a letter typed three times, a plural of "across")
     return low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in _NOT_CONTRACTED) or (
-        low.endswith("s") and low[:-1] in words and not low[:-1].endswith("s")) or gerund
+        low.endswith("s") and low[:-1] in words and re.search(r"(.)\1\1", low) is None) or gerund
 
 
 # The words "n't" is written after ("dont", "isnt", "couldnt").
@@ -1296,7 +1296,9 @@ def repair(text: str, scene: Scene) -> Repaired:
                 near, key=lambda v: edits(word.lower(), v)) if near else new
         if new is not None and new not in _thing_words() and _THING_SLOT.search(text[: m.start()]):
             near = [t for t in _thing_words() if edits(word.lower(), t) <= edits(word.lower(), new)]
-            new = near[0] if len(near) == 1 else new  # one thing as near as the other word: the thing
+            nearest = [t for t in near if edits(word.lower(), t) == min(edits(word.lower(), n) for n in near)]
+            # one thing as near as the other word, or one thing nearest: the thing ("all the tress": trees, not metres)
+            new = near[0] if len(near) == 1 else nearest[0] if len(nearest) == 1 and edits(word.lower(), nearest[0]) < edits(word.lower(), new) else new
         if new is None or new == word.lower():
             return word
         repairs.append(f"{word} -> {new}")
