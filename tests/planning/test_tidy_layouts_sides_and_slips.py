@@ -220,3 +220,21 @@ def test_a_need_for_the_thing_nearest_a_place_is_a_question(campus, registry):
     session = Session(campus, RulePlanner(), registry)
     report = session.submit("for my notes I need the bench nearest the ego")
     assert report.ok and "bench_1" in (report.answer or "") and session.scene == campus
+
+
+def test_any_place_of_a_kind_is_the_one_nearest_the_thing_moved(campus, registry):
+    library = next(lm for lm in campus.landmarks if lm.name == "Library entrance").position
+    bench = ruled(campus, registry, "move the bench near any building").scene.asset("bench_1").pose
+    assert math.dist((bench.x, bench.y), library) < 8  # the Library is the building nearest the bench
+    assert ruled(campus, registry, "move the suv to the closest gate").scene.asset("suv_1").pose.x > 60  # the east gate
+
+
+def test_the_one_of_those_there_further_away(campus, registry):
+    scene = ruled(campus, registry, "remove the tree by the fountain that's further away").scene
+    assert scene.asset("tree_3") is None and scene.asset("tree_2") is not None  # tree_2 stands nearer the fountain
+
+
+def test_how_long_someone_must_walk_between_two_places_said_before(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit(
+        "my friend comes from the main gate to the library, I want to know how long he must walk")
+    assert report.ok and "60.9" in (report.answer or "")

@@ -212,6 +212,8 @@ _ANY_NEAREST = re.compile(r"\b(?:(?:whatever|anything|something|the (?:thing|obj
                           r"(?:nearest|closest)|the (?:nearest|closest) (?:thing|object|item|prop))\b")
 # The one furthest from something: "the tree furthest from the library", "the lamp farthest away from the ego".
 FURTHEST = re.compile(r"\b(?:furthest|farthest|most distant)(?: away)? from\b")  # "furthest east" is a side, not this
+# The one of several there further from the place: "the tree by the fountain that's further away", "the far one".
+_FURTHER_ONE = re.compile(r"\b(?:further|farther) (?:away|off|out|back)\b|\bthe (?:far|farther|further|more distant) one\b")
 _FURTHEST_FROM = re.compile(r"\s*(?:that is |which is |that's )?" + FURTHEST.pattern)  # right after the thing named
 # Backing a thing up with the thing said between: "back that SUV up 3 metres", "back it up a bit".
 _BACK_IT_UP = re.compile(r"\bback (?:(?:it|them|that|this|the|our|my|[a-z]+_\d+)\s+)(?:[a-z]+\s+){0,2}?up\b")
@@ -575,6 +577,10 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         count = None
     elif not mention.plural:
         count = count or 1
+    if r.landmark and _FURTHER_ONE.search(r.low):  # "the tree by the fountain that's further away": the far one of those there
+        there = _at_place(scene, r.landmark, [a.id for a in scene.assets if a.category == name], reach=SCOPE_RADIUS_M)
+        if len(there) >= 2:
+            return [ToolCall(tool="remove_assets", args={"assets": there[::-1][: count or 1]})]
     point = _point_of(r, scene, memory) if FURTHEST.search(r.low) else None
     if point is not None:  # "the tree furthest from the library": the Worker ranks by nearness only
         far = sorted((a.id for a in scene.assets if a.category == name), key=lambda i: -_distance_to(scene, i, point))

@@ -267,6 +267,11 @@ def places_called(scene: Scene, word: str) -> list[str]:
     return [lm.name for lm in scene.landmarks if any(ph.tokens(ph.normalise(n))[-1:] == [word] for n in lm.names())]
 
 
+# Any place of a kind, left to choose: "near any building", "by the nearest entrance", "to a gate".
+_ANY_OF_KIND = re.compile(r"\b(near|by|next to|beside|to|at|outside|in front of|in)\s+(?:any|an?|the nearest|the closest|whichever)\s+(?:[a-z]+\s+)?"
+                          r"(building|entrance|gate|crossing|crosswalk|car park|lot)\b")
+
+
 # A compass end or part of a road: "the southern end of Campus Drive", "the north part of the road".
 _ROAD_PART = re.compile(r"\b(north|south|east|west)(?:ern)?\s+(end|half|part|stretch|section|bit)\s+of\b")
 
@@ -524,6 +529,13 @@ def location(
     coords = ph.find_coordinates(r.text)
     if coords is not None:
         return {"relation": "absolute", "x": coords[0], "y": coords[1]}
+    any_one = _ANY_OF_KIND.search(r.low)
+    mover = scene.asset(exclude[0]) if exclude else None
+    places = [] if any_one is None or mover is None else [lm.name for b in scene.buildings if (lm := scene.landmark(f"{b.name} entrance"))] \
+        if any_one.group(2) == "building" else places_called(scene, any_one.group(2))  # a building: by its entrance
+    if mover is not None and len(places) >= 2:  # "move the bench near any building": the one nearest it
+        nearest = min(places, key=lambda p: math.dist(scene.landmark(p).position, (mover.pose.x, mover.pose.y)))  # type: ignore[union-attr]
+        return {"relation": relation_of(r.low), "target": nearest}
     of_place = (r.landmark and re.search(r"\b(?:middle|centre) of (?:the )?(?!scene|map|world|campus)[a-z]", r.low)) or re.search(
         r"\b(?:middle|centre) of (?:the |a |that |this )?(?:pavement|sidewalk|footpath|path|road|street|lane|crossing|crosswalk|junction"
         r"|walkway|driveway|entrance|lot|car park|way)\b", r.low)  # "the middle of the pavement" is no centre of the map

@@ -64,7 +64,7 @@ _PREPOSITION = re.compile(r"\b(?:to|from|of)\b")
 _WAY = r"which way|what way|(?:which|what) direction"
 # A journey's length asked with "how long" ("how long is the walk from A to B", "how long a drive is it
 # from the gate to lot B"): a distance, not a thing's length.
-_JOURNEY = re.compile(r"\bhow long (?:\w+ ){0,6}?(?:walk|walking|drive|driving|ride|cycle|journey|trip)\b(?: \w+){0,3}? (?:from|to|between)\b")
+_JOURNEY = re.compile(r"\bhow long (?:\w+ ){0,6}?(?:walk|walking|drive|driving|ride|cycle|journey|trip)\b")
 _DISTANCE = re.compile(rf"{_JOURNEY.pattern}|"
                        r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|"
                        rf"{_WAY}|"  # the distance says the way too
