@@ -40,7 +40,7 @@ BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s|too|so|very|rather
                         r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|quit|g[ei]t rid(?: of)?|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|tow (?:\w+ ){1,3}?away\b|take (?:\w+ ){1,3}?out\b(?! of\b)|(?:has|have|needs?|must|should|ought) to come (?:down|out)\b(?! (?:of|from|to|onto|into)\b)|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
-    r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)(?!\s+an?\s+(?!single\b))|fewer|less|lose|eliminate|erase|discard|scrap"
+    r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)(?!\s+an?\s+(?!single\b))|fewer|less(?! in the way| of an? (?:obstacle|problem|nuisance|hazard|eyesore))|lose|eliminate|erase|discard|scrap"
     r"|strike (?=(?:the|that|those|these|all|both|it|them|every|most|some|half|one|two|three|\d+)\b)"  # "strike the set": off the stage
     r"|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cull\w*|prun(?:e|es|ed|ing)\b|weed(?:s|ed|ing)? (?:\w+ )?out"  # "them trees want thinning out"
     # "the rubble must not appear in the run", "the bin shouldn't be there": it should be gone
@@ -105,7 +105,7 @@ _HEDGE = r"(?:a\s?bit|a little|a touch|slightly|somewhat|mildly|just a bit|a tad
 WEATHER_HEDGED = re.compile(rf"\b{_HEDGE}\s+(?:of\s+)?{_WEATHER_WORD}"
                             rf"|\b{_WEATHER_WORD}[\s,]+(?:\w+[\s,]+){{0,3}}?{_HEDGE}(?!\s+(?:more|harder|heavier|stronger|thicker))\b")
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
-FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less|(?:do|does|did)(?:n't| not) (?:\w+ ){0,3}need (?:quite |nearly )?(?:so|as|that) (?:much|many)|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cut down on|reduce)\b")
+FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less(?! in the way| of an? (?:obstacle|problem|nuisance|hazard|eyesore))|(?:do|does|did)(?:n't| not) (?:\w+ ){0,3}need (?:quite |nearly )?(?:so|as|that) (?:much|many)|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cut down on|reduce)\b")
 # How many of them to keep: "keep just two", "leave one of them" (the amount is group 1).
 # "one is plenty", "two of them would be enough": as many kept as that.
 KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)"

@@ -238,3 +238,18 @@ def test_how_long_someone_must_walk_between_two_places_said_before(campus, regis
     report = Session(campus, RulePlanner(), registry).submit(
         "my friend comes from the main gate to the library, I want to know how long he must walk")
     assert report.ok and "60.9" in (report.answer or "")
+
+
+def test_a_thing_named_as_a_label_before_what_to_do_with_it(campus, registry):
+    scene = ruled(campus, registry, "bench: rotate 180. bin: 1 m north").scene
+    before, after = campus.asset("trash_bin_1").pose, scene.asset("trash_bin_1").pose
+    assert after.y - before.y == pytest.approx(1.0, abs=0.05) and abs(after.x - before.x) < 0.05
+    assert abs(abs(scene.asset("bench_1").pose.yaw - campus.asset("bench_1").pose.yaw) - math.pi) < 0.05
+    assert ruled(campus, registry, "weather: fog").scene.environment.weather.kind == "fog"  # a setting's label stays one
+
+
+def test_less_in_the_way_is_somewhere_else_never_fewer(campus, registry):
+    for said in ("the hydrant, somewhere less in the way", "move the bench somewhere less in the way"):
+        session = Session(campus, RulePlanner(), registry)
+        session.submit(said)
+        assert {a.id for a in session.scene.assets} >= {a.id for a in campus.assets}, said

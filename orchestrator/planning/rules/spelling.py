@@ -653,6 +653,17 @@ _LEFT_AS_IT_IS = re.compile(r"(?:^|(?<=[.;!?,]\s)|(?<=\band\s)|(?<=\bbut\s))(?:(
                             r"(?:(?:the|that|this|those|these|our|my|both|all)\s+)?(?:[a-z0-9_]+\s+){0,3}?"
                             r"(?:where (?:it|they) (?:is|are|was|were|stands?)|alone|as (?:it|they) (?:is|are)|be|in place|untouched|as is)\b"
                             r"(?:\s*[.,;!]+)?(?:\s*(?:and|but)\b)?\s*", re.IGNORECASE)
+# A thing named as a label before what to do with it, as terse notes put it: "bin: 1 m north", "bench: rotate 180".
+_THING_LABEL = re.compile(r"(?:^|(?<=[.;!?]\s))[ \t]*([a-z][a-z_0-9 ]{1,24}?)[ \t]*:[ \t]*(?=\S)", re.IGNORECASE | re.MULTILINE)
+
+
+def _thing_labelled(m: re.Match[str]) -> str:
+    """"bin: 1 m north" as "the bin, 1 m north" when the label names one thing (else as written: "note: ...")."""
+    label = m.group(1).strip()
+    one = len(ph.find_categories(f" {ph.normalise(label)} ")) == 1 and len(label.split()) <= 3
+    return f"the {label}, " if one or re.fullmatch(r"[a-z]+_\d+", label.lower()) or label.lower() in ph.EGO_WORDS else m.group(0)
+
+
 def without_left_as_it_is(text: str) -> str:
     """`text` without its clauses that leave a thing as it is ("Leave the bin where it is."), unless
     that is all it says."""
@@ -1192,6 +1203,7 @@ def repair(text: str, scene: Scene) -> Repaired:
         # "weather fog, intensity light": a line that qualifies the one before joins it; others are requests of their own
         lines = [(key.strip().lower(), _KEY_LINE.sub(r"\1 ", line).strip()) for key, line in zip(keyed, text.strip().splitlines(), strict=True)]
         text = lines[0][1] + "".join((", " if key in _QUALIFIER_KEYS else ". ") + line for key, line in lines[1:])
+    text = _THING_LABEL.sub(_thing_labelled, text)  # "bin: 1 m north", "ego: 8 m/s": the thing, then what of it
     text = _DOTTED_MERIDIEM.sub(lambda m: f"{m.group(1).lower()}m", text)  # "8 a.m. and ...": 8 am
     text = _formal_forms(text, vocab)
     text = _ROUGHLY.sub(r"about \1", text)  # "cones round the rubble, six-ish": about six
