@@ -182,6 +182,9 @@ _HEDGED_VERBS = ("add|put|drop|place|move|make|set|remove|take|get|give|turn|pai
 _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will|might) (?:you|we|i)\b|^\s*please\b(?!\s*,?\s*(?:where|what|which|how|who|is there|are there)\b)"
                      # "could there be a couple of people at the stop?": a wish for what should be there
                      r"|(?:^|[.!;,\-\u2013\u2014]\s*)(?:can|could) (?:there|someone|somebody) be\b"
+                     # "could someone wander across the north crossing?": someone asked to do it, not whether anyone is
+                     r"|(?:^|[.!;,\-\u2013\u2014]\s*)(?:can|could|would) (?:someone|somebody|anyone|anybody) (?:please |maybe |just )?"
+                     r"(?:walk|wander|stroll|amble|cross|run|jog|stand|wait|drive|ride|cycle|go|come|head|pull|park)\b"
                      # "maybe drop a car by the library?": a suggestion, hedged
                      # (any sentence of it: "Let the ego race around. Maybe slow it down a bit?"), and a command hedged
                      # after it ("angle it a bit, maybe?") or put as a dare ("would it kill you to add a bin?")
@@ -237,6 +240,8 @@ _REASON = re.compile(
     # "... so nobody drives into it", ", to keep cars off the forecourt": who is kept from what, why
     r"|,?\s+so\s+(?:nobody|no one|nothing|no cars?|no traffic|everyone|everybody|drivers|cars|traffic)\s+[a-z']+\b[^.;!?]*"
     r"|,?\s+(?:to|so as to|in order to)\s+(?:keep|stop|prevent|protect|warn|calm|avoid|ensure)\s+[^.;!?]*"
+    # "... across the crossing while the kids watch": what goes on meanwhile is no part of the request
+    r"|,?\s+while\s+(?:the|a|an|our|my|some|everyone|everybody|people|they|we|i|you)\b[^.;!?,]*(?=[.;!?]|$)"
     # "... on the road to slow people down": who is slowed is no thing asked for
     r"|,?\s+(?:to|so as to|in order to)\s+slow\s+(?:down\s+)?(?:the\s+)?(?:people|drivers|cars|traffic|vehicles|everyone|everybody)\b[^.;!?]*",
     re.IGNORECASE,
@@ -495,7 +500,12 @@ def without_reason(text: str) -> str:
     later = _BECAUSE.search(text)
     if later is not None and len(text[: later.start()].split()) >= 2:  # "since when ..." asks
         text = _BECAUSE.sub("", text)
-    return _REASON.sub("", text)
+    return _AUDIENCE.sub(r"\1", _REASON.sub("", text))
+
+
+# Who a thing is shown or pointed out to ("anything worth showing the kids near the fountain?"): no thing asked about.
+_AUDIENCE = re.compile(r"\b(show(?:s|ing)?|point(?:s|ing)? out to|tell(?:s|ing)?)\s+(?:the|our|my|his|her|their|some)\s+"
+                       r"(?:kids|children|visitors|guests|people|group|students|tourists|class|folks|passengers|team|crowd)\b")
 
 
 # The person saying the scene must stay as it is ("no edits", "don't touch anything", "just

@@ -253,3 +253,12 @@ def test_less_in_the_way_is_somewhere_else_never_fewer(campus, registry):
         session = Session(campus, RulePlanner(), registry)
         session.submit(said)
         assert {a.id for a in session.scene.assets} >= {a.id for a in campus.assets}, said
+
+
+def test_someone_asked_to_cross_while_others_watch_and_what_is_shown_to_whom(campus, registry):
+    scene = ruled(campus, registry, "could someone wander across the north crossing while the kids watch?").scene
+    assert [a.behaviour.kind for a in _of(scene, "pedestrian")] == ["cross_road"]
+    report = Session(campus, RulePlanner(), registry).submit("anything worth showing the kids near the fountain?")
+    assert report.ok and "tree_2" in (report.answer or "")  # the things there, not the kids it is for
+    report = Session(campus, RulePlanner(), registry).submit("is someone walking near the library?")
+    assert report.ok and report.answer is not None  # whether anyone is stays a question
