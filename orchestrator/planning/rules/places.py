@@ -273,7 +273,7 @@ _ANY_OF_KIND = re.compile(r"\b(near|by|next to|beside|to|at|outside|in front of|
 
 
 # A compass end or part of a road: "the southern end of Campus Drive", "the north part of the road".
-_ROAD_PART = re.compile(r"\b(north|south|east|west)(?:ern)?\s+(end|half|part|stretch|section|bit)\b(?!\s+of\s+(?:the\s+)?(?:lot|car park|parking|quad|campus|map|scene)\b)")
+_ROAD_PART = re.compile(r"\b(north|south|east|west)(?:ern)?\s+(end|half|part|stretch|section|bit)\b(?!\s+of\s+(?:the\s+)?(?:lot|car park|parking|quad|campus(?! drive)|map|scene)\b)")
 
 
 def _road_part(scene: Scene, lane: Lane, compass: str, end: bool, lane_said: str | None) -> dict[str, Any]:
