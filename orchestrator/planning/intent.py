@@ -158,7 +158,7 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    # "see if it is foggy", "see whether there are cones": whether a thing is so ("see if you can
                    # move it" asks for the moving)
                    # "for my notes I need the bench nearest the ego", "the log wants the car closest to it": which one is
-                   r"|\b(?:need|needs|want|wants|require|requires|after)\s+the\s+(?:[a-z_]+\s+){1,3}?(?:nearest|closest|furthest|farthest)\b"
+                   r"|(?<!n't )(?<!not )(?<!longer )\b(?:need|needs|want|wants|require|requires|after)\s+the\s+(?:[a-z_]+\s+){1,3}?(?:nearest|closest|furthest|farthest)\b"
                    r"(?![^.;!?]*\b(?:moved|put|placed|brought|taken|to be|painted|gone|removed)\b)"
                    r"|\bsee (?:wh?ether|if) (?!(?:you|u|we|i)\b)|\bremind (?:me|us) (?:again )?(?:what|which|where|how|wh?ether|if)\b"
                    # doubt about what is so: "I was wondering if there's a bin", "can't remember whether I parked it
