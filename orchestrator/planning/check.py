@@ -72,6 +72,7 @@ from drivetwin.orchestrator.planning.coverage import (
     place_dropped,
     place_moved,
     possessed_added,
+    trouble_added,
     unknown_places,
     unknown_things,
     unnamed_added,
@@ -499,6 +500,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
            if not (c in counted and any(a.category in counted for a in scope.touched))]
     out += [f"you referred to the {c.replace('_', ' ')} already there, but the plan adds another"
             for c in definite_but_added(request.masked, scope, scene)]
+    out += trouble_added(request.masked, scope, scene)
     out += [f"you asked which {c.replace('_', ' ')}, but the plan changes the scene" for c in asked_which_but_changed(request.masked, scope)]
     if not request.question:
         out += environment_left_out(request.low, effect.calls)

@@ -24,6 +24,7 @@ from drivetwin.orchestrator.planning.intent import (
     ADD_WORDS,
     ASKED_ABOUT,
     BARE_STATE,
+    FEWER_WORDS,
     FORBIDDEN,
     HABITUAL,
     HOW_THINGS_GO,
@@ -609,6 +610,27 @@ _PART_SAID = re.compile(r"\b(?:some|a few|a couple|several|a handful|most|half|f
 _THINNED = re.compile(r"\bthin\w*\b(?: \w+)? out\b|\bthin(?:ned)? (?:down|the)\b")
 
 
+# A thing said to stand in the way ("there's a tree blocking the view of the library"): the one there, a trouble.
+_IN_THE_WAY = re.compile(r"\bthere(?:'s| is| are)\s+(?:a|an|some|one|two|the)\s+(?:[a-z]+\s+){0,2}?(?P<thing>[a-z]+)\s+"
+                         r"(?:blocking|in the way|obstructing|hiding|covering|in front of|spoiling|ruining)\b")
+
+
+def trouble_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
+    """Kinds the words say stand in the way, of which the plan adds one beside one already there
+    (where it puts the new one, the old one stands: that one was meant)."""
+    out = []
+    for said in _IN_THE_WAY.finditer(masked):
+        kinds = {m.category for m in ph.find_categories(f" {said.group('thing')} ")}
+        beside = {a.category for a in scope.added if a.category in kinds and any(
+            b.category == a.category and math.dist((a.pose.x, a.pose.y), (b.pose.x, b.pose.y)) <= IN_THE_WAY_M for b in scene.assets)}
+        out += [f"you said the {k.replace('_', ' ')} there is in the way, but the plan adds another" for k in sorted(beside)]
+    return out
+
+
+# How near a thing said to be in the way a new one of its kind must go for the words to mean the one there.
+IN_THE_WAY_M = 20.0
+
+
 def all_when_some(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """A kind the words take only part of ("take away some trees", "thin them out", "every car in
     lot B bar one") of which the plan removes every one there is."""
@@ -618,6 +640,9 @@ def all_when_some(masked: str, scope: Scope, scene: Scene) -> list[str]:
     every = {c for c, n in removed.items() if n == scene.count(c)}
     if (KEEP_SOME.search(masked) or _THINNED.search(masked)) and every == set(removed) and len(scope.removed) >= 2:
         return [f"you asked to keep some, but the plan removes all {len(scope.removed)}"]  # "all the cars in lot B bar one"
+    if FEWER_WORDS.search(masked) and not re.search(r"\b(?:all|every|each|none|any more|anymore)\b", masked) \
+            and every == set(removed) and len(scope.removed) >= 2:
+        return [f"you asked for fewer, but the plan removes all {len(scope.removed)}"]  # "we don't need so many lamps"
     partly = {m.category for m in named_in(masked) if _PART_SAID.search(" ".join(m.last_words(3)))}
     return [f"you asked to keep some of the {c.replace('_', ' ')}s, but the plan removes all {removed[c]}"
             for c in sorted(every & partly) if removed[c] >= 2]

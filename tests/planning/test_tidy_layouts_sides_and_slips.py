@@ -262,3 +262,21 @@ def test_someone_asked_to_cross_while_others_watch_and_what_is_shown_to_whom(cam
     assert report.ok and "tree_2" in (report.answer or "")  # the things there, not the kids it is for
     report = Session(campus, RulePlanner(), registry).submit("is someone walking near the library?")
     assert report.ok and report.answer is not None  # whether anyone is stays a question
+
+
+def test_fewer_is_never_all_and_all_is_never_one(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    session.submit("we don't need so many street lights")
+    assert len(_of(session.scene, "street_light")) >= 1  # some go, never every one
+    assert _of(ruled(campus, registry, "too many trees, get rid of them all").scene, "tree") == []
+
+
+def test_a_thing_said_to_be_in_the_way_is_never_added_beside_the_one_there(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("there's a tree blocking the view of the library")
+    assert not report.ok and len(_of(session.scene, "tree")) == 4
+    # where none of its kind stands, the words describe the scene wanted
+    ego = campus.asset("ego").pose
+    (car,) = [a for a in ruled(campus, registry, "there's a car blocking the road ahead of the ego").scene.assets
+              if a.category == "passenger_car" and a.id not in {"passenger_car_1", "passenger_car_2"}]
+    assert math.dist((car.pose.x, car.pose.y), (ego.x, ego.y)) < 30

@@ -571,7 +571,7 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         if in_scope <= left:
             return None
         count = in_scope - left
-    elif fewer:
+    elif fewer and not r.has(("all", "every", "every one")):  # "too many trees, get rid of them all": all
         count = count or 1
     elif gone or r.has(("all", "every", "none", "no more")):
         count = None
