@@ -280,3 +280,9 @@ def test_a_thing_said_to_be_in_the_way_is_never_added_beside_the_one_there(campu
     (car,) = [a for a in ruled(campus, registry, "there's a car blocking the road ahead of the ego").scene.assets
               if a.category == "passenger_car" and a.id not in {"passenger_car_1", "passenger_car_2"}]
     assert math.dist((car.pose.x, car.pose.y), (ego.x, ego.y)) < 30
+
+
+def test_the_other_side_of_a_thing_is_as_far_past_it(campus, registry):
+    bench, bin_ = campus.asset("bench_1").pose, campus.asset("trash_bin_1").pose
+    moved = ruled(campus, registry, "put the bin on the other side of the bench").scene.asset("trash_bin_1").pose
+    assert math.dist((moved.x, moved.y), (2 * bench.x - bin_.x, 2 * bench.y - bin_.y)) < 1.0

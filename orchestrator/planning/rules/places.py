@@ -267,6 +267,24 @@ def places_called(scene: Scene, word: str) -> list[str]:
     return [lm.name for lm in scene.landmarks if any(ph.tokens(ph.normalise(n))[-1:] == [word] for n in lm.names())]
 
 
+# The far side of a thing from the one moved: "on the other side of the bench", "to the opposite side of the bin".
+_OTHER_SIDE_OF = re.compile(r"\b(?:on|to|round to|over to)\s+the\s+(?:other|opposite|far)\s+side\s+of\s+")
+
+
+def _mirrored(scene: Scene, exclude: list[str], after: str) -> tuple[float, float] | None:
+    """Where the thing moved would stand as far past the one thing named in `after` as it stands
+    before it now; None unless a thing is moved and one thing there is named (a road is no thing)."""
+    mover = scene.asset(exclude[0]) if exclude else None
+    named = ph.find_categories(f" {after} ")
+    if mover is None or not named or named[0].start > 8:
+        return None
+    there = [a for a in scene.assets if a.category == named[0].category and a.id != mover.id]
+    if len(there) != 1:
+        return None
+    pivot = there[0].pose
+    return 2 * pivot.x - mover.pose.x, 2 * pivot.y - mover.pose.y
+
+
 # Any place of a kind, left to choose: "near any building", "by the nearest entrance", "to a gate".
 _ANY_OF_KIND = re.compile(r"\b(near|by|next to|beside|to|at|outside|in front of|in)\s+(?:any|an?|the nearest|the closest|whichever)\s+(?:[a-z]+\s+)?"
                           r"(building|entrance|gate|crossing|crosswalk|car park|lot)\b")
@@ -529,6 +547,10 @@ def location(
     coords = ph.find_coordinates(r.text)
     if coords is not None:
         return {"relation": "absolute", "x": coords[0], "y": coords[1]}
+    other_side = _OTHER_SIDE_OF.search(r.low)
+    mirror = _mirrored(scene, exclude, r.low[other_side.end() :]) if other_side is not None else None
+    if mirror is not None:  # "put the bin on the other side of the bench": as far past it, the other way
+        return {"relation": "absolute", "x": round(mirror[0], 2), "y": round(mirror[1], 2)}
     any_one = _ANY_OF_KIND.search(r.low)
     mover = scene.asset(exclude[0]) if exclude else None
     places = [] if any_one is None or mover is None else [lm.name for b in scene.buildings if (lm := scene.landmark(f"{b.name} entrance"))] \
