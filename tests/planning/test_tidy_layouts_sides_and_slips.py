@@ -286,3 +286,10 @@ def test_the_other_side_of_a_thing_is_as_far_past_it(campus, registry):
     bench, bin_ = campus.asset("bench_1").pose, campus.asset("trash_bin_1").pose
     moved = ruled(campus, registry, "put the bin on the other side of the bench").scene.asset("trash_bin_1").pose
     assert math.dist((moved.x, moved.y), (2 * bench.x - bin_.x, 2 * bench.y - bin_.y)) < 1.0
+
+
+def test_how_far_away_the_closest_thing_is_is_measured_from_the_ego(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("how far away is the closest tree")
+    assert report.ok and report.plan is not None
+    (step,) = report.plan.calls
+    assert step.args == {"category": "tree", "nearest_to": "ego"} and "tree_1" in (report.answer or "")

@@ -293,6 +293,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         if measured is not None:
             return measured
     nearest = _NEAREST.search(low)
+    if nearest is not None and nearest.group(0) == "how far" and (closest := _NEAREST.search(low, nearest.end())) is not None:
+        nearest = closest  # "how far away is the closest tree": the closest one, then how far
     if nearest is not None:
         anchor = _anchor_after(r, scene, nearest.end(), back, prefer_preposition=True)
         head = next((m for m in r.mentions if m.start >= nearest.end()), None)
@@ -301,6 +303,8 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
             # "where's the nearest bin": nearest the asker, not itself; "the closest bin too the stop": the stop
             later = [e for pos, e in _entities(r, scene, back) if pos > head.end and e.name != anchor.name]
             anchor = later[0] if later else Anchor("asset", EGO_ID)
+        if anchor is None and head is not None and right_after:
+            anchor = Anchor("asset", EGO_ID)  # "how far away is the closest tree": from the car the scene is seen from
         if anchor is not None:
             return _nearest(r, scene, anchor, furthest=nearest.group("furthest") is not None)
     # "stop signs on Campus Drive", "is anything parked on Campus Drive": what stands on that road
