@@ -660,7 +660,8 @@ _THING_LABEL = re.compile(r"(?:^|(?<=[.;!?]\s))[ \t]*([a-z][a-z_0-9 ]{1,24}?)[ \
 def _thing_labelled(m: re.Match[str]) -> str:
     """"bin: 1 m north" as "the bin, 1 m north" when the label names one thing (else as written: "note: ...")."""
     label = m.group(1).strip()
-    one = len(ph.find_categories(f" {ph.normalise(label)} ")) == 1 and len(label.split()) <= 3
+    said = ph.find_categories(f" {ph.normalise(label)} ")  # the label is the thing's name and no more ("lead car: slower" is not)
+    one = len(said) == 1 and f" {ph.normalise(label)} "[said[0].start : said[0].end].strip() == ph.normalise(label).strip()
     return f"the {label}, " if one or re.fullmatch(r"[a-z]+_\d+", label.lower()) or label.lower() in ph.EGO_WORDS else m.group(0)
 
 
