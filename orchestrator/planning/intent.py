@@ -182,6 +182,8 @@ _HEDGED_VERBS = ("add|put|drop|place|move|make|set|remove|take|get|give|turn|pai
 _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will|might) (?:you|we|i)\b|^\s*please\b(?!\s*,?\s*(?:where|what|which|how|who|is there|are there)\b)"
                      # "could there be a couple of people at the stop?": a wish for what should be there
                      r"|(?:^|[.!;,\-\u2013\u2014]\s*)(?:can|could) (?:there|someone|somebody) be\b"
+                     # "could it maybe have another car next to it?": a wish for it (not "could it have been moved?")
+                     r"|(?:^|[.!;,\-\u2013\u2014]\s*)(?:can|could) (?:it|they|we) (?:maybe |perhaps |please |just )?have (?!been\b|gone\b|moved\b)"
                      # "could someone wander across the north crossing?": someone asked to do it, not whether anyone is
                      r"|(?:^|[.!;,\-\u2013\u2014]\s*)(?:can|could|would) (?:someone|somebody|anyone|anybody) (?:please |maybe |just )?"
                      r"(?:walk|wander|stroll|amble|cross|run|jog|stand|wait|drive|ride|cycle|go|come|head|pull|park)\b"

@@ -293,3 +293,11 @@ def test_how_far_away_the_closest_thing_is_is_measured_from_the_ego(campus, regi
     assert report.ok and report.plan is not None
     (step,) = report.plan.calls
     assert step.args == {"category": "tree", "nearest_to": "ego"} and "tree_1" in (report.answer or "")
+
+
+def test_waiting_to_get_on_it_is_beside_it_and_a_wish_put_as_could_it_have(campus, registry):
+    scene = ruled(campus, registry, "add a bus at the east gate", "now some people should be waiting to get on it").scene
+    (bus,) = _of(scene, "bus")
+    assert all(math.dist((p.pose.x, p.pose.y), (bus.pose.x, bus.pose.y)) < 12 for p in _of(scene, "pedestrian"))
+    scene = ruled(campus, registry, "add a car in lot A", "sorry, it looks lonely - could it maybe have another car parked next to it?").scene
+    assert len(_of(scene, "passenger_car")) == 2 + 2

@@ -169,7 +169,8 @@ _OFF_SIDEWALK = re.compile(r"\b(?:off|away from|clear of|not on) (?:of )?(?:the 
 # A relation to what an earlier clause of the prompt adds: "a rover at the gate and a sign next to it".
 _GOES_WITH = re.compile(r"\bto (?:go (?:along )?with|match|pair with|accompany)\s+(?:it|them|him|her)\b")
 BY_IT = re.compile(rf"\b(?:next to|beside|by|near|behind|in front of|ahead of|alongside|around|opposite|(?:left|right) of)\s+(?:it|them|him|her)\b"
-                   rf"|{_GOES_WITH.pattern}")  # "a bin to go with it": beside it
+                   rf"|{_GOES_WITH.pattern}"  # "a bin to go with it": beside it
+                   r"|\b(?:to |waiting to )?(?:get|getting|climb|climbing|board|boarding)\s+(?:on|onto|into|in|aboard)?\s*(?:it|them)\b")  # "waiting to get on it"
 # "There" after a turn that put things somewhere: beside the one of them within this of its focus.
 THERE_BESIDE_M = 6.0
 
