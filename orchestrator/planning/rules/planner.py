@@ -470,11 +470,10 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     verb = _VERB_AT.search(low) or _WISHED.search(low)  # "I need a barrier and a roadworks sign there": both wished for
     # "5 cones in a line at the west crosswalk and 2 barriers at the north crosswalk": each counted and placed, two requests
     second = _COUNTED_AND.search(clause, verb.end()) if verb is not None else None
-    if second is not None and (said := ph.find_categories(clause[: second.start()])):
+    if second is not None and (noun := _first_noun(clause[: second.start()])):
         first, rest = clause[: second.start()], clause[second.end() :]
         if not ph.find_categories(rest):  # "3 cones at the main gate and 2 at the east gate": 2 cones
             amount = re.match(r"\s*(?:a couple of|a few|\S+)", rest)
-            noun = ph.normalise(first)[said[0].start : said[0].end].strip()
             rest = f"{rest[: amount.end()]} {noun}{rest[amount.end() :]}" if amount else rest
         if _PLACE_TAIL.search(first) and _PLACE_TAIL.search(rest) and ph.find_categories(rest):
             return [first, f"{clause[: verb.end()]} {rest}"]
@@ -489,9 +488,8 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
             parts.append(clause[start : cut.start()])
             start = cut.end()
     parts.append(clause[start:])
-    said = ph.find_categories(parts[0])
-    if said:  # "two cones at the main gate and another two at the east gate": more of the same thing
-        noun = ph.normalise(parts[0])[said[0].start : said[0].end].strip()  # the text find_categories indexes
+    noun = _first_noun(parts[0])
+    if noun:  # "two cones at the main gate and another two at the east gate": more of the same thing
         parts[1:] = [_ONE_OF.sub(lambda m: f"{m.group(1)} {noun}", _MORE_OF.sub(lambda m: f"{m.group(0)} {noun}", p, count=1), count=1)
                      if not ph.find_categories(p) else p for p in parts[1:]]
     if len(parts) < 2 or not all(ph.find_categories(p) or ph.has_any(p.lower(), ph.EGO_WORDS)
@@ -509,6 +507,12 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     if where is not None and not any(_PLACE_TAIL.search(p) or ASSET_ID.search(p) for p in parts[:-1]):
         parts[:-1] = [f"{p} {where.group(1)}" for p in parts[:-1]]  # "put a bench and a bin by the union": both by it
     return [parts[0], *(f"{lead} {p}" for p in parts[1:])]
+
+
+def _first_noun(text: str) -> str:
+    """The words naming the first thing `text` names, as said ("cones"); "" when it names none."""
+    said = ph.find_categories(text)
+    return ph.normalise(text)[said[0].start : said[0].end].strip() if said else ""  # the text find_categories indexes
 
 
 def _own_words(kind: str, head: str) -> set[str]:
@@ -1279,8 +1283,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
     # The removal words the plan check reads polarity by ("take it out", "without the bin") count too.
     less_of = next((m for m in r.mentions if _LESS_OF_A_KIND.match(r.low[m.end :])), None)  # "make the SUV less flashy"
     how_it_is = less_of is not None
-    wanted = [c for c in COLOURS if re.search(rf"\b{c}\b", r.low) and c not in md.NOT_THAT_COLOUR.findall(r.low)]
-    if less_of is not None and not wanted:  # "less flashy", "less red": what it should not be
+    if less_of is not None and not md.colours_asked(r.low):  # "less flashy", "less red" (a colour not wanted is none asked)
         # what it should be less of is said, and not what it should be: never a guess (nor fewer of them)
         thing = less_of.category.replace("_", " ")
         raise PlanningError(f"I can tell how the {thing} should not be, not how it should; say a colour or finish, "
