@@ -145,6 +145,8 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"|ids?|identifiers?|asset ids?) of\b(?![^.?!]*:)|"
                    r"'s (?:pose|position|coordinates|location|whereabouts|heading)(?!\s+(?:should|must|needs?|has|is to|ought|will|would|can|could|to)\b)|"
                    r"(?:write|note|jot|put) (?:it )?down (?:what|which|where|how|whether|if)|"  # "asked me to write down which lane ..."
+                   # "I must record where those bikes were left", "point out the closest tree": said, shown, never moved
+                   r"(?:note|record|log|mark) (?:where|which|what|how many)|point(?:s|ing)? out (?:the|which|what|where)|"
                    # "I'd like to confirm there are no cars in it", "just want to be sure there isn't one": verifying
                    r"(?:confirm|verify|double[- ]check|be (?:sure|certain)) (?:which|what|where|how)\b|"  # "kindly confirm which lane ..."
                    r"(?:confirm|verify|double[- ]check|be (?:sure|certain)) (?:that |wh?ether |if )?(?:there (?:is|are|was|were|'s)|"

@@ -301,3 +301,12 @@ def test_waiting_to_get_on_it_is_beside_it_and_a_wish_put_as_could_it_have(campu
     assert all(math.dist((p.pose.x, p.pose.y), (bus.pose.x, bus.pose.y)) < 12 for p in _of(scene, "pedestrian"))
     scene = ruled(campus, registry, "add a car in lot A", "sorry, it looks lonely - could it maybe have another car parked next to it?").scene
     assert len(_of(scene, "passenger_car")) == 2 + 2
+
+
+def test_pointing_out_or_noting_a_thing_is_a_question_never_a_move(campus, registry):
+    for said in ("please point out the nearest bench to the ego", "I must note where the cars were left"):
+        session = Session(campus, RulePlanner(), registry)
+        report = session.submit(said)
+        assert report.ok and report.answer and session.scene == campus, said
+    # a verb's own "out" is never "out of": "take out the bin" takes it away
+    assert _of(ruled(campus, registry, "take out the bin").scene, "trash_bin") == []

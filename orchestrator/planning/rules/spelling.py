@@ -813,6 +813,9 @@ def _marker_off(text: str) -> str:
 # Words voice typing writes for their sound-alikes, where the words around them leave no doubt:
 # "too buses" (two), "buy the union" (by), "turn it won eighty" (one), "all the lamps accept the
 # south ones" (except), "a stop sine" (sign).
+# Verbs whose own particle is "out" ("point out the tree", "take out the bin"): no "out of" after them.
+_OUT_VERBS = ("point", "pick", "single", "thin", "space", "spread", "lay", "set", "find", "check", "sort", "take", "clear", "figure",
+              "work", "hand", "rule", "knock", "wipe", "cut", "leave", "shut", "keep", "carry", "print", "read", "call", "mark", "fan")
 _SOUND_ALIKES = (
     (re.compile(r"\bbuy(?= (?:the|a|an|that|this|those|these)\b)", re.IGNORECASE), "by"),
     (re.compile(r"^witch(?= (?:lane|one|way|car|side|road|street|of|is)\b)", re.IGNORECASE), "which"),
@@ -832,7 +835,9 @@ _SOUND_ALIKES = (
     # "between the too traffic lights", "add too cones": "too" before a plural thing is two
     (re.compile(r"\b(the|add|put|place|those|these|remove|move|all) too(?! (?:many|much|few|little|far)\b)(?= (?:[a-z]+ )?[a-z]+s\b(?! (?:is|are)\b))", re.IGNORECASE), r"\1 two"),
     # "ahead the AV", "in front the bench": of dropped
-    (re.compile(r"\b(ahead|in front|instead|out) (?=the|our|my|it|them|that|this)\b", re.IGNORECASE), r"\1 of "),
+    # ("get it out the lot": out of it; never a verb's own "out": "point out the tree", "take out the bin", "thin out the cones")
+    (re.compile(r"\b(ahead|in front|instead|" + "".join(f"(?<!{v} )" for v in _OUT_VERBS) + r"out) (?=the|our|my|it|them|that|this)\b",
+                re.IGNORECASE), r"\1 of "),
     # "get rid o' the bench": of
     (re.compile(r"\bo'(?=\s)", re.IGNORECASE), "of"),
     # "in front of are car", "behind are ego": our, as no verb stands after a preposition
