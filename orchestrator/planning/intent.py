@@ -245,7 +245,7 @@ _REASON = re.compile(
     r"|,?\s+so\s+(?:nobody|no one|nothing|no cars?|no traffic|everyone|everybody|drivers|cars|traffic)\s+[a-z']+\b[^.;!?]*"
     r"|,?\s+(?:to|so as to|in order to)\s+(?:keep|stop|prevent|protect|warn|calm|avoid|ensure)\s+[^.;!?]*"
     # "... across the crossing while the kids watch": what goes on meanwhile is no part of the request
-    r"|,?\s+while\s+(?:the|a|an|our|my|some|everyone|everybody|people|they|we|i|you)\b[^.;!?,]*(?=[.;!?]|$)"
+    r"|,?\s+while\s+(?:the|a|an|our|my|some|everyone|everybody|people|they)\b[^.;!?,]*(?=[.;!?]|$)"
     # "... on the road to slow people down": who is slowed is no thing asked for
     r"|,?\s+(?:to|so as to|in order to)\s+slow\s+(?:down\s+)?(?:the\s+)?(?:people|drivers|cars|traffic|vehicles|everyone|everybody)\b[^.;!?]*",
     re.IGNORECASE,

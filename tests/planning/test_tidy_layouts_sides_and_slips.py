@@ -310,3 +310,17 @@ def test_pointing_out_or_noting_a_thing_is_a_question_never_a_move(campus, regis
         assert report.ok and report.answer and session.scene == campus, said
     # a verb's own "out" is never "out of": "take out the bin" takes it away
     assert _of(ruled(campus, registry, "take out the bin").scene, "trash_bin") == []
+
+
+def test_people_said_to_lack_somewhere_to_sit_or_throw_things_get_one(campus, registry):
+    jtekt = next(lm for lm in campus.landmarks if lm.name == "JTEKT building entrance").position
+    scene = ruled(campus, registry, "visitors keep asking where they can sit while I talk about the JTEKT building").scene
+    (new,) = [b for b in _of(scene, "bench") if b.id != "bench_1"]
+    assert math.dist((new.pose.x, new.pose.y), jtekt) < 10 and _of(scene, "pedestrian") == []
+    scene = ruled(campus, registry, "students have nowhere to throw their cups by the library").scene
+    assert len(_of(scene, "trash_bin")) == 2 and _of(scene, "pedestrian") == []
+
+
+def test_a_bare_place_with_something_asked_for_it_offers_what_to_add(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("the library entrance is too empty, put something nice there")
+    assert report.question is not None and len(report.question.readings) >= 2

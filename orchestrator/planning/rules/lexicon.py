@@ -94,11 +94,11 @@ BEHAVIOUR_WORDS: dict[str, tuple[str, ...]] = {
 # Mass or collective nouns for catalog things: the words a person uses, not the catalog's.
 CONCEPTS: dict[str, tuple[str, ...]] = {
     "tree": ("greenery", "vegetation", "shrub", "shrubs", "bush", "bushes", "foliage", "palm"),
-    "bench": ("somewhere to sit", "to sit", "sit down", "seat", "seats", "chairs", "chair"),  # not "sit" said of a thing ("the car should sit")
+    "bench": ("somewhere to sit", "to sit", "can sit", "sit down", "seat", "seats", "chairs", "chair"),  # not "sit" said of a thing ("the car should sit")
     "construction_sign": ("warn", "warned", "warning", "warning sign", "heads-up"),
     "road_barrier": ("fence off", "cordon off", "barriers", "block the road", "block off"),
     "pedestrian": ("foot traffic", "crowd", "passers-by", "someone", "somebody", "anyone", "anybody", "guy"),
-    "trash_bin": ("rubbish", "litter", "garbage", "wrappers", "somewhere to throw"), "passenger_car": ("traffic",),  # after "foot traffic"
+    "trash_bin": ("rubbish", "litter", "garbage", "wrappers", "to throw"), "passenger_car": ("traffic",),  # after "foot traffic"
 }
 # Collective nouns that state a count by themselves: "a pair of" is two, "a row of" is not one.
 COLLECTIVE_COUNTS = {"pair": 2, "couple": 2, "few": 3, "handful": 4, "bunch": 5, "lot": 6, "lots": 6, "load": 6, "loads": 6, "plenty": 6, "heaps": 6,

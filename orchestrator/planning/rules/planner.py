@@ -683,8 +683,9 @@ class RulePlanner:
         empty near the fountain"); None for any other request."""
         low = ph.normalise(prompt)
         if not BARE_STATE.search(low) or ph.find_categories(low) or asks(low.strip()) or LIVELIER.search(low) \
-                or any(commands(part) for part in re.split(r"[,.;!]+|\band\b|\bso\b", low)):
-            return None  # "main street feels deserted, make it livelier": the request says what to do
+                or any(commands(part) and not re.search(r"\b(?:something|some things|stuff|anything)\b", part)
+                       for part in re.split(r"[,.;!]+|\band\b|\bso\b", low)):
+            return None  # "main street feels deserted, make it livelier": the request says what to do ("put something there" does not)
         place = find_place(context.scene, low)
         where = f" near the {place[0]}" if place is not None else ""
         readings = self._offered([f"add {offer}{where}" for offer in _FILLERS_OFFERED], context)

@@ -450,7 +450,7 @@ def used_as_verb(low: str, start: int, end: int) -> bool:
 
 
 # Concept words that name one person or thing, not a crowd or a mass ("somewhere to sit" is one bench).
-_ONE_THING = ("someone", "somebody", "guy", "somewhere to sit", "to sit", "sit down", "seat", "chair", "somewhere to throw", "shrub",
+_ONE_THING = ("someone", "somebody", "guy", "somewhere to sit", "to sit", "can sit", "sit down", "seat", "chair", "to throw", "shrub",
               "bush", "palm", "warning", "warning sign")
 
 # A wish said of someone with the thing wished for after it ("the students could use somewhere to
@@ -708,7 +708,8 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:
     """Whether a mention asks for a new asset ("a cone") rather than names one there ("the cone")."""
-    if add_verb or re.search(r"\b(?:somewhere|something|nowhere|nothing)\b(?:\s+[\w'-]+){0,5}\s*$", reading.low[: mention.end]):
+    if add_verb or re.search(r"\b(?:somewhere|something|nowhere|nothing|where (?:they|people|we|you|one|kids|students) (?:can|could|might))\b"
+                             r"(?:\s+[\w'-]+){0,5}\s*$", reading.low[: mention.end]):
         return True  # "somewhere to sit" asks for a new one, as "a seat" does; "nowhere to sit" lacks one
     words = ph.tokens(reading.low[: mention.start])
     for k in range(len(words) - 1, max(-1, len(words) - 4), -1):
