@@ -324,3 +324,15 @@ def test_people_said_to_lack_somewhere_to_sit_or_throw_things_get_one(campus, re
 def test_a_bare_place_with_something_asked_for_it_offers_what_to_add(campus, registry):
     report = Session(campus, RulePlanner(), registry).submit("the library entrance is too empty, put something nice there")
     assert report.question is not None and len(report.question.readings) >= 2
+
+
+def test_at_a_thing_and_on_its_side_and_a_kind_of_place_said_as_the_subject(campus, registry):
+    bench = campus.asset("bench_1").pose
+    (cone,) = _of(ruled(campus, registry, "put a cone at the bench").scene, "traffic_cone")
+    assert math.dist((cone.pose.x, cone.pose.y), (bench.x, bench.y)) < 4
+    ego = campus.asset("ego").pose
+    (bike,) = _of(ruled(campus, registry, "I want to see how the ego handles a cyclist on its right").scene, "bicycle")
+    left = -(bike.pose.x - ego.x) * math.sin(ego.yaw) + (bike.pose.y - ego.y) * math.cos(ego.yaw)
+    assert left < -0.5  # on its right
+    report = Session(campus, RulePlanner(), registry).submit("the crossing needs someone waiting to cross")
+    assert report.question is not None and "crossing" in report.question.text

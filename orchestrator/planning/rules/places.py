@@ -121,7 +121,7 @@ def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str], memory: 
     objects = [i for i in relation_objects(r) if i not in exclude]
     if objects:
         return objects[0]  # "place trash_bin_1 next to bench_1": by that one
-    said = sorted((pos, word) for words in [*(w for w, _ in RELATIONS), ("near", "nearby")] for word in words
+    said = sorted((pos, word) for words in [*(w for w, _ in RELATIONS), ("near", "nearby", "at the")] for word in words
                   if (pos := r.low.find(f" {word} ")) >= 0)
     for pos, word in said:
         later = [m for m in r.mentions if m.start > pos]
@@ -694,7 +694,9 @@ def location(
         return None
     found: dict[str, Any] = {"relation": relation_of(r.low), "target": target}
     metres = ph.find_distance(r.text)
-    hand = _SIDE_OF_WAY.search(r.low)
+    hand = _SIDE_OF_WAY.search(r.low) or re.search(r"\bon (?:its|his|her|their) (left|right)\b", r.low)
+    if hand is not None and found["relation"] in ("at", "next_to") and scene.asset(target) is not None:
+        found["relation"] = f"{hand.group(1)}_of"  # "a cyclist on its right": beside it, that side
     if hand is not None and found["relation"] in ("in_front_of", "behind") and scene.asset(target) is not None:
         # "a bike 10 m ahead of the ego on the left side": counted along its way, at that edge
         along = metres if metres is not None else SIDE_AHEAD_M

@@ -1114,8 +1114,8 @@ _SAME_PACE = re.compile(r"\b(?:(?:the )?same speed|same pace|at (?:our|its|the e
 # A request that only says what not to do: "don't move the SUV", "please do not paint the bench".
 _ONLY_FORBIDS = re.compile(r"^\s*(?:please\s+)?(?:don'?t|do not|never|no need to)\s+(?:move|touch|paint|remove|delete|add|put|change|turn|"
                            r"rotate|park|drive|shift|place|recolou?r)\b[^,;.!?]*[.!]?\s*$", re.IGNORECASE)
-_THE_KIND = re.compile(r"\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+"
-                       r"(?P<said>the\s+(?:[a-z]+\s+)?(?P<kind>[a-z]+))\b")
+_THE_KIND = re.compile(r"(?:\b(?:by|near|next to|beside|at|outside|in front of|behind|opposite|to|around|from)\s+|^\s*)"
+                       r"(?P<said>the\s+(?:[a-z]+\s+)?(?P<kind>[a-z]+))\b")  # ("the crossing needs someone waiting": the subject)
 
 
 # How far a shade goes: towards black for darker, towards white for lighter.
