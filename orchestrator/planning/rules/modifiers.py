@@ -140,7 +140,7 @@ def groups_said(text: str) -> dict[str, frozenset[str]]:
 
 # A layout said by its shape; "stop line" and "lane line" are road markings, not layouts.
 _LAYOUT = re.compile(r"(?<!stop )(?<!lane )\b(line|row|ring|circle|grid|lattice|matrix|side by side|next to each other|avenue|queue|wall(?=s? of)"
-                     r"|single file|semi-?circle|half[- ]circle)s?\b")
+                     r"|single file|semi-?circle|half[- ]circle|zig-?zag|slalom)s?\b")
 
 
 # Setting a thing in motion: "get the suv moving", "start the truck rolling" (not a pick of moving ones).
@@ -173,7 +173,7 @@ def layout_said(text: str) -> str | None:
         return "grid"
     # an avenue: trees in a line; a lattice: a grid
     return {"side by side": "row", "next to each other": "row", "avenue": "line", "lattice": "grid", "matrix": "grid", "queue": "line",
-            "wall": "line", "single file": "line", "semicircle": "ring", "semi-circle": "ring", "half circle": "ring",
+            "wall": "line", "single file": "line", "zigzag": "line", "zig-zag": "line", "slalom": "line", "semicircle": "ring", "semi-circle": "ring", "half circle": "ring",
             "half-circle": "ring"}.get(said.group(1), said.group(1))
 
 
