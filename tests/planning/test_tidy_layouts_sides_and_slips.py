@@ -336,3 +336,9 @@ def test_at_a_thing_and_on_its_side_and_a_kind_of_place_said_as_the_subject(camp
     assert left < -0.5  # on its right
     report = Session(campus, RulePlanner(), registry).submit("the crossing needs someone waiting to cross")
     assert report.question is not None and "crossing" in report.question.text
+
+
+def test_a_zigzag_of_cones_is_a_line_ahead(campus, registry):
+    cones = _of(ruled(campus, registry, "arrange cones in a zigzag in front of the ego").scene, "traffic_cone")
+    ego = campus.asset("ego").pose
+    assert len(cones) >= 3 and all((c.pose.x - ego.x) * math.cos(ego.yaw) + (c.pose.y - ego.y) * math.sin(ego.yaw) > 2 for c in cones)
