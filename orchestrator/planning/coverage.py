@@ -640,7 +640,7 @@ def all_when_some(masked: str, scope: Scope, scene: Scene) -> list[str]:
     every = {c for c, n in removed.items() if n == scene.count(c)}
     if (KEEP_SOME.search(masked) or _THINNED.search(masked)) and every == set(removed) and len(scope.removed) >= 2:
         return [f"you asked to keep some, but the plan removes all {len(scope.removed)}"]  # "all the cars in lot B bar one"
-    if FEWER_WORDS.search(masked) and not re.search(r"\b(?:all|every|each|none|any more|anymore)\b", masked) \
+    if FEWER_WORDS.search(masked) and not re.search(r"\b(?:all|every|each|none|any more|anymore|couple|few|one|two|three|four|five|\d+)\b", masked) \
             and every == set(removed) and len(scope.removed) >= 2:
         return [f"you asked for fewer, but the plan removes all {len(scope.removed)}"]  # "we don't need so many lamps"
     partly = {m.category for m in named_in(masked) if _PART_SAID.search(" ".join(m.last_words(3)))}

@@ -212,6 +212,8 @@ _ANY_NEAREST = re.compile(r"\b(?:(?:whatever|anything|something|the (?:thing|obj
                           r"(?:nearest|closest)|the (?:nearest|closest) (?:thing|object|item|prop))\b")
 # The one furthest from something: "the tree furthest from the library", "the lamp farthest away from the ego".
 FURTHEST = re.compile(r"\b(?:furthest|farthest|most distant)(?: away)? from\b")  # "furthest east" is a side, not this
+# Every one of the things said: "get rid of them all", "all of them", "every single one".
+_ALL_OF_THEM = re.compile(r"\b(?:them|those|these|they) all\b|\ball (?:of )?(?:them|those|these)\b|\bevery (?:one|single)\b")
 # The one of several there further from the place: "the tree by the fountain that's further away", "the far one".
 _FURTHER_ONE = re.compile(r"\b(?:further|farther) (?:away|off|out|back)\b|\bthe (?:far|farther|further|more distant) one\b")
 _FURTHEST_FROM = re.compile(r"\s*(?:that is |which is |that's )?" + FURTHEST.pattern)  # right after the thing named
@@ -571,7 +573,7 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         if in_scope <= left:
             return None
         count = in_scope - left
-    elif fewer and not r.has(("all", "every", "every one")):  # "too many trees, get rid of them all": all
+    elif fewer and not _ALL_OF_THEM.search(r.low):  # "too many trees, get rid of them all": all ("it all looks ..." is none of them)
         count = count or 1
     elif gone or r.has(("all", "every", "none", "no more")):
         count = None
