@@ -125,6 +125,8 @@ def _asset_after_relation(r: Reading, scene: Scene, exclude: list[str], memory: 
                   if (pos := r.low.find(f" {word} ")) >= 0)
     for pos, word in said:
         later = [m for m in r.mentions if m.start > pos]
+        if word == "at the" and later and places_called(scene, r.low[later[0].start : later[0].end].split()[-1]):
+            continue  # "at the stop": the one place called that (the bus stop), not the stop sign
         # The thing right after the relation is its object: not one a place or words come between.
         between = r.low[pos + len(word) + 2 : later[0].start] if later else ""
         if not later or len(between.split()) > 3 or pos < r.landmark_at < later[0].start:
