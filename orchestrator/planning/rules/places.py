@@ -696,7 +696,7 @@ def location(
         return None
     found: dict[str, Any] = {"relation": relation_of(r.low), "target": target}
     metres = ph.find_distance(r.text)
-    hand = _SIDE_OF_WAY.search(r.low) or re.search(r"\bon (?:its|his|her|their) (left|right)\b", r.low)
+    hand = _SIDE_OF_WAY.search(r.low)
     if hand is not None and found["relation"] in ("at", "next_to") and scene.asset(target) is not None:
         found["relation"] = f"{hand.group(1)}_of"  # "a cyclist on its right": beside it, that side
     if hand is not None and found["relation"] in ("in_front_of", "behind") and scene.asset(target) is not None:
@@ -717,7 +717,7 @@ _HAND = re.compile(r"\b(left|right)(?:[\s-]hand)?(?:\s+(?:side\s+)?(?:sidewalk|s
 
 
 # A hand said of the way itself: "on the left side", "on the right-hand side of the road" (not "on the left of the bin").
-_SIDE_OF_WAY = re.compile(r"\bon (?:the |its |their )?(left|right)(?:[\s-]hand)?(?: side)?"
+_SIDE_OF_WAY = re.compile(r"\bon (?:the |its |his |her |their )?(left|right)(?:[\s-]hand)?(?: side)?"
                           r"(?: of (?:the |its |their )?(?:road|street|lane|carriageway)\b|(?! of\b))")
 # How far ahead a thing said only by its side goes ("a bike in front of the ego on the left").
 SIDE_AHEAD_M = 10.0

@@ -752,7 +752,7 @@ def _superlative(m: re.Match[str]) -> str:
     said = _comparative_of(m.group(1).lower())
     if said is not None and is_english(said[:-1] + "st"):
         return said[:-1] + "st"
-    size = next((w for w in SIZE_WORDS if w.startswith(m.group(1).lower()[:3]) and w[: len(m.group(1))] == m.group(1).lower()), None)
+    size = next((w for w in SIZE_WORDS if w.startswith(m.group(1).lower())), None)
     return size or m.group(0)
 
 
