@@ -559,8 +559,8 @@ def location(
     places = [] if any_one is None or mover is None else [lm.name for b in scene.buildings if (lm := scene.landmark(f"{b.name} entrance"))] \
         if any_one.group(2) == "building" else places_called(scene, any_one.group(2))  # a building: by its entrance
     if mover is not None and len(places) >= 2:  # "move the bench near any building": the one nearest it
-        nearest = min(places, key=lambda p: math.dist(scene.landmark(p).position, (mover.pose.x, mover.pose.y)))  # type: ignore[union-attr]
-        return {"relation": relation_of(r.low), "target": nearest}
+        closest = min(places, key=lambda p: math.dist(scene.landmark(p).position, (mover.pose.x, mover.pose.y)))  # type: ignore[union-attr]
+        return {"relation": relation_of(r.low), "target": closest}
     of_place = (r.landmark and re.search(r"\b(?:middle|centre) of (?:the )?(?!scene|map|world|campus)[a-z]", r.low)) or re.search(
         r"\b(?:middle|centre) of (?:the |a |that |this )?(?:pavement|sidewalk|footpath|path|road|street|lane|crossing|crosswalk|junction"
         r"|walkway|driveway|entrance|lot|car park|way)\b", r.low)  # "the middle of the pavement" is no centre of the map

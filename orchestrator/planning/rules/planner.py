@@ -470,7 +470,7 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     verb = _VERB_AT.search(low) or _WISHED.search(low)  # "I need a barrier and a roadworks sign there": both wished for
     # "5 cones in a line at the west crosswalk and 2 barriers at the north crosswalk": each counted and placed, two requests
     second = _COUNTED_AND.search(clause, verb.end()) if verb is not None else None
-    if second is not None and (noun := _first_noun(clause[: second.start()])):
+    if verb is not None and second is not None and (noun := _first_noun(clause[: second.start()])):
         first, rest = clause[: second.start()], clause[second.end() :]
         if not ph.find_categories(rest):  # "3 cones at the main gate and 2 at the east gate": 2 cones
             amount = re.match(r"\s*(?:a couple of|a few|\S+)", rest)
