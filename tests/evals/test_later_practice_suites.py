@@ -44,6 +44,7 @@ from drivetwin.evals import (
     practice32_source,
     practice33_source,
     practice34_source,
+    practice35_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -139,6 +140,11 @@ BRIEFS: dict[str, Brief] = {
     # speaker, marathon organiser, nervous first-timer; arrangement (every grade) and the vague and erroneous grades of
     # every task hold 13, the rest 11 or 12.
     "practice34": Brief(340, 11, 11, practice34_source, multi_turn=45, planned=30, compound=20,
+                        weighted_grades=("vague", "erroneous")),
+    # Eight voices: Swedish speaker, Turkish speaker, South African English speaker, itemising accountant, calm yoga
+    # teacher, emergency-drill coordinator, bird-watcher, work-ticket paster; arrangement (every grade) and the vague and
+    # erroneous grades of every task hold 13, the rest 11 or 12.
+    "practice35": Brief(340, 11, 11, practice35_source, multi_turn=45, planned=30, compound=20,
                         weighted_grades=("vague", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
