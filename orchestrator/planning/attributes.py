@@ -53,6 +53,32 @@ STRENGTH_SPLIT = 0.5
 # Words that ask for a look change when a colour is named ("paint the bus red", "make it blue").
 _RECOLOUR = re.compile(r"\b(?:(?:re)?paint|(?:re)?colou?r|spray)(?:s|ed|ing)?\b|\b(?:make|turn|change)\b")
 
+# A thing asked to be another size. No Worker changes a thing's size (each stands at its
+# catalog size), so no plan accounts for it: "make the bench twice as big", "shrink the bus".
+_SIZE = (r"(?:a (?:bit|little|lot) |much |slightly )?(?:bigger|larger|smaller|taller|shorter|wider|narrower|huge|tiny|enormous"
+         r"|(?:twice|three times|\d+ times) (?:as )?(?:big|large|tall|wide|bigger|larger)|(?:half|double) (?:the|its|their) size)")
+_RESIZED = re.compile(rf"\b(?:make|makes|making|turn|get)\s+(?P<thing>[^,.;!?]{{1,40}}?)\s+(?P<size>{_SIZE})"
+                      r"(?=\s*(?:$|[,.;!?]|than\b|please\b|and\b|so\b|now\b|too\b|for\b|instead\b))"
+                      r"|\b(?:resize|rescale|enlarge|shrink|scale up|scale down|upscale)\s+(?P<shrunk>[^,.;!?]{1,40})")
+# What is made longer or wider that is no thing: a layout, a gap, a stretch of time or a place.
+_NO_SIZED_THING = re.compile(r"\b(?:gap|gaps|space|spacing|distance|ring|circle|line|row|queue|crowd|group|cluster|grid|area|zone"
+                             r"|radius|margin|buffer|wait|pause|stop|trip|route|journey|time|rain|snow|fog|storm|lot|lane|road"
+                             r"|street|crossing|crosswalk|view|picture|image|frame)s?\b")
+
+
+def resized(low: str) -> list[str]:
+    """A thing said to become bigger or smaller, which no Worker can do: said plainly."""
+    for m in _RESIZED.finditer(low):
+        thing = ph.normalise(m.group("thing") or m.group("shrunk"))
+        named = ph.find_categories(thing)
+        # the words up to the thing and the one after it: "the gap between the cones", "the cone line"
+        head = re.match(r"\s*\S*", thing[named[0].end :]) if named else None
+        if named and head is not None and not _NO_SIZED_THING.search(thing[: named[0].end] + head.group(0)):
+            size = m.group("size") or "another size"
+            return [f"you asked for the {named[0].category.replace('_', ' ')} to be {size}, but things keep the size they "
+                    "come in; I can move, turn or paint them, or put another kind in their place"]
+    return []
+
 
 def counts_named(masked: str) -> dict[str, int]:
     """The number said right before each category named ("ten people", "4 bins"): how many of

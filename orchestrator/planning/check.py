@@ -31,6 +31,7 @@ from drivetwin.orchestrator.planning.attributes import (
     not_around,
     off_lane,
     off_surface,
+    resized,
     some_of_all,
     weather_strength,
     wrong_counts,
@@ -303,7 +304,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.question and request.about_places and not effect.edits and not looks_up_places:
         out.append("you asked about places, but the plan looks up something else")
     if not request.question and effect.calls and not effect.edits:
-        out.append("you asked for a change, but the plan changes nothing")
+        # "rotate the stop sign to face east" when it does: say what was read, which the scene already has
+        out.append(f"you asked for a change, but the plan ({describe(effect.calls)}) changes nothing: the scene is already that way")
     beside_itself = [c.args["asset"] for c in effect.calls if c.tool == "place_asset" and isinstance(c.args.get("location"), dict)
                      and c.args["location"].get("target") == c.args.get("asset") and c.args["location"].get("relation") in ("at", "next_to")
                      and "distance" not in c.args["location"]]  # "the nearest sidewalk", "2 m in front of where it is" say a place
@@ -601,7 +603,7 @@ def _attributes(request: Request, effect: Effect, scene: Scene) -> list[str]:
                     and not (c.args.get("kind") == now.kind and float(c.args.get("intensity", 1.0)) < now.intensity
                              and said_weaker(request.low))]
         out += [f"you said no {kind}, but the plan sets {kind}" for kind in unwanted]
-    return out + weather_strength(request.low, effect.calls) + denied_set(request.low, effect.calls)
+    return out + weather_strength(request.low, effect.calls) + denied_set(request.low, effect.calls) + resized(request.low)
 
 
 def described_category(text: str, plan_categories: set[str]) -> str | None:

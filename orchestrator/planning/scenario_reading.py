@@ -258,6 +258,10 @@ def _stories(first: str, later: list[tuple[str, float | None]], timing: Timing, 
         for words, gap in later:
             calls = _followed_by(calls, actor, words, gap, scene)
         readings.append((calls, defaults + manoeuvre.defaults + int(timing.vague)))
+    lit = [calls for calls, _ in readings if [c.tool for c in calls] == ["set_light_phases"]]
+    if len(lit) == len(readings) > 1 and len({c[0].args["light"] for c in lit}) == len(lit) and _is_light_request(first) \
+            and (_EVERY_LIGHT.search(first) or all(c[0].args["light"] in first for c in lit)):
+        return [([c for calls in lit for c in calls], max(d for _, d in readings))]  # every light said: all of them at once
     return readings
 
 
@@ -344,12 +348,18 @@ def _first_verb(action: str, strict: bool = True) -> int:
     return min(starts)
 
 
+# Traffic lights said in the plural ("make the traffic lights red", "both signals"): every one of them.
+_EVERY_LIGHT = re.compile(r"\b(?:traffic (?:lights|signals)|signals|(?:both|all|all the) (?:traffic )?(?:lights|signals)"
+                          r"|every (?:traffic )?(?:light|signal))\b")
+
+
 def _lights_meant(action: str, scene: Scene) -> list[AssetInstance]:
-    """The light named by id, else the one the ego meets next (ahead of it, on its right)."""
+    """The light named by id, every light when they are said in the plural, else the one the ego
+    meets next (ahead of it, on its right)."""
     lights = [a for a in scene.assets if a.category == "traffic_light"]
     named = [a for a in lights if a.id in action]
-    if named:
-        return named
+    if named or (lights and _EVERY_LIGHT.search(action)):
+        return named or lights
     ego = scene.asset(EGO_ID)
     if ego is None or not lights:
         if not lights:

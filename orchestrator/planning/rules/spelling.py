@@ -286,6 +286,8 @@ def is_known(word: str, vocab: frozenset[str]) -> bool:
     w = word.lower()
     if w in vocab or w in _pattern_words():
         return True
+    if not is_english(w) and any(w[i] == w[i - 1] and w[:i] + w[i + 1 :] in vocab for i in range(1, len(w))):
+        return False  # "evenning": the evening with a letter typed twice, never "even" with an ending
     for suffix in _SUFFIXES:
         if w.endswith(suffix) and len(w) - len(suffix) >= 3:
             if suffix in ("er", "ers") and english_words() and not is_english(w):
@@ -342,7 +344,14 @@ def _repair_word(word: str, vocab: frozenset[str]) -> str | None:
         if candidate in joined:
             return joined[candidate] + low[len(candidate) :]
     targets = repair_targets(vocab)
-    if low.endswith("s"):  # a plural keeps its plural: "bolards" -> "bollards"
+    # two letters swapped keep every letter typed: "trese" is trees and "trhee" three, never a tree
+    # (the first letter kept: "evry" is every, not "very")
+    swapped = {form for t in targets if abs(len(t) - len(low)) <= 2 for form in (t, t + "s", t + "es")
+               if len(form) == len(low) and form[0] == low[0] and sorted(form) == sorted(low) and edits(low, form) == 1}
+    if len(swapped) == 1:
+        return swapped.pop()
+    whole = _nearest_by_edits(low, targets)
+    if low.endswith("s") and not (whole is not None and edits(low, whole) <= 1):  # a plural keeps its plural: "bolards" -> "bollards"
         stem = _closest(low[:-1], difflib.get_close_matches(low[:-1], targets, n=1, cutoff=REPAIR_CUTOFF), targets)
         if stem is not None:
             return stem + ("" if stem.endswith("s") else "s")
@@ -568,6 +577,9 @@ def _closest(low: str, close: list[str], targets: tuple[str, ...]) -> str | None
         picked: str | None = by_edits
     else:
         picked = close[0] if close else None
+    if picked is not None and picked[0] != low[0]:  # "evry tree": every, as near as "very" and its first letter kept
+        kept = [t for t in targets if t[0] == low[0] and edits(low, t) <= edits(low, picked)]
+        picked = kept[0] if len(kept) == 1 else picked
     # a word that decides whether things come or go is repaired to only from a slip that keeps its first letter
     # ("remvoe" is remove; "respawn" is no despawn): a guess there turns the whole request round
     return None if picked is not None and picked in _polarity_words() and picked[0] != low[0] else picked
@@ -972,6 +984,40 @@ def _thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "", 
     return thing + ("es" if thing.endswith(("s", "sh", "ch", "x")) else "s") if many else thing
 
 
+@cache
+def _two_word_names() -> frozenset[str]:
+    return frozenset(name.lower() for cat in catalog().values() for name in cat.words if len(name.split()) == 2)
+
+
+@cache
+def _two_word_things() -> dict[str, frozenset[str]]:
+    """The first word of each two-word thing name and the words that end them ("traffic": cone,
+    light, signal); names that open with a grammar word ("my car") or with the end of another
+    name ("light pole": "the light pale blue") are left out."""
+    ends: dict[str, set[str]] = {}
+    lasts = {name.split()[1] for name in _two_word_names()}
+    for first, last in (name.split() for name in _two_word_names()):
+        if first not in lx.GRAMMAR and first not in lasts and len(last) >= 3:
+            ends.setdefault(first, set()).add(last)
+    return {first: frozenset(words) for first, words in ends.items()}
+
+
+def _name_end_slip(word: str, before: str) -> str | None:
+    """The end of a two-word thing name one slip from `word`, said right after the name's first
+    word, even when the slip is an English word ("traffic cons": traffic cones, never traffic);
+    None after a whole name ("the street light pale") or when two ends are as near."""
+    low = word.lower()
+    said = re.search(r"(?:\b([a-z]+) )?\b([a-z]+) $", before.lower())
+    if said is None or len(low) < 3 or low in COLOURS or low in lx.GRAMMAR:
+        return None
+    ends = _two_word_things().get(said.group(2), frozenset())
+    if not ends or low in ends or low.removesuffix("s") in ends or f"{said.group(1)} {said.group(2)}" in _two_word_names():
+        return None
+    near = {end + "s" if low.endswith("s") and edits(low, end + "s") <= 1 else end for end in ends
+            if edits(low, end) <= 1 or edits(low, end + "s") <= 1}
+    return near.pop() if len(near) == 1 else None
+
+
 def _colour_slip(word: str, before: str, after: str, vocab: frozenset[str]) -> str | None:
     """The colour one slip from `word` where a colour is asked for, even when the slip is an English
     word: "make it blu instead", "paint the bench gren" (a word of the vocabulary stays)."""
@@ -1196,6 +1242,25 @@ _COMPASS_AFTER = re.compile(r"\bthe (crossing|crosswalk|gate|car park|parking lo
                             r"(north|south|east|west)(?:ern)?(?:\s+(?:side|end|one))?\b(?!\s+(?:of|side of)\b)", re.IGNORECASE)
 
 
+# "in font of the library": one slip from "in front of", though "font" is a word
+_IN_FRONT_SLIP = re.compile(r"\bin ([a-z]{4,6}) of\b", re.IGNORECASE)
+
+
+def _in_front(m: re.Match[str]) -> str:
+    return "in front of" if edits(m.group(1).lower(), "front") == 1 else m.group(0)
+
+
+# "half past seen in the evening": after "half past" or "a quarter to" only an hour is said
+_HOUR_SLOT = re.compile(r"\b((?:half|quarter|\d{1,2}|twenty|ten|five) past|(?:half|quarter) to) ([a-z]{3,6})\b", re.IGNORECASE)
+_HOURS = ("one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve")
+
+
+def _hour_slip(m: re.Match[str]) -> str:
+    said = m.group(2).lower()
+    near = [hour for hour in _HOURS if edits(said, hour) == 1]
+    return f"{m.group(1)} {near[0]}" if said not in _HOURS and len(near) == 1 else m.group(0)
+
+
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
@@ -1219,7 +1284,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _AFTER_A_NUMBER_WORD.sub(lambda m: m.group(1) + _unit_slip(m.group(2), early), text)
     text = spelt_measures(_NUMBER_SLIP.sub(lambda m: _NUMBER_SLIPS[m.group(1).lower()], _sound_alikes(text)))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
-    text = _WHERE_SLIP.sub("where", text)
+    text = _HOUR_SLOT.sub(_hour_slip, _IN_FRONT_SLIP.sub(_in_front, _WHERE_SLIP.sub("where", text)))
     text = _WHETHER_SLIP.sub("whether", text)
     text = _STRENGTH_AFTER.sub(lambda m: f"{m.group('strength')} {m.group('weather')}", text)
     text = _PASSIVE_LAYOUT.sub(lambda m: f"{_LAYOUT_BASE[m.group('verb').lower()]}{' off' if m.group('off') else ''} {m.group('thing')}", text)
@@ -1295,7 +1360,7 @@ def repair(text: str, scene: Scene) -> Repaired:
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
         slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :], _place_phrases(scene)) \
-            or _place_word_slip(word, text[: m.start()], vocab, scene) or _colour_slip(word, text[: m.start()], text[m.end() :], vocab)
+            or _name_end_slip(word, text[: m.start()]) or _place_word_slip(word, text[: m.start()], vocab, scene) or _colour_slip(word, text[: m.start()], text[m.end() :], vocab)
         if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away; "the east gait"; "make it blu"
             repairs.append(f"{word} -> {slip}")
             return slip
@@ -1312,7 +1377,8 @@ def repair(text: str, scene: Scene) -> Repaired:
             # "pul the two cars from lot B": as near "pull" as "put", which would turn the request round; never guessed
             new = None if len([v for v in near if edits(word.lower(), v) == best]) > 1 else min(
                 near, key=lambda v: edits(word.lower(), v)) if near else new
-        if new is not None and new not in _thing_words() and _THING_SLOT.search(text[: m.start()]):
+        if new is not None and new.removesuffix("s") not in _thing_words() and new.removesuffix("es") not in _thing_words() \
+                and _THING_SLOT.search(text[: m.start()]):  # "remove the trese": trees, a thing's plural
             near = [t for t in _thing_words() if edits(word.lower(), t) <= edits(word.lower(), new)]
             nearest = [t for t in near if edits(word.lower(), t) == min(edits(word.lower(), n) for n in near)]
             # one thing as near as the other word, or one thing nearest: the thing ("all the tress": trees, not metres)
