@@ -305,7 +305,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked about places, but the plan looks up something else")
     if not request.question and effect.calls and not effect.edits:
         # "rotate the stop sign to face east" when it does: say what was read, which the scene already has
-        out.append(f"you asked for a change, but the plan ({describe(effect.calls)}) changes nothing: the scene is already that way")
+        out.append(f"you asked for a change, but the plan ({describe(list(effect.calls))}) changes nothing: the scene is already that way")
     beside_itself = [c.args["asset"] for c in effect.calls if c.tool == "place_asset" and isinstance(c.args.get("location"), dict)
                      and c.args["location"].get("target") == c.args.get("asset") and c.args["location"].get("relation") in ("at", "next_to")
                      and "distance" not in c.args["location"]]  # "the nearest sidewalk", "2 m in front of where it is" say a place
