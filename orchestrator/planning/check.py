@@ -305,7 +305,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("you asked about places, but the plan looks up something else")
     if not request.question and effect.calls and not effect.edits:
         # "rotate the stop sign to face east" when it does: say what was read, which the scene already has
-        out.append(f"you asked for a change, but the plan ({describe(list(effect.calls))}) changes nothing: the scene is already that way")
+        done = "only looks things up" if all(c.tool in QUERY_TOOLS for c in effect.calls) else "changes nothing: the scene is already that way"
+        out.append(f"you asked for a change, but the plan ({describe(list(effect.calls))}) {done}")
     beside_itself = [c.args["asset"] for c in effect.calls if c.tool == "place_asset" and isinstance(c.args.get("location"), dict)
                      and c.args["location"].get("target") == c.args.get("asset") and c.args["location"].get("relation") in ("at", "next_to")
                      and "distance" not in c.args["location"]]  # "the nearest sidewalk", "2 m in front of where it is" say a place
@@ -496,6 +497,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     single = not re.search(r",|;| and | also ", request.low)
     if request.question and single and any(c.tool in ("find_lanes", "find_landmarks") for c in effect.calls):
         named = set()  # "which lane would a car use": the lanes are the topic, the car its setting
+    named -= _setting_kinds(request, effect.calls, scene) if request.question else set()
     counted = counted_kinds(request.low)  # "the second car from the left" may be any kind called a car
     out = [f"you named {c.replace('_', ' ')}, but the plan does nothing with it"
            for c in missing_categories(named, scope, scene)
@@ -689,6 +691,7 @@ def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Sc
     pointed = {m.category for m in ph.find_categories(text)
                if re.search(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z]+\s+){0,2}$", low[: m.start])
                and not _MODIFIES_NEXT.match(said[m.end :])}  # "the student car park": a word said of a place
+    pointed -= _setting_kinds(request, calls, scene)
     if not pointed or not calls or any(c.tool == "describe_environment" for c in calls):
         return None  # "which lane would a car use": a car in general, not one to look up
     said = " ".join(str(c.args) for c in calls).lower()
@@ -696,6 +699,18 @@ def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Sc
     looked |= {a.category for a in scene.all_assets() if re.search(rf"(?<![a-z0-9_]){a.id}(?![0-9])", said)}
     looked |= {c for members in md.groups_said(said.replace("_", " ")).values() for c in members}
     return None if pointed & looked else " or ".join(sorted(pointed)).replace("_", " ")
+
+
+def _setting_kinds(request: Request, calls: tuple[ToolCall, ...], scene: Scene) -> set[str]:
+    """Kinds a question names as its setting: none of them in the scene, when the plan finds the kind
+    said after "which" ("my students wait at the stop: which bench is closest to them?": the students
+    are no pedestrians to look up)."""
+    low = ph.normalise(request.masked)
+    named = ph.find_categories(request.masked)
+    asked = {m.category for m in named if re.search(r"\b(?:which|what)\s+(?:[a-z]+\s+)?$", low[: m.start])}
+    if not any(c.tool == "find_assets" and c.args.get("category") in asked for c in calls):
+        return set()
+    return {m.category for m in named if m.category not in asked and not any(a.category == m.category for a in scene.assets)}
 
 
 def _looked_up(topic: str, said: str, calls: tuple[ToolCall, ...], scene: Scene) -> bool:

@@ -268,6 +268,8 @@ _UNSUPPORTED: tuple[tuple[re.Pattern[str], str], ...] = (
      "a vehicle cannot turn round; it can turn left or right or go straight at the junction, or reverse"),
     (re.compile(r"\b(?:onto|on to|up onto|up on|mounts?|mounting) (?:the )?(?:pavement|sidewalk|kerb|curb|verge|grass)\b"),
      "a vehicle stays on the road; it can brake, change speed, change lanes, cut in, turn at the junction or reverse"),
+    (re.compile(r"\b(?:make|makes|let|lets|have|has|get|gets|send|sends)\b[^,.;!?]{0,40}?\b(?P<said>fly|soar|levitate)\b(?!-?tip)"),
+     "nothing in this world leaves the ground; I can move a thing to a place, or make a vehicle drive or a person walk there"),
     (re.compile(r"\b(?:honk\w*|hoot\w*|sounds? (?:its|the) horn|flash\w* (?:its |the )?(?:head)?lights|signals? left|signals? right)\b"),
      "actors have no horn or indicators in this simulation; they can only move"),
     (re.compile(r"\b(?:crash\w*|collid\w*|smash\w*|ram\w*|slams?) into\b|\b(?:hits?|rear.ends?) the\b"),
@@ -281,7 +283,8 @@ def refuse_unsupported(action: str) -> None:
     for words, instead in _UNSUPPORTED:
         found = words.search(action)
         if found:
-            raise PlanningError(f"I cannot make anything {found.group(0)!r}: {instead}")
+            said = found.groupdict().get("said") or found.group(0)  # "make the tree fly": 'fly'
+            raise PlanningError(f"I cannot make anything {said!r}: {instead}")
 
 
 def asks_unsupported(action: str) -> bool:

@@ -29,6 +29,7 @@ from drivetwin.orchestrator.planning.rules.reading import (
     find_count,
     find_place,
     read,
+    says_oncoming,
 )
 from drivetwin.tools.appearance import COLOURS, hex_colour
 from drivetwin.tools.base import ToolCall
@@ -456,7 +457,8 @@ _NOT_BOTH = re.compile(r"\b(?:don'?t|do not|dont|doesn'?t|does not|no need for|n
 
 def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """remove_assets calls for a clause that asks for removal, or None when it names nothing."""
-    fewer = bool(FEWER_WORDS.search(r.low))
+    # "clear lot B a little": some of what is there, not all of it
+    fewer = bool(FEWER_WORDS.search(r.low)) or (r.has(("clear", "empty", "declutter", "tidy")) and r.has(md.SMALL))
     gone = r.has(lx.GONE_WORDS)
     if r.ids or (r.ego and not r.mentions and not _ANCHOR_BEFORE.search(r.low[: max(r.ego_at, 0)])):
         return [ToolCall(tool="remove_assets", args={"assets": r.ids or ["ego"]})]
@@ -733,8 +735,8 @@ def behaviour_kind(r: Reading, category: Category | None = None) -> str | None:
         ):
             continue
         return kind
-    if category is not None and category.drives and ph.find_speed(r.text):
-        return "drive_lane"  # "a car in front of the ego doing 12 m/s": a speed said is a thing on the move
+    if category is not None and category.drives and (ph.find_speed(r.text) or says_oncoming(r.low)):
+        return "drive_lane"  # "a car in front of the ego doing 12 m/s", "a car coming the other way": a thing on the move
     return None
 
 
@@ -960,7 +962,7 @@ def _turn_for(r: Reading, scene: Scene, thing: AssetInstance, deg: re.Match[str]
     if r.has(("around", "round", "wrong way", "other way", "opposite way", "opposite direction", "flip", "about")):  # "spin the bench round"
         return 180.0
     notes.guess("how far to turn")
-    if r.has(md.SMALL):  # "turn the suv a little to the left": a small turn, that way
+    if r.has(md.SMALL_MOVE):  # "turn the suv a little to the left", "just a touch": a small turn, that way
         return -SMALL_TURN_DEG if r.has(("right", "clockwise")) and not r.has(("anticlockwise", "counterclockwise")) else SMALL_TURN_DEG
     return DEFAULT_SPIN_DEG
 

@@ -171,11 +171,12 @@ _LATE = re.compile(r"(?:\b(?:make it|make the time|and|it's|its|it is|set it|set
                    r"(?=\s*(?:$|[,.;!?]|\b(?:please|pls|now|too|then)\b))")
 
 
-# Street lamps said to be broken ("street lighting failed", "the streetlights are dead"): off.
+# Street lamps said to be broken ("street lighting failed", "the streetlights are dead", "won't be working"): off.
 # ("space the street lights out evenly" lays them out: the lamps stay lit)
 LIGHTS_DOWN = re.compile(r"(?<!space the )(?<!spread the )(?<!lay the )(?<!fan the )"
                          r"\b(?:street ?light(?:s|ing)?|street ?lamps?|lamps|lighting)\s+(?:have |has |is |are )?"
-                          r"(?:failed|failing|out|dead|broken|down|not working|(?:gone|went|are|is) (?:out|dark))\b")
+                          r"(?:failed|failing|out|dead|broken|down|not working|(?:gone|went|are|is) (?:out|dark)"
+                          r"|(?:won'?t|will not|don'?t|do not|aren'?t|are not|can'?t|cannot) (?:be )?(?:working|work|lit|on|come on))\b")
 
 
 # "open the street light", "close the lamps", "kill the lights": switched on or off, as some say it.
@@ -184,7 +185,8 @@ LAMPS_SWITCHED_AS_SAID = re.compile(r"\b(?:open|close|shut|kill)\s+(?:the\s+|all
 
 def lights(r: Reading) -> ToolCall | None:
     """Street or vehicle lights switched on or off, or None."""
-    if LIGHTS_DOWN.search(r.low):  # "street lighting failed", "the lamps are out": off
+    switched_on = re.search(r"\b(?:switch|turn|put|flip)\w*\s+(?:[\w']+\s+){0,3}?on\b", r.low)
+    if LIGHTS_DOWN.search(r.low) and not switched_on:  # "street lighting failed", "the lamps are out": off (unless switched on)
         return ToolCall(tool="set_lighting", args={"street_lights": "off"})
     if not r.has(lx.LIGHTS_WORDS) or r.has(("traffic light", "traffic lights")):
         return None

@@ -168,6 +168,21 @@ PLACE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in
                          r"([a-z][a-z ]{1,30}?)\s*(?:[,.;!?]|$|\b(?:and|please|pls|plz|with|so|for|to|now)\b)")
 # Away from a sidewalk ("shove it somewhere off the sidewalk", "get it off the pavement"): not onto one.
 _OFF_SIDEWALK = re.compile(r"\b(?:off|away from|clear of|not on) (?:of )?(?:the |that |this )?(?:sidewalk|pavement|footpath|kerb|curb)\b")
+# A thing moved off the road with no place said: "move the truck off the carriageway", "get him out of the road".
+_OFF_ROAD = re.compile(r"\b(?:off|out of|clear of) (?:of )?(?:the |that |this |our )?(?:road|roadway|carriageway|street|lane|traffic)\b")
+
+
+def _off_the_road(scene: Scene, mover: AssetInstance) -> dict[str, Any]:
+    """Where a thing moved off the road goes: a vehicle to the nearest parking lot (a place whose
+    spot is on parking), a walker to the sidewalk nearest it."""
+    lots = [lm for lm in scene.landmarks if any(area.kind == "parking" and point_in_polygon(*lm.position, area.polygon)
+                                                for area in scene.roads.paved)]
+    if catalog()[mover.category].motion == "vehicle" and lots:
+        nearest = min(lots, key=lambda lm: math.dist(lm.position, (mover.pose.x, mover.pose.y)))
+        return {"relation": "at", "target": nearest.name}
+    return {"relation": "on_sidewalk", "target": mover.id}
+
+
 # A relation to what an earlier clause of the prompt adds: "a rover at the gate and a sign next to it".
 _GOES_WITH = re.compile(r"\bto (?:go (?:along )?with|match|pair with|accompany)\s+(?:it|them|him|her)\b")
 BY_IT = re.compile(rf"\b(?:next to|beside|by|near|behind|in front of|ahead of|alongside|around|opposite|(?:left|right) of)\s+(?:it|them|him|her)\b"
@@ -678,6 +693,8 @@ def location(
 
         raise PlanningError("I can put things on a sidewalk, in a lane or by a place, but not just 'off the sidewalk'; "
                             "say where it should go instead, e.g. 'next to the bench by the library'")
+    if _OFF_ROAD.search(r.low) and target is None and mover is not None and catalog()[mover.category].motion in ("vehicle", "walker"):
+        return _off_the_road(scene, mover)  # "get the truck off the road": parked in the nearest lot; a walker onto the sidewalk
     if r.has(("sidewalk", "side walk", "pavement", "footpath", "footway", "walkway", "kerb", "curb")) and not _OFF_SIDEWALK.search(r.low):
         metres, relation = ph.find_distance(r.text), relation_of(r.low)
         if target is not None and scene.asset(target) is not None and metres is not None and relation in ("in_front_of", "behind"):

@@ -449,9 +449,15 @@ def _property(r: Reading, scene: Scene, subject: Anchor | None) -> Part:
     return Part(ToolCall(tool="asset_properties", args={"asset": asset}), Anchor("asset", asset))
 
 
+_WHICH_KIND = re.compile(r"\b(?:which|what)\s+(?:[a-z]+\s+)?$")
+
+
 def _nearest(r: Reading, scene: Scene, anchor: Anchor, furthest: bool = False) -> Part:
     """What is nearest the anchor (or `furthest` from it), of the kind asked for: a landmark, a lane, assets."""
-    kind_at = {m.start: m for m in r.mentions}
+    # "my students wait at the stop: which bench is closest to them?": the kind said after "which" is the one asked for
+    asked = [m for m in r.mentions if _WHICH_KIND.search(r.low[: m.start])]
+    mentions = asked[:1] or r.mentions
+    kind_at = {m.start: m for m in mentions}
     lane = _LANE_KIND.search(r.masked)
     kind_word = place_kind_said(r, scene)
     place = _PLACE_KIND.search(r.masked) or (re.search(re.escape(kind_word), r.masked) if kind_word else None)
@@ -474,7 +480,7 @@ def _nearest(r: Reading, scene: Scene, anchor: Anchor, furthest: bool = False) -
             args["query"] = alias
         return Part(ToolCall(tool="find_landmarks", args=args), anchor)
     args = {"furthest_from" if furthest else "nearest_to": anchor.name}
-    category = next((m.category for m in r.mentions if _only_instance(r, scene, m) != anchor.name), None)
+    category = next((m.category for m in mentions if _only_instance(r, scene, m) != anchor.name), None)
     if category is not None:
         args = {"category": category, **args}
     within = _WITHIN.search(r.low)

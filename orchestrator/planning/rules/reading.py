@@ -234,7 +234,13 @@ COUNT_BEFORE_OF = ("lot", "lots", "load")
 # The lane beside the car under test that traffic drives the other way in: "the oncoming lane".
 ONCOMING_WORDS = ("oncoming", "opposing", "opposite", "contraflow", "counterflow")
 _ONCOMING = re.compile(rf"\b(?:{'|'.join(ONCOMING_WORDS)})(?:\s+traffic)?\s+lane\b|\blane\s+(?:of|for|with)\s+oncoming\s+traffic\b"
-                       r"|\boncoming\b|\b(?:coming|driving|heading) (?:the other way|towards (?:us|the ego))\b")  # "traffic coming the other way"
+                       r"|\boncoming\b|\b(?:coming|driving|heading)(?: from)? (?:the other (?:way|direction)|the opposite (?:way|direction)"
+                       r"|towards (?:us|the ego))\b")  # "traffic coming the other way", "a car coming from the other direction"
+
+
+def says_oncoming(low: str) -> bool:
+    """Whether the words put a thing in the ego's oncoming traffic ("a car coming the other way")."""
+    return _ONCOMING.search(low.replace("_", " ")) is not None
 
 
 def oncoming_lane(scene: Scene) -> Lane | None:
@@ -456,7 +462,10 @@ _ONE_THING = ("someone", "somebody", "guy", "somewhere to sit", "to sit", "can s
 # A wish said of someone with the thing wished for after it ("the students could use somewhere to
 # sit", "drivers need a warning").
 _WISHED = re.compile(r"\b(?:could use|could do with|would like|would love|needs?|wants?|deserves?|(?:will |would |shall )?require|requires)\s+"
-                     r"(?=(?:a|an|some|somewhere|something|more|another|extra|new|\d+|two|three|a few|several)\b)")
+                     r"(?=(?:a|an|some|somewhere|something|more|another|extra|new|\d+|two|three|a few|several)\b)"
+                     # "the kids have nowhere to sit", "they will want to sit down": who lacks it is not what is asked
+                     r"|\b(?:want|wants|wanted|would like|need|needs|needed|have|has|had|got)\s+(?:nowhere\s+|no ?where\s+|no place\s+)?"
+                     r"(?=to (?:sit|rest|throw)\b)")
 
 
 def without_beneficiaries(low: str, mentions: list[ph.Mention]) -> list[ph.Mention]:
@@ -708,9 +717,10 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:
     """Whether a mention asks for a new asset ("a cone") rather than names one there ("the cone")."""
-    if add_verb or re.search(r"\b(?:somewhere|something|nowhere|nothing|where (?:they|people|we|you|one|kids|students) (?:can|could|might))\b"
+    if add_verb or re.search(r"\b(?:want|wants|wanted|would like|need|needs|needed)\s+(?:to\s+)?$", reading.low[: mention.start]) \
+            or re.search(r"\b(?:somewhere|something|nowhere|nothing|where (?:they|people|we|you|one|kids|students) (?:can|could|might))\b"
                              r"(?:\s+[\w'-]+){0,5}\s*$", reading.low[: mention.end]):
-        return True  # "somewhere to sit" asks for a new one, as "a seat" does; "nowhere to sit" lacks one
+        return True  # "somewhere to sit" asks for a new one, as "a seat" does; "nowhere to sit", "want to sit down" lack one
     words = ph.tokens(reading.low[: mention.start])
     for k in range(len(words) - 1, max(-1, len(words) - 4), -1):
         word = words[k]
@@ -727,5 +737,5 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
     return not present  # a bare noun: the one there is, if there is one
 
 
-__all__ = ["FIRST_PERSON_EGO", "Reading", "counted_kinds", "find_count", "find_lane", "find_place", "is_new", "labelled", "named_as", "place_kind_said", "read",
+__all__ = ["FIRST_PERSON_EGO", "Reading", "counted_kinds", "find_count", "find_lane", "find_place", "is_new", "labelled", "named_as", "place_kind_said", "read", "says_oncoming",
            "without_order"]

@@ -164,7 +164,7 @@ def is_english(low: str) -> bool:
     words = english_words()
     low = low.replace("'", "")  # "don't" is "dont": a contraction, not a misspelt "donut"
     gerund = low.endswith("ing") and len(low) > 5 and not low[:-3].endswith("e") and (
-        low[:-3] in words or low[:-3] + "e" in words)  # "spacing": WordPiece holds only "space"
+        (low[:-3] in words and len(low) > 6) or low[:-3] + "e" in words)  # "spacing": WordPiece holds only "space"; "raning" is no "ran"
     # ("fornt" is no "for" without its apostrophe, nor "acrosss", a letter typed three times, a plural of "across")
     return low in words or low in _INTERJECTIONS or (low.endswith("nt") and low[:-2] in _NOT_CONTRACTED) or (
         low.endswith("s") and low[:-1] in words and re.search(r"(.)\1\1", low) is None) or gerund
@@ -293,6 +293,8 @@ def is_known(word: str, vocab: frozenset[str]) -> bool:
             if suffix in ("er", "ers") and english_words() and not is_english(w):
                 continue  # "closer" is a word, "coner" a slip for cone: no thing takes "-er"
             stem = w[: -len(suffix)]
+            if suffix in ("ing", "ed") and len(stem) <= 3 and english_words() and not is_english(w):
+                continue  # "raning" is no "ran" with an ending (English says "running"): a slip for "raining"
             if suffix == "s" and stem.endswith("s"):
                 continue  # "buss" is no plural of "bus" ("buses" is)
             doubled = stem[-1:] == stem[-2:-1] and stem[-1:] not in "wxy"  # "running", never "snowwing"
@@ -832,7 +834,9 @@ _SOUND_ALIKES = (
     (re.compile(r"\bbuy(?= (?:the|a|an|that|this|those|these)\b)", re.IGNORECASE), "by"),
     (re.compile(r"^witch(?= (?:lane|one|way|car|side|road|street|of|is)\b)", re.IGNORECASE), "which"),
     # "make the ego break at ten seconds": a vehicle brakes
-    (re.compile(r"\b(ego|car|suv|truck|bus|van|vehicle|it|to|and) break(s?|ing)\b(?! (?:down|up|off|into)\b)", re.IGNORECASE), r"\1 brake\2"),
+    # (a modal between: "the car in front shall break when ...")
+    (re.compile(r"\b((?:ego|car|suv|truck|bus|van|vehicle|front|it|to|and)(?: (?:shall|should|will|must|can|could|would|may|might|then|suddenly))?)"
+                r" break(s?|ing)\b(?! (?:down|up|off|into)\b)", re.IGNORECASE), r"\1 brake\2"),
     # text-speak "r" and "ur", only between the words that make them a verb or a pronoun ("r there", "ur car")
     (re.compile(r"(?<=[a-z] )r(?= (?:there|they|these|those|the|all|any|u|you|we)\b)", re.IGNORECASE), "are"),
     (re.compile(r"\bur(?= (?:car|ego|own)\b)", re.IGNORECASE), "your"),
@@ -884,10 +888,15 @@ def _sound_alikes(text: str) -> str:
     # "too", "tow" or "ate" before things in the plural: "ad too buses", "set out tow bollards", "a row of ate cones"
     text = _DROPPED_AMOUNT.sub(lambda m: f"{m.group('verb')} {_number_dropped().get(m.group('said').lower(), m.group('said'))} " if any(
         c.plural for c in ph.find_categories(m.group("thing"))) else m.group(0), text)
+    # "add tree more of them", "line up tree cones": three (a tree is never counted out before "more" or other things)
+    text = _TREE_AMOUNT.sub(lambda m: f"{m.group('verb')} three" if m.group("thing") is None or (
+        m.group("thing").lower() != "trees" and any(c.plural for c in ph.find_categories(m.group("thing")))) else m.group(0), text)
     return re.sub(r"\b(too|tow|ate)(?= ([a-z]+)\b)", lambda m: _HEARD_NUMBERS[m.group(1).lower()] if any(
         c.plural for c in ph.find_categories(m.group(2))) else m.group(0), text, flags=re.IGNORECASE)
 
 
+_TREE_AMOUNT = re.compile(r"\b(?P<verb>add|put|place|plant|spawn|drop|create|remove|delete|want|need|line up|set up|set out)\s+tree"
+                          r"(?=\s+(?:more\b|(?P<thing>[a-z]+s)\b))", re.IGNORECASE)
 # A number with a letter dropped, in the same place: "add fur pedestrians", "remove thre cones".
 _DROPPED_AMOUNT = re.compile(r"\b(?P<verb>add|put|place|plant|spawn|drop|create|remove|delete|lose|want|need)\s+(?P<said>[a-z]{3,6})"
                              r"\s+(?=(?P<thing>[a-z]+)\b)", re.IGNORECASE)
@@ -1261,6 +1270,12 @@ def _hour_slip(m: re.Match[str]) -> str:
     return f"{m.group(1)} {near[0]}" if said not in _HOURS and len(near) == 1 else m.group(0)
 
 
+# "next to tree_4, just north of lot A": where the thing named by its id stands, said of it, not a
+# second place (the id is the place)
+_ID_PLACED = re.compile(r"(\b[A-Za-z]+(?:_[A-Za-z]+)*_\d+),\s+(?:just |right |directly |a bit |slightly )?(?:north|south|east|west)"
+                        r"(?:[- ]?(?:east|west))?(?:ern)? of (?:the )?[A-Za-z][\w ]*?(?=\s*(?:[,.;!?]|$))", re.IGNORECASE)
+
+
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
@@ -1284,6 +1299,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _AFTER_A_NUMBER_WORD.sub(lambda m: m.group(1) + _unit_slip(m.group(2), early), text)
     text = spelt_measures(_NUMBER_SLIP.sub(lambda m: _NUMBER_SLIPS[m.group(1).lower()], _sound_alikes(text)))  # "two metres" read as "2 metres" by every reader of measures
     text = _GERUND.sub(_verb_of, text)
+    text = _ID_PLACED.sub(r"\1", text)
     text = _HOUR_SLOT.sub(_hour_slip, _IN_FRONT_SLIP.sub(_in_front, _WHERE_SLIP.sub("where", text)))
     text = _WHETHER_SLIP.sub("whether", text)
     text = _STRENGTH_AFTER.sub(lambda m: f"{m.group('strength')} {m.group('weather')}", text)
