@@ -236,6 +236,9 @@ WOULD_HELP = (r"(?:would|could|might|may)(?: \w+ly)? (?:help|do the trick|be (?:
               r"(?=\s*(?:[,.;!?]|$|(?:here|there|too|i think|i reckon|i guess|by|at|near|next to|beside|around|outside|in|on)\b))")
 _REASON = re.compile(
     r",?\s+(?:so that|so as to|in order to|in order that|so)\s+(?![^.;!?]*\b" + WOULD_HELP + ")"
+    # "fog so thick you can barely see": a degree said of the weather or a thing, not a reason after it
+    r"(?!(?:very |really )?(?:thick|dense|heavy|hard|strong|bad|dark|bright|light|thin|much|many|few|little|foggy|misty"
+    r"|wet|cold|low|high|fast|slow|close|far|big|small)\b)"
     r"(?:(?:the |a |our |we |they |it |cars |traffic |people )?(?:[a-z'-]+\s+){0,2}\w*\s*)?"
     # "... so people can rest, and a litter bin beside it": the reason ends where a second thing is asked for
     r"(?:can|could|will|would|may|might|won'?t|can'?t|cannot|doesn'?t|don'?t|has to|have to|gets?|is|are)\b(?:(?!,?\s+and\s+(?:a|an|some|two|three|\d+)\s)[^.;!?])*"

@@ -834,9 +834,10 @@ _SOUND_ALIKES = (
     (re.compile(r"\bbuy(?= (?:the|a|an|that|this|those|these)\b)", re.IGNORECASE), "by"),
     (re.compile(r"^witch(?= (?:lane|one|way|car|side|road|street|of|is)\b)", re.IGNORECASE), "which"),
     # "make the ego break at ten seconds": a vehicle brakes
-    # (a modal between: "the car in front shall break when ...")
-    (re.compile(r"\b((?:ego|car|suv|truck|bus|van|vehicle|front|it|to|and)(?: (?:shall|should|will|must|can|could|would|may|might|then|suddenly))?)"
-                r" break(s?|ing)\b(?! (?:down|up|off|into)\b)", re.IGNORECASE), r"\1 brake\2"),
+    (re.compile(r"\b(ego|car|suv|truck|bus|van|vehicle|it|to|and) break(s?|ing)\b(?! (?:down|up|off|into)\b)", re.IGNORECASE), r"\1 brake\2"),
+    # and after a modal, with nothing broken named after it: "the car in front shall break when ..."
+    (re.compile(r"\b(shall|should|will|must|then|suddenly) break\b(?= *(?:$|[,.;!?]|when|as|if|once|hard|sharply|suddenly|at|before|after"
+                r"|to a stop|for)\b)", re.IGNORECASE), r"\1 brake"),
     # text-speak "r" and "ur", only between the words that make them a verb or a pronoun ("r there", "ur car")
     (re.compile(r"(?<=[a-z] )r(?= (?:there|they|these|those|the|all|any|u|you|we)\b)", re.IGNORECASE), "are"),
     (re.compile(r"\bur(?= (?:car|ego|own)\b)", re.IGNORECASE), "your"),
