@@ -276,9 +276,9 @@ _POINTS_BACK = re.compile(r"\b(it|its|there|them|they|their|that|those|these|thi
 # A label pasted with the request ("JIRA-412: ...", "[QA-7]", "ticket 31:"): it names the task,
 # it is not a number of things or a word to understand.
 _LABEL = re.compile(r"(?:^|(?<=\s))\[?[A-Za-z]{2,}-\d+\]?:?(?=\s|$)|\bticket\s*#?\s*\d+\s*:", re.IGNORECASE)
-# A bug report's parts: "Steps:" heads the request; "Expected: ..." restates its outcome, which is
+# A bug report's parts: "Steps:" or "Summary:" heads the request; "Expected: ..." restates its outcome, which is
 # no second request ("Steps: turn bench_1 90 degrees. Expected: bench turned 90 deg").
-_STEPS = re.compile(r"^\s*(?:steps?(?: to reproduce)?|repro|action|request|task)\s*:\s*", re.IGNORECASE)
+_STEPS = re.compile(r"^\s*(?:steps?(?: to reproduce)?|repro|action|request|task|summary|title|subject)\s*:\s*", re.IGNORECASE)
 _EXPECTED = re.compile(r"(?:^|(?<=[\s.;,]))(?:expected(?: result| outcome| behaviou?r)?|expectation|actual(?: result)?"
                        r"|acceptance(?: criteria)?)\s*:.*$", re.IGNORECASE | re.DOTALL)
 # A tag that turns a request into a question only in form ("let's take it away, shall we?").
@@ -318,8 +318,9 @@ _CONTRAST = re.compile(
     rf"|,?\s+and\s+(?:keep|leave)\s+(?={_DETERMINER}\b[^,.;]*\b(?:as (?:it|they) (?:is|are)|alone|untouched|where (?:it|they) (?:is|are)|in place|be)\b)"
     r"|\s+rather\s+than\s+(?=[a-z])"
     # "remove the cars from lot B, the SUV should stay": what stays is excepted
-    rf"|,\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:(?:should|must|can|will|is to|has to)\s+(?:stay|remain|be left|be kept)"
-    r"|(?:it\s+|they\s+)?(?:stays?|remains?)(?:\s+(?:where|as|put|there|here|please)\b|\s*[.!;]|\s*$))\b)"  # "..., the truck stays", "the truck it stay"
+    # (or a sentence of its own: "Remove passenger_car_1 and passenger_car_2. The SUV stays.")
+    rf"|(?:,|[.;!])\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:(?:should|must|can|will|is to|has to)\s+(?:stay|remain|be left|be kept)"
+    r"|(?:it\s+|they\s+)?(?:stays?|remains?)(?:\s+(?:where|as|put|there|here|please)\b|\s*(?=[.!;])|\s*$))\b)"  # "..., the truck stays", "the truck it stay"
     r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
     re.IGNORECASE,
 )

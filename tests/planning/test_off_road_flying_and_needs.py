@@ -84,3 +84,10 @@ def test_a_thing_moved_off_the_road_goes_somewhere_off_it(campus, registry):
     assert surface_at(campus, car.pose.x, car.pose.y) == "paved"  # parked in a lot, not shifted along the lane
     walker = ruled(campus, registry, "add a pedestrian in the eastbound lane", "move the pedestrian out of the road").scene.asset("pedestrian_1")
     assert surface_at(campus, walker.pose.x, walker.pose.y) == "sidewalk"
+
+
+def test_a_summary_heading_and_a_thing_said_to_stay_in_a_sentence_of_its_own(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("Title: list the lanes on Main Street / Expected: two lanes")
+    assert report.ok and report.plan is not None and [c.tool for c in report.plan.calls] == ["find_lanes"]
+    scene = ruled(campus, registry, "Delete passenger_car_2 and passenger_car_1. Their SUV stays.").scene
+    assert scene.asset("suv_1") is not None and not _of(scene, "passenger_car")
