@@ -70,3 +70,9 @@ def test_traffic_lights_said_in_the_plural_are_all_set(campus, registry):
 def test_a_plan_that_changes_nothing_says_what_it_read(campus, registry):
     report = held(campus, registry, Fixed(call("move_asset", asset="bench_1", forward=0.0)), "leave the bench where it is but face it west")
     assert "move bench_1" in (report.error or "") and "already that way" in (report.error or "")
+
+
+def test_a_three_letter_thing_with_its_last_letter_lost_after_a_or_the(campus, registry):
+    scene = ruled(campus, registry, "could you plant a tre near the library").scene
+    assert len(_of(scene, "tree")) == 5
+    assert spelling.repair("add a van by the gate", campus).text == "add a van by the gate"  # a word read here stays

@@ -1028,6 +1028,16 @@ def _name_end_slip(word: str, before: str) -> str | None:
     return near.pop() if len(near) == 1 else None
 
 
+def _short_thing_slip(word: str, before: str, vocab: frozenset[str]) -> str | None:
+    """A three-letter word after "a" or "the" that is one thing's name with its last letter lost,
+    even when the word list holds it ("plant a tre": a tree); None when it is a word read here."""
+    low = word.lower()
+    if len(low) != MIN_REPAIR_LEN - 1 or is_known(low, vocab) or not re.search(r"\b(?:a|an|the|one|another)\s+$", before.lower()):
+        return None
+    cut = {t for t in _thing_words() if len(t) == len(low) + 1 and t.startswith(low)}
+    return cut.pop() if len(cut) == 1 else None
+
+
 def _colour_slip(word: str, before: str, after: str, vocab: frozenset[str]) -> str | None:
     """The colour one slip from `word` where a colour is asked for, even when the slip is an English
     word: "make it blu instead", "paint the bench gren" (a word of the vocabulary stays)."""
@@ -1377,7 +1387,7 @@ def repair(text: str, scene: Scene) -> Repaired:
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
         slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :], _place_phrases(scene)) \
-            or _name_end_slip(word, text[: m.start()]) or _place_word_slip(word, text[: m.start()], vocab, scene) or _colour_slip(word, text[: m.start()], text[m.end() :], vocab)
+            or _name_end_slip(word, text[: m.start()]) or _short_thing_slip(word, text[: m.start()], vocab) or _place_word_slip(word, text[: m.start()], vocab, scene) or _colour_slip(word, text[: m.start()], text[m.end() :], vocab)
         if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away; "the east gait"; "make it blu"
             repairs.append(f"{word} -> {slip}")
             return slip
