@@ -91,3 +91,10 @@ def test_a_summary_heading_and_a_thing_said_to_stay_in_a_sentence_of_its_own(cam
     assert report.ok and report.plan is not None and [c.tool for c in report.plan.calls] == ["find_lanes"]
     scene = ruled(campus, registry, "Delete passenger_car_2 and passenger_car_1. Their SUV stays.").scene
     assert scene.asset("suv_1") is not None and not _of(scene, "passenger_car")
+
+
+def test_half_of_the_things_on_one_side_is_half_of_those(campus, registry):
+    scene = ruled(campus, registry, "take away half of the lamps on the north side").scene
+    north = [a for a in _of(campus, "street_light") if a.pose.y > 0]
+    left = [a for a in _of(scene, "street_light") if a.pose.y > 0]
+    assert len(left) == len(north) - len(north) // 2 and len(_of(scene, "street_light")) == len(_of(campus, "street_light")) - len(north) // 2

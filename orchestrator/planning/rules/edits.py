@@ -517,8 +517,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     count = find_count(r, mention)
     if count and count >= scene.count(name) > 1 and _VAGUE_PART.search(r.low) and not r.has(("all", "every", "each")):
         count = scene.count(name) - 1  # "too many people there, remove some": some of three is never all three
-    if (count is None and (_HALF.search(r.low[: mention.start]) or _THINNED.search(r.low))) or _HALVED.search(r.low):
-        # "half the trees have to go", "cut them by half", "thin them out": half of them
+    halved = bool((count is None and (_HALF.search(r.low[: mention.start]) or _THINNED.search(r.low))) or _HALVED.search(r.low))
+    if halved:  # "half the trees have to go", "cut them by half", "thin them out": half of them
         count = max(1, len(kept_at(scene, name, r.landmark)) // 2)
     if recent and r.has(("you added", "you just added", "the new", "that", "those")):
         # "remove two of those cones": that many of them, the newest first; "leave one of those": all but one
@@ -549,12 +549,14 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         ids = [a.id for a in scene.assets if a.category == name and road[1](a)]
         if not ids:
             raise ph_error(f"there is no {name.replace('_', ' ')} on {road[0]} to take away")
+        count = max(1, len(ids) // 2) if halved else count  # "half the lamps on Campus Drive": half of those
         return [ToolCall(tool="remove_assets", args={"assets": _some(ids, count, fewer, notes)})]
     side = side_of(r.low, scene)
     if side is not None:  # "the street lights on the north side of Main Street": those there
         ids = [a.id for a in scene.assets if a.category == name and side[1](a)]
         if not ids:
             raise ph_error(f"there is no {name.replace('_', ' ')} on the {side[0]} to take away")
+        count = max(1, len(ids) // 2) if halved else count  # "half the street lights on the south side": three of six
         point = _point_of(r, scene, memory)
         if not mention.plural and count is None and not r.has(("all", "every", "each", "both")) and len(ids) > 1:
             outermost = _outermost(r, scene, mention, ids)  # "the westernmost street light on the north side"
