@@ -98,3 +98,10 @@ def test_half_of_the_things_on_one_side_is_half_of_those(campus, registry):
     north = [a for a in _of(campus, "street_light") if a.pose.y > 0]
     left = [a for a in _of(scene, "street_light") if a.pose.y > 0]
     assert len(left) == len(north) - len(north) // 2 and len(_of(scene, "street_light")) == len(_of(campus, "street_light")) - len(north) // 2
+
+
+def test_a_thing_turned_to_face_away_from_the_road_has_its_back_to_it(campus, registry):
+    bench = ruled(campus, registry, "move the bench next to the bus stop", "have the bench face away from the road").scene.asset("bench_1")
+    assert math.sin(bench.pose.yaw) < -0.9  # the road runs north of the stop: facing south
+    bench = ruled(campus, registry, "move the bench next to the bus stop", "have the bench face the road").scene.asset("bench_1")
+    assert math.sin(bench.pose.yaw) > 0.9

@@ -905,7 +905,9 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None, vague
 # A thing a thing should face: "so it faces the road", "turn it to face the fountain", "facing the ego".
 # The back said to face something: "so its back end faces the road", "rear facing the kerb", "with its back to".
 _BACK_FACES = re.compile(r"\b(?:back|rear|tail|boot|backside)(?:\s+end)?\s+(?:fac(?:e|es|ing)|point(?:s|ing)?)\b")
-_FACES = re.compile(r"\b(?:fac(?:e|es|ing)|point(?:s|ed|ing)?(?:\s+(?:it|them|the\s+\w+|\w+_\d+|ego))?)\s+(?:towards?\s+|onto\s+|at\s+)?"
+# "face away from the road": the other way from it
+_FACES_AWAY = re.compile(r"\b(?:fac(?:e|es|ing)|point(?:s|ed|ing)?|turn(?:s|ed)?)\s+away\s+from\b")
+_FACES = re.compile(r"\b(?:fac(?:e|es|ing)|point(?:s|ed|ing)?(?:\s+(?:it|them|the\s+\w+|\w+_\d+|ego))?)\s+(?:away\s+from\s+|towards?\s+|onto\s+|at\s+)?"
                     r"(?:the\s+)?(?:(?P<road>road|street|lane|traffic|kerb|curb|carriageway)"
                     r"|(?P<ego>ego|our car|my car)|(?P<place>§))")
 
@@ -956,7 +958,7 @@ def _turn_for(r: Reading, scene: Scene, thing: AssetInstance, deg: re.Match[str]
         return -float(deg.group(1)) if right else float(deg.group(1))
     if faced is not None:  # "so it faces the road": towards its nearest point; "its back faces the road": away
         heading = math.degrees(math.atan2(faced[1] - thing.pose.y, faced[0] - thing.pose.x))
-        heading += 180.0 if _BACK_FACES.search(r.masked) else 0.0
+        heading += 180.0 if _BACK_FACES.search(r.masked) or _FACES_AWAY.search(r.masked) else 0.0
         return round((heading - math.degrees(thing.pose.yaw) + 180.0) % 360.0 - 180.0, 1)
     if facing is not None:  # "turned to face north": the turn from where it points now to that compass heading
         east, north = md.COMPASS_VECTORS[facing]
