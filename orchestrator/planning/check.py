@@ -448,6 +448,9 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += _not_the_extreme(request, effect, scene)
     out += _not_the_biggest(request, effect, scene)
     out += _moved_to_turn(request, effect)
+    if _BY_ITSELF.search(request.low):  # "make the bin reverse out of the way by itself": a prop has no motor
+        out += [f"a {a.category.replace('_', ' ')} cannot move by itself; I can move it where you say"
+                for a in _moved(effect)[:1] if catalog()[a.category].motion == "prop"]
     if (other := _outermost(request, effect, scene)) is not None:
         out.append(f"you picked one by where it stands, which is {other[1].id}, but the plan acts on {other[0].id}")
     out += _not_between(request, scene, [*effect.added, *_moved(effect)])
@@ -795,6 +798,9 @@ def _standing_at(scene: Scene, thing: AssetInstance, moved: AssetInstance, where
 
 _TOO_MANY = re.compile(r"\b(?:too many|fewer)\b")
 # Verbs that only ever move what is there: "reposition that traffic", "relocate the bins".
+# A thing said to go of itself ("make the bin reverse out of the way by itself"), which only what has a motor or legs can.
+_BY_ITSELF = re.compile(r"\b(?:revers\w*|driv\w*|roll\w*|back(?:s|ed|ing)? up|go|goes|leav\w*|walk\w*)\b[^,.;]*"
+                        r"\b(?:by (?:it|them)sel(?:f|ves)|on (?:its|their) own|under (?:its|their) own (?:power|steam))\b")
 _MOVE_ONLY = re.compile(r"\b(?:reposition|repositions|relocate|relocates|move|moves|shift|shifts|transfer|shunt|budge|nudge)\b")
 # How a thing should look, said as more or less of a quality: "look a bit less aggressive", "seem more friendly".
 _LOOKS_MORE_OR_LESS = re.compile(r"\b(?:look|looks|looking|appear|appears|seem|seems)\s+(?:(?:a (?:bit|little|touch|lot)|a little bit"

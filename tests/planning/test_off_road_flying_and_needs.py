@@ -105,3 +105,13 @@ def test_a_thing_turned_to_face_away_from_the_road_has_its_back_to_it(campus, re
     assert math.sin(bench.pose.yaw) < -0.9  # the road runs north of the stop: facing south
     bench = ruled(campus, registry, "have the bench face the road").scene.asset("bench_1")  # it faces west as the campus ships
     assert math.sin(bench.pose.yaw) > 0.9
+
+
+def test_a_thing_with_no_motor_asked_to_go_by_itself_is_refused(campus, registry):
+    for said in ("let the bench roll away by itself", "could the hydrant back up on its own"):
+        session = Session(campus, RulePlanner(), registry)
+        report = session.submit(said)
+        assert not report.ok and session.scene == campus, said
+    # "on its own" said of a move the person makes is the thing alone, moved
+    moved = ruled(campus, registry, "move the bin 2 m left on its own").scene.asset("trash_bin_1")
+    assert moved.pose != campus.asset("trash_bin_1").pose
