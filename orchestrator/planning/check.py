@@ -448,6 +448,10 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += _not_the_extreme(request, effect, scene)
     out += _not_the_biggest(request, effect, scene)
     out += _moved_to_turn(request, effect)
+    if _TOO_FAST.search(request.low):  # "cars are going way too fast here": slower, never parked ones set going
+        started = [a for a in effect.changed if (was := scene.asset(a.id)) is not None
+                   and was.behaviour.kind == "parked" and a.behaviour.kind != "parked"]
+        out += [f"you said things go too fast, but the plan sets {_names(started)} going"] if started else []
     if _BY_ITSELF.search(request.low):  # "make the bin reverse out of the way by itself": a prop has no motor
         out += [f"a {a.category.replace('_', ' ')} cannot move by itself; I can move it where you say"
                 for a in _moved(effect)[:1] if catalog()[a.category].motion == "prop"]
@@ -799,6 +803,7 @@ def _standing_at(scene: Scene, thing: AssetInstance, moved: AssetInstance, where
 _TOO_MANY = re.compile(r"\b(?:too many|fewer)\b")
 # Verbs that only ever move what is there: "reposition that traffic", "relocate the bins".
 # A thing said to go of itself ("make the bin reverse out of the way by itself"), which only what has a motor or legs can.
+_TOO_FAST = re.compile(r"\btoo (?:fast|quick(?:ly)?)\b|\bspeeding\b")
 _BY_ITSELF = re.compile(r"\b(?:revers\w*|driv\w*|roll\w*|back(?:s|ed|ing)? up|go|goes|leav\w*|walk\w*)\b[^,.;]*"
                         r"\b(?:by (?:it|them)sel(?:f|ves)|on (?:its|their) own|under (?:its|their) own (?:power|steam))\b")
 _MOVE_ONLY = re.compile(r"\b(?:reposition|repositions|relocate|relocates|move|moves|shift|shifts|transfer|shunt|budge|nudge)\b")

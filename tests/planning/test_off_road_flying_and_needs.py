@@ -115,3 +115,17 @@ def test_a_thing_with_no_motor_asked_to_go_by_itself_is_refused(campus, registry
     # "on its own" said of a move the person makes is the thing alone, moved
     moved = ruled(campus, registry, "move the bin 2 m left on its own").scene.asset("trash_bin_1")
     assert moved.pose != campus.asset("trash_bin_1").pose
+
+
+def test_a_pace_complained_of_goes_the_other_way_and_never_starts_parked_things(campus, registry):
+    ego_speed = campus.asset("ego").behaviour.speed
+    assert ruled(campus, registry, "our car is too fast").scene.asset("ego").behaviour.speed < ego_speed
+    assert ruled(campus, registry, "the ego is driving too slowly").scene.asset("ego").behaviour.speed > ego_speed
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("the cars are going much too fast")  # those there are parked: none is set going
+    assert not report.ok and session.scene == campus
+
+
+def test_a_scene_made_to_look_like_a_time_of_day_gets_it(campus, registry):
+    env = ruled(campus, registry, "make it look like a snowy evening").scene.environment
+    assert env.weather.kind == "snow" and env.time_of_day != campus.environment.time_of_day

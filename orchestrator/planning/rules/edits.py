@@ -770,8 +770,11 @@ def behaviour_spec(kind: str, r: Reading, scene: Scene | None = None) -> dict[st
 # about 10 m/s", "could the ego go a bit slower?" (by PACE_FACTOR when no speed is said).
 _PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|driving|travel(?:s|ling|ing)?|move|moves|moving"
                         r"|cruise|cruising|ride|rides|riding|walk|walks|walking|slow|slows|slowed|slowing)\b")
-_SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
-_FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed)\b")
+# (a pace complained of is the other way: "the ego is going too fast" is slower, "drives too slowly" faster)
+_SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed"
+                     r"|too (?:fast|quick(?:ly)?))\b")
+_FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed"
+                     r"|too slow(?:ly)?)\b")
 PACE_FACTOR = 1.5
 # A speed said as a bare number after a change of pace: "slow it to 3", "speed up to 6, please".
 _BARE_PACE = re.compile(r"\b(?:down |up )?to (\d+(?:\.\d+)?)\b(?!\s*(?:[%°:/]|\.\d|m\b|ms\b|metres?|meters?|km|kph|mph|s\b|secs?\b|seconds?"

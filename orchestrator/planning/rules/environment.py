@@ -126,7 +126,9 @@ TIME_NOT_SET = re.compile(r"\b(?:not|no|never|instead of|rather than)\s+(?:the\s
                           # how long ("levelling all morning", "the whole afternoon") or what a place is like ("looks like a
                           # Sunday morning"): no time to set
                           r"|\b(?:all|the whole|the entire|throughout the|for the)\s+(?:morning|afternoon|evening|night|day)\b"
-                          r"|\b(?:like|as if it were|as though it were)\s+(?:a|an|the)\s+(?:[a-z]+\s+)?(?:morning|afternoon|evening|night)\b")
+                          # (though "make it look like a rainy evening" asks for one)
+                          r"|(?<!make it look )(?<!make it feel )(?<!make it seem )(?<!make this look )"
+                          r"\b(?:like|as if it were|as though it were)\s+(?:a|an|the)\s+(?:[a-z]+\s+)?(?:morning|afternoon|evening|night)\b")
 
 
 def time_of_day(r: Reading) -> ToolCall | None:
