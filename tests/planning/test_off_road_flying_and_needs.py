@@ -129,3 +129,8 @@ def test_a_pace_complained_of_goes_the_other_way_and_never_starts_parked_things(
 def test_a_scene_made_to_look_like_a_time_of_day_gets_it(campus, registry):
     env = ruled(campus, registry, "make it look like a snowy evening").scene.environment
     assert env.weather.kind == "snow" and env.time_of_day != campus.environment.time_of_day
+
+
+def test_the_nearest_kind_of_place_asked_with_the_superlative_first(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("what's the closest building to the hydrant")
+    assert report.ok and report.plan is not None and report.plan.calls[0].args.get("query") == "building"

@@ -460,6 +460,8 @@ def _nearest(r: Reading, scene: Scene, anchor: Anchor, furthest: bool = False) -
     kind_at = {m.start: m for m in mentions}
     lane = _LANE_KIND.search(r.masked)
     kind_word = place_kind_said(r, scene)
+    # "what's the nearest building to the suv": the kind is "building", the superlative the question's own
+    kind_word = re.sub(r"^(?:the\s+)?(?:nearest|closest|furthest|farthest)\s+", "", kind_word) if kind_word else kind_word
     place = _PLACE_KIND.search(r.masked) or (re.search(re.escape(kind_word), r.masked) if kind_word else None)
     subject_landmark = r.landmark if r.landmark and r.landmark != anchor.name else None
     firsts = [(m.start, "category") for m in kind_at.values() if _only_instance(r, scene, m) != anchor.name]
