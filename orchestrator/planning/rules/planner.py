@@ -1696,7 +1696,8 @@ def _closes_roads(category: str) -> bool:
 
 
 # A line laid across the road, or one meant to stop traffic: a closure ("5 cones across the street").
-_ACROSS_ROAD = re.compile(r"\b(?:across|over|spanning) (?:the )?(?:whole )?(?:[a-z]+bound )?(?:road|street|carriageway|lanes?)\b"
+_ACROSS_ROAD = re.compile(r"\b(?:across|over|spanning) (?:the )?(?:whole |both |all (?:the )?|each of the |every )?(?:[a-z]+bound )?"
+                          r"(?:road|street|carriageway|lanes?)\b"
                           r"|\bso (?:that )?(?:nobody|no one|no cars?|nothing|no traffic) can (?:drive|get|pass|go)\b")
 # Spacing of a closure's line: barriers end to end, anything smaller (cones, bollards) closer.
 CLOSURE_SPACING_M = {"road_barrier": 2.5}
