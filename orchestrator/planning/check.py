@@ -92,6 +92,7 @@ from drivetwin.orchestrator.planning.intent import (
     LIVELIER,
     QUIETER,
     REMOVE_WORDS,
+    WHICH_KIND,
     asks,
     commands,
     without_contrast,
@@ -101,7 +102,7 @@ from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, TOO_CONSPICUOUS, kept_at
+from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, TOO_CONSPICUOUS, TOO_FAST, kept_at
 from drivetwin.orchestrator.planning.rules.environment import HEAVY_INTENSITY, LIGHT_INTENSITY, said_weaker
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, SPEED_UNIT, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import (
@@ -448,7 +449,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += _not_the_extreme(request, effect, scene)
     out += _not_the_biggest(request, effect, scene)
     out += _moved_to_turn(request, effect)
-    if _TOO_FAST.search(request.low):  # "cars are going way too fast here": slower, never parked ones set going
+    if TOO_FAST.search(request.low):  # "cars are going way too fast here": slower, never parked ones set going
         started = [a for a in effect.changed if (was := scene.asset(a.id)) is not None
                    and was.behaviour.kind == "parked" and a.behaviour.kind != "parked"]
         out += [f"you said things go too fast, but the plan sets {_names(started)} going"] if started else []
@@ -714,7 +715,7 @@ def _setting_kinds(request: Request, calls: tuple[ToolCall, ...], scene: Scene) 
     are no pedestrians to look up)."""
     low = ph.normalise(request.masked)
     named = ph.find_categories(request.masked)
-    asked = {m.category for m in named if re.search(r"\b(?:which|what)\s+(?:[a-z]+\s+)?$", low[: m.start])}
+    asked = {m.category for m in named if WHICH_KIND.search(low[: m.start])}
     if not any(c.tool == "find_assets" and c.args.get("category") in asked for c in calls):
         return set()
     return {m.category for m in named if m.category not in asked and not any(a.category == m.category for a in scene.assets)}
@@ -801,11 +802,10 @@ def _standing_at(scene: Scene, thing: AssetInstance, moved: AssetInstance, where
 
 
 _TOO_MANY = re.compile(r"\b(?:too many|fewer)\b")
-# Verbs that only ever move what is there: "reposition that traffic", "relocate the bins".
 # A thing said to go of itself ("make the bin reverse out of the way by itself"), which only what has a motor or legs can.
-_TOO_FAST = re.compile(r"\btoo (?:fast|quick(?:ly)?)\b|\bspeeding\b")
 _BY_ITSELF = re.compile(r"\b(?:revers\w*|driv\w*|roll\w*|back(?:s|ed|ing)? up|go|goes|leav\w*|walk\w*)\b[^,.;]*"
                         r"\b(?:by (?:it|them)sel(?:f|ves)|on (?:its|their) own|under (?:its|their) own (?:power|steam))\b")
+# Verbs that only ever move what is there: "reposition that traffic", "relocate the bins".
 _MOVE_ONLY = re.compile(r"\b(?:reposition|repositions|relocate|relocates|move|moves|shift|shifts|transfer|shunt|budge|nudge)\b")
 # How a thing should look, said as more or less of a quality: "look a bit less aggressive", "seem more friendly".
 _LOOKS_MORE_OR_LESS = re.compile(r"\b(?:look|looks|looking|appear|appears|seem|seems)\s+(?:(?:a (?:bit|little|touch|lot)|a little bit"

@@ -597,6 +597,9 @@ def taken_back(text: str) -> tuple[str, str]:
 PLACE_KIND = re.compile(r"\b(?:landmarks?|places?|buildings?|entrances?|locations?|spots?)\b")
 ASKED_ABOUT = re.compile(r"(?:\b(?:how many|where (?:is|are|do|does|did|can|could|will|would|should)(?: the| a| an| my| our| any)?"
                           r"|(?:is|are) there(?: any| an?| some)?|nearest|closest)|^\s*any) ([a-z]{3,})\b")
+# The words right before the kind a question asks for by "which" ("my students wait at the stop: which bench is
+# closest to them?": a bench, the students only its setting).
+WHICH_KIND = re.compile(r"\b(?:which|what)\s+(?:[a-z]+\s+)?$")
 
 
 def commands(low: str) -> bool:
@@ -706,6 +709,7 @@ __all__ = [
     "REPORTED",
     "TAG_QUESTION",
     "WHAT_IF",
+    "WHICH_KIND",
     "asks",
     "commands",
     "excepted",

@@ -770,9 +770,9 @@ def behaviour_spec(kind: str, r: Reading, scene: Scene | None = None) -> dict[st
 # about 10 m/s", "could the ego go a bit slower?" (by PACE_FACTOR when no speed is said).
 _PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|driving|travel(?:s|ling|ing)?|move|moves|moving"
                         r"|cruise|cruising|ride|rides|riding|walk|walks|walking|slow|slows|slowed|slowing)\b")
-# (a pace complained of is the other way: "the ego is going too fast" is slower, "drives too slowly" faster)
-_SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed"
-                     r"|too (?:fast|quick(?:ly)?))\b")
+_SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
+# A pace complained of is the other way: "the ego is going too fast" is slower, "drives too slowly" faster.
+TOO_FAST = re.compile(r"\btoo (?:fast|quick(?:ly)?)\b|\bspeeding\b")
 _FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed"
                      r"|too slow(?:ly)?)\b")
 PACE_FACTOR = 1.5
@@ -795,7 +795,7 @@ def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[Too
     "It" with nothing named in the request is the one thing the last turn made or changed."""
     speed = ph.find_speed(r.text)
     times = _TIMES_SAID.search(r.low) if speed is None else None
-    slower = _SLOWER.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] < 1)
+    slower = _SLOWER.search(r.low) is not None or TOO_FAST.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] < 1)
     faster = _FASTER.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] > 1)
     bare = _BARE_PACE.search(r.low) if speed is None and (slower or faster or re.search(r"\bslow\b", r.low)) else None
     if bare is not None:  # "slow it to 3", "speed the ego up to 6": metres a second, the speed the Workers take
@@ -1266,4 +1266,4 @@ def _bare_angle(low: str) -> re.Match[str] | None:
     return found[0] if len(found) == 1 else None
 
 
-__all__ = ["FURTHEST", "TOO_CONSPICUOUS", "behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]
+__all__ = ["FURTHEST", "TOO_CONSPICUOUS", "TOO_FAST", "behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]

@@ -18,7 +18,7 @@ from dataclasses import dataclass, replace
 from typing import Any, Literal
 
 from drivetwin.orchestrator.memory import Memory
-from drivetwin.orchestrator.planning.intent import ASKED_ABOUT, PLACE_KIND
+from drivetwin.orchestrator.planning.intent import ASKED_ABOUT, PLACE_KIND, WHICH_KIND
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
@@ -449,13 +449,10 @@ def _property(r: Reading, scene: Scene, subject: Anchor | None) -> Part:
     return Part(ToolCall(tool="asset_properties", args={"asset": asset}), Anchor("asset", asset))
 
 
-_WHICH_KIND = re.compile(r"\b(?:which|what)\s+(?:[a-z]+\s+)?$")
-
-
 def _nearest(r: Reading, scene: Scene, anchor: Anchor, furthest: bool = False) -> Part:
     """What is nearest the anchor (or `furthest` from it), of the kind asked for: a landmark, a lane, assets."""
     # "my students wait at the stop: which bench is closest to them?": the kind said after "which" is the one asked for
-    asked = [m for m in r.mentions if _WHICH_KIND.search(r.low[: m.start])]
+    asked = [m for m in r.mentions if WHICH_KIND.search(r.low[: m.start])]
     mentions = asked[:1] or r.mentions
     kind_at = {m.start: m for m in mentions}
     lane = _LANE_KIND.search(r.masked)
