@@ -143,6 +143,9 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    # "coordinates of the nearest tree?", "req grid ref of the bin": where something is, asked bare
                    r"(?:^|(?:req|request|requesting|need|want)\s+)(?:the\s+)?(?:coordinates|position|location|whereabouts|grid ref(?:erence)?|pose"
                    r"|ids?|identifiers?|asset ids?) of\b(?![^.?!]*:)|"
+                   # "the fire marshal needs hydrant data", "I need the bench details": what is known of a thing
+                   r"\b(?:need|needs|want|wants|require|requires)\s+(?:the\s+|its\s+|their\s+)?(?:[a-z_0-9]+\s+){1,2}"
+                   r"(?:data|details|info|information|coordinates|specs?)\b(?!\s+(?:to|should|must)\b)|"
                    r"'s (?:pose|position|coordinates|location|whereabouts|heading)(?!\s+(?:should|must|needs?|has|is to|ought|will|would|can|could|to)\b)|"
                    r"(?:write|note|jot|put) (?:it )?down (?:what|which|where|how|whether|if)|"  # "asked me to write down which lane ..."
                    # "I must record where those bikes were left", "point out the closest tree": said, shown, never moved

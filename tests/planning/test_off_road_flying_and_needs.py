@@ -134,3 +134,10 @@ def test_a_scene_made_to_look_like_a_time_of_day_gets_it(campus, registry):
 def test_the_nearest_kind_of_place_asked_with_the_superlative_first(campus, registry):
     report = Session(campus, RulePlanner(), registry).submit("what's the closest building to the hydrant")
     assert report.ok and report.plan is not None and report.plan.calls[0].args.get("query") == "building"
+
+
+def test_a_things_data_needed_is_a_question_never_one_more_of_it(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("the safety officer needs bench data for the audit")
+    assert report.ok and session.scene == campus and report.plan is not None
+    assert [c.tool for c in report.plan.calls] == ["find_assets"]
