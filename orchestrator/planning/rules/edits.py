@@ -771,10 +771,9 @@ def behaviour_spec(kind: str, r: Reading, scene: Scene | None = None) -> dict[st
 _PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|driving|travel(?:s|ling|ing)?|move|moves|moving"
                         r"|cruise|cruising|ride|rides|riding|walk|walks|walking|slow|slows|slowed|slowing)\b")
 _SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
-# A pace complained of is the other way: "the ego is going too fast" is slower, "drives too slowly" faster.
+# A pace complained of ("cars are going way too fast here"): never a reason to set parked things going (check.py).
 TOO_FAST = re.compile(r"\btoo (?:fast|quick(?:ly)?)\b|\bspeeding\b")
-_FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed"
-                     r"|too slow(?:ly)?)\b")
+_FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed)\b")
 PACE_FACTOR = 1.5
 # A speed said as a bare number after a change of pace: "slow it to 3", "speed up to 6, please".
 _BARE_PACE = re.compile(r"\b(?:down |up )?to (\d+(?:\.\d+)?)\b(?!\s*(?:[%°:/]|\.\d|m\b|ms\b|metres?|meters?|km|kph|mph|s\b|secs?\b|seconds?"
@@ -795,7 +794,7 @@ def new_pace(r: Reading, scene: Scene, notes: Notes, memory: Memory) -> list[Too
     "It" with nothing named in the request is the one thing the last turn made or changed."""
     speed = ph.find_speed(r.text)
     times = _TIMES_SAID.search(r.low) if speed is None else None
-    slower = _SLOWER.search(r.low) is not None or TOO_FAST.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] < 1)
+    slower = _SLOWER.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] < 1)
     faster = _FASTER.search(r.low) is not None or (times is not None and _TIMES[times.group(1)] > 1)
     bare = _BARE_PACE.search(r.low) if speed is None and (slower or faster or re.search(r"\bslow\b", r.low)) else None
     if bare is not None:  # "slow it to 3", "speed the ego up to 6": metres a second, the speed the Workers take

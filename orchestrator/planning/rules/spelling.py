@@ -579,8 +579,8 @@ def _closest(low: str, close: list[str], targets: tuple[str, ...]) -> str | None
         picked: str | None = by_edits
     else:
         picked = close[0] if close else None
-    if picked is not None and picked[0] != low[0]:  # "evry tree": every, as near as "very" and its first letter kept
-        kept = [t for t in targets if t[0] == low[0] and edits(low, t) <= edits(low, picked)]
+    if picked is not None and picked[0] != low[0] and edits(low, picked) == 1:  # "evry tree": every, as near as "very", its first letter kept
+        kept = [t for t in targets if t[0] == low[0] and edits(low, t) == 1]
         picked = kept[0] if len(kept) == 1 else picked
     # a word that decides whether things come or go is repaired to only from a slip that keeps its first letter
     # ("remvoe" is remove; "respawn" is no despawn): a guess there turns the whole request round
