@@ -321,8 +321,10 @@ _CONTRAST = re.compile(
     rf"|,?\s+and\s+(?:keep|leave)\s+(?={_DETERMINER}\b[^,.;]*\b(?:as (?:it|they) (?:is|are)|alone|untouched|where (?:it|they) (?:is|are)|in place|be)\b)"
     r"|\s+rather\s+than\s+(?=[a-z])"
     # "remove the cars from lot B, the SUV should stay": what stays is excepted
-    # (or a sentence of its own: "Remove passenger_car_1 and passenger_car_2. The SUV stays.")
-    rf"|(?:,|[.;!])\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:(?:should|must|can|will|is to|has to)\s+(?:stay|remain|be left|be kept)"
+    # (or a sentence of its own that says no more: "Remove passenger_car_1 and passenger_car_2. The SUV stays.";
+    # "... . The bin needs to stay there." says where it should be)
+    rf"|[.;!]\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:stays?|remains?)\s*(?:[.!;]|$))"
+    rf"|,\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:(?:should|must|can|will|is to|has to)\s+(?:stay|remain|be left|be kept)"
     r"|(?:it\s+|they\s+)?(?:stays?|remains?)(?:\s+(?:where|as|put|there|here|please)\b|\s*(?=[.!;])|\s*$))\b)"  # "..., the truck stays", "the truck it stay"
     r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
     re.IGNORECASE,

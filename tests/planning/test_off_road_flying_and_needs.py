@@ -73,7 +73,7 @@ def test_a_place_said_after_an_id_describes_that_thing(campus, registry):
 def test_the_kind_asked_after_which_is_looked_up_and_people_who_lack_a_seat_get_one(campus, registry):
     report = Session(campus, RulePlanner(), registry).submit("the visitors at the library want to know which tree is nearest them")
     assert report.ok and report.plan is not None and report.plan.calls[0].args.get("category") == "tree"
-    for said in ("the kids at the fountain have nowhere to sit", "the parents at the east gate will want to sit down"):
+    for said in ("the kids at the fountain have nowhere to sit", "the parents at the east gate have no place to sit"):
         scene = ruled(campus, registry, said).scene
         assert len(_of(scene, "bench")) == 2 and not _of(scene, "pedestrian"), said
         assert scene.asset("bench_1").pose == campus.asset("bench_1").pose, said  # a new bench, the old one unmoved

@@ -463,9 +463,8 @@ _ONE_THING = ("someone", "somebody", "guy", "somewhere to sit", "to sit", "can s
 # sit", "drivers need a warning").
 _WISHED = re.compile(r"\b(?:could use|could do with|would like|would love|needs?|wants?|deserves?|(?:will |would |shall )?require|requires)\s+"
                      r"(?=(?:a|an|some|somewhere|something|more|another|extra|new|\d+|two|three|a few|several)\b)"
-                     # "the kids have nowhere to sit", "they will want to sit down": who lacks it is not what is asked
-                     r"|\b(?:want|wants|wanted|would like|need|needs|needed|have|has|had|got)\s+(?:nowhere\s+|no ?where\s+|no place\s+)?"
-                     r"(?=to (?:sit|rest|throw)\b)")
+                     # "the kids have nowhere to sit": who lacks it is not what is asked
+                     r"|\b(?:have|has|had|got)\s+(?:nowhere|no ?where|no place)\s+(?=to (?:sit|rest)\b)")
 
 
 def without_beneficiaries(low: str, mentions: list[ph.Mention]) -> list[ph.Mention]:
@@ -717,10 +716,9 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:
     """Whether a mention asks for a new asset ("a cone") rather than names one there ("the cone")."""
-    if add_verb or re.search(r"\b(?:want|wants|wanted|would like|need|needs|needed)\s+(?:to\s+)?$", reading.low[: mention.start]) \
-            or re.search(r"\b(?:somewhere|something|nowhere|nothing|where (?:they|people|we|you|one|kids|students) (?:can|could|might))\b"
+    if add_verb or re.search(r"\b(?:somewhere|something|nowhere|nothing|where (?:they|people|we|you|one|kids|students) (?:can|could|might))\b"
                              r"(?:\s+[\w'-]+){0,5}\s*$", reading.low[: mention.end]):
-        return True  # "somewhere to sit" asks for a new one, as "a seat" does; "nowhere to sit", "want to sit down" lack one
+        return True  # "somewhere to sit" asks for a new one, as "a seat" does; "nowhere to sit" lacks one
     words = ph.tokens(reading.low[: mention.start])
     for k in range(len(words) - 1, max(-1, len(words) - 4), -1):
         word = words[k]
