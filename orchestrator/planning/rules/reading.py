@@ -716,7 +716,7 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
 
 def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool) -> bool:
     """Whether a mention asks for a new asset ("a cone") rather than names one there ("the cone")."""
-    if add_verb or re.search(r"\b(?:somewhere|something|nowhere|nothing|where (?:they|people|we|you|one|kids|students) (?:can|could|might))\b"
+    if add_verb or re.search(r"\b(?:somewhere|something|nowhere|no ?where|no place|nothing|where (?:they|people|we|you|one|kids|students) (?:can|could|might))\b"
                              r"(?:\s+[\w'-]+){0,5}\s*$", reading.low[: mention.end]):
         return True  # "somewhere to sit" asks for a new one, as "a seat" does; "nowhere to sit" lacks one
     words = ph.tokens(reading.low[: mention.start])
