@@ -102,7 +102,7 @@ from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, TOO_CONSPICUOUS, TOO_FAST, kept_at
+from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, TOO_CONSPICUOUS, kept_at
 from drivetwin.orchestrator.planning.rules.environment import HEAVY_INTENSITY, LIGHT_INTENSITY, said_weaker
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, SPEED_UNIT, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import (
@@ -449,7 +449,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += _not_the_extreme(request, effect, scene)
     out += _not_the_biggest(request, effect, scene)
     out += _moved_to_turn(request, effect)
-    if TOO_FAST.search(request.low):  # "cars are going way too fast here": slower, never parked ones set going
+    if _TOO_FAST.search(request.low):  # "cars are going way too fast here": slower, never parked ones set going
         started = [a for a in effect.changed if (was := scene.asset(a.id)) is not None
                    and was.behaviour.kind == "parked" and a.behaviour.kind != "parked"]
         out += [f"you said things go too fast, but the plan sets {_names(started)} going"] if started else []
@@ -802,6 +802,8 @@ def _standing_at(scene: Scene, thing: AssetInstance, moved: AssetInstance, where
 
 
 _TOO_MANY = re.compile(r"\b(?:too many|fewer)\b")
+# A pace complained of ("cars are going way too fast here"): never a reason to set parked things going.
+_TOO_FAST = re.compile(r"\btoo (?:fast|quick(?:ly)?)\b|\bspeeding\b")
 # A thing said to go of itself ("make the bin reverse out of the way by itself"), which only what has a motor or legs can.
 _BY_ITSELF = re.compile(r"\b(?:revers\w*|driv\w*|roll\w*|back(?:s|ed|ing)? up|go|goes|leav\w*|walk\w*)\b[^,.;]*"
                         r"\b(?:by (?:it|them)sel(?:f|ves)|on (?:its|their) own|under (?:its|their) own (?:power|steam))\b")

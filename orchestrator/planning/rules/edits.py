@@ -771,8 +771,6 @@ def behaviour_spec(kind: str, r: Reading, scene: Scene | None = None) -> dict[st
 _PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|driving|travel(?:s|ling|ing)?|move|moves|moving"
                         r"|cruise|cruising|ride|rides|riding|walk|walks|walking|slow|slows|slowed|slowing)\b")
 _SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
-# A pace complained of ("cars are going way too fast here"): never a reason to set parked things going (check.py).
-TOO_FAST = re.compile(r"\btoo (?:fast|quick(?:ly)?)\b|\bspeeding\b")
 _FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed)\b")
 PACE_FACTOR = 1.5
 # A speed said as a bare number after a change of pace: "slow it to 3", "speed up to 6, please".
@@ -1265,4 +1263,4 @@ def _bare_angle(low: str) -> re.Match[str] | None:
     return found[0] if len(found) == 1 else None
 
 
-__all__ = ["FURTHEST", "TOO_CONSPICUOUS", "TOO_FAST", "behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]
+__all__ = ["FURTHEST", "TOO_CONSPICUOUS", "behaviour_kind", "behaviour_spec", "edit_existing", "recolour", "referenced", "remove"]
