@@ -291,6 +291,11 @@ def _hours_apart(a: ToolCall, b: ToolCall) -> float:
     return 24.0 if x is None or y is None else min(abs(x - y), 24 - abs(x - y))
 
 
+# A way closed or blocked off ("close the ego's lane", "its lane is closed off", "block the entrance").
+_MOVING = re.compile(r"\b(?:move|put|place|park|shift|drag|bring|drive|push|pull|relocate|position|stand|roll|reverse)\b")
+_CLOSING = re.compile(r"\b(?:clos(?:e|es|ed|ing)|block(?:s|ed|ing)?|shut|seal(?:s|ed)?|cordon(?:s|ed)?)\b(?:\s+off)?(?!\s+(?:to|by)\b)")
+
+
 def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[str]:
     """Each way the plan's effect fails to account for the request, in plain words."""
     out: list[str] = []
@@ -356,6 +361,15 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if request.polarity == "remove" and not effect.removed and any(
             c.tool == "set_lighting" and c.args.get("street_lights") == "on" for c in effect.calls):
         out.append("you asked for less, but the plan switches the street lights on")  # "fewer lights over there"
+    if _CLOSING.search(request.low) and not _MOVING.search(request.low) and _moved(effect) and not effect.added and not effect.removed:
+        # "close the ego's lane 30 m ahead of it" read as a move of the ego: closing takes things put across the way
+        out.append("you asked to close or block something off, but the plan only moves " + _names(_moved(effect)))
+    one_lamp = sorted(set(re.findall(r"\bstreet_light_\d+\b", request.low)))
+    if one_lamp and len(one_lamp) < scene.count("street_light") and any(
+            c.tool == "set_lighting" and c.args.get("street_lights") in ("on", "off") for c in effect.calls):
+        # "turn off street light 1": the lamps are switched all together, never one of them alone
+        out.append(f"the street lights are switched all together, not one by one, but you named {', '.join(one_lamp)}; "
+                   "say 'turn the street lights off' (or on) for all of them")
     going = HOW_THINGS_GO.match(request.low.strip())
     said_of = {m.category for m in ph.find_categories(going.group(0))} if going is not None else set()
     if going is not None and any(a.category in said_of for a in effect.added):
@@ -696,17 +710,20 @@ def _kind_not_looked_up(request: Request, calls: tuple[ToolCall, ...], scene: Sc
     blanked = _places_and_ego(tuple(n for lm in scene.landmarks for n in lm.names()))
     text = blanked.sub(lambda m: " " * len(m.group(0)), request.low)
     low, said = ph.normalise(text), ph.normalise(request.low)  # the texts the mentions' offsets count in
-    pointed = {m.category for m in ph.find_categories(text)
-               if re.search(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z]+\s+){0,2}$", low[: m.start])
-               and not _MODIFIES_NEXT.match(said[m.end :])}  # "the student car park": a word said of a place
-    pointed -= _setting_kinds(request, calls, scene)
+    mentions = [m for m in ph.find_categories(text)
+                if re.search(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z]+\s+){0,2}$", low[: m.start])
+                and not _MODIFIES_NEXT.match(said[m.end :])]  # "the student car park": a word said of a place
+    pointed = {m.category for m in mentions} - _setting_kinds(request, calls, scene)
+    # "the vehicle I just added": a word the catalog tags kinds with stands for each of them
+    tagged = {c for m in mentions if (word := ph.singular(low[m.start : m.end].strip())) in md.catalog_tags()
+              for c, kind in catalog().items() if word in kind.tags}
     if not pointed or not calls or any(c.tool == "describe_environment" for c in calls):
         return None  # "which lane would a car use": a car in general, not one to look up
     said = " ".join(str(c.args) for c in calls).lower()
     looked = {c for c in catalog() if re.search(rf"(?<![a-z]){c}(?![a-z])", said)}
     looked |= {a.category for a in scene.all_assets() if re.search(rf"(?<![a-z0-9_]){a.id}(?![0-9])", said)}
     looked |= {c for members in md.groups_said(said.replace("_", " ")).values() for c in members}
-    return None if pointed & looked else " or ".join(sorted(pointed)).replace("_", " ")
+    return None if pointed & looked or tagged & looked else " or ".join(sorted(pointed)).replace("_", " ")
 
 
 def _setting_kinds(request: Request, calls: tuple[ToolCall, ...], scene: Scene) -> set[str]:

@@ -42,7 +42,7 @@ from drivetwin.orchestrator.planning.rules.edits import TIE_M
 from drivetwin.orchestrator.planning.rules.environment import TIME_NOT_SET
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
 from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, road_said, side_of
-from drivetwin.orchestrator.planning.rules.reading import used_as_verb
+from drivetwin.orchestrator.planning.rules.reading import numbered_absent, used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID, edits, english_words, is_known, vocabulary
 from drivetwin.tools.appearance import TIME_PRESETS
 from drivetwin.tools.base import ToolCall
@@ -322,6 +322,10 @@ def asked_which_but_changed(masked: str, scope: Scope) -> list[str]:
     return sorted({a.category for a in (*scope.added, *scope.touched, *scope.removed) if a.category in asked})
 
 
+# A superlative of place said right after a thing's word: "lamp post nearest the fountain".
+_PICKED_AFTER = re.compile(r"\s*(?:(?:that|which)(?:'s| is)\s+)?(?:nearest|closest|furthest|farthest)\b")
+
+
 def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     """Categories referred to as existing ("the SUV", "those benches") that the plan adds anew
     while the scene has them and no word asks for a new one."""
@@ -343,6 +347,8 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
         # speakers say it, the one thing of its kind the scene holds is as likely as a new one
         bare = bare or (not m.plural and scene.count(m.category) == 1 and _NEW.search(masked) is None
                         and any(w in _BARE_VERBS for w in m.last_words(1)) and not _ARTICLE.search(masked))
+        # "Lamp post nearest the fountain too bright": a thing picked out by where it stands is one already there
+        bare = bare or (not asks_to_add and scene.count(m.category) > 0 and _PICKED_AFTER.match(m.after) is not None)
         # "the red bench", but not "give the bus stop a bench": the nearest article is the noun's
         indefinite = m.last_words(1)[-1:] in (["a"], ["an"], ["some"], ["any"])
         # "cars in lot B: park them nose to tail": things said bare, then pointed back at, are those there
@@ -856,6 +862,13 @@ def numbered_passed_over(masked: str, scope: Scope, scene: Scene) -> list[str]:
         asset = scene.asset(said.group(0))
         if asset is not None and asset.id not in touched and asset.category in kinds:
             out.append(f"you named {asset.id}, but the plan leaves it and acts on another {asset.category.replace('_', ' ')}")
+    added = {a.id for a in scope.added}
+    for name in numbered_absent(scene, masked):  # "rotate bench 4" where the one bench is bench_1
+        ident = name.replace(" ", "_")
+        kind = ident.rsplit("_", 1)[0]
+        if kind in kinds and ident not in added:
+            there = sorted((a.id for a in scene.assets if a.category == kind), key=lambda i: (len(i), i))
+            out.append(f"there is no {name} here (the scene has {', '.join(there[:6])}{' ...' if len(there) > 6 else ''})")
     return list(dict.fromkeys(out))
 
 

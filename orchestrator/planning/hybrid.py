@@ -29,7 +29,8 @@ from drivetwin.orchestrator.planning.base import Plan, PlanContext, Planner, Pla
 from drivetwin.orchestrator.planning.llm.planner import LlmPlanner
 from drivetwin.orchestrator.planning.llm.respell import respell
 from drivetwin.orchestrator.planning.readings import canonical, describe, dry_run, same_outcome
-from drivetwin.orchestrator.planning.rules.planner import GUESS_PENALTY
+from drivetwin.orchestrator.planning.request import Request, read_request
+from drivetwin.orchestrator.planning.rules.planner import FULL_CONFIDENCE, GUESS_PENALTY
 from drivetwin.orchestrator.planning.rules.spelling import Repaired
 from drivetwin.orchestrator.planning.scenario_reading import describes_behaviour_over_time
 from drivetwin.orchestrator.transaction import TransactionResult
@@ -196,6 +197,11 @@ class HybridPlanner:
             return self._mark(best, "agree", started, f"{why}; rules and retrieval agree")
         rules_sure = rule_plan.confidence >= RULES_CONFIDENT
         why = f"{why}; rules read {describe(rule_plan.calls)!r}, retrieval {describe(found.calls)!r}"
+        if rule_plan.confidence < FULL_CONFIDENCE and found.confidence >= RETRIEVAL_READING and _opposed(rule_plan, found) \
+                and _fits_the_mood(found, read_request(prompt, context.scene)):
+            # a word the rules could not read, and the two do opposite things, retrieval's as the words ask ("could you
+            # add an SUV ...?" read as a look-up, "tek out di stop sign" as an addition): which is the person's to say
+            return self._ask([rule_plan, found], f"{why}; they do opposite things and the rules missed a word", started)
         if found.confidence < RETRIEVAL_CONFIDENT:  # an unsure retrieval plan overrules nothing
             return self._rules_then_llm(prompt, context, rule_plan, f"{why}; they disagree", started, [found])
         if not rules_sure:
@@ -314,6 +320,29 @@ class HybridPlanner:
 def _edits(plan: Plan) -> bool:
     """Whether the plan would change the scene (a search changes nothing, so needs no confirming)."""
     return any(c.tool not in SEARCH_TOOLS for c in plan.calls)
+
+
+def _opposed(one: Plan, other: Plan) -> bool:
+    """Whether two plans do opposite things: one only looks up what the other changes, or one only
+    adds where the other only removes."""
+    kinds = {_kind_of(one), _kind_of(other)}
+    return kinds in ({"look", "add"}, {"look", "remove"}, {"look", "change"}, {"add", "remove"})
+
+
+def _fits_the_mood(plan: Plan, request: Request) -> bool:
+    """Whether the plan does what the words' mood and polarity ask: a look-up for a question, a change
+    for a command, and no removal where they ask to add (nor an addition where they ask to remove)."""
+    kind = _kind_of(plan)
+    return (kind == "look") == request.question and (request.polarity is None or kind not in ("add", "remove") or kind == request.polarity)
+
+
+def _kind_of(plan: Plan) -> str:
+    edits = [c.tool for c in plan.calls if c.tool not in SEARCH_TOOLS]
+    if not edits:
+        return "look"
+    if all(t in ("add_asset", "arrange_assets") for t in edits):
+        return "add"
+    return "remove" if all(t == "remove_assets" for t in edits) else "change"
 
 
 def _not_understood(rules_said: str) -> str:

@@ -130,6 +130,7 @@ _QUESTION_START = re.compile(r"(?:^\s*|^[a-z ]{1,20}:\s*)(?:(?:so|ok|okay|well|h
 _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?<!(?<!pl)s )\b(tell me|show me|let me know|inform (?:me|us)|advise (?:me|us)|"
                    # "kindly state the weather", "please identify the tree closest to ...": asked to say, not to set
                    r"(?:^|(?:please|kindly|pls|now|could you|can you|would you)\s+)(?:state|identify|report|indicate|specify|name)\s+(?:the|which|what|where|how)|"
+                   r"^\s*(?:please\s+)?report\b(?! (?:it|this|that) (?:as|to)\b)|"  # "Report one value: distance, ego to main gate": a look-up
                    r"tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|at what distance|how long is|"
                    # "say position of the hydrant", "say separation to the traffic ahead": radio for "tell me"
                    r"(?:^|[,:]\s*)say (?:the |your )?(?:position|location|separation|distance|heading|speed|weather|time|what|which|where|how)\b|"
@@ -324,7 +325,9 @@ _CONTRAST = re.compile(
     # (or a sentence of its own that says no more: "Remove passenger_car_1 and passenger_car_2. The SUV stays.";
     # "... . The bin needs to stay there." says where it should be)
     rf"|[.;!]\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:stays?|remains?)\s*(?:[.!;]|$))"
-    rf"|,\s+(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:(?:should|must|can|will|is to|has to)\s+(?:stay|remain|be left|be kept)"
+    # ("..., but the bench must keep": "keep" with nothing after it to keep is "stay")
+    rf"|,\s+(?:but\s+)?(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:(?:should|must|can|will|is to|has to)\s+(?:stay|remain|be left|be kept"
+    r"|keep\b(?!\s+(?:the|a|an|it|them|this|that|its|their|on|going|\w+ing)\b))"
     r"|(?:it\s+|they\s+)?(?:stays?|remains?)(?:\s+(?:where|as|put|there|here|please)\b|\s*(?=[.!;])|\s*$))\b)"  # "..., the truck stays", "the truck it stay"
     r"|\s+instead\s+of\s+(?=(?:in|at|on|by|near)\b|\w+ing\b)",
     re.IGNORECASE,
@@ -361,7 +364,9 @@ _SALUTATION = re.compile(
     r"|sweet|cool|nice(?:\s+one)?|great|awesome|brilliant|perfect|lovely|excellent|sorted|ta|alright|sure)"
     r"(?:\s*,?\s+(?:there|all|everyone|team|folks|[a-z]+))?\s*(?:[,.!]+|$)"
     # the one spoken to, called by a radio station's name or the machine's: "Tower, ...", "Control: ..."
-    r"|^\s*(?:tower|ground|control|base|approach|computer|system|drivetwin|sim|simulator)\s*[,:]", re.IGNORECASE)
+    r"|^\s*(?:tower|ground|control|base|approach|computer|system|drivetwin|sim|simulator)\s*[,:]"
+    # the one spoken to, called so at the end of a sentence: "Ditch like half of those, bro."
+    r"|,\s*(?:bro|bruh|dude|mate|man|boss|buddy|pal|fam|guys|folks|lads|sir|ma'am)\b(?=\s*(?:[.!?]|$))", re.IGNORECASE)
 
 
 def without_salutations(text: str) -> str:
@@ -685,10 +690,17 @@ def setting_shown(low: str) -> bool:
 TAG_QUESTION = re.compile(r",\s*(?:right|yeah|yes|correct|true|no|is(?:n'?t| not)? (?:it|there|that)|are(?:n'?t| not)? (?:they|there))\s*\?+\s*$")
 
 
+# Words that only name the state of the scene: a request of nothing else asks what it is.
+_STATUS_WORDS = frozenset({"current", "present", "conditions", "weather", "time", "clock", "lighting", "status", "and", "the", "of",
+                           "day", "now", "right", "please", "pls", "thanks", "so", "ok", "okay", "what's", "whats", "plus"})
+
+
 def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
     if setting_shown(low):
         return False  # "show me the campus at dawn": the scene set so, to be seen
+    if set(re.findall(r"[a-z']+", low)) <= _STATUS_WORDS and re.search(r"\b(?:conditions|weather|clock|time|lighting|status)\b", low):
+        return True  # "Current conditions, please: weather and clock.": no change and no value, so what they are
     if TAG_QUESTION.search(low) and not commands(low):
         return True  # "the SUV is parked, yeah?": whether what was said is so
     polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip())

@@ -172,13 +172,20 @@ def describes_behaviour_over_time(text: str, scene: Scene | None = None) -> bool
     starts = bool(_STARTS_MOVING.search(low))  # "the suv pulls out as the ego approaches": then, not now
     # "move the bin onto the sidewalk" puts a thing somewhere; "the car mounts the kerb" is a manoeuvre
     unsupported = asks_unsupported(low) and not _PLACING.match(low)
-    return (trigger and (manoeuvre or starts)) or light_change or at_the_ego or unsupported or any(
+    # "When the ego comes, someone on foot must go over the street ...": an action timed against the ego, however said
+    ego_when = _EGO_WHEN.match(low)
+    timed = ego_when is not None and bool(_MOTION.search(ego_when.group("rest")))
+    return (trigger and (manoeuvre or starts)) or timed or light_change or at_the_ego or unsupported or any(
         words.search(low) for kind, words in _COMPILED if kind in _ONLY_STORYBOARD)
 
 
 # Manoeuvres no static behaviour can stand for (a bare "stop", "cross" or "reverse" can).
 _ONLY_STORYBOARD = frozenset({"cut_in", "overtake", "lane_change", "junction_turn", "change_speed", "brake",
                               "stop_mid_road"})
+# A sentence that opens with when the ego does something ("When the ego comes, ..."), and what follows it.
+_EGO_WHEN = re.compile(r"\s*(?:when|once|as soon as|whenever)\s+(?:the\s+|our\s+)?ego\b[^,;.]*[,;]\s*(?P<rest>[^.;]*)")
+_MOTION = re.compile(r"\b(?:go(?:es)?|walk\w*|run\w*|step\w*|mov(?:e|es|ing)|head\w*|dash\w*|dart\w*|cross\w*|pull\w*|drive\w*"
+                     r"|ride\w*|stop\w*|brake\w*)\b")
 _AT_THE_EGO = re.compile(r"\b(?:in front of|ahead of|into the path of|across the path of) (?:the )?ego\b|\bego's (?:path|lane)\b"
                          r"|\bout from behind\b|\bfrom behind (?:the|a|an)\b")
 

@@ -45,6 +45,7 @@ from drivetwin.evals import (
     practice33_source,
     practice34_source,
     practice35_source,
+    practice36_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -145,6 +146,11 @@ BRIEFS: dict[str, Brief] = {
     # teacher, emergency-drill coordinator, bird-watcher, work-ticket paster; arrangement (every grade) and the vague and
     # erroneous grades of every task hold 13, the rest 11 or 12.
     "practice35": Brief(340, 11, 11, practice35_source, multi_turn=45, planned=30, compound=20,
+                        weighted_grades=("vague", "erroneous")),
+    # Eight voices: Dutch speaker, Vietnamese speaker, Singaporean English speaker, Jamaican English speaker, surfer and
+    # skater, prescription-writing hospital pharmacist, football referee, Midwesterner; arrangement (every grade) and the
+    # vague and erroneous grades of every task hold 13, the rest 11 or 12.
+    "practice36": Brief(340, 11, 11, practice36_source, multi_turn=45, planned=30, compound=20,
                         weighted_grades=("vague", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.

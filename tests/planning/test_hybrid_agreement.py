@@ -143,3 +143,22 @@ def test_a_rule_edit_read_past_three_unknown_words_is_offered_to_confirm(context
     # a little surer, it is used as before
     plan = hybrid(Fixed("rules", RAIN, 0.35), Fixed("retrieval", None), llm).plan("x", context)
     assert path(plan) == "path: fast" and plan.calls == RAIN
+
+
+def test_plans_that_do_opposite_things_are_asked_when_the_rules_missed_a_word(context: PlanContext) -> None:
+    look = [ToolCall(tool="find_assets", args={"category": "suv"})]
+    add = [ToolCall(tool="add_asset", args={"category": "suv", "location": {"relation": "at", "target": "parking lot A"}})]
+    # a word unread (0.80) and a look-up against an addition: which is the person's to say, however unsure retrieval is
+    plan = hybrid(Fixed("rules", look, 0.8), Fixed("retrieval", add, 0.6), Fixed("llm", None)).plan("add an SUV in lot A, real quick", context)
+    assert path(plan) == "path: ask" and plan.question is not None and len(plan.question.readings) == 2
+    # every word read: the rules' plan stands
+    plan = hybrid(Fixed("rules", look, 0.95), Fixed("retrieval", add, 0.6), Fixed("llm", None)).plan("where is the SUV", context)
+    assert path(plan) == "path: fast" and plan.calls == look
+    # an addition against a removal is as opposite; two edits of one kind are not
+    stop = [ToolCall(tool="add_asset", args={"category": "stop_sign"})]
+    gone = [ToolCall(tool="remove_assets", args={"category": "stop_sign"})]
+    assert path(hybrid(Fixed("rules", stop, 0.6), Fixed("retrieval", gone, 0.5), Fixed("llm", None)).plan("tak out stop sign", context)) == "path: ask"
+    assert path(hybrid(Fixed("rules", RAIN, 0.8), Fixed("retrieval", SNOW, 0.6), Fixed("llm", None)).plan("wet please", context)) == "path: fast"
+    # retrieval's reading against the words' mood (a look-up for a command) is no reading to offer
+    plan = hybrid(Fixed("rules", add, 0.8), Fixed("retrieval", look, 0.6), Fixed("llm", None)).plan("add an SUV in lot A, real quick", context)
+    assert path(plan) == "path: fast" and plan.calls == add

@@ -28,6 +28,7 @@ from drivetwin.orchestrator.planning.rules.reading import (
     destination,
     find_count,
     find_place,
+    numbered_picks,
     read,
     says_oncoming,
 )
@@ -770,8 +771,10 @@ def behaviour_spec(kind: str, r: Reading, scene: Scene | None = None) -> dict[st
 # about 10 m/s", "could the ego go a bit slower?" (by PACE_FACTOR when no speed is said).
 _PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|driving|travel(?:s|ling|ing)?|move|moves|moving"
                         r"|cruise|cruising|ride|rides|riding|walk|walks|walking|slow|slows|slowed|slowing)\b")
-_SLOWER = re.compile(r"\b(?:slower|slow (?:[a-z_0-9']+ ){0,3}?down|less fast|(?:reduce|lower|decrease) (?:its |the |their )?speed)\b")
-_FASTER = re.compile(r"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){0,3}?up|(?:increase|raise) (?:its |the |their )?speed)\b")
+# ("reduce ego speed", "raise the ego's speed": whose speed said between)
+_WHOSE_SPEED = r"(?:(?:its|the|their|his|her|our)\s+)?(?:[a-z_0-9]+(?:'s)?\s+)?speed"
+_SLOWER = re.compile(rf"\b(?:slower|slow (?:[a-z_0-9']+ ){{0,3}}?down|less fast|(?:reduce|lower|decrease|cut) {_WHOSE_SPEED})\b")
+_FASTER = re.compile(rf"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){{0,3}}?up|(?:increase|raise) {_WHOSE_SPEED})\b")
 PACE_FACTOR = 1.5
 # A speed said as a bare number after a change of pace: "slow it to 3", "speed up to 6, please".
 _BARE_PACE = re.compile(r"\b(?:down |up )?to (\d+(?:\.\d+)?)\b(?!\s*(?:[%°:/]|\.\d|m\b|ms\b|metres?|meters?|km|kph|mph|s\b|secs?\b|seconds?"
@@ -1005,7 +1008,10 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     back = _lane_back(found, scene) if found is not None and _OTHER_WAY.search(r.low) else None
     if back is not None:  # "the ego should be going the other way down Main Street": the road's lane that runs back
         return [ToolCall(tool="set_behaviour", args={"asset": asset, "behaviour": {"kind": "drive_lane", "lane": back}})]
-    deg = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:deg|°)", r.low) or (_bare_angle(r.low) if r.has(("turn", "rotate", "spin")) else None)
+    if found is not None and found.category == "street_light" and _SWITCHED.search(r.low):  # "turn off street light 1"
+        raise ph_error("the street lights are switched all together, not one by one; say 'turn the street lights off' "
+                       "(or on) for all of them")
+    deg = re.search(r"(-?\d+(?:\.\d+)?)\s*(?:deg|°)", r.low) or (_bare_angle(r.low, scene) if r.has(("turn", "rotate", "spin")) else None)
     facing = md.facing_direction(r.masked)
     faced = _faced_point(r, scene, found) if facing is None and found is not None else None
     if facing is not None or faced is not None or (
@@ -1257,9 +1263,15 @@ _STEP_SAID = re.compile(r"\b(?:forwards?|ahead|back(?:wards?)?|left|right)\b(?:\
 _BARE_FIGURE = re.compile(rf"({nb.NUMBER})(?:-?ish)?(?!\s*(?:m\b|metres?|meters?|km|s\b|sec|seconds?|mph|kph|kmh|%|x\b))")
 
 
-def _bare_angle(low: str) -> re.Match[str] | None:
-    """The one unitless figure of a turn request, when there is exactly one."""
-    found = list(_BARE_FIGURE.finditer(low))
+# A thing switched on or off ("turn off street light 1", "switch lamp 3 on"): never a turn of it.
+_SWITCHED = re.compile(r"\b(?:turn|switch|flip|shut|flick)\w*\s+(?:[\w']+\s+){0,4}?(?:on|off|out)\b")
+
+
+def _bare_angle(low: str, scene: Scene) -> re.Match[str] | None:
+    """The one unitless figure of a turn request, when there is exactly one (the number of "car 1"
+    picks the car out: "turn car 1 to face north" says no angle)."""
+    picks = numbered_picks(scene, low)
+    found = [m for m in _BARE_FIGURE.finditer(low) if not any(start <= m.start() < end for _, start, end in picks)]
     return found[0] if len(found) == 1 else None
 
 

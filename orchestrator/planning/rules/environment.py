@@ -197,7 +197,9 @@ def lights(r: Reading) -> ToolCall | None:
     switched = LAMPS_SWITCHED_AS_SAID.search(r.low)
     if not re.search(r"\b(on|off|up|lit|switch|switched|turn|turned|bright|brighter|dark|darker|see|visible)\b", r.low) and not switched:
         return None  # "the lights handle it": lamps named as a circumstance, not switched
-    off = r.has(("off", "switch off", "turn off", "no lights", "dark streets")) or (switched is not None and not switched.group(0).startswith("open"))
+    # ("kick-off", "drop-off": a word of its own, no lights off)
+    off = bool(re.search(r"(?<![\w-])off\b(?!-)", r.low)) or r.has(("no lights", "dark streets")) or (
+        switched is not None and not switched.group(0).startswith("open"))
     state = "off" if off else "on"
     vehicles = r.has(("headlights", "vehicle lights", "car lights", "vehicle", "vehicles"))
     streets = not vehicles or r.has(("street lights", "street", "streetlights", "lamps", "street lamps", "lamp posts"))
@@ -223,7 +225,9 @@ _LEVEL = r"(?:the )?(?:exposure|brightness)"
 _UP = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) up|(?:raise|increase|turn up|bring up|push up) {_LEVEL}"
 _DOWN = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) down|(?:lower|reduce|turn down|bring down|pull down) {_LEVEL}"
 _EXPOSURE_TO = re.compile(r"\b(?:exposure|brightness)\s+(?:to|at|of|=|:)?\s*(\d+(?:\.\d+)?)(?!\s*(?:%|percent|m\b))")
-_BRIGHTER = re.compile(rf"\b(brighter|lighter|more exposure|too dark|overexpose|brighten|{_UP})\b")
+# ("so dark, cannot see anything" complains of it; "make it so dark that ..." asks for it)
+_BRIGHTER = re.compile(rf"\b(brighter|lighter|more exposure|too dark|(?<!make it )(?<!look )(?<!be )so dark(?! (?:that|you|we|it|nobody|no one|as)\b)"
+                       rf"|overexpose|brighten|{_UP})\b")
 _DIMMER = re.compile(rf"\b({_DOWN}|washed out|dimmer|less bright|(?:too|so|very|far too|way too) (?:bright|glaring|dazzling)|less exposure"
                      r"|underexpose|(?:tone|turn) down the (?:brightness|exposure|glare)|dim (?:it|the scene|things) down)\b")
 

@@ -35,7 +35,7 @@ def facing_direction(text: str) -> str | None:
 # A side or corner of a place, or the one of several furthest one way: "on the north-east corner",
 # "the western one", "the southernmost".
 _OUTER = re.compile(r"\b(?:(north|south)(?:[- ]?(east|west))?|(east|west))(?:ern|ernmost|most)?\s+(?:corner|side|one|end|edge)\b"
-                    r"|\b(north|south|east|west)(?:ern)?most\b|\b(?:furthest|farthest|most) (north|south|east|west)\b(?! of\b)")
+                    r"|\b(north|south|east|west)(?:ern)?-?most\b|\b(?:furthest|farthest|most) (north|south|east|west)\b(?! of\b)")
 
 
 def outer_direction(text: str) -> tuple[float, float] | None:

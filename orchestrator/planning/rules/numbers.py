@@ -197,7 +197,8 @@ def count(number: Number, what: str) -> int:
 
 
 # A spacing between things laid out ("4 m apart"): not a distance to a place.
-SPACING = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+(?:apart|spacing|gaps?)\b"
+# ("2 m between", "2 metres in between each": between them, never "2 m between the bench and the bin")
+SPACING = re.compile(r"(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\s+(?:apart|spacing|gaps?|(?:in\s+)?between\b(?!\s+(?:the|a|an|that|this|those|these|lots?|parking)\b))\b"
                      r"|\b(?:every|spaced(?: out)?(?: by)?|at|spacing(?: of)?|gaps? of)\s+(\d+(?:\.\d+)?)\s*(?:m|metres?|meters?)\b"
                      r"(?:\s+(?:intervals?|centres|centers|c/c|spacing|apart))?")
 

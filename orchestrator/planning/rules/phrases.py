@@ -91,9 +91,9 @@ def _phrases_of(categories: tuple[Category, ...]) -> tuple[tuple[str, str], ...]
     return tuple(sorted(set(phrases), key=lambda p: -len(p[0])))
 
 
-def find_categories(text: str) -> list[Mention]:
-    """Every category named in `text`, in order, longest phrases first, no overlaps."""
-    low = normalise(text)
+def find_categories(text: str, normalised: bool = False) -> list[Mention]:
+    """Every category named in `text`, in order, longest phrases first, no overlaps (where in `text` itself if `normalised`)."""
+    low = text if normalised else normalise(text)
     taken: list[tuple[int, int]] = []
     found: list[Mention] = []
     for phrase, name in _category_phrases():

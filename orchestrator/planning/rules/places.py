@@ -677,7 +677,7 @@ def location(
             if metres is not None and by_it["relation"] in ("in_front_of", "behind", "left_of", "right_of", "next_to"):
                 by_it["distance"] = metres  # "a car 25 m ahead of it"
             return by_it
-    if target is None and r.has(("there", "same place", "same spot", "nearby", "around it", "near it", "that spot")):
+    if target is None and r.has(("there", "same place", "same spot", "same location", "same position", "nearby", "around it", "near it", "that spot")):
         if notes.place is not None:
             return dict(notes.place)
         focus = memory.last_focus()
@@ -753,8 +753,9 @@ _ONE_LANE = re.compile(r"\b(?<!both )(?<!all )(?<!two )lane\b")
 
 
 # Where a thing just named stood: "where it was", "where they used to be", "in its old spot".
-_WHERE_IT_WAS = re.compile(r"\bwhere (?:it|they|that one|those) (?:was|were|stood|used to (?:be|stand))\b"
-                           r"|\b(?:in|to|back to|back in) (?:its|their) (?:old|original|first|former) (?:spot|place|position)\b")
+_WHERE_IT_WAS = re.compile(r"\bwhere (?:it|they|that one|those) (?:was|were|stood|started|began|came from|had been|used to (?:be|stand))\b"
+                           r"|\b(?:in|to|at|back to|back in|back at) (?:its|their) (?:old|original|first|former|previous|starting|start) "
+                           r"(?:spot|place|position|location|point)s?\b")
 # Where another thing is: "put the bus where the suv is now" (beside it), "where the bench was" (its spot).
 _WHERE_THING = re.compile(r"\bwhere\s+(?:the|that|this|our)\s+(?P<thing>[a-z_0-9 ]+?)\s+"
                           r"(?P<verb>is|are|stands|sits|is parked|was|were|stood|used to (?:be|stand))\b")

@@ -121,7 +121,7 @@ MIN_CONFIDENCE = 0.05
 # Clause breaks: a stop or colon between digits is part of a number or a clock time ("2.5 m",
 # "18:30"), not a break; nor is "then" after "who" ("a man who then walks to the bench": one thing). "Then" said
 # formally ("and subsequently", "afterwards") breaks as "then" does.
-_SPLIT = re.compile(r"((?:[;!?\n]|(?<!\d)[.:]|[.:](?!\d))+|(?<!\bwho),?\s+(?:and then|then|and also|(?:and )?after that|(?:and )?(?:subsequently|afterwards?))\s+)")
+_SPLIT = re.compile(r"((?:[;!?\n]|(?!(?<=\b[Nn][Oo])\.\s*\d)(?:(?<!\d)[.:]|[.:](?!\d)))+|(?<!\bwho),?\s+(?:and then|then|and also|(?:and )?after that|(?:and )?(?:subsequently|afterwards?))\s+)")
 _VERBS = (
     "add",
     "make",
@@ -500,6 +500,9 @@ def _conjuncts(clause: str, places: tuple[str, ...] = ()) -> list[str]:
     apart = None if particle else re.search(r"\b(away|out|off)\b", clause[verb.end() : cuts[0].start()], re.IGNORECASE)
     if apart is not None:  # "take the cars away from lot B, the sedans and the SUV": each taken away
         lead = f"{lead} {apart.group(1)}"
+    tail = re.search(r"\s+(away|out|off|down)\s*[.!]*\s*$", parts[-1], re.IGNORECASE)
+    if tail is not None and particle is None and apart is None:  # "take car 1 and car 2 away": both taken away
+        parts[:-1] = [f"{p} {tail.group(1)}" for p in parts[:-1]]
     colour = re.search(rf"\s+((?:{'|'.join(COLOURS)}))\s*[.!]*\s*$", parts[-1].lower())
     if colour is not None and not any(re.search(rf"\b(?:{'|'.join(COLOURS)})\b", p.lower()) for p in parts[:-1]):
         parts[:-1] = [f"{p} {colour.group(1)}" for p in parts[:-1]]  # "paint the bench and the bin red": both red

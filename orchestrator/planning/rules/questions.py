@@ -170,6 +170,9 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     """The search calls that answer a question clause: one per part of a compound question."""
     if not r.mentions and (bare := _LIGHTS_BY.search(r.text.lower())) is not None:  # "lights near the bus stop?": the lamps there
         r = read(r.text[: bare.start()] + "street lights" + r.text[bare.end() :], scene)
+    added = _just_added(r, scene, memory)
+    if added:  # "where is the vehicle I just added?": that one, of whatever kind the group word covers
+        return [ToolCall(tool="asset_properties", args={"asset": i}) for i in added]
     texts = [t for t in _NEXT_PART.split(r.text) if t.strip(" ,")]
     if len(texts) > 1:  # "which way and how": a part that names nothing belongs to the question before
         readings = [read(t, scene) for t in texts]
@@ -337,6 +340,22 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         if r.mentions or _ANY_KIND.search(r.masked) or anchor.kind != "landmark" or busy:
             return _around(r, scene, anchor)
     return _what_or_where(r, scene, named, back, notes.subject, memory.last_touched())
+
+
+# A thing said to be the one just made: "the vehicle I just added", "the bench you put", "the cones just added".
+_ADDED_BACK = re.compile(r"^\s*(?:that\s+|which\s+)?(?:(?:i|you|we)\s+(?:just\s+|have\s+|'ve\s+)?|just\s+|newly\s+|recently\s+)"
+                         r"(?:added|put|placed|made|created|spawned)\b")
+
+
+def _just_added(r: Reading, scene: Scene, memory: Memory) -> list[str]:
+    """The things the last turn added that a thing named as just added means ([] when none is named so)."""
+    mention = next((m for m in r.mentions if _ADDED_BACK.match(r.low[m.end :])), None)
+    if mention is None:
+        return []
+    word = ph.singular(r.low[mention.start : mention.end].strip())  # "the vehicle": any kind the catalog tags so
+    recent = [i for i in memory.last_added() if (a := scene.asset(i)) is not None
+              and (a.category == mention.category or (word in md.catalog_tags() and word in catalog()[a.category].tags))]
+    return recent if mention.plural else recent[-1:]
 
 
 def _names_nothing(r: Reading) -> bool:

@@ -130,6 +130,9 @@ def find_place(scene: Scene, low: str) -> tuple[str, int, int] | None:
     if by_compass is not None and (best is None or by_compass[1] < best[2] < by_compass[2]):
         return by_compass  # "the western car park": not the car park the name alone would pick
     if best is not None:
+        part = re.match(r"\s+(entrance|driveway|gate|exit)\b", low[best[3] :])
+        if part is not None and scene.landmark(whole := f"{best[1]} {part.group(1)}") is not None:
+            return whole, best[2], best[3] + part.end()  # "the parking B entrance": that lot's entrance, by any of its names
         return best[1], best[2], best[3]
     shortened = _shortened_name(scene, low)
     if shortened is not None:
@@ -393,6 +396,8 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
     for mention in mentions:
         before = low[: mention.start].split()[-2:]
         picked = next((ident for ident, start, _ in picks if mention.start <= start < mention.end), None)
+        listed = _PICKED_AFTER.match(low, mention.end)  # "street lights 9 and 11": the later numbers name more of them
+        more = [ident for ident, start, _ in picks if listed is not None and mention.end <= start < listed.end()] if picked else []
         present = sorted(
             (a for a in scene.assets if a.category == mention.category),
             key=lambda a: int(a.id.rsplit("_", 1)[-1]) if a.id.rsplit("_", 1)[-1].isdigit() else 0,
@@ -410,7 +415,7 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
         if before[-1:] == ["middle"] or (middle is not None and (" of " in middle.group(0) or before[-1:] in (["the"], ["that"], ["this"]))):
             ids.append(_middle_of_row(scene, low, mention).id)
         elif picked is not None:
-            ids.append(picked)
+            ids += [picked, *more]
         elif ordinal is not None and present and -1 <= ordinal <= len(present) and ordinal != 0:
             ids.append(present[ordinal - 1 if ordinal > 0 else -1].id)
         else:
@@ -573,25 +578,70 @@ def labelled(scene: Scene, low: str) -> list[tuple[str, int, int]]:
 
 # A kind and a number that picks one thing out ("car 1", "bench number two"), never an amount or a
 # measure ("car 5 m ahead", "cones 3 deep"), nor a count of what follows ("plant 4 trees").
-_PICKED = re.compile(r"\b([a-z]+)\s+(?:number |no\. |nr |# ?)?(\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b"
-                     r"(?!\s*(?:m|metres?|meters?|ft|feet|yards?|km|kph|mph|%|x|more|of|deep|wide|high|across|seconds?|s)\b)"
-                     r"(?![.,]\d)")
+_PICK_NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b"
+_NOT_A_MEASURE = (r"(?!\s*(?:m|metres?|meters?|ft|feet|yards?|km|kph|mph|%|x|more|of|deep|wide|high|across|seconds?|s|deg|degrees?|minutes?|mins?"
+                  r"|hours?|hrs?|h|am|pm|o'?clock|times|cm|mm|miles?|percent|clockwise|anti-?clockwise|counter-?clockwise)\b)(?!\s*°)"
+                  r"(?![.,]\d)(?!\s+(?:at a time|by one|after (?:the )?(?:other|another))\b)")  # "the cars one at a time": all
+_PICKED = re.compile(rf"\b([a-z]+)\s+(?:number |no\. |nr |# ?)?({_PICK_NUMBER}){_NOT_A_MEASURE}")
+# The numbers said after a kind's name, one or a list: "street light 9", "the lamps no. 9 and 11",
+# "trees 1, 2 and 4" (the list is read whole or not at all: "cones 2 and 3 m apart" picks none).
+_PICKED_AFTER = re.compile(rf"\s*(?:numbers? |nos?\.? ?|nr\.? |# ?)?{_PICK_NUMBER}"
+                           rf"(?:(?:\s*,\s*(?:and\s+)?|\s+(?:and|&)\s+)(?:number |no\. |# ?)?{_PICK_NUMBER})*+{_NOT_A_MEASURE}")
 
 
 def numbered_picks(scene: Scene, low: str) -> list[tuple[str, int, int]]:
-    """Things the words pick out by kind and number ("use car 1", "bench number two"): the id of
-    each one the scene has, and the span of `low` that names it."""
+    """Things the words pick out by kind and number ("use car 1", "bench number two", "street lights
+    9 and 11"): the id of each one the scene has, and the span of `low` that names it (the kind and
+    the first number for the first, each later number for the rest)."""
     out = []
+    for mention, picked in _kinds_numbered(low):
+        if any(scene.asset(ident) is None for ident, _ in picked):
+            continue  # a number the scene has no such thing for (see numbered_absent)
+        out += [(ident, mention.start if k == 0 else n.start(), n.end()) for k, (ident, n) in enumerate(picked)]
     for said in _PICKED.finditer(low):
         kinds = {m.category for m in ph.find_categories(said.group(1))}
-        counted = ph.find_categories(low[said.end() : said.end() + 24].split(",")[0])
-        if len(kinds) != 1 or (counted and not low[said.end() :].lstrip().startswith(("and", "or", "to", "in", "at", "on", "by"))) \
-                or low[: said.start()].rstrip().endswith(" as"):  # "mark the SUV as vehicle 2": a label
-            continue
-        number = int(said.group(2)) if said.group(2).isdigit() else ph.NUMBER_WORDS[said.group(2)]
-        if scene.asset(ident := f"{kinds.pop()}_{number}") is not None:
+        if any(start <= said.start(2) < end for _, start, end in out):
+            continue  # read with the rest of its list
+        if len(kinds) != 1 or _counts_what_follows(low, said.end()) or low[: said.start()].rstrip().endswith(" as"):
+            continue  # "mark the SUV as vehicle 2": a label
+        if scene.asset(ident := f"{kinds.pop()}_{_picked_number(said.group(2))}") is not None:
             out.append((ident, said.start(), said.end()))
+    return sorted(out, key=lambda pick: pick[1])
+
+
+# The highest number read as a thing's that the scene lacks; a bigger one is an amount said loosely.
+ABSENT_NUMBER_MAX = 20
+
+
+def numbered_absent(scene: Scene, low: str) -> list[str]:
+    """Things the words pick out by kind and number that the scene does not have, though it has
+    others of their kind ("rotate bench 4" where the one bench is bench_1): each as said, "bench 4"."""
+    return [f"{mention.category.replace('_', ' ')} {n.group(0)}" for mention, picked in _kinds_numbered(low)
+            for ident, n in picked if scene.asset(ident) is None and scene.count(mention.category)
+            and _picked_number(n.group(0)) <= ABSENT_NUMBER_MAX]  # "turn the car 90": an angle, no car 90
+
+
+def _kinds_numbered(low: str) -> list[tuple[ph.Mention, list[tuple[str, re.Match[str]]]]]:
+    """Each kind said with numbers after it ("street lights 9 and 11"), with the id each number
+    would name and where the number is."""
+    out = []
+    for mention in ph.find_categories(low, normalised=True):
+        listed = _PICKED_AFTER.match(low, mention.end)
+        if listed is None or _counts_what_follows(low, listed.end()) or low[: mention.start].rstrip().endswith(" as"):
+            continue  # "mark the SUV as vehicle 2": a label
+        numbers = [n for n in re.finditer(rf"\b{_PICK_NUMBER}", low[: listed.end()]) if n.start() >= mention.end]
+        out.append((mention, [(f"{mention.category}_{_picked_number(n.group(0))}", n) for n in numbers]))
     return out
+
+
+def _counts_what_follows(low: str, end: int) -> bool:
+    """Whether the number before `end` counts the thing named after it ("next to tree 3 cones")."""
+    counted = ph.find_categories(low[end : end + 24].split(",")[0])
+    return bool(counted) and not low[end:].lstrip().startswith(("and", "or", "to", "in", "at", "on", "by"))
+
+
+def _picked_number(word: str) -> int:
+    return int(word) if word.isdigit() else ph.NUMBER_WORDS[word]
 
 
 def read(text: str, scene: Scene) -> Reading:

@@ -70,6 +70,8 @@ _SHORT_SLIPS = {
     "tel": "tell",
     "whr": "where",
     "u": "you",
+    "ya": "you",  # "could ya add ...", "would ya"
+    "git": "get",  # "git rid of"
     # text-speak
     "n": "and",  # "remove the hydrant n make it nite"
     "ur": "your",
@@ -129,6 +131,7 @@ _REPAIRABLE_GRAMMAR = (
     "another",
     "colour",
     "distance",
+    "location",  # "same locaton": the place, never "locate"
     "every",  # scope words: "evry vehicle exept the ego" is not "very vehicle"
     "everything",
     "except",
@@ -925,6 +928,13 @@ _NOUN_OPENERS = frozenset({"a", "an", "the", "this", "that", "these", "those", "
                            "any", "each", "every", "no", "one", "two", "three", "four", "five", "six", "another"})
 
 
+# A compass word one letter short or long, said as part of a hyphenated one ("nort-east", "south-wesst").
+_COMPASS_SLIP = {slip: way for way in ("north", "south", "east", "west")
+                 for slip in {way[:i] + way[i + 1 :] for i in range(1, len(way))} | {way[:i] + way[i] + way[i:] for i in range(1, len(way))}
+                 | {way[:i] + c + way[i + 1 :] for i in range(1, len(way)) for c in "aeiou"}
+                 if slip not in ("eat", "sout", "wet", "est", "nerth", "wost", "wist", "wast") and slip != way}
+
+
 def _joined_apart(text: str, vocab: frozenset[str]) -> str:
     words = list(_ALPHA.finditer(text))
     out, at = [], 0
@@ -936,7 +946,8 @@ def _joined_apart(text: str, vocab: frozenset[str]) -> str:
         # "them folk cross over the road": two words of their own, a verb's, unless a noun's article comes first
         verb_like = bool(ph.find_categories(joined)) and is_english(a.group(0).lower()) and is_english(b.group(0).lower()) \
             and not (before and before[0].lower() in _NOUN_OPENERS)
-        if joined in vocab and not verb_like and f"{a.group(0)} {b.group(0)}".lower() not in _phrases():
+        # ("any one of them", "every one": a pick of things, never "anyone", a person)
+        if joined in vocab and not verb_like and f"{a.group(0)} {b.group(0)}".lower() not in (*_phrases(), "any one", "every one"):
             out.append(text[at : a.start()] + joined)
             at = b.end()
     return "".join(out) + text[at:]
@@ -1386,6 +1397,11 @@ def repair(text: str, scene: Scene) -> Repaired:
         word = m.group(0)
         if "_" in text[max(0, m.start() - 1) : m.end() + 1]:
             return word  # part of an asset id such as passenger_car_2
+        if "-" in word.strip("-") and not is_known(word.lower(), vocab):  # "nort-east": each part as a word of its own
+            parts = [_COMPASS_SLIP.get(part.lower(), part) for part in word.split("-")]
+            if "-".join(parts) != word:
+                repairs.append(f"{word} -> {'-'.join(parts)}")
+                return "-".join(parts)
         slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :], _place_phrases(scene)) \
             or _name_end_slip(word, text[: m.start()]) or _short_thing_slip(word, text[: m.start()], vocab) or _place_word_slip(word, text[: m.start()], vocab, scene) or _colour_slip(word, text[: m.start()], text[m.end() :], vocab)
         if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away; "the east gait"; "make it blu"
