@@ -331,9 +331,10 @@ def _opposed(one: Plan, other: Plan) -> bool:
 
 def _fits_the_mood(plan: Plan, request: Request) -> bool:
     """Whether the plan does what the words' mood and polarity ask: a look-up for a question, a change
-    for a command, and no removal where they ask to add (nor an addition where they ask to remove)."""
+    for a command, and an addition or a removal only where the words say which ("that truck has left"
+    says neither: its removal read by the rules stands against an addition)."""
     kind = _kind_of(plan)
-    return (kind == "look") == request.question and (request.polarity is None or kind not in ("add", "remove") or kind == request.polarity)
+    return (kind == "look") == request.question and (kind not in ("add", "remove") or kind == request.polarity)
 
 
 def _kind_of(plan: Plan) -> str:

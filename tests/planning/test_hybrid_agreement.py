@@ -157,7 +157,10 @@ def test_plans_that_do_opposite_things_are_asked_when_the_rules_missed_a_word(co
     # an addition against a removal is as opposite; two edits of one kind are not
     stop = [ToolCall(tool="add_asset", args={"category": "stop_sign"})]
     gone = [ToolCall(tool="remove_assets", args={"category": "stop_sign"})]
-    assert path(hybrid(Fixed("rules", stop, 0.6), Fixed("retrieval", gone, 0.5), Fixed("llm", None)).plan("tak out stop sign", context)) == "path: ask"
+    assert path(hybrid(Fixed("rules", stop, 0.6), Fixed("retrieval", gone, 0.5), Fixed("llm", None)).plan("get rid of stop sign pls", context)) == "path: ask"
+    # words that say neither: the rules' reading stands
+    plan = hybrid(Fixed("rules", gone, 0.75), Fixed("retrieval", stop, 0.6), Fixed("llm", None)).plan("that stop sign has left", context)
+    assert path(plan) != "path: ask" and plan.calls == gone
     assert path(hybrid(Fixed("rules", RAIN, 0.8), Fixed("retrieval", SNOW, 0.6), Fixed("llm", None)).plan("wet please", context)) == "path: fast"
     # retrieval's reading against the words' mood (a look-up for a command) is no reading to offer
     plan = hybrid(Fixed("rules", add, 0.8), Fixed("retrieval", look, 0.6), Fixed("llm", None)).plan("add an SUV in lot A, real quick", context)

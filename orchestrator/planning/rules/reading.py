@@ -530,6 +530,9 @@ def _concepts(low: str, taken: list[ph.Mention]) -> list[ph.Mention]:
 
 
 # Who something is for, or where they are ("for the students", "for somewhere children walk"): not what is asked.
+# ... or whom a thing not named does something for: "something near it that warns the people", "anything to
+# protect the kids": the people are who it is for.
+_SERVED_BY = re.compile(r"\b(?:something|anything|some ?thing|a thing|stuff)\b[^,.;]*\b(?:that|which|to)\s+[a-z]+\s+(?:the\s+|our\s+|those\s+|these\s+|all\s+)?$")
 _FOR_WHOM = re.compile(r"\bfor\s+(?:the\s+|a\s+|an\s+|somewhere\s+|anywhere\s+|a place\s+(?:where\s+)?|where\s+)?$")
 
 
@@ -687,6 +690,7 @@ def read(text: str, scene: Scene) -> Reading:
     if len(mentions) > 1 or place is not None or ego is not None:  # "slow our car down, ... for somewhere children walk"
         kept = [m for m in mentions if not _FOR_WHOM.search(low[: m.start])]
         mentions = kept if kept or place is not None or ego is not None else mentions
+    mentions = [m for m in mentions if not _SERVED_BY.search(low[: m.start])]
     mentions = without_goals(low, without_beneficiaries(low, mentions))
     going = HOW_THINGS_GO.match(low, len(low) - len(low.lstrip()))
     if going is not None and any(m.start >= going.end() for m in mentions):  # "people keep saying there's nowhere to sit"
