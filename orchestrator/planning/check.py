@@ -327,6 +327,10 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         unlooked = _kind_not_looked_up(request, effect.calls, scene)
         if unlooked is not None:  # "the sign with eight sides: in which street is it?" answered about the lanes' traffic
             out.append(f"you asked about the {unlooked}, but the plan looks up something else")
+        side = side_of(request.low, scene)
+        searches = [c for c in effect.calls if c.tool == "find_assets"]
+        if side is not None and searches and not any({"lane", "near", "nearest_to", "furthest_from"} & set(c.args) for c in searches):
+            out.append(f"you asked about the {side[0]}, but the plan searches the whole scene")  # "how many cars are on the north side?"
     if request.question and _SETTING_ASKED.search(request.low) and not any(
             c.tool in ("describe_environment", "set_weather", "set_time_of_day") for c in effect.calls):
         out.append("you asked about the weather, the time or the lighting, but the plan looks up something else")
@@ -902,16 +906,31 @@ def _numbers_used(effect: Effect, scene: Scene, place: str | None, ego: bool = F
 
 
 def _figures_left_out(request: Request, calls: list[ToolCall]) -> list[float]:
-    """The speeds the request says that none of the calls' arguments hold, in the unit said ("drive
-    at 36 km/h and stop before the crossing" read as the stop alone leaves out 36). Only speeds: a
+    """The speeds and distances the request says that none of the calls' arguments hold, in the
+    unit said ("drive at 36 km/h and stop before the crossing" read as the stop alone leaves out
+    36; "a stopped car 35 m ahead" read as the ego stopping leaves out 35). Not times: a
     storyboard's times and gaps are sums of what is said ("brakes 4 s later" is at 5 s)."""
     used = [n for c in calls for n in _numbers_in_args(c.args)]
-    speeds = [(float(m.group(1)), m.group(2)) for m in _SPEED_SAID.finditer(request.low)]
+    # a newcomer's place ahead is where it will be when it starts: a sum again ("steps out 15 m ahead after 3 s")
+    figures = (_SPEED_SAID,) if any("location" in c.args for c in calls) else (_SPEED_SAID, _DISTANCE_FIGURE)
+    speeds = [(float(m.group(1)), m.group(2)) for said in figures for m in said.finditer(request.low)]
     return [n for n, unit in speeds
             if not _accounts_for(n, used, [1.0, *(f for said, f in UNIT_FACTORS.items() if re.search(said, unit))])]
 
 
+def _lane_change_left_out(low: str, calls: list[ToolCall]) -> list[str]:
+    """A move into another lane said ("swings into the left lane at 6 s") that no call makes."""
+    said = _LANE_CHANGE_SAID.search(low)
+    kinds = {str(c.args.get("manoeuvre", {}).get("kind")) for c in calls if isinstance(c.args.get("manoeuvre"), dict)}
+    kept = said is not None and re.search(r"\b(?:keep|stay|stick|remain)\w*\s+(?:\w+\s+)?$", low[: said.start()])  # "keeping to the left lane"
+    if said is None or kept or kinds & {"lane_change", "cut_in", "overtake"}:
+        return []
+    return [f"you said '{said.group(0).strip()}', but the plan changes no lane"]
+
+
+_LANE_CHANGE_SAID = re.compile(r"\b(?:in)?to the (?:left|right)(?:[- ]hand)? lane\b|\bchang\w* lanes?\b|\blane change\b")
 _SPEED_SAID = re.compile(rf"(\d+(?:\.\d+)?)\s*{SPEED_UNIT}", re.IGNORECASE)  # the readers' own units of speed
+_DISTANCE_FIGURE = re.compile(r"(\d+(?:\.\d+)?)\s*(m|metres?|meters?|ft|feet|foot|yards?)\b(?!\s*(?:/|per\b|an hour))")
 
 
 def _accounts_for(number: float, used: list[float], factors: list[float]) -> bool:
@@ -1438,8 +1457,9 @@ def review(prompt: str, plan: Plan, context: PlanContext) -> Verdict:
         return Verdict("ask" if missed.question else "refuse", [missed.problem], missed.question, missed.message)
     if read_as_scenario(prompt, plan, context):  # the storyboard's readings are the scenario reader's to judge,
         left_out = _figures_left_out(read_request(prompt, context.scene), plan.calls)  # but every figure said is in them
-        if left_out:
-            problems = ["the plan leaves out " + ", ".join(f"{n:g}" for n in left_out)]
+        problems = ["the plan leaves out " + ", ".join(f"{n:g}" for n in left_out)] if left_out else []
+        problems += _lane_change_left_out(ph.normalise(prompt), plan.calls)  # and every lane change said
+        if problems:
             return Verdict("refuse", problems, None, refusal(problems, context))
         return Verdict("apply")
     effect = dry_run(plan.calls, context)

@@ -788,6 +788,8 @@ def _added_by_verb(low: str, at: int) -> bool:
 # ("ice on my truck roof"). "Park my truck in lot A" and "my truck, east gate" ask for one.
 _POSSESSED = re.compile(r"(?:^|[,.;:!?]|\b(?:so|because|since|as|and|but|cos|cause|while|when|if))\s*(?:my|our|his|her|their|your)\s+$")
 _POSSESSED_BY = re.compile(r"\b(?:on|in|into|onto|for|like|of|with|to|from|by|near|behind|beside|past|under|than)\s+(?:my|our|his|her|their|your)\s+$")
+# Someone's thing set to do something: "have my guy cruise over", "get our car to park".
+_HAVE_MY = re.compile(r"\b(?:have|get|let|make|tell)\s+(?:my|our|his|her|their|your)\s+$")
 _DOES = re.compile(r"\s*(?:'s\s+\w+ing|(?:\w+\s+)?(?:can|can't|cannot|could|couldn't|needs?|is|isn't|are|aren't|was|wasn't|has|had|have"
                    r"|will|won't|would|wouldn't|should|must|does|doesn't|did|didn't|keeps|gets|got|wants?|takes?))\b")
 
@@ -798,10 +800,13 @@ def possessed_added(masked: str, scope: Scope) -> list[str]:
     if not scope.added or ADD_WORDS.search(masked):
         return []
     out = []
+    low = ph.normalise(masked)
     for category in dict.fromkeys(a.category for a in scope.added):
         said = [n for n in named_in(masked) if n.category == category]
-        if said and all(_POSSESSED_BY.search(n.before) or (_POSSESSED.search(n.before) and _DOES.match(n.after))
-                        for n in said):
+        said += [Named(category, False, low[: m.start()], low[m.end() :])  # "have my guy cruise over": a word for one
+                 for word in lx.CONCEPTS.get(category, ()) for m in re.finditer(rf"\b{re.escape(word)}\b", low)]
+        if said and all(_POSSESSED_BY.search(n.before) or _HAVE_MY.search(n.before)
+                        or (_POSSESSED.search(n.before) and _DOES.match(n.after)) for n in said):
             out.append(category)
     return out
 

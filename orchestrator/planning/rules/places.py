@@ -17,7 +17,7 @@ from typing import Any
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.reading import SIDE_OF, Reading, find_place, lane_of_side, road_kinds_spelt
+from drivetwin.orchestrator.planning.rules.reading import SIDE_OF, Reading, find_place, lane_of_side, lane_on_side, road_kinds_spelt
 from drivetwin.tools.arrange import row_start
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import Location, resolve_anchor
@@ -935,7 +935,30 @@ def side_lane(low: str, scene: Scene) -> str | None:
     westbound lane, the one furthest north), whose edge what stands on that side lines; None when
     they name no side of a road of two or more lanes."""
     found = lane_of_side(low, scene)
-    return found[0].id if found is not None else None
+    if found is not None:
+        return found[0].id
+    alone = _SIDE_ALONE.search(low) or _SIDE_OF_THE_ROAD.search(low)
+    if alone is None:
+        return None
+    # "the street lights on the north side": of the one road that has a north side (runs east-west)
+    way = alone.group(1)
+    across = {lane.road for lane in scene.roads.lanes if lane.road and _runs_across(lane, way)}
+    if len(across) != 1:
+        return None
+    lane = lane_on_side([ln for ln in scene.roads.lanes if ln.road in across], way)
+    return lane.id if lane is not None else None
+
+
+# A side of the road said with no road named: "the south side of the road".
+_SIDE_OF_THE_ROAD = re.compile(r"\b(north|south|east|west)(?:ern)? side of the (?:road|street)\b")
+
+
+def _runs_across(lane: Lane, way: str) -> bool:
+    """Whether a lane runs square to compass direction `way` (within 60 degrees) from end to end."""
+    (x0, y0), (x1, y1) = lane.centreline[0], lane.centreline[-1]
+    dx, dy = md.COMPASS_VECTORS[way]
+    length = math.hypot(x1 - x0, y1 - y0)
+    return length > 0 and abs((x1 - x0) * dx + (y1 - y0) * dy) / length < ACROSS_COS
 
 
 def _across(scene: Scene, way: str) -> list[tuple[float, float]]:

@@ -745,9 +745,9 @@ def find_count(reading: Reading, mention: ph.Mention) -> int | None:
     if lx.COLLECTIVE_COUNTS.get(itself) and not re.search(r"\b(?:\d+|a few|several)\s*$", before):
         return lx.COLLECTIVE_COUNTS[itself]  # "a crowd at the fountain": a crowd's worth, not one
     after = _COUNT_AFTER.search(reading.low[mention.end :])  # "cones x4", "a ring of people, 6 of them"
-    if after is not None:
-        word = next(g for g in after.groups() if g)
-        return int(word) if word.isdigit() else ph.NUMBER_WORDS.get(word)
+    word = next(g for g in after.groups() if g) if after is not None else ""
+    if word.isdigit() or word in ph.NUMBER_WORDS:  # not "2 more of them": more is no number
+        return int(word) if word.isdigit() else ph.NUMBER_WORDS[word]
     elided = _ELIDED_COUNT.search(reading.low[mention.end :])
     if elided is not None and (elided.group(1).isdigit() or elided.group(1) in ph.NUMBER_WORDS):
         return int(elided.group(1)) if elided.group(1).isdigit() else ph.NUMBER_WORDS[elided.group(1)]
