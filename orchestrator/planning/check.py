@@ -343,6 +343,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if from_ego and two_ends and (ends_not_ego or not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked)):
         out.append("the plan measures from the ego, which your words do not name")  # "how far is the hosptial from the gate"
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
+    if any(c.tool in SCENARIO_TOOLS for c in effect.calls):
+        out += _lane_change_left_out(request.low, list(effect.calls))
     if (both := _added_then_removed(effect)):  # nothing comes of it
         out.append("the plan adds " + _names(both) + " and takes it away again")
     if _MOVE_ONLY.search(request.low) and effect.added and not effect.changed and not effect.removed and not ADD_WORDS.search(request.low):

@@ -222,6 +222,8 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
 # English's ways of wrapping a request in a question ("is it possible to park ...", "any chance we
 # could have ...", "would you mind adding ...", "I was wondering if you could ..."): a command,
 # unless what is wrapped is itself a request for information ("is it possible to tell me ...").
+# How many of a thing there should be, changed: "increase the number of benches", "reduce the count of cones".
+_AMOUNT_CHANGED = re.compile(r"\b(?:double|triple|increase|reduce)\s+the\s+(?:number|count|amount)\s+of\b")
 _NOT_INFO = r"(?!tell|say|know|see|find|check|count|list|show|measure)"
 _WRAPPED = re.compile(
     rf"\b(?:is it|would it be|will it be|is that) (?:at all )?possible (?:for (?:you|us|me) )?to {_NOT_INFO}\w+"
@@ -705,7 +707,8 @@ def asks(low: str) -> bool:
         return True  # "the SUV is parked, yeah?": whether what was said is so
     polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip())
                   or _setting_offered(low) or _HAVE_ONE.match(low) is not None or _thing_asked(low))
-    return bool(_INFO.search(low) or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
+    info = _INFO.search(_AMOUNT_CHANGED.sub(" ", low))  # "double the number of benches" asks for no count
+    return bool(info or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
         not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")
                         or bool(re.search(r"\?\s+(?:just |only )?(?:return|give|list|report|show)\b", low))))
 

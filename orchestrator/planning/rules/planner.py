@@ -1491,16 +1491,22 @@ def _said_once(r: Reading, scene: Scene) -> list[str]:
 _FILL_WITH = re.compile(r"\bfill(?:s|ing)?\s+(?:up\s+)?(?!.*\b(?:remove|delete|clear|take)\b).*\bwith\b")
 
 
+# So many times the things there: "double the number of benches", "twice as many trees in lot A".
+_TIMES_AS_MANY = re.compile(r"\b(double|triple|twice|three times)(?: as many| the (?:number|count|amount) of| the)?\b(?![-\w])(?! (?:it|them|that|this)\b)")
+_TIMES = {"double": 2, "twice": 2, "triple": 3, "three times": 3}
+
+
 def _to_count(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """The additions or removals that leave the count said of a thing at its place; None where the
     words say no final count or nothing of the kind is there to count against (a plain addition)."""
-    said = FINAL_COUNT.search(r.low)
+    said = FINAL_COUNT.search(r.low) or _TIMES_AS_MANY.search(r.low)
     mention = next((m for m in r.mentions if said is not None and m.start >= said.end()), None)
-    wanted = find_count(r, mention) if mention is not None else None
-    if mention is None or wanted is None:
-        return None
-    there = kept_at(scene, mention.category, r.landmark)
-    if not there:
+    there = kept_at(scene, mention.category, r.landmark) if mention is not None else []
+    times = _TIMES.get(said.group(1) or "", 0) if said is not None and said.re is _TIMES_AS_MANY else 0
+    wanted = times * len(there) if times else find_count(r, mention) if mention is not None else None
+    if mention is not None and times and not there:
+        raise PlanningError(f"there is no {mention.category.replace('_', ' ')} {'there ' if r.landmark else ''}to multiply; say how many to add")
+    if mention is None or wanted is None or not there:
         return None
     if wanted == len(there):
         raise PlanningError(f"there are already {wanted} {mention.category} there; nothing to change")

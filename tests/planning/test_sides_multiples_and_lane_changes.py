@@ -1,0 +1,68 @@
+"""Worded here (none from a suite): a question about the things on one side of the road with no
+road named (the one road that has that side), or about a kind that stands anywhere (refused: the
+search cannot say a side); "2 more of them" adds two; "double the number of benches" adds as many
+as there are and a multiple of none is refused; a lane change or a distance said that a storyboard
+leaves out is refused; someone's thing set to do something ("have my guy ...") is never a new one."""
+
+from __future__ import annotations
+
+from drivetwin.orchestrator.planning.rules.planner import RulePlanner
+from drivetwin.orchestrator.session import Session
+from misreading import Fixed, add, call, held, ruled  # this folder is on sys.path (no __init__.py)
+
+
+def _north(scene) -> set[str]:
+    return {a.id for a in scene.assets if a.category == "street_light" and a.pose.y > 0}
+
+
+def test_a_side_said_alone_in_a_question_is_the_side_of_the_one_road_that_has_it(campus, registry):
+    for said in ("how many street lights are on the north side?", "which lamp posts stand on the south side of the road?"):
+        report = Session(campus, RulePlanner(), registry).submit(said)
+        assert report.ok and report.plan is not None, said
+        wanted = _north(campus) if "north" in said else {a.id for a in campus.assets if a.category == "street_light"} - _north(campus)
+        assert f"{len(wanted)} street_light(s) found" in (report.answer or ""), (said, report.answer)
+        assert all(i in (report.answer or "") for i in wanted), said
+
+
+def test_a_side_the_search_cannot_say_is_refused_not_answered_for_the_whole_scene(campus, registry):
+    report = held(campus, registry, Fixed(call("find_assets", category="cars")), "how many cars are on the north side?")
+    assert "north side" in (report.error or "") and "whole scene" in (report.error or "")
+
+
+def test_more_of_them_adds_the_number_said(campus, registry):
+    session = ruled(campus, registry, "add 3 traffic cones in front of the JTEKT building entrance", "add 2 more of them")
+    assert session.scene.count("traffic_cone") == 5
+
+
+def test_a_multiple_of_the_things_there_adds_that_many_more(campus, registry):
+    benches = campus.count("bench")
+    assert ruled(campus, registry, "double the number of benches").scene.count("bench") == 2 * benches
+    assert ruled(campus, registry, "could we have twice as many trees").scene.count("tree") == 2 * campus.count("tree")
+    assert ruled(campus, registry, "reduce the number of street lights").scene.count("street_light") < campus.count("street_light")
+    # none to multiply: a refusal, never the default few
+    session = Session(campus, RulePlanner(), registry)
+    report = session.submit("triple the number of cones")
+    assert not report.ok and session.scene.count("traffic_cone") == 0
+    # a word that only begins with one is none: "double-park a car" parks one
+    assert ruled(campus, registry, "double-park a car in lot B").scene.count("passenger_car") == campus.count("passenger_car") + 1
+
+
+def test_a_lane_change_a_storyboard_leaves_out_is_refused(campus, registry):
+    plan = Fixed(call("add_manoeuvre", actor="ego", manoeuvre={"kind": "keep_lane", "speed": 4.0}, at_time=6.0))
+    report = held(campus, registry, plan, "the ego rolls at 4 m/s and slides into the left lane at 6 s")
+    assert "changes no lane" in (report.error or "")
+
+
+def test_a_distance_a_storyboard_leaves_out_is_refused(campus, registry):
+    plan = Fixed(call("add_manoeuvre", actor="ego", manoeuvre={"kind": "stop", "rate": 4.0}))
+    report = held(campus, registry, plan, "the test needs a car standing still in the ego's lane 35 m ahead")
+    assert "35" in (report.error or "")
+
+
+def test_someones_thing_set_to_do_something_is_never_a_new_one(campus, registry):
+    session = ruled(campus, registry, "put a pedestrian by the fountain")
+    session.planner = Fixed(add("pedestrian"))
+    before = session.scene
+    report = session.submit("have my guy wander off somewhere else")
+    assert not report.ok and session.scene == before
+    assert "your pedestrian" in (report.error or "")
