@@ -46,6 +46,7 @@ from drivetwin.evals import (
     practice34_source,
     practice35_source,
     practice36_source,
+    practice37_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -152,6 +153,10 @@ BRIEFS: dict[str, Brief] = {
     # vague and erroneous grades of every task hold 13, the rest 11 or 12.
     "practice36": Brief(340, 11, 11, practice36_source, multi_turn=45, planned=30, compound=20,
                         weighted_grades=("vague", "erroneous")),
+    # Eight voices: Greek speaker, Indonesian speaker, Ghanaian English speaker, Hong Kong Cantonese speaker, tabletop
+    # game master, plumber and tradesperson, commit-message software developer, formal letter-writer; arrangement (every
+    # grade) and the vague and erroneous grades of every task hold 13, the rest 11 or 12.
+    "practice37": Brief(340, 11, 11, practice37_source, multi_turn=45, planned=30, compound=20, weighted_grades=("vague", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
