@@ -71,7 +71,7 @@ REMOVE_WORDS = re.compile(
     r"|\b(?:be|been|being|get|gets|got)\s+(?:\w+ly\s+)?(?:removed|deleted|eliminated|erased|discarded|scrapped|taken (?:away|out|off)"
     r"|cleared (?:away|out)|got rid of)\b"
     # "the bench vanishes", "make them disappear", "poof": gone, as a story tells it
-    r"|\b(?:vanish|disappear)(?:es|s|ed|ing)?\b|\bpoof\b"
+    r"|\b(?:vanish|disappear)(?:es|s|ed|ing)?\b(?! (?:into|in|against|among)\b)|\bpoof\b"  # not "it disappears into the grass": unseen
     r"|^\s*(?:(?:please|just|now|then|ok|so)\W+)*fell (?=(?:the|that|this|those|these|all|every|both|a|one|two|three)\b)"  # "fell the tree": cut down
     r"|\b(?:want|need|like|prefer|there (?:should|must|can|may|is to|are to) be|there'?s to be|(?:should|must) (?:be )?have) (?:no|zero)\b"
     r"|^(?:nobody|no one|no-one|nothing) (?=(?:should|must|may|can(?! (?:see|hear|spot|notice|find|reach|tell|make out)\b)|is|to|uses?|needs?|wants?)\b)"  # "nobody should be parked there"
@@ -134,7 +134,7 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"tell (?:[a-z]+ ){1,2}(?:what|which|where|how|whether|if)|at what distance|how long is|"
                    # "say position of the hydrant", "say separation to the traffic ahead": radio for "tell me"
                    r"(?:^|[,:]\s*)say (?:the |your )?(?:position|location|separation|distance|heading|speed|weather|time|what|which|where|how)\b|"
-                   r"(?:inventory|rundown|overview|summary|tally|head ?count|count|stock ?take|census|roll ?call) of|how many|how far|how much|number of|count of|list of|"
+                   r"(?:inventory|rundown|overview|summary|tally|head ?count|count|stock ?take|census|roll ?call) of|how many|how far|how much|(?:^\s*|\bthe |\btotal |\bwhat )number of|count of|list of|"
                    r"distance (?:between|from)|"
                    r"give (?:me|us) (?:a |an |the )?(?:rundown|overview|summary|names?|positions?|locations?|head ?count|count|tally|list)\b|"
                    r"(?:weights?|mass(?:es)?|dimensions|lengths?|widths?|heights?) of (?:the |a |an |both |each |all )|"

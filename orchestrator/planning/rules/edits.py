@@ -64,6 +64,9 @@ _CONSPICUOUS = ("stand out", "stands out", "hard to miss", "eye-catching", "cons
                 "more visible", "easier to see", "easy to see",
                 "something bright", "a bright colour", "a bright color", "bright colours", "bright colors", "something brighter")
 CONSPICUOUS_COLOUR = "orange"
+# A thing said to be lost to the eye, which a colour that stands out mends: "now it disappears into
+# the grass", "the car blends into the road", "it's hard to see".
+UNSEEN = re.compile(r"\b(?:disappear|vanish|blend)(?:s|es|ed|ing)? (?:into|in with|against|among)\b|\bhard to (?:see|spot|make out)\b")
 # Standing out said as too much: "too conspicuous", "less eye-catching", "stands out too much", "tone it down".
 TOO_CONSPICUOUS = re.compile(r"\b(?:too|less|not (?:so|as)|overly)\s+(?:\w+\s+)?(?:conspicuous|eye-catching|visible|hard to miss|easy to spot)"
                               r"|\bstands? out (?:\w+\s+)?too much\b|\btone (?:it|them|that|this|\w+) down\b|\bblend in\b")
@@ -635,7 +638,7 @@ def recolour(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[Too
     colour = asked[-1] if asked else next((c for c in COLOURS if r.has((c,)) and c not in unwanted and not md.SIGNAL_STATE.search(r.low)), None)
     if colour is None and r.has(("blend in", "match", "same colour as", "colour of", "coloured like")):
         colour = next((c for w, c in lx.COLOUR_OF.items() if r.has((w,))), None)
-    if colour is None and r.has(_CONSPICUOUS) and not TOO_CONSPICUOUS.search(r.low):  # "it stands out too much": less, never more
+    if colour is None and (r.has(_CONSPICUOUS) or UNSEEN.search(r.low)) and not TOO_CONSPICUOUS.search(r.low):  # "it stands out too much": less, never more
         colour = CONSPICUOUS_COLOUR
     like = _COLOUR_FROM.search(r.low) if colour is None else None
     source = named_at(scene, f" {r.low[like.end():]}", []) if like is not None else None
