@@ -2,7 +2,9 @@
 road named (the one road that has that side), or about a kind that stands anywhere (refused: the
 search cannot say a side); "2 more of them" adds two; "double the number of benches" adds as many
 as there are and a multiple of none is refused; a lane change or a distance said that a storyboard
-leaves out is refused; someone's thing set to do something ("have my guy ...") is never a new one."""
+leaves out is refused; someone's thing set to do something ("have my guy ...") is never a new one; a
+thing lost to the eye ("it blends into the grass") is made to stand out, never removed; a dark colour is
+no dark; "a number of" things is some, not a count asked."""
 
 from __future__ import annotations
 
@@ -66,3 +68,25 @@ def test_someones_thing_set_to_do_something_is_never_a_new_one(campus, registry)
     report = session.submit("have my guy wander off somewhere else")
     assert not report.ok and session.scene == before
     assert "your pedestrian" in (report.error or "")
+
+
+def test_a_thing_lost_to_the_eye_is_made_to_stand_out_never_removed(campus, registry):
+    session = ruled(campus, registry, "paint the bench green", "hmm, now it blends into the grass")
+    bench = session.scene.asset("bench_1")
+    assert bench is not None and bench.appearance.rgba is not None and bench.appearance.rgba[0] > 0.5  # orange, not green
+    assert ruled(campus, registry, "make the bench vanish").scene.asset("bench_1") is None  # a vanishing asked for still removes
+
+
+def test_a_dark_colour_is_no_dark_and_when_a_thing_is_hard_to_see_is_no_time_asked(campus, registry):
+    session = ruled(campus, registry, "paint the SUV black", "that dark colour makes it hard to see at night, change it")
+    assert session.scene.environment.time_of_day == campus.environment.time_of_day
+    suv = session.scene.asset("suv_1")
+    assert suv is not None and suv.appearance.rgba is not None and suv.appearance.rgba[0] > 0.5
+    assert ruled(campus, registry, "make it dark").scene.environment.time_of_day != campus.environment.time_of_day
+
+
+def test_a_number_of_things_is_some_of_them_not_a_count_asked(campus, registry):
+    added = ruled(campus, registry, "set out a decent number of bollards in a line at the Engineering Hall entrance").scene
+    assert added.count("bollard") >= 2
+    report = Session(campus, RulePlanner(), registry).submit("number of benches?")
+    assert report.ok and "bench(s) found" in (report.answer or "")
