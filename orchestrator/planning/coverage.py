@@ -770,8 +770,17 @@ def circumstance_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     acted_on = named_things(masked, {m.category for m in mentions}, scene)
     indexed = ph.normalise(masked)  # the text find_categories indexes
     asked = {m.category for m in mentions if _added_by_verb(indexed, m.start)}  # "..., add two benches there"
+    named = {m.category for m in mentions}
+    # the ones who wait, want or need, as they are ("students wait at the union for long"): none asked for
+    doers = set() if ADD_WORDS.search(indexed) else {m.category for m in mentions if m.plural and re.search(
+        _CLAUSE_START + r"(?:the |our |all the |all |many |lots of )?$", indexed[: m.start]) and _DOES_THINGS.match(indexed[m.end :])}
     return [c for c in dict.fromkeys(a.category for a in scope.added)
-            if c in {m.category for m in mentions} and c not in acted_on and c not in asked]
+            if (c in named and c not in acted_on and c not in asked) or c in doers]
+
+
+# Where a clause starts; what its subject does as it always is (not what a scene should show: "pedestrians cross").
+_CLAUSE_START = r"(?:^|[,.;:!?]|\b(?:and|but|so|because|since|as|while|when))\s*"
+_DOES_THINGS = re.compile(r"\s*(?:always |often |usually |never |still |all )?(?:wait|keep|have|need|want|complain|like|hate|love)\b")
 
 
 def _added_by_verb(low: str, at: int) -> bool:

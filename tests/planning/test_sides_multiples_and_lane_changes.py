@@ -4,7 +4,8 @@ search cannot say a side); "2 more of them" adds two; "double the number of benc
 as there are and a multiple of none is refused; a lane change or a distance said that a storyboard
 leaves out is refused; someone's thing set to do something ("have my guy ...") is never a new one; a
 thing lost to the eye ("it blends into the grass") is made to stand out, never removed; a dark colour is
-no dark; "a number of" things is some, not a count asked."""
+no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
+the ones who wait or want are the setting, not things to add."""
 
 from __future__ import annotations
 
@@ -90,3 +91,19 @@ def test_a_number_of_things_is_some_of_them_not_a_count_asked(campus, registry):
     assert added.count("bollard") >= 2
     report = Session(campus, RulePlanner(), registry).submit("number of benches?")
     assert report.ok and "bench(s) found" in (report.answer or "")
+
+
+def test_a_drive_to_a_place_with_a_manner_said_between_still_goes_there(campus, registry):
+    session = ruled(campus, registry, "let passenger car 1 drive gently to the Library entrance")
+    car, goal = session.scene.asset("passenger_car_1"), session.scene.landmark("Library entrance")
+    assert car is not None and goal is not None and car.behaviour.kind == "follow_path"
+    assert abs(car.behaviour.waypoints[-1][0] - goal.position[0]) + abs(car.behaviour.waypoints[-1][1] - goal.position[1]) < 10.0
+
+
+def test_the_ones_who_wait_or_want_are_the_setting_never_added(campus, registry):
+    report = held(campus, registry, Fixed(add("pedestrian", location={"relation": "at", "target": "Student Union entrance"})),
+                  "students always wait outside the Student Union and the only bench is far away at the bus stop")
+    assert "only as the setting" in (report.error or "")
+    # asked for, they are added
+    session = Session(campus, Fixed(add("pedestrian", location={"relation": "at", "target": "fountain"})), registry)
+    assert session.submit("add a pedestrian at the fountain, students wait there").ok
