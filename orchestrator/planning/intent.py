@@ -701,7 +701,8 @@ def asks(low: str) -> bool:
     """Whether the (lower-case) words ask for information rather than for a change."""
     if setting_shown(low):
         return False  # "show me the campus at dawn": the scene set so, to be seen
-    if set(re.findall(r"[a-z']+", low)) <= _STATUS_WORDS and re.search(r"\b(?:conditions|weather|clock|time|lighting|status)\b", low):
+    if set(re.findall(r"[a-z']+", low)) <= _STATUS_WORDS and re.search(r"\b(?:conditions|weather|clock|time|lighting|status)\b", low) \
+            and not re.search(r"\d", low):  # "time 18:15" gives the value: a setting
         return True  # "Current conditions, please: weather and clock.": no change and no value, so what they are
     if TAG_QUESTION.search(low) and not commands(low):
         return True  # "the SUV is parked, yeah?": whether what was said is so

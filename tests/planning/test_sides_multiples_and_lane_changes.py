@@ -107,3 +107,9 @@ def test_the_ones_who_wait_or_want_are_the_setting_never_added(campus, registry)
     # asked for, they are added
     session = Session(campus, Fixed(add("pedestrian", location={"relation": "at", "target": "fountain"})), registry)
     assert session.submit("add a pedestrian at the fountain, students wait there").ok
+
+
+def test_a_setting_named_with_its_value_is_set_not_asked_about(campus, registry):
+    assert ruled(campus, registry, "time 18:15").scene.environment.time_of_day == "18:15"
+    report = Session(campus, RulePlanner(), registry).submit("weather and time?")
+    assert report.ok and "time of day: 12:00" in (report.answer or "")
