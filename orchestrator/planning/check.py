@@ -327,6 +327,9 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         unlooked = _kind_not_looked_up(request, effect.calls, scene)
         if unlooked is not None:  # "the sign with eight sides: in which street is it?" answered about the lanes' traffic
             out.append(f"you asked about the {unlooked}, but the plan looks up something else")
+        if _WHAT_LIES_BETWEEN.search(request.low) and not any(c.tool == "measure_distance" for c in effect.calls):
+            out.append("you asked what lies between two places, which no search can tell; I can list what is near one place "
+                       "or measure the distance between them")  # "what's between the library and the fountain?"
         side = side_of(request.low, scene)
         searches = [c for c in effect.calls if c.tool == "find_assets"]
         if side is not None and searches and not any({"lane", "near", "nearest_to", "furthest_from"} & set(c.args) for c in searches):
@@ -918,6 +921,11 @@ def _figures_left_out(request: Request, calls: list[ToolCall]) -> list[float]:
     speeds = [(float(m.group(1)), m.group(2)) for said in figures for m in said.finditer(request.low)]
     return [n for n, unit in speeds
             if not _accounts_for(n, used, [1.0, *(f for said, f in UNIT_FACTORS.items() if re.search(said, unit))])]
+
+
+# Asking what stands between two places (not how far apart they are).
+_WHAT_LIES_BETWEEN = re.compile(r"\b(?:what|anything|something|which \w+)(?:'s|\s+is|\s+are|\s+stands?|\s+lies?|\s+sits?)?\s+"
+                                r"(?:(?:parked|standing|placed|located|there)\s+)?(?:right\s+|in\s+)?between\b(?![^?.]*\b(?:distance|far|long|gap)\b)")
 
 
 def _lane_change_left_out(low: str, calls: list[ToolCall]) -> list[str]:

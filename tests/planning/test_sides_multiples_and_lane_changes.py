@@ -113,3 +113,11 @@ def test_a_setting_named_with_its_value_is_set_not_asked_about(campus, registry)
     assert ruled(campus, registry, "time 18:15").scene.environment.time_of_day == "18:15"
     report = Session(campus, RulePlanner(), registry).submit("weather and time?")
     assert report.ok and "time of day: 12:00" in (report.answer or "")
+
+
+def test_what_lies_between_two_places_is_refused_saying_what_can_be_asked(campus, registry):
+    report = held(campus, registry, Fixed(call("find_landmarks", nearest_to="fountain", query="library")),
+                  "anything standing between the library and the fountain?")
+    assert "between two places" in (report.error or "") and "measure the distance" in (report.error or "")
+    asked = Session(campus, RulePlanner(), registry).submit("how far apart are the bench and the bin? the distance between them")
+    assert asked.ok and "m in a straight line" in (asked.answer or "")
