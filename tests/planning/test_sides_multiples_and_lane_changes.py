@@ -5,7 +5,8 @@ as there are and a multiple of none is refused; a lane change or a distance said
 leaves out is refused; someone's thing set to do something ("have my guy ...") is never a new one; a
 thing lost to the eye ("it blends into the grass") is made to stand out, never removed; a dark colour is
 no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
-the ones who wait or want are the setting, not things to add."""
+the ones who wait or want are the setting, not things to add; "a blue one next to it" is one more;
+"the first one" after one more is the earlier one."""
 
 from __future__ import annotations
 
@@ -121,3 +122,19 @@ def test_what_lies_between_two_places_is_refused_saying_what_can_be_asked(campus
     assert "between two places" in (report.error or "") and "measure the distance" in (report.error or "")
     asked = Session(campus, RulePlanner(), registry).submit("how far apart are the bench and the bin? the distance between them")
     assert asked.ok and "m in a straight line" in (asked.answer or "")
+
+
+def test_a_described_one_after_an_addition_is_one_more_of_it(campus, registry):
+    session = ruled(campus, registry, "add a red car in lot A", "add a blue one next to it")
+    assert session.scene.count("passenger_car") == campus.count("passenger_car") + 2
+    newest = session.scene.asset("passenger_car_4")
+    assert newest is not None and newest.appearance.rgba is not None and newest.appearance.rgba[2] > 0.5  # blue
+    red = session.scene.asset("passenger_car_3")
+    assert red is not None and red.appearance.rgba is not None and red.appearance.rgba[0] > 0.5  # still red
+
+
+def test_the_first_one_after_one_more_is_the_earlier_one(campus, registry):
+    session = ruled(campus, registry, "add a car in lot A", "and another one next to it", "move the first one 2 m north")
+    first, second = session.scene.asset("passenger_car_3"), session.scene.asset("passenger_car_4")
+    assert first is not None and second is not None
+    assert abs(first.pose.y - ruled(campus, registry, "add a car in lot A").scene.asset("passenger_car_3").pose.y - 2.0) < 0.01

@@ -170,6 +170,9 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
     recent = [i for i in memory.last_added() if scene.asset(i) is not None]
     if nth is not None and recent:  # "paint the second one blue": of the things the last turn added, in order
         place = _ORDINALS.index(nth.group(1))
+        kind = recent[0].rsplit("_", 1)[0]
+        added = [i for t in memory.live_turns() for i in t.added if i.rsplit("_", 1)[0] == kind and scene.asset(i) is not None]
+        recent = added if len(recent) == 1 and len(added) > 1 else recent  # "another one", then "the first one": the earlier one
         if place >= len(recent) and nth.group(1) != "last":
             raise ph_error(f"the last turn added {len(recent)}; there is no {nth.group(1)} one")
         return [recent[-1] if nth.group(1) == "last" else recent[place]]

@@ -439,6 +439,8 @@ _MORE_OF = re.compile(r"^\s*(?:another(?:\s+(?:\d+|one|two|three|four|five|six|s
 _PLACE_TAIL = re.compile(r"\s((?:by|at|near|next to|beside|outside|in front of|behind|in|on|inside|around|to)\s+(?:the\s+)?\S.*)$",
                          re.IGNORECASE)
 # "..., and the one by the library", "and the other one at the gate": another of the thing named first.
+# One more of what was just added, described: "a blue one next to it", "and an older one by the gate".
+_ONE_MORE_DESCRIBED = re.compile(r"(?:^|[,;.]|\band\b|\badd\b|\bput\b|\bplus\b)\s*(?:also\s+)?(?:a|an)\s+(?:[a-z]+\s+){0,2}?one\b(?![-\w])")
 _ONE_OF = re.compile(r"^\s*(the(?: other)?|that|this)\s+one\b", re.IGNORECASE)
 
 
@@ -1366,7 +1368,7 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             and not ph.tokens(r.low[: mention.start]) and r.landmark and not _changes_them(r)):
         fresh = True  # "trees along one side of lot A": a bare plural and no verb asks for some
     recent = [i for i in memory.last_added() if scene.asset(i) is not None]
-    if mention is None and recent and (_more_of_a_thing(r) or r.has(("another",))):
+    if mention is None and recent and (_more_of_a_thing(r) or r.has(("another",)) or _ONE_MORE_DESCRIBED.search(r.low)):
         # "put two more there", "one more like that, but blue": more of what the last turn added
         last = scene.asset(recent[-1])
         assert last is not None
@@ -1374,7 +1376,9 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
         at = said.end() if said is not None else len(r.low)
         amount = re.match(r"\s+(?:\d+|[a-z]+)(?=\s+of\b|\s+(?:those|them|these)\b)", r.low[at:])  # "another pair of those"
         # "another": one; "another pair of those": more; "another one of those": one
-        plural = said is None or said.group(0) == "more" or (amount is not None and amount.group(0).strip() not in ("1", "one"))
+        described = _ONE_MORE_DESCRIBED.search(r.low) if said is None else None  # "a blue one next to it": one
+        plural = (said is None and described is None) or (said is not None and said.group(0) == "more") or (
+            amount is not None and amount.group(0).strip() not in ("1", "one"))
         at += amount.end() if amount is not None else 0
         counted = re.search(r"\b(\d+|[a-z]+)\s+$", r.low[: said.start()]) if said is not None else None
         if said is not None and counted is not None and (counted.group(1).isdigit() or counted.group(1) in ph.NUMBER_WORDS):
