@@ -340,6 +340,9 @@ _CONTRAST_END = re.compile(r"\s+[-\u2013\u2014]\s+|[,.;!?]|$"
                            rf"|\s+(?:(?:to|in)\s+)?(?:{'|'.join(COLOURS)})\b(?=(?:\s+(?:please|pls|too|now|instead))?\s*[.!?]*\s*$)")
 
 
+# What is kept said first, then all the rest acted on: "keep the trees, remove everything else near the fountain".
+_KEPT_FIRST = re.compile(rf"^\s*(?:please\s+)?(?:keep|leave|spare)\s+(?={_DETERMINER}\b)", re.IGNORECASE)
+_THE_REST = re.compile(r"\b(?:everything|anything|all)\s+else\b|\bthe (?:rest|others)\b", re.IGNORECASE)
 # "but" after a word for every one of them is "except": "everything at the stop but the bench".
 _ALL_BUT = re.compile(rf"\s+but\s+(?={_DETERMINER}\b)", re.IGNORECASE)
 _EVERY = re.compile(r"\b(?:everything|anything|all|every|each)\b[^,.;!?]*$", re.IGNORECASE)
@@ -348,6 +351,9 @@ _EVERY = re.compile(r"\b(?:everything|anything|all|every|each)\b[^,.;!?]*$", re.
 def _contrasts(text: str) -> list[tuple[int, int, int]]:
     """(start, start of the excepted words, end) of each contrast clause after the request's first words."""
     out = []
+    kept = _KEPT_FIRST.match(text)  # "keep the trees, remove everything else": the trees are excepted
+    if kept is not None and _THE_REST.search(text, kept.end()) and (end := _CONTRAST_END.search(text, kept.end())) is not None:
+        out.append((0, kept.end(), end.start()))
     found = [*_CONTRAST.finditer(text), *(m for m in _ALL_BUT.finditer(text) if _EVERY.search(text[: m.start()]))]
     for m in sorted(found, key=lambda m: m.start()):
         if len(text[: m.start()].split()) < 2:

@@ -6,7 +6,7 @@ leaves out is refused; someone's thing set to do something ("have my guy ...") i
 thing lost to the eye ("it blends into the grass") is made to stand out, never removed; a dark colour is
 no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
 the ones who wait or want are the setting, not things to add; "a blue one next to it" is one more;
-"the first one" after one more is the earlier one."""
+"the first one" after one more is the earlier one; what is kept said first is excepted from the rest."""
 
 from __future__ import annotations
 
@@ -138,3 +138,11 @@ def test_the_first_one_after_one_more_is_the_earlier_one(campus, registry):
     first, second = session.scene.asset("passenger_car_3"), session.scene.asset("passenger_car_4")
     assert first is not None and second is not None
     assert abs(first.pose.y - ruled(campus, registry, "add a car in lot A").scene.asset("passenger_car_3").pose.y - 2.0) < 0.01
+
+
+def test_what_is_kept_said_first_is_excepted_from_the_rest(campus, registry):
+    report = held(campus, registry, Fixed(call("remove_assets", assets=["tree_2"])),
+                  "leave the trees, clear everything else around the fountain")
+    assert "not the trees" in (report.error or "")
+    session = ruled(campus, registry, "keep the bench, get rid of the rest of the stuff at the bus stop")
+    assert session.scene.asset("bench_1") is not None and session.scene.asset("trash_bin_1") is None
