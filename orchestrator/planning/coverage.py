@@ -148,7 +148,8 @@ _NAMED_TIMES = ("midnight", "noon", "midday")
 _DAY_PART = re.compile(r"(?<!this )\b(morning|afternoon|evening|night|midnight|noon|midday|dusk|dawn|sunset|sunrise)\b")
 # Words that open background ("where people relax", "before I plan the pedestrian test"):
 # a category named after them is circumstance, not something the plan must act on.
-_BACKGROUND = re.compile(r"\b(where|when|while|before|after|because|so that|so|since|until|unless)\b")
+_BACKGROUND = re.compile(r"\b(where|when|while|before|after|because|so that|so|since|until|unless"
+                         r"|to (?:catch|board|meet|visit|watch))\b")  # "he walks to the stop to catch the bus": its purpose
 # A reason said before ", so ..." ("the visitors are from JTEKT, so ..."): its things are the setting.
 _SO_AFTER = re.compile(r"[^.;!?]*,\s*so\b")
 _STATE_VERB = re.compile(r"\b(?:is|are|was|were|come|comes|came)\b")

@@ -201,6 +201,9 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      r"|\bwould it (?:kill|hurt) (?:you|anyone|ya) to\b"
                      # "could the second car go in lot A?": a wish for where a thing should be
                      r"|(?:^|[.!;?]\s*)(?:can|could) (?:the|that|this|our) (?:\w+ ){1,2}(?:go|be|move|stand|sit|start|park|drive|face|turn|get|come|disappear|vanish|leave)\b"
+                     # "might the ego proceed more gently?", "may the lot B entrance be made safer?" (not "might the bus be in lot B?")
+                     r"|(?:^|[.!;?]\s*)(?:might|may) (?:the|that|this|our) (?:\w+ ){1,3}?(?:go|move|proceed|drive|park|turn|face|leave"
+                     r"|be (?:made|moved|painted|put|placed|turned|set|changed|shifted|taken|removed|slowed))\b"
                      # "the car you just put there, could it go forward?": the same wish for a thing named first
                      r"|(?:^|[,.;:!?-]\s*)(?:can|could) (?:it|they) (?:\w+ )?(?:go|move|stand|sit|start|park|drive|come|turn|shift|look|be|get|face"
                      r"|disappear|vanish|leave)\b"

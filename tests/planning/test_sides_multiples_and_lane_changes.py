@@ -6,7 +6,8 @@ leaves out is refused; someone's thing set to do something ("have my guy ...") i
 thing lost to the eye ("it blends into the grass") is made to stand out, never removed; a dark colour is
 no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
 the ones who wait or want are the setting, not things to add; "a blue one next to it" is one more;
-"the first one" after one more is the earlier one; what is kept said first is excepted from the rest."""
+"the first one" after one more is the earlier one; what is kept said first is excepted from the rest;
+"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting."""
 
 from __future__ import annotations
 
@@ -146,3 +147,27 @@ def test_what_is_kept_said_first_is_excepted_from_the_rest(campus, registry):
     assert "not the trees" in (report.error or "")
     session = ruled(campus, registry, "keep the bench, get rid of the rest of the stuff at the bus stop")
     assert session.scene.asset("bench_1") is not None and session.scene.asset("trash_bin_1") is None
+
+
+def test_dialect_and_learner_forms_read_as_meant(campus, registry):
+    # "them" for "those" before things; "feets" as feet; "forth" before where a drive goes; "so much" snow is heavy
+    session = ruled(campus, registry, "chuck four bollards at the Library", "them bollards want to be in a ring round the hydrant")
+    assert session.scene.count("bollard") == 4
+    spaced = ruled(campus, registry, "put 5 cones in a line at the bus stop, 10 feets apart").scene
+    xs = sorted((a.pose.x, a.pose.y) for a in spaced.assets if a.category == "traffic_cone")
+    assert abs(((xs[1][0] - xs[0][0]) ** 2 + (xs[1][1] - xs[0][1]) ** 2) ** 0.5 - 3.05) < 0.1
+    assert ruled(campus, registry, "the SUV rides forth to the Library").scene.asset("suv_1").behaviour.kind == "follow_path"
+    assert ruled(campus, registry, "back home the snow is so much in winter, make it like that").scene.environment.weather.intensity >= 0.75
+
+
+def test_a_polite_might_asks_for_the_change(campus, registry):
+    ego = ruled(campus, registry, "might the ego proceed a little more gently?").scene.ego
+    assert ego is not None and ego.behaviour.speed < campus.ego.behaviour.speed
+
+
+def test_what_a_walk_is_for_is_its_setting(campus, registry):
+    session = ruled(campus, registry, "add a man at the Library entrance")
+    session.planner = Fixed(add("bus", behaviour={"kind": "drive_lane"}))
+    before = session.scene
+    report = session.submit("he has to walk to the bus stop to catch the bus")
+    assert not report.ok and session.scene == before and "setting" in (report.error or "")

@@ -779,7 +779,8 @@ _PACE_SAID = re.compile(r"\b(?:speed|pace|doing|going|go|goes|drive|drives|drivi
                         r"|cruise|cruising|ride|rides|riding|walk|walks|walking|slow|slows|slowed|slowing)\b")
 # ("reduce ego speed", "raise the ego's speed": whose speed said between)
 _WHOSE_SPEED = r"(?:(?:its|the|their|his|her|our)\s+)?(?:[a-z_0-9]+(?:'s)?\s+)?speed"
-_SLOWER = re.compile(rf"\b(?:slower|slow (?:[a-z_0-9']+ ){{0,3}}?down|less fast|(?:reduce|lower|decrease|cut) {_WHOSE_SPEED})\b")
+_SLOWER = re.compile(rf"\b(?:slower|slow (?:[a-z_0-9']+ ){{0,3}}?down|less fast|(?:reduce|lower|decrease|cut) {_WHOSE_SPEED}"
+                     r"|more (?:gently|calmly|carefully|cautiously|slowly))\b")  # "might the ego proceed a little more gently?"
 _FASTER = re.compile(rf"\b(?:faster|quicker|speed (?:[a-z_0-9']+ ){{0,3}}?up|(?:increase|raise) {_WHOSE_SPEED})\b")
 PACE_FACTOR = 1.5
 # A speed said as a bare number after a change of pace: "slow it to 3", "speed up to 6, please".

@@ -55,7 +55,7 @@ WEATHER_WORDS: dict[str, tuple[str, ...]] = {
 }
 HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "intense", "lot of", "a lot",
          "blizzard", "downpour", "deluge", "cloudburst", "pouring", "storm", "very", "really", "poor", "bad", "terrible",
-         "barely", "low visibility", "almost nothing", "next to nothing", "near zero", "like crazy", "like mad")
+         "barely", "low visibility", "almost nothing", "next to nothing", "near zero", "like crazy", "like mad", "so much")
 LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "some", "gentle", "gently", "softly")
 # (words, preset) in order: the first that matches wins, so "midnight" beats "night".
 TIME_PRESETS = ((("midnight",), "midnight"), (("night", "nighttime", "night time", "nite", "dark", "darker",

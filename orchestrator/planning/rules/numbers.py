@@ -111,7 +111,7 @@ def spelt_counts() -> dict[str, int]:
 YARD_M = 0.9144
 CAR_LENGTH_M = 4.5
 FOOT_M = 0.3048
-_OTHER_LENGTHS = re.compile(r"\b(\d+(?:\.\d+)?)\s*(yards?|yds?|feet|foot|ft|(?:car|vehicle)[- ]lengths?)\b(?!\s*tall)", re.IGNORECASE)
+_OTHER_LENGTHS = re.compile(r"\b(\d+(?:\.\d+)?)\s*(yards?|yds?|feets?|foots?|ft|(?:car|vehicle)[- ]lengths?)\b(?!\s*tall)", re.IGNORECASE)
 _ONE_CAR_LENGTH = re.compile(r"\b(?:a|one) (?:car|vehicle)[- ]length\b", re.IGNORECASE)
 
 

@@ -480,7 +480,7 @@ def without_beneficiaries(low: str, mentions: list[ph.Mention]) -> list[ph.Menti
 # the gate", "a man heading for the east gate", "someone on her way to the union".
 GOES_TO = re.compile(r"\b(?:walk|stroll|head|go|run|jog|wander|rid|cycl|ambl|hurr(?:y|i)|march|strid|trudg|rush|sprint"
                      r"|driv|mak(?:e|es|ing) (?:his|her|their|its)(?: own)? way|on (?:his|her|their|its) way|strode|rode|drove|ran|went)"
-                     r"(?:e|s|es|e?d|(?:n|g)?ing|(?:g)?ed)?\b(?:\s+(?!only\b)[a-z]+ly)?(?:\s+(?:over|across|back|off|on|up|down|straight|along|out|round|around))?"
+                     r"(?:e|s|es|e?d|(?:n|g)?ing|(?:g)?ed)?\b(?:\s+(?!only\b)[a-z]+ly)?(?:\s+(?:over|across|back|off|on|up|down|straight|along|out|round|around|forth))?"
                      r"(?:\s+from(?:\s+[a-z0-9_'§]+){1,5}?)?\s+(?:to|towards?|for|into)\s+"
                      # a vehicle driven there by someone: "drive the suv towards the east gate"
                      r"|\b(?:driv(?:e|es|ing)|drove)\s+(?:the|our|my|that|this|his|her|their)\s+[a-z0-9_]+"

@@ -491,9 +491,12 @@ def _formal_forms(text: str, vocab: frozenset[str]) -> str:
     text = _HALVE.sub(lambda m: _halved(m.group(2), m.group(0)), _OF_FOR_OFF.sub(r"\1 off", text))
     text = _REARWARD.sub("backward", _IN_HALF.sub(lambda m: _halved(m.group(1), m.group(0)), text))
     text = _COMPASS_SHORT.sub(lambda m: _COMPASS_WORDS[m.group(1).lower()], _TOO_MANY.sub(r"\1 too \2", text))
+    text = _THEM_THINGS.sub(lambda m: m.group(0)[: -len("them ")] + ("Those " if m.group(0).endswith("Them ") else "those "), text)
     return _SPELT_OUT.sub(lambda m: joined if (joined := m.group(0).replace(" ", "")).lower() in vocab else m.group(0), text)
 
 
+# "them" said for "those" before things, in many a dialect: "half of them barriers", "Them bollards want to be in a ring".
+_THEM_THINGS = re.compile(r"(?:^|[,.;:!?]\s*|\bof )(?:them|Them) (?=(?!(?:is|was|has|as|does|goes|says|gets|its|this|us|yes|all|both)\b)[a-z]+s\b)")
 # "to the vicinity of the east gate": near it.
 _VICINITY = re.compile(r"\b(?:(?:in|to|into) )?the (?:general |immediate )?vicinity of\b", re.IGNORECASE)
 # "in lot A by the entrance": by that lot's entrance, not somewhere in the lot.
