@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import difflib
+import itertools
 import math
 import re
+from collections.abc import Callable
 from typing import Literal
 
 from drivetwin.tools.appearance import COLOURS
@@ -126,6 +128,8 @@ class FindAssetsArgs(ToolArgs):
     most: Literal["tallest", "shortest", "heaviest", "lightest", "longest", "widest", "biggest", "smallest"] | None = Field(
         None, description="order by size or mass, the most first, and name it with its figure (e.g. 'heaviest')")
     on_lane: bool = Field(False, description="only assets standing on a lane (on the road, e.g. blocking it)")
+    side: Literal["north", "south", "east", "west"] | None = Field(
+        None, description="only assets on that side of the road nearest each (north of a road that runs east-west)")
     lane: str | None = Field(
         None, description="only assets on this lane id or road, e.g. campus_northbound, Main Street, northbound "
         "(with a category that stands beside roads, such as street lights: those along it)"
@@ -139,6 +143,36 @@ def _group(word: str) -> frozenset[str] | None:
         return None  # "vehicle" alone is read as the catalog reads it
     members = frozenset(name for name, entry in catalog().items() if low.removesuffix("s") in entry.tags)
     return members if len(members) > 1 else None
+
+
+# Unit vectors of the compass words (metres east, metres north).
+COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
+# A road runs across a compass direction when its heading is within 60 degrees of square to it.
+ACROSS_COS = 0.5
+
+
+def across_points(scene: Scene, way: str) -> list[tuple[float, float]]:
+    """Lane centreline points where the road runs across compass direction `way` (the north side
+    is judged from roads that run east-west, not from a crossing street)."""
+    dx, dy = COMPASS_VECTORS[way]
+    points: list[tuple[float, float]] = []
+    for lane in scene.roads.lanes:
+        for (x0, y0), (x1, y1) in itertools.pairwise(lane.centreline):
+            length = math.hypot(x1 - x0, y1 - y0)
+            if length > 0 and abs((x1 - x0) * dx + (y1 - y0) * dy) / length < ACROSS_COS:
+                points += [(x0, y0), (x1, y1)]
+    return points or [p for lane in scene.roads.lanes for p in lane.centreline]
+
+
+def beyond_nearest(points: list[tuple[float, float]], way: str) -> Callable[[AssetInstance], bool]:
+    """Whether a thing stands beyond the nearest of `points` in compass direction `way`."""
+    dx, dy = COMPASS_VECTORS[way]
+
+    def past(a: AssetInstance) -> bool:
+        near = min(points, key=lambda p: math.hypot(a.pose.x - p[0], a.pose.y - p[1]))
+        return (a.pose.x - near[0]) * dx + (a.pose.y - near[1]) * dy > 0
+
+    return past
 
 
 class FindAssets(Tool[FindAssetsArgs]):
@@ -160,6 +194,9 @@ class FindAssets(Tool[FindAssetsArgs]):
             if name is None:
                 raise UnknownCategoryError(args.category, nearest_categories(args.category))
             pool = [a for a in pool if a.category == name]
+        if args.side is not None:  # "the street lights on the north side", "any trees on the east side?"
+            on_that_side = beyond_nearest(across_points(scene, args.side), args.side)
+            pool = [a for a in pool if on_that_side(a)]
         lanes_of: dict[str, str] = {}
         beside: set[str] = set()
         if args.on_lane or args.lane:

@@ -332,7 +332,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
                        "or measure the distance between them")  # "what's between the library and the fountain?"
         side = side_of(request.low, scene)
         searches = [c for c in effect.calls if c.tool == "find_assets"]
-        if side is not None and searches and not any({"lane", "near", "nearest_to", "furthest_from"} & set(c.args) for c in searches):
+        if side is not None and searches and not any({"lane", "near", "nearest_to", "furthest_from", "side"} & set(c.args) for c in searches):
             out.append(f"you asked about the {side[0]}, but the plan searches the whole scene")  # "how many cars are on the north side?"
     if request.question and _SETTING_ASKED.search(request.low) and not any(
             c.tool in ("describe_environment", "set_weather", "set_time_of_day") for c in effect.calls):

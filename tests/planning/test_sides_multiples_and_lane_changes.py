@@ -1,6 +1,6 @@
 """Worded here (none from a suite): a question about the things on one side of the road with no
-road named (the one road that has that side), or about a kind that stands anywhere (refused: the
-search cannot say a side); "2 more of them" adds two; "double the number of benches" adds as many
+road named (the side of the road nearest each), or on the side of a road named of a kind that stands
+anywhere (refused: the search cannot say that); "2 more of them" adds two; "double the number of benches" adds as many
 as there are and a multiple of none is refused; a lane change or a distance said that a storyboard
 leaves out is refused; someone's thing set to do something ("have my guy ...") is never a new one; a
 thing lost to the eye ("it blends into the grass") is made to stand out, never removed; a dark colour is
@@ -29,8 +29,14 @@ def test_a_side_said_alone_in_a_question_is_the_side_of_the_one_road_that_has_it
         assert all(i in (report.answer or "") for i in wanted), said
 
 
+def test_a_side_said_alone_of_a_kind_that_stands_anywhere_is_the_side_of_the_road_nearest_each(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("any trees out on the east side?")
+    east = sorted(a.id for a in campus.assets if a.category == "tree" and a.pose.x > 0)
+    assert report.ok and f"{len(east)} tree(s) found" in (report.answer or "") and all(t in (report.answer or "") for t in east)
+
+
 def test_a_side_the_search_cannot_say_is_refused_not_answered_for_the_whole_scene(campus, registry):
-    report = held(campus, registry, Fixed(call("find_assets", category="cars")), "how many cars are on the north side?")
+    report = held(campus, registry, Fixed(call("find_assets", category="cars")), "how many cars are on the north side of Main Street?")
     assert "north side" in (report.error or "") and "whole scene" in (report.error or "")
 
 

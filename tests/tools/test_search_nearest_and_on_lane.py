@@ -112,3 +112,12 @@ def test_most_orders_by_the_figure_and_names_the_first_with_it(campus):
     masses = [a.physics.mass for i in result.data["ids"] if (a := campus.asset(i)) is not None]
     assert masses == sorted(masses, reverse=True)
     assert result.text.startswith(f"heaviest vehicles: {result.data['ids'][0]}") and f"{masses[0]:g} kg" in result.text
+
+
+def test_assets_on_one_side_of_the_road_nearest_each(call: Caller, campus: Scene) -> None:
+    # north of Main Street (it runs east-west), and east of Campus Drive (it runs north-south)
+    north = call(campus, "find_assets", category="street_light", side="north").data["ids"]
+    assert sorted(north) == sorted(a.id for a in campus.assets if a.category == "street_light" and a.pose.y > 0)
+    east = call(campus, "find_assets", category="tree", side="east").data["ids"]
+    assert sorted(east) == sorted(a.id for a in campus.assets if a.category == "tree" and a.pose.x > 0)
+    assert call(campus, "find_assets", category="stop_sign", side="west").data["ids"] == ["stop_sign_1"]

@@ -14,6 +14,7 @@ from functools import cache
 
 from drivetwin.orchestrator.planning.rules.phrases import NUMBER_WORDS, find_categories, normalise
 from drivetwin.tools.appearance import COLOURS, AssetLookArgs
+from drivetwin.tools.search import COMPASS_VECTORS
 from drivetwin.worlds.catalog import catalog
 
 # A compass direction said as a way to go ("2 m east", "eastward", "to the north"), not as part of
@@ -21,7 +22,6 @@ from drivetwin.worlds.catalog import catalog
 # a side of something else ("east of the fountain") or a heading ("facing north").
 _COMPASS = re.compile(r"(?<!facing )(?<!face )\b(north|south|east|west)(?:wards?)?\b"
                       r"(?!-| ?bound| gate| side of\b| entrance| crosswalk| crossing| of\b| sidewalk| pavement| footway| footpath| verge)")
-COMPASS_VECTORS = {"east": (1.0, 0.0), "west": (-1.0, 0.0), "north": (0.0, 1.0), "south": (0.0, -1.0)}
 # The compass heading a thing should face ("turned to face north", "pointing west").
 _FACING = re.compile(r"\b(?:face|faces|facing|point|points|pointing)\s+(?:to(?:wards?)?\s+)?(?:the\s+)?(north|south|east|west)\b")
 

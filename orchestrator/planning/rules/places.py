@@ -17,10 +17,11 @@ from typing import Any
 from drivetwin.orchestrator.memory import Memory
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.reading import SIDE_OF, Reading, find_place, lane_of_side, lane_on_side, road_kinds_spelt
+from drivetwin.orchestrator.planning.rules.reading import SIDE_OF, Reading, find_place, lane_of_side, road_kinds_spelt
 from drivetwin.tools.arrange import row_start
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import Location, resolve_anchor
+from drivetwin.tools.search import across_points, beyond_nearest
 from drivetwin.worlds.catalog import Category, catalog
 from drivetwin.worlds.scene import AssetInstance, Landmark, Lane, Scene
 from drivetwin.worlds.surface import lane_at, nearest_on_polyline, point_along, point_in_polygon, polyline_length
@@ -906,18 +907,20 @@ def _compass_of_road(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstan
         found = find_place(scene, f" {rest} ")
         mark = scene.landmark(found[0]) if found is not None else None
         if mark is not None and re.match(r"\s*(?:the\s+)?" + re.escape(ph.normalise(rest).split()[0]), rest):
-            tests = [_beyond([mark.position], way) for way in ways]
+            tests = [beyond_nearest([mark.position], way) for way in ways]
             return f"{'-'.join(ways)} of {mark.name}", lambda a, tests=tests: all(test(a) for test in tests)
     return None
 
 
 def _side_named(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], bool]] | None:
     said = SIDE_OF.search(low)
-    if said is None:
-        alone = _SIDE_ALONE.search(low)
-        if alone is None or not scene.roads.lanes:
+    way = side_alone(low)
+    if way is not None and (said is None or _SIDE_OF_THE_ROAD.search(low)):
+        if not scene.roads.lanes:
             return None
-        return f"{alone.group(1)} side of the road", _beyond(_across(scene, alone.group(1)), alone.group(1))
+        return f"{way} side of the road", beyond_nearest(across_points(scene, way), way)
+    if said is None:
+        return None
     rest = road_kinds_spelt(said.group(2))  # "main st" is Main Street
     roads = {lane.road for lane in scene.roads.lanes if lane.road and rest.startswith(ph.normalise(lane.road).strip())}
     lanes = [lane for lane in scene.roads.lanes if lane.road in roads]
@@ -927,7 +930,7 @@ def _side_named(low: str, scene: Scene) -> tuple[str, Callable[[AssetInstance], 
     marks = [lm for lm in scene.landmarks if any(rest.startswith(ph.normalise(n).strip()) for n in lm.names())]
     if not marks:
         return None
-    return f"{said.group(1)} side of {marks[0].name}", _beyond([marks[0].position], said.group(1))
+    return f"{said.group(1)} side of {marks[0].name}", beyond_nearest([marks[0].position], said.group(1))
 
 
 def side_lane(low: str, scene: Scene) -> str | None:
@@ -935,48 +938,18 @@ def side_lane(low: str, scene: Scene) -> str | None:
     westbound lane, the one furthest north), whose edge what stands on that side lines; None when
     they name no side of a road of two or more lanes."""
     found = lane_of_side(low, scene)
-    if found is not None:
-        return found[0].id
-    alone = _SIDE_ALONE.search(low) or _SIDE_OF_THE_ROAD.search(low)
-    if alone is None:
-        return None
-    # "the street lights on the north side": of the one road that has a north side (runs east-west)
-    way = alone.group(1)
-    across = {lane.road for lane in scene.roads.lanes if lane.road and _runs_across(lane, way)}
-    if len(across) != 1:
-        return None
-    lane = lane_on_side([ln for ln in scene.roads.lanes if ln.road in across], way)
-    return lane.id if lane is not None else None
+    return found[0].id if found is not None else None
+
+
+def side_alone(low: str) -> str | None:
+    """The compass side the words name with no road or place ("the lamps on the north side", "the
+    south side of the road"): the side of the road nearest each thing; None when they name none."""
+    said = _SIDE_ALONE.search(low) or _SIDE_OF_THE_ROAD.search(low)
+    return said.group(1) if said is not None else None
 
 
 # A side of the road said with no road named: "the south side of the road".
 _SIDE_OF_THE_ROAD = re.compile(r"\b(north|south|east|west)(?:ern)? side of the (?:road|street)\b")
-
-
-def _runs_across(lane: Lane, way: str) -> bool:
-    """Whether a lane runs square to compass direction `way` (within 60 degrees) from end to end."""
-    (x0, y0), (x1, y1) = lane.centreline[0], lane.centreline[-1]
-    dx, dy = md.COMPASS_VECTORS[way]
-    length = math.hypot(x1 - x0, y1 - y0)
-    return length > 0 and abs((x1 - x0) * dx + (y1 - y0) * dy) / length < ACROSS_COS
-
-
-def _across(scene: Scene, way: str) -> list[tuple[float, float]]:
-    """Lane centreline points where the road runs across compass direction `way` (the north side
-    is judged from roads that run east-west, not from a crossing street)."""
-    dx, dy = md.COMPASS_VECTORS[way]
-    points: list[tuple[float, float]] = []
-    for lane in scene.roads.lanes:
-        line = lane.centreline
-        for (x0, y0), (x1, y1) in itertools.pairwise(line):
-            length = math.hypot(x1 - x0, y1 - y0)
-            if length > 0 and abs((x1 - x0) * dx + (y1 - y0) * dy) / length < ACROSS_COS:
-                points += [(x0, y0), (x1, y1)]
-    return points or [p for lane in scene.roads.lanes for p in lane.centreline]
-
-
-# A road runs across a compass direction when its heading is within 60 degrees of square to it.
-ACROSS_COS = 0.5
 
 
 def _beyond_middle(lanes: list[Lane], way: str) -> Callable[[AssetInstance], bool]:
@@ -992,21 +965,10 @@ def _beyond_middle(lanes: list[Lane], way: str) -> Callable[[AssetInstance], boo
     return beyond
 
 
-def _beyond(points: list[tuple[float, float]], way: str) -> Callable[[AssetInstance], bool]:
-    """Whether a thing stands beyond the nearest of `points` in compass direction `way`."""
-    dx, dy = md.COMPASS_VECTORS[way]
-
-    def beyond(a: AssetInstance) -> bool:
-        near = min(points, key=lambda p: math.hypot(a.pose.x - p[0], a.pose.y - p[1]))
-        return (a.pose.x - near[0]) * dx + (a.pose.y - near[1]) * dy > 0
-
-    return beyond
-
-
 def said_a_place(r: Reading) -> bool:
     """Whether the clause seems to name a place (for judging an unresolved one a guess)."""
     return bool(re.search(r"\b(near|next to|beside|by|in front of|behind|outside|close to|over by)\b", r.masked))
 
 
 __all__ = [
-    "ACROSS_FROM", "BETWEEN", "BY_IT", "EACH_PLACE", "EDGE_OF", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_objects", "relation_of", "said_a_place", "says_other_place", "side_lane"]
+    "ACROSS_FROM", "BETWEEN", "BY_IT", "EACH_PLACE", "EDGE_OF", "PLACE_SAID", "PLACE_WORDS", "Notes", "between", "each_place_named", "location", "places_called", "point_named", "relation_objects", "relation_of", "said_a_place", "says_other_place", "side_alone", "side_lane"]

@@ -24,7 +24,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import named_at, picked_by_what_it_stands_by
 from drivetwin.orchestrator.planning.rules.environment import environment
-from drivetwin.orchestrator.planning.rules.places import Notes, side_lane
+from drivetwin.orchestrator.planning.rules.places import Notes, side_alone, side_lane
 from drivetwin.orchestrator.planning.rules.reading import Reading, place_kind_said, read
 from drivetwin.orchestrator.planning.rules.spelling import is_known, vocabulary
 from drivetwin.tools.base import ToolCall
@@ -214,15 +214,18 @@ def plan_question(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
 
 
 def _on_side(call: ToolCall, r: Reading, scene: Scene) -> ToolCall:
-    """A search for things that line roads on the side of a road the words name ("the street lights
-    on the north side of Main Street"): those beside that side's lane."""
-    category = str(call.args.get("category")) if call.tool == "find_assets" else ""
-    if category not in catalog() or catalog()[category].placement != "sidewalk":
-        return call  # a car "on the east side" may stand anywhere east, not only by the kerb
-    lane = side_lane(r.low, scene)
-    if lane is None or any(k in call.args for k in ("lane", "near", "nearest_to")):
+    """A search on the side the words name: with no road named ("the trees on the east side"), the
+    side of the road nearest each; of things that line a road named ("the street lights on the north
+    side of Main Street"), those beside that side's lane."""
+    if call.tool != "find_assets" or any(k in call.args for k in ("lane", "near", "nearest_to", "side")):
         return call
-    return call.model_copy(update={"args": {**call.args, "lane": lane}})
+    way = side_alone(r.low)
+    if way is not None:  # "any trees on the east side?": the side of the road nearest each
+        return call.model_copy(update={"args": {**call.args, "side": way}})
+    category = str(call.args.get("category"))
+    lane = side_lane(r.low, scene) if category in catalog() and catalog()[category].placement == "sidewalk" else None
+    # a car "on the east side of Campus Drive" may stand anywhere east, not only by the kerb
+    return call if lane is None else call.model_copy(update={"args": {**call.args, "lane": lane}})
 
 
 def of_group(call: ToolCall, r: Reading) -> ToolCall:
