@@ -7,7 +7,7 @@ thing lost to the eye ("it blends into the grass") is made to stand out, never r
 no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
 the ones who wait or want are the setting, not things to add; "a blue one next to it" is one more;
 "the first one" after one more is the earlier one; what is kept said first is excepted from the rest;
-"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting."""
+"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4."""
 
 from __future__ import annotations
 
@@ -177,3 +177,12 @@ def test_what_a_walk_is_for_is_its_setting(campus, registry):
     before = session.scene
     report = session.submit("he has to walk to the bus stop to catch the bus")
     assert not report.ok and session.scene == before and "setting" in (report.error or "")
+
+
+def test_a_short_slip_before_a_things_number_names_that_thing(campus, registry):
+    moved = ruled(campus, registry, "tre 4 now stands beside the fountain").scene.asset("tree_4")
+    fountain = campus.landmark("fountain")
+    assert moved is not None and fountain is not None
+    assert abs(moved.pose.x - fountain.position[0]) + abs(moved.pose.y - fountain.position[1]) < 6.0
+    report = Session(campus, RulePlanner(), registry).submit("move tre 9 north")  # no tree_9: no guess
+    assert not report.ok and "'tre'" in (report.error or "")

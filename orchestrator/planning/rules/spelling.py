@@ -1042,14 +1042,21 @@ def _name_end_slip(word: str, before: str) -> str | None:
     return near.pop() if len(near) == 1 else None
 
 
-def _short_thing_slip(word: str, before: str, vocab: frozenset[str]) -> str | None:
-    """A three-letter word after "a" or "the" that is one thing's name with its last letter lost,
-    even when the word list holds it ("plant a tre": a tree); None when it is a word read here."""
+def _short_thing_slip(word: str, before: str, vocab: frozenset[str], after: str = "", scene: Scene | None = None) -> str | None:
+    """A three-letter word after "a" or "the", or before the number of a thing of the scene, that is
+    one thing's name with its last letter lost, even when the word list holds it ("plant a tre": a
+    tree; "tre 4 stands by the fountain": tree_4); None when it is a word read here."""
     low = word.lower()
-    if len(low) != MIN_REPAIR_LEN - 1 or is_known(low, vocab) or not re.search(r"\b(?:a|an|the|one|another)\s+$", before.lower()):
+    numbered = re.match(r"\s+(\d+)\b", after)
+    if len(low) != MIN_REPAIR_LEN - 1 or is_known(low, vocab):
         return None
     cut = {t for t in _thing_words() if len(t) == len(low) + 1 and t.startswith(low)}
-    return cut.pop() if len(cut) == 1 else None
+    if len(cut) != 1:
+        return None
+    said = next(iter(cut))
+    if re.search(r"\b(?:a|an|the|one|another)\s+$", before.lower()):
+        return said
+    return said if numbered is not None and scene is not None and _names_one(scene, said, numbered.group(1)) else None
 
 
 def _colour_slip(word: str, before: str, after: str, vocab: frozenset[str]) -> str | None:
@@ -1406,7 +1413,7 @@ def repair(text: str, scene: Scene) -> Repaired:
                 repairs.append(f"{word} -> {'-'.join(parts)}")
                 return "-".join(parts)
         slip = _thing_slip(word, text[: m.start()], vocab, text[m.end() :], _place_phrases(scene)) \
-            or _name_end_slip(word, text[: m.start()]) or _short_thing_slip(word, text[: m.start()], vocab) or _place_word_slip(word, text[: m.start()], vocab, scene) or _colour_slip(word, text[: m.start()], text[m.end() :], vocab)
+            or _name_end_slip(word, text[: m.start()]) or _short_thing_slip(word, text[: m.start()], vocab, text[m.end() :], scene) or _place_word_slip(word, text[: m.start()], vocab, scene) or _colour_slip(word, text[: m.start()], text[m.end() :], vocab)
         if slip is not None:  # "all the tress", "3 bueses", "the buss stop": a thing one slip away; "the east gait"; "make it blu"
             repairs.append(f"{word} -> {slip}")
             return slip
