@@ -7,7 +7,7 @@ thing lost to the eye ("it blends into the grass") is made to stand out, never r
 no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
 the ones who wait or want are the setting, not things to add; "a blue one next to it" is one more;
 "the first one" after one more is the earlier one; what is kept said first is excepted from the rest;
-"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4."""
+"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane."""
 
 from __future__ import annotations
 
@@ -186,3 +186,8 @@ def test_a_short_slip_before_a_things_number_names_that_thing(campus, registry):
     assert abs(moved.pose.x - fountain.position[0]) + abs(moved.pose.y - fountain.position[1]) < 6.0
     report = Session(campus, RulePlanner(), registry).submit("move tre 9 north")  # no tree_9: no guess
     assert not report.ok and "'tre'" in (report.error or "")
+
+
+def test_which_lane_asked_after_the_thing_is_the_lane_asked(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("the ego is on which lane now?")
+    assert report.ok and "main_eastbound on Main Street" in (report.answer or "")

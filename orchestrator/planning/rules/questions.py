@@ -584,6 +584,8 @@ def _asks_for_lanes(r: Reading) -> bool:
     """Whether the lanes themselves are what is asked for ("which lanes does X have", "the lanes
     of X"), not the place of what stands on them ("is anything in the northbound lane")."""
     lane = _LANE_KIND.search(r.masked)
+    if lane is not None and re.search(r"\b(?:which|what)\s+$", r.masked[: lane.start()]):
+        return True  # "the ego is on which lane now?": the lane is what is asked
     return lane is not None and not _LANE_AS_PLACE.search(r.masked[: lane.start()])
 
 
