@@ -55,6 +55,7 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
     ("cut_in", r"\bcut(?:s|ting)? in\b|\bswerv\w* into\b|\bmerg\w* (?:in|into)\b|\bpulls? in front\b"),
     ("overtake", r"\bovertakes?\b|\bpull\w* out\b[^,.;]*\bpass\b|\bto pass\b"),
     ("lane_change", r"\bchang\w* lanes?\b|\blane change\b|\binto the lane (?:on|to) (?:its|the) (?:left|right)\b"
+                    r"|\b(?:swing|swung|slid|slide)\w* (?:over )?(?:in)?to (?:the )?(?:left|right)(?:-hand)? lane\b"  # not "swing left at the junction"
                     rf"|\b{_SIDEWAYS}(?: over| back)? (?:in)?to (?:the |its |their |our )?(?:left|right)\b"
                     rf"|\b{_SIDEWAYS}(?: over| back)? (?:in)?to (?:the |its |their |our )?(?:[a-z_0-9]+'s |lane of )?(?:lane|path)\b"),
     # "turn off the street lights" switches lights, it turns off no road
@@ -75,7 +76,8 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
     ("stop", r"\bbrak\w*|\bstop\w*|\bhalt\w*|\bslam\w*|\bcome\w* to a (?:stop|halt|standstill)\b"),
     ("cross_road", r"\bcross(?:es|ed|ing)?\b(?! ?roads?| ?walks?)|\bcut(?:s|ting)? across\b|\bwalk\w* (?:straight |right |just )?(?:out|across|into)\b|\bsteps? (?:straight |right |just )?out\b|\b(?:run|runs|dart\w*) (?:straight |right |just )?(?:out|across)\b"
                    r"|\bjaywalk\w*"),
-    ("keep_lane", r"\b(?:keep\w* (?:its|their|the) lane|driv\w* on|cruis\w*)\b"),
+    ("keep_lane", r"\b(?:keep\w* (?:its|their|the) lane|driv\w* on|cruis\w*)\b"
+                  r"|\b(?:driv|travel|roll)\w* (?:along |steadily )?at \d|\bspeed (?:of |at |to )?\d"),  # "the ego drives at 8 m/s and ..."
 )
 _COMPILED = tuple((kind, re.compile(words)) for kind, words in _MANOEUVRES)
 # A light alone is a traffic light when pointed at ("the light turns red"); "light rain", "light stuff" are not.

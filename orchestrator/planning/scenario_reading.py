@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import re
 import time
+from dataclasses import replace
 from functools import cache
 from typing import Any
 
@@ -229,6 +230,7 @@ class ScenarioReader:
         timing = split(story or low)
         refuse_unsupported(timing.action)
         first, later = steps(_LEADING.sub("", timing.action.strip(" ,.")).strip())
+        timing, later = _delay_of_a_later_step(story or low, timing, later)
         arrived: list[ToolCall] = []
         try:
             readings = _stories(first, later, timing, scene)
@@ -255,6 +257,18 @@ class ScenarioReader:
         guessed = defaults + int(len(readings) > 1)
         return Plan(calls=calls, planner=self.name, confidence=max(0.0, STATED_CONFIDENCE - DEFAULT_COST * guessed),
                     trace=[step])
+
+
+def _delay_of_a_later_step(said: str, timing: Timing, later: list[tuple[str, float | None]]) -> tuple[Timing, list[tuple[str, float | None]]]:
+    """The story's time said after its second step ("cruises at 4 m/s and swings into the left lane
+    at 6 s"): the second step's, counted from the start; the first starts at once."""
+    delay = DELAY.search(said)
+    if not later or timing.delay is None or timing.vague or timing.trigger is not None or later[0][1] is not None or delay is None:
+        return timing, later
+    second = said.find(later[0][0][:12])
+    if second < 0 or delay.start() < second:
+        return timing, later
+    return replace(timing, delay=None), [(later[0][0], timing.delay), *later[1:]]
 
 
 def _stories(first: str, later: list[tuple[str, float | None]], timing: Timing, scene: Scene) -> list[tuple[list[ToolCall], int]]:

@@ -7,7 +7,7 @@ thing lost to the eye ("it blends into the grass") is made to stand out, never r
 no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
 the ones who wait or want are the setting, not things to add; "a blue one next to it" is one more;
 "the first one" after one more is the earlier one; what is kept said first is excepted from the rest;
-"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane."""
+"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane; a time said after a second step is that step's."""
 
 from __future__ import annotations
 
@@ -60,8 +60,11 @@ def test_a_multiple_of_the_things_there_adds_that_many_more(campus, registry):
 
 def test_a_lane_change_a_storyboard_leaves_out_is_refused(campus, registry):
     plan = Fixed(call("add_manoeuvre", actor="ego", manoeuvre={"kind": "keep_lane", "speed": 4.0}, at_time=6.0))
-    report = held(campus, registry, plan, "the ego rolls at 4 m/s and slides into the left lane at 6 s")
+    report = held(campus, registry, plan, "the ego rolls at 4 m/s and hops into the left lane at 6 s")
     assert "changes no lane" in (report.error or "")
+    # where the scenario reader reads the lane change, it is offered instead
+    report = held(campus, registry, plan, "the ego rolls at 4 m/s and slides into the left lane at 6 s")
+    assert report.question is not None and "lane_change" in str([r.calls for r in report.question.readings])
 
 
 def test_a_distance_a_storyboard_leaves_out_is_refused(campus, registry):
@@ -191,3 +194,13 @@ def test_a_short_slip_before_a_things_number_names_that_thing(campus, registry):
 def test_which_lane_asked_after_the_thing_is_the_lane_asked(campus, registry):
     report = Session(campus, RulePlanner(), registry).submit("the ego is on which lane now?")
     assert report.ok and "main_eastbound on Main Street" in (report.answer or "")
+
+
+def test_a_time_said_after_the_second_step_is_the_second_steps(campus, registry):
+    from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
+    from drivetwin.orchestrator.planning import PlanContext
+
+    plan = ScenarioReader().plan("the ego rolls at 7 m/s and slides into the left lane after 5 s", PlanContext(scene=campus, registry=registry))
+    kinds = [(c.args["manoeuvre"]["kind"], c.args.get("at_time")) for c in plan.calls]
+    assert kinds == [("keep_lane", None), ("lane_change", 5.0)]
+    assert plan.calls[0].args["manoeuvre"]["speed"] == 7.0
