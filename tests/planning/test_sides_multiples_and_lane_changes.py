@@ -197,8 +197,8 @@ def test_which_lane_asked_after_the_thing_is_the_lane_asked(campus, registry):
 
 
 def test_a_time_said_after_the_second_step_is_the_second_steps(campus, registry):
-    from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
     from drivetwin.orchestrator.planning import PlanContext
+    from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
 
     plan = ScenarioReader().plan("the ego rolls at 7 m/s and slides into the left lane after 5 s", PlanContext(scene=campus, registry=registry))
     kinds = [(c.args["manoeuvre"]["kind"], c.args.get("at_time")) for c in plan.calls]
