@@ -7,7 +7,7 @@ thing lost to the eye ("it blends into the grass") is made to stand out, never r
 no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
 the ones who wait or want are the setting, not things to add; "a blue one next to it" is one more;
 "the first one" after one more is the earlier one; what is kept said first is excepted from the rest;
-"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane; a time said after a second step is that step's."""
+"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane; a time said after a second step is that step's; "banish", "rip out"; a bright colour is no daylight."""
 
 from __future__ import annotations
 
@@ -204,3 +204,12 @@ def test_a_time_said_after_the_second_step_is_the_second_steps(campus, registry)
     kinds = [(c.args["manoeuvre"]["kind"], c.args.get("at_time")) for c in plan.calls]
     assert kinds == [("keep_lane", None), ("lane_change", 5.0)]
     assert plan.calls[0].args["manoeuvre"]["speed"] == 7.0
+
+
+def test_banished_or_ripped_out_is_removed_and_a_bright_colour_is_no_daylight(campus, registry):
+    assert ruled(campus, registry, "rip out the fire hydrant").scene.count("fire_hydrant") == campus.count("fire_hydrant") - 1
+    assert ruled(campus, registry, "banish the bench from the bus stop").scene.asset("bench_1") is None
+    bench = ruled(campus, registry, "give the bench some bright colour").scene.asset("bench_1")
+    assert bench is not None and bench.appearance.rgba is not None
+    report = Session(campus, RulePlanner(), registry).submit("the bench needs a bright color")
+    assert not (report.ok and report.plan is not None and any(c.tool == "set_time_of_day" for c in report.plan.calls))

@@ -62,7 +62,7 @@ _ANCHOR_BEFORE = re.compile(r"\b(?:near|from|to|behind|ahead of|in front of|of|b
 # "make the suv stand out": a look meant to be seen, in the colour of safety clothing.
 _CONSPICUOUS = ("stand out", "stands out", "hard to miss", "eye-catching", "conspicuous", "easy to spot", "easier to spot", "hi-vis", "high-vis",
                 "more visible", "easier to see", "easy to see",
-                "something bright", "a bright colour", "a bright color", "bright colours", "bright colors", "something brighter")
+                "something bright", "bright colour", "bright color", "bright colours", "bright colors", "something brighter")
 CONSPICUOUS_COLOUR = "orange"
 # A thing said to be lost to the eye, which a colour that stands out mends: "now it disappears into
 # the grass", "the car blends into the road", "it's hard to see".

@@ -128,7 +128,7 @@ TIME_NOT_SET = re.compile(r"\b(?:not|no|never|instead of|rather than)\s+(?:the\s
                           r"|\b(?:all|the whole|the entire|throughout the|for the)\s+(?:morning|afternoon|evening|night|day)\b"
                           # when a thing is hard to see ("hard to see at night"): when it matters, not a time asked for
                           r"|\b(?:see|spot|visible|invisible)\s+(?:\w+\s+)?(?:at|by|in the|during the)\s+(?:night|dusk|dawn|evening)\b"
-                          r"|\bdark(?:er)?[\s-]+(?:colou?r\w*|paint\w*|shades?|tints?)\b"  # a dark colour is no dark
+                          r"|\b(?:dark|bright|light)(?:er)?[\s-]+(?:colou?r\w*|paint\w*|shades?|tints?)\b"  # a dark colour is no dark
                           # (though "make it look like a rainy evening" asks for one)
                           r"|(?<!make it look )(?<!make it feel )(?<!make it seem )(?<!make this look )"
                           r"\b(?:like|as if it were|as though it were)\s+(?:a|an|the)\s+(?:[a-z]+\s+)?(?:morning|afternoon|evening|night)\b")

@@ -18,7 +18,7 @@ PROPERTY_WORDS = ("mass", "masses", "weight", "weights", "weigh", "weighs", "how
                   "how tall", "how wide", "dimensions", "properties", "length", "width", "height")
 REMOVE_WORDS = ("remove", "delete", "get rid of", "get rid", "take away", "take out", "clear away", "erase",
                 "eliminate", "despawn", "clear out", "destroy", "lose", "ditch", "scrap", "decommission", "strike",
-                "throw away", "throw out", "take down", "dispose of", "clean up",
+                "throw away", "throw out", "take down", "dispose of", "clean up", "banish", "rip out", "tear out",
                 "tidy up", "clear the", "clear it", "clear them", "clear lot", "clear parking lot", "empty", "emptied", "cleared of", "no more", "none left", "none of", "without any", "gone")
 # "X is over", "the pedestrians went home": the goal is that X is gone.
 GONE_WORDS = ("is over", "are over", "is finished", "are finished", "is done", "are done",
