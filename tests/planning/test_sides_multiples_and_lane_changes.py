@@ -7,7 +7,7 @@ thing lost to the eye ("it blends into the grass") is made to stand out, never r
 no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
 the ones who wait or want are the setting, not things to add; "a blue one next to it" is one more;
 "the first one" after one more is the earlier one; what is kept said first is excepted from the rest;
-"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane; a time said after a second step is that step's; "banish", "rip out"; a bright colour is no daylight."""
+"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane; a time said after a second step is that step's; "banish", "rip out"; a bright colour is no daylight; "most far" is furthest."""
 
 from __future__ import annotations
 
@@ -213,3 +213,8 @@ def test_banished_or_ripped_out_is_removed_and_a_bright_colour_is_no_daylight(ca
     assert bench is not None and bench.appearance.rgba is not None
     report = Session(campus, RulePlanner(), registry).submit("the bench needs a bright color")
     assert not (report.ok and report.plan is not None and any(c.tool == "set_time_of_day" for c in report.plan.calls))
+
+
+def test_most_far_is_furthest(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("which tree is the most far from the bus stop?")
+    assert report.ok and (report.answer or "").startswith("furthest tree from bus stop")

@@ -767,8 +767,14 @@ _BIT_ADJECTIVE = re.compile(r"\b((?:a )?little bit|a bit|a little|a tad|slightly
 _MOST_ADJECTIVE = re.compile(r"\bmost ([a-z]{3,6})\b", re.IGNORECASE)
 
 
+# Comparatives and superlatives not made with -er and -est: "most far" is furthest.
+_IRREGULAR = {"far": ("further", "furthest"), "good": ("better", "best"), "bad": ("worse", "worst")}
+
+
 def _superlative(m: re.Match[str]) -> str:
     """"most heavy" as "heaviest", when it or its comparative is a word the rule planner reads ("most big": biggest)."""
+    if m.group(1).lower() in _IRREGULAR:
+        return _IRREGULAR[m.group(1).lower()][1]
     said = _comparative_of(m.group(1).lower())
     if said is not None and is_english(said[:-1] + "st"):
         return said[:-1] + "st"
@@ -778,6 +784,8 @@ def _superlative(m: re.Match[str]) -> str:
 
 def _comparative(m: re.Match[str]) -> str:
     """"more slow" as "slower", when that is an English word the rule planner's patterns read."""
+    if m.group(1).lower() in _IRREGULAR:
+        return _IRREGULAR[m.group(1).lower()][0]
     said = _comparative_of(m.group(1).lower())
     return said if said is not None else m.group(0)
 
