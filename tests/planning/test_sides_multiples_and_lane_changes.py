@@ -218,3 +218,8 @@ def test_banished_or_ripped_out_is_removed_and_a_bright_colour_is_no_daylight(ca
 def test_most_far_is_furthest(campus, registry):
     report = Session(campus, RulePlanner(), registry).submit("which tree is the most far from the bus stop?")
     assert report.ok and (report.answer or "").startswith("furthest tree from bus stop")
+
+
+def test_how_far_after_a_route_said_is_the_routes_length(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("My son strolls from the bus stop to the library each day. How long is that?")
+    assert report.ok and "from bus stop to Library entrance" in (report.answer or "")

@@ -439,6 +439,9 @@ _MORE_OF = re.compile(r"^\s*(?:another(?:\s+(?:\d+|one|two|three|four|five|six|s
 _PLACE_TAIL = re.compile(r"\s((?:by|at|near|next to|beside|outside|in front of|behind|in|on|inside|around|to)\s+(?:the\s+)?\S.*)$",
                          re.IGNORECASE)
 # "..., and the one by the library", "and the other one at the gate": another of the thing named first.
+# A route said ("from the main gate to the Engineering Hall"), and its length asked after it ("how far is that?").
+_ROUTE_SAID = re.compile(r"\bfrom (?:the )?[a-z][\w ]{2,40}? to (?:the )?[a-z][\w ]{2,40}?(?=\s+(?:every|each|daily|most|in the|at|on|then|and)\b|\s*$)")
+_HOW_FAR_THAT = re.compile(r"(?:[\w ]{0,20}?,?\s*)?how (?:far|long) is (?:that|it|the walk|the route|the trip|that walk)\s*\??", re.IGNORECASE)
 # One more of what was just added, described: "a blue one next to it", "and an older one by the gate".
 _ONE_MORE_DESCRIBED = re.compile(r"(?:^|[,;.]|\band\b|\badd\b|\bput\b|\bplus\b)\s*(?:also\s+)?(?:a|an)\s+(?:[a-z]+\s+){0,2}?one\b(?![-\w])")
 _ONE_OF = re.compile(r"^\s*(the(?: other)?|that|this)\s+one\b", re.IGNORECASE)
@@ -571,8 +574,13 @@ class RulePlanner:
         described: list[ToolCall] = []
         previous: list[ToolCall] = []  # the calls of the last clause that asked for something
         kind: str | None = None  # what "a new one" is one of: the clause before's, else (read only when asked) the last turn's
+        route: str | None = None  # the last "from A to B" a clause said
         for clause, asked, intro in clauses:
             clause, name = named_as(clause)  # "add a pedestrian at the gate, that's our steward"
+            if asked and route is not None and _HOW_FAR_THAT.fullmatch(clause.strip()):
+                clause = f"how far is it {route}"  # "I walk from the stop to the library daily. How far is that?"
+            said_route = _ROUTE_SAID.search(clause.lower())
+            route = said_route.group(0) if said_route is not None else route
             reading = read(clause, scene)
             new_one = _A_NEW_ONE.search(clause)
             if new_one is not None and (kind := kind or _kind_said_last(context.memory)) is not None:
