@@ -1,13 +1,15 @@
-"""Worded here (none from a suite): a question about the things on one side of the road with no
-road named (the side of the road nearest each), or on the side of a road named of a kind that stands
-anywhere (refused: the search cannot say that); "2 more of them" adds two; "double the number of benches" adds as many
-as there are and a multiple of none is refused; a lane change or a distance said that a storyboard
-leaves out is refused; someone's thing set to do something ("have my guy ...") is never a new one; a
-thing lost to the eye ("it blends into the grass") is made to stand out, never removed; a dark colour is
-no dark; "a number of" things is some, not a count asked; a manner said before where a drive goes;
-the ones who wait or want are the setting, not things to add; "a blue one next to it" is one more;
-"the first one" after one more is the earlier one; what is kept said first is excepted from the rest;
-"them" before things, "feets", "rides forth to", "so much" snow; a polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane; a time said after a second step is that step's; "banish", "rip out"; a bright colour is no daylight; "most far" is furthest."""
+"""Worded here (none from a suite): a question about the things on one side of the road with no road named (the
+side of the road nearest each), or on the side of a road named of a kind that stands anywhere (refused: the
+search cannot say that); "2 more of them" adds two; "double the number of benches" adds as many as there are and
+a multiple of none is refused; a lane change or a distance said that a storyboard leaves out is refused;
+someone's thing set to do something ("have my guy ...") is never a new one; a thing lost to the eye ("it blends
+into the grass") is made to stand out, never removed; a dark colour is no dark; "a number of" things is some,
+not a count asked; a manner said before where a drive goes; the ones who wait or want are the setting, not
+things to add; "a blue one next to it" is one more; "the first one" after one more is the earlier one; what is
+kept said first is excepted from the rest; "them" before things, "feets", "rides forth to", "so much" snow; a
+polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane; a time said
+after a second step is that step's; "banish", "rip out"; a bright colour is no daylight; "most far" is furthest;
+how far after a route said is its length."""
 
 from __future__ import annotations
 
