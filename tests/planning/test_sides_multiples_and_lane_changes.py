@@ -9,7 +9,8 @@ things to add; "a blue one next to it" is one more; "the first one" after one mo
 kept said first is excepted from the rest; "them" before things, "feets", "rides forth to", "so much" snow; a
 polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane; a time said
 after a second step is that step's; "banish", "rip out"; a bright colour is no daylight; "most far" is furthest;
-how far after a route said is its length."""
+how far after a route said is its length; "every other one" is half of them; each put where the other is is a
+swap; a thing that should not be on the sidewalk never goes onto one."""
 
 from __future__ import annotations
 
@@ -225,3 +226,22 @@ def test_most_far_is_furthest(campus, registry):
 def test_how_far_after_a_route_said_is_the_routes_length(campus, registry):
     report = Session(campus, RulePlanner(), registry).submit("My son strolls from the bus stop to the library each day. How long is that?")
     assert report.ok and "from bus stop to Library entrance" in (report.answer or "")
+
+
+def test_every_other_one_is_half_and_each_where_the_other_is_is_a_swap(campus, registry):
+    lamps = campus.count("street_light")
+    assert ruled(campus, registry, "take away every other street light").scene.count("street_light") == lamps - lamps // 2
+    assert ruled(campus, registry, "too many street lights, leave every other one").scene.count("street_light") == lamps - lamps // 2
+    swapped = ruled(campus, registry, "put the bin where the bench is and the bench where the bin is").scene
+    bench, bin_ = campus.asset("bench_1"), campus.asset("trash_bin_1")
+    assert (swapped.asset("trash_bin_1").pose.x, swapped.asset("bench_1").pose.x) == (bench.pose.x, bin_.pose.x)
+
+
+def test_a_thing_that_should_not_be_on_the_sidewalk_never_goes_onto_one(campus, registry):
+    from drivetwin.worlds.surface import surface_at
+
+    session = Session(campus, RulePlanner(), registry)
+    session.submit("the hydrant shouldn't be on the sidewalk")  # it had been moved onto another sidewalk
+    hydrant = session.scene.asset("fire_hydrant_1")
+    assert hydrant is not None
+    assert session.scene == campus or surface_at(session.scene, hydrant.pose.x, hydrant.pose.y) != "sidewalk"

@@ -168,7 +168,8 @@ PLACE_SAID = re.compile(r"\b(?:at|by|near|next to|beside|around|round|outside|in
                          r"\s+the\s+(?!(?:moment|same time|end of the day|way|time|least|most|latest|earliest|start|end)\b)"
                          r"([a-z][a-z ]{1,30}?)\s*(?:[,.;!?]|$|\b(?:and|please|pls|plz|with|so|for|to|now)\b)")
 # Away from a sidewalk ("shove it somewhere off the sidewalk", "get it off the pavement"): not onto one.
-_OFF_SIDEWALK = re.compile(r"\b(?:off|away from|clear of|not on) (?:of )?(?:the |that |this )?(?:sidewalk|pavement|footpath|kerb|curb)\b")
+_OFF_SIDEWALK = re.compile(r"\b(?:off|away from|clear of|not on|(?:should|must|ought to|can)(?:n'?t| not)(?: be)? on|(?:is|are)(?:n'?t| not) meant to be on)"
+                           r" (?:of )?(?:the |that |this )?(?:sidewalk|pavement|footpath|kerb|curb)\b")  # "the hydrant shouldn't be on the sidewalk"
 # A thing moved off the road with no place said: "move the truck off the carriageway", "get him out of the road".
 _OFF_ROAD = re.compile(r"\b(?:off|out of|clear of) (?:of )?(?:the |that |this |our )?(?:road|roadway|carriageway|street|lane|traffic)\b")
 
