@@ -77,7 +77,7 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
     ("cross_road", r"\bcross(?:es|ed|ing)?\b(?! ?roads?| ?walks?)|\bcut(?:s|ting)? across\b|\bwalk\w* (?:straight |right |just )?(?:out|across|into)\b|\bsteps? (?:straight |right |just )?out\b|\b(?:run|runs|dart\w*) (?:straight |right |just )?(?:out|across)\b"
                    r"|\bjaywalk\w*"),
     ("keep_lane", r"\b(?:keep\w* (?:its|their|the) lane|driv\w* on|cruis\w*)\b"
-                  r"|\b(?:driv|travel|roll)\w* (?:along |steadily )?at \d|\bspeed (?:of |at |to )?\d"),  # "the ego drives at 8 m/s and ..."
+                  r"|\b(?:driv|travel|roll)\w* (?:along |steadily )?at \d"),  # "the ego drives at 8 m/s and ..."
 )
 _COMPILED = tuple((kind, re.compile(words)) for kind, words in _MANOEUVRES)
 # A light alone is a traffic light when pointed at ("the light turns red"); "light rain", "light stuff" are not.
