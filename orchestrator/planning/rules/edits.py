@@ -386,8 +386,6 @@ FINAL_COUNT = re.compile(r"\b(?:there (?:should|must|has to|needs to|is to|are t
 
 # Half of the things named ("half the trees", "half of those cones").
 _HALF = re.compile(r"\bhalf (?:of )?(?:the|those|these|them|all(?: the)?|our|its)\b[^,;]*$")
-# One in two kept (or taken): "leave every other one", "remove every second lamp".
-_EVERY_OTHER = re.compile(r"\bevery (?:other|second|2nd) (?:one|[a-z_]+)\b|\balternate (?:ones|[a-z_]+s)\b")
 # Thinned out: fewer, by about half ("thin the cones out", "thin them out").
 _THINNED = re.compile(r"\bthin(?:s|ned|ning)? (?:\w+ ){0,2}out\b")
 # Fewer by half with no things named after the verb ("reduce to half", "cut them down to half", "halve them"):
@@ -526,8 +524,7 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
     count = find_count(r, mention)
     if count and count >= scene.count(name) > 1 and _VAGUE_PART.search(r.low) and not r.has(("all", "every", "each")):
         count = scene.count(name) - 1  # "too many people there, remove some": some of three is never all three
-    halved = bool((count is None and (_HALF.search(r.low[: mention.start]) or _THINNED.search(r.low))) or _HALVED.search(r.low)
-                  or _EVERY_OTHER.search(r.low))  # "too many street lights, leave every other one": half of them
+    halved = bool((count is None and (_HALF.search(r.low[: mention.start]) or _THINNED.search(r.low))) or _HALVED.search(r.low))
     if halved:  # "half the trees have to go", "cut them by half", "thin them out": half of them
         count = max(1, len(kept_at(scene, name, r.landmark)) // 2)
     if recent and r.has(("you added", "you just added", "the new", "that", "those")):

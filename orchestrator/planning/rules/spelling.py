@@ -449,7 +449,9 @@ _HALVE = re.compile(r"\bhalve ((?:the (?:number|amount|count) of )?)((?:[\w'-]+\
 # Each put where the other is: "put the bin where the bench is and the bench where the bin is" swaps them.
 _CROSSED_PLACES = re.compile(r"\b(?:put|place|move|set)\s+(the [a-z_0-9 ]+?) where (the [a-z_0-9 ]+?) (?:is|stands|was|stood)(?: now)?,?"
                              r" and (?:put |place |move |set )?\2 where \1 (?:is|stands|was|stood)\b", re.IGNORECASE)
-# "remove every other street light", "take away every second tree": half of them, one in two.
+# "remove every other street light", "take away every second tree": half of them, one in two; "leave every other one":
+# them thinned out.
+_EVERY_OTHER_KEPT = re.compile(r"\b(?:leave|keep)\s+(?:just\s+|only\s+)?every (?:other|second|2nd) one\b", re.IGNORECASE)
 _EVERY_OTHER = re.compile(r"\b(?:remove|delete|take away|take out|get rid of|lose|drop)\s+every (?:other|second|2nd) ([a-z][a-z ]{1,20}?)"
                           r"(?=\s*(?:[,.;!?]|$|\s(?:on|in|at|by|near|along|from|and)\b))", re.IGNORECASE)
 _IN_HALF = re.compile(r"\b(?:cut|reduce|drop|bring down)\s+(?:the (?:number|amount|count) of\s+)?((?:[\w'-]+\s+){1,6}?)"
@@ -495,7 +497,7 @@ def _formal_forms(text: str, vocab: frozenset[str]) -> str:
     text = _RADIO_NUMBER.sub(_radio_number, _LOT_SPOKEN.sub(lambda m: f"{m.group(1)} {m.group(2)[0].upper()}", text))
     text = _MINUS.sub("-", text)
     text = _HALVE.sub(lambda m: _halved(m.group(2), m.group(0)), _OF_FOR_OFF.sub(r"\1 off", text))
-    text = _EVERY_OTHER.sub(lambda m: _halved(m.group(1).rstrip("s") + "s", m.group(0)), text)
+    text = _EVERY_OTHER.sub(lambda m: _halved(m.group(1).rstrip("s") + "s", m.group(0)), _EVERY_OTHER_KEPT.sub("thin them out", text))
     text = _CROSSED_PLACES.sub(lambda m: f"swap {m.group(1)} and {m.group(2)}", text)
     text = _REARWARD.sub("backward", _IN_HALF.sub(lambda m: _halved(m.group(1), m.group(0)), text))
     text = _COMPASS_SHORT.sub(lambda m: _COMPASS_WORDS[m.group(1).lower()], _TOO_MANY.sub(r"\1 too \2", text))
