@@ -918,8 +918,8 @@ def _figures_left_out(request: Request, calls: list[ToolCall]) -> list[float]:
     used = [n for c in calls for n in _numbers_in_args(c.args)]
     # a newcomer's place ahead is where it will be when it starts: a sum again ("steps out 15 m ahead after 3 s")
     figures = (_SPEED_SAID,) if any("location" in c.args for c in calls) else (_SPEED_SAID, _DISTANCE_FIGURE)
-    speeds = [(float(m.group(1)), m.group(2)) for said in figures for m in said.finditer(request.low)]
-    return [n for n, unit in speeds
+    measures = [(float(m.group(1)), m.group(2)) for said in figures for m in said.finditer(request.low)]
+    return [n for n, unit in measures
             if not _accounts_for(n, used, [1.0, *(f for said, f in UNIT_FACTORS.items() if re.search(said, unit))])]
 
 
