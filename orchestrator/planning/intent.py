@@ -290,6 +290,22 @@ _LABEL = re.compile(r"(?:^|(?<=\s))\[?[A-Za-z]{2,}-\d+\]?:?(?=\s|$)|\bticket\s*#
 _STEPS = re.compile(r"^\s*(?:steps?(?: to reproduce)?|repro|action|request|task|summary|title|subject)\s*:\s*", re.IGNORECASE)
 _EXPECTED = re.compile(r"(?:^|(?<=[\s.;,]))(?:expected(?: result| outcome| behaviou?r)?|expectation|actual(?: result)?"
                        r"|acceptance(?: criteria)?)\s*:.*$", re.IGNORECASE | re.DOTALL)
+# A ticket headed by a few words and then its acceptance criteria ("Summary: cone line lot B / Acceptance: 5 cones,
+# one line, 3 m spacing, inside parking lot B"): the criteria say what to build, the heading only names it.
+_TICKET = re.compile(r"^\s*(?:summary|title|subject)\s*:\s*(?P<head>[^/\n]+?)\s*(?:/|\n|;)\s*"
+                     r"(?:acceptance(?: criteria)?|expected(?: result| outcome)?)\s*:\s*(?P<outcome>.+)$", re.IGNORECASE | re.DOTALL)
+TICKET_HEAD_WORDS = 5
+
+
+def _ticket_outcome(text: str) -> str:
+    """A ticket's criteria in place of its few-word heading, the heading kept after them in brackets ("bench stands at
+    the JTEKT entrance (move bench_1)"); any other text as it is."""
+    said = _TICKET.match(text)
+    if said is None or len(said.group("head").split()) > TICKET_HEAD_WORDS:
+        return text
+    return f"{said.group('outcome').strip()} ({said.group('head').strip()})"
+
+
 # A tag that turns a request into a question only in form ("let's take it away, shall we?").
 _TAG = re.compile(r",?\s*(?:shall we|will you|won'?t you|would you|could you|can you|ok|okay|right|yeah|alright)\s*\?\s*$",
                   re.IGNORECASE)
@@ -518,7 +534,7 @@ def without_reason(text: str) -> str:
     so give me rain") or what is not meant (", not the ego"), without labels pasted with it
     ("JIRA-412:"), and with a layout's heading read as words ("Ring: 6x cones" is a ring of 6x
     cones)."""
-    text = _STEPS.sub("", _EXPECTED.sub("", _TAG.sub("", _CLEFT.sub("I want ", without_slip(text)))))
+    text = _STEPS.sub("", _EXPECTED.sub("", _TAG.sub("", _CLEFT.sub("I want ", _ticket_outcome(without_slip(text))))))
     if (nominal := _NOMINAL_EDIT.match(text)) is not None:
         text = _ASKED_FOR.sub("", _NOMINAL[nominal.group(1).lower()] + text[nominal.end() :])
     text = without_contrast(_LAYOUT_HEADING.sub(r"\1 of", _LABEL.sub(" ", text))).strip()

@@ -10,7 +10,8 @@ kept said first is excepted from the rest; "them" before things, "feets", "rides
 polite "might"; what a walk is for is its setting; "tre 4" is tree_4; "on which lane" asks the lane; a time said
 after a second step is that step's; "banish", "rip out"; a bright colour is no daylight; "most far" is furthest;
 how far after a route said is its length; "every other one" is half of them; each put where the other is is a
-swap; a thing that should not be on the sidewalk never goes onto one."""
+swap; a thing that should not be on the sidewalk never goes onto one; a ticket's criteria under a few-word
+heading say what to build."""
 
 from __future__ import annotations
 
@@ -245,3 +246,12 @@ def test_a_thing_that_should_not_be_on_the_sidewalk_never_goes_onto_one(campus, 
     hydrant = session.scene.asset("fire_hydrant_1")
     assert hydrant is not None
     assert session.scene == campus or surface_at(session.scene, hydrant.pose.x, hydrant.pose.y) != "sidewalk"
+
+
+def test_a_tickets_criteria_say_what_to_build_under_a_few_word_heading(campus, registry):
+    session = ruled(campus, registry, "Title: barrier row / Acceptance: 3 road barriers, one line, 2 m spacing, in parking lot A")
+    assert session.scene.count("road_barrier") == 3
+    moved = ruled(campus, registry, "Summary: shift bench_1 / Expected: bench stands at the Student Union entrance").scene.asset("bench_1")
+    union = campus.landmark("Student Union entrance")
+    assert moved is not None and union is not None
+    assert abs(moved.pose.x - union.position[0]) + abs(moved.pose.y - union.position[1]) < 6.0
