@@ -301,9 +301,16 @@ def _ticket_outcome(text: str) -> str:
     """A ticket's criteria in place of its few-word heading, the heading kept after them in brackets ("bench stands at
     the JTEKT entrance (move bench_1)"); any other text as it is."""
     said = _TICKET.match(text)
-    if said is None or len(said.group("head").split()) > TICKET_HEAD_WORDS:
-        return text
-    return f"{said.group('outcome').strip()} ({said.group('head').strip()})"
+    if said is None or len(said.group("head").split()) > TICKET_HEAD_WORDS or asks(said.group("head").lower()):
+        return text  # "Summary: what is at the crossroads": the heading asks, and the criteria only restate it
+    head, outcome = said.group("head").strip(), said.group("outcome").strip()
+    if not _TICKET_DETAIL.search(outcome.lower()) or _TICKET_DETAIL.search(head.lower()):
+        return text  # the criteria add no place or figure the heading lacks ("any one of the cars removed")
+    return f"{outcome} ({head})"
+
+
+# What a ticket's criteria add to its heading: a figure, or a place something stands at.
+_TICKET_DETAIL = re.compile(r"(?<![\w])\d|\b(?:at|in|inside|into|to|near|by|beside|next to)\s+(?:the\s+)?(?!night|noon|dusk|dawn|midnight|day)[a-z]")
 
 
 # A tag that turns a request into a question only in form ("let's take it away, shall we?").
