@@ -204,7 +204,7 @@ def test_a_time_said_after_the_second_step_is_the_second_steps(campus, registry)
     from drivetwin.orchestrator.planning import PlanContext
     from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
 
-    plan = ScenarioReader().plan("the ego rolls at 7 m/s and slides into the left lane after 5 s", PlanContext(scene=campus, registry=registry))
+    plan = ScenarioReader().plan("the ego cruises at 7 m/s and slides into the left lane after 5 s", PlanContext(scene=campus, registry=registry))
     kinds = [(c.args["manoeuvre"]["kind"], c.args.get("at_time")) for c in plan.calls]
     assert kinds == [("keep_lane", None), ("lane_change", 5.0)]
     assert plan.calls[0].args["manoeuvre"]["speed"] == 7.0
