@@ -167,9 +167,11 @@ _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one m
 # A question about the scene's settings ("time + weather?", "what's the weather doing"): the
 # environment is what it must look up.
 _SETTING_ASKED = re.compile(r"\b(?:weather|what time|the time|time of day|lighting|exposure)\b")
+# The units a length on the campus is said in (a distance in km is read as a speed's unit elsewhere).
+_LENGTH_UNITS = r"m|metres?|meters?|ft|feet|foot|yards?"
 # A distance said ("20 m north of the library", "ten feet behind it"): only then may a thing the
 # plan puts by a named place stand further than PLACE_RADIUS_M from it.
-_DISTANCE_SAID = re.compile(r"\d\s*(?:m|metres?|meters?|ft|feet|foot|yards?|km)\b")
+_DISTANCE_SAID = re.compile(rf"\d\s*(?:{_LENGTH_UNITS}|km)\b")
 # Tools that act on a list of assets as well as on one.
 _GROUP_TOOLS = ("move_asset", "remove_assets", "set_asset_appearance")
 
@@ -940,7 +942,7 @@ def _lane_change_left_out(low: str, calls: list[ToolCall]) -> list[str]:
 
 _LANE_CHANGE_SAID = re.compile(r"\b(?:in)?to the (?:left|right)(?:[- ]hand)? lane\b|\bchang\w* lanes?\b|\blane change\b")
 _SPEED_SAID = re.compile(rf"(\d+(?:\.\d+)?)\s*{SPEED_UNIT}", re.IGNORECASE)  # the readers' own units of speed
-_DISTANCE_FIGURE = re.compile(r"(\d+(?:\.\d+)?)\s*(m|metres?|meters?|ft|feet|foot|yards?)\b(?!\s*(?:/|per\b|an hour))")
+_DISTANCE_FIGURE = re.compile(rf"(\d+(?:\.\d+)?)\s*({_LENGTH_UNITS})\b(?!\s*(?:/|per\b|an hour))")  # a distance, no speed
 
 
 def _accounts_for(number: float, used: list[float], factors: list[float]) -> bool:
