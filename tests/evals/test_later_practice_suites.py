@@ -47,6 +47,7 @@ from drivetwin.evals import (
     practice35_source,
     practice36_source,
     practice37_source,
+    practice38_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -157,6 +158,11 @@ BRIEFS: dict[str, Brief] = {
     # game master, plumber and tradesperson, commit-message software developer, formal letter-writer; arrangement (every
     # grade) and the vague and erroneous grades of every task hold 13, the rest 11 or 12.
     "practice37": Brief(340, 11, 11, practice37_source, multi_turn=45, planned=30, compound=20, weighted_grades=("vague", "erroneous")),
+    # Eight voices: Thai speaker, Israeli (Hebrew) speaker, Bengali speaker, Ukrainian speaker, rally co-driver reading
+    # pace notes, theatre stage manager calling cues, TV weather forecaster, recipe writer; arrangement (every grade) and
+    # the vague and erroneous grades of every task hold 13, the rest 11 or 12.
+    "practice38": Brief(340, 11, 11, practice38_source, multi_turn=45, planned=30, compound=20,
+                        weighted_grades=("vague", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
