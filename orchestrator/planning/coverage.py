@@ -415,6 +415,11 @@ _HANDLES_EXISTING = frozenset(["get", "have", "let", "take", "send", "tell", "st
 _AS_BEFORE = re.compile(r"\b(?:back (?:where|to where|in|into|at|on|to)|where (?:it|they) (?:was|were|used to be)|back in place)\b")
 
 
+# What comes before "the <thing>" as a clause's subject: nothing, a stop, a joining word, or a
+# question's auxiliary ("might the bus be in lot B?")...
+_SUBJECT_OPENS = re.compile(r"(?:^|[,.;:!?]|\b(?:and|but|so|then|now|also|might|could|would|should|can|will|may|must|shall|does|did|is|are|has))\s*$")
+# ...unless a role follows that brings one in ("the car ahead brakes", "the bus in front stops").
+_ROLE_AFTER = re.compile(r"\s*(?:ahead|in front|leading|behind)\b")
 # The rule lexicon's ways of asking for a thing ("i want", "we need"), as one pattern.
 _LEXICON_ADDS = re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(w) for w in sorted(lx.ADD_WORDS, key=len, reverse=True))})(?![a-z])")
 
@@ -426,11 +431,15 @@ def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
     if _NEW.search(masked):
         return []
     out = []
-    asks_for_new = ADD_WORDS.search(masked) is not None or _LEXICON_ADDS.search(masked) is not None
+    how = re.sub(r"\bmore\s+[a-z]+(?:ly|ful|ous)\b", "", masked)  # "drive more carefully" asks for no more of anything
+    asks_for_new = ADD_WORDS.search(how) is not None or _LEXICON_ADDS.search(how) is not None
     for m in named_in(masked):
         before = m.last_words(2)
         points_at = len(before) == 2 and before[1] in _DEFINITE and (
             before[0] in _CHANGES_EXISTING or bool(_AS_BEFORE.search(masked)) or (before[0] in _HANDLES_EXISTING and not asks_for_new))
+        # "the bus should drive more carefully", "might the bus be in lot B?": said of one there
+        points_at = points_at or (before[-1:] == ["the"] and not asks_for_new and _SUBJECT_OPENS.search(m.before[: m.before.rfind("the")]) is not None
+                                  and not _ROLE_AFTER.match(m.after))
         if points_at and not scene.count(m.category) \
                 and any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)

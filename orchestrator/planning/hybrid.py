@@ -276,8 +276,11 @@ class HybridPlanner:
             if not candidates:  # a small model's guess at what nothing else could read: it is asked
                 why = f"{why}; only the small LLM could plan it"
             candidates = [*candidates, llm_plan]
+        request = read_request(prompt, context.scene)
+        # a retrieval reading that does what the words do not ask ("move the bench ..." read as a removal) is no offer
         readings = [
-            c for c in candidates if c.calls and (c.planner != "retrieval" or c.confidence >= RETRIEVAL_READING)
+            c for c in candidates
+            if c.calls and (c.planner != "retrieval" or (c.confidence >= RETRIEVAL_READING and _fits_the_mood(c, request)))
         ]
         if not readings:
             raise PlanningError(_not_understood(rules_said))

@@ -76,7 +76,9 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
     ("stop", r"\bbrak\w*|\bstop\w*|\bhalt\w*|\bslam\w*|\bcome\w* to a (?:stop|halt|standstill)\b"),
     ("cross_road", r"\bcross(?:es|ed|ing)?\b(?! ?roads?| ?walks?)|\bcut(?:s|ting)? across\b|\bwalk\w* (?:straight |right |just )?(?:out|across|into)\b|\bsteps? (?:straight |right |just )?out\b|\b(?:run|runs|dart\w*) (?:straight |right |just )?(?:out|across)\b"
                    r"|\bjaywalk\w*"),
-    ("keep_lane", r"\b(?:keep\w* (?:its|their|the) lane|driv\w* on|cruis\w*)\b"),
+    # "drives at 6 m/s", "ego speed 6 m/s": a steady speed, a step of a story when another step follows
+    ("keep_lane", r"\b(?:keep\w* (?:its|their|the) lane|driv\w* on|cruis\w*)\b"
+                  r"|\b(?:driv\w*|go(?:es)?|travel\w*|mov(?:e|es)|roll\w*) (?:along |steadily |on )?at (?=\d)|\bspeed (?:of |at |to |is )?(?=\d)"),
 )
 _COMPILED = tuple((kind, re.compile(words)) for kind, words in _MANOEUVRES)
 # A light alone is a traffic light when pointed at ("the light turns red"); "light rain", "light stuff" are not.

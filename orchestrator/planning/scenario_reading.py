@@ -50,7 +50,7 @@ from drivetwin.orchestrator.planning.scenario_triggers import (
 )
 from drivetwin.tools.base import ToolCall
 from drivetwin.worlds.catalog import catalog
-from drivetwin.worlds.scene import EGO_ID, AssetInstance, Scene
+from drivetwin.worlds.scene import EGO_ID, AssetInstance, DriveLane, Scene
 
 SCENARIO_TOOLS = ("add_event", "add_manoeuvre", "set_light_phases")
 # Confidence of a reading whose every part was stated; each default the reader had to supply
@@ -276,14 +276,33 @@ def _stories(first: str, later: list[tuple[str, float | None]], timing: Timing, 
     readings: list[tuple[list[ToolCall], int]] = []
     for actor, manoeuvre, spec, done_to in _readings(first, scene):
         calls, defaults = _calls(actor, manoeuvre, spec, timing, done_to, scene)
-        for words, gap in later:
-            calls = _followed_by(calls, actor, words, gap, scene)
+        for words, gap in later:  # "..., and let it change to the left lane": "it change to the left lane"
+            calls = _followed_by(calls, actor, _LET.sub("", words), gap, scene)
         readings.append((calls, defaults + manoeuvre.defaults + int(timing.vague)))
+    readings = [(_steady_speed_as_setting(calls, scene), defaults) for calls, defaults in readings]
     lit = [calls for calls, _ in readings if [c.tool for c in calls] == ["set_light_phases"]]
     if len(lit) == len(readings) > 1 and len({c[0].args["light"] for c in lit}) == len(lit) and _is_light_request(first) \
             and (_EVERY_LIGHT.search(first) or all(c[0].args["light"] in first for c in lit)):
         return [([c for calls in lit for c in calls], max(d for _, d in readings))]  # every light said: all of them at once
     return readings
+
+
+# A later step said as what to allow or make happen: "and let it change lanes", "then have the car brake".
+_LET = re.compile(r"^\s*(?:let|have|make|get)\s+(?=(?:it|him|her|them|the|that|this)\b)")
+
+
+def _steady_speed_as_setting(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
+    """A story that opens on a steady speed from the start ("drives at 6 m/s and changes to the
+    left lane at 5 s"), with its later steps timed from the start: that speed is the lane
+    behaviour's, set now, as "the ego drives at 6 m/s" alone sets it."""
+    first, rest = calls[0], calls[1:]
+    spec = first.args.get("manoeuvre", {})
+    actor = scene.asset(str(first.args.get("actor")))
+    if first.tool != "add_manoeuvre" or spec.get("kind") != "keep_lane" or "speed" not in spec or first.args.get("at_time") \
+            or not rest or any("at_time" not in c.args for c in rest) or actor is None or not isinstance(actor.behaviour, DriveLane):
+        return calls
+    behaviour = {**actor.behaviour.model_dump(), "speed": spec["speed"]}
+    return [ToolCall(tool="set_behaviour", args={"asset": actor.id, "behaviour": behaviour}), *rest]
 
 
 class _NoActor(PlanningError):
@@ -304,7 +323,7 @@ def _readings(action: str, scene: Scene, doer: AssetInstance | None = None
         verb_at = _first_verb(action)
         subject = _TRAILING_MODAL.sub("", action[:verb_at]).strip()
         verb_at = len(_TRAILING_MODAL.sub("", action[:verb_at]))  # "should suddenly brake": the adverb counts
-        if not subject and doer is not None:
+        if (not subject or subject in ("it", "he", "she", "they")) and doer is not None:  # "... and then it brakes"
             actors, what = [doer], doer.id
         else:
             actors, what = candidates(subject or "the ego", scene, moving_manoeuvre=True)

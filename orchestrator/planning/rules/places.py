@@ -772,7 +772,12 @@ def where_thing(r: Reading, scene: Scene, exclude: list[str]) -> dict[str, Any] 
     ids = [i for i in r.ids if i not in exclude and said.start("thing") <= r.low.find(i.replace("_", " ")) < said.end("thing")]
     kinds = [m.category for m in r.mentions if said.start("thing") <= m.start < said.end("thing")]
     present = ids or ([a.id for a in scene.assets if a.category == kinds[0] and a.id not in exclude] if kinds else [])
-    thing = scene.asset(present[0]) if len(present) == 1 else None
+    if len(present) > 1:  # "move the bench where the tree is", with a dozen trees: never a guess at which
+        from drivetwin.orchestrator.planning.base import PlanningError
+
+        raise PlanningError(f"there are {len(present)} of {said.group('thing')!r} here; say which one, "
+                            f"e.g. 'where {present[0]} is'")
+    thing = scene.asset(present[0]) if present else None
     if thing is None:
         return None
     if said.group("verb") in ("was", "were", "stood") or said.group("verb").startswith("used"):

@@ -219,6 +219,11 @@ _DEFINITE_SUBJECT = re.compile(r"^\s*(?:(?:now|still|and|but)\s+)?(?:the|this|th
 _SAID_ABSENT = re.compile(r"\b(?:missing|gone|absent|lost|nowhere|no longer|not there|isn'?t there|aren'?t there|not here|disappeared|vanished)\b")
 
 
+# A word right after a step's length that is no filler: the way it was to go, said and not read.
+_WORD_AFTER_STEP = re.compile(r"\b\d+(?:\.\d+)?\s*(?:m|metres?|meters?|ft|feet|foot|yards?)\s+(?!(?:please|pls|now|mate|then|thanks|ok|okay|"
+                              r"bro|sir|again|more|too|also|or|ish|away|and|so|but|or so|if|at|from|in|on|of|for|with|by|to|the|a|it)\b)[a-z]{2,}\b")
+
+
 def _spoken_of_as_there(text: str, calls: list[ToolCall], scene: Scene) -> str | None:
     """The category a statement's subject names as already there ("the truck is in a daft spot")
     that the scene has none of and its reading adds: a presupposition, not a wish for one."""
@@ -862,7 +867,8 @@ class RulePlanner:
         # "shift it 2 m kerbside": a way said and not read is never guessed (with none said, as in "shift the bin a
         # little", any way is what was asked)
         respelt = any(g.startswith("spelling ") for g in notes.guesses)  # "5 m aftwards", read as "towards"
-        if WAY_GUESSED in notes.guesses and (unknown or respelt) and (ways := other_ways(calls)):
+        way_unread = _WORD_AFTER_STEP.search(text.lower()) is not None  # "shift the bench 3 metres est"
+        if WAY_GUESSED in notes.guesses and (unknown or respelt or way_unread) and (ways := other_ways(calls)):
             step = TraceStep(level="rules", input=prompt, output=f"{describe(calls)}, but the way to move not read; asking")
             return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
                         question=Question(text="Which way should it move?",

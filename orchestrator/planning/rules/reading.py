@@ -452,7 +452,10 @@ _VERB_NOUNS = ("stop", "plant", "post", "signal", "seat", "cycle", "park", "fenc
 def used_as_verb(low: str, start: int, end: int) -> bool:
     """Whether the catalog word at low[start:end] is a verb here: one that is also a verb ("stop
     the ego", "fence it off", "fence off the tree") before a noun phrase or at the start."""
-    return low[start:end] in _VERB_NOUNS and bool(
+    said = low[start:end]
+    if said.endswith("s") and said[:-1] in _VERB_NOUNS and re.search(r"\b(?:ego|it|he|she|someone|somebody|who|then|[a-z]+_\d+)\s+$", low[:start]):
+        return True  # "the ego cycles round the loop", "then it parks in lot A": what something does
+    return said in _VERB_NOUNS and bool(
         start <= 1 or re.search(r"\b(?:to|must|should|will|would|can|could|may|might|'ll|gonna|has to|have to|had to)\s+$", low[:start])
         or re.match(r"\s+(?:off\s+)?(the|our|it|that|ego|an?|some|\d+|two|three|four|five|six)\b", low[end:])
         # "make the rain stop", "the snow should stop now": a weather word's verb, at the end of the clause
