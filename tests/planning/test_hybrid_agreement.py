@@ -165,3 +165,12 @@ def test_plans_that_do_opposite_things_are_asked_when_the_rules_missed_a_word(co
     # retrieval's reading against the words' mood (a look-up for a command) is no reading to offer
     plan = hybrid(Fixed("rules", add, 0.8), Fixed("retrieval", look, 0.6), Fixed("llm", None)).plan("add an SUV in lot A, real quick", context)
     assert path(plan) == "path: fast" and plan.calls == add
+
+
+def test_a_retrieval_reading_that_does_what_the_words_do_not_ask_is_no_offer(context: PlanContext) -> None:
+    removal = [ToolCall(tool="remove_assets", args={"category": "bench"})]
+    moved = [ToolCall(tool="move_asset", args={"asset": "bench_1", "forward": 2.0})]
+    with pytest.raises(PlanningError, match="rules cannot"):  # "move" read as a removal: the rules' reason is the answer
+        hybrid(Fixed("rules", None), Fixed("retrieval", removal, 0.5), SmallModel("llm", None)).plan("move the bench a bit", context)
+    plan = hybrid(Fixed("rules", None), Fixed("retrieval", moved, 0.5), SmallModel("llm", None)).plan("move the bench a bit", context)
+    assert path(plan) == "path: ask" and plan.question is not None and [r.calls for r in plan.question.readings] == [moved]

@@ -205,9 +205,10 @@ def test_a_time_said_after_the_second_step_is_the_second_steps(campus, registry)
     from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
 
     plan = ScenarioReader().plan("the ego cruises at 7 m/s and slides into the left lane after 5 s", PlanContext(scene=campus, registry=registry))
-    kinds = [(c.args["manoeuvre"]["kind"], c.args.get("at_time")) for c in plan.calls]
-    assert kinds == [("keep_lane", None), ("lane_change", 5.0)]
-    assert plan.calls[0].args["manoeuvre"]["speed"] == 7.0
+    # the steady speed it opens on is the lane behaviour's, set now (see test_absent_subjects_and_unread_ways.py)
+    assert [c.tool for c in plan.calls] == ["set_behaviour", "add_manoeuvre"]
+    assert plan.calls[0].args["behaviour"] == {"kind": "drive_lane", "lane": "main_eastbound", "speed": 7.0}
+    assert plan.calls[1].args["manoeuvre"]["kind"] == "lane_change" and plan.calls[1].args["at_time"] == 5.0
 
 
 def test_banished_or_ripped_out_is_removed_and_a_bright_colour_is_no_daylight(campus, registry):
