@@ -124,7 +124,7 @@ from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
 from drivetwin.tools.search import most_of
 from drivetwin.worlds.catalog import LAYOUT_KIT_TAGS, catalog, placeable_categories, shared_heads
-from drivetwin.worlds.scene import AssetInstance, Scene
+from drivetwin.worlds.scene import WEATHER_KINDS, AssetInstance, Scene
 from drivetwin.worlds.surface import lane_at, nearest_on_polyline, point_in_polygon
 
 Action = Literal["apply", "ask", "refuse"]
@@ -166,6 +166,12 @@ _KEPT_OFF = re.compile(r"\s+(?:[a-z]+\s+)?(?:off|away|out|from|back|clear)\b")
 _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
 # A question about the scene's settings ("time + weather?", "what's the weather doing"): the
 # environment is what it must look up.
+# Weather this world cannot make, that a plan setting rain or fog would stand in for unasked.
+_WEATHER_NOT_HERE = re.compile(r"\b(?:hail\w*|dust ?storms?|sand ?storms?|dust|sand|tornado\w*|twisters?|volcanic ash|ash ?clouds?)\b")
+# Weather said to be moved to one place: "nudge that rain cloud over towards the east gate".
+_WEATHER_PUT = re.compile(r"\b(?:move|moving|nudge|shift|push|drag|put|place|steer|send|blow)\w*\s+(?:the\s+|that\s+|this\s+|some\s+)?"
+                          r"(?:rain ?|storm ?|snow ?)?(?:clouds?|fog ?bank|storm|rain|fog|snow)\s+(?:\w+\s+){0,2}?(?:towards?|to|over|onto|into|above)\s+"
+                          r"(?!(?:the\s+)?(?:scene|campus|world|map|whole|everything|everywhere|us|here|all)\b)")
 _SETTING_ASKED = re.compile(r"\b(?:weather|what time|the time|time of day|lighting|exposure)\b")
 # The units a length on the campus is said in (a distance in km is read as a speed's unit elsewhere).
 _LENGTH_UNITS = r"m|metres?|meters?|ft|feet|foot|yards?"
@@ -348,6 +354,11 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     if from_ego and two_ends and (ends_not_ego or not re.search(r"\b(?:ego|here|i|me|my|we|us|our)\b", request.masked)):
         out.append("the plan measures from the ego, which your words do not name")  # "how far is the hosptial from the gate"
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
+    if any(c.tool == "set_weather" for c in effect.calls):
+        if (other := _WEATHER_NOT_HERE.search(request.low)) is not None:  # "make a hail storm" is no rain
+            out.append(f"this world has no {other.group(0)}; its weather is {', '.join(WEATHER_KINDS)}")
+        if _WEATHER_PUT.search(request.low):  # "nudge that rain cloud towards the east gate"
+            out.append("the weather covers the whole scene; it cannot be moved to one place")
     if any(c.tool in SCENARIO_TOOLS for c in effect.calls):
         out += _lane_change_left_out(request.low, list(effect.calls))
     if (both := _added_then_removed(effect)):  # nothing comes of it

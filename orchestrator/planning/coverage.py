@@ -42,7 +42,7 @@ from drivetwin.orchestrator.planning.rules.edits import TIE_M
 from drivetwin.orchestrator.planning.rules.environment import TIME_NOT_SET
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
 from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, road_said, side_of
-from drivetwin.orchestrator.planning.rules.reading import numbered_absent, used_as_verb
+from drivetwin.orchestrator.planning.rules.reading import numbered_absent, numbered_picks, used_as_verb
 from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID, edits, english_words, is_known, vocabulary
 from drivetwin.tools.appearance import TIME_PRESETS
 from drivetwin.tools.base import ToolCall
@@ -292,7 +292,7 @@ def missing_categories(categories: Iterable[str], scope: Scope, scene: Scene) ->
 
 
 # A pronoun pointing back at things just named, as the object of what is to be done ("... park them").
-_POINTED_BACK = re.compile(r"\b(?:them|those|these)\b(?!\s+(?:ones\b|[a-z]+s\b))")
+_POINTED_BACK = re.compile(r"\b(?:them|those|these|they)\b(?!\s+(?:ones\b|[a-z]+s\b))")
 
 
 def _asks_for_new(masked: str) -> bool:
@@ -344,6 +344,9 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
         # bare as the clause's topic, with no word for adding, of which the scene holds one, is that one
         bare = (not m.plural and not asks_to_add and scene.count(m.category) == 1
                 and _BARE_TOPIC.search(m.before) is not None)
+        # "Car in front make slower na": a thing named bare as the topic, then a verb of changing it, is one there
+        bare = bare or (not m.plural and not asks_to_add and scene.count(m.category) > 1 and _BARE_TOPIC.search(m.before) is not None
+                        and any(w in _CHANGES_EXISTING for w in m.after.split()[:4]))
         # "make SUV colour blue", "move hydrant to other side of road": with no article at all, as some
         # speakers say it, the one thing of its kind the scene holds is as likely as a new one
         bare = bare or (not m.plural and scene.count(m.category) == 1 and _NEW.search(masked) is None
@@ -354,7 +357,8 @@ def definite_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
         indefinite = m.last_words(1)[-1:] in (["a"], ["an"], ["some"], ["any"])
         # "cars in lot B: park them nose to tail": things said bare, then pointed back at, are those there
         said_back = m.plural and not indefinite and _POINTED_BACK.search(m.after) is not None
-        pointed_back = said_back and not asks_to_add
+        # ("put bollards in a row, they look messy": what they look like now is said of those there)
+        pointed_back = said_back and (not asks_to_add or re.search(r"\bthey(?:'re| are| look| seem| were)\b", m.after) is not None)
         if (not (bare or pointed_back or every or (any(w in _DEFINITE for w in m.last_words(2)) and not indefinite)) or not scene.count(m.category)
                 or (m.category in arranged and not (every or said_back))):  # "the cars in lot B, line them up": those there
             continue
@@ -1103,6 +1107,7 @@ def _picked_out(said: str, categories: set[str], scene: Scene, main: str = "") -
     if ph.has_any(head, ph.EGO_WORDS) or re.search(r"\bego\b", head):
         return {"ego"}
     ids = {a.id for a in scene.all_assets() if re.search(rf"\b{re.escape(a.id)}\b", head)}  # not the place's
+    ids |= {i for i, _, _ in numbered_picks(scene, head)}  # "except tree 3"
     if ids:
         return ids
     mentions = ph.find_categories(head)

@@ -184,7 +184,7 @@ _LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s
 # cars?", "could the bus go ..."): a command even when it ends with a question mark.
 # Commands a hedge may come before or after ("maybe slow it down a bit?", "angle it a bit, maybe?").
 _HEDGED_VERBS = ("add|put|drop|place|move|make|set|remove|take|get|give|turn|paint|park|bring|have|let'?s|slow|speed|angle|nudge|shift"
-                 "|rotate|lose|ditch|swap|stop|send|clear|delete")
+                 "|rotate|lose|ditch|swap|stop|send|clear|delete|thin|tidy|space|spread|line|fill|trim|cut|replace|change|brighten|darken")
 _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|would|will|might) (?:you|we|i)\b|^\s*please\b(?!\s*,?\s*(?:where|what|which|how|who|is there|are there)\b)"
                      # "could there be a couple of people at the stop?": a wish for what should be there
                      r"|(?:^|[.!;,\-\u2013\u2014]\s*)(?:can|could) (?:there|someone|somebody) be\b"
@@ -196,7 +196,7 @@ _POLITE = re.compile(r"(?:^|[,.;:!-]\s*|\b(?:and|so|but|then)\s+)(?:can|could|wo
                      # "maybe drop a car by the library?": a suggestion, hedged
                      # (any sentence of it: "Let the ego race around. Maybe slow it down a bit?"), and a command hedged
                      # after it ("angle it a bit, maybe?") or put as a dare ("would it kill you to add a bin?")
-                     rf"|(?:^|[.!;?]\s*)(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:{_HEDGED_VERBS})\b"
+                     rf"|(?:^|[.!;?,\-\u2013\u2014]\s*)(?:maybe|perhaps|how about|what about|why not)\s+(?:just\s+)?(?:{_HEDGED_VERBS})\b"
                      rf"|(?:^|[.!;?]\s*)(?:just\s+)?(?:{_HEDGED_VERBS})\b[^.!?]*,\s*(?:maybe|perhaps|possibly)\s*\?"
                      r"|\bwould it (?:kill|hurt) (?:you|anyone|ya) to\b"
                      # "could the second car go in lot A?": a wish for where a thing should be
@@ -341,7 +341,8 @@ _CONTRAST = re.compile(
     rf"(?:,\s*(?:but\s+|and\s+)?|\s+but\s+)(?:not|never)\s+(?=(?:(?:way|right|all the way|over|out|down|up|somewhere)\s+){{0,2}}"
     rf"(?:{_DETERMINER}|in|at|on|by|near|next|beside|outside)\b"
     r"|(?:\d+(?:\.\d+)?|a few|several|so|that|too)\s*(?:m|metres?|meters?|feet|ft|far|away)\b)"
-    rf"|\s+(?:except(?:\s+for)?|other\s+than|apart\s+from|excluding|save\s+for)\s+(?={_DETERMINER})"
+    # (or one named by its number: "all the trees except tree 3")
+    rf"|\s+(?:except(?:\s+for)?|other\s+than|apart\s+from|excluding|save\s+for)\s+(?={_DETERMINER}|[a-z]+(?:\s[a-z]+)?\s(?:number\s|no\.?\s|#)?\d+\b)"
     # "remove the cars from lot B, but keep the SUV": what is kept is excepted
     rf"|,?\s+but\s+(?:keep|leave|spare)\s+(?={_DETERMINER})"
     # "rm: the lights - keep stop sign", "...; keep the SUV": a terse keep after a dash or a semicolon
@@ -576,6 +577,10 @@ _SUGGESTED = re.compile(r"^(?:(?:maybe|perhaps|possibly|how about|if there'?s (?
                         r"|(?:a|an|one|two|three|four|five|\d+) (?!(?:question|quick question|thing)\b)(?=[a-z]))\b")
 
 
+# A hedge that opens a clause after what was said of the scene, and the suggestion after it.
+_HEDGE_AFTER = re.compile(r"(?:[,;:\u2013\u2014]|\s-)\s*((?:maybe|perhaps|possibly|how about)\b.*)$")
+
+
 # A request to take back the last change or bring it back, said in words rather than as the
 # `undo` command ("oops, undo that", "revert the last edit", "scratch that", "redo please"): the
 # whole request, fillers aside. A request that names what to change back ("undo the red paint")
@@ -738,7 +743,8 @@ def asks(low: str) -> bool:
         return True  # "Current conditions, please: weather and clock.": no change and no value, so what they are
     if TAG_QUESTION.search(low) and not commands(low):
         return True  # "the SUV is parked, yeah?": whether what was said is so
-    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip())
+    hedged = _HEDGE_AFTER.search(low)  # "the bus stop looks lonely - maybe a couple of folks waiting there?"
+    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or (hedged is not None and not _QUESTION_START.search(low) and _SUGGESTED.match(low[hedged.start(1):])) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip())
                   or _setting_offered(low) or _HAVE_ONE.match(low) is not None or _thing_asked(low))
     info = _INFO.search(_AMOUNT_CHANGED.sub(" ", low))  # "double the number of benches" asks for no count
     return bool(info or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (

@@ -390,7 +390,7 @@ _HALF = re.compile(r"\bhalf (?:of )?(?:the|those|these|them|all(?: the)?|our|its
 _THINNED = re.compile(r"\bthin(?:s|ned|ning)? (?:\w+ ){0,2}out\b")
 # Fewer by half with no things named after the verb ("reduce to half", "cut them down to half", "halve them"):
 # spelling's _HALVE and _IN_HALF rewrite the forms that name them ("halve the cones") as "remove half of".
-_HALVED = re.compile(r"\b(?:reduce|cut|bring|trim)\w*\s+(?:(?:it|them|those|these|that)\s+)?(?:down\s+)?(?:to|by)\s+(?:a\s+|one\s+)?half\b"
+_HALVED = re.compile(r"\b(?:reduce|cut|bring|trim)\w*\s+(?:(?:it|them|those|these|that)\s+)?(?:down\s+)?(?:to|by)\s+(?:about\s+|roughly\s+|around\s+|nearly\s+)?(?:a\s+|one\s+)?half\b"
                      r"|\bhalve[ds]?\s+(?:it|them|those|these|that)\b")
 
 
@@ -858,9 +858,12 @@ _WAITS = re.compile(r"\b(?:wait|waits|waiting|stand|stands|standing|queue|queues
 _UP = re.compile(r"\b(?:move|moves|moved|inch|edge|creep|roll|bring|shift)\s+(?:\S+\s+){0,3}up\b(?!\s+(?:to|the|north))")
 
 
-_TOWARD = re.compile(r"\b(?:towards?|in the direction of|(?:closer|nearer)(?: to)?|(?P<away>(?:further|farther|more|well|back)(?: away)? from|away from))\b")
+TOWARD = re.compile(r"\b(?:towards?|in the direction of|(?:closer|nearer)(?: to)?|(?P<away>(?:further|farther|more|well|back)(?: away)? from|away from))\b")
 
 
+# A thing moved "well away" or "far from" another, no distance said, goes this far.
+FAR_STEP_M = 10.0
+_WELL_AWAY = re.compile(r"\b(?:well|far|way|right|a long way|a good (?:way|distance)|much further|much farther) (?:away )?from\b")
 # A thing moved "a bit closer" to another, no distance said, stops at least this far from it.
 TOWARD_CLEARANCE_M = 1.5
 # A thing moved closer to the road stops this far short of its edge.
@@ -873,7 +876,7 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None, vague
     """East and north for moving `ids` `shift` metres toward the place, road or ego named after
     "toward" or "closer to" (away from it after "further from" or "away from"), from the middle of
     where they stand; None when the words say no such move."""
-    said = _TOWARD.search(r.low)
+    said = TOWARD.search(r.low)
     things = [a for i in ids if (a := scene.asset(i)) is not None]
     if said is None or shift is None or not things or md.compass_direction(r.masked) is not None:
         return None  # "one metre north, away from the road": the compass way says it
@@ -908,6 +911,8 @@ def _toward(r: Reading, scene: Scene, ids: list[str], shift: float | None, vague
     if vague and said.group(0).startswith(("closer", "nearer")) and not r.has(("nudge", "budge", "inch", "scoot")):
         # "a bit closer to the bench": a step people see, half the way there at most
         shift = max(shift, min(gap / 2, gap - TOWARD_CLEARANCE_M))
+    if vague and said.group("away") and _WELL_AWAY.search(r.low):  # "somewhere well away from the junction": a long way
+        shift = max(shift, FAR_STEP_M)
     step = -shift if said.group("away") else shift
     return {"east": round(step * (goal[0] - x) / gap, 2), "north": round(step * (goal[1] - y) / gap, 2)}
 
@@ -1078,7 +1083,7 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         notes.guess("how far to move")  # "the SUV should pull forward a few metres"
         shift = DEFAULT_STEP_M
     moved: dict[str, Any] = {"asset": asset} if len(ids) == 1 else {"assets": ids}
-    if shift is None and (away := _TOWARD.search(r.low)) is not None and (away.group("away") or _ROAD_AFTER.match(r.low, away.end())) \
+    if shift is None and (away := TOWARD.search(r.low)) is not None and (away.group("away") or _ROAD_AFTER.match(r.low, away.end())) \
             and md.compass_direction(r.masked) is None:
         notes.guess("how far to move it")  # "push the bin further from the bus stop", "closer to the road": a step, never onto it
         shift = DEFAULT_STEP_M

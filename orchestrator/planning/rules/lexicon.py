@@ -44,7 +44,7 @@ SIDE_WORDS = (("forward", "forward", 1), ("forwards", "forward", 1), ("ahead", "
               ("right", "left", -1), ("aside", "left", 1), ("over", "left", 1))
 WEATHER_WORDS: dict[str, tuple[str, ...]] = {
     "rain": ("rain", "raining", "rainy", "drizzle", "drizzling", "downpour", "storm", "stormy", "wet",
-             "showers", "pouring", "pour", "pours", "wipers", "wiper", "umbrella", "puddles", "precipitation", "soaked", "drenched", "sodden"),
+             "showers", "pouring", "pour", "pours", "thunderstorm", "rainstorm", "monsoon", "wipers", "wiper", "umbrella", "puddles", "precipitation", "soaked", "drenched", "sodden"),
     "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy", "visibility", "murky", "smog"),
     "snow": ("snow", "snowy", "snowing", "snowstorm", "blizzard", "snowfall", "wintry", "winter", "icy", "sleet"),
     "cloudy": ("cloudy", "overcast", "clouds", "grey sky", "gloomy"),
@@ -54,7 +54,7 @@ WEATHER_WORDS: dict[str, tuple[str, ...]] = {
               "better weather", "good weather", "dry", "blue sky", "stops raining", "lovely day", "nice day", "beautiful day"),
 }
 HEAVY = ("heavy", "heavily", "hard", "dense", "thick", "torrential", "strong", "intense", "lot of", "a lot",
-         "blizzard", "downpour", "deluge", "cloudburst", "pouring", "storm", "very", "really", "poor", "bad", "terrible",
+         "blizzard", "downpour", "deluge", "cloudburst", "pouring", "pour", "monsoon", "storm", "very", "really", "poor", "bad", "terrible",
          "barely", "low visibility", "almost nothing", "next to nothing", "near zero", "like crazy", "like mad", "so much")
 LIGHT = ("light", "lightly", "slight", "little", "bit of", "drizzle", "thin", "some", "gentle", "gently", "softly")
 # (words, preset) in order: the first that matches wins, so "midnight" beats "night".

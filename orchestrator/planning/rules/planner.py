@@ -50,6 +50,7 @@ from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.conditions import condition, topic_first
 from drivetwin.orchestrator.planning.rules.edits import (
     FINAL_COUNT,
+    TOWARD,
     WAY_GUESSED,
     behaviour_kind,
     behaviour_spec,
@@ -867,7 +868,8 @@ class RulePlanner:
         # "shift it 2 m kerbside": a way said and not read is never guessed (with none said, as in "shift the bin a
         # little", any way is what was asked)
         respelt = any(g.startswith("spelling ") for g in notes.guesses)  # "5 m aftwards", read as "towards"
-        way_unread = _WORD_AFTER_STEP.search(text.lower()) is not None  # "shift the bench 3 metres est"
+        # "shift the bench 3 metres est", "shift it well away from it" (the junction said in a clause before)
+        way_unread = _WORD_AFTER_STEP.search(text.lower()) is not None or TOWARD.search(text.lower()) is not None
         if WAY_GUESSED in notes.guesses and (unknown or respelt or way_unread) and (ways := other_ways(calls)):
             step = TraceStep(level="rules", input=prompt, output=f"{describe(calls)}, but the way to move not read; asking")
             return Plan(calls=[], planner=self.name, confidence=0.0, prompt_version=PROMPT_VERSION, trace=[step],
@@ -1482,7 +1484,7 @@ def _unknown_verb(r: Reading, scene: Scene) -> str | None:
     vocab = vocabulary(scene)
     end = r.mentions[0].start if r.mentions else len(r.low)
     words = [w for w in re.findall(r"[a-z\u00c0-\u024f'-]+|\d+", r.low[:end]) if w not in _OPENERS]
-    if not words or not re.search(r"\b(?:the|el|la|los|las|all|every|those|these|that|this|on|about|with|of)\s+(?:[\w-]+\s+){0,2}$",
+    if not words or not re.search(r"\b(?:the|el|la|los|las|le|les|il|der|die|das|di|da|de|dat|dis|all|every|those|these|that|this|on|about|with|of)\s+(?:[\w-]+\s+){0,2}$",
                                   r.low[:end]):
         return None  # "gimme a cone", "chuck two benches there": a new thing may be what is asked for
     return next((w for w in words if not w.isdigit() and not is_known(w.strip("'-"), vocab)), None)

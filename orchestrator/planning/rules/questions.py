@@ -138,6 +138,10 @@ _SETTING = re.compile(r"\b(?:weather|time of day|what time|the time|the hour|how
                       r"|lights? (?:on|off)|lit|environment|conditions|(?:it|things) like out(?: there| here|side)?)\b")
 
 
+# The clock asked with any question word, however spelt: "wat time is it", "wah time it is inna di scene".
+_CLOCK_ASKED = re.compile(r"\W*[a-z']+\s+time\s+(?:is it|it is|it be|now)\b")
+
+
 # One thing's distance to either of two ("is the SUV closer to the library or the union?") or two
 # things' distance to one ("which is nearer the bench, the bin or the tree?").
 _EITHER_OF_TWO = re.compile(r"\b(?:closer|nearer|further|farther)\s+(?:to\s+|from\s+)?(?P<a>[^,?.!]+?)\s+or\s+(?P<b>[^,?.!]+)")
@@ -261,7 +265,7 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         raise PlanningError(f"there is no {asked_about.group(1)!r} in this world; things here are such as "
                             f"{', '.join(sorted({a.category for a in scene.assets})[:8])}")
     if _names_nothing(r) and ((_ASKS_HOW_IT_IS.match(low) and (_SETTING.search(low) or environment(r, scene.environment)))
-                              or _SETTING_ALONE.match(low)):
+                              or _SETTING_ALONE.match(low) or _CLOCK_ASKED.match(low)):
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "is it raining?", "what's the weather like"
     if _SETTING_EITHER.search(low) and not r.mentions:  # "am I doing this run in the dark, or is it still daytime?"
         return Part(ToolCall(tool="describe_environment", args={}), None)

@@ -455,7 +455,7 @@ _EVERY_OTHER_KEPT = re.compile(r"\b(?:leave|keep)\s+(?:just\s+|only\s+)?every (?
 _EVERY_OTHER = re.compile(r"\b(?:remove|delete|take away|take out|get rid of|lose|drop)\s+every (?:other|second|2nd) ([a-z][a-z ]{1,20}?)"
                           r"(?=\s*(?:[,.;!?]|$|\s(?:on|in|at|by|near|along|from|and)\b))", re.IGNORECASE)
 _IN_HALF = re.compile(r"\b(?:cut|reduce|drop|bring down)\s+(?:the (?:number|amount|count) of\s+)?((?:[\w'-]+\s+){1,6}?)"
-                      r"(?:in half|by half|by (?:50|fifty) ?(?:%|per ?cent))(?!\w)", re.IGNORECASE)
+                      r"(?:in half|by (?:about |roughly |around |nearly |approximately )?(?:half|(?:50|fifty) ?(?:%|per ?cent)))(?!\w)", re.IGNORECASE)
 
 # "of" ending a clause after what switches on and off is "off" mistyped: "streetlights of.", "turn them of".
 _OF_FOR_OFF = re.compile(r"\b((?:street ?|head ?)?(?:lights?|lamps?)|it|them|everything)\s+of\b(?=\s*(?:[.!?;,]|$|please\b|thanks?\b|over\b))",
@@ -1326,12 +1326,24 @@ _ID_PLACED = re.compile(r"(\b[A-Za-z]+(?:_[A-Za-z]+)*_\d+),\s+(?:just |right |di
                         r"(?:[- ]?(?:east|west))?(?:ern)? of (?:the )?[A-Za-z][\w ]*?(?=\s*(?:[,.;!?]|$))", re.IGNORECASE)
 
 
+# Two words joined by a hyphen ("the bus-stop", "a trash-bin"): a name of two words when a place or a thing has it.
+_HYPHENED = re.compile(r"\b([A-Za-z]+)-([A-Za-z]+)\b")
+
+
+def _two_word_name(said: re.Match[str], scene: Scene) -> bool:
+    pair = f" {said.group(1).lower()} {said.group(2).lower()} "
+    names = [n for lm in scene.landmarks for n in lm.names()] + [n for e in catalog().values() for n in (e.name, *e.synonyms)]
+    return any(pair in f" {n.lower().replace('_', ' ')} " for n in names)
+
+
 def repair(text: str, scene: Scene) -> Repaired:
     """`text` with misspelt and run-together words replaced by the known words they resemble."""
     vocab = vocabulary(scene)
     text = _LIST_MARKER.sub("", _MARKDOWN.sub("", text))
     text = without_left_as_it_is(text)
     text = _MUCH_ADJECTIVE.sub(r"\1 ", text)
+    text = re.sub(r"\b(?:every|each) (?:single )?one of\b", "all of", text, flags=re.IGNORECASE)  # "throw every one of them out": all
+    text = _HYPHENED.sub(lambda m: m.group(1) + " " + m.group(2) if _two_word_name(m, scene) else m.group(0), text)
     text = _SAID_TOGETHER_RE.sub(lambda m: _SAID_TOGETHER[m.group(0).lower()], text)
     text = re.sub(r"(?<![a-z])['\u2019]em\b", "them", text, flags=re.IGNORECASE)  # "eight of 'em"
     text = _PIECES_BEFORE.sub(r"\1 ", _PIECES_AFTER.sub(_counted_first, text))
