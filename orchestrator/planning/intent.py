@@ -166,6 +166,8 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    # "for my notes I need the bench nearest the ego", "the log wants the car closest to it": which one is
                    r"|(?<!n't )(?<!not )(?<!longer )\b(?:need|needs|want|wants|require|requires|after)\s+the\s+(?:[a-z_]+\s+){1,3}?(?:nearest|closest|furthest|farthest)\b"
                    r"(?![^.;!?]*\b(?:moved|put|placed|brought|taken|to be|painted|gone|removed)\b)"
+                   # "Distance check: from us to the north crosswalk, in metres": the figure asked, in its unit
+                   r"|^\s*(?:[a-z ]{0,25}:\s*)?from\b[^.?!;]*\bto\b[^.?!;]*,?\s*in (?:metres|meters|feet|m|km|yards)\s*[.?!]*\s*$"
                    r"|\bsee (?:wh?ether|if) (?!(?:you|u|we|i)\b)|\bremind (?:me|us) (?:again )?(?:what|which|where|how|wh?ether|if)\b"
                    # doubt about what is so: "I was wondering if there's a bin", "can't remember whether I parked it
                    # in lot A", "not sure if the hydrant is still there" (wondering whether we could is a request)
@@ -645,7 +647,10 @@ def taken_back(text: str) -> tuple[str, str]:
 # Words for a kind of place, not a thing: "the nearest landmark", "which buildings".
 PLACE_KIND = re.compile(r"\b(?:landmarks?|places?|buildings?|entrances?|locations?|spots?)\b")
 ASKED_ABOUT = re.compile(r"(?:\b(?:how many|where (?:is|are|do|does|did|can|could|will|would|should)(?: the| a| an| my| our| any)?"
-                          r"|(?:is|are) there(?: any| an?| some)?|nearest|closest)|^\s*any) ([a-z]{3,})\b")
+                          r"|(?:is|are) there(?: any| an?| some)?|nearest|closest)|^\s*any) "
+                          # "how many kilograms is it?": a measure asked, no thing
+                          r"(?!(?:kilo\w*|tonnes?|tons?|pounds?|grams?|metres?|meters?|feet|seconds?|minutes?|hours?|degrees?|percent|times)\b)"
+                          r"([a-z]{3,})\b")
 # The words right before the kind a question asks for by "which" ("my students wait at the stop: which bench is
 # closest to them?": a bench, the students only its setting).
 WHICH_KIND = re.compile(r"\b(?:which|what)\s+(?:[a-z]+\s+)?$")

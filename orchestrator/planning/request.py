@@ -220,7 +220,8 @@ _YEAR = re.compile(r"(?:19|20)\d{2}\b(?!\s*(?:m\b|metres?|meters?|km|cones?|s\b|
 _PAST = re.compile(r"\b(?:came|was|were|had|did|happened|used to|went|fell|back)\b")
 # Words a number after names rather than counts: "lot 3", "condition 11", "take 2", "step 4".
 _LABELS = frozenset(["lot", "no", "condition", "case", "step", "scenario", "test", "run", "take", "item", "row",
-                     "shot", "scene", "variant", "trial", "phase", "version", "iteration"])
+                     "shot", "scene", "variant", "trial", "phase", "version", "iteration", "cue", "act", "episode",
+                     "chapter", "section", "part", "task", "page", "camera", "cam"])
 
 
 __all__ = ["Request", "read_request"]

@@ -244,7 +244,7 @@ def _point_of(r: Reading, scene: Scene, memory: Memory) -> tuple[float, float] |
 
 # A thing picked out by what it stands by, said right after it: "the lamp post (that's) (right) by the bus stop".
 _BY_AFTER = re.compile(r"\s*(?:(?:that'?s|that is|which is|standing|sitting|right|just|directly)\s+)*"
-                       r"(?:by|near|next to|beside|close to|outside|(?P<over>opposite|across (?:the )?(?:road|street) from))\s+")
+                       r"(?:by|near|next to|beside|close to|outside|from|(?P<over>opposite|across (?:the )?(?:road|street) from))\s+")
 # A thing picked out by the way it stands from another: "the sedan (just) east of the SUV", "the car to the west of it".
 _WAY_OF_AFTER = re.compile(r"\s*(?:(?:that'?s|which is|just|right|directly|to the)\s+)*(north|south|east|west)(?:ern)?\s+of\s+")
 _COMPASS = {"north": (0.0, 1.0), "south": (0.0, -1.0), "east": (1.0, 0.0), "west": (-1.0, 0.0)}

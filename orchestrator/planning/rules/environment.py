@@ -227,7 +227,7 @@ BRIGHTER_FACTOR, MAX_EXPOSURE, MIN_EXPOSURE = 1.5, 4.0, 0.25
 _LEVEL = r"(?:the )?(?:exposure|brightness)"
 _UP = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) up|(?:raise|increase|turn up|bring up|push up) {_LEVEL}"
 _DOWN = rf"{_LEVEL} (?:to )?(?:come|go|be turned|be brought|turned|brought) down|(?:lower|reduce|turn down|bring down|pull down) {_LEVEL}"
-_EXPOSURE_TO = re.compile(r"\b(?:exposure|brightness)\s+(?:to|at|of|=|:)?\s*(\d+(?:\.\d+)?)(?!\s*(?:%|percent|m\b))")
+_EXPOSURE_TO = re.compile(r"\b(?:exposure|brightness)\s+(?:(?:down|up|back|lowered|raised|dropped|reduced)\s+)?(?:to|at|of|=|:)?\s*(\d+(?:\.\d+)?)(?!\s*(?:%|percent|m\b))")
 # ("so dark, cannot see anything" complains of it; "make it so dark that ..." asks for it)
 _BRIGHTER = re.compile(rf"\b(brighter|lighter|more exposure|too dark|(?<!make it )(?<!look )(?<!be )so dark(?! (?:that|you|we|it|nobody|no one|as)\b)"
                        rf"|overexpose|brighten|{_UP})\b")

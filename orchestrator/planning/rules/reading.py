@@ -642,7 +642,7 @@ def _kinds_numbered(low: str) -> list[tuple[ph.Mention, list[tuple[str, re.Match
 
 def _counts_what_follows(low: str, end: int) -> bool:
     """Whether the number before `end` counts the thing named after it ("next to tree 3 cones")."""
-    counted = ph.find_categories(low[end : end + 24].split(",")[0])
+    counted = ph.find_categories(re.split(r"[,.;:!?]", low[end : end + 24])[0])  # never past the clause: "car 1. then the suv"
     return bool(counted) and not low[end:].lstrip().startswith(("and", "or", "to", "in", "at", "on", "by"))
 
 

@@ -300,6 +300,8 @@ def is_known(word: str, vocab: frozenset[str]) -> bool:
                 continue  # "raning" is no "ran" with an ending (English says "running"): a slip for "raining"
             if suffix == "s" and stem.endswith("s"):
                 continue  # "buss" is no plural of "bus" ("buses" is)
+            if suffix == "ly" and stem + "y" in vocab and english_words() and not is_english(w):
+                continue  # "cloudly": "cloudy" with a letter slipped in, no adverb of "cloud"
             doubled = stem[-1:] == stem[-2:-1] and stem[-1:] not in "wxy"  # "running", never "snowwing"
             if suffix == "ing" and stem.endswith("e") and not stem.endswith("ee"):
                 continue  # "driveing": English drops the e ("driving"), so a slip to repair
@@ -1342,6 +1344,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _LIST_MARKER.sub("", _MARKDOWN.sub("", text))
     text = without_left_as_it_is(text)
     text = _MUCH_ADJECTIVE.sub(r"\1 ", text)
+    text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?=\S)", ", ", text)  # "street lights on... go": a pause, a clause's end
     text = re.sub(r"\b(?:every|each) (?:single )?one of\b", "all of", text, flags=re.IGNORECASE)  # "throw every one of them out": all
     text = _HYPHENED.sub(lambda m: m.group(1) + " " + m.group(2) if _two_word_name(m, scene) else m.group(0), text)
     text = _SAID_TOGETHER_RE.sub(lambda m: _SAID_TOGETHER[m.group(0).lower()], text)
