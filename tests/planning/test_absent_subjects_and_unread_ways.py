@@ -146,3 +146,30 @@ def test_things_said_bare_then_said_of_as_they_are_are_those_there(campus, regis
     count = cars.scene.count("passenger_car")
     cars.submit("Car in front make slower na.")
     assert cars.scene.count("passenger_car") == count
+
+
+def test_steps_numbered_and_cues_are_labels_and_an_ellipsis_is_a_pause(campus, registry):
+    session = ruled(campus, registry, "Step 1: remove passenger car 1. Step 2: remove the SUV.")
+    assert session.scene.asset("passenger_car_1") is None and session.scene.asset("passenger_car_2") is not None
+    assert session.scene.count("suv") == campus.count("suv") - 1
+    lit = ruled(campus, registry, "LX cue 12: street lights on... go.")
+    assert lit.scene.environment.lighting.street_lights == "on" and lit.scene.count("street_light") == campus.count("street_light")
+
+
+def test_exposure_down_to_a_value_and_a_slipped_weather_word(campus, registry):
+    assert ruled(campus, registry, "Exposure down to 0.6, it's too brigth.").scene.environment.lighting.exposure == 0.6
+    assert ruled(campus, registry, "Make it cloudly please").scene.environment.weather.kind == "cloudy"
+
+
+def test_a_measure_asked_is_no_thing_and_from_a_to_b_in_metres_is_a_distance(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("how many kilograms does the SUV weigh?")
+    assert report.ok and "2100 kg" in (report.answer or "")
+    report = Session(campus, RulePlanner(), registry).submit("from the bus stop to the fountain, in metres")
+    assert report.ok and report.plan is not None and [c.tool for c in report.plan.calls] == ["measure_distance"]
+
+
+def test_a_thing_moved_from_one_place_to_another_goes_to_the_second(campus, registry):
+    bench = ruled(campus, registry, "move the bench from the bus stop to the fountain").scene.asset("bench_1")
+    fountain = campus.landmark("fountain")
+    assert bench is not None and fountain is not None
+    assert math.dist((bench.pose.x, bench.pose.y), fountain.position) < 10

@@ -69,7 +69,8 @@ _DISTANCE = re.compile(rf"{_JOURNEY.pattern}|"
                        r"\b(?:how far|distance|measure (?:from|between)|far apart|far away|far off|far from|gap between|"
                        rf"{_WAY}|"  # the distance says the way too
                        r"stone'?s throw (?:from|to|of)|(?:a |long |short )?walk (?:from|to)|how many (?:metres|"
-                       r"meters|feet|yards) (?:from|to|between|apart))\b|\bfar\s*\??\s*$")
+                       r"meters|feet|yards) (?:from|to|between|apart))\b|\bfar\s*\??\s*$"
+                       r"|\bfrom\b.*\bto\b.*\bin (?:metres|meters|feet|yards)\W*$")  # "from us to the crosswalk, in metres"
 _SUPERLATIVE = re.compile(r"\b(?:nearest|closest|furthest|farthest|most near|most close|nearer|closer)\b")
 _ENDS = re.compile(r"\b(?:from|to|and|between|apart)\b")
 _ASKER_ALONE = re.compile(r"^\W*(?:me|us|i|we|here)\W*$")
