@@ -78,7 +78,8 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
                    r"|\bjaywalk\w*"),
     # "drives at 6 m/s", "ego speed 6 m/s": a steady speed, a step of a story when another step follows
     ("keep_lane", r"\b(?:keep\w* (?:its|their|the) lane|driv\w* on|cruis\w*)\b"
-                  r"|\b(?:driv\w*|go(?:es)?|travel\w*|mov(?:e|es)|roll\w*) (?:along |steadily |on )?at (?=\d)|\bspeed (?:of |at |to |is )?(?=\d)"),
+                  r"|\b(?:driv\w*|go(?:es)?|travel\w*|mov(?:e|es)|roll\w*) (?:along |steadily |on )?at (?=\d)|\bspeed (?:of |at |to |is )?(?=\d)"
+                  r"|\b\d+(?:\.\d+)? ?(?:m/s|km/h|kph|mph)(?=\s*(?:,|and\b|then\b|after that\b|$))"),
 )
 _COMPILED = tuple((kind, re.compile(words)) for kind, words in _MANOEUVRES)
 # A light alone is a traffic light when pointed at ("the light turns red"); "light rain", "light stuff" are not.

@@ -79,6 +79,8 @@ def normalised(prompt: str, scene: Scene) -> str:
     low = re.sub(r"\b(" + "|".join(_NUMBER_WORDS) + r")\b(?=\s*(?:" + _UNIT[3:-1] + r"|,|$| and| " + _LIGHT_STATE + r"))",
                  lambda m: str(_NUMBER_WORDS[m.group(1)]), low)
     low = re.sub(r"(\d)(m|s|secs?|sec|seconds?|metres?)\b", r"\1 \2", low)
+    low = re.sub(r"\b(?:metres?|meters?) (?:a|per|1) (?:second|sec)\b", "m/s", low)  # "4 metres a second"
+    low = re.sub(r"\b(?:a |the )?(left|right) turn((?: [a-z]+){0,4}?) for (?:the ego|us|me)\b", r"the ego turns \1\2", low)  # "right turn for us"
     low = hazard_story(_stop_at_place(low, scene))
     return re.sub(r"\s+", " ", low.replace("²", "2").replace("^2", "2").replace(".", " . ")).strip()
 
@@ -293,15 +295,20 @@ _LET = re.compile(r"^\s*(?:let|have|make|get)\s+(?=(?:it|him|her|them|the|that|t
 
 def _steady_speed_as_setting(calls: list[ToolCall], scene: Scene) -> list[ToolCall]:
     """A story that opens on a steady speed from the start ("drives at 6 m/s and changes to the
-    left lane at 5 s"), with its later steps timed from the start: that speed is the lane
-    behaviour's, set now, as "the ego drives at 6 m/s" alone sets it."""
+    left lane at 5 s", "4 m/s, then turn right at the junction"), with its later steps timed from
+    the start or the same actor's next: that speed is the lane behaviour's, set now, as "the ego
+    drives at 6 m/s" alone sets it, and the steps after it come at their times or places."""
     first, rest = calls[0], calls[1:]
     spec = first.args.get("manoeuvre", {})
     actor = scene.asset(str(first.args.get("actor")))
     if first.tool != "add_manoeuvre" or spec.get("kind") != "keep_lane" or "speed" not in spec or first.args.get("at_time") \
-            or not rest or any("at_time" not in c.args for c in rest) or actor is None or not isinstance(actor.behaviour, DriveLane):
+            or not rest or actor is None or not isinstance(actor.behaviour, DriveLane) \
+            or any("at_time" not in c.args and not (c.args.get("after_previous") and c.args.get("actor") == actor.id
+                                                   and c.args["manoeuvre"].get("kind") == "junction_turn") for c in rest):
         return calls
     behaviour = {**actor.behaviour.model_dump(), "speed": spec["speed"]}
+    # "4 m/s, then turn right at the junction": the turn comes where the junction is (a brake after a cruise stays next)
+    rest = [ToolCall(tool=c.tool, args={k: v for k, v in c.args.items() if k != "after_previous"}) for c in rest]
     return [ToolCall(tool="set_behaviour", args={"asset": actor.id, "behaviour": behaviour}), *rest]
 
 

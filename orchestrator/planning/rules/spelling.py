@@ -1345,6 +1345,12 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = without_left_as_it_is(text)
     text = _MUCH_ADJECTIVE.sub(r"\1 ", text)
     text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?=\S)", ", ", text)  # "street lights on... go": a pause, a clause's end
+    # "slow us down", "roll us back", "Us: 8 m/s": the driver's "us" is the ego ("give us rain" is the speaker's)
+    text = re.sub(r"\b(slow|speed|move|put|place|roll|back|stop|turn|shift|park|brake|drive|reverse|pull)\s+us\b", r"\1 the ego", text, flags=re.IGNORECASE)
+    text = re.sub(r"^\s*us\s*:", "ego:", text, flags=re.IGNORECASE)
+    if re.search(r"m/s|km/?h|kph|mph|(?:a|per) second|an hour", text, flags=re.IGNORECASE):  # "8 m/s, hold it": keep to that speed
+        text = re.sub(r",?\s*(?:and\s+)?hold (?:it|that|steady)(?:\s+there)?(?=\s*[.!]*\s*$)", "", text, flags=re.IGNORECASE)
+    text = re.sub(r"\bease (?:off|up)\b(?! (?:on )?the (?:brakes?|gas|throttle|pedal)\b)", "slow down", text, flags=re.IGNORECASE)  # a driver's word
     text = re.sub(r"\b(?:every|each) (?:single )?one of\b", "all of", text, flags=re.IGNORECASE)  # "throw every one of them out": all
     text = _HYPHENED.sub(lambda m: m.group(1) + " " + m.group(2) if _two_word_name(m, scene) else m.group(0), text)
     text = _SAID_TOGETHER_RE.sub(lambda m: _SAID_TOGETHER[m.group(0).lower()], text)
