@@ -355,7 +355,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         out.append("the plan measures from the ego, which your words do not name")  # "how far is the hosptial from the gate"
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
     if any(c.tool == "set_weather" for c in effect.calls):
-        if (other := _WEATHER_NOT_HERE.search(request.low)) is not None:  # "make a hail storm" is no rain
+        # "make a hail storm" is no rain (as typed too: a slip repair may have made it "rainstorm")
+        if (other := _WEATHER_NOT_HERE.search(request.low) or _WEATHER_NOT_HERE.search(request.text.lower())) is not None:
             out.append(f"this world has no {other.group(0)}; its weather is {', '.join(WEATHER_KINDS)}")
         if _WEATHER_PUT.search(request.low):  # "nudge that rain cloud towards the east gate"
             out.append("the weather covers the whole scene; it cannot be moved to one place")

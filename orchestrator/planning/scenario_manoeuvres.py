@@ -71,7 +71,8 @@ _MANOEUVRES: tuple[tuple[str, str], ...] = (
                       r"\b(?:at|into|onto|through|gets? to|reach\w*)\s+(?:the\s+)?(?:crossroads|junction|intersection|place)\b"),
     ("reverse", r"\brevers\w*|\bback(?:s|ing)? (?:up|out)\b"),
     ("change_speed", r"\bspeed\w* up\b|\bspeed up\b|\baccelerat\w*|\bgo(?:es)? faster\b|\bslow\w* (?:down|to)\b"
-                     r"|\bdecelerat\w*|\bgo(?:es)? slower\b"),
+                     r"|\bdecelerat\w*|\bgo(?:es)? slower\b"
+                     r"|\b(?:reduc|lower|drop|cut|decreas|increas|rais|chang)\w*\s+(?:the\s+|its\s+|their\s+|his\s+|her\s+)?speed\b"),
     ("brake", r"\bbrak\w*|\bslam\w* on\b"),
     ("stop", r"\bbrak\w*|\bstop\w*|\bhalt\w*|\bslam\w*|\bcome\w* to a (?:stop|halt|standstill)\b"),
     ("cross_road", r"\bcross(?:es|ed|ing)?\b(?! ?roads?| ?walks?)|\bcut(?:s|ting)? across\b|\bwalk\w* (?:straight |right |just )?(?:out|across|into)\b|\bsteps? (?:straight |right |just )?out\b|\b(?:run|runs|dart\w*) (?:straight |right |just )?(?:out|across)\b"

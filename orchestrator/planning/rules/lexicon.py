@@ -44,7 +44,7 @@ SIDE_WORDS = (("forward", "forward", 1), ("forwards", "forward", 1), ("ahead", "
               ("right", "left", -1), ("aside", "left", 1), ("over", "left", 1))
 WEATHER_WORDS: dict[str, tuple[str, ...]] = {
     "rain": ("rain", "raining", "rainy", "drizzle", "drizzling", "downpour", "storm", "stormy", "wet",
-             "showers", "pouring", "pour", "pours", "thunderstorm", "rainstorm", "monsoon", "wipers", "wiper", "umbrella", "puddles", "precipitation", "soaked", "drenched", "sodden"),
+             "showers", "pouring", "pour", "pours", "thunderstorm", "monsoon", "wipers", "wiper", "umbrella", "puddles", "precipitation", "soaked", "drenched", "sodden"),
     "fog": ("fog", "foggy", "mist", "misty", "haze", "hazy", "visibility", "murky", "smog"),
     "snow": ("snow", "snowy", "snowing", "snowstorm", "blizzard", "snowfall", "wintry", "winter", "icy", "sleet"),
     "cloudy": ("cloudy", "overcast", "clouds", "grey sky", "gloomy"),
