@@ -356,8 +356,8 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
     out += unanswered(request, effect.calls, scene)  # the question asked, not a neighbouring one
     if any(c.tool == "set_weather" for c in effect.calls):
         # "make a hail storm" is no rain (as typed too: a slip repair may have made it "rainstorm")
-        if (other := _WEATHER_NOT_HERE.search(request.low) or _WEATHER_NOT_HERE.search(request.text.lower())) is not None:
-            out.append(f"this world has no {other.group(0)}; its weather is {', '.join(WEATHER_KINDS)}")
+        if (unmade := _WEATHER_NOT_HERE.search(request.low) or _WEATHER_NOT_HERE.search(request.text.lower())) is not None:
+            out.append(f"this world has no {unmade.group(0)}; its weather is {', '.join(WEATHER_KINDS)}")
         if _WEATHER_PUT.search(request.low):  # "nudge that rain cloud towards the east gate"
             out.append("the weather covers the whole scene; it cannot be moved to one place")
     if any(c.tool in SCENARIO_TOOLS for c in effect.calls):
