@@ -17,6 +17,7 @@ from drivetwin.orchestrator.planning import PlanContext
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
 from drivetwin.orchestrator.session import Session
+from drivetwin.worlds.scene import DriveLane
 from misreading import ruled  # this folder is on sys.path (no __init__.py)
 
 
@@ -173,3 +174,31 @@ def test_a_thing_moved_from_one_place_to_another_goes_to_the_second(campus, regi
     fountain = campus.landmark("fountain")
     assert bench is not None and fountain is not None
     assert math.dist((bench.pose.x, bench.pose.y), fountain.position) < 10
+
+
+def test_the_drivers_us_ease_off_and_hold_it(campus, registry):
+    slowed = ruled(campus, registry, "slow us down a bit").scene.asset("ego")
+    assert slowed is not None and isinstance(slowed.behaviour, DriveLane) and slowed.behaviour.speed < 5.0
+    held = ruled(campus, registry, "Us: 8 metres a second, hold it.").scene.asset("ego")
+    assert held is not None and isinstance(held.behaviour, DriveLane) and held.behaviour.speed == 8.0
+    eased = Session(campus, ScenarioReader(), registry).submit("ease off, we're carrying too much speed")
+    assert eased.ok and eased.plan is not None and eased.plan.calls[0].args["manoeuvre"]["kind"] == "change_speed"
+
+
+def test_a_turn_said_as_a_noun_and_a_speed_before_a_junction_turn(campus, registry):
+    context = PlanContext(scene=campus, registry=registry)
+    plan = ScenarioReader().plan("right turn at the junction for the ego", context)
+    assert [(c.tool, c.args["manoeuvre"]) for c in plan.calls] == [("add_manoeuvre", {"kind": "junction_turn", "turn": "right"})]
+    plan = ScenarioReader().plan("Ego, stand by: four metres a second, then turn right at the junction. Go.", context)
+    assert [c.tool for c in plan.calls] == ["set_behaviour", "add_manoeuvre"] and plan.calls[0].args["behaviour"]["speed"] == 4.0
+    assert "after_previous" not in plan.calls[1].args  # the turn comes at the junction
+    # a brake after a cruise still waits for it
+    plan = ScenarioReader().plan("the ego cruises at 4 m/s and then brakes", context)
+    assert plan.calls[-1].args.get("after_previous") is True
+    plan = ScenarioReader().plan("Ego: reduce speed to 2 m/s at t = 4 s", context)
+    assert plan.calls[0].args["manoeuvre"]["kind"] == "change_speed" and plan.calls[0].args["at_time"] == 4.0
+
+
+def test_weather_said_as_typed_is_judged_as_typed(campus, registry):
+    session = Session(campus, RulePlanner(), registry)
+    assert not session.submit("Set the weather to a hailstorm.").ok and session.scene == campus
