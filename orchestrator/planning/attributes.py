@@ -222,8 +222,8 @@ def group_left_behind(low: str, removed: Iterable[AssetInstance], candidates: It
     for tag, members in md.groups_said(low).items():
         if re.search(rf"\b(?:those|these)\s+(?:\w+\s+)?{re.escape(tag)}s\b", low):
             continue  # "so those signs shouldn't be there": the ones just talked of, not every sign
-        if re.search(rf"\b(?:\w+)\s+of\s+(?:the|those|these|our|my|its)\s+(?:\w+\s+)?{re.escape(tag)}s\b", low) or FEWER_WORDS.search(low):
-            continue  # "one of the cars in lot B", "fewer cars": some of them, as many as said
+        if re.search(rf"\b(?:\w+)\s+of\s+(?:(?:the|those|these|our|my|its)\s+)?(?:\w+\s+)?{re.escape(tag)}s\b", low) or FEWER_WORDS.search(low):
+            continue  # "one of the cars in lot B" ("one of cars", the article dropped), "fewer cars": some of them, as many as said
         ids = {a.id for a in gone}
         left = [a.id for a in candidates if a.category in members and a.id not in ids and a.id != "ego"]
         if left and any(a.category in members for a in gone):

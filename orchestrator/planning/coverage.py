@@ -466,6 +466,8 @@ def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
                                       or before[-1] in ("put", "place", "plant", "stick"))
         if before[-2:-1] and before[-2] in ("all", "both", "the", "those", "these"):
             asked_new = False  # "all three vehicles", "the two cars": things already there, counted
+        if before[-1:] == ["one"] and before[-2:-1] and before[-2] in _CHANGES_EXISTING - {"place", "position"}:
+            asked_new = False  # "move one bench to the gate": one of those there
         if re.match(r"\s*(?:number |no\.? |#)?\d+\b(?!\s*(?:m\b|metres?|meters?|km|ft|feet|foot|yards?|m/s|mph|km/h|kph|seconds?|s\b|%))",
                     m.after):
             asked_new = False  # "put passenger car 2 in lot A": that one, by its number ("one car 25 metres ahead" is new)

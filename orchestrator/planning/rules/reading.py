@@ -779,6 +779,8 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
     words = ph.tokens(reading.low[: mention.start])
     for k in range(len(words) - 1, max(-1, len(words) - 4), -1):
         word = words[k]
+        if word == "one" and k == len(words) - 1 and k > 0 and words[k - 1] in ("put", "place", "set", "stick", "drop", "plant", "and", "plus"):
+            return True  # "put two bins at the east gate and one bench at the main gate": one more, as "a" is
         if word.isdigit() or (word in ph.NUMBER_WORDS and word not in ("one", "a", "an")):
             # "all three vehicles", "the two cars": a number of things already there
             return words[k - 1 : k] == [] or words[k - 1] not in (*_OLD_DETERMINERS, "all", "both")
