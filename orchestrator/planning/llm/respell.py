@@ -153,6 +153,12 @@ def _suspects(text: str, scene: Scene, vocab: frozenset[str]) -> list[str]:
 _OPENING = re.compile(r"(?:^|[,.;:!?])\s*(?:(?:please|pls|ok|okay|so|now|and|then|just)\s+)?$", re.IGNORECASE)
 
 
+# What may stand after the last word of a request, and what stands before a thing named ("a coan", "to the gaet").
+_CLOSING = re.compile(r"[\s.!?,;:)]*")
+_BEFORE_A_NOUN = re.compile(r"\b(?:a|an|the|some|any|my|our|your|this|that|these|those|to|at|by|near|of|\d+|two|three|four|five|more)\s+$",
+                            re.IGNORECASE)
+
+
 def _place_words(scene: Scene) -> frozenset[str]:
     return frozenset(w.lower() for lm in scene.landmarks for name in lm.names() for w in _WORD.findall(name))
 
@@ -184,6 +190,8 @@ def respell(text: str, scene: Scene, score: Scorer) -> Repaired:
                 # question word ("tern the suv": turn), never a place's name or a stray ("Gate", "Good")
                 options = tuple(c for c in options if c not in _place_words(scene) and (commands(f"{c} it") or asks(f"{c} it"))
                                 and edits(typed.lower(), c) <= _slips_allowed(typed.lower()))  # "Hace" is no "Hows"
+            if found is not None and _CLOSING.fullmatch(current[found.end() :]) and not _BEFORE_A_NOUN.search(current[: found.start()]):
+                continue  # "move the SUV to the east gate krub": a word that only ends the request is a sign-off, never "curb"
             if not options or not at.search(out):
                 continue  # nothing near, or the rules' own repair made it (theirs to report)
             spelt = [at.sub(_cased(c, typed), current, count=1) for c in options]

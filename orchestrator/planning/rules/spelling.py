@@ -1350,6 +1350,10 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = re.sub(r"^\s*us\s*:", "ego:", text, flags=re.IGNORECASE)
     if re.search(r"m/s|km/?h|kph|mph|(?:a|per) second|an hour", text, flags=re.IGNORECASE):  # "8 m/s, hold it": keep to that speed
         text = re.sub(r",?\s*(?:and\s+)?hold (?:it|that|steady)(?:\s+there)?(?=\s*[.!]*\s*$)", "", text, flags=re.IGNORECASE)
+    # "remove tree 1 and tree 4, other trees leave": the rest are left as they are, nothing to do
+    text = re.sub(r",?\s*(?:the\s+)?(?:other|remaining|rest of the)\s+[a-z]+\s+(?:(?:can|should|will|may)\s+)?(?:leave|stay|remain|keep|untouched)\b"
+                  r"(?:\s+(?:put|(?:where|as)\s+(?:they|it)\s+(?:are|is|were|was|stand|stands)))?\.?",
+                  "", text, flags=re.IGNORECASE)
     text = re.sub(r"\bease (?:off|up)\b(?! (?:on )?the (?:brakes?|gas|throttle|pedal)\b)", "slow down", text, flags=re.IGNORECASE)  # a driver's word
     text = re.sub(r"\b(?:every|each) (?:single )?one of\b", "all of", text, flags=re.IGNORECASE)  # "throw every one of them out": all
     text = _HYPHENED.sub(lambda m: m.group(1) + " " + m.group(2) if _two_word_name(m, scene) else m.group(0), text)
