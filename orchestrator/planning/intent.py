@@ -180,7 +180,7 @@ _INFO = re.compile(r"^\s*(?:query|lookup|look ?up|get|info|status|report)\s*:|(?
                    r"\s+(?:any|anything|anyone|anybody|a|an|the|some|how|if|whether|where|which|what)\b")
 # Imperatives that ask for information ("list the lanes", "could you find the hydrant"): questions
 # in the mood of a command, whatever the politeness around them.
-_LOOKUP = re.compile(r"^(?:(?:please|can you|could you|would you|will you|pls)\s+)?"
+_LOOKUP = re.compile(r"^(?:[a-z0-9 '-]{1,25}:\s*)?(?:(?:please|can you|could you|would you|will you|pls)\s+)?"  # "Before places: list ..."
                      r"(list|find|locate|count|search|look up|look for|identify|name the|describe|show|measure|work out)\b")
 # A request put politely, at the start of the sentence or of a clause ("..., could you add two
 # cars?", "could the bus go ..."): a command even when it ends with a question mark.

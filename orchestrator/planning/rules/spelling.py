@@ -1354,6 +1354,11 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = re.sub(r",?\s*(?:the\s+)?(?:other|remaining|rest of the)\s+[a-z]+\s+(?:(?:can|should|will|may)\s+)?(?:leave|stay|remain|keep|untouched)\b"
                   r"(?:\s+(?:put|(?:where|as)\s+(?:they|it)\s+(?:are|is|were|was|stand|stands)))?\.?",
                   "", text, flags=re.IGNORECASE)
+    # "remove the stop sign. Lamp stays.", "..., the bench is fine": what is kept, said as how it stays
+    text = re.sub(r"(?:[.;,]|\s-)\s*(?:the\s+|that\s+|this\s+|but\s+the\s+)?([a-z_]+(?:\s[a-z_0-9]+)?)\s+(?:stays|remains|can stay|should stay|is staying|is fine|is ok|is okay)"
+                  r"(?=\s*(?:[.!;]|$))", r"; keep the \1", text, flags=re.IGNORECASE)
+    text = re.sub(r"\b(?:every|each) (?:single )?(?:asset|object|item)\b|\ball (?:the |of the )?(?:assets|objects|items)\b", "everything", text,
+                  flags=re.IGNORECASE)  # "list every asset within 12 m of ...": whatever stands there
     text = re.sub(r"\bease (?:off|up)\b(?! (?:on )?the (?:brakes?|gas|throttle|pedal)\b)", "slow down", text, flags=re.IGNORECASE)  # a driver's word
     text = re.sub(r"\b(?:every|each) (?:single )?one of\b", "all of", text, flags=re.IGNORECASE)  # "throw every one of them out": all
     text = _HYPHENED.sub(lambda m: m.group(1) + " " + m.group(2) if _two_word_name(m, scene) else m.group(0), text)
