@@ -202,3 +202,30 @@ def test_a_turn_said_as_a_noun_and_a_speed_before_a_junction_turn(campus, regist
 def test_weather_said_as_typed_is_judged_as_typed(campus, registry):
     session = Session(campus, RulePlanner(), registry)
     assert not session.submit("Set the weather to a hailstorm.").ok and session.scene == campus
+
+
+def test_one_of_them_said_without_an_article_and_one_more_after_and(campus, registry):
+    session = ruled(campus, registry, "Remove one of cars from lot B, which one - no matter.")
+    lot_b = [a for a in campus.assets if a.category in ("passenger_car", "suv")]
+    assert len([a for a in session.scene.assets if a.category in ("passenger_car", "suv")]) == len(lot_b) - 1
+    both = ruled(campus, registry, "put two trash bins at the east gate and one bench at the main gate")
+    assert both.scene.count("bench") == campus.count("bench") + 1 and both.scene.asset("bench_1") == campus.asset("bench_1")
+    moved = ruled(campus, registry, "move one bench to the main gate")
+    assert moved.scene.count("bench") == campus.count("bench") and moved.scene.asset("bench_1") != campus.asset("bench_1")
+
+
+def test_what_stays_said_as_how_it_is_is_kept(campus, registry):
+    session = ruled(campus, registry, "Remove tree 1 and tree 4, other trees leave.")
+    assert sorted(a.id for a in session.scene.assets if a.category == "tree") == ["tree_2", "tree_3"]
+    lamp = ruled(campus, registry, "Remove the stop sign. Lamp stays.")
+    assert lamp.scene.count("stop_sign") == 0 and lamp.scene.count("street_light") == campus.count("street_light")
+    suv = ruled(campus, registry, "the other cars stay where they are, move the SUV to lot A")
+    assert suv.scene.asset("passenger_car_1") == campus.asset("passenger_car_1")
+
+
+def test_measure_one_thing_to_another_and_every_asset_near_a_place(campus, registry):
+    report = Session(campus, RulePlanner(), registry).submit("Measure the bench to the bin.")
+    assert report.ok and report.plan is not None and [c.tool for c in report.plan.calls] == ["measure_distance"]
+    report = Session(campus, RulePlanner(), registry).submit("list every asset within 12 metres of the fountain")
+    assert report.ok and report.plan is not None and report.plan.calls[0].tool == "find_assets"
+    assert "category" not in report.plan.calls[0].args
