@@ -69,9 +69,9 @@ def test_a_word_is_respelt_only_when_the_scorer_makes_it_clearly_likelier(campus
     assert never.text == "move passenger_car_2 by the ODD line"
     assert respell("make it snoe by the ODD line", campus, any_change).repairs  # the same scorer does respell a slip
     assert respell("the SNOE code on the sign", campus, any_change).repairs == []  # a word in capitals is a code
-    # A word that only ends the request is a sign-off ("krub"), never a thing ("curb"); after an article it is the thing.
+    # A word after the request's last place or thing is a sign-off ("krub"), never a thing ("curb"); elsewhere it is judged.
     assert respell("move the suv to the east gate krub.", campus, any_change).repairs == []
-    assert respell("add a coan", campus, any_change).repairs
+    assert respell("make it snoe", campus, any_change).repairs
 
 
 @pytest.mark.llm

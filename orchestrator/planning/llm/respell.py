@@ -28,6 +28,7 @@ from functools import cache, lru_cache
 
 from drivetwin.orchestrator.planning.intent import asks, commands
 from drivetwin.orchestrator.planning.rules import lexicon as lx
+from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.spelling import (
     Repaired,
     edits,
@@ -153,10 +154,14 @@ def _suspects(text: str, scene: Scene, vocab: frozenset[str]) -> list[str]:
 _OPENING = re.compile(r"(?:^|[,.;:!?])\s*(?:(?:please|pls|ok|okay|so|now|and|then|just)\s+)?$", re.IGNORECASE)
 
 
-# What may stand after the last word of a request, and what stands before a thing named ("a coan", "to the gaet").
+# What may stand after the last word of a request.
 _CLOSING = re.compile(r"[\s.!?,;:)]*")
-_BEFORE_A_NOUN = re.compile(r"\b(?:a|an|the|some|any|my|our|your|this|that|these|those|to|at|by|near|of|\d+|two|three|four|five|more)\s+$",
-                            re.IGNORECASE)
+
+
+def _ends_on_a_name(before: str, scene: Scene) -> bool:
+    """Whether the words before end on a place's or a thing's name ("... to the east gate"), so the request is said."""
+    last = _WORD.findall(before)[-1:]
+    return bool(last) and (last[0].lower() in _place_words(scene) or bool(ph.find_categories(last[0].lower())))
 
 
 def _place_words(scene: Scene) -> frozenset[str]:
@@ -190,8 +195,8 @@ def respell(text: str, scene: Scene, score: Scorer) -> Repaired:
                 # question word ("tern the suv": turn), never a place's name or a stray ("Gate", "Good")
                 options = tuple(c for c in options if c not in _place_words(scene) and (commands(f"{c} it") or asks(f"{c} it"))
                                 and edits(typed.lower(), c) <= _slips_allowed(typed.lower()))  # "Hace" is no "Hows"
-            if found is not None and _CLOSING.fullmatch(current[found.end() :]) and not _BEFORE_A_NOUN.search(current[: found.start()]):
-                continue  # "move the SUV to the east gate krub": a word that only ends the request is a sign-off, never "curb"
+            if found is not None and _CLOSING.fullmatch(current[found.end() :]) and _ends_on_a_name(current[: found.start()], scene):
+                continue  # "move the SUV to the east gate krub": a word after the request's last place or thing is a sign-off, never "curb"
             if not options or not at.search(out):
                 continue  # nothing near, or the rules' own repair made it (theirs to report)
             spelt = [at.sub(_cased(c, typed), current, count=1) for c in options]
