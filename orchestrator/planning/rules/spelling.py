@@ -1328,6 +1328,12 @@ _ID_PLACED = re.compile(r"(\b[A-Za-z]+(?:_[A-Za-z]+)*_\d+),\s+(?:just |right |di
                         r"(?:[- ]?(?:east|west))?(?:ern)? of (?:the )?[A-Za-z][\w ]*?(?=\s*(?:[,.;!?]|$))", re.IGNORECASE)
 
 
+# Sentence-final particles of the languages people bring to English (Thai, Hindi and Bengali, Cantonese and
+# Singapore English, Arabic, Hebrew and Yiddish, Tagalog, Japanese, Korean): politeness or emphasis, never a thing.
+_PARTICLE = re.compile(r"(?<=[a-z0-9)])\s+(?:na|naa|ka|kha|krub|krap|khrap|lah|leh|lor|meh|ji|jee|yaar|dada|didi|bhai|achi|akhi|yalla"
+                       r"|habibi|nu|po|ne|yo)(?=\s*(?:[,.!?;]|$))", re.IGNORECASE)
+
+
 # Two words joined by a hyphen ("the bus-stop", "a trash-bin"): a name of two words when a place or a thing has it.
 _HYPHENED = re.compile(r"\b([A-Za-z]+)-([A-Za-z]+)\b")
 
@@ -1344,7 +1350,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _LIST_MARKER.sub("", _MARKDOWN.sub("", text))
     text = without_left_as_it_is(text)
     text = _MUCH_ADJECTIVE.sub(r"\1 ", text)
-    text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?=\S)", ", ", text)  # "street lights on... go": a pause, a clause's end
+    text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?=\S)", ". ", text)  # "street lights on... go": a pause, a sentence's end
+    text = _PARTICLE.sub("", text)  # "lamp on na, very dark": a sign-off word of the speaker's language, no word of the request
     # "slow us down", "roll us back", "Us: 8 m/s": the driver's "us" is the ego ("give us rain" is the speaker's)
     text = re.sub(r"\b(slow|speed|move|put|place|roll|back|stop|turn|shift|park|brake|drive|reverse|pull)\s+us\b", r"\1 the ego", text, flags=re.IGNORECASE)
     text = re.sub(r"^\s*us\s*:", "ego:", text, flags=re.IGNORECASE)
@@ -1355,7 +1362,7 @@ def repair(text: str, scene: Scene) -> Repaired:
                   r"(?:\s+(?:put|(?:where|as)\s+(?:they|it)\s+(?:are|is|were|was|stand|stands)))?\.?",
                   "", text, flags=re.IGNORECASE)
     # "remove the stop sign. Lamp stays.", "..., the bench is fine": what is kept, said as how it stays
-    text = re.sub(r"(?:[.;,]|\s-)\s*(?:the\s+|that\s+|this\s+|but\s+the\s+)?([a-z_]+(?:\s[a-z_0-9]+)?)\s+(?:stays|remains|can stay|should stay|is staying|is fine|is ok|is okay)"
+    text = re.sub(r"(?:[.;,]|\s-)\s*(?:the\s+|that\s+|this\s+|but\s+the\s+)?([a-z_]+(?:\s[a-z_0-9]+)?)\s+(?:stays|remains|can stay|should stay|is staying|is fine|is ok|is okay|stay|keep|remain)"
                   r"(?=\s*(?:[.!;]|$))", r"; keep the \1", text, flags=re.IGNORECASE)
     text = re.sub(r"\b(?:every|each) (?:single )?(?:asset|object|item)\b|\ball (?:the |of the )?(?:assets|objects|items)\b", "everything", text,
                   flags=re.IGNORECASE)  # "list every asset within 12 m of ...": whatever stands there
