@@ -229,3 +229,13 @@ def test_measure_one_thing_to_another_and_every_asset_near_a_place(campus, regis
     report = Session(campus, RulePlanner(), registry).submit("list every asset within 12 metres of the fountain")
     assert report.ok and report.plan is not None and report.plan.calls[0].tool == "find_assets"
     assert "category" not in report.plan.calls[0].args
+
+
+def test_a_cue_after_an_ellipsis_and_a_sign_off_particle_change_nothing_more(campus, registry):
+    session = ruled(campus, registry, "Stand by to add one motorcycle next to the Engineering Hall entrance... and go.")
+    bike = next(a for a in session.scene.assets if a.category == "motorcycle")
+    assert bike.behaviour.kind == "parked"  # "go" was the cue, not a drive
+    lamps = ruled(campus, registry, "set the time to 21:00", "Now lamp on na, very dark.")
+    assert lamps.scene.environment.lighting.street_lights == "on" and lamps.scene.count("street_light") == campus.count("street_light")
+    kept = ruled(campus, registry, "Remove the SUV in lot B krub, car keep.")
+    assert kept.scene.count("suv") == campus.count("suv") - 1 and kept.scene.count("passenger_car") == campus.count("passenger_car")
