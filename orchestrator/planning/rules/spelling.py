@@ -1366,7 +1366,7 @@ def repair(text: str, scene: Scene) -> Repaired:
                   r"(?=\s*(?:[.!;]|$))", r"; keep the \1", text, flags=re.IGNORECASE)
     text = re.sub(r"\b(?:every|each) (?:single )?(?:asset|object|item)\b|\ball (?:the |of the )?(?:assets|objects|items)\b", "everything", text,
                   flags=re.IGNORECASE)  # "list every asset within 12 m of ...": whatever stands there
-    text = re.sub(r"\bease (?:off|up)\b(?! (?:on )?the (?:brakes?|gas|throttle|pedal)\b)", "slow down", text, flags=re.IGNORECASE)  # a driver's word
+    text = re.sub(r"\bease (?:off|up)\b(?!\s+(?:on\s+)?(?:the|that|this|those|these|some|it|them|with)\b)", "slow down", text, flags=re.IGNORECASE)  # a driver's word ("ease off the snow" is less snow)
     text = re.sub(r"\b(?:every|each) (?:single )?one of\b", "all of", text, flags=re.IGNORECASE)  # "throw every one of them out": all
     text = _HYPHENED.sub(lambda m: m.group(1) + " " + m.group(2) if _two_word_name(m, scene) else m.group(0), text)
     text = _SAID_TOGETHER_RE.sub(lambda m: _SAID_TOGETHER[m.group(0).lower()], text)
