@@ -239,3 +239,11 @@ def test_a_cue_after_an_ellipsis_and_a_sign_off_particle_change_nothing_more(cam
     assert lamps.scene.environment.lighting.street_lights == "on" and lamps.scene.count("street_light") == campus.count("street_light")
     kept = ruled(campus, registry, "Remove the SUV in lot B krub, car keep.")
     assert kept.scene.count("suv") == campus.count("suv") - 1 and kept.scene.count("passenger_car") == campus.count("passenger_car")
+
+
+def test_people_named_by_their_part_and_a_time_said_as_a_mark(campus, registry):
+    ring = ruled(campus, registry, "Give me a ring of extras around the ego.")
+    assert ring.scene.count("pedestrian") >= campus.count("pedestrian") + 3
+    assert ruled(campus, registry, "add a spectator by the fountain").scene.count("pedestrian") == campus.count("pedestrian") + 1
+    plan = ScenarioReader().plan("At the 5-second mark, the ego comes to a stop.", PlanContext(scene=campus, registry=registry))
+    assert plan.calls[0].args["manoeuvre"]["kind"] == "stop" and plan.calls[0].args["at_time"] == 5.0
