@@ -59,7 +59,7 @@ REMOVE_WORDS = re.compile(
     r"|pull (?:\w+ ){1,4}(?:from|off) (?=the|lot|parking|it|there)"
     # "clear most of the cars out of lot B", "clear the junk off the road": gone from there
     r"|clear (?:\w+ ){1,4}(?:out of|off|from)"
-    r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much"
+    r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much(?!\s+(?:forwards?|back|backwards?|left|right|north|south|east|west|to the|towards?|in front|behind|ahead|away|close|near|far|over|up|down)\b)"
     # "the seat and the bin should both go": gone, with no place or way to go to after it
     r"|(?:should|can|could|must|may|has to|have to|needs? to|(?:has |have |'s |'ve )?got to|gotta) (?:all |both |just )?go(?: away)?"
     r"(?=\s*(?:[,.;!?]|$|(?:i guess|i think|please|now|too|as well)\b)))\b"
@@ -105,7 +105,7 @@ _HEDGE = r"(?:a\s?bit|a little|a touch|slightly|somewhat|mildly|just a bit|a tad
 WEATHER_HEDGED = re.compile(rf"\b{_HEDGE}\s+(?:of\s+)?{_WEATHER_WORD}"
                             rf"|\b{_WEATHER_WORD}[\s,]+(?:\w+[\s,]+){{0,3}}?{_HEDGE}(?!\s+(?:more|harder|heavier|stronger|thicker))\b")
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
-FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less(?! in the way| of an? (?:obstacle|problem|nuisance|hazard|eyesore))|(?:do|does|did)(?:n't| not) (?:\w+ ){0,3}need (?:quite |nearly )?(?:so|as|that) (?:much|many)|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cut down on|reduce)\b")
+FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less(?! in the way| of an? (?:obstacle|problem|nuisance|hazard|eyesore))|(?:do|does|did)(?:n't| not) (?:\w+ ){0,3}need (?:quite |nearly )?(?:so|as|that) (?:much|many)|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much(?!\s+(?:forwards?|back|backwards?|left|right|north|south|east|west|to the|towards?|in front|behind|ahead|away|close|near|far|over|up|down)\b)|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cut down on|reduce)\b")
 # How many of them to keep: "keep just two", "leave one of them" (the amount is group 1).
 # "one is plenty", "two of them would be enough": as many kept as that.
 KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)"

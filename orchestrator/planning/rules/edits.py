@@ -1035,11 +1035,14 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         things = [a for i in ids if (a := scene.asset(i)) is not None] or ([found] if found is not None else [])
         turns = [(thing.id, _turn_for(r, scene, thing, deg, facing, notes)) for thing in things] if things else [(asset, None)]
         wanted = [(i, angle) for i, angle in turns if angle is None or abs(angle) >= 1.0]
-        if not wanted:
+        placed = ph.find_coordinates(r.low) is not None or r.landmark is not None  # "put us at x -90, y -1.75, facing east"
+        if not wanted and not placed:
             way = facing or "that way"  # "suv_1 already faces north"
             raise ph_error(f"{', '.join(i for i, _ in turns)} already face{'s' if len(turns) == 1 else ''} {way}")
-        return [ToolCall(tool="move_asset", args={"asset": i, "turn_deg": angle if angle is not None else DEFAULT_SPIN_DEG})
-                for i, angle in wanted]
+        if wanted:
+            return [ToolCall(tool="move_asset", args={"asset": i, "turn_deg": angle if angle is not None else DEFAULT_SPIN_DEG})
+                    for i, angle in wanted]
+        # it faces that way already: where it goes is the request
     kind = behaviour_kind(r, catalog()[found.category] if found is not None else None)
     if kind is None and motion not in (None, "vehicle", "walker") and (_GOING_ACROSS.search(r.masked) or _GOING_TO.search(r.masked)
                                                                        or re.search(r"\bfollow(?:s|ing)?\b", r.masked)):
@@ -1097,8 +1100,10 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
     drives = found is not None and catalog()[found.category].drives
     if drives and _UP.search(r.low) and not anchored:  # "move our car up a bit": on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward": shift or DEFAULT_STEP_M})]
+    # "it's parked too far forward, back it 2 m": the way it is too far is the trouble, not the way to go
+    said_ways = _TOO_FAR_WAY.sub(" ", r.masked)
     for word, key, sign in lx.SIDE_WORDS:
-        if shift is not None and r.has((word,)) and not anchored:
+        if shift is not None and ph.has_any(said_ways, (word,)) and not anchored:
             return [ToolCall(tool="move_asset", args={**moved, key: sign * shift})]
     kind_of = found.category if found is not None else asset.rpartition("_")[0] if asset in notes.coming else None  # one an earlier clause adds
     walker = kind_of in catalog() and catalog()[kind_of].motion == "walker"
@@ -1129,6 +1134,10 @@ def edit_existing(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> lis
         along = all(a is not None and catalog()[a.category].drives for a in every)  # a car moves on along its way
         return [ToolCall(tool="move_asset", args={**moved, "forward" if along else "left": step})]
     return None
+
+
+# A way said as how far out of place a thing is: "too far forward", "too much to the left".
+_TOO_FAR_WAY = re.compile(r"\btoo (?:much |far |)(?:to the )?(?:forwards?|backwards?|back|left|right|over)\b")
 
 
 # The guess the rules note when a move says no way to go ("move the bench 3 m", "shift it kerbside"): the planner asks.

@@ -1353,7 +1353,10 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?=\S)", ". ", text)  # "street lights on... go": a pause, a sentence's end
     text = re.sub(r"\b(\d+(?:\.\d+)?)-(seconds?|secs?|metres?|meters?|minutes?|hours?|feet|foot)\b", r"\1 \2", text, flags=re.IGNORECASE)  # "the 5-second mark"
     text = re.sub(r"\b(?:at|on|by) the (\d+(?:\.\d+)?) ?(seconds?|secs?|s) mark\b", r"after \1 seconds", text, flags=re.IGNORECASE)
-    text = _PARTICLE.sub("", text)  # "lamp on na, very dark": a sign-off word of the speaker's language, no word of the request
+    text = _PARTICLE.sub("", text)
+    # "need back it about 2 metre": the "to" of a wish left out
+    text = re.sub(r"\b(need|needs|want|wants)\s+(back|move|shift|push|pull|turn|put|take|roll|bring)\s+(?=(?:it|them|the|that|this)\b)", r"\1 to \2 ",
+                  text, flags=re.IGNORECASE)  # "lamp on na, very dark": a sign-off word of the speaker's language, no word of the request
     # "slow us down", "roll us back", "Us: 8 m/s": the driver's "us" is the ego ("give us rain" is the speaker's)
     text = re.sub(r"\b(slow|speed|move|put|place|roll|back|stop|turn|shift|park|brake|drive|reverse|pull)\s+us\b", r"\1 the ego", text, flags=re.IGNORECASE)
     text = re.sub(r"^\s*us\s*:", "ego:", text, flags=re.IGNORECASE)
