@@ -1368,7 +1368,8 @@ def repair(text: str, scene: Scene) -> Repaired:
                   "", text, flags=re.IGNORECASE)
     # "remove the stop sign. Lamp stays.", "..., the bench is fine": what is kept, said as how it stays
     text = re.sub(r"(?:[.;,]|\s-)\s*(?:the\s+|that\s+|this\s+|but\s+the\s+)?([a-z_]+(?:\s[a-z_0-9]+)?)\s+(?:stays|remains|can stay|should stay|is staying|is fine|is ok|is okay|stay|keep|remain)"
-                  r"(?=\s*(?:[.!;]|$))", r"; keep the \1", text, flags=re.IGNORECASE)
+                  r"(?=\s*(?:[.!;]|$))", lambda m: f"; keep the {m.group(1)}" if ph.find_categories(m.group(1).lower()) else m.group(0),
+                  text, flags=re.IGNORECASE)  # a thing of the catalog ("any one is fine" keeps nothing)
     text = re.sub(r"\b(?:every|each) (?:single )?(?:asset|object|item)\b|\ball (?:the |of the )?(?:assets|objects|items)\b", "everything", text,
                   flags=re.IGNORECASE)  # "list every asset within 12 m of ...": whatever stands there
     text = re.sub(r"\bease (?:off|up)\b(?!\s+(?:on\s+)?(?:the|that|this|those|these|some|it|them|with)\b)", "slow down", text, flags=re.IGNORECASE)  # a driver's word ("ease off the snow" is less snow)
