@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 
+import pytest
 from drivetwin.orchestrator.planning import PlanContext
 from drivetwin.orchestrator.planning.rules.planner import RulePlanner
 from drivetwin.orchestrator.planning.scenario_reading import ScenarioReader
@@ -247,3 +248,22 @@ def test_people_named_by_their_part_and_a_time_said_as_a_mark(campus, registry):
     assert ruled(campus, registry, "add a spectator by the fountain").scene.count("pedestrian") == campus.count("pedestrian") + 1
     plan = ScenarioReader().plan("At the 5-second mark, the ego comes to a stop.", PlanContext(scene=campus, registry=registry))
     assert plan.calls[0].args["manoeuvre"]["kind"] == "stop" and plan.calls[0].args["at_time"] == 5.0
+
+
+def test_too_much_a_way_is_where_it_is_out_of_place_and_never_fewer(campus, registry):
+    for said in ("the SUV is too much forward", "the bench is too much left"):
+        session = Session(campus, RulePlanner(), registry)
+        report = session.submit(said)
+        assert not (report.ok and session.scene.count(said.split()[1].lower()) < campus.count(said.split()[1].lower())), said
+    backed = ruled(campus, registry, "SUV is parked too much forward, need back it about 2 metre.").scene.asset("suv_1")
+    suv = campus.asset("suv_1")
+    assert backed is not None and suv is not None
+    heading = (math.cos(suv.pose.yaw), math.sin(suv.pose.yaw))
+    assert (backed.pose.x - suv.pose.x) * heading[0] + (backed.pose.y - suv.pose.y) * heading[1] == pytest.approx(-2.0, abs=0.1)
+
+
+def test_a_place_said_with_a_facing_it_already_has_is_still_a_move(campus, registry):
+    ego = ruled(campus, registry, "Start position: put us at x minus 90, y minus 1.75, eastbound lane, facing east.").scene.asset("ego")
+    assert ego is not None and (ego.pose.x, ego.pose.y) == pytest.approx((-90.0, -1.75), abs=0.01)
+    report = Session(campus, RulePlanner(), registry).submit("turn the ego to face east")
+    assert not report.ok and "already faces east" in (report.error or "")
