@@ -1,13 +1,15 @@
-"""Worded here (none from a suite): a thing a clause is said of ("the bus should drive more carefully", "might
-the bus be in lot B?") that the scene does not have is asked about, never added, while a role ("the lead car")
-still brings one in; a step's way said and not read ("3 metres est") is asked, never guessed; "where the tree
-is" with several trees is refused, naming one to pick; a story that opens on a steady speed sets the lane
-behaviour's speed and times its later steps from the start, a later step said as "let it ..." included; "the ego
-cycles" is a verb, never bicycles; a retrieval reading that does what the words do not ask is no offer; a thing
-named by its number after "except" is spared; hail, dust and weather moved to one place are refused; "a trash-bin",
-"every one of them", "by about half", "well away from"; the clock asked as "wah time it is"; a hedged suggestion
-after a statement; an unknown verb after "di" adds nothing; things named bare and then said of as they are
-("they look messy") are those there."""
+"""Worded here, or as practice38 words it after it was measured unseen (never the held-out suite): a thing a clause
+is said of ("the bus should drive more carefully", "might the bus be in lot B?") that the scene does not have is
+asked about, never added, while a role ("the lead car") still brings one in; a step's way said and not read ("3
+metres est", "well away from it") is asked, never guessed; "where the tree is" with several trees is refused; a
+story that opens on a steady speed sets the lane behaviour's speed ("and let it ..." a later step, a junction turn
+at the junction); "the ego cycles" is a verb; an off-mood retrieval reading is no offer; "except tree 3" spares it;
+hail, dust and weather moved to one place are refused; hyphened names, "every one of them", "by about half", "the
+5-second mark"; the clock asked as "wah time it is"; a hedged suggestion after a statement; things said bare then
+said back are those there; labels (cue 12, step 1), an ellipsis, exposure down to a value, "cloudly"; a measure
+asked is no thing; "from A to B, in metres"; a move from one place to another; the driver's "us", "ease off",
+"hold it"; "one of cars", "and one bench"; what stays said as how it is; a sign-off particle; people named by
+their part; "too much forward" is a way out of place; a place said with a facing it already has."""
 
 from __future__ import annotations
 
