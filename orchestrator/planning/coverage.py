@@ -51,7 +51,7 @@ from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import AssetInstance, Lane, Scene
 
 # Words before a category that point at one already in the scene ("the SUV", "those cones").
-_DEFINITE = ("the", "that", "this", "those", "these", "our", "my", "all", "every", "each", "both")
+_DEFINITE = ("the", "that", "this", "those", "these", "our", "my", "his", "her", "their", "your", "all", "every", "each", "both")
 # What comes before a thing named bare as a clause's topic: nothing, a stop, a filler, a wish.
 _BARE_TOPIC = re.compile(r"(?:^|[,.;:!?]|\b(?:ok|okay|so|and|then|now|hmm|um|want|need))\s*$")
 # Verbs a thing is said bare after by a speaker who drops articles, and any article at all ("put" and

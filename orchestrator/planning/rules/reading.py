@@ -643,7 +643,9 @@ def _kinds_numbered(low: str) -> list[tuple[ph.Mention, list[tuple[str, re.Match
 def _counts_what_follows(low: str, end: int) -> bool:
     """Whether the number before `end` counts the thing named after it ("next to tree 3 cones")."""
     counted = ph.find_categories(re.split(r"[,.;:!?]", low[end : end + 24])[0])  # never past the clause: "car 1. then the suv"
-    return bool(counted) and not low[end:].lstrip().startswith(("and", "or", "to", "in", "at", "on", "by"))
+    # "passenger car 2 is my car": what is said of it, after its verb, is counted by nothing
+    said_of = re.match(r"\s*(?:is|are|was|were|has|have|had|should|will|would|can|could|must|does|did|'s)\b", low[end:])
+    return bool(counted) and said_of is None and not low[end:].lstrip().startswith(("and", "or", "to", "in", "at", "on", "by"))
 
 
 def _picked_number(word: str) -> int:
