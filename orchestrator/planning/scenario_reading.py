@@ -233,16 +233,17 @@ class ScenarioReader:
         refuse_unsupported(timing.action)
         first, later = steps(_LEADING.sub("", timing.action.strip(" ,.")).strip())
         timing, later = _delay_of_a_later_step(story or low, timing, later)
+        timing, late_trigger = _trigger_of_a_later_step(story or low, timing, later)
         arrived: list[ToolCall] = []
         try:
-            readings = _stories(first, later, timing, scene)
+            readings = _stories(first, later, timing, scene, late_trigger)
         except _NoActor as missing:
             if not brings_in(missing.subject):
                 raise
             # "a pedestrian steps out in front of the ego" with none there: one is brought in
             arrival = arrive(missing.subject, first[missing.verb_at :], scene, context.registry)
             arrived = [arrival.call]
-            readings = _stories(f"{arrival.id} {first[missing.verb_at :]}", later, timing, arrival.scene)
+            readings = _stories(f"{arrival.id} {first[missing.verb_at :]}", later, timing, arrival.scene, late_trigger)
         readings = [([*arrived, *calls], defaults) for calls, defaults in readings]
         fine = [(c, d) for c, d in readings if context.check(c) is None]
         step = TraceStep(level="scenario", input=f"action {first!r}; then {later}; trigger {timing.trigger!r}; "
@@ -273,13 +274,30 @@ def _delay_of_a_later_step(said: str, timing: Timing, later: list[tuple[str, flo
     return replace(timing, delay=None), [(later[0][0], timing.delay), *later[1:]]
 
 
-def _stories(first: str, later: list[tuple[str, float | None]], timing: Timing, scene: Scene) -> list[tuple[list[ToolCall], int]]:
-    """Each reading of the story's calls with the defaults it needed: its first step, then each later one."""
+def _trigger_of_a_later_step(said: str, timing: Timing, later: list[tuple[str, float | None]]) -> tuple[Timing, str | None]:
+    """The story's condition said after its second step ("drive at 36 km/h and stop before the west
+    crosswalk"): the second step's, the first starting at once; None when it is the first step's."""
+    if timing.trigger is None or len(later) != 1 or later[0][1] is not None:
+        return timing, None
+    second, at = said.find(later[0][0][:12]), said.find(timing.trigger)
+    if second < 0 or at < second:
+        return timing, None
+    return replace(timing, trigger=None), timing.trigger
+
+
+def _stories(first: str, later: list[tuple[str, float | None]], timing: Timing, scene: Scene,
+             late_trigger: str | None = None) -> list[tuple[list[ToolCall], int]]:
+    """Each reading of the story's calls with the defaults it needed: its first step, then each later
+    one (the last on `late_trigger`, a condition said after it, when there is one)."""
     readings: list[tuple[list[ToolCall], int]] = []
     for actor, manoeuvre, spec, done_to in _readings(first, scene):
         calls, defaults = _calls(actor, manoeuvre, spec, timing, done_to, scene)
         for words, gap in later:  # "..., and let it change to the left lane": "it change to the left lane"
             calls = _followed_by(calls, actor, _LET.sub("", words), gap, scene)
+        if late_trigger is not None and (doer := scene.asset(str(calls[-1].args.get("actor")))) is not None:
+            when, guessed = read_trigger(late_trigger, doer, scene, None)  # "... and stop before the west crosswalk"
+            calls = [*calls[:-1], ToolCall(tool="add_event", args={"actor": doer.id, "manoeuvre": calls[-1].args["manoeuvre"], "when": when})]
+            defaults += guessed
         readings.append((calls, defaults + manoeuvre.defaults + int(timing.vague)))
     readings = [(_steady_speed_as_setting(calls, scene), defaults) for calls, defaults in readings]
     lit = [calls for calls, _ in readings if [c.tool for c in calls] == ["set_light_phases"]]
@@ -303,8 +321,8 @@ def _steady_speed_as_setting(calls: list[ToolCall], scene: Scene) -> list[ToolCa
     actor = scene.asset(str(first.args.get("actor")))
     if first.tool != "add_manoeuvre" or spec.get("kind") != "keep_lane" or "speed" not in spec or first.args.get("at_time") \
             or not rest or actor is None or not isinstance(actor.behaviour, DriveLane) \
-            or any("at_time" not in c.args and not (c.args.get("after_previous") and c.args.get("actor") == actor.id
-                                                   and c.args["manoeuvre"].get("kind") == "junction_turn") for c in rest):
+            or any("at_time" not in c.args and "when" not in c.args and not (c.args.get("after_previous") and c.args.get("actor") == actor.id
+                                                                            and c.args["manoeuvre"].get("kind") == "junction_turn") for c in rest):
         return calls
     behaviour = {**actor.behaviour.model_dump(), "speed": spec["speed"]}
     # "4 m/s, then turn right at the junction": the turn comes where the junction is (a brake after a cruise stays next)

@@ -226,9 +226,15 @@ def test_a_storyboard_that_leaves_out_a_figure_said_is_not_applied(context):
     stop = Plan(calls=[ToolCall(tool="add_event", args={"actor": "ego", "manoeuvre": {"kind": "stop", "rate": 4.0},
                                                         "when": {"kind": "reach", "actor": "ego", "place": "west crosswalk"}})],
                 planner="rules")
-    slipped = review("make ego drive at 36 kmh and stop before the west crosswalk", stop, context)
+    slipped = review("make ego do 36 kmh and stop before the west crosswalk", stop, context)
     assert slipped.action != "apply"  # the reader misses the 36 as the plan does: the figure is what stops it
     assert any("leaves out 36" in p for p in slipped.problems), slipped.problems
+    # read whole, the speed is the lane's from the start and the stop waits for the crosswalk (never the other way round)
+    read = review("make ego drive at 36 kmh and stop before the west crosswalk", stop, context)
+    assert read.action != "apply" and read.question is not None
+    offered = next(r.calls for r in read.question.readings if r.calls[0].tool == "set_behaviour")
+    assert [c.tool for c in offered] == ["set_behaviour", "add_event"] and offered[0].args["behaviour"]["speed"] == 10.0
+    assert offered[1].args["when"] == {"kind": "reach", "actor": "ego", "place": "west crosswalk"}
 
 
 def test_a_word_said_of_a_place_is_no_thing_a_question_asks_about(context):
