@@ -122,7 +122,8 @@ def test_a_word_the_planners_own_patterns_read_is_known_and_two_words_stay_two()
 
     vocab = vocabulary(campus)
     assert all(is_known(w, vocab) for w in ("slow", "nearest", "double", "faster"))
-    assert "every one" in repair("every one of the trees should turn red", campus).text
+    said = repair("every one of the trees should turn red", campus).text  # "every one of" is all of them, never "everyone"
+    assert "everyone" not in said and "all of the trees" in said
 
 
 def test_facing_the_opposite_way_is_a_half_turn(session):

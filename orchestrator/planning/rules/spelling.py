@@ -1350,7 +1350,8 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _LIST_MARKER.sub("", _MARKDOWN.sub("", text))
     text = without_left_as_it_is(text)
     text = _MUCH_ADJECTIVE.sub(r"\1 ", text)
-    text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?=\S)", ". ", text)  # "street lights on... go": a pause, a sentence's end
+    text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?:and\s+)?go\s*[.!]*\s*$", ".", text, flags=re.IGNORECASE)  # "... and go.": a cue, no drive
+    text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?=\S)", ", ", text)  # "street lights on... go", "the hydrant... just disappears": a pause
     text = re.sub(r"\b(\d+(?:\.\d+)?)-(seconds?|secs?|metres?|meters?|minutes?|hours?|feet|foot)\b", r"\1 \2", text, flags=re.IGNORECASE)  # "the 5-second mark"
     text = re.sub(r"\b(?:at|on|by) the (\d+(?:\.\d+)?) ?(seconds?|secs?|s) mark\b", r"after \1 seconds", text, flags=re.IGNORECASE)
     text = _PARTICLE.sub("", text)
