@@ -280,7 +280,7 @@ class HybridPlanner:
         # a retrieval reading that does what the words do not ask ("move the bench ..." read as a removal) is no offer
         readings = [
             c for c in candidates
-            if c.calls and (c.planner != "retrieval" or (c.confidence >= RETRIEVAL_READING and _fits_the_mood(c, request)))
+            if c.calls and (c.planner != "retrieval" or (c.confidence >= RETRIEVAL_READING and _may_be_offered(c, request)))
         ]
         if not readings:
             raise PlanningError(_not_understood(rules_said))
@@ -338,6 +338,16 @@ def _fits_the_mood(plan: Plan, request: Request) -> bool:
     says neither: its removal read by the rules stands against an addition)."""
     kind = _kind_of(plan)
     return (kind == "look") == request.question and (kind not in ("add", "remove") or kind == request.polarity)
+
+
+def _may_be_offered(plan: Plan, request: Request) -> bool:
+    """Whether a reading may be offered for the person to choose: a look-up only for a question, a change only
+    for a command, a removal only where the words say one ("move the bench ..." read as a removal is none), an
+    addition unless they say a removal ("stick a sign up near the gate" says neither: an addition may be offered)."""
+    kind = _kind_of(plan)
+    if (kind == "look") != request.question:
+        return False
+    return not ((kind == "remove" and request.polarity != "remove") or (kind == "add" and request.polarity == "remove"))
 
 
 def _kind_of(plan: Plan) -> str:
