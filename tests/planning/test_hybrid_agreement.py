@@ -174,3 +174,7 @@ def test_a_retrieval_reading_that_does_what_the_words_do_not_ask_is_no_offer(con
         hybrid(Fixed("rules", None), Fixed("retrieval", removal, 0.5), SmallModel("llm", None)).plan("move the bench a bit", context)
     plan = hybrid(Fixed("rules", None), Fixed("retrieval", moved, 0.5), SmallModel("llm", None)).plan("move the bench a bit", context)
     assert path(plan) == "path: ask" and plan.question is not None and [r.calls for r in plan.question.readings] == [moved]
+    # words that say neither an addition nor a removal ("stick a sign up"): an addition may still be offered
+    sign = [ToolCall(tool="add_asset", args={"category": "stop_sign", "location": {"relation": "at", "target": "main gate"}})]
+    plan = hybrid(Fixed("rules", None), Fixed("retrieval", sign, 0.5), SmallModel("llm", None)).plan("stick a sign up near the gate", context)
+    assert plan.question is not None and [r.calls for r in plan.question.readings] == [sign]
