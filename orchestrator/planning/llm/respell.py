@@ -28,7 +28,6 @@ from functools import cache, lru_cache
 
 from drivetwin.orchestrator.planning.intent import asks, commands
 from drivetwin.orchestrator.planning.rules import lexicon as lx
-from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.spelling import (
     Repaired,
     edits,
@@ -159,9 +158,10 @@ _CLOSING = re.compile(r"[\s.!?,;:)]*")
 
 
 def _ends_on_a_name(before: str, scene: Scene) -> bool:
-    """Whether the words before end on a place's or a thing's name ("... to the east gate"), so the request is said."""
+    """Whether the words before end on a place's name ("... to the east gate"), so the request is said (after a
+    thing's name a word may still be what it is to be: "make the hydrant blauw")."""
     last = _WORD.findall(before)[-1:]
-    return bool(last) and (last[0].lower() in _place_words(scene) or bool(ph.find_categories(last[0].lower())))
+    return bool(last) and last[0].lower() in _place_words(scene)
 
 
 def _place_words(scene: Scene) -> frozenset[str]:
@@ -196,7 +196,7 @@ def respell(text: str, scene: Scene, score: Scorer) -> Repaired:
                 options = tuple(c for c in options if c not in _place_words(scene) and (commands(f"{c} it") or asks(f"{c} it"))
                                 and edits(typed.lower(), c) <= _slips_allowed(typed.lower()))  # "Hace" is no "Hows"
             if found is not None and _CLOSING.fullmatch(current[found.end() :]) and _ends_on_a_name(current[: found.start()], scene):
-                continue  # "move the SUV to the east gate krub": a word after the request's last place or thing is a sign-off, never "curb"
+                continue  # "move the SUV to the east gate krub": a word after the request's last place is a sign-off, never "curb"
             if not options or not at.search(out):
                 continue  # nothing near, or the rules' own repair made it (theirs to report)
             spelt = [at.sub(_cased(c, typed), current, count=1) for c in options]

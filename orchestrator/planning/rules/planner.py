@@ -2035,6 +2035,10 @@ def _heading_along(r: Reading, scene: Scene, args: dict[str, Any]) -> float | No
     return round(math.degrees(target.pose.yaw), 1) if target is not None else None
 
 
+# A road said to be too quiet: what is added to it is traffic.
+_ROAD_TOO_QUIET = re.compile(r"\b(?:quiet|empty|dead|deserted|lifeless|no traffic)\b")
+
+
 def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | None = None) -> list[ToolCall]:
     """add_asset for the first thing the clause names: `count` of them, else as many as it says."""
     mention = r.mentions[0]
@@ -2052,6 +2056,8 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     kind = behaviour_kind(r, category)
     if kind is None and word == "traffic":
         kind = "drive_lane"  # "more traffic on Main Street": vehicles that drive, not parked ones
+    if kind is None and category.motion == "vehicle" and r.lane and _ROAD_TOO_QUIET.search(r.low):
+        kind = "drive_lane"  # "Main Street so quiet, add some cars": traffic, driving
     pace = _SAME_PACE.search(r.low) if category.drives else None
     if kind is None and pace is not None:
         kind = "drive_lane"  # "a car 25 m ahead of it, same lane, same speed": one the ego follows, driving
