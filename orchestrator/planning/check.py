@@ -164,14 +164,14 @@ _KEEPS_DOING = re.compile(r"\s+(?:(?:are|is)\s+)?(?:always|constantly|forever|co
 _KEPT_OFF = re.compile(r"\s+(?:[a-z]+\s+)?(?:off|away|out|from|back|clear)\b")
 # Words asking for one more of a thing there: what answers them adds.
 _ANOTHER_ONE = re.compile(r"\b(?:a copy|copies|duplicate|clone|another one|one more|a second one)\b")
-# A question about the scene's settings ("time + weather?", "what's the weather doing"): the
-# environment is what it must look up.
 # Weather this world cannot make, that a plan setting rain or fog would stand in for unasked.
 _WEATHER_NOT_HERE = re.compile(r"\b(?:hail\w*|dust ?storms?|sand ?storms?|dust|sand|tornado\w*|twisters?|volcanic ash|ash ?clouds?)\b")
 # Weather said to be moved to one place: "nudge that rain cloud over towards the east gate".
 _WEATHER_PUT = re.compile(r"\b(?:move|moving|nudge|shift|push|drag|put|place|steer|send|blow)\w*\s+(?:the\s+|that\s+|this\s+|some\s+)?"
                           r"(?:rain ?|storm ?|snow ?)?(?:clouds?|fog ?bank|storm|rain|fog|snow)\s+(?:\w+\s+){0,2}?(?:towards?|to|over|onto|into|above)\s+"
                           r"(?!(?:the\s+)?(?:scene|campus|world|map|whole|everything|everywhere|us|here|all)\b)")
+# A question about the scene's settings ("time + weather?", "what's the weather doing"): the
+# environment is what it must look up.
 _SETTING_ASKED = re.compile(r"\b(?:weather|what time|the time|time of day|lighting|exposure)\b")
 # The units a length on the campus is said in (a distance in km is read as a speed's unit elsewhere).
 _LENGTH_UNITS = r"m|metres?|meters?|ft|feet|foot|yards?"

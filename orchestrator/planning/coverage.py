@@ -31,6 +31,7 @@ from drivetwin.orchestrator.planning.intent import (
     KEEP_SOME,
     NONE_THERE,
     PLACE_KIND,
+    SAID_MISSING,
     WOULD_HELP,
     asks,
 )
@@ -422,10 +423,9 @@ _AS_BEFORE = re.compile(r"\b(?:back (?:where|to where|in|into|at|on|to)|where (?
 # What comes before "the <thing>" as a clause's subject: nothing, a stop, a joining word, or a
 # question's auxiliary ("might the bus be in lot B?")...
 _SUBJECT_OPENS = re.compile(r"(?:^|[,.;:!?]|\b(?:and|but|so|then|now|also|might|could|would|should|can|will|may|must|shall|does|did|is|are|has))\s*$")
-# ...unless it is said to be missing ("the truck isn't there anymore": one is wanted) or a role follows that brings one in ("the car ahead brakes", "the bus in front stops").
+# ...unless it is said to be missing ("the truck isn't there anymore": one is wanted, SAID_MISSING) or a role
+# follows that brings one in ("the car ahead brakes", "the bus in front stops").
 _ROLE_AFTER = re.compile(r"\s*(?:ahead|in front|leading|behind)\b")
-_SAID_MISSING = re.compile(r"\b(?:missing|gone|absent|lost|no longer|not there|isn'?t there|aren'?t there|not here|disappeared|vanished"
-                           r"|anymore|any more)\b")
 # The rule lexicon's ways of asking for a thing ("i want", "we need"), as one pattern.
 _LEXICON_ADDS = re.compile(rf"(?<![a-z])(?:{'|'.join(re.escape(w) for w in sorted(lx.ADD_WORDS, key=len, reverse=True))})(?![a-z])")
 
@@ -445,7 +445,7 @@ def absent_but_added(masked: str, scope: Scope, scene: Scene) -> list[str]:
             before[0] in _CHANGES_EXISTING or bool(_AS_BEFORE.search(masked)) or (before[0] in _HANDLES_EXISTING and not asks_for_new))
         # "the bus should drive more carefully", "might the bus be in lot B?": said of one there
         points_at = points_at or (before[-1:] == ["the"] and not asks_for_new and _SUBJECT_OPENS.search(m.before[: m.before.rfind("the")]) is not None
-                                  and not _ROLE_AFTER.match(m.after) and not _SAID_MISSING.search(m.after))
+                                  and not _ROLE_AFTER.match(m.after) and not SAID_MISSING.search(m.after))
         if points_at and not scene.count(m.category) \
                 and any(a.category == m.category for a in scope.added) and m.category not in out:
             out.append(m.category)

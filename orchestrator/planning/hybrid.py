@@ -337,7 +337,7 @@ def _fits_the_mood(plan: Plan, request: Request) -> bool:
     for a command, and an addition or a removal only where the words say which ("that truck has left"
     says neither: its removal read by the rules stands against an addition)."""
     kind = _kind_of(plan)
-    return (kind == "look") == request.question and (kind not in ("add", "remove") or kind == request.polarity)
+    return _may_be_offered(plan, request) and (kind not in ("add", "remove") or kind == request.polarity)
 
 
 def _may_be_offered(plan: Plan, request: Request) -> bool:

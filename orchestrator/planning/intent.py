@@ -38,6 +38,9 @@ WHAT_IF = re.compile(r"\b(?:see|know|find out|check|test)\s+what (?:happens|woul
 BARE_STATE = re.compile(r"\b(?:is|are|looks?|feels?|seems?|'s|too|so|very|rather|quite)\s+(?:\w+\s+){0,2}?(?:empty|bare|deserted|lifeless|barren)\b"
                         # "empty roads and the lamps buzzing": places described, never "empty the roads"
                         r"|(?<!\bthe )\b(?:empty|deserted|bare)\s+(?:roads|streets|lanes|lots|car parks|pavements|sidewalks)\b")
+# "Too much" of a thing, not how far out of place one is ("the SUV is too much forward").
+_TOO_MUCH = (r"(?<!not )too much(?!\s+(?:forwards?|back|backwards?|left|right|north|south|east|west|to the|towards?|in front|behind|ahead|away"
+             r"|close|near|far|over|up|down)\b)")
 REMOVE_WORDS = re.compile(
     r"\b(remove|delete|quit|g[ei]t rid(?: of)?|get shot of|take (?:(?:it|them|that|those|this|these) )?(away|out|off)|take (?:\w+ ){1,3}?away\b|tow (?:\w+ ){1,3}?away\b|take (?:\w+ ){1,3}?out\b(?! of\b)|(?:has|have|needs?|must|should|ought) to come (?:down|out)\b(?! (?:of|from|to|onto|into)\b)|(?:cut|chop|saw|take|tear|knock|pull) (?:\w+ ){0,3}?down\b|drop (?:the|all|those|these|every)\b(?![^,.;]*\b(?:at|by|near|next|in|on|off|into|onto|beside|behind|front|there|here|to)\b)|out of scope|clear (away|out|the|it|them|lot|parking lot)\b|no longer|don'?t want|do not want"
     r"|not (want|have|need|keep)|no more(?! (?:and|or|than)\b)|without(?! \w+ing\b)(?!\s+an?\s+(?!single\b))|fewer|less(?! in the way| of an? (?:obstacle|problem|nuisance|hazard|eyesore))|lose|eliminate|erase|discard|scrap"
@@ -59,7 +62,8 @@ REMOVE_WORDS = re.compile(
     r"|pull (?:\w+ ){1,4}(?:from|off) (?=the|lot|parking|it|there)"
     # "clear most of the cars out of lot B", "clear the junk off the road": gone from there
     r"|clear (?:\w+ ){1,4}(?:out of|off|from)"
-    r"|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much(?!\s+(?:forwards?|back|backwards?|left|right|north|south|east|west|to the|towards?|in front|behind|ahead|away|close|near|far|over|up|down)\b)"
+    r"|not (?:quite |nearly )?(?:so|as|that) many|too many|"
+    + _TOO_MUCH +
     # "the seat and the bin should both go": gone, with no place or way to go to after it
     r"|(?:should|can|could|must|may|has to|have to|needs? to|(?:has |have |'s |'ve )?got to|gotta) (?:all |both |just )?go(?: away)?"
     r"(?=\s*(?:[,.;!?]|$|(?:i guess|i think|please|now|too|as well)\b)))\b"
@@ -93,6 +97,9 @@ REMINISCED = re.compile(r"\b(?:back (?:when|in (?:my|the|those) days?|home|then|
 # Asking for less going on: "make it a bit quieter out there", "calm the street down", "less busy".
 QUIETER = re.compile(r"\b(?:quieter|calmer|less busy|not so busy|emptier|less crowded|less hectic|calm (?:it|things|the \w+) down)\b")
 # A thing said to be missing: "there's no bin", "we have no benches", "the stop has no shelter" (said before the thing).
+# A thing said after it to be gone ("the bench is missing", "the truck isn't there anymore"): a wish for it, not one there.
+SAID_MISSING = re.compile(r"\b(?:missing|gone|absent|lost|nowhere|no longer|not there|isn'?t there|aren'?t there|not here|disappeared|vanished"
+                          r"|anymore|any more)\b")
 NONE_THERE = re.compile(r"\b(?:there(?:'s| is|s| are|re)|we(?:'ve| have)|(?:it|this|that|they) (?:has|have)|(?:has|have) got|got)\s+no\s+(?:[a-z]+\s+)?$")
 LIVELIER = re.compile(r"\b(?:busier|more busy|livelier|more lively|liven (?:it |\w+ )?up|more going on|more life)\b")
 HABITUAL = re.compile(r"\b(?:people|someone|somebody|everyone|students|drivers|pedestrians)\s+(?:will|often|usually|always|sometimes|tend to)\b")
@@ -105,7 +112,7 @@ _HEDGE = r"(?:a\s?bit|a little|a touch|slightly|somewhat|mildly|just a bit|a tad
 WEATHER_HEDGED = re.compile(rf"\b{_HEDGE}\s+(?:of\s+)?{_WEATHER_WORD}"
                             rf"|\b{_WEATHER_WORD}[\s,]+(?:\w+[\s,]+){{0,3}}?{_HEDGE}(?!\s+(?:more|harder|heavier|stronger|thicker))\b")
 # Fewer of a kind, not none: "not so many trees", "too many cones", "thin out the benches".
-FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less(?! in the way| of an? (?:obstacle|problem|nuisance|hazard|eyesore))|(?:do|does|did)(?:n't| not) (?:\w+ ){0,3}need (?:quite |nearly )?(?:so|as|that) (?:much|many)|not (?:quite |nearly )?(?:so|as|that) many|too many|(?<!not )too much(?!\s+(?:forwards?|back|backwards?|left|right|north|south|east|west|to the|towards?|in front|behind|ahead|away|close|near|far|over|up|down)\b)|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cut down on|reduce)\b")
+FEWER_WORDS = re.compile(r"\b((?:keep|leave) (?:just|only) (?:the )?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)|(?:is|are|'s|would be) (?:plenty|enough)|fewer|less(?! in the way| of an? (?:obstacle|problem|nuisance|hazard|eyesore))|(?:do|does|did)(?:n't| not) (?:\w+ ){0,3}need (?:quite |nearly )?(?:so|as|that) (?:much|many)|not (?:quite |nearly )?(?:so|as|that) many|too many|" + _TOO_MUCH + r"|thin(?:s|ned|ning)? (?:\w+ ){0,2}out|cut down on|reduce)\b")
 # How many of them to keep: "keep just two", "leave one of them" (the amount is group 1).
 # "one is plenty", "two of them would be enough": as many kept as that.
 KEEP_SOME = re.compile(r"\b(?:(?:keep|leave)\s+(?:just |only |me )?(?:the )?(?=(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b)"
@@ -583,6 +590,13 @@ _SUGGESTED = re.compile(r"^(?:(?:maybe|perhaps|possibly|how about|if there'?s (?
 _HEDGE_AFTER = re.compile(r"(?:[,;:\u2013\u2014]|\s-)\s*((?:maybe|perhaps|possibly|how about)\b.*)$")
 
 
+def _suggested_after(low: str) -> bool:
+    """Whether a statement ends in a hedged suggestion ("the bus stop looks lonely - maybe a couple of folks waiting
+    there?"), not in a question ("which car is nearest, maybe a sedan?")."""
+    hedged = _HEDGE_AFTER.search(low)
+    return hedged is not None and not _QUESTION_START.search(low) and _SUGGESTED.match(low[hedged.start(1) :]) is not None
+
+
 # A request to take back the last change or bring it back, said in words rather than as the
 # `undo` command ("oops, undo that", "revert the last edit", "scratch that", "redo please"): the
 # whole request, fillers aside. A request that names what to change back ("undo the red paint")
@@ -748,9 +762,8 @@ def asks(low: str) -> bool:
         return True  # "Current conditions, please: weather and clock.": no change and no value, so what they are
     if TAG_QUESTION.search(low) and not commands(low):
         return True  # "the SUV is parked, yeah?": whether what was said is so
-    hedged = _HEDGE_AFTER.search(low)  # "the bus stop looks lonely - maybe a couple of folks waiting there?"
-    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or (hedged is not None and not _QUESTION_START.search(low) and _SUGGESTED.match(low[hedged.start(1):])) or _WRAPPED.search(low) or _IMPERATIVE.match(low.strip())
-                  or _setting_offered(low) or _HAVE_ONE.match(low) is not None or _thing_asked(low))
+    polite = bool(_POLITE.search(low) or _SUGGESTED.match(low.strip()) or _suggested_after(low) or _WRAPPED.search(low)
+                  or _IMPERATIVE.match(low.strip()) or _setting_offered(low) or _HAVE_ONE.match(low) is not None or _thing_asked(low))
     info = _INFO.search(_AMOUNT_CHANGED.sub(" ", low))  # "double the number of benches" asks for no count
     return bool(info or _LOOKUP.match(low) or _READ_ONLY.search(low)) or (
         not polite and (bool(_QUESTION_START.search(low)) or low.rstrip().endswith("?")
@@ -771,6 +784,7 @@ __all__ = [
     "REMINISCED",
     "REMOVE_WORDS",
     "REPORTED",
+    "SAID_MISSING",
     "TAG_QUESTION",
     "WHAT_IF",
     "WHICH_KIND",

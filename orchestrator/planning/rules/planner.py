@@ -32,6 +32,7 @@ from drivetwin.orchestrator.planning.intent import (
     REMINISCED,
     REMOVE_WORDS,
     REPORTED,
+    SAID_MISSING,
     WHAT_IF,
     asks,
     commands,
@@ -215,9 +216,8 @@ _NEGATED_WISH = re.compile(
 # The guess noted when a request is only a statement, read as the edit it describes.
 STATEMENT_READ = "read a statement of how things are as the request"
 # A statement's subject, said as a thing already there ("the truck is in a daft spot", "the trucks
-# are blocking the lane"), and one that says it is not there ("the bench is missing"): a wish for it.
+# are blocking the lane"), and one that says it is not there ("the bench is missing", SAID_MISSING): a wish for it.
 _DEFINITE_SUBJECT = re.compile(r"^\s*(?:(?:now|still|and|but)\s+)?(?:the|this|that|these|those|our|my)\s+(?P<thing>[a-z' -]+?)\s+(?:is|are|was|were)\b")
-_SAID_ABSENT = re.compile(r"\b(?:missing|gone|absent|lost|nowhere|no longer|not there|isn'?t there|aren'?t there|not here|disappeared|vanished)\b")
 
 
 # A word right after a step's length that is no filler: the way it was to go, said and not read.
@@ -229,7 +229,7 @@ def _spoken_of_as_there(text: str, calls: list[ToolCall], scene: Scene) -> str |
     """The category a statement's subject names as already there ("the truck is in a daft spot")
     that the scene has none of and its reading adds: a presupposition, not a wish for one."""
     said = _DEFINITE_SUBJECT.match(text.lower())
-    if said is None or _SAID_ABSENT.search(text.lower()):
+    if said is None or SAID_MISSING.search(text.lower()):
         return None
     named = {m.category for m in ph.find_categories(said.group("thing"))}
     added = {c.args.get("category") for c in calls if c.tool == "add_asset"}

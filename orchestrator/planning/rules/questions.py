@@ -70,8 +70,8 @@ _DISTANCE = re.compile(rf"{_JOURNEY.pattern}|"
                        rf"{_WAY}|"  # the distance says the way too
                        r"stone'?s throw (?:from|to|of)|(?:a |long |short )?walk (?:from|to)|how many (?:metres|"
                        r"meters|feet|yards) (?:from|to|between|apart))\b|\bfar\s*\??\s*$"
-                       r"|\bfrom\b.*\bto\b.*\bin (?:metres|meters|feet|yards)\W*$"
-                       r"|\bmeasure (?:the |a )?[a-z_0-9]+(?: [a-z_0-9]+)? (?:to|and) ")  # "measure the bench to the bin"  # "from us to the crosswalk, in metres"
+                       r"|\bfrom\b.*\bto\b.*\bin (?:metres|meters|feet|yards)\W*$"  # "from us to the crosswalk, in metres"
+                       r"|\bmeasure (?:the |a )?[a-z_0-9]+(?: [a-z_0-9]+)? (?:to|and) ")  # "measure the bench to the bin"
 _SUPERLATIVE = re.compile(r"\b(?:nearest|closest|furthest|farthest|most near|most close|nearer|closer)\b")
 _ENDS = re.compile(r"\b(?:from|to|and|between|apart)\b")
 _ASKER_ALONE = re.compile(r"^\W*(?:me|us|i|we|here)\W*$")

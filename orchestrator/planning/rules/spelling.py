@@ -1334,6 +1334,49 @@ _PARTICLE = re.compile(r"(?<=[a-z0-9)])\s+(?:na|naa|ka|kha|krub|krap|khrap|lah|l
                        r"|habibi|nu|po|ne|yo)(?=\s*(?:[,.!?;]|$))", re.IGNORECASE)
 
 
+# How people say a few things the readings take plainly, each as the plain words (see _said_plainly).
+_CUE_AFTER_PAUSE = re.compile(r"\s*(?:\.{2,}|\u2026)\s*(?:and\s+)?go\s*[.!]*\s*$", re.IGNORECASE)  # "... and go.": a cue, no drive
+_PAUSE = re.compile(r"\s*(?:\.{2,}|\u2026)\s*(?=\S)")  # "street lights on... go", "the hydrant... just disappears"
+_HYPHENED_MEASURE = re.compile(r"\b(\d+(?:\.\d+)?)-(seconds?|secs?|metres?|meters?|minutes?|hours?|feet|foot)\b", re.IGNORECASE)  # "the 5-second mark"
+_TIME_MARK = re.compile(r"\b(?:at|on|by) the (\d+(?:\.\d+)?) ?(?:seconds?|secs?|s) mark\b", re.IGNORECASE)
+# "need back it about 2 metre": the "to" of a wish left out.
+_WISH_WITHOUT_TO = re.compile(r"\b(need|needs|want|wants)\s+(back|move|shift|push|pull|turn|put|take|roll|bring)\s+(?=(?:it|them|the|that|this)\b)",
+                              re.IGNORECASE)
+# "slow us down", "roll us back", "Us: 8 m/s": the driver's "us" is the ego ("give us rain" is the speaker's).
+_DRIVERS_US = re.compile(r"\b(slow|speed|move|put|place|roll|back|stop|turn|shift|park|brake|drive|reverse|pull)\s+us\b", re.IGNORECASE)
+_US_LABEL = re.compile(r"^\s*us\s*:", re.IGNORECASE)
+# "8 m/s, hold it": keep to that speed, said after one.
+_SPEED_WORDS = re.compile(r"m/s|km/?h|kph|mph|(?:a|per) second|an hour", re.IGNORECASE)
+_HOLD_IT = re.compile(r",?\s*(?:and\s+)?hold (?:it|that|steady)(?:\s+there)?(?=\s*[.!]*\s*$)", re.IGNORECASE)
+# "remove tree 1 and tree 4, other trees leave", "the other cars stay where they are": the rest left as they are.
+_REST_LEFT = re.compile(r",?\s*(?:the\s+)?(?:other|remaining|rest of the)\s+[a-z]+\s+(?:(?:can|should|will|may)\s+)?(?:leave|stay|remain|keep|untouched)\b"
+                        r"(?:\s+(?:put|(?:where|as)\s+(?:they|it)\s+(?:are|is|were|was|stand|stands)))?\.?", re.IGNORECASE)
+# "remove the stop sign. Lamp stays.", "..., the bench is fine", "car keep": what is kept, said as how it stays.
+_THING_STAYS = re.compile(r"(?:[.;,]|\s-)\s*(?:the\s+|that\s+|this\s+|but\s+the\s+)?([a-z_]+(?:\s[a-z_0-9]+)?)\s+"
+                          r"(?:stays|remains|can stay|should stay|is staying|is fine|is ok|is okay|stay|keep|remain)(?=\s*(?:[.!;]|$))", re.IGNORECASE)
+# "list every asset within 12 m of ...": whatever stands there.
+_EVERY_ASSET = re.compile(r"\b(?:every|each) (?:single )?(?:asset|object|item)\b|\ball (?:the |of the )?(?:assets|objects|items)\b", re.IGNORECASE)
+# "ease off": a driver's word for slowing ("ease off the snow" is less snow).
+_EASE_OFF = re.compile(r"\bease (?:off|up)\b(?!\s+(?:on\s+)?(?:the|that|this|those|these|some|it|them|with)\b)", re.IGNORECASE)
+# "throw every one of them out": all of them.
+_EVERY_ONE_OF = re.compile(r"\b(?:every|each) (?:single )?one of\b", re.IGNORECASE)
+
+
+def _said_plainly(text: str) -> str:
+    """`text` with a pause, a cue, a measure or a time written with a hyphen or as a mark, a sign-off particle, a
+    wish without its "to", the driver's "us", "hold it" after a speed, the rest said to stay, "every asset",
+    "ease off" and "every one of" in the plain words the readings take."""
+    text = _PAUSE.sub(", ", _CUE_AFTER_PAUSE.sub(".", text))
+    text = _TIME_MARK.sub(r"after \1 seconds", _HYPHENED_MEASURE.sub(r"\1 \2", text))
+    text = _WISH_WITHOUT_TO.sub(r"\1 to \2 ", _PARTICLE.sub("", text))
+    text = _US_LABEL.sub("ego:", _DRIVERS_US.sub(r"\1 the ego", text))
+    if _SPEED_WORDS.search(text):
+        text = _HOLD_IT.sub("", text)
+    text = _REST_LEFT.sub("", text)
+    text = _THING_STAYS.sub(lambda m: f"; keep the {m.group(1)}" if ph.find_categories(m.group(1).lower()) else m.group(0), text)
+    return _EVERY_ONE_OF.sub("all of", _EASE_OFF.sub("slow down", _EVERY_ASSET.sub("everything", text)))
+
+
 # Two words joined by a hyphen ("the bus-stop", "a trash-bin"): a name of two words when a place or a thing has it.
 _HYPHENED = re.compile(r"\b([A-Za-z]+)-([A-Za-z]+)\b")
 
@@ -1350,31 +1393,7 @@ def repair(text: str, scene: Scene) -> Repaired:
     text = _LIST_MARKER.sub("", _MARKDOWN.sub("", text))
     text = without_left_as_it_is(text)
     text = _MUCH_ADJECTIVE.sub(r"\1 ", text)
-    text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?:and\s+)?go\s*[.!]*\s*$", ".", text, flags=re.IGNORECASE)  # "... and go.": a cue, no drive
-    text = re.sub(r"\s*(?:\.{2,}|\u2026)\s*(?=\S)", ", ", text)  # "street lights on... go", "the hydrant... just disappears": a pause
-    text = re.sub(r"\b(\d+(?:\.\d+)?)-(seconds?|secs?|metres?|meters?|minutes?|hours?|feet|foot)\b", r"\1 \2", text, flags=re.IGNORECASE)  # "the 5-second mark"
-    text = re.sub(r"\b(?:at|on|by) the (\d+(?:\.\d+)?) ?(seconds?|secs?|s) mark\b", r"after \1 seconds", text, flags=re.IGNORECASE)
-    text = _PARTICLE.sub("", text)
-    # "need back it about 2 metre": the "to" of a wish left out
-    text = re.sub(r"\b(need|needs|want|wants)\s+(back|move|shift|push|pull|turn|put|take|roll|bring)\s+(?=(?:it|them|the|that|this)\b)", r"\1 to \2 ",
-                  text, flags=re.IGNORECASE)  # "lamp on na, very dark": a sign-off word of the speaker's language, no word of the request
-    # "slow us down", "roll us back", "Us: 8 m/s": the driver's "us" is the ego ("give us rain" is the speaker's)
-    text = re.sub(r"\b(slow|speed|move|put|place|roll|back|stop|turn|shift|park|brake|drive|reverse|pull)\s+us\b", r"\1 the ego", text, flags=re.IGNORECASE)
-    text = re.sub(r"^\s*us\s*:", "ego:", text, flags=re.IGNORECASE)
-    if re.search(r"m/s|km/?h|kph|mph|(?:a|per) second|an hour", text, flags=re.IGNORECASE):  # "8 m/s, hold it": keep to that speed
-        text = re.sub(r",?\s*(?:and\s+)?hold (?:it|that|steady)(?:\s+there)?(?=\s*[.!]*\s*$)", "", text, flags=re.IGNORECASE)
-    # "remove tree 1 and tree 4, other trees leave": the rest are left as they are, nothing to do
-    text = re.sub(r",?\s*(?:the\s+)?(?:other|remaining|rest of the)\s+[a-z]+\s+(?:(?:can|should|will|may)\s+)?(?:leave|stay|remain|keep|untouched)\b"
-                  r"(?:\s+(?:put|(?:where|as)\s+(?:they|it)\s+(?:are|is|were|was|stand|stands)))?\.?",
-                  "", text, flags=re.IGNORECASE)
-    # "remove the stop sign. Lamp stays.", "..., the bench is fine": what is kept, said as how it stays
-    text = re.sub(r"(?:[.;,]|\s-)\s*(?:the\s+|that\s+|this\s+|but\s+the\s+)?([a-z_]+(?:\s[a-z_0-9]+)?)\s+(?:stays|remains|can stay|should stay|is staying|is fine|is ok|is okay|stay|keep|remain)"
-                  r"(?=\s*(?:[.!;]|$))", lambda m: f"; keep the {m.group(1)}" if ph.find_categories(m.group(1).lower()) else m.group(0),
-                  text, flags=re.IGNORECASE)  # a thing of the catalog ("any one is fine" keeps nothing)
-    text = re.sub(r"\b(?:every|each) (?:single )?(?:asset|object|item)\b|\ball (?:the |of the )?(?:assets|objects|items)\b", "everything", text,
-                  flags=re.IGNORECASE)  # "list every asset within 12 m of ...": whatever stands there
-    text = re.sub(r"\bease (?:off|up)\b(?!\s+(?:on\s+)?(?:the|that|this|those|these|some|it|them|with)\b)", "slow down", text, flags=re.IGNORECASE)  # a driver's word ("ease off the snow" is less snow)
-    text = re.sub(r"\b(?:every|each) (?:single )?one of\b", "all of", text, flags=re.IGNORECASE)  # "throw every one of them out": all
+    text = _said_plainly(text)
     text = _HYPHENED.sub(lambda m: m.group(1) + " " + m.group(2) if _two_word_name(m, scene) else m.group(0), text)
     text = _SAID_TOGETHER_RE.sub(lambda m: _SAID_TOGETHER[m.group(0).lower()], text)
     text = re.sub(r"(?<![a-z])['\u2019]em\b", "them", text, flags=re.IGNORECASE)  # "eight of 'em"
