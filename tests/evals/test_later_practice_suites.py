@@ -48,6 +48,7 @@ from drivetwin.evals import (
     practice36_source,
     practice37_source,
     practice38_source,
+    practice39_source,
     run_suite,
 )
 from drivetwin.evals.case import Suite, load_suite
@@ -163,6 +164,10 @@ BRIEFS: dict[str, Brief] = {
     # the vague and erroneous grades of every task hold 13, the rest 11 or 12.
     "practice38": Brief(340, 11, 11, practice38_source, multi_turn=45, planned=30, compound=20,
                         weighted_grades=("vague", "erroneous")),
+    # Eight voices: Persian (Farsi) speaker, Romanian speaker, Czech speaker, Hungarian speaker, podcast host talking to
+    # listeners, auctioneer, national park ranger, bus dispatcher; arrangement (every grade) and the vague and erroneous
+    # grades of every task hold 13, the rest 11 or 12.
+    "practice39": Brief(340, 11, 11, practice39_source, multi_turn=45, planned=30, compound=20, weighted_grades=("vague", "erroneous")),
 }
 # About 8 % of the cases ask for what the world cannot do; the right outcome is a refusal.
 IMPOSSIBLE_SHARE = (0.06, 0.11)
