@@ -46,7 +46,14 @@ from drivetwin.worlds.storyboard import (
     TimeToCollisionCondition,
     TrafficLight,
 )
-from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, point_along, point_in_polygon, surface_at
+from drivetwin.worlds.surface import (
+    DRIVABLE,
+    nearest_lane,
+    nearest_on_polyline,
+    point_along,
+    point_in_polygon,
+    surface_at,
+)
 from pydantic import Field
 
 __all__ = ["AddEvent", "AddManoeuvre", "ManoeuvreSpec", "SetLightPhases", "TriggerSpec"]
@@ -67,6 +74,8 @@ KERB_STEP_M = 0.5
 MAX_CROSSING_M = 40.0
 # "Reach a place" holds within this radius of the place.
 REACH_TOLERANCE_M = 3.0
+# A place this far from every lane's edge is reached by a vehicle where its lane passes it; further, never.
+KERBSIDE_REACH_M = 25.0
 
 
 class ManoeuvreSpec(ToolArgs):
@@ -230,7 +239,23 @@ def build_condition(scene: Scene, actor: str, spec: TriggerSpec) -> Condition:
         if not spec.place:
             raise RuleViolation("trigger", "a reach trigger needs a place")
         target = resolve_target(scene, spec.place)
-        return ReachPositionCondition(actor=watched, position=(target.x, target.y), tolerance=REACH_TOLERANCE_M)
+        position = (target.x, target.y)
+        lanes = scene.roads.lanes
+        if category(find_asset(scene, watched).category).drives and lanes:
+            # A vehicle keeps to the lanes: "stop at the library" is where its lane passes the library (the
+            # lane's point nearest it), and a place no lane passes near ("near the fountain") is never reached.
+            actor_at = find_asset(scene, watched).pose
+            own = nearest_lane(scene, actor_at.x, actor_at.y)  # its own lane first: the point it will drive through
+            lane = own if own is not None and nearest_on_polyline(target.x, target.y, own.centreline).distance - own.width / 2 \
+                <= KERBSIDE_REACH_M else min(lanes, key=lambda ln: nearest_on_polyline(target.x, target.y, ln.centreline).distance)
+            nearest = nearest_on_polyline(target.x, target.y, lane.centreline)
+            if nearest.distance - lane.width / 2 > KERBSIDE_REACH_M:
+                raise RuleViolation("trigger", f"{watched} drives on the roads and never comes near {target.name} "
+                                    f"({nearest.distance - lane.width / 2:.0f} m from the nearest lane); name a place on "
+                                    "its way, or a distance from another actor")
+            if nearest.distance > lane.width / 2 + REACH_TOLERANCE_M:
+                position = (nearest.x, nearest.y)
+        return ReachPositionCondition(actor=watched, position=position, tolerance=REACH_TOLERANCE_M)
     other = find_asset(scene, spec.other or actor).id
     if other == watched:
         raise RuleViolation("trigger", f"a {spec.kind} trigger needs two different assets, got {watched} twice")

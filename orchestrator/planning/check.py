@@ -102,7 +102,7 @@ from drivetwin.orchestrator.planning.request import Request, read_request
 from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
-from drivetwin.orchestrator.planning.rules.edits import FINAL_COUNT, FURTHEST, TOO_CONSPICUOUS, kept_at
+from drivetwin.orchestrator.planning.rules.edits import EVERY_OTHER, FINAL_COUNT, FURTHEST, TOO_CONSPICUOUS, kept_at
 from drivetwin.orchestrator.planning.rules.environment import HEAVY_INTENSITY, LIGHT_INTENSITY, said_weaker
 from drivetwin.orchestrator.planning.rules.numbers import CAR_LENGTH_M, SPEED_UNIT, YARD_M, numbers_in, spelt_measures
 from drivetwin.orchestrator.planning.rules.places import (
@@ -438,6 +438,7 @@ def problems_of(request: Request, effect: Effect, context: PlanContext) -> list[
         grouped |= counted_kinds(request.low)  # "the second car from the left": SUVs are cars too
         grouped |= {k for head, kinds in shared_heads().items() if re.search(rf"\b{head}s?\b", request.low) for k in kinds}  # "a sign"
         grouped |= {a.category for a in context.scene.all_assets() if re.search(rf"\b{a.id}\b", request.low)}  # by id
+        grouped |= _concepts_said(request.low)  # "a chair next to the SUV": somewhere to sit
         strays = {a.category for a in touched} - request.categories - grouped - _companions(effect)
         if cleared:  # "clear lot B and put 2 buses there": what stood there
             strays -= {a.category for a in effect.removed} - {a.category for a in effect.added}
@@ -557,6 +558,7 @@ def _coverage(request: Request, effect: Effect, scene: Scene, memory: Memory) ->
     # a number, a place, a lane, a state, "fewer" or a side limits how many go
     limited = bool(request.numbers or request.place or request.lane or request.state or FEWER_WORDS.search(request.low)
                    or md.outer_direction(request.low) or request.excepted  # "the westernmost lamp", "not the ego"
+                   or EVERY_OTHER.search(request.low)  # "every second street light"
                    or side_of(request.low, scene) is not None)  # "the lamps west of Campus Drive"
     out += partial_removal(request.masked, scope, scene, limited)
     out += all_when_some(request.masked, scope, scene)
@@ -908,6 +910,8 @@ def _numbers_used(effect: Effect, scene: Scene, place: str | None, ego: bool = F
     # "the car number 2": the number in the id of a thing the plan names
     counts += [float(m.group(1)) for c in effect.calls for v in c.args.values() for i in (v if isinstance(v, list) else [v])
                if isinstance(i, str) and (m := re.search(r"_(\d+)$", i)) and scene.asset(i) is not None]
+    # "how far apart are the two gates": how many places the plan names
+    counts.append(float(len({v for c in effect.calls for v in c.args.values() if isinstance(v, str) and scene.landmark(v) is not None})))
     # a grid of 12 in 4 columns is 3 rows
     counts += [float(math.ceil(int(c.args["count"]) / int(c.args["columns"]))) for c in effect.calls
                if isinstance(c.args.get("count"), int) and isinstance(c.args.get("columns"), int) and c.args["columns"] > 0]

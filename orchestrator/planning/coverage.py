@@ -39,7 +39,7 @@ from drivetwin.orchestrator.planning.rules import lexicon as lx
 from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.clock import clock_time
-from drivetwin.orchestrator.planning.rules.edits import TIE_M
+from drivetwin.orchestrator.planning.rules.edits import OFF_THE_ROAD, TIE_M
 from drivetwin.orchestrator.planning.rules.environment import TIME_NOT_SET
 from drivetwin.orchestrator.planning.rules.numbers import spelt_counts
 from drivetwin.orchestrator.planning.rules.places import BETWEEN, BY_IT, PLACE_SAID, point_named, road_said, side_of
@@ -47,7 +47,7 @@ from drivetwin.orchestrator.planning.rules.reading import numbered_absent, numbe
 from drivetwin.orchestrator.planning.rules.spelling import ASSET_ID, edits, english_words, is_known, vocabulary
 from drivetwin.tools.appearance import TIME_PRESETS
 from drivetwin.tools.base import ToolCall
-from drivetwin.tools.search import compass_of
+from drivetwin.tools.search import compass_of, lane_under
 from drivetwin.worlds.catalog import catalog
 from drivetwin.worlds.scene import AssetInstance, Lane, Scene
 
@@ -240,8 +240,9 @@ def named_things(masked: str, categories: Iterable[str], scene: Scene) -> set[st
     for i, m in enumerate(mentions):
         said = masked[m.start : m.end].strip()
         rest = re.findall(r"[a-z0-9']+", masked[m.start :])
-        near_place = any(
-            len(p.split()) > len(said.split()) and edits(" ".join(rest[: len(p.split())]), p) <= 2 for p in places
+        near_place = any(  # ("a car parked on the street": a word of its own, never "car park" misspelt)
+            len(p.split()) > len(said.split()) and edits(" ".join(rest[: len(p.split())]), p) <= 2
+            and all(w == v or w not in english_words() for w, v in zip(rest[: len(p.split())], p.split(), strict=False)) for p in places
         )
         compound = i > 0 and not masked[mentions[i - 1].end : m.start].strip()
         missing = NONE_THERE.search(masked[: m.start]) is not None  # "people keep dropping cans, there's no bin": wanted
@@ -466,8 +467,8 @@ def indefinite_but_moved(masked: str, scope: Scope, scene: Scene) -> list[str]:
         # "put tree at lot A": a bare noun after a placing verb may be a new one; the plan may not assume
         asked_new = bool(before) and (before[-1] in _INDEFINITE or before[-1] in ph.NUMBER_WORDS or before[-1].isdigit()
                                       or before[-1] in ("put", "place", "plant", "stick"))
-        if before[-2:-1] and before[-2] in ("all", "both", "the", "those", "these"):
-            asked_new = False  # "all three vehicles", "the two cars": things already there, counted
+        if before[-2:-1] and before[-2] in ("all", "both", "the", "those", "these", "first", "last", "other", "remaining"):
+            asked_new = False  # "all three vehicles", "the two cars", "the last two cones": things already there, counted
         if before[-1:] == ["one"] and before[-2:-1] and before[-2] in _CHANGES_EXISTING - {"place", "position"}:
             asked_new = False  # "move one bench to the gate": one of those there
         if re.match(r"\s*(?:number |no\.? |#)?\d+\b(?!\s*(?:m\b|metres?|meters?|km|ft|feet|foot|yards?|m/s|mph|km/h|kph|seconds?|s\b|%))",
@@ -725,6 +726,7 @@ def back_reference(masked: str, categories: Iterable[str], scope: Scope, memory:
                    f"but the plan acts on {', '.join(strays)}")
     existing = [i for i in dict.fromkeys(earlier) if scene.asset(i) is not None]
     acted = {a.id for a in scope.touched}
+    acted |= {str(c.args["asset"]) for c in scope.calls if c.tool == "move_asset" and c.args.get("asset")}  # "spread them out": the middle one stays
     counted = counted or KEEP_SOME.search(masked) is not None or _PART_OF.search(masked) is not None  # "just leave one of them"
     if said in _PLURAL_POINTERS and not scope.added and not counted and 0 < len(acted & set(existing)) < len(existing):
         out.append(f"you said {said!r} ({len(existing)} of them), but the plan acts on {len(acted & set(existing))}")
@@ -757,6 +759,8 @@ def unpointed(masked: str, scope: Scope, scene: Scene) -> list[AssetInstance]:
     low = ph.normalise(masked)
     if any(ph.normalise(n).strip() in low for lm in scene.landmarks for n in lm.names()):
         return []
+    if OFF_THE_ROAD.search(low.strip()) and all(a in scope.removed and lane_under(a, scene.roads.lanes) for a in acted):
+        return []  # "clear the road": what stands on it
     if any(re.search(rf"\b{re.escape(i)}\b", masked) for a in acted for i in (a.id, a.id.replace("_", " "))):
         return []
     # a mass word for their kind points at them ("drop the greenery": the trees)

@@ -384,12 +384,46 @@ _ALL_BUT = re.compile(rf"\s+but\s+(?={_DETERMINER}\b)", re.IGNORECASE)
 _EVERY = re.compile(r"\b(?:everything|anything|all|every|each)\b[^,.;!?]*$", re.IGNORECASE)
 
 
+# What is kept or said to stay, then what to do: "keep the bench but lose the bin", "the bench can stay, get rid of the bin".
+_STAYS_FIRST = re.compile(rf"^\s*(?={_DETERMINER}\s+[a-z_ ]+?\s+(?:(?:can|should|must|will|may)\s+)?(?:stays?|remains?|is fine|is ok|is okay)\b)",
+                          re.IGNORECASE)
+_THEN_ACT = re.compile(r"\s*(?:,\s*(?:but|and|though|while)?|\s(?:but|and|though|while))\s+(?:(?:just|only|please|do)\s+)?", re.IGNORECASE)
+
+
+def _kept_then_acted(text: str) -> tuple[int, int, int] | None:
+    """The contrast of a thing kept said before the request ("keep the bench but lose the bin"):
+    the thing is excepted when a command follows it."""
+    kept = _KEPT_FIRST.match(text) or _STAYS_FIRST.match(text)
+    if kept is None:
+        return None
+    for then in _THEN_ACT.finditer(text, kept.end()):
+        if commands(text[then.end() :].lower()):
+            thing = _STAY_TAIL.sub("", text[kept.end() : then.start()]).split()
+            # the thing alone ("keep the SUV moving" is a request of its own): an id, or ends on a catalog word
+            if 1 <= len(thing) <= 4 and (re.fullmatch(r"[a-z_]+_\d+", thing[-1]) or (len(thing) > 1 and thing[-1].lower().rstrip("s") in _thing_words())):
+                return 0, kept.end(), then.start()
+            return None
+    return None
+
+
+# How a thing said first stays: "(the bench) can stay", "(the bin) is fine".
+_STAY_TAIL = re.compile(r"\s+(?:(?:can|should|must|will|may)\s+)?(?:stays?|remains?|is fine|is ok|is okay)\b.*$", re.IGNORECASE)
+
+
+@cache
+def _thing_words() -> frozenset[str]:
+    """The last words of the catalog's names for things ("bin", "light", "car"), singular."""
+    return frozenset(n.replace("_", " ").split()[-1].lower().rstrip("s") for c in catalog().values() for n in (c.name, *c.synonyms))
+
+
 def _contrasts(text: str) -> list[tuple[int, int, int]]:
     """(start, start of the excepted words, end) of each contrast clause after the request's first words."""
     out = []
     kept = _KEPT_FIRST.match(text)  # "keep the trees, remove everything else": the trees are excepted
     if kept is not None and _THE_REST.search(text, kept.end()) and (end := _CONTRAST_END.search(text, kept.end())) is not None:
         out.append((0, kept.end(), end.start()))
+    elif (first := _kept_then_acted(text)) is not None:
+        out.append(first)
     found = [*_CONTRAST.finditer(text), *(m for m in _ALL_BUT.finditer(text) if _EVERY.search(text[: m.start()]))]
     for m in sorted(found, key=lambda m: m.start()):
         if len(text[: m.start()].split()) < 2:
@@ -420,7 +454,7 @@ def without_salutations(text: str) -> str:
 
 def excepted(text: str) -> list[str]:
     """The things a request says it does not mean ("remove the cars, not the ego" -> ["the ego"])."""
-    return [text[said:end].strip() for _, said, end in _contrasts(text) if text[said:end].strip()]
+    return [_STAY_TAIL.sub("", text[said:end]).strip() for _, said, end in _contrasts(text) if text[said:end].strip()]
 
 
 def without_contrast(text: str) -> str:

@@ -90,14 +90,24 @@ _STOP_AT = re.compile(r"\b(stops?|stopping|brakes?|braking|halts?|halting|pulls?
                       r"\s+(?:at|before|(?:just|right) before|short of|in front of|ahead of)\s+(?=the\s+)")
 
 
+# A change of speed at a place: "slow to 5 m/s near the fountain", "speed up at the east gate".
+_SPEED_AT = re.compile(r"\b((?:slows?|slowing|speeds?|speeding|accelerates?|accelerating|decelerates?|decelerating)"
+                       r"(?:\s+(?:down|up))?(?:\s+to\s+\d+(?:\.\d+)?\s*(?:m/s|km/h|kmh|kph|mph))?)"
+                       r"\s+(?:near|at|by|next to|outside|in front of|as it passes)\s+(?=the\s+)")
+
+
 def _stop_at_place(low: str, scene: Scene) -> str:
-    """`low` with "stop at <a landmark>" said as "stop when it gets to <it>", which a reach trigger reads."""
+    """`low` with "stop at <a landmark>" said as "stop when it gets to <it>", which a reach trigger
+    reads, and so a change of speed at one ("slow to 5 m/s near the fountain")."""
     names = [ph.normalise(n).strip() for lm in scene.landmarks for n in lm.names()]
     said = _STOP_AT.search(low)
-    if said is None or not any(low[said.end() :].startswith(f"the {n}") for n in names):
-        return low
-    verb = said.group(1) if said.group(1).startswith("brak") else "stop"  # "pull up", "halt": a stop
-    return low[: said.start()] + f"{verb} when it gets to " + low[said.end() :]
+    if said is not None and any(low[said.end() :].startswith(f"the {n}") for n in names):
+        verb = said.group(1) if said.group(1).startswith("brak") else "stop"  # "pull up", "halt": a stop
+        return low[: said.start()] + f"{verb} when it gets to " + low[said.end() :]
+    said = _SPEED_AT.search(low)
+    if said is not None and any(low[said.end() :].startswith(f"the {n}") for n in names):
+        return low[: said.start()] + f"{said.group(1)} when it gets to " + low[said.end() :]
+    return low
 
 
 def _repair_word(word: str) -> str:

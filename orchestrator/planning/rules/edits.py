@@ -109,6 +109,14 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
         mention = r.mentions[0]
         name = mention.category
         recent = [i for i in memory.last_added(name) if scene.asset(i) is not None]
+        other = _THE_OTHER_N.search(r.low[: mention.start]) if mention.plural else None
+        if other is not None:  # "the other two cones": of that kind, those the last edit left alone
+            touched = memory.last_touched()
+            left = [a.id for a in scene.assets if a.category == name and a.id not in touched]
+            many = int(other.group(1)) if other.group(1).isdigit() else ph.NUMBER_WORDS.get(other.group(1), 0)
+            if len(left) != many or len(left) == scene.count(name):
+                raise ph_error(f"which {many} {name.replace('_', ' ')}s? say them by number, e.g. '{name.replace('_', ' ')} 1 and 2'")
+            return left
         if recent and r.has(_RECENT):
             return recent if mention.plural else recent[-1:]
         # "the vehicles": every category of the group the catalog tags so, not only the one named
@@ -128,6 +136,8 @@ def _referenced(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[
                 present = _nearest_first(scene, present, centre)[0]
         if not present:
             return []
+        if _EVERY_OTHER.search(r.low[: mention.start]) and len(present) > 2:  # "every second street light": alternate ones
+            return alternate(scene, present)
         sized = _SIZE_PICKED.search(r.low[: mention.start]) or _SIZE_OF.match(r.low[mention.end :])
         # "the biggest vehicle", "the car that's largest", "the tallest of the trees"
         if sized is not None and (not mention.plural or " of " in sized.group(0)):
@@ -209,6 +219,40 @@ def _asked_about(memory: Memory, scene: Scene) -> list[str]:
     return sorted(named) if len(named) == 1 and scene.asset(next(iter(named))) is not None else []
 
 
+# Every other one of a row: "every second street light", "every other cone".
+EVERY_OTHER = re.compile(r"\bevery (?:second|other|2nd)\b")
+_EVERY_OTHER = re.compile(EVERY_OTHER.pattern + r"\s+$")  # said right before the thing
+# Things further than this across their line stand in another row ("the lamps on the north side" and the south).
+ROW_APART_M = 2.0
+
+
+def alternate(scene: Scene, ids: list[str]) -> list[str]:
+    """Every second one of the things (the second, fourth, ...), counted along each row they stand
+    in: rows run along the line the things spread most, told apart by how far across it they stand;
+    things in no row of three are counted along that line all together."""
+    things = [a for i in ids if (a := scene.asset(i)) is not None]
+    mx = sum(a.pose.x for a in things) / len(things)
+    my = sum(a.pose.y for a in things) / len(things)
+    sxx = sum((a.pose.x - mx) ** 2 for a in things)
+    syy = sum((a.pose.y - my) ** 2 for a in things)
+    sxy = sum((a.pose.x - mx) * (a.pose.y - my) for a in things)
+    angle = 0.5 * math.atan2(2 * sxy, sxx - syy)  # the line they spread most along
+    ux, uy = math.cos(angle), math.sin(angle)
+    along = {a.id: a.pose.x * ux + a.pose.y * uy for a in things}
+    across = {a.id: -a.pose.x * uy + a.pose.y * ux for a in things}
+    rows: list[list[AssetInstance]] = []
+    for a in sorted(things, key=lambda a: across[a.id]):
+        if rows and abs(across[a.id] - across[rows[-1][-1].id]) <= ROW_APART_M:
+            rows[-1].append(a)
+        else:
+            rows.append([a])
+    if all(len(row) < 3 for row in rows):
+        rows = [things]
+    return [a.id for row in rows for a in sorted(row, key=lambda a: along[a.id])[1::2]]
+
+
+# Those of a kind the last edit left alone: "the other two cones", "the other 3 benches".
+_THE_OTHER_N = re.compile(r"\bthe other (\d+|[a-z]+) $")
 # One of the things just added, by its place in the order they were added: "the second one", "the last of them".
 _ORDINALS = ("first", "second", "third", "fourth", "fifth", "sixth", "last")
 _NTH_ONE = re.compile(rf"\bthe ({'|'.join(_ORDINALS)}) (?:one|of them|of those)\b")
@@ -441,7 +485,8 @@ def _inside(point: tuple[float, float], polygon: list[tuple[float, float]], marg
 
 
 # The road as where things are taken from: "off the road", "out of our lane".
-_OFF_THE_ROAD = re.compile(r"\b(?:off|from|on|in|out of|blocking)\s+(?:the|our|my|this|that)\s+(?:\S+\s+)?(?:road|roads|lane|lanes|street)\b")
+OFF_THE_ROAD = re.compile(r"\b(?:off|from|on|in|out of|blocking)\s+(?:the|our|my|this|that)\s+(?:\S+\s+)?(?:road|roads|lane|lanes|street)\b"
+                          r"|^\s*(?:please\s+)?clear\s+(?:the|our|my|this|that)\s+(?:\S+\s+)?(?:road|roads|lane|lanes|street)\s*(?:please\s*)?[.!]*\s*$")
 
 
 # Between two things of one list: "the seat and the bin", "benches, bins".
@@ -491,11 +536,13 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
             if not ids:
                 raise ph_error(f"there is nothing{' parked' if parked else ''} at {r.landmark} to take away")
             return [ToolCall(tool="remove_assets", args={"assets": ids[:1] if fewer else ids})]
-        if _OFF_THE_ROAD.search(r.low) and (r.has(lx.GENERIC_THINGS) or gone):
-            # "clear the junk off the road", "the lane should be open again": what stands on it
+        if OFF_THE_ROAD.search(r.low) and (r.has(lx.GENERIC_THINGS) or gone or r.has(("clear",))):
+            # "clear the junk off the road", "the lane should be open again", "clear the road": what stands on it
             lanes = [lane] if r.lane and not r.lane_guessed and (lane := scene.roads.lane(r.lane)) else scene.roads.lanes
             ids = [a.id for a in scene.assets if catalog()[a.category].motion == "prop" and lane_under(a, lanes)]
-            return [ToolCall(tool="remove_assets", args={"assets": ids})] if ids else None
+            if not ids:
+                raise ph_error("nothing stands on the road to take away; parked and driving vehicles are left as they are")
+            return [ToolCall(tool="remove_assets", args={"assets": ids})]
         ids = referenced(r, scene, memory, notes)
         road = road_said(r.low, scene)
         mapped = r.landmark or (r.lane if r.lane and not r.lane_guessed else road[0] if road is not None else None)
@@ -517,6 +564,8 @@ def remove(r: Reading, scene: Scene, memory: Memory, notes: Notes) -> list[ToolC
         return [c for m in listed for c in remove(replace(r, mentions=[m]), scene, memory, notes) or []] or None
     mention = r.mentions[0]
     name = mention.category
+    if _EVERY_OTHER.search(r.low[: mention.start]):  # "get rid of every second street light": the alternate ones, never a count
+        return [ToolCall(tool="remove_assets", args={"assets": ids})] if (ids := referenced(r, scene, memory, notes)) else None
     if _NOT_BOTH.search(r.low[: mention.start]):  # "we don't need both cars": one of them goes, and which is theirs to say
         word = r.low[mention.start : mention.end]
         raise ph_error(f"which of the {word} should go? name it, e.g. 'remove the {word.rstrip('s')} on the left'")
@@ -943,6 +992,35 @@ def _faced_point(r: Reading, scene: Scene, thing: AssetInstance) -> tuple[float,
         return (ego.pose.x, ego.pose.y) if ego is not None and thing.id != "ego" else None
     landmark = scene.landmark(r.landmark) if r.landmark else None
     return (landmark.position[0], landmark.position[1]) if landmark is not None else None
+
+
+# The words that say a thing faces something, in plain text: "facing the fountain", "to face the road".
+_FACES_PLAIN = re.compile(r"\b(?:fac(?:e|es|ing)|point(?:s|ed|ing)?)\s+(?:towards?\s+|onto\s+|at\s+)?(?!away\b)")
+
+
+def faced_from(r: Reading, scene: Scene, x: float, y: float) -> tuple[float, float] | None:
+    """The point the words say a new thing standing at (x, y) should face: the nearest point of a
+    road, the ego or a place named right after "facing"; None when they say it faces nothing
+    ("facing north" is md.facing_direction's); a PlanningError when what it faces is not read."""
+    plain = _FACES_PLAIN.search(r.low)
+    if plain is None or _FACES_AWAY.search(r.low) or _BACK_FACES.search(r.low):
+        return None
+    after = r.low[plain.end() :]
+    if re.match(r"(?:the\s+)?(?:road|street|lane|traffic|kerb|curb|carriageway)\b", after):
+        near = min((nearest_on_polyline(x, y, lane.centreline) for lane in scene.roads.lanes), key=lambda p: p.distance, default=None)
+        return (near.x, near.y) if near is not None else None
+    ego = scene.asset("ego")
+    if re.match(r"(?:the\s+)?(?:ego|our car|my car)\b", after):
+        return (ego.pose.x, ego.pose.y) if ego is not None else None
+    faced = re.split(r"[,;.]|\b(?:at|in|on|by|near|next to|beside|outside|and|so|with)\b", after, maxsplit=1)[0]  # "the library at the fountain"
+    place = find_place(scene, f" {faced} ")
+    landmark = scene.landmark(place[0]) if place is not None else None
+    if landmark is not None:
+        return landmark.position[0], landmark.position[1]
+    if re.match(r"the\s+[a-z]", after) and md.facing_direction(r.low) is None:
+        raise ph_error(f"I could not tell what it should face from {r.low[plain.start() :].strip()!r}; it can face "
+                       "a compass point, the road, the ego or a place, e.g. 'facing the fountain'")
+    return None
 
 
 # Driving the other way: "going the other way", "in the opposite direction".

@@ -9,6 +9,7 @@ from what the world contains, and reports a confidence that says how much it had
 
 from __future__ import annotations
 
+import itertools
 import math
 import re
 import time
@@ -57,6 +58,7 @@ from drivetwin.orchestrator.planning.rules.edits import (
     behaviour_spec,
     drive_towards,
     edit_existing,
+    faced_from,
     kept_at,
     named_at,
     new_pace,
@@ -101,7 +103,7 @@ from drivetwin.tools.base import ToolCall
 from drivetwin.tools.errors import ToolError
 from drivetwin.tools.locate import resolve_target
 from drivetwin.worlds.catalog import catalog, is_layout_kit, nearest_categories, shared_heads
-from drivetwin.worlds.scene import DriveLane, Scene
+from drivetwin.worlds.scene import AssetInstance, DriveLane, Scene
 from drivetwin.worlds.surface import DRIVABLE, nearest_on_polyline, point_in_polygon, surface_at
 
 PROMPT_VERSION = "rules-2"
@@ -195,6 +197,13 @@ _STRICT_ADD = (
 _WISHES = ("i want", "i need", "we need", "we want", "there should be", "give me")
 _DEFINITE = re.compile(r"\b(?:the|that|this|those|these|our|my)\s+(?:[a-z-]+\s+){0,2}$")
 _THE_NEW = re.compile(r"\b(?:the|that|this|those|these|our|my)\s+new(?:er|est)?\b")
+# "add a waiter next to the SUV": the thing to add is the word after the count, never the thing
+# named as its place ("add a copy next to the SUV" is one more of it)
+_ADDED_BEFORE_PLACE = re.compile(
+    r"\b(?:add|put|place|create|spawn|insert|bring)\s+(?:in\s+)?(?:a|an|one|two|three|four|five|six|\d+|some|a few|several)\s+"
+    r"(?:new\s+)?([a-z]+)\s+(?:right\s+)?(?:next to|beside|near|by|behind|in front of|at|on|around|opposite|across from)\b")
+_NO_NEW_NOUN = ("copy", "duplicate", "twin", "clone", "replica", "more", "other", "another", "extra", "one", "ones", "few", "pair", "same",
+                "second", "third", "similar", "match")
 
 # Closing a road by its name or kind ("close Main Street at the east gate", "shut the lane").
 _CLOSE_ROAD = re.compile(r"^\s*(?:please )?(?:close|block|shut|seal|barricade)(?: off)? (?:the )?(?:[\w-]+ ){0,3}?"
@@ -864,6 +873,10 @@ class RulePlanner:
             names = ", ".join(lm.name for lm in scene.landmarks[:MAX_PLACES_LISTED])
             said = PLACE_SAID.search(text.lower())
             what = f"{said.group(1)!r}" if said else "the place you named"
+            absent = [m.category for m in ph.find_categories(said.group(1)) if not scene.count(m.category)] if said else []
+            if absent:  # "beside the truck" with no truck: the thing is missing, not unknown
+                raise PlanningError(f"there is no {absent[0].replace('_', ' ')} in the scene to put it by; add one first, "
+                                    f"or name a place such as {names}")
             raise PlanningError(f"I do not know {what} in this world; places here include {names}")
         # "shift it 2 m kerbside": a way said and not read is never guessed (with none said, as in "shift the bin a
         # little", any way is what was asked)
@@ -1367,12 +1380,22 @@ def _plan_clause(r: Reading, asked: bool, scene: Scene, memory: Memory, notes: N
             # "cordon the tree by the library off using a row of bollards": what is ringed stays named
             ringed = [m for m in r.mentions if around is not None and around.start() < m.start < instrument.start()]
         return _both_sides(_arrange(replace(r, mentions=[*laid, *ringed]), scene, memory, notes), r, scene)
+    if _SPREAD_OUT.search(r.low) and md.layout_said(r.masked) is None and not r.has(lx.ADD_WORDS):
+        # "spread the cones out a bit more", "space them further apart": those there, never more of them
+        spread = [a for i in referenced(r, scene, memory, notes) if (a := scene.asset(i)) is not None and a.id != "ego"]
+        if len(spread) >= 2:
+            return _spread_out(spread)
     # "the new fire hydrant" is the one just added, not one more; "I want the bench painted" wants it changed
     first = r.mentions[0] if r.mentions else None
     definite = first is not None and scene.count(first.category) > 0 and bool(_DEFINITE.search(r.low[: first.start]))
     said_add = tuple(w for w in _STRICT_ADD if w != "more" and not (definite and w in _WISHES))
     strict_add = ph.has_any(_THE_NEW.sub(" ", r.masked), said_add) or _more_of_a_thing(r) or filled
     mention = r.mentions[0] if r.mentions else None
+    added = _ADDED_BEFORE_PLACE.search(r.low)
+    if (added is not None and mention is not None and mention.start >= added.end() and added.group(1) not in _NO_NEW_NOUN
+            and added.group(1) not in lx.GRAMMAR):
+        noun = added.group(1)  # "add a waiter next to the SUV": no waiter, and never a second SUV
+        raise PlanningError(f"unknown asset {noun!r}; nearest: {', '.join(nearest_categories(noun))}")
     # "there's no bin outside the JTEKT building": one wanted there, never the one elsewhere moved
     strict_add = strict_add or (mention is not None and NONE_THERE.search(r.low[: mention.start]) is not None
                                 and not any(commands(part) for part in re.split(r"[,.;!]+|\band\b|\bso\b", r.low)))
@@ -1805,6 +1828,55 @@ def _from_to(r: Reading, scene: Scene) -> tuple[tuple[float, float], tuple[float
 _THOSE_THERE = re.compile(r"\b(?:the|those|these|both|all|our|my)\s+(?:(?:the|of|two|three|four|five|six|\d+)\s+){0,2}$")
 
 
+# New things said to face one another: no one heading says it.
+_EACH_OTHER = re.compile(r"\b(?:fac(?:e|es|ing)|point(?:s|ing)?(?: at)?)\s+(?:each other|one another)\b")
+
+
+def _faced_where(r: Reading, scene: Scene, where: dict[str, Any] | None) -> float | None:
+    """The heading (degrees) of a new thing the words say faces something ("facing the road", "facing
+    the fountain"), seen from where it goes; None when they say none."""
+    if _EACH_OTHER.search(r.low):
+        raise PlanningError("I cannot turn new things to face each other as I add them; add them, then turn each, "
+                            "e.g. 'turn bench_2 to face bench_3'")
+    target = where.get("target") if where is not None else None
+    try:
+        spot = (float(where["x"]), float(where["y"])) if where is not None and "x" in where and "y" in where else (
+            (resolve_target(scene, str(target)).x, resolve_target(scene, str(target)).y) if target else None)
+    except ToolError:
+        return None
+    faced = faced_from(r, scene, *spot) if spot is not None else None
+    if faced is None or spot is None or math.dist(faced, spot) < 0.5:
+        return None
+    return round(math.degrees(math.atan2(faced[1] - spot[1], faced[0] - spot[0])), 1)
+
+
+# Things there moved further apart: "spread the cars in lot B out", "space the benches further apart".
+_SPREAD_OUT = re.compile(r"\b(?:spread|space|fan)\b(?:\s+[\w-]+){0,6}?\s+(?:out|apart)\b|\b(?:further|farther|more)\s+apart\b")
+# Spread out, things stand this much further apart than they do (at least a metre more).
+SPREAD_FACTOR = 1.5
+
+
+def _spread_out(laid: list[AssetInstance]) -> list[ToolCall]:
+    """The things moved apart along the line they stand on, about their middle, each facing as it
+    does: the outermost first, so that none passes through another."""
+    pts = [(a.pose.x, a.pose.y) for a in laid]
+    far = max(((p, q) for p in pts for q in pts), key=lambda pq: math.dist(*pq))
+    ux, uy = far[1][0] - far[0][0], far[1][1] - far[0][1]
+    norm = math.hypot(ux, uy) or 1.0
+    ux, uy = ux / norm, uy / norm
+    along = {a.id: a.pose.x * ux + a.pose.y * uy for a in laid}
+    middle = sum(along.values()) / len(along)
+    order = sorted(laid, key=lambda a: along[a.id])
+    gaps = [along[b.id] - along[a.id] for a, b in itertools.pairwise(order)]
+    gap = sum(gaps) / len(gaps)
+    stretch = max(gap * SPREAD_FACTOR, gap + 1.0) / gap if gap > 0 else 1.0
+    calls = []
+    for a in sorted(laid, key=lambda a: -abs(along[a.id] - middle)):  # (the middle one, if any, stays: a move of nothing)
+        shift = (along[a.id] - middle) * (stretch - 1.0)
+        calls.append(ToolCall(tool="move_asset", args={"asset": a.id, "east": round(shift * ux, 2), "north": round(shift * uy, 2)}))
+    return calls
+
+
 def _laid_out_there(r: Reading, mention: ph.Mention, scene: Scene, memory: Memory, notes: Notes) -> list[ToolCall] | None:
     """Things already there moved into the layout the words ask for ("line up the cars in lot B",
     "arrange the trees in a ring around the fountain"), never new ones added nor one of them moved;
@@ -2105,6 +2177,8 @@ def _add(r: Reading, scene: Scene, memory: Memory, notes: Notes, count: int | No
     if facing is not None:  # "a stop sign at the north crosswalk facing south": turned that way
         east, north = md.COMPASS_VECTORS[facing]
         args["yaw_deg"] = round(math.degrees(math.atan2(north, east)), 1)
+    elif (faced := _faced_where(r, scene, where)) is not None:  # "a bench at the bus stop facing the fountain"
+        args["yaw_deg"] = faced
     sides = _EACH_SIDE.search(r.low) if where is not None and where.get("relation") in ("at", "next_to") else None
     calls = [ToolCall(tool="add_asset", args=args)]
     if sides is not None and where is not None and where.get("target"):  # "a bin on each side of the door": one left, one right

@@ -24,7 +24,7 @@ from drivetwin.orchestrator.planning.rules import modifiers as md
 from drivetwin.orchestrator.planning.rules import phrases as ph
 from drivetwin.orchestrator.planning.rules.edits import named_at, picked_by_what_it_stands_by
 from drivetwin.orchestrator.planning.rules.environment import environment
-from drivetwin.orchestrator.planning.rules.places import Notes, side_alone, side_lane
+from drivetwin.orchestrator.planning.rules.places import Notes, places_called, side_alone, side_lane
 from drivetwin.orchestrator.planning.rules.reading import Reading, place_kind_said, read
 from drivetwin.orchestrator.planning.rules.spelling import is_known, vocabulary
 from drivetwin.tools.base import ToolCall
@@ -252,6 +252,8 @@ _WHICH_PLACE = re.compile(r"\bwhich\s+(?:[a-z]+\s+){0,2}$")
 # A superlative of size or weight: "the tallest thing", "which car is the heaviest" (as find_assets orders by).
 # Where to cross a road on foot: "where can people cross the road?", "where should I cross?".
 _WHERE_TO_CROSS = re.compile(r"\bwhere\s+(?:can|could|should|do|does|would|may|might|are|is)\s+(?:[a-z']+\s+){1,3}?cross\b")
+# Where to park: "where could I park a truck?", "where do people leave their cars?" asks for the parking lots.
+_WHERE_TO_PARK = re.compile(r"\bwhere\s+(?:can|could|should|do|does|would|may|might|is it ok to)\s+(?:[a-z']+\s+){0,2}?park\b")
 
 
 def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: Anchor | None,
@@ -286,6 +288,9 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         # "where can people cross the road?": the marked crossings, nearest the place said first
         near = {"nearest_to": r.landmark} if r.landmark else {}
         return Part(ToolCall(tool="find_landmarks", args={"query": "crossing", **near}), None)
+    if _WHERE_TO_PARK.search(low):  # "where could I park a truck?": the parking lots, nearest the place said first
+        near = {"nearest_to": r.landmark} if r.landmark else {}
+        return Part(ToolCall(tool="find_landmarks", args={"query": "parking lot", **near}), None)
     if r.mentions and {m.category for m in r.mentions} <= _SWITCHED and _ON_OFF.search(low):
         return Part(ToolCall(tool="describe_environment", args={}), None)  # "street lamps - on or off right now?"
     named = _named(r, scene)
@@ -294,6 +299,9 @@ def _plan_part(r: Reading, scene: Scene, memory: Memory, notes: Notes, earlier: 
         return None  # "bins? benches? how many of each": the earlier clauses already ask it
     if _WAY_ASKED.search(low) and re.search(r"\b(?:from|to)\b", low) and (way := _distance(r, scene, back)) is not None:
         return way  # "which way is the fountain from the bus stop": not which way a thing faces
+    if _PAIR.search(low) and (both := _BOTH_PLACES.search(low)) is not None and len(two := places_called(scene, ph.singular(both.group(1)))) == 2:
+        # "how far apart are the two gates?": the two places of that kind
+        return Part(ToolCall(tool="measure_distance", args={"a": two[0], "b": two[1]}), Anchor("landmark", two[0]))
     asks_property = (r.has(lx.PROPERTY_WORDS) or _PROPERTY.search(low) is not None) and not _JOURNEY.search(low)
     if asks_property and not r.mentions and not r.ids and not r.ego and (
             r.lane or _asks_for_lanes(r)):  # "how wide is the lane on Main Street": the lanes' facts
@@ -551,6 +559,8 @@ def _distance(r: Reading, scene: Scene, back: Anchor | None, origin: Anchor | No
 
 _WAY_ASKED = re.compile(rf"\b(?:{_WAY})\b")
 # Two things of one kind measured against each other: "between the two lights", "how far apart are both cars".
+# The two places of a kind: "the two gates", "both entrances".
+_BOTH_PLACES = re.compile(r"\b(?:the two|both(?: the)?|the 2|the pair of)\s+([a-z]+)\b")
 _PAIR = re.compile(r"\b(?:between|apart)\b.*\b(?:the two|both|the 2|the pair of)\b|\b(?:the two|both|the 2)\b.*\bapart\b")
 
 

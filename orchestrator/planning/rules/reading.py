@@ -403,6 +403,7 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
             key=lambda a: int(a.id.rsplit("_", 1)[-1]) if a.id.rsplit("_", 1)[-1].isdigit() else 0,
         )
         ordinal = next((lx.ORDINALS[w] for w in reversed(before) if w in lx.ORDINALS), None)
+        ordinal = None if before[:1] == ["every"] else ordinal  # "every second street light": one in two, not the second
         side = _FROM_SIDE.match(low[mention.end :])
         if ordinal is not None and side is not None:  # "the second car from the west": counted across the map
             east, north = _SIDE_VECTORS[side.group(1)]
@@ -417,10 +418,26 @@ def _numbered(scene: Scene, low: str, mentions: list[ph.Mention]) -> tuple[list[
         elif picked is not None:
             ids += [picked, *more]
         elif ordinal is not None and present and -1 <= ordinal <= len(present) and ordinal != 0:
-            ids.append(present[ordinal - 1 if ordinal > 0 else -1].id)
+            many = _how_many_of_the_order(before, ordinal, len(present))
+            if many == 0:
+                rest.append(mention)
+            elif many > 1:  # "the last two cones", "the first 3 benches from the west": that many from that end
+                ids += [a.id for a in (present[:many] if ordinal == 1 else present[-many:])]
+            else:
+                ids.append(present[ordinal - 1 if ordinal > 0 else -1].id)
         else:
             rest.append(mention)
     return ids, rest
+
+
+def _how_many_of_the_order(before: list[str], ordinal: int, present: int) -> int:
+    """How many the words take from one end ("the first two", "the last 3"): 1 unless a count
+    follows "first" or "last" and there are more than that many."""
+    if len(before) == 2 and before[0] == "other" and (before[1].isdigit() or before[1] in ph.NUMBER_WORDS):
+        return 0  # "the other two cones": those the last edit left alone, not the second one
+    said = before[-1] if len(before) == 2 and before[0] in ("first", "last") and ordinal in (1, -1) else ""
+    many = int(said) if said.isdigit() else ph.NUMBER_WORDS.get(said, 1)
+    return many if 1 < many < present else 1
 
 
 # "(the car) in the middle of the row", "the car in the middle": the middle one of a row of its kind (never "in the
@@ -784,8 +801,10 @@ def is_new(reading: Reading, mention: ph.Mention, add_verb: bool, present: bool)
         if word == "one" and k == len(words) - 1 and k > 0 and words[k - 1] in ("put", "place", "set", "stick", "drop", "plant", "and", "plus"):
             return True  # "put two bins at the east gate and one bench at the main gate": one more, as "a" is
         if word.isdigit() or (word in ph.NUMBER_WORDS and word not in ("one", "a", "an")):
-            # "all three vehicles", "the two cars": a number of things already there
-            return words[k - 1 : k] == [] or words[k - 1] not in (*_OLD_DETERMINERS, "all", "both")
+            # "all three vehicles", "the two cars", "the other two cones": a number of things already there
+            picked = words[k - 1 : k] in (["other"], ["first"], ["last"], ["remaining"]) and words[k - 2 : k - 1] != [] \
+                and words[k - 2] in _OLD_DETERMINERS
+            return not picked and (words[k - 1 : k] == [] or words[k - 1] not in (*_OLD_DETERMINERS, "all", "both"))
         collective = word in lx.COLLECTIVE_COUNTS and (word not in COUNT_BEFORE_OF or words[k + 1 : k + 2] == ["of"])
         if word in ("new", "newer", "newest") and k > 0 and words[k - 1] in _OLD_DETERMINERS:
             return False  # "the new fire hydrant": the one just added, there now

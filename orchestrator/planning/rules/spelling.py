@@ -451,11 +451,8 @@ _HALVE = re.compile(r"\bhalve ((?:the (?:number|amount|count) of )?)((?:[\w'-]+\
 # Each put where the other is: "put the bin where the bench is and the bench where the bin is" swaps them.
 _CROSSED_PLACES = re.compile(r"\b(?:put|place|move|set)\s+(the [a-z_0-9 ]+?) where (the [a-z_0-9 ]+?) (?:is|stands|was|stood)(?: now)?,?"
                              r" and (?:put |place |move |set )?\2 where \1 (?:is|stands|was|stood)\b", re.IGNORECASE)
-# "remove every other street light", "take away every second tree": half of them, one in two; "leave every other one":
-# them thinned out.
+# "leave every other one": them thinned out ("remove every other street light" picks the alternate ones: see edits).
 _EVERY_OTHER_KEPT = re.compile(r"\b(?:leave|keep)\s+(?:just\s+|only\s+)?every (?:other|second|2nd) one\b", re.IGNORECASE)
-_EVERY_OTHER = re.compile(r"\b(?:remove|delete|take away|take out|get rid of|lose|drop)\s+every (?:other|second|2nd) ([a-z][a-z ]{1,20}?)"
-                          r"(?=\s*(?:[,.;!?]|$|\s(?:on|in|at|by|near|along|from|and)\b))", re.IGNORECASE)
 _IN_HALF = re.compile(r"\b(?:cut|reduce|drop|bring down)\s+(?:the (?:number|amount|count) of\s+)?((?:[\w'-]+\s+){1,6}?)"
                       r"(?:in half|by (?:about |roughly |around |nearly |approximately )?(?:half|(?:50|fifty) ?(?:%|per ?cent)))(?!\w)", re.IGNORECASE)
 
@@ -499,7 +496,7 @@ def _formal_forms(text: str, vocab: frozenset[str]) -> str:
     text = _RADIO_NUMBER.sub(_radio_number, _LOT_SPOKEN.sub(lambda m: f"{m.group(1)} {m.group(2)[0].upper()}", text))
     text = _MINUS.sub("-", text)
     text = _HALVE.sub(lambda m: _halved(m.group(2), m.group(0)), _OF_FOR_OFF.sub(r"\1 off", text))
-    text = _EVERY_OTHER.sub(lambda m: _halved(m.group(1).rstrip("s") + "s", m.group(0)), _EVERY_OTHER_KEPT.sub("thin them out", text))
+    text = _EVERY_OTHER_KEPT.sub("thin them out", text)
     text = _CROSSED_PLACES.sub(lambda m: f"swap {m.group(1)} and {m.group(2)}", text)
     text = _REARWARD.sub("backward", _IN_HALF.sub(lambda m: _halved(m.group(1), m.group(0)), text))
     text = _COMPASS_SHORT.sub(lambda m: _COMPASS_WORDS[m.group(1).lower()], _TOO_MANY.sub(r"\1 too \2", text))
@@ -1362,9 +1359,13 @@ _EASE_OFF = re.compile(r"\bease (?:off|up)\b(?!\s+(?:on\s+)?(?:the|that|this|tho
 _EVERY_ONE_OF = re.compile(r"\b(?:every|each) (?:single )?one of\b", re.IGNORECASE)
 
 
+# "remove all but one of the cars": all of them except one.
+_ALL_BUT_SOME = re.compile(r"\ball but (one|two|three|four|five|\d+)(?: of)? (?:the |those |these )?((?:[a-z_]+ ){0,2}?[a-z_]+s)\b", re.IGNORECASE)
+
+
 def _said_plainly(text: str) -> str:
     """`text` with a pause, a cue, a measure or a time written with a hyphen or as a mark, a sign-off particle, a
-    wish without its "to", the driver's "us", "hold it" after a speed, the rest said to stay, "every asset",
+    wish without its "to", the driver's "us", "hold it" after a speed, the rest said to stay, "all but one of them", "every asset",
     "ease off" and "every one of" in the plain words the readings take."""
     text = _PAUSE.sub(", ", _CUE_AFTER_PAUSE.sub(".", text))
     text = _TIME_MARK.sub(r"after \1 seconds", _HYPHENED_MEASURE.sub(r"\1 \2", text))
@@ -1372,7 +1373,7 @@ def _said_plainly(text: str) -> str:
     text = _US_LABEL.sub("ego:", _DRIVERS_US.sub(r"\1 the ego", text))
     if _SPEED_WORDS.search(text):
         text = _HOLD_IT.sub("", text)
-    text = _REST_LEFT.sub("", text)
+    text = _REST_LEFT.sub("", _ALL_BUT_SOME.sub(r"all the \2 except \1", text))
     text = _THING_STAYS.sub(lambda m: f"; keep the {m.group(1)}" if ph.find_categories(m.group(1).lower()) else m.group(0), text)
     return _EVERY_ONE_OF.sub("all of", _EASE_OFF.sub("slow down", _EVERY_ASSET.sub("everything", text)))
 
