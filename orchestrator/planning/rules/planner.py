@@ -873,9 +873,9 @@ class RulePlanner:
             names = ", ".join(lm.name for lm in scene.landmarks[:MAX_PLACES_LISTED])
             said = PLACE_SAID.search(text.lower())
             what = f"{said.group(1)!r}" if said else "the place you named"
-            absent = [m.category for m in ph.find_categories(said.group(1)) if not scene.count(m.category)] if said else []
-            if absent:  # "beside the truck" with no truck: the thing is missing, not unknown
-                raise PlanningError(f"there is no {absent[0].replace('_', ' ')} in the scene to put it by; add one first, "
+            missing = [m.category for m in ph.find_categories(said.group(1)) if not scene.count(m.category)] if said else []
+            if missing:  # "beside the truck" with no truck: the thing is missing, not unknown
+                raise PlanningError(f"there is no {missing[0].replace('_', ' ')} in the scene to put it by; add one first, "
                                     f"or name a place such as {names}")
             raise PlanningError(f"I do not know {what} in this world; places here include {names}")
         # "shift it 2 m kerbside": a way said and not read is never guessed (with none said, as in "shift the bin a
